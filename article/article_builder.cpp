@@ -1,0 +1,163 @@
+#include "article/article_builder.hpp"
+
+#include <cassert>
+#include <deque>
+#include <map>
+
+#include "article/flexible_link.hpp"
+
+namespace mmv {
+namespace {
+
+SimTK::Transform rotZ(double angle, const SimTK::Vec3& p = SimTK::Vec3(0)) {
+  return SimTK::Transform(SimTK::Rotation(angle, SimTK::ZAxis), p);
+}
+
+/// A piece of length l and mass m, origin at its inboard end, x along the piece.
+/// Ixx is the section's own polar term (irrelevant in the plane, keeps the inertia
+/// physical); Iyy = Izz = m l^2 / 12 about the centre.
+SimTK::Body::Rigid pieceBody(const LinkPiece& p, double gyration_sq) {
+  const SimTK::Vec3 com(0.5 * p.length, 0, 0);
+  const SimTK::Inertia central(p.mass * gyration_sq, p.inertia_zz_about_com, p.inertia_zz_about_com);
+  return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
+}
+
+/// A lumped mass at the body origin with rotary inertia J about z (disc-like: J/2 in x, y).
+SimTK::Body::Rigid lumpedBody(const LumpedMass& m) {
+  const double j = m.rotary_inertia;
+  return SimTK::Body::Rigid(SimTK::MassProperties(m.mass, SimTK::Vec3(0), SimTK::Inertia(0.5 * j, 0.5 * j, j)));
+}
+
+struct Frame {  // a place to attach things: a body and a frame on it
+  SimTK::MobilizedBodyIndex mobod;
+  SimTK::Transform X_BF;
+  bool grounded = false;
+};
+
+class Builder {
+ public:
+  Builder(const Scene& scene, Model& model) : scene_(scene), a_(scene.article), model_(model) {}
+
+  void build() {
+    auto& matter = model_.updMatter();
+    const BaseSpec& base = a_.base;
+    const SimTK::Vec3 p_base(base.position[0], base.position[1], base.position[2]);
+    Frame ground{matter.Ground().getMobilizedBodyIndex(), rotZ(base.direction, p_base), true};
+    // Breadth-first from the base so that every parent exists before its children.
+    std::deque<std::pair<const JointSpec*, Frame>> todo;
+    for (const auto& j : a_.joints)
+      if (j.parent == "base") todo.push_back({&j, ground});
+    while (!todo.empty()) {
+      auto [joint, parent] = todo.front();
+      todo.pop_front();
+      buildJoint(*joint, parent);
+      for (const auto& j : a_.joints) {
+        auto it = tips_.find(j.parent);
+        if (it != tips_.end() && !built_joints_.count(j.name) && !queued_.count(j.name)) {
+          queued_.insert({j.name, true});
+          todo.push_back({&j, it->second});
+        }
+      }
+    }
+  }
+
+ private:
+  void buildJoint(const JointSpec& j, const Frame& parent) {
+    built_joints_[j.name] = true;
+    auto& matter = model_.updMatter();
+    model_.addPoint({j.name, parent.mobod, parent.X_BF.p(), true});
+    if (j.torquer) {
+      const int part = model_.addPart(j.name + ".torquer", Part::Kind::Torquer);
+      SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(parent.mobod), parent.X_BF, lumpedBody(*j.torquer),
+                                   SimTK::Transform());
+      model_.addBody(w.getMobilizedBodyIndex(), part, parent.grounded);
+    }
+    std::vector<const LinkSpec*> children;
+    for (const auto& l : a_.links)
+      if (l.joint == j.name) children.push_back(&l);
+    assert(!children.empty());
+
+    // The first child's root piece carries the pin; the others are welded to it.
+    SimTK::MobilizedBodyIndex rotor;
+    double rotor_mount = 0;
+    for (std::size_t c = 0; c < children.size(); ++c) {
+      const LinkSpec& l = *children[c];
+      const LinkDiscretization d = discretize(l);
+      const int part = model_.addPart(l.name, Part::Kind::Link);
+      const double gyr2 = sectionGyrationSquared(*a_.findSection(l.section));
+      SimTK::MobilizedBodyIndex prev;
+      for (std::size_t k = 0; k < d.pieces.size(); ++k) {
+        const SimTK::Body::Rigid body = pieceBody(d.pieces[k], gyr2);
+        SimTK::MobilizedBodyIndex ix;
+        if (k == 0 && c == 0) {
+          SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(parent.mobod), parent.X_BF, body,
+                                        rotZ(-l.mount_angle));
+          ix = pin.getMobilizedBodyIndex();
+          Coordinate coord;
+          coord.name = j.name;
+          coord.kind = CoordinateKind::Joint;
+          coord.part = j.name;
+          coord.mobod = ix;
+          coord.reference = j.angle;
+          coord.held = j.hold == JointHold::Locked;
+          coord.stiffness = j.hold == JointHold::Servo ? j.servo_stiffness : 0.0;
+          model_.addCoordinate(coord);
+          rotor = ix;
+          rotor_mount = l.mount_angle;
+        } else if (k == 0) {
+          SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(rotor), rotZ(-rotor_mount), body, rotZ(-l.mount_angle));
+          ix = w.getMobilizedBodyIndex();
+        } else {
+          const double l_prev = d.pieces[k - 1].length;
+          SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(prev), SimTK::Transform(SimTK::Vec3(l_prev, 0, 0)),
+                                        body, SimTK::Transform());
+          ix = pin.getMobilizedBodyIndex();
+          Coordinate coord;
+          coord.name = l.name + ".h" + std::to_string(k);
+          coord.kind = CoordinateKind::Hinge;
+          coord.part = l.name;
+          coord.mobod = ix;
+          coord.stiffness = d.hinge_stiffness[k - 1];
+          model_.addCoordinate(coord);
+          model_.addPoint({coord.name, ix, SimTK::Vec3(0), false});
+        }
+        model_.addBody(ix, part, false);
+        if (k == 0) model_.addPoint({l.name + ".root", ix, SimTK::Vec3(0), true});
+        prev = ix;
+      }
+      const SimTK::Transform X_tip(SimTK::Vec3(d.pieces.back().length, 0, 0));
+      model_.addPoint({l.name + ".tip", prev, X_tip.p(), true});
+      if (l.tip_mass) {
+        const int tip_part = model_.addPart(l.name + ".tip_mass", Part::Kind::TipMass);
+        SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(prev), X_tip, lumpedBody(*l.tip_mass), SimTK::Transform());
+        model_.addBody(w.getMobilizedBodyIndex(), tip_part, false);
+      }
+      tips_[l.name] = Frame{prev, X_tip, false};
+    }
+  }
+
+  LinkDiscretization discretize(const LinkSpec& l) const {
+    const Material& mat = *a_.findMaterial(l.material);
+    const Section& sec = *a_.findSection(l.section);
+    return discretizeLink(l.length, mat.density * sectionArea(sec), mat.youngs_modulus * sectionSecondMoment(sec),
+                          l.segments, l.rigid);
+  }
+
+  const Scene& scene_;
+  const ArticleSpec& a_;
+  Model& model_;
+  std::map<std::string, Frame> tips_;
+  std::map<std::string, bool> built_joints_, queued_;
+};
+
+}  // namespace
+
+std::unique_ptr<Model> buildArticleModel(const Scene& scene) {
+  const auto& g = scene.gravity;
+  auto model = std::make_unique<Model>(SimTK::Vec3(g[0], g[1], g[2]));
+  Builder(scene, *model).build();
+  model->finalize();
+  return model;
+}
+
+}  // namespace mmv

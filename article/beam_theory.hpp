@@ -1,0 +1,31 @@
+#pragma once
+/// Closed-form Euler-Bernoulli results used as references beside computed values.
+
+#include <functional>
+#include <vector>
+
+namespace mmv {
+
+/// First `count` positive roots beta*L of the clamped-free (cantilever) frequency
+/// equation with a tip point mass ratio mu = M_tip / (rho*A*L) >= 0:
+///   1 + cos(bL) cosh(bL) + mu*bL*(cos(bL) sinh(bL) - sin(bL) cosh(bL)) = 0.
+/// mu = 0 gives 1.87510, 4.69409, 7.85476, ...
+std::vector<double> cantileverTipMassRoots(double mu, int count);
+
+/// Natural frequency in Hz of a uniform Euler-Bernoulli beam for a root beta*L:
+///   f = (beta L)^2 / (2 pi L^2) * sqrt(E I / (rho A)).
+double beamFrequencyHz(double beta_l, double length, double bending_stiffness,
+                       double mass_per_length);
+
+/// Positive roots of f on (lo, hi], found by scanning with `step` for sign changes
+/// and refining each by bisection to machine precision. At most `count` roots.
+std::vector<double> findRoots(const std::function<double(double)>& f, double lo, double hi,
+                              double step, int count);
+
+/// Static tip deflection in m of a horizontal cantilever under its own weight
+/// w = rho*A*g (N/m): w L^4 / (8 E I).
+double cantileverSelfWeightTipDeflection(double w, double length, double bending_stiffness);
+/// Static tip deflection in m of a cantilever under a tip load P (N): P L^3 / (3 E I).
+double cantileverTipLoadDeflection(double p, double length, double bending_stiffness);
+
+}  // namespace mmv

@@ -1,0 +1,40 @@
+#include "article/section.hpp"
+
+#include <cmath>
+
+namespace mmv {
+
+double sectionArea(const Section& s) {
+  switch (s.shape) {
+    case SectionShape::Rectangle: return s.b * s.h;
+    case SectionShape::RectangularTube: return 2.0 * s.t * (s.b + s.h) - 4.0 * s.t * s.t;
+    case SectionShape::RoundRod: return M_PI * s.radius * s.radius;
+    case SectionShape::Explicit: return s.explicit_area;
+  }
+  return 0;
+}
+
+double sectionSecondMoment(const Section& s) {
+  switch (s.shape) {
+    case SectionShape::Rectangle: return s.b * std::pow(s.h, 3) / 12.0;
+    case SectionShape::RectangularTube:
+      return (s.b * std::pow(s.h, 3) - (s.b - 2 * s.t) * std::pow(s.h - 2 * s.t, 3)) / 12.0;
+    case SectionShape::RoundRod: return M_PI * std::pow(s.radius, 4) / 4.0;
+    case SectionShape::Explicit: return s.explicit_second_moment;
+  }
+  return 0;
+}
+
+double sectionGyrationSquared(const Section& s) { return sectionSecondMoment(s) / sectionArea(s); }
+
+const char* sectionShapeName(SectionShape shape) {
+  switch (shape) {
+    case SectionShape::Rectangle: return "rectangle";
+    case SectionShape::RectangularTube: return "rectangular_tube";
+    case SectionShape::RoundRod: return "round_rod";
+    case SectionShape::Explicit: return "explicit";
+  }
+  return "?";
+}
+
+}  // namespace mmv

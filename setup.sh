@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs mmvlab's build and test dependencies from Debian 12 packages.
+# Idempotent: packages already present are skipped; apt-get runs only when something
+# is missing. Needs root (or sudo) for the install step.
+#
+#   ./setup.sh           build + run dependencies
+#   ./setup.sh --tests   also what the test suite needs
+set -euo pipefail
+
+build_pkgs=(
+  build-essential cmake pkg-config
+  libsimbody-dev libeigen3-dev libsundials-dev
+  libopencv-dev libosmesa6-dev libgl-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev
+  libbenchmark-dev
+)
+test_pkgs=(libgtest-dev googletest)
+
+want=("${build_pkgs[@]}")
+if [[ "${1:-}" == "--tests" ]]; then
+  want+=("${test_pkgs[@]}")
+fi
+
+missing=()
+for p in "${want[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup: all ${#want[@]} packages present" >&2
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}" >&2
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  SUDO="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done" >&2

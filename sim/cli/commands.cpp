@@ -1,0 +1,70 @@
+#include "sim/cli/commands.hpp"
+
+#include <iostream>
+
+#include "sim/analysis.hpp"
+#include "sim/converge.hpp"
+#include "sim/report.hpp"
+#include "sim/scene.hpp"
+
+namespace mmv::cli {
+namespace {
+
+/// Loads the scene and applies command-line overrides.
+Scene loadScene(const SceneArgs& args) {
+  Scene scene = args.scene_path.empty() ? loadDefaultScene() : loadSceneFile(args.scene_path);
+  if (args.segments > 0) overrideSegments(scene, args.segments);
+  return scene;
+}
+
+/// Runs `body`, turning the error classes into messages on stderr and exit codes.
+template <class F>
+int guarded(F&& body) {
+  try {
+    return body();
+  } catch (const SceneFileError& e) {
+    std::cerr << "mmvlab: " << e.what() << '\n';
+    return kNoInput;
+  } catch (const SceneError& e) {
+    std::cerr << e.what() << '\n';
+    return kDataError;
+  } catch (const NumericalError& e) {
+    std::cerr << "mmvlab: numerical failure: " << e.what() << '\n';
+    return kNumericalFailure;
+  } catch (const std::exception& e) {
+    std::cerr << "mmvlab: internal error: " << e.what() << '\n';
+    return kInternal;
+  }
+}
+
+}  // namespace
+
+int runModesCommand(const ModesArgs& args) {
+  return guarded([&] {
+    const Scene scene = loadScene(args);
+    ModesOptions opt;
+    opt.max_modes = args.modes;
+    opt.with_shapes = args.json;
+    const ModesReport rep = runModes(scene, opt);
+    const std::string out = args.json ? modesToJson(rep).dump(2) + "\n" : formatModesText(rep);
+    std::cout << out << std::flush;
+    return kOk;
+  });
+}
+
+int runConvergeCommand(const ConvergeArgs& args) {
+  return guarded([&] {
+    const Scene scene = loadScene(args);
+    const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);
+    const std::string out = args.json ? convergenceToJson(c).dump(2) + "\n" : formatConvergenceText(c);
+    std::cout << out << std::flush;
+    return kOk;
+  });
+}
+
+int runSceneCommand() {
+  std::cout << defaultSceneYaml() << std::flush;
+  return kOk;
+}
+
+}  // namespace mmv::cli

@@ -1,0 +1,49 @@
+// mmvlab: ground-test planning for flexible multibody test articles.
+#include <CLI/CLI.hpp>
+
+#include "sim/cli/commands.hpp"
+#include "sim/report.hpp"
+
+namespace {
+
+void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
+  cmd->add_option("scene", a.scene_path, "Scene file (YAML); default: the embedded MMV article scene");
+  cmd->add_option("--segments", a.segments, "Segments per flexible link, overriding the scene")
+      ->check(CLI::Range(1, 4096));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace mmv::cli;
+  CLI::App app{"mmvlab: plan ground tests of flexible multibody test articles (MMV arm, HAM-SAS)"};
+  app.set_version_flag("--version", std::string("mmvlab ") + mmv::mmvlabVersion());
+  app.require_subcommand(1);
+
+  ModesArgs modes;
+  CLI::App* m = app.add_subcommand("modes", "Static equilibrium with the torquers holding, then the system modes");
+  addSceneOptions(m, modes);
+  m->add_flag("--json", modes.json, "Print JSON (docs/outputs.md) instead of tables");
+  m->add_option("--modes", modes.modes, "Number of modes to report (0: all)")->capture_default_str()->check(CLI::NonNegativeNumber);
+
+  ConvergeArgs conv;
+  CLI::App* c = app.add_subcommand("converge", "Frequencies against segments per link (1, 2, 4, ...), Richardson error, time");
+  addSceneOptions(c, conv);
+  c->add_flag("--json", conv.json, "Print JSON instead of tables");
+  c->add_option("--max-segments", conv.max_segments, "Finest segment count (a power of two is reached)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  c->add_option("--modes", conv.modes, "Number of modes to tabulate")->capture_default_str()->check(CLI::Range(1, 1000));
+
+  app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kUsage;
+  }
+  if (m->parsed()) return runModesCommand(modes);
+  if (c->parsed()) return runConvergeCommand(conv);
+  return runSceneCommand();
+}

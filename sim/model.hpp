@@ -1,0 +1,131 @@
+#pragma once
+/// The Simbody model of a scene plus the names the analyses and reports need:
+/// generalized coordinates (what each one is, whether it is held), the parts bodies
+/// belong to, and named points. Built by article/article_builder.hpp.
+///
+/// Every mobilizer is a planar pin about world z (one q, one u, q' = u) or a weld,
+/// so generalized coordinates and speeds share one index: coordinate i is q[i], u[i].
+/// Units: angles in rad, torques in N*m, lengths in m, masses in kg.
+///
+/// A Model is built once and then used read-only (const); analyses work on their own
+/// SimTK::State copies (Simbody's "const system, mutable state" pattern).
+
+#include <Simbody.h>
+
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mmv {
+
+enum class CoordinateKind {
+  Joint,  ///< an article joint (torquer axis).
+  Hinge,  ///< a bending hinge inside a flexible link.
+};
+
+struct Coordinate {
+  std::string name;  ///< "joint2" or "link1.h3".
+  CoordinateKind kind = CoordinateKind::Hinge;
+  std::string part;  ///< the link (hinge) or joint (joint) it belongs to.
+  SimTK::MobilizedBodyIndex mobod;
+  double reference = 0;  ///< rad: commanded joint angle, or 0 for an unbent hinge.
+  bool held = false;     ///< locked by its torquer: not a degree of freedom.
+  double stiffness = 0;  ///< N*m/rad of the linear spring on this coordinate (0: none).
+};
+
+/// A part: a link (all its pieces), a torquer, or a tip mass.
+struct Part {
+  std::string name;
+  enum class Kind { Link, Torquer, TipMass } kind = Kind::Link;
+};
+
+struct BodyInfo {
+  SimTK::MobilizedBodyIndex mobod;
+  int part = -1;  ///< index into Model::parts().
+  bool grounded = false;  ///< welded to ground: never moves.
+};
+
+/// A named point fixed on a body: "link1.tip", "link2.h3", "joint2", ...
+struct NamedPoint {
+  std::string name;
+  SimTK::MobilizedBodyIndex mobod;
+  SimTK::Vec3 station_B;  ///< position from the body origin, in the body frame (m).
+  bool report_rotation = false;  ///< rotation is meaningful here (roots, tips, joints).
+};
+
+class Model {
+ public:
+  /// Creates an empty system with uniform gravity g_W (m/s^2, world frame).
+  explicit Model(const SimTK::Vec3& g_W);
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  // --- building (used by builders only) ---------------------------------------
+  SimTK::MultibodySystem& updSystem() { return system_; }
+  SimTK::SimbodyMatterSubsystem& updMatter() { return matter_; }
+  SimTK::GeneralForceSubsystem& updForces() { return forces_; }
+  int addPart(const std::string& name, Part::Kind kind);
+  void addBody(SimTK::MobilizedBodyIndex mobod, int part, bool grounded);
+  /// Registers a 1-DOF pin as a coordinate; adds a linear spring if stiffness > 0.
+  void addCoordinate(const Coordinate& c);
+  void addPoint(const NamedPoint& p);
+  /// Realizes topology and builds the reference state. Call once, last.
+  void finalize();
+
+  // --- use ----------------------------------------------------------------------
+  const SimTK::MultibodySystem& getSystem() const { return system_; }
+  const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
+  const SimTK::Vec3& getGravity() const { return gravity_W_; }
+  const std::vector<Coordinate>& getCoordinates() const { return coords_; }
+  const std::vector<Part>& getParts() const { return parts_; }
+  const std::vector<BodyInfo>& getBodies() const { return bodies_; }
+  const std::vector<NamedPoint>& getPoints() const { return points_; }
+  /// Indices of the coordinates that are degrees of freedom (not held).
+  const std::vector<int>& getDofs() const { return dofs_; }
+  /// Index of coordinate i's speed in the Simbody state's u vector.
+  int getUIndex(int i) const { return uindex_[i]; }
+  int getNumCoordinates() const { return static_cast<int>(coords_.size()); }
+  /// The state with every coordinate at its reference value, realized to Position.
+  const SimTK::State& getReferenceState() const { return reference_state_; }
+  /// Total mass of all bodies, and of those that can move (not welded to ground), kg.
+  double getTotalMass() const { return total_mass_; }
+  double getMovingMass() const { return moving_mass_; }
+  const NamedPoint* findPoint(const std::string& name) const;
+
+  /// Coordinate values of a state, in coordinate order (rad).
+  Eigen::VectorXd getQ(const SimTK::State& s) const;
+  /// Sets coordinate values (rad) and zero speeds.
+  void setQ(SimTK::State& s, const Eigen::VectorXd& q) const;
+
+  /// Applied generalized forces f(q) in N*m (gravity + springs) at zero speed:
+  /// the right-hand side of M q'' = f. Realizes `s` to Dynamics.
+  Eigen::VectorXd calcAppliedForces(SimTK::State& s) const;
+
+  /// Frame Jacobians of frames at `stations` (body frame, m) on `bodies`, restricted to
+  /// the columns of coordinates `cols`: rows 6t..6t+2 angular velocity (rad/s per unit
+  /// coordinate rate), rows 6t+3..6t+5 the station's linear velocity (m/s), world frame.
+  Eigen::MatrixXd calcFrameJacobians(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
+                                     const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols) const;
+
+  /// Position of a named point in the world frame (m); `s` realized to Position.
+  SimTK::Vec3 findPointLocation(const SimTK::State& s, const NamedPoint& p) const;
+
+ private:
+  SimTK::MultibodySystem system_;
+  SimTK::SimbodyMatterSubsystem matter_;
+  SimTK::GeneralForceSubsystem forces_;
+  SimTK::Vec3 gravity_W_;
+  std::vector<Coordinate> coords_;
+  std::vector<SimTK::QIndex> qindex_;
+  std::vector<SimTK::UIndex> uindex_;
+  std::vector<Part> parts_;
+  std::vector<BodyInfo> bodies_;
+  std::vector<NamedPoint> points_;
+  std::vector<int> dofs_;
+  SimTK::State reference_state_;
+  double total_mass_ = 0, moving_mass_ = 0;
+  bool finalized_ = false;
+};
+
+}  // namespace mmv

@@ -1,0 +1,23 @@
+#pragma once
+/// Writers for analysis results: readable text tables (units in headers) and JSON
+/// (schema in docs/outputs.md, snake_case keys with units in names).
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sim/analysis.hpp"
+
+namespace mmv {
+
+struct ConvergenceStudy;  // sim/converge.hpp
+
+std::string formatModesText(const ModesReport& r);
+nlohmann::json modesToJson(const ModesReport& r);
+
+std::string formatConvergenceText(const ConvergenceStudy& c);
+nlohmann::json convergenceToJson(const ConvergenceStudy& c);
+
+/// The version stamped into every JSON document.
+const char* mmvlabVersion();
+
+}  // namespace mmv

@@ -1,0 +1,43 @@
+#pragma once
+/// A scene: the article and its environment as plain data in SI units (angles in
+/// radians), read from YAML (docs/scene-format.md). No Simbody here.
+
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "article/article_spec.hpp"
+
+namespace mmv {
+
+struct Scene {
+  std::string name;
+  std::string source;  ///< file the scene came from, or "<default scene>".
+  std::array<double, 3> gravity{0, -9.80665, 0};  ///< m/s^2 in the world frame, z = 0.
+  ArticleSpec article;
+};
+
+/// Bad scene content. what() is one line: "file:line:col: what is wrong (got X)".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The scene file does not exist or cannot be read.
+class SceneFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Parses scene YAML text; `source_name` is used in error messages. Throws SceneError.
+Scene parseScene(const std::string& yaml_text, const std::string& source_name);
+/// Reads and parses a scene file. Throws SceneFileError or SceneError.
+Scene loadSceneFile(const std::string& path);
+/// The MMV article scene embedded in the binary (the same text as scenes/mmv.yaml).
+const char* defaultSceneYaml();
+Scene loadDefaultScene();
+
+/// Replaces the segment count of every flexible (non-rigid) link; n >= 1.
+void overrideSegments(Scene& scene, int n);
+
+}  // namespace mmv

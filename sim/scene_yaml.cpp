@@ -1,0 +1,431 @@
+// Scene reader: YAML text -> Scene, with every problem reported as
+// "file:line:col: what is wrong (got X)". yaml-cpp accepts duplicate keys silently
+// and reports missing keys without a position, so keys are checked here against the
+// nodes' marks (see ../shared/DESIGN.md, platform pitfalls).
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "sim/scene.hpp"
+
+namespace mmv {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+/// Reads one document; knows the file name for messages.
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
+    std::ostringstream os;
+    os << file_ << ':' << (mark.line + 1) << ':' << (mark.column + 1) << ": " << what;
+    throw SceneError(os.str());
+  }
+
+  static std::string show(const YAML::Node& n) {
+    if (n.IsScalar()) return n.Scalar();
+    if (n.IsSequence()) return "a list";
+    if (n.IsMap()) return "a mapping";
+    return "nothing";
+  }
+
+  double number(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsScalar()) fail(n.Mark(), path + " must be a number (got " + show(n) + ")");
+    const std::string& s = n.Scalar();
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || end == s.c_str() || *end != '\0')
+      fail(n.Mark(), path + " must be a number (got " + s + ")");
+    if (!std::isfinite(v)) fail(n.Mark(), path + " must be a finite number (got " + s + ")");
+    return v;
+  }
+
+  double positive(const YAML::Node& n, const std::string& path, const std::string& unit) const {
+    const double v = number(n, path);
+    if (!(v > 0)) fail(n.Mark(), path + " must be > 0" + unit + " (got " + n.Scalar() + ")");
+    return v;
+  }
+
+  double nonNegative(const YAML::Node& n, const std::string& path, const std::string& unit) const {
+    const double v = number(n, path);
+    if (v < 0) fail(n.Mark(), path + " must be >= 0" + unit + " (got " + n.Scalar() + ")");
+    return v;
+  }
+
+  int integer(const YAML::Node& n, const std::string& path) const {
+    const double v = number(n, path);
+    if (v != std::floor(v) || std::abs(v) > 1e6)
+      fail(n.Mark(), path + " must be an integer (got " + n.Scalar() + ")");
+    return static_cast<int>(v);
+  }
+
+  std::string text(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsScalar() || n.Scalar().empty())
+      fail(n.Mark(), path + " must be a text value (got " + show(n) + ")");
+    return n.Scalar();
+  }
+
+  std::array<double, 3> vec3(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsSequence() || n.size() != 3)
+      fail(n.Mark(), path + " must be a list of 3 numbers (got " + show(n) + ")");
+    return {number(n[0], path + "[0]"), number(n[1], path + "[1]"), number(n[2], path + "[2]")};
+  }
+
+  /// Checks a mapping: no duplicate keys, only `allowed` keys. Returns key -> node.
+  std::map<std::string, YAML::Node> mapping(const YAML::Node& n, const std::string& path,
+                                            const std::vector<std::string>& allowed) const {
+    if (!n.IsMap()) fail(n.Mark(), path + " must be a mapping of keys (got " + show(n) + ")");
+    std::map<std::string, YAML::Node> out;
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      const YAML::Node& key = it->first;
+      if (!key.IsScalar()) fail(key.Mark(), path + ": keys must be text");
+      const std::string k = key.Scalar();
+      const std::string where = path.empty() ? k : path + "." + k;
+      if (out.count(k)) fail(key.Mark(), "duplicate key '" + where + "'");
+      bool ok = false;
+      for (const auto& a : allowed) ok = ok || a == k;
+      if (!ok)
+        fail(key.Mark(), "unknown key '" + where + "' (allowed: " + joinNames(allowed) + ")");
+      out.emplace(k, it->second);
+    }
+    return out;
+  }
+
+  const YAML::Node& require(const std::map<std::string, YAML::Node>& m, const YAML::Node& parent,
+                            const std::string& path, const std::string& key) const {
+    auto it = m.find(key);
+    if (it == m.end())
+      fail(parent.Mark(), (path.empty() ? std::string("scene") : path) +
+                              " is missing required key '" + key + "'");
+    if (it->second.IsNull())
+      fail(it->second.Mark(), (path.empty() ? key : path + "." + key) + " has no value");
+    return it->second;
+  }
+
+ private:
+  std::string file_;
+};
+
+struct Located {
+  YAML::Mark mark;
+  std::string path;
+};
+
+LumpedMass readLumpedMass(const Reader& r, const YAML::Node& n, const std::string& path) {
+  auto m = r.mapping(n, path, {"mass", "rotary_inertia"});
+  LumpedMass out;
+  out.mass = r.positive(r.require(m, n, path, "mass"), path + ".mass", " kg");
+  if (m.count("rotary_inertia"))
+    out.rotary_inertia = r.nonNegative(m.at("rotary_inertia"), path + ".rotary_inertia", " kg*m^2");
+  return out;
+}
+
+Section readSection(const Reader& r, const std::string& name, const YAML::Node& n,
+                    const std::string& path) {
+  auto m = r.mapping(n, path, {"shape", "b", "h", "t", "radius", "area", "second_moment"});
+  Section s;
+  s.name = name;
+  const YAML::Node& shape = r.require(m, n, path, "shape");
+  const std::string kind = r.text(shape, path + ".shape");
+  auto need = [&](const char* key) -> const YAML::Node& { return r.require(m, n, path, key); };
+  auto forbid = [&](std::initializer_list<const char*> keys) {
+    for (const char* k : keys)
+      if (m.count(k))
+        r.fail(m.at(k).Mark(), path + "." + k + " does not apply to shape '" + kind + "'");
+  };
+  if (kind == "rectangle") {
+    s.shape = SectionShape::Rectangle;
+    forbid({"t", "radius", "area", "second_moment"});
+    s.b = r.positive(need("b"), path + ".b", " m");
+    s.h = r.positive(need("h"), path + ".h", " m");
+  } else if (kind == "rectangular_tube") {
+    s.shape = SectionShape::RectangularTube;
+    forbid({"radius", "area", "second_moment"});
+    s.b = r.positive(need("b"), path + ".b", " m");
+    s.h = r.positive(need("h"), path + ".h", " m");
+    s.t = r.positive(need("t"), path + ".t", " m");
+    if (2 * s.t >= std::min(s.b, s.h))
+      r.fail(need("t").Mark(), path + ".t must be < min(b, h)/2 m so the tube has a hole (got " +
+                                   need("t").Scalar() + ")");
+  } else if (kind == "round_rod") {
+    s.shape = SectionShape::RoundRod;
+    forbid({"b", "h", "t", "area", "second_moment"});
+    s.radius = r.positive(need("radius"), path + ".radius", " m");
+  } else if (kind == "explicit") {
+    s.shape = SectionShape::Explicit;
+    forbid({"b", "h", "t", "radius"});
+    s.explicit_area = r.positive(need("area"), path + ".area", " m^2");
+    s.explicit_second_moment = r.positive(need("second_moment"), path + ".second_moment", " m^4");
+  } else {
+    r.fail(shape.Mark(), path + ".shape: unknown shape '" + kind +
+                             "' (known: rectangle, rectangular_tube, round_rod, explicit)");
+  }
+  return s;
+}
+
+class SceneParser {
+ public:
+  SceneParser(const Reader& r) : r_(r) {}
+
+  Scene parse(const YAML::Node& root, const std::string& source) {
+    if (!root.IsDefined() || root.IsNull())
+      r_.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
+    auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
+                                     "links"});
+    Scene scene;
+    scene.source = source;
+    scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
+    if (top.count("gravity")) {
+      scene.gravity = r_.vec3(top.at("gravity"), "gravity");
+      if (scene.gravity[2] != 0.0)
+        r_.fail(top.at("gravity")[2].Mark(),
+                "gravity[2] must be 0 m/s^2: the article moves in the x-y plane (got " +
+                    top.at("gravity")[2].Scalar() + ")");
+    }
+    ArticleSpec& a = scene.article;
+    readMaterials(r_.require(top, root, "", "materials"), a);
+    readSections(r_.require(top, root, "", "sections"), a);
+    if (top.count("base")) readBase(top.at("base"), a.base);
+    readJoints(r_.require(top, root, "", "joints"), a);
+    readLinks(r_.require(top, root, "", "links"), a);
+    checkTree(a);
+    return scene;
+  }
+
+ private:
+  void readMaterials(const YAML::Node& n, ArticleSpec& a) {
+    auto m = r_.mapping(n, "materials", namesOf(n, "materials"));
+    for (const auto& [name, node] : m) {
+      const std::string path = "materials." + name;
+      auto mm = r_.mapping(node, path, {"density", "youngs_modulus"});
+      Material mat;
+      mat.name = name;
+      mat.density = r_.positive(r_.require(mm, node, path, "density"), path + ".density", " kg/m^3");
+      mat.youngs_modulus =
+          r_.positive(r_.require(mm, node, path, "youngs_modulus"), path + ".youngs_modulus", " Pa");
+      a.materials.push_back(mat);
+    }
+  }
+
+  void readSections(const YAML::Node& n, ArticleSpec& a) {
+    auto m = r_.mapping(n, "sections", namesOf(n, "sections"));
+    for (const auto& [name, node] : m) a.sections.push_back(readSection(r_, name, node, "sections." + name));
+  }
+
+  /// Every key of a name->item mapping is allowed; duplicates are still caught.
+  std::vector<std::string> namesOf(const YAML::Node& n, const std::string& path) {
+    if (!n.IsMap()) r_.fail(n.Mark(), path + " must be a mapping of names (got " + Reader::show(n) + ")");
+    std::vector<std::string> keys;
+    for (auto it = n.begin(); it != n.end(); ++it)
+      if (it->first.IsScalar()) keys.push_back(it->first.Scalar());
+    if (keys.empty()) r_.fail(n.Mark(), path + " must name at least one entry");
+    return keys;
+  }
+
+  void readBase(const YAML::Node& n, BaseSpec& b) {
+    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg"});
+    if (m.count("type")) {
+      const std::string t = r_.text(m.at("type"), "base.type");
+      if (t != "fixed") r_.fail(m.at("type").Mark(), "base.type: unknown base type '" + t + "' (known: fixed)");
+    }
+    if (m.count("position")) {
+      b.position = r_.vec3(m.at("position"), "base.position");
+      if (b.position[2] != 0.0)
+        r_.fail(m.at("position")[2].Mark(), "base.position[2] must be 0 m: the article moves in the x-y plane (got " +
+                                                m.at("position")[2].Scalar() + ")");
+    }
+    if (m.count("direction_deg")) b.direction = r_.number(m.at("direction_deg"), "base.direction_deg") * kDegToRad;
+  }
+
+  void checkName(const YAML::Node& n, const std::string& path, const std::string& name) {
+    if (name == "base") r_.fail(n.Mark(), path + ": the name 'base' is reserved (got base)");
+    if (name.find_first_of(". \t/") != std::string::npos)
+      r_.fail(n.Mark(), path + " must not contain '.', '/' or spaces (got " + name + ")");
+    if (!names_.insert(name).second)
+      r_.fail(n.Mark(), path + ": name '" + name + "' is used twice among joints and links");
+  }
+
+  void readJoints(const YAML::Node& n, ArticleSpec& a) {
+    if (!n.IsSequence() || n.size() == 0)
+      r_.fail(n.Mark(), "joints must be a non-empty list (got " + Reader::show(n) + ")");
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      const YAML::Node& jn = n[i];
+      const std::string path = "joints[" + std::to_string(i) + "]";
+      auto m = r_.mapping(jn, path, {"name", "parent", "angle_deg", "hold", "servo_stiffness", "torquer"});
+      JointSpec j;
+      const YAML::Node& name = r_.require(m, jn, path, "name");
+      j.name = r_.text(name, path + ".name");
+      checkName(name, path + ".name", j.name);
+      j.parent = r_.text(r_.require(m, jn, path, "parent"), path + ".parent");
+      joint_parent_marks_[j.name] = {m.at("parent").Mark(), path + ".parent"};
+      if (m.count("angle_deg")) j.angle = r_.number(m.at("angle_deg"), path + ".angle_deg") * kDegToRad;
+      if (m.count("hold")) {
+        const std::string h = r_.text(m.at("hold"), path + ".hold");
+        if (h == "locked") j.hold = JointHold::Locked;
+        else if (h == "free") j.hold = JointHold::Free;
+        else if (h == "servo") j.hold = JointHold::Servo;
+        else r_.fail(m.at("hold").Mark(), path + ".hold: unknown hold '" + h + "' (known: locked, free, servo)");
+      }
+      if (j.hold == JointHold::Servo) {
+        j.servo_stiffness = r_.positive(r_.require(m, jn, path, "servo_stiffness"),
+                                        path + ".servo_stiffness", " N*m/rad");
+      } else if (m.count("servo_stiffness")) {
+        r_.fail(m.at("servo_stiffness").Mark(), path + ".servo_stiffness applies only with hold: servo");
+      }
+      if (m.count("torquer")) j.torquer = readLumpedMass(r_, m.at("torquer"), path + ".torquer");
+      joint_marks_[j.name] = {jn.Mark(), path};
+      a.joints.push_back(j);
+    }
+  }
+
+  void readLinks(const YAML::Node& n, ArticleSpec& a) {
+    if (!n.IsSequence() || n.size() == 0)
+      r_.fail(n.Mark(), "links must be a non-empty list (got " + Reader::show(n) + ")");
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      const YAML::Node& ln = n[i];
+      const std::string path = "links[" + std::to_string(i) + "]";
+      auto m = r_.mapping(ln, path, {"name", "joint", "material", "section", "length", "segments",
+                                     "mount_angle_deg", "tip_mass", "branches"});
+      LinkSpec l;
+      const YAML::Node& name = r_.require(m, ln, path, "name");
+      l.name = r_.text(name, path + ".name");
+      const YAML::Node& joint = r_.require(m, ln, path, "joint");
+      l.joint = r_.text(joint, path + ".joint");
+      if (!a.findJoint(l.joint))
+        r_.fail(joint.Mark(), path + ".joint: unknown joint '" + l.joint + "'");
+      const YAML::Node& mat = r_.require(m, ln, path, "material");
+      l.material = r_.text(mat, path + ".material");
+      if (!a.findMaterial(l.material)) {
+        std::vector<std::string> known;
+        for (const auto& x : a.materials) known.push_back(x.name);
+        r_.fail(mat.Mark(), path + ".material: unknown material '" + l.material + "' (known: " + joinNames(known) + ")");
+      }
+      const YAML::Node& sec = r_.require(m, ln, path, "section");
+      l.section = r_.text(sec, path + ".section");
+      if (!a.findSection(l.section)) {
+        std::vector<std::string> known;
+        for (const auto& x : a.sections) known.push_back(x.name);
+        r_.fail(sec.Mark(), path + ".section: unknown section '" + l.section + "' (known: " + joinNames(known) + ")");
+      }
+      l.length = r_.positive(r_.require(m, ln, path, "length"), path + ".length", " m");
+      const YAML::Node& seg = r_.require(m, ln, path, "segments");
+      if (seg.IsScalar() && seg.Scalar() == "rigid") {
+        l.rigid = true;
+      } else {
+        if (!seg.IsScalar()) r_.fail(seg.Mark(), path + ".segments must be an integer >= 1 or 'rigid' (got " + Reader::show(seg) + ")");
+        char* end = nullptr;
+        const long v = std::strtol(seg.Scalar().c_str(), &end, 10);
+        if (*end != '\0' || end == seg.Scalar().c_str() || v < 1 || v > 100000)
+          r_.fail(seg.Mark(), path + ".segments must be an integer >= 1 or 'rigid' (got " + seg.Scalar() + ")");
+        l.segments = static_cast<int>(v);
+      }
+      if (m.count("mount_angle_deg")) l.mount_angle = r_.number(m.at("mount_angle_deg"), path + ".mount_angle_deg") * kDegToRad;
+      if (m.count("tip_mass")) l.tip_mass = readLumpedMass(r_, m.at("tip_mass"), path + ".tip_mass");
+
+      int count = 1;
+      double spread = 0;
+      if (m.count("branches")) {
+        const YAML::Node& bn = m.at("branches");
+        auto bm = r_.mapping(bn, path + ".branches", {"count", "angle_deg"});
+        const YAML::Node& c = r_.require(bm, bn, path + ".branches", "count");
+        count = r_.integer(c, path + ".branches.count");
+        if (count < 1 || count > 26) r_.fail(c.Mark(), path + ".branches.count must be 1 to 26 (got " + c.Scalar() + ")");
+        if (count > 1) spread = r_.number(r_.require(bm, bn, path + ".branches", "angle_deg"), path + ".branches.angle_deg") * kDegToRad;
+      }
+      for (int k = 0; k < count; ++k) {
+        LinkSpec b = l;
+        if (count > 1) {
+          b.name = l.name + static_cast<char>('a' + k);
+          b.mount_angle += -0.5 * spread + spread * k / (count - 1);
+        }
+        checkName(name, path + ".name", b.name);
+        link_marks_[b.name] = {ln.Mark(), path};
+        a.links.push_back(b);
+      }
+    }
+  }
+
+  /// Every joint hangs from the base or an existing link, carries a link, and the
+  /// links form a tree rooted at the base.
+  void checkTree(const ArticleSpec& a) {
+    for (const auto& j : a.joints) {
+      if (j.parent != "base" && !a.findLink(j.parent)) {
+        std::vector<std::string> known{"base"};
+        for (const auto& l : a.links) known.push_back(l.name);
+        const auto& loc = joint_parent_marks_.at(j.name);
+        r_.fail(loc.mark, loc.path + ": unknown parent '" + j.parent + "' (known: " + joinNames(known) + ")");
+      }
+      bool carries = false;
+      for (const auto& l : a.links) carries = carries || l.joint == j.name;
+      if (!carries) {
+        const auto& loc = joint_marks_.at(j.name);
+        r_.fail(loc.mark, loc.path + ": joint '" + j.name + "' carries no link");
+      }
+    }
+    for (const auto& l : a.links) {
+      // Walk towards the base; a walk longer than the number of links is a cycle.
+      std::string at = l.name;
+      for (std::size_t steps = 0;; ++steps) {
+        const LinkSpec* cur = a.findLink(at);
+        const std::string parent = a.findJoint(cur->joint)->parent;
+        if (parent == "base") break;
+        if (steps > a.links.size()) {
+          const auto& loc = link_marks_.at(l.name);
+          r_.fail(loc.mark, loc.path + ": link '" + l.name + "' is not connected to the base (its joints form a loop)");
+        }
+        at = parent;
+      }
+    }
+  }
+
+  const Reader& r_;
+  std::set<std::string> names_;
+  std::map<std::string, Located> joint_marks_, joint_parent_marks_, link_marks_;
+};
+
+}  // namespace
+
+Scene parseScene(const std::string& yaml_text, const std::string& source_name) {
+  Reader reader(source_name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    reader.fail(e.mark, "malformed YAML: " + e.msg);
+  }
+  SceneParser parser(reader);
+  return parser.parse(root, source_name);
+}
+
+Scene loadSceneFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneFileError(path + ": cannot open scene file");
+  std::ostringstream os;
+  os << in.rdbuf();
+  if (in.bad()) throw SceneFileError(path + ": cannot read scene file");
+  return parseScene(os.str(), path);
+}
+
+Scene loadDefaultScene() { return parseScene(defaultSceneYaml(), "<default scene>"); }
+
+void overrideSegments(Scene& scene, int n) {
+  for (auto& l : scene.article.links)
+    if (!l.rigid) l.segments = n;
+}
+
+}  // namespace mmv

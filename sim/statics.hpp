@@ -1,0 +1,45 @@
+#pragma once
+/// Static equilibrium of the article under gravity with the torquers holding their
+/// commanded angles: find the free coordinates x (hinges, free and servo joints) with
+///
+///     f_x(q) = 0,     f = gravity + spring generalized forces (Model::calcAppliedForces),
+///
+/// held joints fixed at their commanded angles. Newton's method on f_x with the
+/// tangent stiffness K = -df/dq (sim/linearize.hpp) and a backtracking line search on
+/// ||f_x||^2. Converged when ||f_x||_inf <= force_tolerance * force_scale, where
+/// force_scale is the largest generalized force at the reference configuration (so the
+/// test is relative to the loads present). The torque a locked torquer holds is
+/// tau = -f_joint at the solution (the torque the torquer applies to its child link,
+/// counter-clockwise positive).
+
+#include <string>
+
+#include "sim/model.hpp"
+
+namespace mmv {
+
+struct EquilibriumOptions {
+  int max_iterations = 50;
+  double force_tolerance = 1e-10;  ///< relative to the force scale (dimensionless).
+};
+
+struct EquilibriumResult {
+  bool converged = false;
+  std::string failure;     ///< why it did not converge (empty when converged).
+  int iterations = 0;
+  double residual = 0;     ///< ||f_x||_inf at the end, N*m.
+  double force_scale = 0;  ///< N*m.
+  SimTK::State state;      ///< the equilibrium (or last iterate), realized to Position.
+  Eigen::VectorXd q;       ///< all coordinates, rad.
+  Eigen::VectorXd generalized_force;  ///< f at the solution, N*m (non-zero at held joints).
+};
+
+EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions& options = {});
+
+/// Thrown by analyses when the numbers cannot be trusted; what() names the trouble.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace mmv
