@@ -14,11 +14,14 @@ SimTK::Transform rotZ(double angle, const SimTK::Vec3& p = SimTK::Vec3(0)) {
 }
 
 /// A piece of length l and mass m, origin at its inboard end, x along the piece.
-/// Ixx is the section's own polar term (irrelevant in the plane, keeps the inertia
-/// physical); Iyy = Izz = m l^2 / 12 about the centre.
+/// In the plane only Izz = m l^2 / 12 about the centre matters (Euler-Bernoulli: no
+/// section rotary inertia). The out-of-plane axes get the section's gyration r^2 = I/A,
+/// Ixx = m r^2 and Iyy = m (l^2/12 + r^2), which keeps the inertia physically valid
+/// (triangle inequality) for short, thick pieces.
 SimTK::Body::Rigid pieceBody(const LinkPiece& p, double gyration_sq) {
   const SimTK::Vec3 com(0.5 * p.length, 0, 0);
-  const SimTK::Inertia central(p.mass * gyration_sq, p.inertia_zz_about_com, p.inertia_zz_about_com);
+  const SimTK::Inertia central(p.mass * gyration_sq, p.inertia_zz_about_com + p.mass * gyration_sq,
+                               p.inertia_zz_about_com);
   return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
 }
 

@@ -46,7 +46,7 @@ LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium) {
   lin.M = calcMass(model, equilibrium, lin.dofs);
   lin.M = 0.5 * (lin.M + lin.M.transpose());
   const Eigen::MatrixXd K_raw = calcStiffness(model, equilibrium, lin.dofs);
-  const double scale = K_raw.cwiseAbs().maxCoeff();
+  const double scale = n > 0 ? K_raw.cwiseAbs().maxCoeff() : 0.0;
   lin.asymmetry = scale > 0 ? (K_raw - K_raw.transpose()).cwiseAbs().maxCoeff() / scale : 0.0;
   lin.K = 0.5 * (K_raw + K_raw.transpose());
   lin.K_elastic = Eigen::MatrixXd::Zero(n, n);

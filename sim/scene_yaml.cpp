@@ -5,6 +5,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -33,7 +35,8 @@ class Reader {
 
   [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
     std::ostringstream os;
-    os << file_ << ':' << (mark.line + 1) << ':' << (mark.column + 1) << ": " << what;
+    // An empty document has a null mark (-1): point at the start of the file.
+    os << file_ << ':' << std::max(mark.line, 0) + 1 << ':' << std::max(mark.column, 0) + 1 << ": " << what;
     throw SceneError(os.str());
   }
 
@@ -47,6 +50,10 @@ class Reader {
   double number(const YAML::Node& n, const std::string& path) const {
     if (!n.IsScalar()) fail(n.Mark(), path + " must be a number (got " + show(n) + ")");
     const std::string& s = n.Scalar();
+    std::string lower;
+    for (char ch : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos)
+      fail(n.Mark(), path + " must be a finite number (got " + s + ")");
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
     if (s.empty() || end == s.c_str() || *end != '\0')

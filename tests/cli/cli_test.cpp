@@ -1,0 +1,179 @@
+// The mmvlab executable as a user runs it: exit codes, stdout/stderr discipline,
+// nothing written on failure, and every shipped scene runs.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("mmvlab_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Result run(const std::string& args) {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+    const std::string cmd = std::string(MMVLAB_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    Result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, DefaultSceneModesTable) {
+  const Result r = run("modes");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Joints and the torque each torquer holds"), std::string::npos);
+  EXPECT_NE(r.out.find("frequency_Hz"), std::string::npos);
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, DefaultSceneJsonHasSortedPositiveFrequencies) {
+  const Result r = run("modes --json --modes 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "modes");
+  EXPECT_TRUE(j["equilibrium"]["converged"].get<bool>());
+  const auto& modes = j["modes"];
+  ASSERT_EQ(modes.size(), j["model"]["dofs"].get<std::size_t>());
+  double prev = 0;
+  for (const auto& m : modes) {
+    ASSERT_TRUE(m["stable"].get<bool>());
+    const double f = m["frequency_hz"].get<double>();
+    EXPECT_GT(f, 0.0);
+    EXPECT_GE(f, prev);
+    prev = f;
+    EXPECT_FALSE(m["shape"].empty());
+  }
+  EXPECT_EQ(j["equilibrium"]["joints"].size(), 3u);
+}
+
+TEST_F(Cli, SegmentsOverrideChangesTheModel) {
+  const Result r = run("modes --json --segments 4");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["model"]["dofs"], 16);
+}
+
+TEST_F(Cli, EmbeddedSceneIsTheShippedFile) {
+  const Result r = run("scene");
+  ASSERT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv.yaml"));
+}
+
+// Examples are tests: every shipped scene runs and gives a stable, converged result.
+TEST_F(Cli, EveryShippedSceneRuns) {
+  int count = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(MMVLAB_SOURCE_DIR) / "scenes")) {
+    if (e.path().extension() != ".yaml") continue;
+    ++count;
+    const Result r = run("modes --json " + e.path().string());
+    ASSERT_EQ(r.code, 0) << e.path() << ": " << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(j["equilibrium"]["converged"].get<bool>()) << e.path();
+    for (const auto& m : j["modes"]) EXPECT_TRUE(m["stable"].get<bool>()) << e.path();
+  }
+  EXPECT_GE(count, 1);
+}
+
+TEST_F(Cli, BadSceneExits65WithOneLineAndNoOutput) {
+  std::string text = run("scene").out;
+  const std::string from = "    length: 1.52";
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), "    length: -1.52");
+  const fs::path p = write("bad.yaml", text);
+  const Result r = run("modes --json " + p.string());
+  EXPECT_EQ(r.code, 65);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind(p.string() + ":", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("links[1].length must be > 0 m (got -1.52)"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, MalformedYamlExits65) {
+  const fs::path p = write("broken.yaml", "links: [\n  - a\n");
+  const Result r = run("modes " + p.string());
+  EXPECT_EQ(r.code, 65);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("malformed YAML"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, MissingSceneExits66) {
+  const Result r = run("modes " + (dir_ / "nope.yaml").string());
+  EXPECT_EQ(r.code, 66);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("cannot open scene file"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, UsageErrorExits64) {
+  EXPECT_EQ(run("modes --segments 0").code, 64);
+  EXPECT_EQ(run("frobnicate").code, 64);
+  EXPECT_EQ(run("").code, 64);
+}
+
+TEST_F(Cli, NumericalFailureExits1AndNamesIt) {
+  // A free pendulum released exactly horizontal: singular tangent stiffness.
+  const fs::path p = write("singular.yaml", R"(name: horizontal pendulum
+materials: {m: {density: 1000, youngs_modulus: 1e9}}
+sections: {s: {shape: explicit, area: 1e-4, second_moment: 1e-10}}
+base: {direction_deg: -90}
+joints: [{name: j1, parent: base, angle_deg: 90, hold: free}]
+links: [{name: l1, joint: j1, material: m, section: s, length: 1.0, segments: rigid}]
+)");
+  const Result r = run("modes --json " + p.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("numerical failure: static equilibrium failed: tangent stiffness is singular"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(Cli, ConvergeTable) {
+  const Result r = run("converge --max-segments 8 --modes 3");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("richardson"), std::string::npos);
+  const Result j = run("converge --json --max-segments 8 --modes 3");
+  ASSERT_EQ(j.code, 0) << j.err;
+  const nlohmann::json doc = nlohmann::json::parse(j.out);
+  EXPECT_EQ(doc["runs"].size(), 4u);
+  EXPECT_EQ(doc["modes"].size(), 3u);
+}
+
+}  // namespace

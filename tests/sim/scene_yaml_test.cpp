@@ -1,0 +1,154 @@
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "sim/scene.hpp"
+
+namespace mmv {
+namespace {
+
+// A small valid scene; each bad-input test edits one line of it.
+const char* kGood = R"(name: two links
+gravity: [0, -9.81, 0]
+materials:
+  steel: {density: 7800, youngs_modulus: 2.0e11}
+sections:
+  bar: {shape: rectangle, b: 0.02, h: 0.01}
+joints:
+  - name: j1
+    parent: base
+    angle_deg: 30
+  - name: j2
+    parent: l1
+    hold: free
+links:
+  - name: l1
+    joint: j1
+    material: steel
+    section: bar
+    length: 1.0
+    segments: 4
+  - name: l2
+    joint: j2
+    material: steel
+    section: bar
+    length: 0.5
+    segments: rigid
+    branches: {count: 2, angle_deg: 20}
+)";
+
+std::string replaceLine(const std::string& text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  std::string out = text;
+  out.replace(at, from.size(), to);
+  return out;
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    parseScene(text, "s.yaml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(SceneYaml, GoodSceneParses) {
+  const Scene s = parseScene(kGood, "s.yaml");
+  EXPECT_EQ(s.name, "two links");
+  ASSERT_EQ(s.article.links.size(), 3u);  // l2 expands into two branches
+  EXPECT_EQ(s.article.links[1].name, "l2a");
+  EXPECT_EQ(s.article.links[2].name, "l2b");
+  EXPECT_NEAR(s.article.links[1].mount_angle, -10 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(s.article.links[2].mount_angle, 10 * M_PI / 180, 1e-15);
+  EXPECT_TRUE(s.article.links[1].rigid);
+  EXPECT_EQ(s.article.links[0].segments, 4);
+  EXPECT_NEAR(s.article.joints[0].angle, M_PI / 6, 1e-15);
+  EXPECT_EQ(s.article.joints[1].hold, JointHold::Free);
+}
+
+TEST(SceneYaml, DefaultSceneParsesAndMatchesReportTable1) {
+  const Scene s = loadDefaultScene();
+  ASSERT_EQ(s.article.links.size(), 4u);
+  EXPECT_EQ(s.article.findLink("link1")->length, 2.44);
+  EXPECT_EQ(s.article.findLink("link3b")->length, 0.762);
+  EXPECT_EQ(s.article.findMaterial("carbon_carbon")->youngs_modulus, 41.4e9);
+}
+
+struct BadCase {
+  const char* what;  // also the test name
+  const char* from;
+  const char* to;
+  const char* expected;  // the whole message
+};
+
+class SceneYamlBad : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(SceneYamlBad, OneLineErrorWithPosition) {
+  const BadCase& c = GetParam();
+  EXPECT_EQ(errorOf(replaceLine(kGood, c.from, c.to)), c.expected) << c.what;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Classes, SceneYamlBad,
+    ::testing::Values(
+        BadCase{"malformed", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0",
+                "s.yaml:3:10: malformed YAML: end of sequence flow not found"},
+        BadCase{"unknown key", "    angle_deg: 30", "    angel_deg: 30",
+                "s.yaml:10:5: unknown key 'joints[0].angel_deg' (allowed: name, parent, angle_deg, hold, servo_stiffness, torquer)"},
+        BadCase{"duplicate key", "    length: 1.0\n", "    length: 1.0\n    length: 2.0\n",
+                "s.yaml:20:5: duplicate key 'links[0].length'"},
+        BadCase{"missing key", "    length: 0.5\n", "",
+                "s.yaml:21:5: links[1] is missing required key 'length'"},
+        BadCase{"wrong type", "    length: 1.0", "    length: [1.0]",
+                "s.yaml:19:13: links[0].length must be a number (got a list)"},
+        BadCase{"not a number", "    length: 1.0", "    length: 1.0m",
+                "s.yaml:19:13: links[0].length must be a number (got 1.0m)"},
+        BadCase{"length <= 0", "    length: 1.0", "    length: -0.76",
+                "s.yaml:19:13: links[0].length must be > 0 m (got -0.76)"},
+        BadCase{"E <= 0", "youngs_modulus: 2.0e11", "youngs_modulus: 0",
+                "s.yaml:4:42: materials.steel.youngs_modulus must be > 0 Pa (got 0)"},
+        BadCase{"rho <= 0", "density: 7800", "density: -1",
+                "s.yaml:4:20: materials.steel.density must be > 0 kg/m^3 (got -1)"},
+        BadCase{"A <= 0", "bar: {shape: rectangle, b: 0.02, h: 0.01}", "bar: {shape: explicit, area: 0, second_moment: 1e-9}",
+                "s.yaml:6:32: sections.bar.area must be > 0 m^2 (got 0)"},
+        BadCase{"I <= 0", "bar: {shape: rectangle, b: 0.02, h: 0.01}", "bar: {shape: explicit, area: 1e-4, second_moment: -1e-9}",
+                "s.yaml:6:53: sections.bar.second_moment must be > 0 m^4 (got -1e-9)"},
+        BadCase{"segments < 1", "    segments: 4", "    segments: 0",
+                "s.yaml:20:15: links[0].segments must be an integer >= 1 or 'rigid' (got 0)"},
+        BadCase{"unknown material", "    material: steel\n    section: bar\n    length: 1.0",
+                "    material: steal\n    section: bar\n    length: 1.0",
+                "s.yaml:17:15: links[0].material: unknown material 'steal' (known: steel)"},
+        BadCase{"unknown link", "    parent: l1", "    parent: l9",
+                "s.yaml:12:13: joints[1].parent: unknown parent 'l9' (known: base, l1, l2a, l2b)"},
+        BadCase{"unknown joint", "    joint: j2", "    joint: j7",
+                "s.yaml:22:12: links[1].joint: unknown joint 'j7'"},
+        BadCase{"nan", "    length: 1.0", "    length: .nan",
+                "s.yaml:19:13: links[0].length must be a finite number (got .nan)"},
+        BadCase{"out of plane gravity", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 1]",
+                "s.yaml:2:21: gravity[2] must be 0 m/s^2: the article moves in the x-y plane (got 1)"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) {
+      std::string name = info.param.what;
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
+
+TEST(SceneYaml, LoopOfJointsIsNotConnected) {
+  const std::string text = replaceLine(kGood, "    parent: base", "    parent: l2a");
+  EXPECT_EQ(errorOf(text), "s.yaml:15:5: links[0]: link 'l1' is not connected to the base (its joints form a loop)");
+}
+
+TEST(SceneYaml, EmptyScene) {
+  EXPECT_EQ(errorOf(""), "s.yaml:1:1: the scene is empty (expected a mapping with 'links' and 'joints')");
+}
+
+TEST(SceneYaml, MissingFile) {
+  EXPECT_THROW(loadSceneFile("/nonexistent/scene.yaml"), SceneFileError);
+}
+
+}  // namespace
+}  // namespace mmv
