@@ -47,6 +47,21 @@ void Model::finalize() {
   for (std::size_t i = 0; i < coords_.size(); ++i) s.updQ()[qindex_[i]] = coords_[i].reference;
   system_.realize(s, SimTK::Stage::Position);
   reference_state_ = s;
+  // Ancestry: which coordinates move each body.
+  std::vector<int> coord_of_mobod(matter_.getNumBodies(), -1);
+  for (std::size_t i = 0; i < coords_.size(); ++i) coord_of_mobod[coords_[i].mobod] = static_cast<int>(i);
+  coord_body_.assign(coords_.size(), -1);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    std::vector<int> anc;
+    for (SimTK::MobilizedBodyIndex ix = bodies_[b].mobod; ix != SimTK::GroundIndex;
+         ix = matter_.getMobilizedBody(ix).getParentMobilizedBody().getMobilizedBodyIndex()) {
+      if (coord_of_mobod[ix] >= 0) anc.push_back(coord_of_mobod[ix]);
+    }
+    body_ancestors_.push_back(anc);
+    if (coord_of_mobod[bodies_[b].mobod] >= 0) coord_body_[coord_of_mobod[bodies_[b].mobod]] = static_cast<int>(b);
+  }
+  for (std::size_t i = 0; i < coords_.size(); ++i)
+    if (coord_body_[i] < 0) throw std::logic_error("coordinate " + coords_[i].name + " moves no registered body");
   for (const auto& b : bodies_) {
     const double m = matter_.getMobilizedBody(b.mobod).getBodyMass(s);
     total_mass_ += m;

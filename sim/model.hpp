@@ -70,6 +70,10 @@ class Model {
   /// Registers a 1-DOF pin as a coordinate; adds a linear spring if stiffness > 0.
   void addCoordinate(const Coordinate& c);
   void addPoint(const NamedPoint& p);
+  /// Declares that the only forces are uniform gravity and the coordinates' linear
+  /// springs on planar pins about z, so the closed-form stiffness of
+  /// sim/linearize.hpp applies. Builders that add other forces must not call this.
+  void setOnlyGravityAndPinSprings() { only_gravity_and_pin_springs_ = true; }
   /// Realizes topology and builds the reference state. Call once, last.
   void finalize();
 
@@ -92,6 +96,12 @@ class Model {
   double getTotalMass() const { return total_mass_; }
   double getMovingMass() const { return moving_mass_; }
   const NamedPoint* findPoint(const std::string& name) const;
+  bool hasOnlyGravityAndPinSprings() const { return only_gravity_and_pin_springs_; }
+  /// Coordinates whose motion moves body b (index into getBodies()): its own
+  /// mobilizer's coordinate, if any, and those of all its ancestors.
+  const std::vector<int>& getAncestorCoordinates(int b) const { return body_ancestors_[b]; }
+  /// Index into getBodies() of the body that coordinate c's pin moves.
+  int getCoordinateBody(int c) const { return coord_body_[c]; }
 
   /// Coordinate values of a state, in coordinate order (rad).
   Eigen::VectorXd getQ(const SimTK::State& s) const;
@@ -125,6 +135,9 @@ class Model {
   std::vector<int> dofs_;
   SimTK::State reference_state_;
   double total_mass_ = 0, moving_mass_ = 0;
+  std::vector<std::vector<int>> body_ancestors_;
+  std::vector<int> coord_body_;
+  bool only_gravity_and_pin_springs_ = false;
   bool finalized_ = false;
 };
 

@@ -47,9 +47,10 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
     for (int i = 0; i < n; ++i) fx[i] = f[dofs[i]];
     // Singular relative to the problem, not only to K itself: a 1x1 K of 1e-17 N*m/rad
     // is singular next to a 100 N*m load even though it is its own largest pivot.
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);
     const double k_ref = std::max(K.diagonal().cwiseAbs().maxCoeff(), r.force_scale);
-    if (!lu.isInvertible() || lu.matrixLU().diagonal().cwiseAbs().minCoeff() < 1e-12 * k_ref) {
+    const double pivot = lu.matrixLU().diagonal().cwiseAbs().minCoeff();
+    if (!(pivot >= 1e-12 * k_ref) || !(lu.rcond() >= 1e-15)) {
       std::ostringstream os;
       os << "tangent stiffness is singular at iteration " << r.iterations
          << " (a free joint with nothing to restore it, or a mechanism)";

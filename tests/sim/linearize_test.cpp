@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "article/article_builder.hpp"
+#include "sim/scene.hpp"
 #include "support/scenes.hpp"
 
 namespace mmv {
@@ -38,6 +39,30 @@ TEST(Linearize, DoublePendulumMassAndStiffnessMatchAnalytic) {
       EXPECT_NEAR(K(i, j), Ka(i, j), 1e-7 * Ka.norm()) << i << j;
       EXPECT_NEAR(M(i, j), Ma(i, j), 1e-7 * Ma.norm()) << i << j;
     }
+}
+
+// The closed-form stiffness and central differences are independent evaluations of
+// the same K: they must agree to the differences' truncation error (~1e-9 relative)
+// on the default MMV article (branches, torquers, gravity) at its deflected
+// equilibrium and at an arbitrary bent state.
+TEST(Linearize, ClosedFormStiffnessEqualsFiniteDifferences) {
+  const auto model = buildArticleModel(loadDefaultScene());
+  ASSERT_TRUE(model->hasOnlyGravityAndPinSprings());
+  SimTK::State st = model->getReferenceState();
+  Eigen::VectorXd q = model->getQ(st);
+  for (int i = 0; i < q.size(); ++i) q[i] += 0.02 * std::sin(1.7 * i);  // bend everything
+  model->setQ(st, q);
+  const Eigen::MatrixXd Kc = calcStiffnessClosedForm(*model, st, model->getDofs());
+  const Eigen::MatrixXd Kd = calcStiffnessByDifferences(*model, st, model->getDofs());
+  EXPECT_LT((Kc - Kd).cwiseAbs().maxCoeff(), 1e-9 * Kc.cwiseAbs().maxCoeff());
+  // The gravity part alone (springs removed) must agree as well, relative to its size.
+  Eigen::MatrixXd Gc = Kc, Gd = Kd;
+  for (int a = 0; a < Gc.rows(); ++a) {
+    const double k = model->getCoordinates()[model->getDofs()[a]].stiffness;
+    Gc(a, a) -= k;
+    Gd(a, a) -= k;
+  }
+  EXPECT_LT((Gc - Gd).cwiseAbs().maxCoeff(), 1e-6 * Gc.cwiseAbs().maxCoeff());
 }
 
 // Springs give the elastic part exactly; with gravity off the geometric part vanishes.
