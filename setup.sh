@@ -3,8 +3,7 @@
 # Idempotent: packages already present are skipped; apt-get runs only when something
 # is missing. Needs root (or sudo) for the install step.
 #
-#   ./setup.sh           build + run dependencies
-#   ./setup.sh --tests   also what the test suite needs
+#   ./setup.sh      everything needed to build, run, test and benchmark mmvlab
 set -euo pipefail
 
 build_pkgs=(
@@ -12,14 +11,9 @@ build_pkgs=(
   libsimbody-dev libeigen3-dev libsundials-dev
   libopencv-dev libosmesa6-dev libgl-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev
-  libbenchmark-dev
+  libgtest-dev googletest libbenchmark-dev
 )
-test_pkgs=(libgtest-dev googletest)
-
 want=("${build_pkgs[@]}")
-if [[ "${1:-}" == "--tests" ]]; then
-  want+=("${test_pkgs[@]}")
-fi
 
 missing=()
 for p in "${want[@]}"; do
