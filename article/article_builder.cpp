@@ -70,7 +70,7 @@ class Builder {
     auto& matter = model_.updMatter();
     model_.addPoint({j.name, parent.mobod, parent.X_BF.p(), true});
     if (j.torquer) {
-      const int part = model_.addPart(j.name + ".torquer", Part::Kind::Torquer);
+      const int part = model_.addPart(j.name + ".torquer", Part::Kind::Torquer, j.parent == "base" ? "" : j.parent);
       SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(parent.mobod), parent.X_BF, lumpedBody(*j.torquer),
                                    SimTK::Transform());
       model_.addBody(w.getMobilizedBodyIndex(), part, parent.grounded);
@@ -86,7 +86,7 @@ class Builder {
     for (std::size_t c = 0; c < children.size(); ++c) {
       const LinkSpec& l = *children[c];
       const LinkDiscretization d = discretize(l);
-      const int part = model_.addPart(l.name, Part::Kind::Link);
+      const int part = model_.addPart(l.name, Part::Kind::Link, l.name);
       const double gyr2 = sectionGyrationSquared(*a_.findSection(l.section));
       SimTK::MobilizedBodyIndex prev;
       for (std::size_t k = 0; k < d.pieces.size(); ++k) {
@@ -131,7 +131,7 @@ class Builder {
       const SimTK::Transform X_tip(SimTK::Vec3(d.pieces.back().length, 0, 0));
       model_.addPoint({l.name + ".tip", prev, X_tip.p(), true});
       if (l.tip_mass) {
-        const int tip_part = model_.addPart(l.name + ".tip_mass", Part::Kind::TipMass);
+        const int tip_part = model_.addPart(l.name + ".tip_mass", Part::Kind::TipMass, l.name);
         SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(prev), X_tip, lumpedBody(*l.tip_mass), SimTK::Transform());
         model_.addBody(w.getMobilizedBodyIndex(), tip_part, false);
       }

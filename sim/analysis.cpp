@@ -33,11 +33,16 @@ std::vector<PartShare> sortedShares(const std::map<std::string, double>& energy)
   return out;
 }
 
-std::string dominantLink(const std::vector<PartShare>& shares, const Model& model) {
-  for (const auto& s : shares)
+/// Energies per part regrouped by the link that carries each part.
+std::map<std::string, double> byCarrier(const std::map<std::string, double>& energy, const Model& model) {
+  std::map<std::string, double> out;
+  for (const auto& [name, e] : energy) {
+    std::string carrier = name;  // a servo joint's strain stays under the joint's name
     for (const auto& p : model.getParts())
-      if (p.name == s.part && p.kind == Part::Kind::Link) return s.part;
-  return "";
+      if (p.name == name && !p.carrier.empty()) carrier = p.carrier;
+    out[carrier] += e;
+  }
+  return out;
 }
 
 struct Solved {
@@ -178,8 +183,10 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
     m.effective_mass_y_kg = Ly * Ly;
     m.kinetic = sortedShares(kinetic);
     m.strain = sortedShares(strain);
-    m.dominant_link_kinetic = dominantLink(m.kinetic, model);
-    m.dominant_link_strain = dominantLink(m.strain, model);
+    m.kinetic_by_link = sortedShares(byCarrier(kinetic, model));
+    m.strain_by_link = sortedShares(byCarrier(strain, model));
+    m.dominant_link_kinetic = m.kinetic_by_link.empty() ? "" : m.kinetic_by_link.front().part;
+    m.dominant_link_strain = m.strain_by_link.empty() ? "" : m.strain_by_link.front().part;
 
     const Eigen::VectorXd u = Jp * phi;
     double peak = 0;

@@ -9,8 +9,8 @@ Model::Model(const SimTK::Vec3& g_W) : matter_(system_), forces_(system_), gravi
   SimTK::Force::Gravity(forces_, matter_, g_W);
 }
 
-int Model::addPart(const std::string& name, Part::Kind kind) {
-  parts_.push_back({name, kind});
+int Model::addPart(const std::string& name, Part::Kind kind, const std::string& carrier) {
+  parts_.push_back({name, kind, carrier});
   return static_cast<int>(parts_.size()) - 1;
 }
 

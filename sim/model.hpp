@@ -38,6 +38,9 @@ struct Coordinate {
 struct Part {
   std::string name;
   enum class Kind { Link, Torquer, TipMass } kind = Kind::Link;
+  /// The link that carries this part: itself for a link, the link a tip mass is on,
+  /// the parent link whose tip holds a torquer; empty for a torquer on the base.
+  std::string carrier;
 };
 
 struct BodyInfo {
@@ -65,7 +68,7 @@ class Model {
   SimTK::MultibodySystem& updSystem() { return system_; }
   SimTK::SimbodyMatterSubsystem& updMatter() { return matter_; }
   SimTK::GeneralForceSubsystem& updForces() { return forces_; }
-  int addPart(const std::string& name, Part::Kind kind);
+  int addPart(const std::string& name, Part::Kind kind, const std::string& carrier);
   void addBody(SimTK::MobilizedBodyIndex mobod, int part, bool grounded);
   /// Registers a 1-DOF pin as a coordinate; adds a linear spring if stiffness > 0.
   void addCoordinate(const Coordinate& c);

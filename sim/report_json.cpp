@@ -65,7 +65,9 @@ json modesToJson(const ModesReport& r) {
                {"dominant_link_kinetic", m.dominant_link_kinetic},
                {"dominant_link_strain", m.dominant_link_strain},
                {"kinetic_energy_share", shares(m.kinetic)},
-               {"strain_energy_share", shares(m.strain)}};
+               {"strain_energy_share", shares(m.strain)},
+               {"kinetic_energy_share_by_link", shares(m.kinetic_by_link)},
+               {"strain_energy_share_by_link", shares(m.strain_by_link)}};
     if (!m.stable) mj["growth_rate_per_s"] = std::sqrt(-m.omega2);
     json shape = json::array();
     for (const auto& p : m.shape) {
@@ -107,6 +109,10 @@ json convergenceToJson(const ConvergenceStudy& c) {
     mj["richardson_hz"] = m.has_estimate ? json(m.extrapolated_hz) : json(nullptr);
     mj["estimated_relative_error"] = m.has_estimate ? json(m.estimated_relative_error) : json(nullptr);
     mj["observed_order"] = m.has_observed_order ? json(m.observed_order) : json(nullptr);
+    json e = json::array();
+    for (double x : m.frequency_hz)
+      e.push_back(m.has_estimate ? number((x - m.extrapolated_hz) / m.extrapolated_hz) : json(nullptr));
+    mj["relative_error_by_run"] = e;
     modes.push_back(mj);
   }
   j["modes"] = modes;

@@ -55,17 +55,20 @@ std::string formatModesText(const ModesReport& r) {
     if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0)
       os << fmt("  %-12s %10.4f %10.4f %12.4f %12.4f\n", p.name.c_str(), p.x, p.y, 1e3 * p.dx, 1e3 * p.dy);
 
-  os << "\nSystem modes about the equilibrium (share of kinetic and strain energy by link;\n"
-        "gravity = share of the modal stiffness from gravity; m_eff = effective mass for base\n"
-        "translation; peak = point of largest translation)\n";
+  os << "\nSystem modes about the equilibrium\n"
+        "  kinetic, strain: the link with the largest share of the mode's energy, counted with the\n"
+        "                   lumped masses it carries (tip mass, torquers at its tip)\n"
+        "  gravity_%: share of the modal stiffness that comes from gravity\n"
+        "  m_eff: effective mass for base translation (what a shaker at the base sees)\n"
+        "  peak: the named point that moves most\n";
   os << fmt("  %4s %13s  %-20s %-20s %9s %10s %10s  %s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
             "gravity_%", "m_eff_x_kg", "m_eff_y_kg", "peak");
   for (const auto& m : r.modes) {
     const std::string f = m.stable ? fmt("%13.4f", m.frequency_hz) : fmt("%13s", "UNSTABLE");
-    const std::string k = fmt("%s (%.0f %%)", m.dominant_link_kinetic.c_str(), 100 * shareOf(m.kinetic, m.dominant_link_kinetic));
+    const std::string k = fmt("%s (%.0f %%)", m.dominant_link_kinetic.c_str(), 100 * shareOf(m.kinetic_by_link, m.dominant_link_kinetic));
     const std::string s = m.dominant_link_strain.empty()
                               ? std::string("-")
-                              : fmt("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain, m.dominant_link_strain));
+                              : fmt("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain_by_link, m.dominant_link_strain));
     os << fmt("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
               100 * m.gravity_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, m.peak_point.c_str());
     if (!m.stable)
@@ -104,6 +107,19 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
     } else {
       os << fmt(" %12s %8s %12s\n", "-", "-", "-");
     }
+  }
+  os << "\nEstimated error (%) of each run against the Richardson value: what N segments cost in accuracy\n  mode";
+  for (const auto& run : c.runs) os << fmt(" %11s", ("N=" + std::to_string(run.segments)).c_str());
+  os << "\n";
+  for (const auto& m : c.modes) {
+    if (!m.has_estimate) continue;
+    os << fmt("  %4d", m.number);
+    for (std::size_t k = 0; k < c.runs.size(); ++k) {
+      const double f = k < m.frequency_hz.size() ? m.frequency_hz[k] : NAN;
+      if (std::isfinite(f)) os << fmt(" %11.4f", 100 * (f - m.extrapolated_hz) / m.extrapolated_hz);
+      else os << fmt(" %11s", "-");
+    }
+    os << "\n";
   }
   os << "\nrichardson: f_N + (f_N - f_N/2)/(2^2 - 1), assuming the discretization's O(1/N^2) error;\n"
         "order: observed log2((f_N/4 - f_N/2)/(f_N/2 - f_N)) from the three finest runs;\n"

@@ -97,6 +97,16 @@ TEST_F(Cli, EmbeddedSceneIsTheShippedFile) {
   EXPECT_EQ(r.out, slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv.yaml"));
 }
 
+// The worked example in docs/scene-format.md is the shipped scenes/two-link-demo.yaml,
+// so the documented example is one that runs (next test).
+TEST_F(Cli, DocumentedExampleIsTheShippedDemo) {
+  const std::string doc = slurp(fs::path(MMVLAB_SOURCE_DIR) / "docs" / "scene-format.md");
+  const auto begin = doc.find("```yaml\n");
+  ASSERT_NE(begin, std::string::npos);
+  const auto end = doc.find("```", begin + 8);
+  EXPECT_EQ(doc.substr(begin + 8, end - begin - 8), slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "two-link-demo.yaml"));
+}
+
 // Examples are tests: every shipped scene runs and gives a stable, converged result.
 TEST_F(Cli, EveryShippedSceneRuns) {
   int count = 0;

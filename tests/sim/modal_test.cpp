@@ -99,6 +99,25 @@ TEST(Modal, DefaultSceneReportIsComplete) {
   EXPECT_LE(my, r.model.moving_mass_kg * (1 + 1e-9));
 }
 
+// A pendulum whose mass is all in its tip mass: the tip mass's kinetic energy belongs
+// to the link that carries it, so the link carries 100 % of the swing mode.
+TEST(Modal, LumpedMassesCountWithTheLinkThatCarriesThem) {
+  const Scene s = testing::chainScene(1, 1.0, 1e-9, 9.81, 0.0, 2.0);
+  const ModesReport r = runModes(s);
+  ASSERT_EQ(r.modes.size(), 1u);
+  const ModeInfo& m = r.modes[0];
+  EXPECT_EQ(m.dominant_link_kinetic, "l1");
+  ASSERT_FALSE(m.kinetic_by_link.empty());
+  EXPECT_NEAR(m.kinetic_by_link.front().fraction, 1.0, 1e-12);
+  EXPECT_EQ(m.kinetic.front().part, "l1.tip_mass");  // per part, the mass itself
+  EXPECT_GT(m.kinetic.front().fraction, 1 - 1e-6);
+  // Pendulum: all its stiffness is gravity's, and its frequency is sqrt(g/L).
+  EXPECT_NEAR(m.gravity_stiffness_share, 1.0, 1e-9);
+  EXPECT_NEAR(m.frequency_hz, std::sqrt(9.81 / 1.0) / (2 * M_PI), 1e-8);
+  // Effective mass in x of a hanging point-mass pendulum is the whole mass.
+  EXPECT_NEAR(m.effective_mass_x_kg, 2.0, 1e-6);
+}
+
 // An upright pendulum on a free joint is in equilibrium but unstable: the mode is
 // reported as unstable with a growth rate, never as a NaN frequency.
 TEST(Modal, UnstableEquilibriumIsNamed) {
