@@ -12,10 +12,10 @@ namespace mmv {
 struct ConvergenceStudy;  // sim/converge.hpp
 
 std::string formatModesText(const ModesReport& r);
-nlohmann::json modesToJson(const ModesReport& r);
+nlohmann::ordered_json modesToJson(const ModesReport& r);
 
 std::string formatConvergenceText(const ConvergenceStudy& c);
-nlohmann::json convergenceToJson(const ConvergenceStudy& c);
+nlohmann::ordered_json convergenceToJson(const ConvergenceStudy& c);
 
 /// The version stamped into every JSON document.
 const char* mmvlabVersion();

@@ -7,7 +7,7 @@ namespace mmv {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 json shares(const std::vector<PartShare>& v) {
   json o = json::object();
