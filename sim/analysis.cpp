@@ -163,8 +163,9 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
     m.number = i + 1;
     m.omega2 = s.modes.omega2[i];
     m.stable = s.modes.isStable(i);
+    m.rigid_body = s.modes.isRigidBody(i);
     m.frequency_hz = s.modes.frequencyHz(i);
-    m.gravity_stiffness_share = m.omega2 != 0 ? phi.dot(s.lin.K_geometric * phi) / m.omega2 : 0.0;
+    m.gravity_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.lin.K_geometric * phi) / m.omega2;
 
     std::map<std::string, double> kinetic, strain;
     double Lx = 0, Ly = 0;

@@ -41,8 +41,9 @@ struct PointMotion {
 struct ModeInfo {
   int number = 0;  ///< 1-based.
   double omega2 = 0;  ///< rad^2/s^2.
-  double frequency_hz = 0;  ///< meaningful when stable.
+  double frequency_hz = 0;  ///< meaningful when stable; 0 for a rigid-body mode.
   bool stable = true;
+  bool rigid_body = false;  ///< zero frequency up to round-off (a mechanism).
   double modal_mass_kg = 0;  ///< for the shape scaled to 1 m at peak_point.
   std::string peak_point;
   double effective_mass_x_kg = 0, effective_mass_y_kg = 0;

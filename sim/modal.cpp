@@ -8,6 +8,7 @@
 namespace mmv {
 
 double ModalSolution::frequencyHz(int i) const {
+  if (isRigidBody(i)) return 0.0;
   const double w2 = omega2[i];
   return (w2 >= 0 ? std::sqrt(w2) : -std::sqrt(-w2)) / (2.0 * M_PI);
 }
@@ -37,6 +38,7 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   if (es.info() != Eigen::Success) throw NumericalError("generalized eigen solver did not converge");
   sol.omega2 = es.eigenvalues();
   sol.shapes = d.asDiagonal() * es.eigenvectors();
+  sol.rigid_body_threshold = 1e-12 * sol.omega2.cwiseAbs().maxCoeff();
   // Fix the sign of each shape: largest component positive (reproducible output).
   for (Eigen::Index i = 0; i < n; ++i) {
     Eigen::Index imax;

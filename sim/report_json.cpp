@@ -55,6 +55,7 @@ json modesToJson(const ModesReport& r) {
   for (const auto& m : r.modes) {
     json mj = {{"number", m.number},
                {"stable", m.stable},
+               {"rigid_body", m.rigid_body},
                {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
                {"omega_squared_rad2_per_s2", m.omega2},
                {"modal_mass_kg", m.modal_mass_kg},

@@ -64,7 +64,9 @@ std::string formatModesText(const ModesReport& r) {
   os << fmt("  %4s %13s  %-20s %-20s %9s %10s %10s  %s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
             "gravity_%", "m_eff_x_kg", "m_eff_y_kg", "peak");
   for (const auto& m : r.modes) {
-    const std::string f = m.stable ? fmt("%13.4f", m.frequency_hz) : fmt("%13s", "UNSTABLE");
+    const std::string f = m.rigid_body ? fmt("%13s", "0 (rigid)")
+                          : m.stable   ? fmt("%13.4f", m.frequency_hz)
+                                       : fmt("%13s", "UNSTABLE");
     const std::string k = fmt("%s (%.0f %%)", m.dominant_link_kinetic.c_str(), 100 * shareOf(m.kinetic_by_link, m.dominant_link_kinetic));
     const std::string s = m.dominant_link_strain.empty()
                               ? std::string("-")

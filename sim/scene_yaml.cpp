@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -420,6 +421,8 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name) {
 }
 
 Scene loadSceneFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneFileError(path + ": is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneFileError(path + ": cannot open scene file");
   std::ostringstream os;

@@ -1,5 +1,6 @@
 #include "sim/statics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,6 +15,24 @@ double maxAbsAt(const Eigen::VectorXd& f, const std::vector<int>& idx) {
   return m;
 }
 
+/// The largest moment gravity could exert about any pin in this configuration,
+/// max_k sum_{i outboard of k} m_i |g| |p_i - o_k|: a load scale that does not vanish
+/// when the article happens to be balanced (e.g. an upright straight rod).
+double gravityMomentScale(const Model& model, const SimTK::State& s) {
+  const auto& matter = model.getMatter();
+  const double g = model.getGravity().norm();
+  std::vector<double> scale(model.getNumCoordinates(), 0.0);
+  for (std::size_t b = 0; b < model.getBodies().size(); ++b) {
+    const SimTK::MobilizedBody& mb = matter.getMobilizedBody(model.getBodies()[b].mobod);
+    const SimTK::Vec3 c = mb.findStationLocationInGround(s, mb.getBodyMassCenterStation(s));
+    for (int k : model.getAncestorCoordinates(static_cast<int>(b))) {
+      const SimTK::Vec3 o = matter.getMobilizedBody(model.getCoordinates()[k].mobod).getBodyOriginLocation(s);
+      scale[k] += mb.getBodyMass(s) * g * (c - o).norm();
+    }
+  }
+  return scale.empty() ? 0.0 : *std::max_element(scale.begin(), scale.end());
+}
+
 }  // namespace
 
 EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions& options) {
@@ -23,7 +42,7 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
   SimTK::State s = model.getReferenceState();
   Eigen::VectorXd q = model.getQ(s);
   Eigen::VectorXd f = model.calcAppliedForces(s);
-  r.force_scale = std::max(f.cwiseAbs().maxCoeff(), 1e-300);
+  r.force_scale = std::max({f.cwiseAbs().maxCoeff(), gravityMomentScale(model, s), 1e-300});
   const double tol = options.force_tolerance * r.force_scale;
   double res = maxAbsAt(f, dofs);
 

@@ -7,8 +7,9 @@
 /// held joints fixed at their commanded angles. Newton's method on f_x with the
 /// tangent stiffness K = -df/dq (sim/linearize.hpp) and a backtracking line search on
 /// ||f_x||^2. Converged when ||f_x||_inf <= force_tolerance * force_scale, where
-/// force_scale is the largest generalized force at the reference configuration (so the
-/// test is relative to the loads present). The torque a locked torquer holds is
+/// force_scale is the larger of the largest generalized force in the unbent shape and
+/// the largest moment gravity could exert about any pin, max_k sum m_i |g| |p_i - o_k|
+/// (so the test is relative to the loads present, even where they happen to balance). The torque a locked torquer holds is
 /// tau = -f_joint at the solution (the torque the torquer applies to its child link,
 /// counter-clockwise positive).
 
@@ -28,7 +29,7 @@ struct EquilibriumResult {
   std::string failure;     ///< why it did not converge (empty when converged).
   int iterations = 0;
   double residual = 0;     ///< ||f_x||_inf at the end, N*m.
-  double force_scale = 0;  ///< N*m.
+  double force_scale = 0;  ///< N*m, see above.
   SimTK::State state;      ///< the equilibrium (or last iterate), realized to Position.
   Eigen::VectorXd q;       ///< all coordinates, rad.
   Eigen::VectorXd generalized_force;  ///< f at the solution, N*m (non-zero at held joints).

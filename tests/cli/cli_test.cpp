@@ -152,6 +152,13 @@ TEST_F(Cli, MissingSceneExits66) {
   EXPECT_NE(r.err.find("cannot open scene file"), std::string::npos) << r.err;
 }
 
+TEST_F(Cli, DirectoryAsSceneExits66) {
+  const Result r = run("modes " + dir_.string());
+  EXPECT_EQ(r.code, 66);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, UsageErrorExits64) {
   EXPECT_EQ(run("modes --segments 0").code, 64);
   EXPECT_EQ(run("frobnicate").code, 64);

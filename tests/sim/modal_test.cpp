@@ -130,6 +130,47 @@ TEST(Modal, UnstableEquilibriumIsNamed) {
   EXPECT_TRUE(std::isfinite(r.modes[0].frequency_hz));
 }
 
+// A free joint and no gravity: the arm swings freely, a rigid-body mode of zero
+// frequency that round-off must not turn into "unstable" or a tiny frequency.
+TEST(Modal, MechanismHasARigidBodyMode) {
+  Scene s = testing::cantileverScene(testing::Beam{}, 4, 0.0);
+  s.article.joints[0].hold = JointHold::Free;
+  const ModesReport r = runModes(s);
+  ASSERT_EQ(r.modes.size(), 5u);
+  EXPECT_TRUE(r.modes[0].rigid_body);
+  EXPECT_TRUE(r.modes[0].stable);
+  EXPECT_EQ(r.modes[0].frequency_hz, 0.0);
+  for (std::size_t i = 1; i < r.modes.size(); ++i) {
+    EXPECT_FALSE(r.modes[i].rigid_body);
+    EXPECT_GT(r.modes[i].frequency_hz, 1.0);
+  }
+}
+
+// Near buckling: an upright cantilever under its own weight w buckles at Greenhill's
+// length L_cr = (7.8373 E I / w)^(1/3) (Timoshenko & Gere, Theory of Elastic
+// Stability, 2.9). The chain's critical length, found by bisection, is 0.067 %, 0.017 %
+// and 0.004 % short of it at 16, 32 and 64 segments (O(1/N^2)), so at 64 segments 1 %
+// below is stable, with gravity taking most of the stiffness, and 1 % above is reported
+// unstable (not NaN) with a finite growth rate.
+TEST(Modal, SelfWeightBucklingOfAnUprightColumn) {
+  testing::Beam b;
+  const double g = 9.81, w = b.massPerLength() * g;
+  const double l_cr = std::cbrt(7.8373 * b.bendingStiffness() / w);
+  auto first = [&](double length) {
+    b.length = length;
+    ModesOptions opt;
+    opt.max_modes = 1;
+    return runModes(testing::cantileverScene(b, 64, g, 90.0), opt).modes[0];
+  };
+  const ModeInfo below = first(0.99 * l_cr);
+  EXPECT_TRUE(below.stable);
+  EXPECT_LT(below.gravity_stiffness_share, -5.0);  // gravity takes most of the stiffness
+  const ModeInfo above = first(1.01 * l_cr);
+  EXPECT_FALSE(above.stable);
+  EXPECT_LT(above.omega2, 0.0);
+  EXPECT_TRUE(std::isfinite(above.omega2));
+}
+
 TEST(Modal, NonPositiveMassIsRejected) {
   Eigen::MatrixXd M = Eigen::MatrixXd::Identity(2, 2), K = Eigen::MatrixXd::Identity(2, 2);
   M(1, 1) = 0.0;
