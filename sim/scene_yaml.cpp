@@ -114,6 +114,24 @@ class Reader {
     return out;
   }
 
+  /// A non-empty list; returns its size.
+  std::size_t sequence(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsSequence() || n.size() == 0) fail(n.Mark(), path + " must be a non-empty list (got " + show(n) + ")");
+    return n.size();
+  }
+
+  /// Checks that `value` names one of `items` (anything with a .name).
+  template <class T>
+  void known(const YAML::Node& value, const std::string& path, const std::string& what, const std::string& name,
+             const std::vector<T>& items) const {
+    std::vector<std::string> names;
+    for (const auto& x : items) {
+      if (x.name == name) return;
+      names.push_back(x.name);
+    }
+    fail(value.Mark(), path + ": unknown " + what + " '" + name + "' (known: " + joinNames(names) + ")");
+  }
+
   const YAML::Node& require(const std::map<std::string, YAML::Node>& m, const YAML::Node& parent,
                             const std::string& path, const std::string& key) const {
     auto it = m.find(key);
@@ -269,9 +287,8 @@ class SceneParser {
   }
 
   void readJoints(const YAML::Node& n, ArticleSpec& a) {
-    if (!n.IsSequence() || n.size() == 0)
-      r_.fail(n.Mark(), "joints must be a non-empty list (got " + Reader::show(n) + ")");
-    for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::size_t count = r_.sequence(n, "joints");
+    for (std::size_t i = 0; i < count; ++i) {
       const YAML::Node& jn = n[i];
       const std::string path = "joints[" + std::to_string(i) + "]";
       auto m = r_.mapping(jn, path, {"name", "parent", "angle_deg", "hold", "servo_stiffness", "torquer"});
@@ -302,9 +319,8 @@ class SceneParser {
   }
 
   void readLinks(const YAML::Node& n, ArticleSpec& a) {
-    if (!n.IsSequence() || n.size() == 0)
-      r_.fail(n.Mark(), "links must be a non-empty list (got " + Reader::show(n) + ")");
-    for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::size_t count = r_.sequence(n, "links");
+    for (std::size_t i = 0; i < count; ++i) {
       const YAML::Node& ln = n[i];
       const std::string path = "links[" + std::to_string(i) + "]";
       auto m = r_.mapping(ln, path, {"name", "joint", "material", "section", "length", "segments",
@@ -314,22 +330,13 @@ class SceneParser {
       l.name = r_.text(name, path + ".name");
       const YAML::Node& joint = r_.require(m, ln, path, "joint");
       l.joint = r_.text(joint, path + ".joint");
-      if (!a.findJoint(l.joint))
-        r_.fail(joint.Mark(), path + ".joint: unknown joint '" + l.joint + "'");
+      r_.known(joint, path + ".joint", "joint", l.joint, a.joints);
       const YAML::Node& mat = r_.require(m, ln, path, "material");
       l.material = r_.text(mat, path + ".material");
-      if (!a.findMaterial(l.material)) {
-        std::vector<std::string> known;
-        for (const auto& x : a.materials) known.push_back(x.name);
-        r_.fail(mat.Mark(), path + ".material: unknown material '" + l.material + "' (known: " + joinNames(known) + ")");
-      }
+      r_.known(mat, path + ".material", "material", l.material, a.materials);
       const YAML::Node& sec = r_.require(m, ln, path, "section");
       l.section = r_.text(sec, path + ".section");
-      if (!a.findSection(l.section)) {
-        std::vector<std::string> known;
-        for (const auto& x : a.sections) known.push_back(x.name);
-        r_.fail(sec.Mark(), path + ".section: unknown section '" + l.section + "' (known: " + joinNames(known) + ")");
-      }
+      r_.known(sec, path + ".section", "section", l.section, a.sections);
       l.length = r_.positive(r_.require(m, ln, path, "length"), path + ".length", " m");
       const YAML::Node& seg = r_.require(m, ln, path, "segments");
       if (seg.IsScalar() && seg.Scalar() == "rigid") {

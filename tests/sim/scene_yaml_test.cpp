@@ -125,7 +125,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"unknown link", "    parent: l1", "    parent: l9",
                 "s.yaml:12:13: joints[1].parent: unknown parent 'l9' (known: base, l1, l2a, l2b)"},
         BadCase{"unknown joint", "    joint: j2", "    joint: j7",
-                "s.yaml:22:12: links[1].joint: unknown joint 'j7'"},
+                "s.yaml:22:12: links[1].joint: unknown joint 'j7' (known: j1, j2)"},
         BadCase{"nan", "    length: 1.0", "    length: .nan",
                 "s.yaml:19:13: links[0].length must be a finite number (got .nan)"},
         BadCase{"out of plane gravity", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 1]",
