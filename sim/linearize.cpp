@@ -9,49 +9,82 @@ Eigen::MatrixXd calcStiffness(const Model& model, const SimTK::State& s, const s
                                              : calcStiffnessByDifferences(model, s, dofs);
 }
 
-Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
+namespace {
+
+/// G_k of the closed form: sum over point forces outboard of rotation k of F.(p - o_k).
+class GeometricTerms {
+ public:
+  GeometricTerms(const Model& model, const SimTK::State& s) : model_(model), s_(s), g_(model.getNumCoordinates(), 0.0) {}
+
+  void add(int body, const SimTK::Vec3& p_W, const SimTK::Vec3& F_W) {
+    const auto& coords = model_.getCoordinates();
+    for (int k : model_.getAncestorCoordinates(body)) {
+      if (coords[k].motion != CoordinateMotion::Rotation) continue;
+      const SimTK::Vec3 o = model_.getMatter().getMobilizedBody(coords[k].mobod).getBodyOriginLocation(s_);
+      g_[k] += ~F_W * (p_W - o);
+    }
+  }
+  void addStation(int body, const SimTK::Vec3& station_B, const SimTK::Vec3& F_W) {
+    const SimTK::MobilizedBody& mb = model_.getMatter().getMobilizedBody(model_.getBodies()[body].mobod);
+    add(body, mb.findStationLocationInGround(s_, station_B), F_W);
+  }
+
+  /// K_jk = G_k for rotations j inboard of or equal to k (both ways), over `dofs`.
+  Eigen::MatrixXd matrix(const std::vector<int>& dofs) const {
+    const auto& coords = model_.getCoordinates();
+    const int n = static_cast<int>(dofs.size());
+    std::vector<int> column(coords.size(), -1);  // coordinate -> row/column, -1 if held
+    for (int a = 0; a < n; ++a) column[dofs[a]] = a;
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+    for (int b = 0; b < n; ++b) {
+      const int k = dofs[b];
+      if (coords[k].motion != CoordinateMotion::Rotation) continue;
+      // Every rotation j that moves k's body (k itself included) is inboard of or
+      // equal to k, so the pair (j, k) gets k's term.
+      for (int j : model_.getAncestorCoordinates(model_.getCoordinateBody(k))) {
+        const int a = column[j];
+        if (a < 0 || coords[j].motion != CoordinateMotion::Rotation) continue;
+        K(a, b) = g_[k];
+        K(b, a) = g_[k];
+      }
+    }
+    return K;
+  }
+
+ private:
+  const Model& model_;
+  const SimTK::State& s_;
+  std::vector<double> g_;
+};
+
+}  // namespace
+
+Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& forces) {
+  SimTK::State work = s;
+  model.getSystem().realize(work, SimTK::Stage::Position);
+  GeometricTerms terms(model, work);
+  for (const auto& f : forces) terms.addStation(f.body, f.station_B, f.force_W);
+  return terms.matrix(dofs);
+}
+
+Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& extra) {
   if (!model.hasOnlyGravityAndPinSprings())
-    throw std::logic_error("calcStiffnessClosedForm: the model has forces other than gravity and pin springs");
+    throw std::logic_error("calcStiffnessClosedForm: the model has forces other than gravity, loads and springs");
   SimTK::State work = s;
   model.getSystem().realize(work, SimTK::Stage::Position);
   const auto& matter = model.getMatter();
   const auto& bodies = model.getBodies();
-  const int nc = model.getNumCoordinates();
-  // Mass and first moment outboard of every coordinate's pin.
-  std::vector<double> mass(nc, 0.0);
-  std::vector<SimTK::Vec3> moment(nc, SimTK::Vec3(0));
+  GeometricTerms terms(model, work);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const SimTK::MobilizedBody& mb = matter.getMobilizedBody(bodies[b].mobod);
-    const double m = mb.getBodyMass(work);
-    const SimTK::Vec3 c = mb.findStationLocationInGround(work, mb.getBodyMassCenterStation(work));
-    for (int k : model.getAncestorCoordinates(static_cast<int>(b))) {
-      mass[k] += m;
-      moment[k] += m * c;
-    }
+    terms.addStation(static_cast<int>(b), mb.getBodyMassCenterStation(work), mb.getBodyMass(work) * model.getGravity());
   }
-  const SimTK::Vec3& g = model.getGravity();
-  std::vector<double> gk(nc);
-  for (int k = 0; k < nc; ++k) {
-    // The pin's axis passes through its body's origin (builders put M at the origin).
-    const SimTK::Vec3 o = matter.getMobilizedBody(model.getCoordinates()[k].mobod).getBodyOriginLocation(work);
-    gk[k] = ~g * (moment[k] - mass[k] * o);
-  }
-  const int n = static_cast<int>(dofs.size());
-  std::vector<int> column(nc, -1);  // coordinate -> row/column in K, -1 if held
-  for (int a = 0; a < n; ++a) column[dofs[a]] = a;
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (int b = 0; b < n; ++b) {
-    const int k = dofs[b];
-    // Every j that moves pin k's body (k itself included) is inboard of or equal to k,
-    // so the pair (j, k) gets k's term.
-    for (int j : model.getAncestorCoordinates(model.getCoordinateBody(k))) {
-      const int a = column[j];
-      if (a < 0) continue;
-      K(a, b) = gk[k];
-      K(b, a) = gk[k];
-    }
-    K(b, b) += model.getCoordinates()[k].stiffness;
-  }
+  for (const auto& load : model.getPointLoads()) terms.addStation(model.findBody(load.mobod), load.station_B, load.force_W);
+  for (const auto& f : extra) terms.addStation(f.body, f.station_B, f.force_W);
+  Eigen::MatrixXd K = terms.matrix(dofs);
+  for (std::size_t b = 0; b < dofs.size(); ++b) K(b, b) += model.getCoordinates()[dofs[b]].stiffness;
   return K;
 }
 

@@ -8,11 +8,14 @@
 /// K_elastic is the springs' diagonal stiffness and K_geometric the gravity stiffness
 /// at the deflected state (positive when gravity stabilises, e.g. a hanging link).
 /// K has two independent evaluations:
-///  - closed form, for models whose only forces are gravity and pin springs
-///    (Model::hasOnlyGravityAndPinSprings): for planar pins j, k with j inboard of or
-///    equal to k,  K_jk = k_spring,k delta_jk + g . (S_k - M_k o_k),  where o_k is pin
-///    k's axis, M_k the mass outboard of it and S_k that mass's first moment (all in
-///    world); K_jk = 0 when neither pin is inboard of the other. Exact, O(n * depth).
+///  - closed form, for models whose only forces are gravity, dead point loads and
+///    springs (Model::hasOnlyGravityAndPinSprings): a constant world force F at a
+///    point p has the stiffness  K_jk = F . (p - o_k)  for rotations j, k that both move
+///    p with j inboard of or equal to k (o_k: k's axis), and 0 for translations. Summed
+///    over gravity (F = m g at each mass centre) and loads, per coordinate k:
+///        K_jk = k_spring,k delta_jk + G_k,  G_k = sum_{F outboard of k} F . (p - o_k).
+///    Exact, O(n * depth). Constraint forces at a preloaded closed loop enter the same
+///    way (extra point forces, sim/closures.hpp).
 ///  - central differences of f (step 1e-6 rad, truncation error ~1e-10 relative) for
 ///    any force model, O(n^2) force evaluations.
 /// The result is symmetrised; its asymmetry before that is reported, since a
@@ -38,8 +41,21 @@ struct LinearizedModel {
 Eigen::MatrixXd calcStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
 /// Central differences of the applied forces, for any model.
 Eigen::MatrixXd calcStiffnessByDifferences(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
-/// Closed form for gravity + pin springs; requires Model::hasOnlyGravityAndPinSprings().
-Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+/// A force held constant in the world frame, at a station of a body (index into
+/// Model::getBodies()): used for the stiffness of closure (constraint) forces.
+struct PointForce {
+  int body = -1;
+  SimTK::Vec3 station_B;  ///< m.
+  SimTK::Vec3 force_W;    ///< N.
+};
+
+/// Closed form for gravity + loads + springs (+ `extra` point forces); requires
+/// Model::hasOnlyGravityAndPinSprings().
+Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& extra = {});
+/// The stiffness -d(J^T F)/dq of point forces alone (no springs, no gravity), over `dofs`.
+Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& forces);
 
 /// Mass matrix restricted to `dofs` at the state `s`.
 Eigen::MatrixXd calcMass(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);

@@ -23,8 +23,20 @@ void Model::addCoordinate(const Coordinate& c) {
   coords_.push_back(c);
   if (c.stiffness > 0) {
     SimTK::Force::MobilityLinearSpring(forces_, matter_.getMobilizedBody(c.mobod),
-                                       SimTK::MobilizerQIndex(0), c.stiffness, c.reference);
+                                       SimTK::MobilizerQIndex(c.mobilizer_q), c.stiffness, c.reference);
   }
+}
+
+void Model::addPointLoad(const PointLoad& load) {
+  assert(!finalized_);
+  SimTK::Force::ConstantForce(forces_, matter_.getMobilizedBody(load.mobod), load.station_B, load.force_W);
+  loads_.push_back(load);
+}
+
+int Model::findBody(SimTK::MobilizedBodyIndex mobod) const {
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].mobod == mobod) return static_cast<int>(b);
+  return -1;
 }
 
 void Model::addPoint(const NamedPoint& p) { points_.push_back(p); }
@@ -36,10 +48,10 @@ void Model::finalize() {
   system_.realizeModel(s);
   for (std::size_t i = 0; i < coords_.size(); ++i) {
     const auto& mb = matter_.getMobilizedBody(coords_[i].mobod);
-    if (mb.getNumQ(s) != 1 || mb.getNumU(s) != 1)
-      throw std::logic_error("coordinate " + coords_[i].name + " is not a 1-DOF mobilizer");
-    qindex_.push_back(mb.getFirstQIndex(s));
-    uindex_.push_back(mb.getFirstUIndex(s));
+    if (mb.getNumQ(s) != mb.getNumU(s) || coords_[i].mobilizer_q >= mb.getNumQ(s))
+      throw std::logic_error("coordinate " + coords_[i].name + " does not match its mobilizer");
+    qindex_.push_back(SimTK::QIndex(mb.getFirstQIndex(s) + coords_[i].mobilizer_q));
+    uindex_.push_back(SimTK::UIndex(mb.getFirstUIndex(s) + coords_[i].mobilizer_q));
     if (!coords_[i].held) dofs_.push_back(static_cast<int>(i));
   }
   if (static_cast<int>(coords_.size()) != s.getNQ() || s.getNQ() != s.getNU())
@@ -48,17 +60,18 @@ void Model::finalize() {
   system_.realize(s, SimTK::Stage::Position);
   reference_state_ = s;
   // Ancestry: which coordinates move each body.
-  std::vector<int> coord_of_mobod(matter_.getNumBodies(), -1);
-  for (std::size_t i = 0; i < coords_.size(); ++i) coord_of_mobod[coords_[i].mobod] = static_cast<int>(i);
+  // A planar mobilizer carries three coordinates; list them all, outboard-most first.
+  std::vector<std::vector<int>> coords_of_mobod(matter_.getNumBodies());
+  for (std::size_t i = 0; i < coords_.size(); ++i) coords_of_mobod[coords_[i].mobod].push_back(static_cast<int>(i));
   coord_body_.assign(coords_.size(), -1);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     std::vector<int> anc;
     for (SimTK::MobilizedBodyIndex ix = bodies_[b].mobod; ix != SimTK::GroundIndex;
          ix = matter_.getMobilizedBody(ix).getParentMobilizedBody().getMobilizedBodyIndex()) {
-      if (coord_of_mobod[ix] >= 0) anc.push_back(coord_of_mobod[ix]);
+      for (int c : coords_of_mobod[ix]) anc.push_back(c);
     }
     body_ancestors_.push_back(anc);
-    if (coord_of_mobod[bodies_[b].mobod] >= 0) coord_body_[coord_of_mobod[bodies_[b].mobod]] = static_cast<int>(b);
+    for (int c : coords_of_mobod[bodies_[b].mobod]) coord_body_[c] = static_cast<int>(b);
   }
   for (std::size_t i = 0; i < coords_.size(); ++i)
     if (coord_body_[i] < 0) throw std::logic_error("coordinate " + coords_[i].name + " moves no registered body");

@@ -3,8 +3,9 @@
 /// generalized coordinates (what each one is, whether it is held), the parts bodies
 /// belong to, and named points. Built by article/article_builder.hpp.
 ///
-/// Every mobilizer is a planar pin about world z (one q, one u, q' = u) or a weld,
-/// so generalized coordinates and speeds share one index: coordinate i is q[i], u[i].
+/// Mobilizers are planar pins about world z, welds, or (for a floating root) planar
+/// joints: rotation about z then translations along the ground frame's x and y. For
+/// all of them q' = u, so coordinate i has one q and one u.
 /// Units: angles in rad, torques in N*m, lengths in m, masses in kg.
 ///
 /// A Model is built once and then used read-only (const); analyses work on their own
@@ -24,9 +25,16 @@ enum class CoordinateKind {
   Hinge,  ///< a bending hinge inside a flexible link.
 };
 
+enum class CoordinateMotion {
+  Rotation,     ///< about world z through the body origin (rad).
+  Translation,  ///< along a ground-fixed direction (m).
+};
+
 struct Coordinate {
   std::string name;  ///< "joint2" or "link1.h3".
   CoordinateKind kind = CoordinateKind::Hinge;
+  CoordinateMotion motion = CoordinateMotion::Rotation;
+  int mobilizer_q = 0;  ///< which q of its mobilizer (0 for pins).
   std::string part;  ///< the link (hinge) or joint (joint) it belongs to.
   SimTK::MobilizedBodyIndex mobod;
   double reference = 0;  ///< rad: commanded joint angle, or 0 for an unbent hinge.
@@ -47,6 +55,13 @@ struct BodyInfo {
   SimTK::MobilizedBodyIndex mobod;
   int part = -1;  ///< index into Model::parts().
   bool grounded = false;  ///< welded to ground: never moves.
+};
+
+/// A constant force (dead load) at a station of a body, in the world frame.
+struct PointLoad {
+  SimTK::MobilizedBodyIndex mobod;
+  SimTK::Vec3 station_B;  ///< m, body frame.
+  SimTK::Vec3 force_W;    ///< N, world frame.
 };
 
 /// A named point fixed on a body: "link1.tip", "link2.h3", "joint2", ...
@@ -73,9 +88,11 @@ class Model {
   /// Registers a 1-DOF pin as a coordinate; adds a linear spring if stiffness > 0.
   void addCoordinate(const Coordinate& c);
   void addPoint(const NamedPoint& p);
-  /// Declares that the only forces are uniform gravity and the coordinates' linear
-  /// springs on planar pins about z, so the closed-form stiffness of
-  /// sim/linearize.hpp applies. Builders that add other forces must not call this.
+  /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.
+  void addPointLoad(const PointLoad& load);
+  /// Declares that the only forces are uniform gravity, point loads and the
+  /// coordinates' linear springs, so the closed-form stiffness of sim/linearize.hpp
+  /// applies. Builders that add other forces must not call this.
   void setOnlyGravityAndPinSprings() { only_gravity_and_pin_springs_ = true; }
   /// Realizes topology and builds the reference state. Call once, last.
   void finalize();
@@ -88,6 +105,7 @@ class Model {
   const std::vector<Part>& getParts() const { return parts_; }
   const std::vector<BodyInfo>& getBodies() const { return bodies_; }
   const std::vector<NamedPoint>& getPoints() const { return points_; }
+  const std::vector<PointLoad>& getPointLoads() const { return loads_; }
   /// Indices of the coordinates that are degrees of freedom (not held).
   const std::vector<int>& getDofs() const { return dofs_; }
   /// Index of coordinate i's speed in the Simbody state's u vector.
@@ -99,6 +117,7 @@ class Model {
   double getTotalMass() const { return total_mass_; }
   double getMovingMass() const { return moving_mass_; }
   const NamedPoint* findPoint(const std::string& name) const;
+  int findBody(SimTK::MobilizedBodyIndex mobod) const;  ///< index into getBodies(), -1 if none.
   bool hasOnlyGravityAndPinSprings() const { return only_gravity_and_pin_springs_; }
   /// Coordinates whose motion moves body b (index into getBodies()): its own
   /// mobilizer's coordinate, if any, and those of all its ancestors.
@@ -135,6 +154,7 @@ class Model {
   std::vector<Part> parts_;
   std::vector<BodyInfo> bodies_;
   std::vector<NamedPoint> points_;
+  std::vector<PointLoad> loads_;
   std::vector<int> dofs_;
   SimTK::State reference_state_;
   double total_mass_ = 0, moving_mass_ = 0;
