@@ -1,6 +1,7 @@
 #include "article/article_builder.hpp"
 
 #include <cassert>
+#include <cmath>
 #include <deque>
 #include <map>
 
@@ -153,12 +154,54 @@ class Builder {
   std::map<std::string, bool> built_joints_, queued_;
 };
 
+const NamedPoint& requirePoint(const Model& model, const std::string& name, const std::string& where,
+                               const std::string& what) {
+  const NamedPoint* p = model.findPoint(name);
+  // The scene reader checked the name; only a --segments override can remove a hinge.
+  if (!p) throw SceneError(where + ": " + what + " '" + name + "' does not exist with the segment counts in use");
+  return *p;
+}
+
+void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
+  for (std::size_t i = 0; i < a.loads.size(); ++i) {
+    const LoadSpec& l = a.loads[i];
+    const NamedPoint& p = requirePoint(model, l.point, l.where, "loads[" + std::to_string(i) + "].point");
+    model.addPointLoad({p.mobod, p.station_B, SimTK::Vec3(l.force[0], l.force[1], l.force[2])});
+  }
+  for (std::size_t i = 0; i < a.closures.size(); ++i) {
+    const ClosureSpec& cs = a.closures[i];
+    const std::string path = "closures[" + std::to_string(i) + "]";
+    const NamedPoint& pa = requirePoint(model, cs.point, cs.where, path + ".point");
+    Closure c;
+    c.name = cs.name;
+    c.where = cs.where;
+    c.mobod_a = pa.mobod;
+    c.station_a = pa.station_B;
+    if (cs.to != "ground") {
+      const NamedPoint& pb = requirePoint(model, cs.to, cs.where, path + ".to");
+      c.to_ground = false;
+      c.mobod_b = pb.mobod;
+      c.station_b = pb.station_B;
+    } else if (cs.at) {
+      c.has_anchor = true;
+      c.anchor_W = SimTK::Vec3((*cs.at)[0], (*cs.at)[1], (*cs.at)[2]);
+    }
+    if (cs.type == ClosureType::Pin) {
+      c.directions = {SimTK::Vec3(1, 0, 0), SimTK::Vec3(0, 1, 0)};
+    } else {  // held across the line: its normal
+      c.directions = {SimTK::Vec3(-std::sin(cs.direction), std::cos(cs.direction), 0)};
+    }
+    model.addClosure(c);
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<Model> buildArticleModel(const Scene& scene) {
   const auto& g = scene.gravity;
   auto model = std::make_unique<Model>(SimTK::Vec3(g[0], g[1], g[2]));
   Builder(scene, *model).build();
+  addLoadsAndClosures(scene.article, *model);
   model->setOnlyGravityAndPinSprings();  // the builder adds nothing else
   model->finalize();
   return model;

@@ -15,4 +15,16 @@ const Section* ArticleSpec::findSection(const std::string& n) const { return fin
 const JointSpec* ArticleSpec::findJoint(const std::string& n) const { return findByName(joints, n); }
 const LinkSpec* ArticleSpec::findLink(const std::string& n) const { return findByName(links, n); }
 
+std::vector<std::string> articlePointNames(const ArticleSpec& a) {
+  std::vector<std::string> names;
+  for (const auto& j : a.joints) names.push_back(j.name);
+  for (const auto& l : a.links) {
+    names.push_back(l.name + ".root");
+    if (!l.rigid)
+      for (int k = 1; k <= l.segments; ++k) names.push_back(l.name + ".h" + std::to_string(k));
+    names.push_back(l.name + ".tip");
+  }
+  return names;
+}
+
 }  // namespace mmv

@@ -52,7 +52,33 @@ struct LinkSpec {
   std::optional<LumpedMass> tip_mass;  ///< rigidly attached at the tip.
 };
 
-enum class BaseType { Fixed };
+/// A loop closure: a point of the article held to the ground (a fixture) or to
+/// another point of the article (report figure 7, closed trees).
+enum class ClosureType {
+  Pin,     ///< both in-plane directions held (a planar ball joint is the same).
+  Slider,  ///< held across a line, free to slide along it.
+};
+
+struct ClosureSpec {
+  std::string name;
+  std::string point;          ///< a named point of the article.
+  std::string to = "ground";  ///< "ground" or another named point.
+  ClosureType type = ClosureType::Pin;
+  std::optional<std::array<double, 3>> at;  ///< m, ground anchor; default: the point in the reference shape.
+  double direction = 0;       ///< rad, slider: world direction of the line it slides along.
+  std::string where;          ///< "file:line:col" of its entry, for errors found later.
+};
+
+/// A constant force (dead load) at a named point, in the world frame.
+struct LoadSpec {
+  std::string point;
+  std::array<double, 3> force{0, 0, 0};  ///< N, z = 0.
+  std::string where;
+};
+
+/// BaseType::Floating (planar: rotation and both translations free) is not offered in
+/// scene files; component-mode analyses use it for free-free links.
+enum class BaseType { Fixed, Floating };
 
 struct BaseSpec {
   BaseType type = BaseType::Fixed;
@@ -65,6 +91,8 @@ struct ArticleSpec {
   std::vector<Section> sections;
   std::vector<JointSpec> joints;
   std::vector<LinkSpec> links;  ///< branches already expanded into separate links.
+  std::vector<ClosureSpec> closures;
+  std::vector<LoadSpec> loads;
   BaseSpec base;
 
   const Material* findMaterial(const std::string& name) const;
@@ -72,5 +100,8 @@ struct ArticleSpec {
   const JointSpec* findJoint(const std::string& name) const;
   const LinkSpec* findLink(const std::string& name) const;
 };
+
+/// The named points the builder creates for `a` (see article_builder.hpp), in order.
+std::vector<std::string> articlePointNames(const ArticleSpec& a);
 
 }  // namespace mmv

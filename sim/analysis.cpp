@@ -62,10 +62,10 @@ Solved solve(const Scene& scene, const EquilibriumOptions& eq_opts, ModesReport*
   if (timing) timing->seconds_equilibrium = secondsSince(t0);
   if (!s.eq.converged) throw NumericalError("static equilibrium failed: " + s.eq.failure);
   t0 = Clock::now();
-  s.lin = linearize(*s.model, s.eq.state);
+  s.lin = linearize(*s.model, s.eq.state, s.eq.closure_multipliers);
   if (timing) timing->seconds_linearize = secondsSince(t0);
   t0 = Clock::now();
-  s.modes = solveModes(s.lin.M, s.lin.K);
+  s.modes = solveModes(s.lin.M, s.lin.K, s.lin.Z);
   if (timing) timing->seconds_eigen = secondsSince(t0);
   return s;
 }
@@ -165,7 +165,7 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
     m.stable = s.modes.isStable(i);
     m.rigid_body = s.modes.isRigidBody(i);
     m.frequency_hz = s.modes.frequencyHz(i);
-    m.gravity_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.lin.K_geometric * phi) / m.omega2;
+    m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.lin.K_geometric * phi) / m.omega2;
 
     std::map<std::string, double> kinetic, strain;
     double Lx = 0, Ly = 0;

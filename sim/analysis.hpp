@@ -9,7 +9,8 @@
 ///    springs (hinges of a link; a servo joint counts as its joint);
 ///  - the same shares per link, each link counted with the lumped masses it carries
 ///    (its tip mass, the torquers at its tip): "which link carries the mode";
-///  - gravity's share of the modal stiffness, phi^T K_geometric phi / omega^2;
+///  - the preload's share of the modal stiffness, phi^T K_geometric phi / omega^2
+///    (gravity, loads and closure forces; negative when the preload softens);
 ///  - effective modal masses for base translation in x and y, L^2 with
 ///    L = sum_b m_b (J_b phi) . e (the mass a base shaker "sees" in that mode; they add
 ///    up over all modes to the mass that moves relative to the base);
@@ -47,7 +48,7 @@ struct ModeInfo {
   double modal_mass_kg = 0;  ///< for the shape scaled to 1 m at peak_point.
   std::string peak_point;
   double effective_mass_x_kg = 0, effective_mass_y_kg = 0;
-  double gravity_stiffness_share = 0;
+  double geometric_stiffness_share = 0;
   std::vector<PartShare> kinetic, strain;  ///< per part, sorted, largest first.
   std::vector<PartShare> kinetic_by_link, strain_by_link;  ///< per carrying link, sorted.
   std::string dominant_link_kinetic, dominant_link_strain;  ///< first of the *_by_link lists.

@@ -1,5 +1,7 @@
 #include "sim/linearize.hpp"
 
+#include "sim/closures.hpp"
+
 #include <stdexcept>
 
 namespace mmv {
@@ -125,13 +127,25 @@ Eigen::MatrixXd calcMass(const Model& model, const SimTK::State& s, const std::v
   return M;
 }
 
-LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium) {
+LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
+                          const Eigen::VectorXd& closure_multipliers) {
   LinearizedModel lin;
   lin.dofs = model.getDofs();
   const int n = static_cast<int>(lin.dofs.size());
   lin.M = calcMass(model, equilibrium, lin.dofs);
   lin.M = 0.5 * (lin.M + lin.M.transpose());
-  const Eigen::MatrixXd K_raw = calcStiffness(model, equilibrium, lin.dofs);
+  Eigen::MatrixXd K_raw = calcStiffness(model, equilibrium, lin.dofs);
+  const int m = model.getNumClosureRows();
+  if (m > 0) {
+    if (closure_multipliers.size() != m) throw std::invalid_argument("linearize: one multiplier per closure row needed");
+    K_raw += calcPointForceStiffness(model, equilibrium, lin.dofs, closureForces(model, closure_multipliers));
+    SimTK::State work = equilibrium;
+    model.getSystem().realize(work, SimTK::Stage::Position);
+    lin.G = calcClosureJacobian(model, work, lin.dofs);
+  } else {
+    lin.G.resize(0, n);
+  }
+  lin.Z = nullSpace(lin.G, n);
   const double scale = n > 0 ? K_raw.cwiseAbs().maxCoeff() : 0.0;
   lin.asymmetry = scale > 0 ? (K_raw - K_raw.transpose()).cwiseAbs().maxCoeff() / scale : 0.0;
   lin.K = 0.5 * (K_raw + K_raw.transpose());

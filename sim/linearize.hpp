@@ -30,9 +30,11 @@ namespace mmv {
 struct LinearizedModel {
   std::vector<int> dofs;        ///< coordinate index of each row/column.
   Eigen::MatrixXd M;            ///< kg*m^2 (angle coordinates).
-  Eigen::MatrixXd K;            ///< N*m/rad, symmetric.
+  Eigen::MatrixXd K;            ///< N*m/rad, symmetric, closure preload included.
   Eigen::MatrixXd K_elastic;    ///< N*m/rad, diagonal spring stiffness.
-  Eigen::MatrixXd K_geometric;  ///< K - K_elastic.
+  Eigen::MatrixXd K_geometric;  ///< K - K_elastic: gravity, loads and closure forces.
+  Eigen::MatrixXd G;            ///< closure Jacobian (rows x dofs), empty for an open tree.
+  Eigen::MatrixXd Z;            ///< orthonormal null-space basis of G (identity when open).
   double asymmetry = 0;         ///< ||K_raw - K_raw^T||_max / ||K_raw||_max.
 };
 
@@ -60,6 +62,9 @@ Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& 
 /// Mass matrix restricted to `dofs` at the state `s`.
 Eigen::MatrixXd calcMass(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
 
-LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium);
+/// `closure_multipliers`: the closure forces at the equilibrium (EquilibriumResult),
+/// empty for an open tree.
+LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
+                          const Eigen::VectorXd& closure_multipliers = Eigen::VectorXd());
 
 }  // namespace mmv

@@ -57,4 +57,12 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   return sol;
 }
 
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z) {
+  if (Z.rows() != M.rows()) throw std::invalid_argument("solveModes: Z must have one row per coordinate");
+  const Eigen::MatrixXd Mz = Z.transpose() * M * Z, Kz = Z.transpose() * K * Z;
+  ModalSolution sol = solveModes(0.5 * (Mz + Mz.transpose()), 0.5 * (Kz + Kz.transpose()));
+  sol.shapes = Z * sol.shapes;
+  return sol;
+}
+
 }  // namespace mmv

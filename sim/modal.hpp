@@ -38,4 +38,9 @@ struct ModalSolution {
 /// eigen solver fails.
 ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
 
+/// Modes constrained to the columns of Z (a closed loop's admissible motions):
+/// (Z^T K Z) psi = omega^2 (Z^T M Z) psi, phi = Z psi. Residuals and orthogonality are
+/// those of the reduced problem; shapes stay mass-normalised (phi^T M phi = 1).
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z);
+
 }  // namespace mmv

@@ -33,6 +33,17 @@ void Model::addPointLoad(const PointLoad& load) {
   loads_.push_back(load);
 }
 
+void Model::addClosure(const Closure& c) {
+  assert(!finalized_);
+  closures_.push_back(c);
+}
+
+int Model::getNumClosureRows() const {
+  int n = 0;
+  for (const auto& c : closures_) n += static_cast<int>(c.directions.size());
+  return n;
+}
+
 int Model::findBody(SimTK::MobilizedBodyIndex mobod) const {
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (bodies_[b].mobod == mobod) return static_cast<int>(b);
@@ -59,6 +70,12 @@ void Model::finalize() {
   for (std::size_t i = 0; i < coords_.size(); ++i) s.updQ()[qindex_[i]] = coords_[i].reference;
   system_.realize(s, SimTK::Stage::Position);
   reference_state_ = s;
+  for (auto& c : closures_) {
+    if (c.to_ground && !c.has_anchor) {
+      c.anchor_W = matter_.getMobilizedBody(c.mobod_a).findStationLocationInGround(s, c.station_a);
+      c.has_anchor = true;
+    }
+  }
   // Ancestry: which coordinates move each body.
   // A planar mobilizer carries three coordinates; list them all, outboard-most first.
   std::vector<std::vector<int>> coords_of_mobod(matter_.getNumBodies());

@@ -64,6 +64,22 @@ struct PointLoad {
   SimTK::Vec3 force_W;    ///< N, world frame.
 };
 
+/// A loop closure: point A (on the article) held to a ground anchor or to point B,
+/// in both in-plane directions (pin) or across a line (slider). Its rows are the
+/// world directions e_r it holds: constraint e_r . (p_A - p_B) = 0.
+struct Closure {
+  std::string name;
+  std::string where;  ///< "file:line:col" of its scene entry.
+  SimTK::MobilizedBodyIndex mobod_a;
+  SimTK::Vec3 station_a;
+  bool to_ground = true;
+  SimTK::MobilizedBodyIndex mobod_b;  ///< when !to_ground.
+  SimTK::Vec3 station_b;
+  bool has_anchor = false;  ///< else the anchor is A's reference location (set by finalize).
+  SimTK::Vec3 anchor_W;     ///< m, when to_ground.
+  std::vector<SimTK::Vec3> directions;  ///< unit world directions held (2 for a pin, 1 for a slider).
+};
+
 /// A named point fixed on a body: "link1.tip", "link2.h3", "joint2", ...
 struct NamedPoint {
   std::string name;
@@ -90,6 +106,7 @@ class Model {
   void addPoint(const NamedPoint& p);
   /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.
   void addPointLoad(const PointLoad& load);
+  void addClosure(const Closure& c);
   /// Declares that the only forces are uniform gravity, point loads and the
   /// coordinates' linear springs, so the closed-form stiffness of sim/linearize.hpp
   /// applies. Builders that add other forces must not call this.
@@ -106,6 +123,9 @@ class Model {
   const std::vector<BodyInfo>& getBodies() const { return bodies_; }
   const std::vector<NamedPoint>& getPoints() const { return points_; }
   const std::vector<PointLoad>& getPointLoads() const { return loads_; }
+  const std::vector<Closure>& getClosures() const { return closures_; }
+  /// Total number of closure constraint rows.
+  int getNumClosureRows() const;
   /// Indices of the coordinates that are degrees of freedom (not held).
   const std::vector<int>& getDofs() const { return dofs_; }
   /// Index of coordinate i's speed in the Simbody state's u vector.
@@ -155,6 +175,7 @@ class Model {
   std::vector<BodyInfo> bodies_;
   std::vector<NamedPoint> points_;
   std::vector<PointLoad> loads_;
+  std::vector<Closure> closures_;
   std::vector<int> dofs_;
   SimTK::State reference_state_;
   double total_mass_ = 0, moving_mass_ = 0;

@@ -62,7 +62,7 @@ json modesToJson(const ModesReport& r) {
                {"peak_point", m.peak_point},
                {"effective_mass_x_kg", m.effective_mass_x_kg},
                {"effective_mass_y_kg", m.effective_mass_y_kg},
-               {"gravity_stiffness_share", m.gravity_stiffness_share},
+               {"geometric_stiffness_share", m.geometric_stiffness_share},
                {"dominant_link_kinetic", m.dominant_link_kinetic},
                {"dominant_link_strain", m.dominant_link_strain},
                {"kinetic_energy_share", shares(m.kinetic)},

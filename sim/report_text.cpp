@@ -58,11 +58,11 @@ std::string formatModesText(const ModesReport& r) {
   os << "\nSystem modes about the equilibrium\n"
         "  kinetic, strain: the link with the largest share of the mode's energy, counted with the\n"
         "                   lumped masses it carries (tip mass, torquers at its tip)\n"
-        "  gravity_%: share of the modal stiffness that comes from gravity\n"
+        "  geometric_%: share of the modal stiffness from preload (gravity, loads, closure forces)\n"
         "  m_eff: effective mass for base translation (what a shaker at the base sees)\n"
         "  peak: the named point that moves most\n";
   os << fmt("  %4s %13s  %-20s %-20s %9s %10s %10s  %s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
-            "gravity_%", "m_eff_x_kg", "m_eff_y_kg", "peak");
+            "geometric_%", "m_eff_x_kg", "m_eff_y_kg", "peak");
   for (const auto& m : r.modes) {
     const std::string f = m.rigid_body ? fmt("%13s", "0 (rigid)")
                           : m.stable   ? fmt("%13.4f", m.frequency_hz)
@@ -72,7 +72,7 @@ std::string formatModesText(const ModesReport& r) {
                               ? std::string("-")
                               : fmt("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain_by_link, m.dominant_link_strain));
     os << fmt("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
-              100 * m.gravity_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, m.peak_point.c_str());
+              100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, m.peak_point.c_str());
     if (!m.stable)
       os << fmt("       unstable: omega^2 = %.4g rad^2/s^2, growth rate %.4g 1/s\n", m.omega2, std::sqrt(-m.omega2));
   }

@@ -34,11 +34,15 @@ class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
 
-  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
+  /// "file:line:col"; an empty document has a null mark (-1): the start of the file.
+  std::string position(const YAML::Mark& mark) const {
     std::ostringstream os;
-    // An empty document has a null mark (-1): point at the start of the file.
-    os << file_ << ':' << std::max(mark.line, 0) + 1 << ':' << std::max(mark.column, 0) + 1 << ": " << what;
-    throw SceneError(os.str());
+    os << file_ << ':' << std::max(mark.line, 0) + 1 << ':' << std::max(mark.column, 0) + 1;
+    return os.str();
+  }
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
+    throw SceneError(position(mark) + ": " + what);
   }
 
   static std::string show(const YAML::Node& n) {
@@ -212,7 +216,7 @@ class SceneParser {
     if (!root.IsDefined() || root.IsNull())
       r_.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
-                                     "links"});
+                                     "links", "closures", "loads"});
     Scene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -230,6 +234,8 @@ class SceneParser {
     readJoints(r_.require(top, root, "", "joints"), a);
     readLinks(r_.require(top, root, "", "links"), a);
     checkTree(a);
+    if (top.count("closures")) readClosures(top.at("closures"), a);
+    if (top.count("loads")) readLoads(top.at("loads"), a);
     return scene;
   }
 
@@ -372,6 +378,71 @@ class SceneParser {
         link_marks_[b.name] = {ln.Mark(), path};
         a.links.push_back(b);
       }
+    }
+  }
+
+  std::string where(const YAML::Node& n) const { return r_.position(n.Mark()); }
+
+  /// A named point of the article; the message says how points are named.
+  std::string point(const YAML::Node& n, const std::string& path, const ArticleSpec& a) {
+    const std::string name = r_.text(n, path);
+    const auto names = articlePointNames(a);
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      r_.fail(n.Mark(), path + ": unknown point '" + name +
+                            "' (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>)");
+    return name;
+  }
+
+  void readClosures(const YAML::Node& n, ArticleSpec& a) {
+    const std::size_t count = r_.sequence(n, "closures");
+    for (std::size_t i = 0; i < count; ++i) {
+      const YAML::Node& cn = n[i];
+      const std::string path = "closures[" + std::to_string(i) + "]";
+      auto m = r_.mapping(cn, path, {"name", "point", "to", "type", "at", "direction_deg"});
+      ClosureSpec c;
+      c.name = m.count("name") ? r_.text(m.at("name"), path + ".name") : "closure" + std::to_string(i + 1);
+      c.point = point(r_.require(m, cn, path, "point"), path + ".point", a);
+      if (m.count("to") && r_.text(m.at("to"), path + ".to") != "ground") {
+        c.to = point(m.at("to"), path + ".to", a);
+        if (c.to == c.point) r_.fail(m.at("to").Mark(), path + ".to must differ from its point (got " + c.to + ")");
+        if (m.count("at")) r_.fail(m.at("at").Mark(), path + ".at applies only to closures to the ground");
+      }
+      if (m.count("type")) {
+        const std::string t = r_.text(m.at("type"), path + ".type");
+        if (t == "pin" || t == "ball") c.type = ClosureType::Pin;
+        else if (t == "slider") c.type = ClosureType::Slider;
+        else r_.fail(m.at("type").Mark(), path + ".type: unknown closure type '" + t + "' (known: pin, ball, slider)");
+      }
+      if (m.count("direction_deg")) {
+        if (c.type != ClosureType::Slider)
+          r_.fail(m.at("direction_deg").Mark(), path + ".direction_deg applies only with type: slider");
+        c.direction = r_.number(m.at("direction_deg"), path + ".direction_deg") * kDegToRad;
+      }
+      if (m.count("at") && c.to == "ground") {
+        c.at = r_.vec3(m.at("at"), path + ".at");
+        if ((*c.at)[2] != 0.0)
+          r_.fail(m.at("at")[2].Mark(), path + ".at[2] must be 0 m: the article moves in the x-y plane (got " +
+                                            m.at("at")[2].Scalar() + ")");
+      }
+      c.where = where(cn);
+      a.closures.push_back(c);
+    }
+  }
+
+  void readLoads(const YAML::Node& n, ArticleSpec& a) {
+    const std::size_t count = r_.sequence(n, "loads");
+    for (std::size_t i = 0; i < count; ++i) {
+      const YAML::Node& ln = n[i];
+      const std::string path = "loads[" + std::to_string(i) + "]";
+      auto m = r_.mapping(ln, path, {"point", "force"});
+      LoadSpec l;
+      l.point = point(r_.require(m, ln, path, "point"), path + ".point", a);
+      const YAML::Node& f = r_.require(m, ln, path, "force");
+      l.force = r_.vec3(f, path + ".force");
+      if (l.force[2] != 0.0)
+        r_.fail(f[2].Mark(), path + ".force[2] must be 0 N: the article moves in the x-y plane (got " + f[2].Scalar() + ")");
+      l.where = where(ln);
+      a.loads.push_back(l);
     }
   }
 

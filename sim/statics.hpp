@@ -1,12 +1,19 @@
 #pragma once
 /// Static equilibrium of the article under gravity with the torquers holding their
-/// commanded angles: find the free coordinates x (hinges, free and servo joints) with
+/// commanded angles: find the free coordinates x (hinges, free and servo joints) and,
+/// for closed loops, the closure forces lambda (sim/closures.hpp) with
 ///
-///     f_x(q) = 0,     f = gravity + spring generalized forces (Model::calcAppliedForces),
+///     f_x(q) + G_x(q)^T lambda = 0,    Phi(q) = 0,
 ///
-/// held joints fixed at their commanded angles. Newton's method on f_x with the
-/// tangent stiffness K = -df/dq (sim/linearize.hpp) and a backtracking line search on
-/// ||f_x||^2. Converged when ||f_x||_inf <= force_tolerance * force_scale, where
+/// f = gravity + loads + springs (Model::calcAppliedForces), held joints fixed at
+/// their commanded angles. Newton's method on the KKT system
+///
+///     [ -(K + K_lambda)  G^T ] [dx]        [ f_x + G^T lambda ]
+///     [        G          0  ] [dlambda] = -[ Phi              ]
+///
+/// with the tangent stiffness K = -df/dq and the closure forces' stiffness K_lambda
+/// (sim/linearize.hpp), and a backtracking line search on the residual. Closures are
+/// checked for redundancy first (checkClosureRank: a SceneError names the culprit). Converged when ||f_x||_inf <= force_tolerance * force_scale, where
 /// force_scale is the larger of the largest generalized force in the unbent shape and
 /// the largest moment gravity could exert about any pin, max_k sum m_i |g| |p_i - o_k|
 /// (so the test is relative to the loads present, even where they happen to balance). The torque a locked torquer holds is
@@ -30,6 +37,8 @@ struct EquilibriumResult {
   int iterations = 0;
   double residual = 0;     ///< ||f_x||_inf at the end, N*m.
   double force_scale = 0;  ///< N*m, see above.
+  double closure_error = 0;  ///< ||Phi||_inf at the end, m.
+  Eigen::VectorXd closure_multipliers;  ///< lambda, N, one per closure row.
   SimTK::State state;      ///< the equilibrium (or last iterate), realized to Position.
   Eigen::VectorXd q;       ///< all coordinates, rad.
   Eigen::VectorXd generalized_force;  ///< f at the solution, N*m (non-zero at held joints).

@@ -112,7 +112,7 @@ TEST(Modal, LumpedMassesCountWithTheLinkThatCarriesThem) {
   EXPECT_EQ(m.kinetic.front().part, "l1.tip_mass");  // per part, the mass itself
   EXPECT_GT(m.kinetic.front().fraction, 1 - 1e-6);
   // Pendulum: all its stiffness is gravity's, and its frequency is sqrt(g/L).
-  EXPECT_NEAR(m.gravity_stiffness_share, 1.0, 1e-9);
+  EXPECT_NEAR(m.geometric_stiffness_share, 1.0, 1e-9);
   EXPECT_NEAR(m.frequency_hz, std::sqrt(9.81 / 1.0) / (2 * M_PI), 1e-8);
   // Effective mass in x of a hanging point-mass pendulum is the whole mass.
   EXPECT_NEAR(m.effective_mass_x_kg, 2.0, 1e-6);
@@ -164,7 +164,7 @@ TEST(Modal, SelfWeightBucklingOfAnUprightColumn) {
   };
   const ModeInfo below = first(0.99 * l_cr);
   EXPECT_TRUE(below.stable);
-  EXPECT_LT(below.gravity_stiffness_share, -5.0);  // gravity takes most of the stiffness
+  EXPECT_LT(below.geometric_stiffness_share, -5.0);  // gravity takes most of the stiffness
   const ModeInfo above = first(1.01 * l_cr);
   EXPECT_FALSE(above.stable);
   EXPECT_LT(above.omega2, 0.0);
