@@ -6,6 +6,7 @@
 #include <map>
 
 #include "article/article_builder.hpp"
+#include "sim/closures.hpp"
 
 namespace mmv {
 namespace {
@@ -120,6 +121,20 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
   }
   SimTK::State eqs = s.eq.state;  // a copied State must be realized again before use
   model.getSystem().realize(eqs, SimTK::Stage::Position);
+  {
+    const Eigen::VectorXd phi = model.getNumClosureRows() ? calcClosureErrors(model, eqs) : Eigen::VectorXd();
+    const auto forces = closureForces(model, s.eq.closure_multipliers);
+    int row = 0, f = 0;
+    for (const auto& c : model.getClosures()) {
+      ClosureReport cr;
+      cr.name = c.name;
+      cr.fx = forces[f].force_W[0];
+      cr.fy = forces[f].force_W[1];
+      for (std::size_t d = 0; d < c.directions.size(); ++d) cr.error_m = std::max(cr.error_m, std::abs(phi[row++]));
+      f += c.to_ground ? 1 : 2;
+      rep.closures.push_back(cr);
+    }
+  }
   SimTK::State unbent = s.eq.state;
   {
     Eigen::VectorXd q = s.eq.q;

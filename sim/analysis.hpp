@@ -62,6 +62,12 @@ struct JointReport {
   double torque_nm = 0;  ///< torque the torquer applies to its child (ccw +).
 };
 
+struct ClosureReport {
+  std::string name;
+  double fx = 0, fy = 0;  ///< N, force the closure applies to the article's point, world frame.
+  double error_m = 0;     ///< largest |Phi| of its rows at the equilibrium.
+};
+
 struct PointReport {
   std::string name;
   double x = 0, y = 0;    ///< m, deflected equilibrium, world frame.
@@ -82,6 +88,7 @@ struct ModesReport {
   int equilibrium_iterations = 0;
   double equilibrium_residual_nm = 0, force_scale_nm = 0;
   std::vector<JointReport> joints;
+  std::vector<ClosureReport> closures;
   std::vector<PointReport> points;
   std::vector<ModeInfo> modes;
   double eigen_residual = 0, orthogonality_error = 0, stiffness_asymmetry = 0;

@@ -42,6 +42,9 @@ json modesToJson(const ModesReport& r) {
                       {"commanded_angle_deg", jr.commanded_rad * kRadToDeg},
                       {"equilibrium_angle_deg", jr.equilibrium_rad * kRadToDeg},
                       {"torque_n_m", jr.torque_nm}});
+  json closures = json::array();
+  for (const auto& c : r.closures)
+    closures.push_back({{"name", c.name}, {"force_x_n", c.fx}, {"force_y_n", c.fy}, {"gap_m", c.error_m}});
   json points = json::array();
   for (const auto& p : r.points)
     points.push_back({{"name", p.name}, {"x_m", p.x}, {"y_m", p.y}, {"deflection_x_m", p.dx}, {"deflection_y_m", p.dy}});
@@ -50,6 +53,7 @@ json modesToJson(const ModesReport& r) {
                       {"residual_n_m", r.equilibrium_residual_nm},
                       {"force_scale_n_m", r.force_scale_nm},
                       {"joints", joints},
+                      {"closures", closures},
                       {"points", points}};
   json modes = json::array();
   for (const auto& m : r.modes) {

@@ -49,6 +49,11 @@ std::string formatModesText(const ModesReport& r) {
     os << fmt("  %-10s %-7s %15.3f %17.3f %12.4f\n", j.name.c_str(), j.hold.c_str(), j.commanded_rad * kRadToDeg,
               j.equilibrium_rad * kRadToDeg, j.torque_nm);
 
+  if (!r.closures.empty()) {
+    os << "\nClosures and the force each applies to the article (world frame)\n";
+    os << fmt("  %-14s %12s %12s %12s\n", "closure", "Fx_N", "Fy_N", "gap_m");
+    for (const auto& c : r.closures) os << fmt("  %-14s %12.4f %12.4f %12.1e\n", c.name.c_str(), c.fx, c.fy, c.error_m);
+  }
   os << "\nLink tips at equilibrium (deflection = equilibrium minus the unbent shape)\n";
   os << fmt("  %-12s %10s %10s %12s %12s\n", "point", "x_m", "y_m", "dx_mm", "dy_mm");
   for (const auto& p : r.points)

@@ -37,6 +37,7 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
   const int n = static_cast<int>(dofs.size());
   const int m = model.getNumClosureRows();
   SimTK::State s = model.getReferenceState();
+  model.getSystem().realize(s, SimTK::Stage::Position);  // a copied State must be realized again
   checkClosureRank(model, s, dofs);
   Eigen::VectorXd q = model.getQ(s);
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
@@ -95,6 +96,7 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
     if (!std::isfinite(res.merit)) return finish(false, "non-finite generalized force", res);
     if (res.merit <= 1.0 || n == 0) return finish(true, "", res);
     model.setQ(s, q);
+    model.getSystem().realize(s, SimTK::Stage::Position);
     const Eigen::MatrixXd K = calcStiffness(model, s, dofs);
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
     A.topLeftCorner(n, n) = -K;

@@ -142,6 +142,33 @@ TEST(SceneYaml, LoopOfJointsIsNotConnected) {
   EXPECT_EQ(errorOf(text), "s.yaml:15:5: links[0]: link 'l1' is not connected to the base (its joints form a loop)");
 }
 
+TEST(SceneYaml, ClosureAndLoadKeys) {
+  std::string text = std::string(kGood) +
+                     "closures:\n  - {name: prop, point: l1.tip, type: slider, direction_deg: 90}\n"
+                     "  - {point: l2a.tip, to: l1.h2}\n"
+                     "loads:\n  - {point: j2, force: [0, -10, 0]}\n";
+  const Scene s = parseScene(text, "s.yaml");
+  ASSERT_EQ(s.article.closures.size(), 2u);
+  EXPECT_EQ(s.article.closures[0].type, ClosureType::Slider);
+  EXPECT_NEAR(s.article.closures[0].direction, M_PI / 2, 1e-15);
+  EXPECT_EQ(s.article.closures[0].where, "s.yaml:29:5");
+  EXPECT_EQ(s.article.closures[1].to, "l1.h2");
+  EXPECT_EQ(s.article.closures[1].name, "closure2");
+  ASSERT_EQ(s.article.loads.size(), 1u);
+  EXPECT_EQ(s.article.loads[0].force[1], -10);
+}
+
+TEST(SceneYaml, ClosureNamingAnUnknownPoint) {
+  const std::string text = std::string(kGood) + "closures:\n  - {point: l3.tip}\n";
+  EXPECT_EQ(errorOf(text),
+            "s.yaml:29:13: closures[0].point: unknown point 'l3.tip' (points are <joint>, <link>.root, <link>.tip and "
+            "<link>.h1 .. <link>.h<segments>)");
+  const std::string hinge = std::string(kGood) + "closures:\n  - {point: l1.h5}\n";  // l1 has 4 segments
+  EXPECT_NE(errorOf(hinge).find("unknown point 'l1.h5'"), std::string::npos);
+  const std::string at = std::string(kGood) + "closures:\n  - {point: l1.tip, to: l1.h2, at: [0, 0, 0]}\n";
+  EXPECT_NE(errorOf(at).find("closures[0].at applies only to closures to the ground"), std::string::npos);
+}
+
 TEST(SceneYaml, EmptyScene) {
   EXPECT_EQ(errorOf(""), "s.yaml:1:1: the scene is empty (expected a mapping with 'links' and 'joints')");
 }
