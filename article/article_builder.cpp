@@ -93,7 +93,26 @@ class Builder {
       for (std::size_t k = 0; k < d.pieces.size(); ++k) {
         const SimTK::Body::Rigid body = pieceBody(d.pieces[k], gyr2);
         SimTK::MobilizedBodyIndex ix;
-        if (k == 0 && c == 0) {
+        if (k == 0 && c == 0 && parent.grounded && a_.base.type == BaseType::Floating) {
+          // A floating root (component modes, free-free): rotation and both translations.
+          SimTK::MobilizedBody::Planar planar(matter.updMobilizedBody(parent.mobod), parent.X_BF, body,
+                                              rotZ(-l.mount_angle));
+          ix = planar.getMobilizedBodyIndex();
+          const char* names[] = {"", ".x", ".y"};
+          for (int q = 0; q < 3; ++q) {
+            Coordinate coord;
+            coord.name = j.name + names[q];
+            coord.kind = CoordinateKind::Joint;
+            coord.motion = q == 0 ? CoordinateMotion::Rotation : CoordinateMotion::Translation;
+            coord.mobilizer_q = q;
+            coord.part = j.name;
+            coord.mobod = ix;
+            coord.reference = q == 0 ? j.angle : 0.0;
+            model_.addCoordinate(coord);
+          }
+          rotor = ix;
+          rotor_mount = l.mount_angle;
+        } else if (k == 0 && c == 0) {
           SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(parent.mobod), parent.X_BF, body,
                                         rotZ(-l.mount_angle));
           ix = pin.getMobilizedBodyIndex();

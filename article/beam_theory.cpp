@@ -1,6 +1,7 @@
 #include "article/beam_theory.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace mmv {
 
@@ -38,6 +39,63 @@ std::vector<double> cantileverTipMassRoots(double mu, int count) {
     return 1.0 / std::cosh(x) + std::cos(x) + mu * x * (std::cos(x) * th - std::sin(x));
   };
   return findRoots(f, 1e-6, 100.0, 1e-3, count);
+}
+
+namespace {
+
+/// Determinant of the 4x4 boundary matrix at lambda.
+double boundaryDeterminant(BeamEnd root, BeamEnd tip, double mu, double j, double l) {
+  double a[4][4];
+  // Root rows (x = 0): cos = cosh = 1, sin = sinh = 0; derivatives divided by l^k.
+  const double w0[4] = {1, 0, 1, 0}, d1[4] = {0, 1, 0, 1}, d2[4] = {-1, 0, 1, 0}, d3[4] = {0, -1, 0, 1};
+  const double* r0 = root == BeamEnd::Free ? d2 : w0;
+  const double* r1 = root == BeamEnd::Clamped ? d1 : root == BeamEnd::Pinned ? d2 : d3;
+  for (int k = 0; k < 4; ++k) {
+    a[0][k] = r0[k];
+    a[1][k] = r1[k];
+  }
+  // Tip rows (x = 1), scaled by 1/cosh(l).
+  const double c = std::cos(l), s = std::sin(l), ch = 1.0, sh = std::tanh(l), e = 1.0 / std::cosh(l);
+  const double w[4] = {c * e, s * e, ch, sh};
+  const double w1[4] = {-s * e, c * e, sh, ch};        // w' / l
+  const double w2[4] = {-c * e, -s * e, ch, sh};       // w'' / l^2
+  const double w3[4] = {s * e, -c * e, sh, ch};        // w''' / l^3
+  for (int k = 0; k < 4; ++k) {
+    const double moment = w2[k] - std::pow(l, 3) * j * w1[k];  // (w'' - l^4 j w') / l^2
+    const double shear = w3[k] + l * mu * w[k];                  // (w''' + l^4 mu w) / l^3
+    switch (tip) {
+      case BeamEnd::Clamped: a[2][k] = w[k]; a[3][k] = w1[k]; break;
+      case BeamEnd::Pinned: a[2][k] = w[k]; a[3][k] = moment; break;
+      case BeamEnd::Free: a[2][k] = moment; a[3][k] = shear; break;
+    }
+  }
+  // Determinant by expansion (Gaussian elimination with partial pivoting).
+  double det = 1.0;
+  for (int col = 0; col < 4; ++col) {
+    int piv = col;
+    for (int r = col + 1; r < 4; ++r)
+      if (std::abs(a[r][col]) > std::abs(a[piv][col])) piv = r;
+    if (a[piv][col] == 0.0) return 0.0;
+    if (piv != col) {
+      for (int k = 0; k < 4; ++k) std::swap(a[piv][k], a[col][k]);
+      det = -det;
+    }
+    det *= a[col][col];
+    for (int r = col + 1; r < 4; ++r) {
+      const double f = a[r][col] / a[col][col];
+      for (int k = col; k < 4; ++k) a[r][k] -= f * a[col][k];
+    }
+  }
+  return det;
+}
+
+}  // namespace
+
+std::vector<double> beamRoots(BeamEnd root, BeamEnd tip, double mu, double j, int count) {
+  auto f = [&](double l) { return boundaryDeterminant(root, tip, mu, j, l); };
+  // Rigid-body roots sit at 0; the first elastic root of any case here is above 0.05
+  // for mu, j up to ~1e4.
+  return findRoots(f, 0.02, 200.0, 1e-3, count);
 }
 
 double beamFrequencyHz(double beta_l, double length, double bending_stiffness,

@@ -12,6 +12,19 @@ namespace mmv {
 /// mu = 0 gives 1.87510, 4.69409, 7.85476, ...
 std::vector<double> cantileverTipMassRoots(double mu, int count);
 
+enum class BeamEnd { Clamped, Pinned, Free };
+
+/// First `count` positive roots lambda = beta*L of a uniform Euler-Bernoulli beam with
+/// the given root and tip conditions and, at the tip, a point mass ratio
+/// mu = M/(rho A L) and a rotary inertia ratio j = J/(rho A L^3). With
+/// w = A cos(l x) + B sin(l x) + C cosh(l x) + D sinh(l x) (x = s/L) the conditions are
+///   clamped: w = w' = 0;  pinned: w = 0, w'' = l^4 j w';  free: w'' = l^4 j w',
+///   w''' = -l^4 mu w  (tip terms only at the tip; the root carries no mass),
+/// and the roots are the zeros of the 4x4 determinant (rows at the tip scaled by
+/// 1/cosh l). Clamped-free with mu = j = 0 gives 1.87510, 4.69409, ...; rigid-body
+/// roots at lambda = 0 (pinned-free, free-free) are not returned.
+std::vector<double> beamRoots(BeamEnd root, BeamEnd tip, double mu, double j, int count);
+
 /// Natural frequency in Hz of a uniform Euler-Bernoulli beam for a root beta*L:
 ///   f = (beta L)^2 / (2 pi L^2) * sqrt(E I / (rho A)).
 double beamFrequencyHz(double beta_l, double length, double bending_stiffness,

@@ -46,37 +46,53 @@ std::map<std::string, double> byCarrier(const std::map<std::string, double>& ene
   return out;
 }
 
-struct Solved {
-  std::unique_ptr<Model> model;
-  EquilibriumResult eq;
-  LinearizedModel lin;
-  ModalSolution modes;
-};
+}  // namespace
 
-Solved solve(const Scene& scene, const EquilibriumOptions& eq_opts, ModesReport* timing) {
-  Solved s;
+SolvedScene solveScene(const Scene& scene, const EquilibriumOptions& eq_opts) {
+  SolvedScene s;
   auto t0 = Clock::now();
   s.model = buildArticleModel(scene);
-  if (timing) timing->seconds_build = secondsSince(t0);
+  s.seconds_build = secondsSince(t0);
   t0 = Clock::now();
-  s.eq = solveEquilibrium(*s.model, eq_opts);
-  if (timing) timing->seconds_equilibrium = secondsSince(t0);
-  if (!s.eq.converged) throw NumericalError("static equilibrium failed: " + s.eq.failure);
+  s.equilibrium = solveEquilibrium(*s.model, eq_opts);
+  s.seconds_equilibrium = secondsSince(t0);
+  if (!s.equilibrium.converged) throw NumericalError("static equilibrium failed: " + s.equilibrium.failure);
   t0 = Clock::now();
-  s.lin = linearize(*s.model, s.eq.state, s.eq.closure_multipliers);
-  if (timing) timing->seconds_linearize = secondsSince(t0);
+  s.linearized = linearize(*s.model, s.equilibrium.state, s.equilibrium.closure_multipliers);
+  s.seconds_linearize = secondsSince(t0);
   t0 = Clock::now();
-  s.modes = solveModes(s.lin.M, s.lin.K, s.lin.Z);
-  if (timing) timing->seconds_eigen = secondsSince(t0);
+  s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z);
+  s.seconds_eigen = secondsSince(t0);
   return s;
 }
 
-}  // namespace
+Eigen::MatrixXd pointTranslationMatrix(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
+  std::vector<SimTK::MobilizedBodyIndex> ix;
+  std::vector<SimTK::Vec3> st;
+  for (const auto& p : model.getPoints()) {
+    ix.push_back(p.mobod);
+    st.push_back(p.station_B);
+  }
+  const Eigen::MatrixXd J = model.calcFrameJacobians(s, ix, st, dofs);
+  Eigen::MatrixXd P(2 * ix.size(), dofs.size());
+  for (std::size_t p = 0; p < ix.size(); ++p) P.middleRows(2 * p, 2) = J.middleRows(6 * p + 3, 2);
+  return P;
+}
+
+std::string dominantStrainLink(const Model& model, const std::vector<int>& dofs, const Eigen::VectorXd& phi) {
+  std::map<std::string, double> strain;
+  for (std::size_t k = 0; k < dofs.size(); ++k) {
+    const Coordinate& c = model.getCoordinates()[dofs[k]];
+    if (c.stiffness > 0) strain[c.part] += 0.5 * c.stiffness * phi[k] * phi[k];
+  }
+  const auto shares = sortedShares(byCarrier(strain, model));
+  return shares.empty() ? std::string() : shares.front().part;
+}
 
 ModesSolve solveSceneModes(const Scene& scene, const EquilibriumOptions& eq) {
-  Solved s = solve(scene, eq, nullptr);
+  const SolvedScene s = solveScene(scene, eq);
   ModesSolve out;
-  out.num_dofs = static_cast<int>(s.lin.dofs.size());
+  out.num_dofs = static_cast<int>(s.linearized.dofs.size());
   out.frequencies_hz.resize(s.modes.omega2.size());
   for (Eigen::Index i = 0; i < s.modes.omega2.size(); ++i) out.frequencies_hz[i] = s.modes.frequencyHz(static_cast<int>(i));
   return out;
@@ -87,10 +103,14 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
   rep.scene_name = scene.name;
   rep.scene_source = scene.source;
   rep.gravity = scene.gravity;
-  Solved s = solve(scene, options.equilibrium, &rep);
+  const SolvedScene s = solveScene(scene, options.equilibrium);
+  rep.seconds_build = s.seconds_build;
+  rep.seconds_equilibrium = s.seconds_equilibrium;
+  rep.seconds_linearize = s.seconds_linearize;
+  rep.seconds_eigen = s.seconds_eigen;
   const Model& model = *s.model;
   const auto& coords = model.getCoordinates();
-  const auto& dofs = s.lin.dofs;
+  const auto& dofs = s.linearized.dofs;
 
   // Model summary.
   rep.model.num_links = static_cast<int>(scene.article.links.size());
@@ -102,10 +122,10 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
   for (const auto& l : scene.article.links) rep.model.link_segments.push_back({l.name, l.rigid ? 0 : l.segments});
 
   // Equilibrium: joints, deflections.
-  rep.equilibrium_converged = s.eq.converged;
-  rep.equilibrium_iterations = s.eq.iterations;
-  rep.equilibrium_residual_nm = s.eq.residual;
-  rep.force_scale_nm = s.eq.force_scale;
+  rep.equilibrium_converged = s.equilibrium.converged;
+  rep.equilibrium_iterations = s.equilibrium.iterations;
+  rep.equilibrium_residual_nm = s.equilibrium.residual;
+  rep.force_scale_nm = s.equilibrium.force_scale;
   for (const auto& j : scene.article.joints) {
     JointReport jr;
     jr.name = j.name;
@@ -113,17 +133,17 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
     jr.commanded_rad = j.angle;
     for (std::size_t c = 0; c < coords.size(); ++c) {
       if (coords[c].kind != CoordinateKind::Joint || coords[c].name != j.name) continue;
-      jr.equilibrium_rad = s.eq.q[c];
-      if (j.hold == JointHold::Locked) jr.torque_nm = -s.eq.generalized_force[c];
-      if (j.hold == JointHold::Servo) jr.torque_nm = -j.servo_stiffness * (s.eq.q[c] - j.angle);
+      jr.equilibrium_rad = s.equilibrium.q[c];
+      if (j.hold == JointHold::Locked) jr.torque_nm = -s.equilibrium.generalized_force[c];
+      if (j.hold == JointHold::Servo) jr.torque_nm = -j.servo_stiffness * (s.equilibrium.q[c] - j.angle);
     }
     rep.joints.push_back(jr);
   }
-  SimTK::State eqs = s.eq.state;  // a copied State must be realized again before use
+  SimTK::State eqs = s.equilibrium.state;  // a copied State must be realized again before use
   model.getSystem().realize(eqs, SimTK::Stage::Position);
   {
     const Eigen::VectorXd phi = model.getNumClosureRows() ? calcClosureErrors(model, eqs) : Eigen::VectorXd();
-    const auto forces = closureForces(model, s.eq.closure_multipliers);
+    const auto forces = closureForces(model, s.equilibrium.closure_multipliers);
     int row = 0, f = 0;
     for (const auto& c : model.getClosures()) {
       ClosureReport cr;
@@ -135,9 +155,9 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
       rep.closures.push_back(cr);
     }
   }
-  SimTK::State unbent = s.eq.state;
+  SimTK::State unbent = s.equilibrium.state;
   {
-    Eigen::VectorXd q = s.eq.q;
+    Eigen::VectorXd q = s.equilibrium.q;
     for (std::size_t c = 0; c < coords.size(); ++c)
       if (coords[c].kind == CoordinateKind::Hinge) q[c] = 0.0;
     model.setQ(unbent, q);
@@ -169,7 +189,7 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
 
   rep.eigen_residual = s.modes.max_residual;
   rep.orthogonality_error = s.modes.orthogonality_error;
-  rep.stiffness_asymmetry = s.lin.asymmetry;
+  rep.stiffness_asymmetry = s.linearized.asymmetry;
   const int n = static_cast<int>(s.modes.omega2.size());
   const int count = options.max_modes > 0 ? std::min(options.max_modes, n) : n;
   for (int i = 0; i < count; ++i) {
@@ -180,7 +200,7 @@ ModesReport runModes(const Scene& scene, const ModesOptions& options) {
     m.stable = s.modes.isStable(i);
     m.rigid_body = s.modes.isRigidBody(i);
     m.frequency_hz = s.modes.frequencyHz(i);
-    m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.lin.K_geometric * phi) / m.omega2;
+    m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.linearized.K_geometric * phi) / m.omega2;
 
     std::map<std::string, double> kinetic, strain;
     double Lx = 0, Ly = 0;

@@ -17,6 +17,7 @@
 ///  - the modal mass for the shape scaled to 1 m at its largest translation (kg);
 ///  - the shape at named points (translations, and rotations where meaningful).
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,25 @@ struct ModesOptions {
 /// Runs the analysis. Throws NumericalError if the equilibrium does not converge or
 /// the eigenproblem is ill-posed.
 ModesReport runModes(const Scene& scene, const ModesOptions& options = {});
+
+/// The solved full model: model, equilibrium, linearization and modes.
+struct SolvedScene {
+  std::unique_ptr<Model> model;
+  EquilibriumResult equilibrium;
+  LinearizedModel linearized;
+  ModalSolution modes;
+  double seconds_build = 0, seconds_equilibrium = 0, seconds_linearize = 0, seconds_eigen = 0;
+};
+/// Throws NumericalError if the equilibrium fails or the eigenproblem is ill-posed.
+SolvedScene solveScene(const Scene& scene, const EquilibriumOptions& eq = {});
+
+/// Translations (x, y) of every named point per unit DOF motion at state s: rows
+/// 2p, 2p+1 for point p, columns over `dofs`. P * phi is a shape as a test sees it.
+Eigen::MatrixXd pointTranslationMatrix(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+
+/// The link with the largest share of the strain energy of shape phi (over the
+/// model's DOFs), with lumped parts counted with their link; "" if none strains.
+std::string dominantStrainLink(const Model& model, const std::vector<int>& dofs, const Eigen::VectorXd& phi);
 
 /// Frequencies only (Hz, negative for unstable shapes), the cheap path for sweeps.
 struct ModesSolve {

@@ -70,6 +70,7 @@ void Model::finalize() {
   for (std::size_t i = 0; i < coords_.size(); ++i) s.updQ()[qindex_[i]] = coords_[i].reference;
   system_.realize(s, SimTK::Stage::Position);
   reference_state_ = s;
+  system_.realize(reference_state_, SimTK::Stage::Position);  // a copy's cache is not valid
   for (auto& c : closures_) {
     if (c.to_ground && !c.has_anchor) {
       c.anchor_W = matter_.getMobilizedBody(c.mobod_a).findStationLocationInGround(s, c.station_a);

@@ -36,6 +36,38 @@ TEST(BeamTheory, TipMassRootsSolveTheEquationAndDecrease) {
   }
 }
 
+// The general boundary determinant against the classical roots (Blevins, table 8-1):
+// clamped-pinned and pinned-free share 3.92660, 7.06858, 10.21018; free-free and
+// clamped-clamped 4.73004, 7.85320, 10.99561; pinned-pinned n pi.
+TEST(BeamTheory, BoundaryDeterminantClassicalRoots) {
+  auto expect = [](BeamEnd r, BeamEnd t, std::vector<double> want, const char* what) {
+    const auto got = beamRoots(r, t, 0.0, 0.0, static_cast<int>(want.size()));
+    ASSERT_EQ(got.size(), want.size()) << what;
+    for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got[i], want[i], 2e-5) << what << " root " << i;
+  };
+  expect(BeamEnd::Clamped, BeamEnd::Free, {1.875104, 4.694091, 7.854757}, "clamped-free");
+  expect(BeamEnd::Clamped, BeamEnd::Pinned, {3.926602, 7.068583, 10.210176}, "clamped-pinned");
+  expect(BeamEnd::Pinned, BeamEnd::Free, {3.926602, 7.068583, 10.210176}, "pinned-free");
+  expect(BeamEnd::Free, BeamEnd::Free, {4.730041, 7.853205, 10.995608}, "free-free");
+  expect(BeamEnd::Clamped, BeamEnd::Clamped, {4.730041, 7.853205, 10.995608}, "clamped-clamped");
+  expect(BeamEnd::Pinned, BeamEnd::Pinned, {M_PI, 2 * M_PI, 3 * M_PI}, "pinned-pinned");
+}
+
+// Two independent routes to the cantilever with a tip mass: the determinant and the
+// closed frequency equation must give the same roots.
+TEST(BeamTheory, BoundaryDeterminantAgreesWithTipMassEquation) {
+  for (double mu : {0.1, 1.0, 1.7984, 5.0}) {
+    const auto a = beamRoots(BeamEnd::Clamped, BeamEnd::Free, mu, 0.0, 3);
+    const auto b = cantileverTipMassRoots(mu, 3);
+    ASSERT_EQ(a.size(), 3u);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], 1e-9) << "mu " << mu;
+  }
+  // A tip rotary inertia lowers every root.
+  const auto with_j = beamRoots(BeamEnd::Clamped, BeamEnd::Free, 1.0, 0.05, 3);
+  const auto without = beamRoots(BeamEnd::Clamped, BeamEnd::Free, 1.0, 0.0, 3);
+  for (int i = 0; i < 3; ++i) EXPECT_LT(with_j[i], without[i]);
+}
+
 TEST(BeamTheory, FrequencyFormulaMatchesReportLink3) {
   // Link 3 of the MMV article clamped-free with the report's rounded Table 1 values
   // (A = 5.07e-6 m^2, I = 2.04e-12 m^4): the report prints 3.287 Hz (4 digits).
