@@ -3,12 +3,12 @@
 #include <iostream>
 
 #include "sim/analysis.hpp"
+#include "sim/cli/output_dir.hpp"
 #include "sim/converge.hpp"
 #include "sim/report.hpp"
 #include "sim/scene.hpp"
 
 namespace mmv::cli {
-namespace {
 
 /// Loads the scene and applies command-line overrides.
 Scene loadScene(const SceneArgs& args) {
@@ -17,11 +17,15 @@ Scene loadScene(const SceneArgs& args) {
   return scene;
 }
 
-/// Runs `body`, turning the error classes into messages on stderr and exit codes.
-template <class F>
-int guarded(F&& body) {
+int guarded(const std::function<int()>& body) {
   try {
     return body();
+  } catch (const UsageError& e) {
+    std::cerr << "mmvlab: " << e.what() << '\n';
+    return kUsage;
+  } catch (const OutputError& e) {
+    std::cerr << "mmvlab: " << e.what() << '\n';
+    return kCannotCreate;
   } catch (const SceneFileError& e) {
     std::cerr << "mmvlab: " << e.what() << '\n';
     return kNoInput;
@@ -36,8 +40,6 @@ int guarded(F&& body) {
     return kInternal;
   }
 }
-
-}  // namespace
 
 int runModesCommand(const ModesArgs& args) {
   return guarded([&] {

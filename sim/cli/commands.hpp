@@ -3,7 +3,12 @@
 /// composed completely in memory and written only on success, so a failing run
 /// writes nothing to stdout; diagnostics go to stderr.
 
+#include <functional>
+#include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "sim/scene.hpp"
 
 namespace mmv::cli {
 
@@ -15,6 +20,13 @@ enum ExitCode : int {
   kDataError = 65,        ///< bad scene content.
   kNoInput = 66,          ///< the scene file is missing or unreadable.
   kInternal = 70,         ///< a bug: please report it.
+  kCannotCreate = 73,     ///< the output cannot be written (or would replace files).
+};
+
+/// A command-line value the parser could not check (exit 64).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 struct SceneArgs {
@@ -33,8 +45,25 @@ struct ConvergeArgs : SceneArgs {
   int modes = 6;
 };
 
+struct CompareArgs : SceneArgs {
+  bool json = false;
+  std::string bc = "clamped-free";
+  std::string tip_mass = "torquer";
+  int component_modes = 4;
+  int modes = 10;
+  std::vector<std::string> topologies;
+  std::string out;
+  bool force = false;
+};
+
 int runModesCommand(const ModesArgs& args);
+int runCompareCommand(const CompareArgs& args);
 int runConvergeCommand(const ConvergeArgs& args);
 int runSceneCommand();
+
+// Shared by the command implementations.
+Scene loadScene(const SceneArgs& args);
+/// Runs `body`, turning the error classes into messages on stderr and exit codes.
+int guarded(const std::function<int()>& body);
 
 }  // namespace mmv::cli

@@ -35,6 +35,23 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   c->add_option("--modes", conv.modes, "Number of modes to tabulate")->capture_default_str()->check(CLI::Range(1, 1000));
 
+  CompareArgs cmp;
+  CLI::App* cp = app.add_subcommand(
+      "compare", "Component modes (report Table 2) against system modes (Table 3), synthesis errors and MAC");
+  addSceneOptions(cp, cmp);
+  cp->add_flag("--json", cmp.json, "Print JSON instead of tables");
+  cp->add_option("--bc", cmp.bc, "Component boundary condition: clamped-free, pinned-free, free-free, clamped-pinned, pinned-pinned")
+      ->capture_default_str();
+  cp->add_option("--tip-mass", cmp.tip_mass, "Component tip mass: torquer (the report's TREETOPS choice), outboard, none")
+      ->capture_default_str();
+  cp->add_option("--component-modes", cmp.component_modes, "Modes per link in the synthesis")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 200));
+  cp->add_option("--modes", cmp.modes, "System modes compared")->capture_default_str()->check(CLI::Range(1, 500));
+  cp->add_option("--topology", cmp.topologies, "open, closed, or open,closed (side by side)")->delimiter(',');
+  cp->add_option("--out", cmp.out, "Also write compare.md, CSV, JSON and MAC heat maps (PNG) into this directory");
+  cp->add_flag("--force", cmp.force, "Replace files of the same names in --out");
+
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
   try {
@@ -45,5 +62,6 @@ int main(int argc, char** argv) {
   }
   if (m->parsed()) return runModesCommand(modes);
   if (c->parsed()) return runConvergeCommand(conv);
+  if (cp->parsed()) return runCompareCommand(cmp);
   return runSceneCommand();
 }

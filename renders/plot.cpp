@@ -1,0 +1,177 @@
+#include "renders/plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+namespace mmv::render {
+namespace {
+
+const cv::Scalar kBlack(0, 0, 0), kGrey(200, 200, 200), kWhite(255, 255, 255);
+constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
+
+void text(cv::Mat& img, const std::string& s, cv::Point at, double scale = 0.45, cv::Scalar colour = kBlack,
+          bool centred = false, int thickness = 1) {
+  int base = 0;
+  const cv::Size sz = cv::getTextSize(s, kFont, scale, thickness, &base);
+  if (centred) at.x -= sz.width / 2;
+  cv::putText(img, s, at, kFont, scale, colour, thickness, cv::LINE_AA);
+}
+
+/// Viridis-like colour for t in [0, 1] (BGR), from five anchors.
+cv::Scalar colourFor(double t) {
+  static const double anchors[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(t));
+  const double f = t - i;
+  double rgb[3];
+  for (int c = 0; c < 3; ++c) rgb[c] = anchors[i][c] + f * (anchors[i + 1][c] - anchors[i][c]);
+  return cv::Scalar(rgb[2], rgb[1], rgb[0]);
+}
+
+void save(const std::string& path, const cv::Mat& img) {
+  bool ok = false;
+  try {
+    ok = cv::imwrite(path, img);
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(path + ": cannot write PNG: " + e.what());
+  }
+  if (!ok) throw std::runtime_error(path + ": cannot write PNG");
+}
+
+std::string fmt(double v, const char* f = "%.3g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+/// "Nice" tick step for a range.
+double tickStep(double range, int target = 6) {
+  const double raw = range / target, mag = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+    if (raw <= m * mag) return m * mag;
+  return 10 * mag;
+}
+
+}  // namespace
+
+void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, const std::vector<std::string>& row_labels,
+                     const std::vector<std::string>& col_labels, const std::string& title, const std::string& row_axis,
+                     const std::string& col_axis, double vmin, double vmax) {
+  const int rows = static_cast<int>(values.rows()), cols = static_cast<int>(values.cols());
+  const int cell = 56, left = 120, top = 70, bar = 90;
+  const int width = left + cols * cell + bar + 30, height = top + rows * cell + 80;
+  cv::Mat img(height, width, CV_8UC3, kWhite);
+  text(img, title, {width / 2, 30}, 0.6, kBlack, true, 1);
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) {
+      const double v = values(i, j), t = (v - vmin) / (vmax - vmin);
+      const cv::Rect r(left + j * cell, top + i * cell, cell, cell);
+      cv::rectangle(img, r, colourFor(t), cv::FILLED);
+      cv::rectangle(img, r, kWhite, 1);
+      text(img, fmt(v, "%.2f"), {r.x + cell / 2, r.y + cell / 2 + 5}, 0.42, t > 0.6 ? kBlack : kWhite, true);
+    }
+  for (int i = 0; i < rows && i < static_cast<int>(row_labels.size()); ++i)
+    text(img, row_labels[i], {left - 8 - 7 * static_cast<int>(row_labels[i].size()), top + i * cell + cell / 2 + 5}, 0.42);
+  for (int j = 0; j < cols && j < static_cast<int>(col_labels.size()); ++j)
+    text(img, col_labels[j], {left + j * cell + cell / 2, top + rows * cell + 20}, 0.42, kBlack, true);
+  text(img, col_axis, {left + cols * cell / 2, top + rows * cell + 48}, 0.5, kBlack, true);
+  // The row axis label, written vertically by rotating a strip.
+  {
+    cv::Mat strip(30, std::max(rows * cell, 40), CV_8UC3, kWhite);
+    text(strip, row_axis, {strip.cols / 2, 20}, 0.5, kBlack, true);
+    cv::Mat rotated;
+    cv::rotate(strip, rotated, cv::ROTATE_90_COUNTERCLOCKWISE);
+    const int h = std::min(rotated.rows, height - top);
+    rotated(cv::Rect(0, 0, rotated.cols, h)).copyTo(img(cv::Rect(8, top, rotated.cols, h)));
+  }
+  // Colour bar.
+  const int bx = left + cols * cell + 30, bh = std::max(rows * cell, 100);
+  for (int y = 0; y < bh; ++y) cv::line(img, {bx, top + y}, {bx + 20, top + y}, colourFor(1.0 - double(y) / bh));
+  cv::rectangle(img, cv::Rect(bx, top, 20, bh), kBlack, 1);
+  text(img, fmt(vmax, "%.1f"), {bx + 26, top + 10}, 0.42);
+  text(img, fmt(vmin, "%.1f"), {bx + 26, top + bh}, 0.42);
+  save(path, img);
+}
+
+void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
+                      const std::string& x_label, const std::string& y_label, bool log_y) {
+  const int width = 900, height = 600, left = 90, right = 200, top = 50, bottom = 70;
+  cv::Mat img(height, width, CV_8UC3, kWhite);
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  auto ty = [&](double y) { return log_y ? std::log10(y) : y; };
+  for (const auto& s : series)
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || (log_y && s.y[i] <= 0)) continue;
+      x0 = std::min(x0, s.x[i]);
+      x1 = std::max(x1, s.x[i]);
+      y0 = std::min(y0, ty(s.y[i]));
+      y1 = std::max(y1, ty(s.y[i]));
+    }
+  if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  if (x1 == x0) x0 -= 1, x1 += 1;
+  if (y1 == y0) y0 -= 1, y1 += 1;
+  const double pad = 0.05 * (y1 - y0);
+  y0 -= pad;
+  y1 += pad;
+  const int pw = width - left - right, ph = height - top - bottom;
+  auto px = [&](double x) { return left + static_cast<int>((x - x0) / (x1 - x0) * pw); };
+  auto py = [&](double y) { return top + ph - static_cast<int>((ty(y) - y0) / (y1 - y0) * ph); };
+  text(img, title, {left + pw / 2, 30}, 0.6, kBlack, true);
+  // Grid and ticks.
+  const double sx = tickStep(x1 - x0);
+  for (double x = std::ceil(x0 / sx) * sx; x <= x1 + 1e-9 * sx; x += sx) {
+    cv::line(img, {px(x), top}, {px(x), top + ph}, kGrey);
+    text(img, fmt(x, "%g"), {px(x), top + ph + 20}, 0.42, kBlack, true);
+  }
+  if (log_y) {
+    for (int e = static_cast<int>(std::floor(y0)); e <= static_cast<int>(std::ceil(y1)); ++e) {
+      if (e < y0 || e > y1) continue;
+      const int y = top + ph - static_cast<int>((e - y0) / (y1 - y0) * ph);
+      cv::line(img, {left, y}, {left + pw, y}, kGrey);
+      text(img, fmt(std::pow(10.0, e), "%g"), {left - 60, y + 5}, 0.42);
+    }
+  } else {
+    const double sy = tickStep(y1 - y0);
+    for (double y = std::ceil(y0 / sy) * sy; y <= y1 + 1e-9 * sy; y += sy) {
+      const int yy = top + ph - static_cast<int>((y - y0) / (y1 - y0) * ph);
+      cv::line(img, {left, yy}, {left + pw, yy}, kGrey);
+      text(img, fmt(y, "%g"), {left - 60, yy + 5}, 0.42);
+    }
+  }
+  cv::rectangle(img, cv::Rect(left, top, pw, ph), kBlack, 1);
+  text(img, x_label, {left + pw / 2, height - 25}, 0.5, kBlack, true);
+  {
+    cv::Mat strip(30, ph, CV_8UC3, kWhite);
+    text(strip, y_label, {ph / 2, 20}, 0.5, kBlack, true);
+    cv::Mat rotated;
+    cv::rotate(strip, rotated, cv::ROTATE_90_COUNTERCLOCKWISE);
+    rotated.copyTo(img(cv::Rect(5, top, rotated.cols, rotated.rows)));
+  }
+  // Series, coloured around the palette; legend on the right.
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const auto& s = series[k];
+    const cv::Scalar colour = colourFor(series.size() > 1 ? 0.85 * double(k) / (series.size() - 1) : 0.3);
+    for (std::size_t i = 1; i < s.x.size(); ++i) {
+      const bool ok = std::isfinite(s.x[i - 1]) && std::isfinite(s.y[i - 1]) && std::isfinite(s.x[i]) &&
+                      std::isfinite(s.y[i]) && (!log_y || (s.y[i - 1] > 0 && s.y[i] > 0));
+      if (!ok) continue;
+      if (s.dashed && i % 2 == 0) continue;
+      cv::line(img, {px(s.x[i - 1]), py(s.y[i - 1])}, {px(s.x[i]), py(s.y[i])}, colour, 2, cv::LINE_AA);
+    }
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!log_y || s.y[i] > 0))
+        cv::circle(img, {px(s.x[i]), py(s.y[i])}, 3, colour, cv::FILLED, cv::LINE_AA);
+    const int ly = top + 10 + 22 * static_cast<int>(k);
+    if (ly < top + ph) {
+      cv::line(img, {left + pw + 15, ly - 4}, {left + pw + 40, ly - 4}, colour, 2);
+      text(img, s.label, {left + pw + 46, ly}, 0.42);
+    }
+  }
+  save(path, img);
+}
+
+}  // namespace mmv::render

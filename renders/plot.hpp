@@ -1,0 +1,29 @@
+#pragma once
+/// PNG figures drawn with OpenCV (no display needed): a heat map for MAC matrices and
+/// x-y line plots for frequency maps. Plain data in, a file out; throws
+/// std::runtime_error if the file cannot be written.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace mmv::render {
+
+/// A heat map of `values` on a fixed [vmin, vmax] colour scale (MAC: 0..1), with each
+/// cell's value printed in it, row and column labels, a title and a colour bar.
+void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, const std::vector<std::string>& row_labels,
+                     const std::vector<std::string>& col_labels, const std::string& title, const std::string& row_axis,
+                     const std::string& col_axis, double vmin = 0.0, double vmax = 1.0);
+
+struct Series {
+  std::string label;
+  std::vector<double> x, y;  ///< equal lengths; non-finite points break the line.
+  bool dashed = false;
+};
+
+/// Line plot of several series with axes, ticks, labels and a legend.
+void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
+                      const std::string& x_label, const std::string& y_label, bool log_y = false);
+
+}  // namespace mmv::render
