@@ -62,7 +62,12 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
                      const std::vector<std::string>& col_labels, const std::string& title, const std::string& row_axis,
                      const std::string& col_axis, double vmin, double vmax) {
   const int rows = static_cast<int>(values.rows()), cols = static_cast<int>(values.cols());
-  const int cell = 56, left = 120, top = 70, bar = 90;
+  int label_w = 0;
+  for (const auto& l : row_labels) {
+    int base = 0;
+    label_w = std::max(label_w, cv::getTextSize(l, kFont, 0.42, 1, &base).width);
+  }
+  const int cell = 56, left = 50 + label_w, top = 70, bar = 90;
   const int width = left + cols * cell + bar + 30, height = top + rows * cell + 80;
   cv::Mat img(height, width, CV_8UC3, kWhite);
   text(img, title, {width / 2, 30}, 0.6, kBlack, true, 1);
@@ -74,8 +79,11 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
       cv::rectangle(img, r, kWhite, 1);
       text(img, fmt(v, "%.2f"), {r.x + cell / 2, r.y + cell / 2 + 5}, 0.42, t > 0.6 ? kBlack : kWhite, true);
     }
-  for (int i = 0; i < rows && i < static_cast<int>(row_labels.size()); ++i)
-    text(img, row_labels[i], {left - 8 - 7 * static_cast<int>(row_labels[i].size()), top + i * cell + cell / 2 + 5}, 0.42);
+  for (int i = 0; i < rows && i < static_cast<int>(row_labels.size()); ++i) {
+    int base = 0;
+    const int w = cv::getTextSize(row_labels[i], kFont, 0.42, 1, &base).width;
+    text(img, row_labels[i], {left - 8 - w, top + i * cell + cell / 2 + 5}, 0.42);
+  }
   for (int j = 0; j < cols && j < static_cast<int>(col_labels.size()); ++j)
     text(img, col_labels[j], {left + j * cell + cell / 2, top + rows * cell + 20}, 0.42, kBlack, true);
   text(img, col_axis, {left + cols * cell / 2, top + rows * cell + 48}, 0.5, kBlack, true);
