@@ -146,7 +146,8 @@ SynthesisResult synthesize(const Scene& scene, const SynthesisOptions& o) {
   SimTK::State st = full.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
   const Eigen::MatrixXd P = pointTranslationMatrix(model, st, dofs);
-  r.mac = modalAssuranceCriterion(P * synth.shapes.leftCols(ns), P * full.modes.shapes.leftCols(nf));
+  r.full_point_shapes = P * full.modes.shapes.leftCols(nf);
+  r.mac = modalAssuranceCriterion(P * synth.shapes.leftCols(ns), r.full_point_shapes);
   r.full_hz.resize(nf);
   r.synth_hz.resize(ns);
   for (int i = 0; i < nf; ++i) r.full_hz[i] = full.modes.frequencyHz(i);

@@ -76,6 +76,7 @@ struct SynthesisResult {
   std::vector<SynthesisRow> rows;
   Eigen::VectorXd full_hz, synth_hz;  ///< first compare_modes of each.
   Eigen::MatrixXd mac;  ///< synthesized (rows) x full (columns), first compare_modes.
+  Eigen::MatrixXd full_point_shapes;  ///< full model's shapes at the named points (P phi), compared modes.
 };
 
 /// Throws NumericalError if a solve fails.

@@ -79,9 +79,10 @@ Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& 
   const auto& matter = model.getMatter();
   const auto& bodies = model.getBodies();
   GeometricTerms terms(model, work);
+  const SimTK::Vec3 g = model.getGravity(work);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const SimTK::MobilizedBody& mb = matter.getMobilizedBody(bodies[b].mobod);
-    terms.addStation(static_cast<int>(b), mb.getBodyMassCenterStation(work), mb.getBodyMass(work) * model.getGravity());
+    terms.addStation(static_cast<int>(b), mb.getBodyMassCenterStation(work), mb.getBodyMass(work) * g);
   }
   for (const auto& load : model.getPointLoads()) terms.addStation(model.findBody(load.mobod), load.station_B, load.force_W);
   for (const auto& f : extra) terms.addStation(f.body, f.station_B, f.force_W);

@@ -5,8 +5,13 @@
 
 namespace mmv {
 
-Model::Model(const SimTK::Vec3& g_W) : matter_(system_), forces_(system_), gravity_W_(g_W) {
-  SimTK::Force::Gravity(forces_, matter_, g_W);
+Model::Model(const SimTK::Vec3& g_W)
+    : matter_(system_), forces_(system_), gravity_W_(g_W), gravity_(forces_, matter_, g_W) {}
+
+void Model::setGravityScale(SimTK::State& s, double scale) const { gravity_.setMagnitude(s, scale * gravity_W_.norm()); }
+
+SimTK::Vec3 Model::getGravity(const SimTK::State& s) const {
+  return gravity_W_.norm() > 0 ? gravity_.getMagnitude(s) * SimTK::Vec3(gravity_.getDownDirection(s)) : SimTK::Vec3(0);
 }
 
 int Model::addPart(const std::string& name, Part::Kind kind, const std::string& carrier) {

@@ -118,6 +118,8 @@ class Model {
   const SimTK::MultibodySystem& getSystem() const { return system_; }
   const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
   const SimTK::Vec3& getGravity() const { return gravity_W_; }
+  /// Gravity in state `s` (the scene's, times any continuation scale), m/s^2.
+  SimTK::Vec3 getGravity(const SimTK::State& s) const;
   const std::vector<Coordinate>& getCoordinates() const { return coords_; }
   const std::vector<Part>& getParts() const { return parts_; }
   const std::vector<BodyInfo>& getBodies() const { return bodies_; }
@@ -160,6 +162,9 @@ class Model {
   Eigen::MatrixXd calcFrameJacobians(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
                                      const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols) const;
 
+  /// Scales gravity in state `s` (1 = the scene's g): for load continuation.
+  void setGravityScale(SimTK::State& s, double scale) const;
+
   /// Position of a named point in the world frame (m); `s` realized to Position.
   SimTK::Vec3 findPointLocation(const SimTK::State& s, const NamedPoint& p) const;
 
@@ -168,6 +173,7 @@ class Model {
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;
   SimTK::Vec3 gravity_W_;
+  SimTK::Force::Gravity gravity_;
   std::vector<Coordinate> coords_;
   std::vector<SimTK::QIndex> qindex_;
   std::vector<SimTK::UIndex> uindex_;

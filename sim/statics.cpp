@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "sim/closures.hpp"
@@ -31,27 +32,24 @@ double gravityMomentScale(const Model& model, const SimTK::State& s) {
 
 }  // namespace
 
-EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions& options) {
+namespace {
+
+/// Newton's method from (q, lambda) in state s (whose gravity scale is set).
+EquilibriumResult newton(const Model& model, SimTK::State s, Eigen::VectorXd q, Eigen::VectorXd lambda,
+                         const EquilibriumOptions& options, double force_scale, double size) {
   EquilibriumResult r;
   const std::vector<int>& dofs = model.getDofs();
   const int n = static_cast<int>(dofs.size());
   const int m = model.getNumClosureRows();
-  SimTK::State s = model.getReferenceState();
-  model.getSystem().realize(s, SimTK::Stage::Position);  // a copied State must be realized again
-  checkClosureRank(model, s, dofs);
-  Eigen::VectorXd q = model.getQ(s);
-  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
-  r.force_scale = std::max({model.calcAppliedForces(s).cwiseAbs().maxCoeff(), gravityMomentScale(model, s), 1e-300});
+  r.force_scale = force_scale;
   const double tol = options.force_tolerance * r.force_scale;
-  // Closures must close to 1e-12 of the article's size.
-  double size = 1e-3;
-  for (const auto& p : model.getPoints()) size = std::max(size, model.findPointLocation(s, p).norm());
-  const double tol_closure = 1e-12 * size;
+  const double tol_closure = 1e-12 * size;  // closures must close to 1e-12 of the article's size
 
   // Residuals at (q, lambda): force part over the DOFs, closure part.
   struct Residual {
     Eigen::VectorXd f_all, force, closure;
-    double merit = 0;  // max of both, each relative to its tolerance
+    double merit = 0;
+    bool converged = false;
   };
   auto evaluate = [&](const Eigen::VectorXd& qv, const Eigen::VectorXd& lv) {
     Residual res;
@@ -65,9 +63,12 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
     } else {
       res.closure.resize(0);
     }
+    // Converged when both parts are within tolerance; the line search uses the sum of
+    // squares of both parts, each relative to its physical scale (force scale, size).
     const double fr = n ? res.force.cwiseAbs().maxCoeff() / tol : 0.0;
     const double cr = m ? res.closure.cwiseAbs().maxCoeff() / tol_closure : 0.0;
-    res.merit = std::max(fr, cr);
+    res.converged = std::max(fr, cr) <= 1.0;
+    res.merit = (n ? (res.force / r.force_scale).squaredNorm() : 0.0) + (m ? (res.closure / size).squaredNorm() : 0.0);
     return res;
   };
 
@@ -94,7 +95,7 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
   Residual res = evaluate(q, lambda);
   for (r.iterations = 0; r.iterations < options.max_iterations; ++r.iterations) {
     if (!std::isfinite(res.merit)) return finish(false, "non-finite generalized force", res);
-    if (res.merit <= 1.0 || n == 0) return finish(true, "", res);
+    if (res.converged || n == 0) return finish(true, "", res);
     model.setQ(s, q);
     model.getSystem().realize(s, SimTK::Stage::Position);
     const Eigen::MatrixXd K = calcStiffness(model, s, dofs);
@@ -130,7 +131,7 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
       for (int i = 0; i < n; ++i) q_try[dofs[i]] += alpha * step[i];
       l_try = lambda + alpha * step.tail(m);
       trial = evaluate(q_try, l_try);
-      if (std::isfinite(trial.merit) && trial.merit <= (1.0 - 1e-4 * alpha) * res.merit) {
+      if (std::isfinite(trial.merit) && (trial.merit <= (1.0 - 1e-4 * alpha) * res.merit || trial.converged)) {
         accepted = true;
         break;
       }
@@ -145,13 +146,64 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
     lambda = l_try;
     res = trial;
   }
-  if (res.merit <= 1.0) return finish(true, "", res);
+  if (res.converged) return finish(true, "", res);
   std::ostringstream os;
   os << "did not converge in " << options.max_iterations << " Newton iterations (residual "
      << (n ? res.force.cwiseAbs().maxCoeff() : 0.0) << " N*m, tolerance " << tol << " N*m";
   if (m > 0) os << "; closure error " << res.closure.cwiseAbs().maxCoeff() << " m";
   os << ")";
   return finish(false, os.str(), res);
+}
+
+}  // namespace
+
+EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions& options) {
+  const std::vector<int>& dofs = model.getDofs();
+  SimTK::State s = model.getReferenceState();
+  model.getSystem().realize(s, SimTK::Stage::Position);  // a copied State must be realized again
+  checkClosureRank(model, s, dofs);
+  const Eigen::VectorXd q0 = model.getQ(s);
+  const Eigen::VectorXd l0 = Eigen::VectorXd::Zero(model.getNumClosureRows());
+  const double force_scale =
+      std::max({model.calcAppliedForces(s).cwiseAbs().maxCoeff(), gravityMomentScale(model, s), 1e-300});
+  double size = 1e-3;
+  for (const auto& p : model.getPoints()) size = std::max(size, model.findPointLocation(s, p).norm());
+
+  EquilibriumResult direct = newton(model, s, q0, l0, options, force_scale, size);
+  if (direct.converged || !options.continuation || model.getGravity().norm() == 0.0) return direct;
+
+  // Natural continuation in gravity: ramp g up, each step from the last equilibrium.
+  int iterations = direct.iterations, steps = 0;
+  double done = 0.0, step = 0.25;
+  Eigen::VectorXd q = q0, lambda = l0;
+  EquilibriumResult last;
+  while (done < 1.0) {
+    const double next = std::min(1.0, done + step);
+    model.setGravityScale(s, next);
+    EquilibriumResult r = newton(model, s, q, lambda, options, force_scale, size);
+    iterations += r.iterations;
+    if (r.converged) {
+      done = next;
+      q = r.q;
+      lambda = r.closure_multipliers;
+      last = r;
+      ++steps;
+      step = std::min(0.5, 1.5 * step);
+    } else if ((step *= 0.5) < 1.0 / 1024) {
+      std::ostringstream os;
+      os << direct.failure << "; continuation in gravity stopped at " << std::fixed << std::setprecision(1)
+         << 100 * done << " % of g: the equilibrium path turns back or branches there (the article buckles or snaps, "
+         << "e.g. a closure compresses a slender link beyond its buckling load)";
+      r.failure = os.str();
+      r.iterations = iterations;
+      r.continuation_steps = steps;
+      model.setGravityScale(r.state, 1.0);
+      return r;
+    }
+  }
+  last.iterations = iterations;
+  last.continuation_steps = steps;
+  return last;
 }
 
 }  // namespace mmv

@@ -56,7 +56,20 @@ struct CompareArgs : SceneArgs {
   bool force = false;
 };
 
+struct SweepArgs : SceneArgs {
+  bool json = false;
+  std::vector<std::string> grids;  ///< JOINT:FROM:TO:STEP (deg), one or two.
+  int modes = 6;
+  int component_modes = 4;
+  std::string bc = "clamped-free";
+  std::string tip_mass = "torquer";
+  std::string method = "assumed";
+  std::string out;
+  bool force = false;
+};
+
 int runModesCommand(const ModesArgs& args);
+int runSweepCommand(const SweepArgs& args);
 int runCompareCommand(const CompareArgs& args);
 int runConvergeCommand(const ConvergeArgs& args);
 int runSceneCommand();

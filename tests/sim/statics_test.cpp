@@ -115,10 +115,35 @@ TEST(Statics, NonConvergenceIsReported) {
   const auto model = buildArticleModel(cantileverScene(b, 16, kG));
   EquilibriumOptions opt;
   opt.max_iterations = 1;
+  opt.continuation = false;
   const EquilibriumResult eq = solveEquilibrium(*model, opt);
   EXPECT_FALSE(eq.converged);
   EXPECT_NE(eq.failure.find("did not converge in 1 Newton"), std::string::npos) << eq.failure;
   EXPECT_THROW(runModes(cantileverScene(b, 16, kG), ModesOptions{0, false, opt}), NumericalError);
+  // With continuation in gravity the same budget per step reaches the equilibrium.
+  opt.continuation = true;
+  const EquilibriumResult cont = solveEquilibrium(*model, opt);
+  EXPECT_TRUE(cont.converged) << cont.failure;
+  EXPECT_GT(cont.continuation_steps, 1);
+  opt.max_iterations = 50;
+  const EquilibriumResult direct = solveEquilibrium(*model, opt);
+  ASSERT_TRUE(direct.converged);
+  EXPECT_LT((cont.q - direct.q).cwiseAbs().maxCoeff(), 1e-9);  // the same equilibrium
+}
+
+// The shipped closed tree with joint 2 at 15 deg: the fixture would push the slender
+// S-glass branch far past its Euler load (about 2 N against tens of N). Newton from
+// the unbent shape fails, continuation in gravity stalls part-way, and the failure
+// says so instead of returning a wrong equilibrium.
+TEST(Statics, LimitPointOfAClosedLoopIsNamed) {
+  Scene s = loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-closed.yaml");
+  for (auto& j : s.article.joints)
+    if (j.name == "joint2") j.angle = 15 * M_PI / 180;
+  const auto model = buildArticleModel(s);
+  const EquilibriumResult eq = solveEquilibrium(*model);
+  EXPECT_FALSE(eq.converged);
+  EXPECT_NE(eq.failure.find("continuation in gravity stopped at"), std::string::npos) << eq.failure;
+  EXPECT_THROW(runModes(s), NumericalError);
 }
 
 }  // namespace
