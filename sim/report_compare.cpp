@@ -125,7 +125,7 @@ std::string render(const CompareReport& r, bool md) {
   table(componentTable(r));
   heading("Table 3: system modes at the equilibrium, each with the link that dominates it");
   table(systemTable(r.system));
-  heading("Synthesis from component modes against the full model (Ritz: errors >= 0)");
+  heading("Synthesis from component modes against the full model (Ritz: the k-th synthesized frequency is never below the k-th full one)");
   os << (md ? "" : "  ") << "assumed: " << r.assumed.method << " (" << r.assumed.reduced_dofs << " of " << r.assumed.full_dofs
      << " DOF); CB: " << r.craig_bampton.method << " (" << r.craig_bampton.reduced_dofs << " DOF)\n"
      << (md ? "\n" : "");

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -191,6 +192,95 @@ TEST_F(Cli, ConvergeTable) {
   const nlohmann::json doc = nlohmann::json::parse(j.out);
   EXPECT_EQ(doc["runs"].size(), 4u);
   EXPECT_EQ(doc["modes"].size(), 3u);
+}
+
+bool isPng(const fs::path& p) {
+  const std::string head = slurp(p).substr(0, 8);
+  return head == std::string("\x89PNG\r\n\x1a\n", 8);
+}
+
+TEST_F(Cli, CompareReportsTable2Table3AndSynthesis) {
+  const Result r = run("compare --json --modes 6");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "compare");
+  ASSERT_EQ(j["component_modes"].size(), 4u);
+  // Link 1 with the torquer tip mass at 16 segments: the report's 1.656 Hz within 0.1 %.
+  EXPECT_NEAR(j["component_modes"][0]["modes"][0]["frequency_hz"].get<double>() / 1.656, 1.0, 1e-3);
+  EXPECT_EQ(j["system_modes"].size(), 6u);
+  EXPECT_EQ(j["synthesis"]["assumed_modes"]["modes"].size(), 6u);
+  EXPECT_EQ(j["tip_mass_rules"].size(), 3u);
+  const Result t = run("compare --modes 4");
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_NE(t.out.find("Table 2: component modes"), std::string::npos);
+  EXPECT_NE(t.out.find("Table 3: system modes"), std::string::npos);
+}
+
+TEST_F(Cli, CompareWritesItsFilesOnceAndRefusesToOverwrite) {
+  const fs::path out = dir_ / "cmp";
+  const Result r = run("compare --modes 4 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"compare.md", "compare.json", "component_modes.csv", "system_modes.csv", "synthesis.csv",
+                        "mac_assumed_modes.csv", "mac_craig_bampton.csv"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  EXPECT_TRUE(isPng(out / "mac_assumed_modes.png"));
+  EXPECT_TRUE(isPng(out / "mac_craig_bampton.png"));
+  EXPECT_EQ(slurp(out / "system_modes.csv").rfind("mode,frequency_hz,", 0), 0u);
+  // A user's file of the same name is not replaced without --force, and nothing else is written.
+  std::ofstream(out / "compare.md") << "my notes";
+  fs::remove(out / "synthesis.csv");
+  const Result again = run("compare --modes 4 --out " + out.string());
+  EXPECT_EQ(again.code, 73);
+  EXPECT_EQ(again.out, "");
+  EXPECT_EQ(slurp(out / "compare.md"), "my notes");
+  EXPECT_FALSE(fs::exists(out / "synthesis.csv"));
+  for (const auto& e : fs::directory_iterator(dir_))
+    EXPECT_EQ(e.path().filename().string().find(".mmvlab-staging"), std::string::npos) << "staging left behind";
+  EXPECT_EQ(run("compare --modes 4 --force --out " + out.string()).code, 0);
+  EXPECT_NE(slurp(out / "compare.md"), "my notes");
+}
+
+TEST_F(Cli, CompareBadArguments) {
+  const Result closed = run("compare --topology open,closed");  // the default scene has no closures
+  EXPECT_EQ(closed.code, 65);
+  EXPECT_NE(closed.err.find("has no closures"), std::string::npos) << closed.err;
+  EXPECT_EQ(run("compare --bc clamped-clamped").code, 64);
+  EXPECT_EQ(run("compare --tip-mass everything").code, 64);
+  EXPECT_EQ(run("compare --topology sideways").code, 64);
+}
+
+TEST_F(Cli, CompareOpenAgainstClosed) {
+  const Result r = run("compare " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-closed.yaml").string() +
+                       " --modes 4 --topology open,closed --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["topologies"].size(), 2u);
+  // Pinning a branch tip stiffens the article: the closed tree's first mode is higher.
+  EXPECT_GT(j["topologies"][1]["system_modes"][0]["frequency_hz"].get<double>(),
+            j["topologies"][0]["system_modes"][0]["frequency_hz"].get<double>());
+}
+
+TEST_F(Cli, SweepConfigWritesCsvAndPlots) {
+  const fs::path out = dir_ / "sweep";
+  const Result r = run("sweep-config --grid joint2:-20:20:10 --modes 4 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Per track"), std::string::npos);
+  const std::string csv = slurp(out / "sweep.csv");
+  EXPECT_EQ(csv.rfind("joint2_deg,track,sorted_mode,frequency_hz", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 5 * 4);  // header + 5 angles x 4 tracks
+  EXPECT_TRUE(isPng(out / "frequencies.png"));
+  EXPECT_TRUE(isPng(out / "synthesis_error.png"));
+  const Result two = run("sweep-config --grid joint2:-10:10:10 --grid joint1:20:40:20 --modes 3 --json");
+  ASSERT_EQ(two.code, 0) << two.err;
+  EXPECT_EQ(nlohmann::json::parse(two.out)["points"].size(), 6u);
+}
+
+TEST_F(Cli, SweepConfigBadGrid) {
+  EXPECT_EQ(run("sweep-config --grid joint9:0:10:5").code, 64);
+  EXPECT_EQ(run("sweep-config --grid joint2:0:10").code, 64);
+  EXPECT_EQ(run("sweep-config --grid joint2:10:0:5").code, 64);
+  EXPECT_EQ(run("sweep-config --grid joint2:0:10:0").code, 64);
+  EXPECT_EQ(run("sweep-config").code, 64);
 }
 
 }  // namespace
