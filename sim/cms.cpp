@@ -72,8 +72,10 @@ Eigen::MatrixXd craigBamptonForLink(const Scene& scene, const std::string& link,
   const Eigen::MatrixXd M = calcMass(*model, s, dofs);
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
   for (std::size_t i = 0; i < dofs.size(); ++i) K(i, i) = model->getCoordinates()[dofs[i]].stiffness;
+  // The tip is an interface when a joint or a loop closure is attached there.
   bool tip_joint = false;
   for (const auto& j : scene.article.joints) tip_joint = tip_joint || j.parent == link;
+  for (const auto& c : scene.article.closures) tip_joint = tip_joint || c.point == link + ".tip" || c.to == link + ".tip";
   if (!tip_joint) {  // interface at the root only: the clamped-free modes
     const ModalSolution sol = solveModes(M, K);
     return sol.shapes.leftCols(std::min<Eigen::Index>(k, sol.shapes.cols()));

@@ -16,7 +16,7 @@
 ///    condition and tip-mass rule (sim/components.hpp);
 ///  - Craig-Bampton: per link, the static constraint modes of its tip interface
 ///    (unit tip deflection and unit tip rotation, minimum strain energy) when a joint
-///    sits at its tip, plus its first k fixed-interface modes (root and tip interface
+///    or a loop closure sits at its tip, plus its first k fixed-interface modes (root and tip interface
 ///    clamped), from the link alone without tip masses (the outboard parts are other
 ///    components).
 ///

@@ -14,6 +14,7 @@ namespace mmv::cli {
 Scene loadScene(const SceneArgs& args) {
   Scene scene = args.scene_path.empty() ? loadDefaultScene() : loadSceneFile(args.scene_path);
   if (args.segments > 0) overrideSegments(scene, args.segments);
+  if (args.no_gravity) scene.gravity = {0, 0, 0};
   return scene;
 }
 

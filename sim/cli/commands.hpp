@@ -32,6 +32,7 @@ class UsageError : public std::runtime_error {
 struct SceneArgs {
   std::string scene_path;  ///< empty: the embedded default scene.
   int segments = 0;        ///< > 0: override every flexible link's segment count.
+  bool no_gravity = false; ///< analyse without gravity (as the report's TREETOPS run).
 };
 
 struct ModesArgs : SceneArgs {

@@ -10,6 +10,7 @@ void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
   cmd->add_option("scene", a.scene_path, "Scene file (YAML); default: the embedded MMV article scene");
   cmd->add_option("--segments", a.segments, "Segments per flexible link, overriding the scene")
       ->check(CLI::Range(1, 4096));
+  cmd->add_flag("--no-gravity", a.no_gravity, "Set gravity to zero (the report's TREETOPS run had none)");
 }
 
 }  // namespace
