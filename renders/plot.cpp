@@ -129,6 +129,11 @@ void writeLinePlotPng(const std::string& path, const std::vector<Series>& series
   auto px = [&](double x) { return left + static_cast<int>((x - x0) / (x1 - x0) * pw); };
   auto py = [&](double y) { return top + ph - static_cast<int>((ty(y) - y0) / (y1 - y0) * ph); };
   text(img, title, {left + pw / 2, 30}, 0.6, kBlack, true);
+  auto yTick = [&](const std::string& label, int y) {  // right-aligned against the axis
+    int base = 0;
+    const int w = cv::getTextSize(label, kFont, 0.42, 1, &base).width;
+    text(img, label, {left - 8 - w, y + 5}, 0.42);
+  };
   // Grid and ticks.
   const double sx = tickStep(x1 - x0);
   for (double x = std::ceil(x0 / sx) * sx; x <= x1 + 1e-9 * sx; x += sx) {
@@ -136,18 +141,23 @@ void writeLinePlotPng(const std::string& path, const std::vector<Series>& series
     text(img, fmt(x, "%g"), {px(x), top + ph + 20}, 0.42, kBlack, true);
   }
   if (log_y) {
+    // 1, 2 and 5 times each power of ten (labels for all when the range is short).
+    const bool short_range = y1 - y0 < 3;
     for (int e = static_cast<int>(std::floor(y0)); e <= static_cast<int>(std::ceil(y1)); ++e) {
-      if (e < y0 || e > y1) continue;
-      const int y = top + ph - static_cast<int>((e - y0) / (y1 - y0) * ph);
-      cv::line(img, {left, y}, {left + pw, y}, kGrey);
-      text(img, fmt(std::pow(10.0, e), "%g"), {left - 60, y + 5}, 0.42);
+      for (double m : {1.0, 2.0, 5.0}) {
+        const double v = std::log10(m) + e;
+        if (v < y0 || v > y1) continue;
+        const int y = top + ph - static_cast<int>((v - y0) / (y1 - y0) * ph);
+        cv::line(img, {left, y}, {left + pw, y}, m == 1.0 ? kGrey : cv::Scalar(230, 230, 230));
+        if (m == 1.0 || short_range) yTick(fmt(m * std::pow(10.0, e), "%g"), y);
+      }
     }
   } else {
     const double sy = tickStep(y1 - y0);
     for (double y = std::ceil(y0 / sy) * sy; y <= y1 + 1e-9 * sy; y += sy) {
       const int yy = top + ph - static_cast<int>((y - y0) / (y1 - y0) * ph);
       cv::line(img, {left, yy}, {left + pw, yy}, kGrey);
-      text(img, fmt(y, "%g"), {left - 60, yy + 5}, 0.42);
+      yTick(fmt(y, "%g"), yy);
     }
   }
   cv::rectangle(img, cv::Rect(left, top, pw, ph), kBlack, 1);

@@ -13,7 +13,8 @@ OutputDir::OutputDir(const std::string& dir, bool force) : target_(dir), force_(
   if (fs::exists(target_, ec) && !fs::is_directory(target_, ec))
     throw OutputError(dir + ": exists and is not a directory");
   fs::path parent = fs::absolute(target_, ec).parent_path();
-  if (!fs::is_directory(parent, ec)) throw OutputError(dir + ": parent directory " + parent.string() + " does not exist");
+  fs::create_directories(parent, ec);  // like mkdir -p; empty directories only
+  if (!fs::is_directory(parent, ec)) throw OutputError(dir + ": cannot create its parent directory " + parent.string());
   staging_ = parent / (".mmvlab-staging-" + std::to_string(::getpid()) + "-" + target_.filename().string());
   fs::remove_all(staging_, ec);
   if (!fs::create_directory(staging_, ec)) throw OutputError(dir + ": cannot create files next to it: " + ec.message());
