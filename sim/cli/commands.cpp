@@ -18,6 +18,14 @@ Scene loadScene(const SceneArgs& args) {
   return scene;
 }
 
+void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {
+  if (!parseComponentBC(bc, o.bc))
+    throw UsageError("--bc: unknown boundary condition '" + bc +
+                     "' (known: clamped-free, pinned-free, free-free, clamped-pinned, pinned-pinned)");
+  if (!parseTipMassRule(tip_mass, o.rule))
+    throw UsageError("--tip-mass: unknown rule '" + tip_mass + "' (known: none, torquer, outboard)");
+}
+
 int guarded(const std::function<int()>& body) {
   try {
     return body();

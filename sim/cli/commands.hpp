@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/components.hpp"
 #include "sim/scene.hpp"
 
 namespace mmv::cli {
@@ -77,6 +78,8 @@ int runSceneCommand();
 
 // Shared by the command implementations.
 Scene loadScene(const SceneArgs& args);
+/// --bc and --tip-mass into `o`; throws UsageError naming the known values.
+void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o);
 /// Runs `body`, turning the error classes into messages on stderr and exit codes.
 int guarded(const std::function<int()>& body);
 

@@ -34,11 +34,7 @@ int runCompareCommand(const CompareArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
     CompareOptions o;
-    if (!parseComponentBC(args.bc, o.component.bc))
-      throw UsageError("--bc: unknown boundary condition '" + args.bc +
-                       "' (known: clamped-free, pinned-free, free-free, clamped-pinned, pinned-pinned)");
-    if (!parseTipMassRule(args.tip_mass, o.component.rule))
-      throw UsageError("--tip-mass: unknown rule '" + args.tip_mass + "' (known: none, torquer, outboard)");
+    parseComponentArgs(args.bc, args.tip_mass, o.component);
     o.modes_per_link = args.component_modes;
     o.system_modes = args.modes;
     for (const auto& t : args.topologies) {

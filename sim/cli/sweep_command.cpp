@@ -211,10 +211,7 @@ int runSweepCommand(const SweepArgs& args) {
     for (const auto& g : args.grids) o.axes.push_back(parseGrid(g, scene));
     if (o.axes.size() == 2 && o.axes[0].joint == o.axes[1].joint) throw UsageError("--grid: the two grids name the same joint");
     o.modes = args.modes;
-    if (!parseComponentBC(args.bc, o.synthesis.component.bc))
-      throw UsageError("--bc: unknown boundary condition '" + args.bc + "'");
-    if (!parseTipMassRule(args.tip_mass, o.synthesis.component.rule))
-      throw UsageError("--tip-mass: unknown rule '" + args.tip_mass + "' (known: none, torquer, outboard)");
+    parseComponentArgs(args.bc, args.tip_mass, o.synthesis.component);
     if (args.method == "assumed") o.synthesis.method = CmsMethod::AssumedModes;
     else if (args.method == "craig-bampton") o.synthesis.method = CmsMethod::CraigBampton;
     else throw UsageError("--method: unknown method '" + args.method + "' (known: assumed, craig-bampton)");
