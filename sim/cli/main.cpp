@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   cp->add_flag("--json", cmp.json, "Print JSON instead of tables");
   cp->add_option("--bc", cmp.bc, "Component boundary condition: clamped-free, pinned-free, free-free, clamped-pinned, pinned-pinned")
       ->capture_default_str();
-  cp->add_option("--tip-mass", cmp.tip_mass, "Component tip mass: torquer (the report's TREETOPS choice), outboard, none")
+  cp->add_option("--tip-mass", cmp.tip_mass, "Component tip mass: torquer (the report's TREETOPS choice), outboard, none, or MASS_KG[,INERTIA_KG_M2]")
       ->capture_default_str();
   cp->add_option("--component-modes", cmp.component_modes, "Modes per link in the synthesis")
       ->capture_default_str()

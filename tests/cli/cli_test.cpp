@@ -210,6 +210,13 @@ TEST_F(Cli, CompareReportsTable2Table3AndSynthesis) {
   EXPECT_EQ(j["system_modes"].size(), 6u);
   EXPECT_EQ(j["synthesis"]["assumed_modes"]["modes"].size(), 6u);
   EXPECT_EQ(j["tip_mass_rules"].size(), 3u);
+  // An explicit tip mass is used as given.
+  const Result e = run("compare --json --modes 2 --tip-mass 4.67,0.01");
+  ASSERT_EQ(e.code, 0) << e.err;
+  const nlohmann::json ej = nlohmann::json::parse(e.out);
+  EXPECT_EQ(ej["component_tip_mass_rule"], "explicit");
+  EXPECT_DOUBLE_EQ(ej["component_modes"][0]["tip_mass_kg"].get<double>(), 4.67);
+  EXPECT_DOUBLE_EQ(ej["component_modes"][0]["tip_rotary_inertia_kg_m2"].get<double>(), 0.01);
   const Result t = run("compare --modes 4");
   ASSERT_EQ(t.code, 0) << t.err;
   EXPECT_NE(t.out.find("Table 2: component modes"), std::string::npos);
@@ -246,6 +253,8 @@ TEST_F(Cli, CompareBadArguments) {
   EXPECT_NE(closed.err.find("has no closures"), std::string::npos) << closed.err;
   EXPECT_EQ(run("compare --bc clamped-clamped").code, 64);
   EXPECT_EQ(run("compare --tip-mass everything").code, 64);
+  EXPECT_EQ(run("compare --tip-mass -1").code, 64);
+  EXPECT_EQ(run("compare --tip-mass 2,x").code, 64);
   EXPECT_EQ(run("compare --topology sideways").code, 64);
 }
 
