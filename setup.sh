@@ -12,6 +12,7 @@ build_pkgs=(
   libopencv-dev libosmesa6-dev libgl-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev
   libgtest-dev googletest libbenchmark-dev
+  octave octave-control          # the test suite loads our .mat files into Octave's ss()
 )
 want=("${build_pkgs[@]}")
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
@@ -43,6 +44,7 @@ void save(const std::string& path, const cv::Mat& img) {
 }
 
 std::string fmt(double v, const char* f = "%.3g") {
+  if (std::abs(v) < 1e-12) v = 0.0;  // no "-0" tick labels
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
@@ -105,17 +107,23 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
   save(path, img);
 }
 
-void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
-                      const std::string& x_label, const std::string& y_label, bool log_y) {
-  const int width = 900, height = 600, left = 90, right = 200, top = 50, bottom = 70;
-  cv::Mat img(height, width, CV_8UC3, kWhite);
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+namespace {
+
+/// One x-y panel inside `img` (plot area `area`, labels outside it).
+void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& series, const std::string& title,
+               const std::string& x_label, const std::string& y_label, bool log_x, bool log_y, bool legend) {
+  const int left = area.x, top = area.y, pw = area.width, ph = area.height;
+  auto tx = [&](double x) { return log_x ? std::log10(x) : x; };
   auto ty = [&](double y) { return log_y ? std::log10(y) : y; };
+  auto usable = [&](double x, double y) {
+    return std::isfinite(x) && std::isfinite(y) && (!log_x || x > 0) && (!log_y || y > 0);
+  };
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (const auto& s : series)
     for (std::size_t i = 0; i < s.x.size(); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || (log_y && s.y[i] <= 0)) continue;
-      x0 = std::min(x0, s.x[i]);
-      x1 = std::max(x1, s.x[i]);
+      if (!usable(s.x[i], s.y[i])) continue;
+      x0 = std::min(x0, tx(s.x[i]));
+      x1 = std::max(x1, tx(s.x[i]));
       y0 = std::min(y0, ty(s.y[i]));
       y1 = std::max(y1, ty(s.y[i]));
     }
@@ -125,33 +133,43 @@ void writeLinePlotPng(const std::string& path, const std::vector<Series>& series
   const double pad = 0.05 * (y1 - y0);
   y0 -= pad;
   y1 += pad;
-  const int pw = width - left - right, ph = height - top - bottom;
-  auto px = [&](double x) { return left + static_cast<int>((x - x0) / (x1 - x0) * pw); };
+  auto px = [&](double x) { return left + static_cast<int>((tx(x) - x0) / (x1 - x0) * pw); };
   auto py = [&](double y) { return top + ph - static_cast<int>((ty(y) - y0) / (y1 - y0) * ph); };
-  text(img, title, {left + pw / 2, 30}, 0.6, kBlack, true);
+  text(img, title, {left + pw / 2, top - 15}, 0.6, kBlack, true);
   auto yTick = [&](const std::string& label, int y) {  // right-aligned against the axis
     int base = 0;
     const int w = cv::getTextSize(label, kFont, 0.42, 1, &base).width;
     text(img, label, {left - 8 - w, y + 5}, 0.42);
   };
-  // Grid and ticks.
-  const double sx = tickStep(x1 - x0);
-  for (double x = std::ceil(x0 / sx) * sx; x <= x1 + 1e-9 * sx; x += sx) {
-    cv::line(img, {px(x), top}, {px(x), top + ph}, kGrey);
-    text(img, fmt(x, "%g"), {px(x), top + ph + 20}, 0.42, kBlack, true);
-  }
-  if (log_y) {
-    // 1, 2 and 5 times each power of ten (labels for all when the range is short).
-    const bool short_range = y1 - y0 < 3;
-    for (int e = static_cast<int>(std::floor(y0)); e <= static_cast<int>(std::ceil(y1)); ++e) {
+  // Ticks: decades with 2 and 5 between (log axes), "nice" steps (linear axes).
+  auto logTicks = [&](double a0, double a1, const std::function<void(double, bool)>& f) {
+    const bool short_range = a1 - a0 < 3;
+    for (int e = static_cast<int>(std::floor(a0)); e <= static_cast<int>(std::ceil(a1)); ++e)
       for (double m : {1.0, 2.0, 5.0}) {
         const double v = std::log10(m) + e;
-        if (v < y0 || v > y1) continue;
-        const int y = top + ph - static_cast<int>((v - y0) / (y1 - y0) * ph);
-        cv::line(img, {left, y}, {left + pw, y}, m == 1.0 ? kGrey : cv::Scalar(230, 230, 230));
-        if (m == 1.0 || short_range) yTick(fmt(m * std::pow(10.0, e), "%g"), y);
+        if (v >= a0 && v <= a1) f(v, m == 1.0 || short_range);
       }
+  };
+  if (log_x) {
+    logTicks(x0, x1, [&](double v, bool label) {
+      const int x = left + static_cast<int>((v - x0) / (x1 - x0) * pw);
+      cv::line(img, {x, top}, {x, top + ph}, label ? kGrey : cv::Scalar(230, 230, 230));
+      if (label) text(img, fmt(std::pow(10.0, v), "%g"), {x, top + ph + 20}, 0.42, kBlack, true);
+    });
+  } else {
+    const double sx = tickStep(x1 - x0);
+    for (double x = std::ceil(x0 / sx) * sx; x <= x1 + 1e-9 * sx; x += sx) {
+      const int xx = left + static_cast<int>((x - x0) / (x1 - x0) * pw);
+      cv::line(img, {xx, top}, {xx, top + ph}, kGrey);
+      text(img, fmt(x, "%g"), {xx, top + ph + 20}, 0.42, kBlack, true);
     }
+  }
+  if (log_y) {
+    logTicks(y0, y1, [&](double v, bool label) {
+      const int y = top + ph - static_cast<int>((v - y0) / (y1 - y0) * ph);
+      cv::line(img, {left, y}, {left + pw, y}, label ? kGrey : cv::Scalar(230, 230, 230));
+      if (label) yTick(fmt(std::pow(10.0, v), "%g"), y);
+    });
   } else {
     const double sy = tickStep(y1 - y0);
     for (double y = std::ceil(y0 / sy) * sy; y <= y1 + 1e-9 * sy; y += sy) {
@@ -160,8 +178,8 @@ void writeLinePlotPng(const std::string& path, const std::vector<Series>& series
       yTick(fmt(y, "%g"), yy);
     }
   }
-  cv::rectangle(img, cv::Rect(left, top, pw, ph), kBlack, 1);
-  text(img, x_label, {left + pw / 2, height - 25}, 0.5, kBlack, true);
+  cv::rectangle(img, area, kBlack, 1);
+  if (!x_label.empty()) text(img, x_label, {left + pw / 2, top + ph + 45}, 0.5, kBlack, true);
   {
     cv::Mat strip(30, ph, CV_8UC3, kWhite);
     text(strip, y_label, {ph / 2, 20}, 0.5, kBlack, true);
@@ -169,26 +187,45 @@ void writeLinePlotPng(const std::string& path, const std::vector<Series>& series
     cv::rotate(strip, rotated, cv::ROTATE_90_COUNTERCLOCKWISE);
     rotated.copyTo(img(cv::Rect(5, top, rotated.cols, rotated.rows)));
   }
-  // Series, coloured around the palette; legend on the right.
   for (std::size_t k = 0; k < series.size(); ++k) {
     const auto& s = series[k];
     const cv::Scalar colour = colourFor(series.size() > 1 ? 0.85 * double(k) / (series.size() - 1) : 0.3);
     for (std::size_t i = 1; i < s.x.size(); ++i) {
-      const bool ok = std::isfinite(s.x[i - 1]) && std::isfinite(s.y[i - 1]) && std::isfinite(s.x[i]) &&
-                      std::isfinite(s.y[i]) && (!log_y || (s.y[i - 1] > 0 && s.y[i] > 0));
-      if (!ok) continue;
+      if (!usable(s.x[i - 1], s.y[i - 1]) || !usable(s.x[i], s.y[i])) continue;
       if (s.dashed && i % 2 == 0) continue;
       cv::line(img, {px(s.x[i - 1]), py(s.y[i - 1])}, {px(s.x[i]), py(s.y[i])}, colour, 2, cv::LINE_AA);
     }
-    for (std::size_t i = 0; i < s.x.size(); ++i)
-      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!log_y || s.y[i] > 0))
-        cv::circle(img, {px(s.x[i]), py(s.y[i])}, 3, colour, cv::FILLED, cv::LINE_AA);
+    if (s.x.size() < 80)
+      for (std::size_t i = 0; i < s.x.size(); ++i)
+        if (usable(s.x[i], s.y[i])) cv::circle(img, {px(s.x[i]), py(s.y[i])}, 3, colour, cv::FILLED, cv::LINE_AA);
     const int ly = top + 10 + 22 * static_cast<int>(k);
-    if (ly < top + ph) {
+    if (legend && ly < top + ph) {
       cv::line(img, {left + pw + 15, ly - 4}, {left + pw + 40, ly - 4}, colour, 2);
       text(img, s.label, {left + pw + 46, ly}, 0.42);
     }
   }
+}
+
+}  // namespace
+
+void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
+                      const std::string& x_label, const std::string& y_label, bool log_y) {
+  cv::Mat img(600, 900, CV_8UC3, kWhite);
+  drawPanel(img, cv::Rect(90, 50, 900 - 90 - 200, 600 - 50 - 70), series, title, x_label, y_label, false, log_y, true);
+  save(path, img);
+}
+
+void writeBodePng(const std::string& path, const std::vector<BodeTrace>& traces, const std::string& title,
+                  const std::string& x_label) {
+  std::vector<Series> mag, phase;
+  for (const auto& t : traces) {
+    mag.push_back({t.label, t.frequency, t.magnitude_db, t.dashed});
+    phase.push_back({t.label, t.frequency, t.phase_deg, t.dashed});
+  }
+  const int width = 1000, height = 800, left = 90, right = 260;
+  cv::Mat img(height, width, CV_8UC3, kWhite);
+  drawPanel(img, cv::Rect(left, 50, width - left - right, 400), mag, title, "", "magnitude (dB)", true, false, true);
+  drawPanel(img, cv::Rect(left, 490, width - left - right, 230), phase, "", x_label, "phase (deg)", true, false, false);
   save(path, img);
 }
 

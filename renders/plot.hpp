@@ -26,4 +26,17 @@ struct Series {
 void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
                       const std::string& x_label, const std::string& y_label, bool log_y = false);
 
+struct BodeTrace {
+  std::string label;
+  std::vector<double> frequency;     ///< Hz (or rad/s, see x_label), > 0.
+  std::vector<double> magnitude_db;
+  std::vector<double> phase_deg;
+  bool dashed = false;
+};
+
+/// Bode plot: magnitude (dB) above phase (deg), both over log frequency, with a
+/// legend.
+void writeBodePng(const std::string& path, const std::vector<BodeTrace>& traces, const std::string& title,
+                  const std::string& x_label);
+
 }  // namespace mmv::render

@@ -70,7 +70,22 @@ struct SweepArgs : SceneArgs {
   bool force = false;
 };
 
+struct LinearArgs : SceneArgs {
+  std::vector<std::string> inputs, outputs;  ///< see docs/outputs.md; empty: defaults.
+  double f_min = 0.01, f_max = 100;          ///< Hz.
+  int points = 400;
+  int rom_modes = 8;
+  std::string band;  ///< "F1:F2" (Hz): keep the modes in the band instead.
+  bool no_residualize = false;
+  double damping_ratio = 0.01;
+  bool rad = false;
+  std::string out;
+  bool force = false;
+};
+
 int runModesCommand(const ModesArgs& args);
+int runFrfCommand(const LinearArgs& args);
+int runRomCommand(const LinearArgs& args);
 int runSweepCommand(const SweepArgs& args);
 int runCompareCommand(const CompareArgs& args);
 int runConvergeCommand(const ConvergeArgs& args);

@@ -69,6 +69,28 @@ int main(int argc, char** argv) {
   sp->add_option("--out", sw.out, "Also write sweep.csv, sweep.json and PNG plots into this directory");
   sp->add_flag("--force", sw.force, "Replace files of the same names in --out");
 
+  LinearArgs lin;
+  auto addLinear = [&](CLI::App* cmd) {
+    addSceneOptions(cmd, lin);
+    cmd->add_option("--input", lin.inputs, "table_x, table_y, torque:JOINT, force:POINT:x|y (default: table_x, table_y)");
+    cmd->add_option("--output", lin.outputs,
+                    "POINT:x|y[:disp|vel|acc|acc_abs] (default: every link tip, absolute acceleration)");
+    cmd->add_option("--from", lin.f_min, "Lowest frequency, Hz")->capture_default_str();
+    cmd->add_option("--to", lin.f_max, "Highest frequency, Hz")->capture_default_str();
+    cmd->add_option("--points", lin.points, "Log-spaced frequencies")->capture_default_str()->check(CLI::Range(2, 100000));
+    cmd->add_option("--rom-modes", lin.rom_modes, "Modes kept in the reduced model")->capture_default_str()->check(CLI::Range(1, 10000));
+    cmd->add_option("--band", lin.band, "Keep the modes in F_MIN_HZ:F_MAX_HZ instead of --rom-modes");
+    cmd->add_flag("--no-residualize", lin.no_residualize, "Truncate without static residualization");
+    cmd->add_option("--damping", lin.damping_ratio, "Modal damping ratio of every mode")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--out", lin.out, "Output directory");
+    cmd->add_flag("--force", lin.force, "Replace files of the same names in --out");
+  };
+  CLI::App* fr = app.add_subcommand("frf", "Frequency responses and transmissibilities, full and reduced; CSV and Bode plots");
+  addLinear(fr);
+  fr->add_flag("--rad", lin.rad, "Plot against rad/s instead of Hz");
+  CLI::App* ro = app.add_subcommand("rom", "Reduced-order state-space model for control design, as .mat (Octave/MATLAB ss)");
+  addLinear(ro);
+
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
   try {
@@ -81,5 +103,7 @@ int main(int argc, char** argv) {
   if (c->parsed()) return runConvergeCommand(conv);
   if (cp->parsed()) return runCompareCommand(cmp);
   if (sp->parsed()) return runSweepCommand(sw);
+  if (fr->parsed()) return runFrfCommand(lin);
+  if (ro->parsed()) return runRomCommand(lin);
   return runSceneCommand();
 }
