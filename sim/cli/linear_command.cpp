@@ -1,5 +1,7 @@
 // mmvlab frf and mmvlab rom: linear models for control design (sim/state_space.hpp).
 #include <cmath>
+#include <ctime>
+#include <map>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -11,6 +13,7 @@
 #include "sim/report.hpp"
 #include "sim/state_space.hpp"
 #include "sim/table.hpp"
+#include "sim/uff.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -114,6 +117,89 @@ std::string summary(const LinearModel& lm, const ReducedModel& red, const ModelE
   return os.str();
 }
 
+/// The UFF file for a linear model: nodes at the equilibrium's named points, a trace
+/// line per link, the first mode shapes, and every FRF (or transmissibility) pair.
+std::string uffFor(const LinearModel& lm, const Scene& scene, const std::vector<double>& f,
+                   const std::vector<Eigen::MatrixXcd>& h) {
+  const Model& model = *lm.solved.model;
+  uff::File file;
+  file.model_name = scene.name;
+  file.description = "mmvlab frf: " + scene.source;
+  {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    char d[16], t[16];
+    std::strftime(d, sizeof d, "%d-%b-%y", &tm);
+    std::strftime(t, sizeof t, "%H:%M:%S", &tm);
+    file.date = d;
+    for (char& c : file.date) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    file.time = t;
+  }
+  std::map<std::string, int> label;
+  SimTK::State st = lm.solved.equilibrium.state;
+  model.getSystem().realize(st, SimTK::Stage::Position);
+  for (const auto& p : model.getPoints()) {
+    const SimTK::Vec3 x = model.findPointLocation(st, p);
+    const int id = static_cast<int>(file.nodes.size()) + 1;
+    label[p.name] = id;
+    file.nodes.push_back({id, {x[0], x[1], x[2]}});
+  }
+  int trace = 1;
+  for (const auto& l : scene.article.links) {
+    uff::TraceLine t{trace++, l.name, {}};
+    t.nodes.push_back(label[l.name + ".root"]);
+    for (int k = 1; !l.rigid && k <= l.segments; ++k) t.nodes.push_back(label[l.name + ".h" + std::to_string(k)]);
+    t.nodes.push_back(label[l.name + ".tip"]);
+    file.trace_lines.push_back(t);
+  }
+  const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
+  const ModalSolution& modes = lm.solved.modes;
+  for (int k = 0; k < std::min<int>(12, static_cast<int>(modes.omega2.size())); ++k) {
+    uff::ModeShape m;
+    m.mode = k + 1;
+    m.frequency_hz = modes.frequencyHz(k);
+    m.modal_mass = 1.0;
+    const Eigen::VectorXd u = P * modes.shapes.col(k);
+    for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
+      m.nodes.push_back(static_cast<int>(p) + 1);
+      m.translations.push_back({u[2 * p], u[2 * p + 1], 0.0});
+    }
+    file.modes.push_back(m);
+  }
+  const StateSpace& s = lm.full;
+  const int spec_out[] = {8, 11, 12}, spec_in[] = {12, 0, 13};  // displacement, velocity, acceleration; force
+  for (Eigen::Index o = 0; o < s.C.rows(); ++o)
+    for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
+      const OutputSpec& out = lm.outputs[o];
+      const InputSpec& in = lm.inputs[i];
+      uff::Function fn;
+      const bool transmissibility = in.kind == InputKind::BaseAcceleration && out.kind == OutputKind::Acceleration && out.absolute;
+      fn.function_type = transmissibility ? 5 : 4;
+      fn.id1 = s.output_names[o] + " / " + s.input_names[i];
+      fn.id2 = scene.name;
+      fn.response_node = label[out.point];
+      fn.response_direction = out.axis + 1;
+      fn.reference_node = in.kind == InputKind::PointForce ? label[in.target] : in.kind == InputKind::JointTorque ? label[in.target] : 0;
+      fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis + 1;
+      fn.ordinate_type = spec_out[static_cast<int>(out.kind)];
+      fn.ordinate_length_exp = 1;
+      fn.ordinate_label = s.output_names[o];
+      fn.ordinate_units = s.output_units[o];
+      fn.denominator_type = spec_in[static_cast<int>(in.kind)];
+      fn.denominator_length_exp = in.kind == InputKind::BaseAcceleration ? 1 : in.kind == InputKind::JointTorque ? 1 : 0;
+      fn.denominator_force_exp = in.kind == InputKind::BaseAcceleration ? 0 : 1;
+      fn.denominator_label = s.input_names[i];
+      fn.denominator_units = s.input_units[i];
+      for (std::size_t k = 0; k < f.size(); ++k) {
+        fn.frequency_hz.push_back(f[k]);
+        fn.values.push_back(h[k](o, i));
+      }
+      file.functions.push_back(fn);
+    }
+  return uff::write(file);
+}
+
 }  // namespace
 
 int runFrfCommand(const LinearArgs& args) {
@@ -166,6 +252,7 @@ int runFrfCommand(const LinearArgs& args) {
             throw OutputError(e.what());
           }
         }
+      std::ofstream(out->stage("frf.uff"), std::ios::binary) << uffFor(lm, scene, f, hf);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
     std::cout << summary(lm, red, err, f) << std::flush;

@@ -292,4 +292,49 @@ TEST_F(Cli, SweepConfigBadGrid) {
   EXPECT_EQ(run("sweep-config").code, 64);
 }
 
+TEST_F(Cli, FrfWritesCsvBodeAndUff) {
+  const fs::path out = dir_ / "frf";
+  const Result r = run("frf --segments 4 --input table_x --output link3a.tip:x --points 50 --rom-modes 6 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("statically residualized"), std::string::npos);
+  const std::string csv = slurp(out / "frf_link3a.tip_x__table_x.csv");
+  EXPECT_EQ(csv.rfind("frequency_hz,magnitude_db,phase_deg,", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 51);
+  EXPECT_TRUE(isPng(out / "bode_link3a.tip_x__table_x.png"));
+  // The UFF file holds the same transmissibility (type 5) as the CSV.
+  const std::string uff = slurp(out / "frf.uff");
+  EXPECT_NE(uff.find("    -1\n    58"), std::string::npos);
+  EXPECT_NE(uff.find("    -1\n    55"), std::string::npos);
+  const auto rec6 = uff.find("\n    5         1");
+  EXPECT_NE(rec6, std::string::npos) << "58 record 6 with function type 5 (transmissibility)";
+  // Low-frequency transmissibility is 1 (0 dB): the first CSV row.
+  std::istringstream rows(csv);
+  std::string header, first;
+  std::getline(rows, header);
+  std::getline(rows, first);
+  EXPECT_NEAR(std::stod(first.substr(first.find(',') + 1)), 0.0, 0.01);
+}
+
+TEST_F(Cli, RomWritesMatAndJson) {
+  const fs::path out = dir_ / "rom";
+  const Result r = run("rom --segments 4 --rom-modes 4 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::file_size(out / "rom.mat") > 100);
+  EXPECT_TRUE(fs::file_size(out / "full.mat") > 100);
+  const nlohmann::json j = nlohmann::json::parse(slurp(out / "rom.json"));
+  EXPECT_EQ(j["reduced_states"], 8);
+  EXPECT_EQ(j["full_states"], 32);
+  EXPECT_TRUE(j["residualized"].get<bool>());
+  EXPECT_EQ(run("rom --segments 4").code, 64);  // --out is required
+}
+
+TEST_F(Cli, LinearModelBadSpecs) {
+  EXPECT_EQ(run("frf --input torque:joint2").code, 65);  // joint2 is locked: no DOF for a torque
+  EXPECT_EQ(run("frf --input shaker").code, 64);
+  EXPECT_EQ(run("frf --output link1.tip:z").code, 64);
+  EXPECT_EQ(run("frf --output link9.tip:x").code, 65);
+  EXPECT_EQ(run("frf --from 10 --to 1").code, 64);
+  EXPECT_EQ(run("frf --band 5:1").code, 64);
+}
+
 }  // namespace
