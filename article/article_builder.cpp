@@ -47,6 +47,28 @@ class Builder {
     const BaseSpec& base = a_.base;
     const SimTK::Vec3 p_base(base.position[0], base.position[1], base.position[2]);
     Frame ground{matter.Ground().getMobilizedBodyIndex(), rotZ(base.direction, p_base), true};
+    if (base.type == BaseType::Table) {
+      // The table slides along world x; the article's base joints sit on it.
+      const int part = model_.addPart("table", Part::Kind::Table, "");
+      SimTK::MobilizedBody::Slider table(matter.updGround(), SimTK::Transform(p_base),
+                                         SimTK::Body::Rigid(SimTK::MassProperties(base.table_mass, SimTK::Vec3(0),
+                                                                                  SimTK::Inertia(base.table_mass))),
+                                         SimTK::Transform());
+      Coordinate c;
+      c.name = "table.x";
+      c.kind = CoordinateKind::Joint;
+      c.motion = CoordinateMotion::Translation;
+      c.part = "table";
+      c.mobod = table.getMobilizedBodyIndex();
+      c.held = true;  // at rest in statics and modes; driven in time runs
+      model_.addCoordinate(c);
+      model_.addBody(table.getMobilizedBodyIndex(), part, true);
+      if (base.motion)
+        SimTK::Motion::Sinusoid(table, SimTK::Motion::Position, base.motion->amplitude,
+                                2 * M_PI * base.motion->frequency_hz, 0.0);
+      // Held in statics and modes, so what is welded to it counts as fixed there.
+      ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
+    }
     // Breadth-first from the base so that every parent exists before its children.
     std::deque<std::pair<const JointSpec*, Frame>> todo;
     for (const auto& j : a_.joints)
@@ -125,6 +147,8 @@ class Builder {
           coord.held = j.hold == JointHold::Locked;
           coord.stiffness = j.hold == JointHold::Servo ? j.servo_stiffness : 0.0;
           model_.addCoordinate(coord);
+          // A locked torquer holds its angle in the dynamics too (zero prescribed speed).
+          if (coord.held) SimTK::Motion::Steady(pin, 0.0);
           rotor = ix;
           rotor_mount = l.mount_angle;
         } else if (k == 0) {
@@ -141,6 +165,8 @@ class Builder {
           coord.part = l.name;
           coord.mobod = ix;
           coord.stiffness = d.hinge_stiffness[k - 1];
+          if (scene_.damping && scene_.damping->kind == DampingSpec::Kind::HingeViscous)
+            coord.damping = scene_.damping->hinge_beta * coord.stiffness;
           model_.addCoordinate(coord);
           model_.addPoint({coord.name, ix, SimTK::Vec3(0), false});
         }

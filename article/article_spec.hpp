@@ -77,13 +77,23 @@ struct LoadSpec {
 };
 
 /// BaseType::Floating (planar: rotation and both translations free) is not offered in
-/// scene files; component-mode analyses use it for free-free links.
-enum class BaseType { Fixed, Floating };
+/// scene files; component-mode analyses use it for free-free links. BaseType::Table:
+/// the base sits on the base excitation table, a body sliding along world x whose
+/// motion is prescribed (held at rest in statics and modes).
+enum class BaseType { Fixed, Floating, Table };
+
+/// A sine dwell of the table along world x: x(t) = amplitude sin(2 pi f t).
+struct TableMotion {
+  double amplitude = 0;     ///< m.
+  double frequency_hz = 0;  ///< Hz, > 0.
+};
 
 struct BaseSpec {
   BaseType type = BaseType::Fixed;
   std::array<double, 3> position{0, 0, 0};  ///< m, world frame.
   double direction = 0;  ///< rad, world direction of a base joint's zero angle (from +x, ccw).
+  double table_mass = 100;  ///< kg, the table's moving mass (BaseType::Table).
+  std::optional<TableMotion> motion;  ///< BaseType::Table: the program; none = at rest.
 };
 
 struct ArticleSpec {

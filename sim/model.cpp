@@ -30,6 +30,10 @@ void Model::addCoordinate(const Coordinate& c) {
     SimTK::Force::MobilityLinearSpring(forces_, matter_.getMobilizedBody(c.mobod),
                                        SimTK::MobilizerQIndex(c.mobilizer_q), c.stiffness, c.reference);
   }
+  if (c.damping > 0) {
+    SimTK::Force::MobilityLinearDamper(forces_, matter_.getMobilizedBody(c.mobod),
+                                       SimTK::MobilizerUIndex(c.mobilizer_q), c.damping);
+  }
 }
 
 void Model::addPointLoad(const PointLoad& load) {

@@ -40,12 +40,13 @@ struct Coordinate {
   double reference = 0;  ///< rad: commanded joint angle, or 0 for an unbent hinge.
   bool held = false;     ///< locked by its torquer: not a degree of freedom.
   double stiffness = 0;  ///< N*m/rad of the linear spring on this coordinate (0: none).
+  double damping = 0;    ///< N*m*s/rad of a viscous damper on it (0: none); no static effect.
 };
 
-/// A part: a link (all its pieces), a torquer, or a tip mass.
+/// A part: a link (all its pieces), a torquer, a tip mass, or the excitation table.
 struct Part {
   std::string name;
-  enum class Kind { Link, Torquer, TipMass } kind = Kind::Link;
+  enum class Kind { Link, Torquer, TipMass, Table } kind = Kind::Link;
   /// The link that carries this part: itself for a link, the link a tip mass is on,
   /// the parent link whose tip holds a torquer; empty for a torquer on the base.
   std::string carrier;
@@ -101,7 +102,8 @@ class Model {
   SimTK::GeneralForceSubsystem& updForces() { return forces_; }
   int addPart(const std::string& name, Part::Kind kind, const std::string& carrier);
   void addBody(SimTK::MobilizedBodyIndex mobod, int part, bool grounded);
-  /// Registers a 1-DOF pin as a coordinate; adds a linear spring if stiffness > 0.
+  /// Registers a coordinate; adds a linear spring if stiffness > 0 and a viscous
+  /// damper if damping > 0.
   void addCoordinate(const Coordinate& c);
   void addPoint(const NamedPoint& p);
   /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.

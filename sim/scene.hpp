@@ -3,6 +3,7 @@
 /// radians), read from YAML (docs/scene-format.md). No Simbody here.
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -10,11 +11,24 @@
 
 namespace mmv {
 
+/// Damping for linear models and time runs.
+struct DampingSpec {
+  enum class Kind {
+    Modal,         ///< every mode gets `modal_ratio` (linear models only).
+    Rayleigh,      ///< C = alpha M + beta K (linear models only).
+    HingeViscous,  ///< a viscous damper c = hinge_beta * k on every bending hinge (both).
+  } kind = Kind::Modal;
+  double modal_ratio = 0.01;
+  double alpha = 0, beta = 0;  ///< 1/s, s.
+  double hinge_beta = 0;       ///< s.
+};
+
 struct Scene {
   std::string name;
   std::string source;  ///< file the scene came from, or "<default scene>".
   std::array<double, 3> gravity{0, -9.80665, 0};  ///< m/s^2 in the world frame, z = 0.
   ArticleSpec article;
+  std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
 };
 
 /// Bad scene content. what() is one line: "file:line:col: what is wrong (got X)".

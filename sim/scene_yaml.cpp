@@ -216,7 +216,7 @@ class SceneParser {
     if (!root.IsDefined() || root.IsNull())
       r_.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
-                                     "links", "closures", "loads"});
+                                     "links", "closures", "loads", "damping"});
     Scene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -236,6 +236,7 @@ class SceneParser {
     checkTree(a);
     if (top.count("closures")) readClosures(top.at("closures"), a);
     if (top.count("loads")) readLoads(top.at("loads"), a);
+    if (top.count("damping")) scene.damping = readDamping(top.at("damping"));
     return scene;
   }
 
@@ -269,11 +270,46 @@ class SceneParser {
     return keys;
   }
 
+  DampingSpec readDamping(const YAML::Node& n) {
+    auto m = r_.mapping(n, "damping", {"modal_ratio", "rayleigh", "hinge_beta"});
+    if (m.size() != 1) r_.fail(n.Mark(), "damping must give exactly one of modal_ratio, rayleigh, hinge_beta");
+    DampingSpec d;
+    if (m.count("modal_ratio")) {
+      d.kind = DampingSpec::Kind::Modal;
+      d.modal_ratio = r_.nonNegative(m.at("modal_ratio"), "damping.modal_ratio", "");
+      if (d.modal_ratio >= 1) r_.fail(m.at("modal_ratio").Mark(), "damping.modal_ratio must be < 1 (got " + m.at("modal_ratio").Scalar() + ")");
+    } else if (m.count("rayleigh")) {
+      const YAML::Node& rn = m.at("rayleigh");
+      auto rm = r_.mapping(rn, "damping.rayleigh", {"alpha", "beta"});
+      d.kind = DampingSpec::Kind::Rayleigh;
+      if (rm.count("alpha")) d.alpha = r_.nonNegative(rm.at("alpha"), "damping.rayleigh.alpha", " 1/s");
+      if (rm.count("beta")) d.beta = r_.nonNegative(rm.at("beta"), "damping.rayleigh.beta", " s");
+    } else {
+      d.kind = DampingSpec::Kind::HingeViscous;
+      d.hinge_beta = r_.positive(m.at("hinge_beta"), "damping.hinge_beta", " s");
+    }
+    return d;
+  }
+
   void readBase(const YAML::Node& n, BaseSpec& b) {
-    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg"});
+    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg", "table_mass", "motion"});
     if (m.count("type")) {
       const std::string t = r_.text(m.at("type"), "base.type");
-      if (t != "fixed") r_.fail(m.at("type").Mark(), "base.type: unknown base type '" + t + "' (known: fixed)");
+      if (t == "table") b.type = BaseType::Table;
+      else if (t != "fixed") r_.fail(m.at("type").Mark(), "base.type: unknown base type '" + t + "' (known: fixed, table)");
+    }
+    for (const char* k : {"table_mass", "motion"})
+      if (m.count(k) && b.type != BaseType::Table) r_.fail(m.at(k).Mark(), std::string("base.") + k + " applies only with type: table");
+    if (m.count("table_mass")) b.table_mass = r_.positive(m.at("table_mass"), "base.table_mass", " kg");
+    if (m.count("motion")) {
+      const YAML::Node& mn = m.at("motion");
+      auto mm = r_.mapping(mn, "base.motion", {"type", "amplitude", "frequency_hz"});
+      const std::string t = r_.text(r_.require(mm, mn, "base.motion", "type"), "base.motion.type");
+      if (t != "sine") r_.fail(mm.at("type").Mark(), "base.motion.type: unknown program '" + t + "' (known: sine)");
+      TableMotion tm;
+      tm.amplitude = r_.number(r_.require(mm, mn, "base.motion", "amplitude"), "base.motion.amplitude");
+      tm.frequency_hz = r_.positive(r_.require(mm, mn, "base.motion", "frequency_hz"), "base.motion.frequency_hz", " Hz");
+      b.motion = tm;
     }
     if (m.count("position")) {
       b.position = r_.vec3(m.at("position"), "base.position");

@@ -96,6 +96,13 @@ LinearModel buildLinearModel(const Scene& scene, const std::vector<InputSpec>& i
   lm.Kz = 0.5 * (lm.Kz + lm.Kz.transpose());
   if (damping.kind == DampingSpec::Kind::Rayleigh) {
     lm.Cz = damping.alpha * lm.Mz + damping.beta * lm.Kz;
+  } else if (damping.kind == DampingSpec::Kind::HingeViscous) {
+    Eigen::VectorXd c(n);
+    for (int a = 0; a < n; ++a) {
+      const Coordinate& co = model.getCoordinates()[dofs[a]];
+      c[a] = co.kind == CoordinateKind::Hinge ? damping.hinge_beta * co.stiffness : 0.0;
+    }
+    lm.Cz = Z.transpose() * c.asDiagonal() * Z;
   } else {
     const ModalSolution modes = solveModes(lm.Mz, lm.Kz);
     Eigen::VectorXd c(nz);

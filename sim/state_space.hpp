@@ -17,8 +17,10 @@
 /// acceleration input itself). Absolute acceleration over base acceleration is the
 /// transmissibility.
 ///
-/// Damping: modal ratios (C = M Phi diag(2 zeta omega) Phi^T M) or Rayleigh
-/// (C = alpha M + beta K).
+/// Damping (DampingSpec, sim/scene.hpp): modal ratios (C = M Phi diag(2 zeta omega)
+/// Phi^T M), Rayleigh (C = alpha M + beta K), or the hinges' viscous dampers
+/// (C = diag(hinge_beta * k) over the hinge coordinates), the last being the same
+/// damping the Simbody model carries in time runs.
 
 #include <Eigen/Dense>
 #include <complex>
@@ -47,11 +49,6 @@ struct OutputSpec {
   bool absolute = false;  ///< add the base's own motion.
 };
 
-struct DampingSpec {
-  enum class Kind { Modal, Rayleigh } kind = Kind::Modal;
-  double modal_ratio = 0.01;  ///< zeta for every mode.
-  double alpha = 0, beta = 0; ///< Rayleigh: 1/s and s.
-};
 
 /// A descriptor state-space model with names and units.
 struct StateSpace {

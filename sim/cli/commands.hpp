@@ -78,6 +78,7 @@ struct LinearArgs : SceneArgs {
   std::string band;  ///< "F1:F2" (Hz): keep the modes in the band instead.
   bool no_residualize = false;
   double damping_ratio = 0.01;
+  bool damping_given = false;  ///< --damping overrides the scene's damping.
   bool rad = false;
   std::string out;
   bool force = false;

@@ -61,6 +61,7 @@ LinearModel build(const LinearArgs& args, const Scene& scene) {
   if (out.empty()) out = defaultOutputs(scene);
   DampingSpec d;
   d.modal_ratio = args.damping_ratio;
+  if (scene.damping && !args.damping_given) d = *scene.damping;
   return buildLinearModel(scene, in, out, d);
 }
 

@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     cmd->add_option("--rom-modes", lin.rom_modes, "Modes kept in the reduced model")->capture_default_str()->check(CLI::Range(1, 10000));
     cmd->add_option("--band", lin.band, "Keep the modes in F_MIN_HZ:F_MAX_HZ instead of --rom-modes");
     cmd->add_flag("--no-residualize", lin.no_residualize, "Truncate without static residualization");
-    cmd->add_option("--damping", lin.damping_ratio, "Modal damping ratio of every mode")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--damping", lin.damping_ratio, "Modal damping ratio of every mode (default: the scene's damping, else 0.01)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
     cmd->add_option("--out", lin.out, "Output directory");
     cmd->add_flag("--force", lin.force, "Replace files of the same names in --out");
   };
@@ -103,6 +103,7 @@ int main(int argc, char** argv) {
   if (c->parsed()) return runConvergeCommand(conv);
   if (cp->parsed()) return runCompareCommand(cmp);
   if (sp->parsed()) return runSweepCommand(sw);
+  lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
   if (fr->parsed()) return runFrfCommand(lin);
   if (ro->parsed()) return runRomCommand(lin);
   return runSceneCommand();

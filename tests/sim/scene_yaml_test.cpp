@@ -169,6 +169,27 @@ TEST(SceneYaml, ClosureNamingAnUnknownPoint) {
   EXPECT_NE(errorOf(at).find("closures[0].at applies only to closures to the ground"), std::string::npos);
 }
 
+TEST(SceneYaml, DampingAndTable) {
+  std::string text = replaceLine(kGood, "gravity: [0, -9.81, 0]",
+                                 "gravity: [0, -9.81, 0]\nbase: {type: table, table_mass: 50, motion: {type: sine, amplitude: 0.002, "
+                                 "frequency_hz: 3}}\ndamping: {hinge_beta: 0.01}");
+  const Scene s = parseScene(text, "s.yaml");
+  EXPECT_EQ(s.article.base.type, BaseType::Table);
+  EXPECT_EQ(s.article.base.table_mass, 50);
+  ASSERT_TRUE(s.article.base.motion.has_value());
+  EXPECT_EQ(s.article.base.motion->frequency_hz, 3);
+  ASSERT_TRUE(s.damping.has_value());
+  EXPECT_EQ(s.damping->kind, DampingSpec::Kind::HingeViscous);
+  EXPECT_EQ(s.damping->hinge_beta, 0.01);
+  EXPECT_EQ(errorOf(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\ndamping: {modal_ratio: 0.02, hinge_beta: 0.01}")),
+            "s.yaml:3:10: damping must give exactly one of modal_ratio, rayleigh, hinge_beta");
+  EXPECT_EQ(errorOf(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nbase: {table_mass: 5}")),
+            "s.yaml:3:20: base.table_mass applies only with type: table");
+  EXPECT_EQ(errorOf(replaceLine(kGood, "gravity: [0, -9.81, 0]",
+                                "gravity: [0, -9.81, 0]\nbase: {type: table, motion: {type: sine, amplitude: 1, frequency_hz: 0}}")),
+            "s.yaml:3:70: base.motion.frequency_hz must be > 0 Hz (got 0)");
+}
+
 TEST(SceneYaml, EmptyScene) {
   EXPECT_EQ(errorOf(""), "s.yaml:1:1: the scene is empty (expected a mapping with 'links' and 'joints')");
 }
