@@ -225,14 +225,25 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
   }
   std::stable_sort(modes.begin(), modes.end(), [](const ModeRef& a, const ModeRef& b) { return a.magnitude < b.magnitude; });
   std::vector<ModeRef> kept;
-  // Real eigenvalues of an underdamped structure come in pairs too (overdamped
-  // modes); the band and count work on |lambda| in Hz.
-  int counted = 0;
-  for (const auto& m : modes) {
-    const double f = m.magnitude / (2 * M_PI);
-    const bool in = o.modes > 0 ? counted < o.modes : (f >= o.band_min_hz && f <= o.band_max_hz);
-    if (in) kept.push_back(m);
-    if (m.pair || o.modes > 0) ++counted;
+  if (o.modes > 0) {
+    // Count oscillatory modes (complex pairs); real roots (overdamped modes, relaxation)
+    // are kept when they lie within the range of the kept pairs.
+    double reach = 0;
+    int counted = 0;
+    for (const auto& m : modes)
+      if (m.pair && counted < o.modes) {
+        reach = m.magnitude;
+        ++counted;
+      }
+    counted = 0;
+    for (const auto& m : modes) {
+      if (m.pair ? counted++ < o.modes : m.magnitude <= reach) kept.push_back(m);
+    }
+  } else {
+    for (const auto& m : modes) {
+      const double f = m.magnitude / (2 * M_PI);
+      if (f >= o.band_min_hz && f <= o.band_max_hz) kept.push_back(m);
+    }
   }
   std::vector<Eigen::VectorXd> right, left;
   for (const auto& m : kept) {

@@ -99,7 +99,8 @@ std::vector<InputSpec> defaultInputs();
 std::vector<OutputSpec> defaultOutputs(const Scene& scene);
 
 struct ReductionOptions {
-  int modes = 0;                     ///< keep the lowest `modes` modes (0: use the band).
+  int modes = 0;  ///< keep the lowest `modes` oscillatory modes, plus any real (overdamped)
+                 ///< root no faster than them (0: use the band).
   double band_min_hz = 0, band_max_hz = 0;  ///< keep modes with |lambda|/2pi in the band.
   bool residualize = true;           ///< add the discarded modes' static contribution to D.
 };
