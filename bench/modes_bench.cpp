@@ -58,3 +58,41 @@ void BM_ModesPipeline(benchmark::State& st) {
 BENCHMARK(BM_ModesPipeline)->Apply(segmentArgs);
 
 }  // namespace
+
+// Linear models and synthesis (issues 3 and 5), at the default 16 segments unless the
+// argument says otherwise.
+#include "sim/cms.hpp"
+#include "sim/state_space.hpp"
+
+namespace {
+
+void BM_LinearModel(benchmark::State& st) {
+  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::buildLinearModel(s, mmv::defaultInputs(), mmv::defaultOutputs(s), {}));
+}
+BENCHMARK(BM_LinearModel)->Apply(segmentArgs);
+
+void BM_ReduceModal(benchmark::State& st) {
+  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::LinearModel lm = mmv::buildLinearModel(s, mmv::defaultInputs(), mmv::defaultOutputs(s), {});
+  mmv::ReductionOptions o;
+  o.modes = 8;
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::reduceModal(lm.full, o));
+}
+BENCHMARK(BM_ReduceModal)->Apply(segmentArgs);
+
+void BM_FrfPointFull(benchmark::State& st) {
+  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::LinearModel lm = mmv::buildLinearModel(s, mmv::defaultInputs(), mmv::defaultOutputs(s), {});
+  for (auto _ : st) benchmark::DoNotOptimize(lm.second_order.response(2 * M_PI * 3.3));
+}
+BENCHMARK(BM_FrfPointFull)->Apply(segmentArgs);
+
+void BM_SynthesisAssumedModes(benchmark::State& st) {
+  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  mmv::SynthesisOptions o;
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::synthesize(s, o));
+}
+BENCHMARK(BM_SynthesisAssumedModes)->Apply(segmentArgs);
+
+}  // namespace
