@@ -162,7 +162,10 @@ SynthesisResult synthesize(const Scene& scene, const SynthesisOptions& o) {
     row.full_hz = r.full_hz[i];
     row.synth_mode = static_cast<int>(best) + 1;
     row.synth_hz = r.synth_hz[best];
-    row.relative_error = row.full_hz != 0 ? row.synth_hz / row.full_hz - 1.0 : 0.0;
+    // A rigid-body mode (0 Hz) has no relative error: both at ~0 is exact, else the
+    // synthesized frequency itself (Hz) stands in, so nothing infinite is reported.
+    const double tiny = 1e-9 * std::max(1.0, std::abs(r.full_hz.tail(1)[0]));
+    row.relative_error = std::abs(row.full_hz) > tiny ? row.synth_hz / row.full_hz - 1.0 : row.synth_hz;
     row.mac = mac;
     row.verdict = synthesisVerdict(row.relative_error, mac, o);
     row.dominant_link = dominantStrainLink(model, dofs, full.modes.shapes.col(i));

@@ -123,5 +123,19 @@ TEST(Cms, ArticleSynthesis) {
   }
 }
 
+// A mechanism (free joint, no gravity) has a 0 Hz rigid-body mode: the synthesis must
+// report it without an infinite or NaN error.
+TEST(Cms, RigidBodyModeHasAFiniteError) {
+  Scene s = testing::cantileverScene(testing::Beam{}, 8, 0.0);
+  s.article.joints[0].hold = JointHold::Free;
+  SynthesisOptions o;
+  o.compare_modes = 4;
+  const SynthesisResult r = synthesize(s, o);
+  ASSERT_FALSE(r.rows.empty());
+  for (const auto& row : r.rows) EXPECT_TRUE(std::isfinite(row.relative_error)) << row.mode;
+  EXPECT_EQ(r.rows[0].full_hz, 0.0);
+  EXPECT_EQ(r.rows[0].verdict, "predicted");
+}
+
 }  // namespace
 }  // namespace mmv
