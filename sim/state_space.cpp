@@ -300,8 +300,11 @@ ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std:
     diff = diff.cwiseMax((ha - hb).cwiseAbs());
     peak = peak.cwiseMax(ha.cwiseAbs());
   }
+  // A pair that is zero up to round-off (a pinned point's response) is measured against
+  // the model's largest response instead, so its noise is not reported as an error.
   ModelError e;
-  e.relative = diff.cwiseQuotient(peak.cwiseMax(1e-300));
+  const double floor = 1e-9 * (peak.size() ? peak.maxCoeff() : 0.0);
+  e.relative = diff.cwiseQuotient(peak.cwiseMax(std::max(floor, 1e-300)));
   e.max_relative = e.relative.size() ? e.relative.maxCoeff() : 0.0;
   return e;
 }

@@ -120,7 +120,8 @@ struct ReducedModel {
 ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& options);
 
 /// Largest |H_a(i w) - H_b(i w)| over the grid, per input-output pair, relative to the
-/// largest |H_a| of that pair; and the overall maximum.
+/// largest |H_a| of that pair (or to 1e-9 of the largest |H_a| of any pair, for a pair
+/// that is zero up to round-off); and the overall maximum.
 struct ModelError {
   Eigen::MatrixXd relative;  ///< outputs x inputs.
   double max_relative = 0;

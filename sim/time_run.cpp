@@ -12,6 +12,10 @@ SineDwellResult runSineDwell(const Scene& scene, const SineDwellOptions& o) {
   const BaseSpec& base = scene.article.base;
   if (base.type != BaseType::Table || !base.motion)
     throw SceneError(scene.source + ": a sine dwell needs base: {type: table, motion: {type: sine, ...}}");
+  // Closures are imposed by our statics and linearization, not by the Simbody system
+  // the integrator advances: a closed tree would silently run open.
+  if (!scene.article.closures.empty())
+    throw SceneError(scene.source + ": time runs of closed trees (closures) are not supported yet");
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
   const NamedPoint* p = model->findPoint(o.point);

@@ -29,7 +29,8 @@ struct SineDwellResult {
   double cpu_seconds = 0;
 };
 
-/// Throws SceneError if the scene has no table motion, NumericalError if the
+/// Throws SceneError if the scene has no table motion or has closures (closed trees
+/// are not integrated yet), NumericalError if the
 /// equilibrium or the integration fails (or the state becomes non-finite).
 SineDwellResult runSineDwell(const Scene& scene, const SineDwellOptions& options);
 

@@ -105,11 +105,25 @@ std::string summary(const LinearModel& lm, const ReducedModel& red, const ModelE
   Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%"});
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
     for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
-      double peak = -INFINITY, fpeak = 0;
-      for (double x : f) {
-        const double db = 20 * std::log10(std::abs(lm.second_order.response(2 * M_PI * x)(o, i)) + 1e-300);
-        if (db > peak) peak = db, fpeak = x;
+      auto mag = [&](double hz) { return std::abs(lm.second_order.response(2 * M_PI * hz)(o, i)); };
+      std::size_t best = 0;
+      std::vector<double> m(f.size());
+      for (std::size_t k = 0; k < f.size(); ++k) {
+        m[k] = mag(f[k]);
+        if (m[k] > m[best]) best = k;
       }
+      // Refine the grid's maximum between its neighbours (golden section on |H|), so a
+      // coarse grid does not misplace a lightly damped peak.
+      double lo = f[best > 0 ? best - 1 : 0], hi = f[std::min(best + 1, f.size() - 1)];
+      const double g = 0.5 * (std::sqrt(5.0) - 1);
+      for (int it = 0; it < 60 && hi - lo > 1e-9 * hi; ++it) {
+        const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+        (mag(a) > mag(b) ? hi : lo) = mag(a) > mag(b) ? b : a;
+      }
+      double fpeak = 0.5 * (lo + hi);
+      double peak_mag = mag(fpeak);
+      if (m[best] > peak_mag) fpeak = f[best], peak_mag = m[best];
+      const double peak = 20 * std::log10(peak_mag + 1e-300);
       const double at10 = 20 * std::log10(std::abs(lm.second_order.response(2 * M_PI * 10.0)(o, i)) + 1e-300);
       t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], strf("%.4g", fpeak),
              strf("%.2f", peak), strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i))});

@@ -36,6 +36,10 @@ TEST(TimeRun, NeedsATableMotion) {
   SineDwellOptions o;
   o.point = "link1.tip";
   EXPECT_THROW(runSineDwell(loadDefaultScene(), o), SceneError);
+  Scene closed = loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-closed.yaml");
+  closed.article.base.type = BaseType::Table;
+  closed.article.base.motion = TableMotion{1e-3, 1.0};
+  EXPECT_THROW(runSineDwell(closed, o), SceneError);  // would silently run open
 }
 
 }  // namespace
