@@ -6,9 +6,44 @@
 #include <map>
 
 #include "article/flexible_link.hpp"
+#include "facility/slews.hpp"
 
 namespace mmv {
 namespace {
+
+/// A locked joint that follows a slew: q(t) from facility/slews.hpp.
+class SlewMotion : public SimTK::Motion::Custom::Implementation {
+ public:
+  SlewMotion(facility::Slew slew, double start) : slew_(slew), start_(start) {}
+  SlewMotion* clone() const override { return new SlewMotion(*this); }
+  SimTK::Motion::Level getLevel(const SimTK::State&) const override { return SimTK::Motion::Position; }
+  void calcPrescribedPosition(const SimTK::State& s, int, SimTK::Real* q) const override { q[0] = at(s).angle; }
+  void calcPrescribedPositionDot(const SimTK::State& s, int, SimTK::Real* qd) const override { qd[0] = at(s).rate; }
+  void calcPrescribedPositionDotDot(const SimTK::State& s, int, SimTK::Real* qdd) const override {
+    qdd[0] = at(s).acceleration;
+  }
+
+ private:
+  facility::SlewState at(const SimTK::State& s) const { return slew_.at(s.getTime() - start_); }
+  facility::Slew slew_;
+  double start_;
+};
+
+/// The table following a motion program (facility/table_programs.hpp).
+class TableProgramMotion : public SimTK::Motion::Custom::Implementation {
+ public:
+  explicit TableProgramMotion(std::shared_ptr<const facility::TableProgram> p) : p_(std::move(p)) {}
+  TableProgramMotion* clone() const override { return new TableProgramMotion(*this); }
+  SimTK::Motion::Level getLevel(const SimTK::State&) const override { return SimTK::Motion::Position; }
+  void calcPrescribedPosition(const SimTK::State& s, int, SimTK::Real* q) const override { q[0] = p_->position(s.getTime()); }
+  void calcPrescribedPositionDot(const SimTK::State& s, int, SimTK::Real* qd) const override { qd[0] = p_->velocity(s.getTime()); }
+  void calcPrescribedPositionDotDot(const SimTK::State& s, int, SimTK::Real* qdd) const override {
+    qdd[0] = p_->acceleration(s.getTime());
+  }
+
+ private:
+  std::shared_ptr<const facility::TableProgram> p_;
+};
 
 SimTK::Transform rotZ(double angle, const SimTK::Vec3& p = SimTK::Vec3(0)) {
   return SimTK::Transform(SimTK::Rotation(angle, SimTK::ZAxis), p);
@@ -63,9 +98,7 @@ class Builder {
       c.held = true;  // at rest in statics and modes; driven in time runs
       model_.addCoordinate(c);
       model_.addBody(table.getMobilizedBodyIndex(), part, true);
-      if (base.motion)
-        SimTK::Motion::Sinusoid(table, SimTK::Motion::Position, base.motion->amplitude,
-                                2 * M_PI * base.motion->frequency_hz, 0.0);
+      if (base.motion) SimTK::Motion::Custom(table, new TableProgramMotion(makeTableProgram(*base.motion)));
       // Held in statics and modes, so what is welded to it counts as fixed there.
       ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
     }
@@ -147,8 +180,17 @@ class Builder {
           coord.held = j.hold == JointHold::Locked;
           coord.stiffness = j.hold == JointHold::Servo ? j.servo_stiffness : 0.0;
           model_.addCoordinate(coord);
-          // A locked torquer holds its angle in the dynamics too (zero prescribed speed).
-          if (coord.held) SimTK::Motion::Steady(pin, 0.0);
+          // A locked torquer holds its angle in the dynamics too (zero prescribed speed),
+          // or follows its slew.
+          if (coord.held && j.slew) {
+            const facility::SlewLimits limits{M_PI, j.slew->max_rate, j.slew->max_acceleration};
+            const facility::Slew slew = facility::makeSlew(
+                j.slew->trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, j.angle,
+                j.slew->to, j.slew->start_time, limits);
+            SimTK::Motion::Custom(pin, new SlewMotion(slew, j.slew->start_time));
+          } else if (coord.held) {
+            SimTK::Motion::Steady(pin, 0.0);
+          }
           rotor = ix;
           rotor_mount = l.mount_angle;
         } else if (k == 0) {
@@ -241,6 +283,17 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
 }
 
 }  // namespace
+
+std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m) {
+  switch (m.type) {
+    case TableMotion::Type::Sine: return facility::sineDwell(m.amplitude, m.frequency_hz, 1e9);
+    case TableMotion::Type::Sweep: return facility::sineSweep(m.amplitude, m.from_hz, m.to_hz, m.duration, m.logarithmic);
+    case TableMotion::Type::Random:
+      return facility::bandLimitedRandom(m.rms, m.from_hz, m.to_hz, m.duration, m.seed);
+    case TableMotion::Type::Profile: return facility::csvProfile(m.profile_csv, m.profile_source);
+  }
+  return nullptr;
+}
 
 std::unique_ptr<Model> buildArticleModel(const Scene& scene) {
   const auto& g = scene.gravity;

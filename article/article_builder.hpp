@@ -15,11 +15,19 @@
 
 #include <memory>
 
+#include "facility/table_programs.hpp"
 #include "sim/model.hpp"
 #include "sim/scene.hpp"
 
 namespace mmv {
 
+/// Slews of locked joints and the table's program become Simbody prescribed motions
+/// (they act in time runs only: statics and modes do not see Motions). Throws
+/// std::invalid_argument from the facility models (a slew outside the joint range,
+/// a bad CSV profile).
 std::unique_ptr<Model> buildArticleModel(const Scene& scene);
+
+/// The facility program for a table motion spec.
+std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m);
 
 }  // namespace mmv

@@ -10,6 +10,7 @@
 /// the base frame for a joint on the base.
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,36 @@ enum class JointHold {
   Servo,   ///< A rotational spring of `servo_stiffness` pulling to the commanded angle.
 };
 
+/// A motion program of the table along world x (facility/table_programs.hpp).
+struct TableMotion {
+  enum class Type { Sine, Sweep, Random, Profile } type = Type::Sine;
+  /// A sine dwell x = amplitude sin(2 pi f t).
+  static TableMotion sine(double amplitude, double frequency_hz) {
+    TableMotion m;
+    m.amplitude = amplitude;
+    m.frequency_hz = frequency_hz;
+    return m;
+  }
+  double amplitude = 0;     ///< m (sine, sweep).
+  double frequency_hz = 0;  ///< Hz (sine).
+  double from_hz = 0, to_hz = 0;  ///< Hz (sweep, random band).
+  double duration = 0;      ///< s (sweep, random).
+  bool logarithmic = false; ///< sweep.
+  double rms = 0;           ///< m (random).
+  std::uint64_t seed = 1;   ///< random.
+  std::string profile_csv;  ///< profile: the CSV text (time_s,x_m).
+  std::string profile_source;  ///< profile: its file, for messages.
+};
+
+/// A commanded slew of a locked joint in time runs (facility/slews.hpp).
+struct SlewSpec {
+  double to = 0;             ///< rad, final angle.
+  double start_time = 0;     ///< s.
+  bool trapezoidal = false;  ///< else cycloidal.
+  double max_rate = 70 * 3.14159265358979323846 / 180;          ///< rad/s.
+  double max_acceleration = 200 * 3.14159265358979323846 / 180; ///< rad/s^2.
+};
+
 struct JointSpec {
   std::string name;
   std::string parent;      ///< "base" or the name of a link (or branch) whose tip carries it.
@@ -38,6 +69,8 @@ struct JointSpec {
   JointHold hold = JointHold::Locked;
   double servo_stiffness = 0;  ///< N*m/rad, > 0 when hold is Servo.
   std::optional<LumpedMass> torquer;  ///< lumped on the parent side (stator housing).
+  std::optional<SlewSpec> slew;       ///< time runs: a locked joint follows it from `angle`.
+  double torque_capacity = 0;         ///< N*m the torquer can give (0: not checked).
 };
 
 struct LinkSpec {
@@ -81,12 +114,6 @@ struct LoadSpec {
 /// the base sits on the base excitation table, a body sliding along world x whose
 /// motion is prescribed (held at rest in statics and modes).
 enum class BaseType { Fixed, Floating, Table };
-
-/// A sine dwell of the table along world x: x(t) = amplitude sin(2 pi f t).
-struct TableMotion {
-  double amplitude = 0;     ///< m.
-  double frequency_hz = 0;  ///< Hz, > 0.
-};
 
 struct BaseSpec {
   BaseType type = BaseType::Fixed;

@@ -23,12 +23,22 @@ struct DampingSpec {
   double hinge_beta = 0;       ///< s.
 };
 
+/// Settings of a time run (`simulation:` in the scene; the command line overrides).
+struct SimulationSpec {
+  double duration = 10;         ///< s.
+  std::string integrator = "rk_merson";
+  double accuracy = 1e-6;       ///< integrator relative accuracy.
+  double sample_rate_hz = 200;  ///< output rows per second.
+  bool from_equilibrium = true; ///< start at the static equilibrium, else at the scene's angles at rest.
+};
+
 struct Scene {
   std::string name;
   std::string source;  ///< file the scene came from, or "<default scene>".
   std::array<double, 3> gravity{0, -9.80665, 0};  ///< m/s^2 in the world frame, z = 0.
   ArticleSpec article;
   std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
+  SimulationSpec simulation;
 };
 
 /// Bad scene content. what() is one line: "file:line:col: what is wrong (got X)".

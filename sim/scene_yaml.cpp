@@ -33,6 +33,7 @@ std::string joinNames(const std::vector<std::string>& names) {
 class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
+  const std::string& file() const { return file_; }
 
   /// "file:line:col"; an empty document has a null mark (-1): the start of the file.
   std::string position(const YAML::Mark& mark) const {
@@ -216,7 +217,7 @@ class SceneParser {
     if (!root.IsDefined() || root.IsNull())
       r_.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
-                                     "links", "closures", "loads", "damping"});
+                                     "links", "closures", "loads", "damping", "simulation"});
     Scene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -237,6 +238,7 @@ class SceneParser {
     if (top.count("closures")) readClosures(top.at("closures"), a);
     if (top.count("loads")) readLoads(top.at("loads"), a);
     if (top.count("damping")) scene.damping = readDamping(top.at("damping"));
+    if (top.count("simulation")) scene.simulation = readSimulation(top.at("simulation"));
     return scene;
   }
 
@@ -268,6 +270,21 @@ class SceneParser {
       if (it->first.IsScalar()) keys.push_back(it->first.Scalar());
     if (keys.empty()) r_.fail(n.Mark(), path + " must name at least one entry");
     return keys;
+  }
+
+  SimulationSpec readSimulation(const YAML::Node& n) {
+    auto m = r_.mapping(n, "simulation", {"duration", "integrator", "accuracy", "sample_rate_hz", "start"});
+    SimulationSpec s;
+    if (m.count("duration")) s.duration = r_.positive(m.at("duration"), "simulation.duration", " s");
+    if (m.count("integrator")) s.integrator = r_.text(m.at("integrator"), "simulation.integrator");
+    if (m.count("accuracy")) s.accuracy = r_.positive(m.at("accuracy"), "simulation.accuracy", "");
+    if (m.count("sample_rate_hz")) s.sample_rate_hz = r_.positive(m.at("sample_rate_hz"), "simulation.sample_rate_hz", " Hz");
+    if (m.count("start")) {
+      const std::string st = r_.text(m.at("start"), "simulation.start");
+      if (st != "equilibrium" && st != "rest") r_.fail(m.at("start").Mark(), "simulation.start: unknown start '" + st + "' (known: equilibrium, rest)");
+      s.from_equilibrium = st == "equilibrium";
+    }
+    return s;
   }
 
   DampingSpec readDamping(const YAML::Node& n) {
@@ -303,12 +320,60 @@ class SceneParser {
     if (m.count("table_mass")) b.table_mass = r_.positive(m.at("table_mass"), "base.table_mass", " kg");
     if (m.count("motion")) {
       const YAML::Node& mn = m.at("motion");
-      auto mm = r_.mapping(mn, "base.motion", {"type", "amplitude", "frequency_hz"});
-      const std::string t = r_.text(r_.require(mm, mn, "base.motion", "type"), "base.motion.type");
-      if (t != "sine") r_.fail(mm.at("type").Mark(), "base.motion.type: unknown program '" + t + "' (known: sine)");
+      auto mm = r_.mapping(mn, "base.motion", {"type", "amplitude", "frequency_hz", "from_hz", "to_hz", "duration",
+                                               "log", "rms", "seed", "file"});
+      const YAML::Node& tn = r_.require(mm, mn, "base.motion", "type");
+      const std::string t = r_.text(tn, "base.motion.type");
+      auto need = [&](const char* k) -> const YAML::Node& { return r_.require(mm, mn, "base.motion", k); };
+      auto only = [&](std::initializer_list<const char*> allowed) {
+        for (const auto& [k, v] : mm) {
+          bool ok = k == "type";
+          for (const char* a : allowed) ok = ok || k == a;
+          if (!ok) r_.fail(v.Mark(), "base.motion." + k + " does not apply to a " + t + " program");
+        }
+      };
       TableMotion tm;
-      tm.amplitude = r_.number(r_.require(mm, mn, "base.motion", "amplitude"), "base.motion.amplitude");
-      tm.frequency_hz = r_.positive(r_.require(mm, mn, "base.motion", "frequency_hz"), "base.motion.frequency_hz", " Hz");
+      if (t == "sine") {
+        only({"amplitude", "frequency_hz"});
+        tm.type = TableMotion::Type::Sine;
+        tm.amplitude = r_.number(need("amplitude"), "base.motion.amplitude");
+        tm.frequency_hz = r_.positive(need("frequency_hz"), "base.motion.frequency_hz", " Hz");
+      } else if (t == "sweep") {
+        only({"amplitude", "from_hz", "to_hz", "duration", "log"});
+        tm.type = TableMotion::Type::Sweep;
+        tm.amplitude = r_.number(need("amplitude"), "base.motion.amplitude");
+        tm.from_hz = r_.positive(need("from_hz"), "base.motion.from_hz", " Hz");
+        tm.to_hz = r_.positive(need("to_hz"), "base.motion.to_hz", " Hz");
+        tm.duration = r_.positive(need("duration"), "base.motion.duration", " s");
+        if (mm.count("log")) {
+          const std::string l = r_.text(mm.at("log"), "base.motion.log");
+          if (l != "true" && l != "false") r_.fail(mm.at("log").Mark(), "base.motion.log must be true or false (got " + l + ")");
+          tm.logarithmic = l == "true";
+        }
+      } else if (t == "random") {
+        only({"rms", "from_hz", "to_hz", "duration", "seed"});
+        tm.type = TableMotion::Type::Random;
+        tm.rms = r_.nonNegative(need("rms"), "base.motion.rms", " m");
+        tm.from_hz = r_.positive(need("from_hz"), "base.motion.from_hz", " Hz");
+        tm.to_hz = r_.positive(need("to_hz"), "base.motion.to_hz", " Hz");
+        if (tm.to_hz <= tm.from_hz) r_.fail(mm.at("to_hz").Mark(), "base.motion.to_hz must be > from_hz (got " + mm.at("to_hz").Scalar() + ")");
+        tm.duration = r_.positive(need("duration"), "base.motion.duration", " s");
+        if (mm.count("seed")) tm.seed = static_cast<std::uint64_t>(r_.integer(mm.at("seed"), "base.motion.seed"));
+      } else if (t == "csv") {
+        only({"file"});
+        tm.type = TableMotion::Type::Profile;
+        const YAML::Node& fn = need("file");
+        std::filesystem::path path = r_.text(fn, "base.motion.file");
+        if (path.is_relative()) path = std::filesystem::path(r_.file()).parent_path() / path;
+        std::ifstream in(path);
+        if (!in) r_.fail(fn.Mark(), "base.motion.file: cannot read profile '" + path.string() + "'");
+        std::ostringstream os;
+        os << in.rdbuf();
+        tm.profile_csv = os.str();
+        tm.profile_source = path.string();
+      } else {
+        r_.fail(tn.Mark(), "base.motion.type: unknown program '" + t + "' (known: sine, sweep, random, csv)");
+      }
       b.motion = tm;
     }
     if (m.count("position")) {
@@ -333,7 +398,8 @@ class SceneParser {
     for (std::size_t i = 0; i < count; ++i) {
       const YAML::Node& jn = n[i];
       const std::string path = "joints[" + std::to_string(i) + "]";
-      auto m = r_.mapping(jn, path, {"name", "parent", "angle_deg", "hold", "servo_stiffness", "torquer"});
+      auto m = r_.mapping(jn, path, {"name", "parent", "angle_deg", "hold", "servo_stiffness", "torquer", "slew",
+                                     "torque_capacity"});
       JointSpec j;
       const YAML::Node& name = r_.require(m, jn, path, "name");
       j.name = r_.text(name, path + ".name");
@@ -355,6 +421,27 @@ class SceneParser {
         r_.fail(m.at("servo_stiffness").Mark(), path + ".servo_stiffness applies only with hold: servo");
       }
       if (m.count("torquer")) j.torquer = readLumpedMass(r_, m.at("torquer"), path + ".torquer");
+      if (m.count("torque_capacity"))
+        j.torque_capacity = r_.positive(m.at("torque_capacity"), path + ".torque_capacity", " N*m");
+      if (m.count("slew")) {
+        const YAML::Node& sn = m.at("slew");
+        if (j.hold != JointHold::Locked)
+          r_.fail(sn.Mark(), path + ".slew: only a locked joint (its torquer holding the angle) follows a slew");
+        auto sm = r_.mapping(sn, path + ".slew", {"to_deg", "start_s", "shape", "max_rate_deg_s", "max_acceleration_deg_s2"});
+        SlewSpec sl;
+        sl.to = r_.number(r_.require(sm, sn, path + ".slew", "to_deg"), path + ".slew.to_deg") * kDegToRad;
+        if (sm.count("start_s")) sl.start_time = r_.nonNegative(sm.at("start_s"), path + ".slew.start_s", " s");
+        if (sm.count("shape")) {
+          const std::string sh = r_.text(sm.at("shape"), path + ".slew.shape");
+          if (sh != "cycloidal" && sh != "trapezoidal")
+            r_.fail(sm.at("shape").Mark(), path + ".slew.shape: unknown shape '" + sh + "' (known: cycloidal, trapezoidal)");
+          sl.trapezoidal = sh == "trapezoidal";
+        }
+        if (sm.count("max_rate_deg_s")) sl.max_rate = r_.positive(sm.at("max_rate_deg_s"), path + ".slew.max_rate_deg_s", " deg/s") * kDegToRad;
+        if (sm.count("max_acceleration_deg_s2"))
+          sl.max_acceleration = r_.positive(sm.at("max_acceleration_deg_s2"), path + ".slew.max_acceleration_deg_s2", " deg/s^2") * kDegToRad;
+        j.slew = sl;
+      }
       joint_marks_[j.name] = {jn.Mark(), path};
       a.joints.push_back(j);
     }

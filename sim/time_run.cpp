@@ -10,7 +10,7 @@ namespace mmv {
 
 SineDwellResult runSineDwell(const Scene& scene, const SineDwellOptions& o) {
   const BaseSpec& base = scene.article.base;
-  if (base.type != BaseType::Table || !base.motion)
+  if (base.type != BaseType::Table || !base.motion || base.motion->type != TableMotion::Type::Sine)
     throw SceneError(scene.source + ": a sine dwell needs base: {type: table, motion: {type: sine, ...}}");
   // Closures are imposed by our statics and linearization, not by the Simbody system
   // the integrator advances: a closed tree would silently run open.

@@ -19,7 +19,7 @@ TEST(TimeRun, SineDwellAgreesWithTheFrf) {
     Scene s = loadDefaultScene();
     overrideSegments(s, 4);
     s.article.base.type = BaseType::Table;
-    s.article.base.motion = TableMotion{1e-3, f};
+    s.article.base.motion = TableMotion::sine(1e-3, f);
     s.damping = damping;
     SineDwellOptions o;
     o.point = "link3a.tip";
@@ -38,7 +38,7 @@ TEST(TimeRun, NeedsATableMotion) {
   EXPECT_THROW(runSineDwell(loadDefaultScene(), o), SceneError);
   Scene closed = loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-closed.yaml");
   closed.article.base.type = BaseType::Table;
-  closed.article.base.motion = TableMotion{1e-3, 1.0};
+  closed.article.base.motion = TableMotion::sine(1e-3, 1.0);
   EXPECT_THROW(runSineDwell(closed, o), SceneError);  // would silently run open
 }
 
