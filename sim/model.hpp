@@ -134,6 +134,8 @@ class Model {
   const std::vector<int>& getDofs() const { return dofs_; }
   /// Index of coordinate i's speed in the Simbody state's u vector.
   int getUIndex(int i) const { return uindex_[i]; }
+  /// Index of coordinate i in the Simbody state's q vector.
+  int getQIndex(int i) const { return qindex_[i]; }
   int getNumCoordinates() const { return static_cast<int>(coords_.size()); }
   /// The state with every coordinate at its reference value, realized to Position.
   const SimTK::State& getReferenceState() const { return reference_state_; }

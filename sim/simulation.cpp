@@ -1,0 +1,157 @@
+#include "sim/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "article/article_builder.hpp"
+#include "sim/statics.hpp"
+
+namespace mmv {
+namespace {
+
+std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const SimTK::MultibodySystem& sys,
+                                                  const std::string& source) {
+  if (name == "rk_merson") return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(sys);
+  if (name == "rk_feldberg") return std::make_unique<SimTK::RungeKuttaFeldbergIntegrator>(sys);
+  if (name == "rk3") return std::make_unique<SimTK::RungeKutta3Integrator>(sys);
+  if (name == "rk2") return std::make_unique<SimTK::RungeKutta2Integrator>(sys);
+  if (name == "cpodes") return std::make_unique<SimTK::CPodesIntegrator>(sys, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
+  if (name == "verlet") return std::make_unique<SimTK::VerletIntegrator>(sys);
+  if (name == "semi_explicit_euler2") return std::make_unique<SimTK::SemiExplicitEuler2Integrator>(sys);
+  if (name == "explicit_euler") return std::make_unique<SimTK::ExplicitEulerIntegrator>(sys);
+  throw SceneError(source + ": unknown integrator '" + name +
+                   "' (known: rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler)");
+}
+
+/// Power dissipated by the dampers, sum c u^2 (W).
+double dissipation(const Model& model, const SimTK::State& s) {
+  double p = 0;
+  for (int i = 0; i < model.getNumCoordinates(); ++i) {
+    const double c = model.getCoordinates()[i].damping;
+    if (c > 0) p += c * std::pow(s.getU()[model.getUIndex(i)], 2);
+  }
+  return p;
+}
+
+}  // namespace
+
+SimulationResult simulate(const Scene& scene, const std::function<void(double)>& progress) {
+  if (!scene.article.closures.empty())
+    throw SceneError(scene.source + ": time runs of closed trees (closures) are not supported yet");
+  const SimulationSpec& spec = scene.simulation;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto model = buildArticleModel(scene);
+  const SimTK::MultibodySystem& sys = model->getSystem();
+  const auto& matter = model->getMatter();
+  SimTK::State s = model->getReferenceState();
+  if (spec.from_equilibrium) {
+    const EquilibriumResult eq = solveEquilibrium(*model);
+    if (!eq.converged) throw NumericalError("static equilibrium failed: " + eq.failure);
+    s = eq.state;
+  }
+  s.updU() = 0;
+  s.setTime(0);
+  auto integ = makeIntegrator(spec.integrator, sys, scene.source);
+  integ->setAccuracy(spec.accuracy);
+  integ->setInternalStepLimit(1000000);
+  integ->setReturnEveryInternalStep(false);
+  SimTK::TimeStepper stepper(sys, *integ);
+  stepper.initialize(s);
+
+  SimulationResult r;
+  r.integrator = spec.integrator;
+  r.accuracy = spec.accuracy;
+  // Columns.
+  auto& cols = r.record.columns;
+  cols.push_back("time_s");
+  int table = -1;
+  std::vector<int> joints;
+  for (int i = 0; i < model->getNumCoordinates(); ++i) {
+    const Coordinate& c = model->getCoordinates()[i];
+    if (c.name == "table.x") table = i;
+    if (c.kind == CoordinateKind::Joint && c.motion == CoordinateMotion::Rotation) joints.push_back(i);
+  }
+  if (table >= 0) cols.push_back("table_x_m");
+  for (int j : joints) {
+    cols.push_back(model->getCoordinates()[j].name + "_angle_deg");
+    cols.push_back(model->getCoordinates()[j].name + "_torque_n_m");
+  }
+  std::vector<const NamedPoint*> tips;
+  for (const auto& p : model->getPoints())
+    if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0) {
+      tips.push_back(&p);
+      cols.push_back(p.name + "_x_m");
+      cols.push_back(p.name + "_y_m");
+    }
+  for (int j : joints) {
+    JointTorqueSummary t;
+    t.joint = model->getCoordinates()[j].name;
+    const JointSpec* js = scene.article.findJoint(t.joint);
+    t.capacity_nm = js ? js->torque_capacity : 0.0;
+    r.torques.push_back(t);
+  }
+
+  auto energy = [&](const SimTK::State& st) { return sys.calcEnergy(st); };
+  const int n = std::max(1, static_cast<int>(std::ceil(spec.duration * spec.sample_rate_hz)));
+  double last_motion_power = 0, last_dissipation = 0;
+  for (int k = 0; k <= n; ++k) {
+    const double t = spec.duration * k / n;
+    if (k > 0) {
+      try {
+        stepper.stepTo(t);
+      } catch (const std::exception& e) {
+        throw NumericalError("integration failed at t = " + std::to_string(integ->getTime()) + " s: " + e.what());
+      }
+      if (integ->isSimulationOver() && integ->getTime() < t - 1e-9 * spec.duration)
+        throw NumericalError("the " + spec.integrator + " integrator stopped at t = " + std::to_string(integ->getTime()) +
+                             " s: " + SimTK::Integrator::getTerminationReasonString(integ->getTerminationReason()));
+    }
+    const SimTK::State& st = integ->getState();
+    sys.realize(st, SimTK::Stage::Acceleration);
+    SimTK::Vector motion_forces;
+    matter.findMotionForces(st, motion_forces);
+    std::vector<double> row{t};
+    if (table >= 0) row.push_back(st.getQ()[model->getQIndex(table)]);
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      const int i = joints[j];
+      // Simbody's motion force is the reaction; the torquer applies its negative
+      // (checked against the static holding torque at t = 0).
+      const double torque = -motion_forces[model->getUIndex(i)];
+      row.push_back(st.getQ()[model->getQIndex(i)] * 180 / M_PI);
+      row.push_back(torque);
+      r.torques[j].peak_torque_nm = std::max(r.torques[j].peak_torque_nm, std::abs(torque));
+    }
+    for (const NamedPoint* p : tips) {
+      const SimTK::Vec3 x = model->findPointLocation(st, *p);
+      row.push_back(x[0]);
+      row.push_back(x[1]);
+    }
+    for (double v : row)
+      if (!std::isfinite(v))
+        throw NumericalError("non-finite state at t = " + std::to_string(t) + " s (" + spec.integrator + ", accuracy " +
+                             std::to_string(spec.accuracy) + ")");
+    // Energy bookkeeping (trapezoidal in time).
+    const double motion_power = matter.calcMotionPower(st), diss = dissipation(*model, st);
+    if (k == 0) {
+      r.initial_energy_j = energy(st);
+    } else {
+      const double dt = spec.duration / n;
+      r.motion_work_j += 0.5 * dt * (motion_power + last_motion_power);
+      r.dissipated_j += 0.5 * dt * (diss + last_dissipation);
+    }
+    last_motion_power = motion_power;
+    last_dissipation = diss;
+    r.final_energy_j = energy(st);
+    r.record.rows.push_back(std::move(row));
+    if (progress) progress(double(k) / n);
+  }
+  for (auto& t : r.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
+  r.energy_balance_error_j = (r.final_energy_j - r.initial_energy_j) - (r.motion_work_j - r.dissipated_j);
+  r.steps = integ->getNumStepsTaken();
+  r.realizations = integ->getNumRealizations();
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace mmv
