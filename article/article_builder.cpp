@@ -1,6 +1,7 @@
 #include "article/article_builder.hpp"
 
 #include <cassert>
+#include <limits>
 #include <cmath>
 #include <deque>
 #include <map>
@@ -286,7 +287,8 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
 
 std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m) {
   switch (m.type) {
-    case TableMotion::Type::Sine: return facility::sineDwell(m.amplitude, m.frequency_hz, 1e9);
+    case TableMotion::Type::Sine:  // a dwell lasts as long as the run: no end of its own
+      return facility::sineDwell(m.amplitude, m.frequency_hz, std::numeric_limits<double>::max());
     case TableMotion::Type::Sweep: return facility::sineSweep(m.amplitude, m.from_hz, m.to_hz, m.duration, m.logarithmic);
     case TableMotion::Type::Random:
       return facility::bandLimitedRandom(m.rms, m.from_hz, m.to_hz, m.duration, m.seed);

@@ -188,12 +188,14 @@ std::unique_ptr<TableProgram> csvProfile(const std::string& text, const std::str
   return std::make_unique<Profile>(std::move(t), std::move(x));
 }
 
-ProgramCheck checkProgram(const TableProgram& p, const TableSpec& table) {
+ProgramCheck checkProgram(const TableProgram& p, const TableSpec& table, double horizon) {
   ProgramCheck c;
+  const double span = horizon > 0 ? std::min(horizon, p.duration()) : p.duration();
   const double f = std::max(p.maxFrequencyHz(), 1e-3);
-  const int n = static_cast<int>(std::min(2e6, std::ceil(20 * f * p.duration()) + 1));
+  // 20 points per period, and never fewer than 400 in all, up to 2e6.
+  const int n = static_cast<int>(std::min(2e6, std::max(400.0, std::ceil(20 * f * span) + 1)));
   for (int k = 0; k <= n; ++k) {
-    const double t = p.duration() * k / n;
+    const double t = span * k / n;
     c.peak_displacement = std::max(c.peak_displacement, std::abs(p.position(t)));
     c.peak_acceleration = std::max(c.peak_acceleration, std::abs(p.acceleration(t)));
   }

@@ -52,8 +52,9 @@ struct ProgramCheck {
   std::vector<std::string> messages;  ///< one per problem, for the user
 };
 
-/// Samples the program (20 points per period of its highest frequency) and checks it
-/// against the table. Exceeding the stroke is an error (within_stroke = false).
-ProgramCheck checkProgram(const TableProgram& p, const TableSpec& table = {});
+/// Samples the program over [0, min(horizon, duration)] (20 points per period of its
+/// highest frequency) and checks it against the table. Exceeding the stroke is an
+/// error (within_stroke = false). horizon <= 0: the program's whole duration.
+ProgramCheck checkProgram(const TableProgram& p, const TableSpec& table = {}, double horizon = 0);
 
 }  // namespace mmv::facility

@@ -84,7 +84,16 @@ struct LinearArgs : SceneArgs {
   bool force = false;
 };
 
+struct SimulateArgs : SceneArgs {
+  bool json = false;
+  std::string integrator;  ///< empty: the scene's.
+  double accuracy = 0, duration = 0, sample_rate = 0;  ///< 0: the scene's.
+  std::string out;
+  bool force = false;
+};
+
 int runModesCommand(const ModesArgs& args);
+int runSimulateCommand(const SimulateArgs& args);
 int runFrfCommand(const LinearArgs& args);
 int runRomCommand(const LinearArgs& args);
 int runSweepCommand(const SweepArgs& args);

@@ -91,6 +91,18 @@ int main(int argc, char** argv) {
   CLI::App* ro = app.add_subcommand("rom", "Reduced-order state-space model for control design, as .mat (Octave/MATLAB ss)");
   addLinear(ro);
 
+  SimulateArgs sim;
+  CLI::App* si = app.add_subcommand("simulate", "Time run: slews, table programs, free motion; torques, energy, history");
+  addSceneOptions(si, sim);
+  si->add_flag("--json", sim.json, "Print the summary as JSON");
+  si->add_option("--integrator", sim.integrator,
+                 "rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler (default: the scene's)");
+  si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy (default: the scene's)")->check(CLI::PositiveNumber);
+  si->add_option("--duration", sim.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);
+  si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(CLI::PositiveNumber);
+  si->add_option("--out", sim.out, "Write history.csv and summary.json here");
+  si->add_flag("--force", sim.force, "Replace files of the same names in --out");
+
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
   try {
@@ -104,6 +116,7 @@ int main(int argc, char** argv) {
   if (cp->parsed()) return runCompareCommand(cmp);
   if (sp->parsed()) return runSweepCommand(sw);
   lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
+  if (si->parsed()) return runSimulateCommand(sim);
   if (fr->parsed()) return runFrfCommand(lin);
   if (ro->parsed()) return runRomCommand(lin);
   return runSceneCommand();

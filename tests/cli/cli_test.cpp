@@ -337,4 +337,40 @@ TEST_F(Cli, LinearModelBadSpecs) {
   EXPECT_EQ(run("frf --band 5:1").code, 64);
 }
 
+TEST_F(Cli, SimulateSlewScene) {
+  const fs::path out = dir_ / "slew";
+  const Result r = run("simulate " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string() +
+                       " --duration 2 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Torques the torquers must give"), std::string::npos);
+  const std::string csv = slurp(out / "history.csv");
+  EXPECT_EQ(csv.rfind("time_s,table_x_m,joint1_angle_deg,joint1_torque_n_m,", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 401);  // header + 2 s at 200 Hz + t = 0
+  EXPECT_EQ(csv.find("nan"), std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(j["integrator"], "cpodes");
+  EXPECT_EQ(j["torques"].size(), 3u);
+  EXPECT_GT(j["torques"][0]["peak_torque_n_m"].get<double>(), 90.0);  // at least the static holding torque
+  EXPECT_GT(j["realizations"].get<int>(), 0);
+}
+
+TEST_F(Cli, SimulateBadInput) {
+  // A sine beyond the table's +-15 cm stroke is refused before anything runs.
+  std::string text = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml");
+  const std::string from = "motion: {type: sine, amplitude: 0.001, frequency_hz: 2.0}";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "motion: {type: sine, amplitude: 0.2, frequency_hz: 2.0}");
+  const fs::path p = write("stroke.yaml", text);
+  const Result r = run("simulate --duration 0.1 " + p.string());
+  EXPECT_EQ(r.code, 65);
+  EXPECT_NE(r.err.find("exceeds the table's +-0.15 m stroke"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  // Above the table's bandwidth: a warning, and the run goes on.
+  text.replace(text.find("amplitude: 0.2, frequency_hz: 2.0"), 33, "amplitude: 0.001, frequency_hz: 20");
+  const Result w = run("simulate --duration 0.05 --segments 2 " + write("fast.yaml", text).string());
+  EXPECT_EQ(w.code, 0) << w.err;
+  EXPECT_NE(w.err.find("above the table's 10 Hz bandwidth"), std::string::npos) << w.err;
+  EXPECT_EQ(run("simulate --integrator leapfrog --duration 0.1").code, 65);
+}
+
 }  // namespace

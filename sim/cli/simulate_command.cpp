@@ -1,0 +1,134 @@
+// mmvlab simulate: a time run of the scene (sim/simulation.hpp).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "article/article_builder.hpp"
+#include "facility/table_programs.hpp"
+#include "sim/cli/commands.hpp"
+#include "sim/cli/output_dir.hpp"
+#include "sim/report.hpp"
+#include "sim/simulation.hpp"
+#include "sim/table.hpp"
+
+namespace mmv::cli {
+namespace {
+
+nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<std::string>& warnings) {
+  nlohmann::ordered_json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "simulate";
+  j["integrator"] = r.integrator;
+  j["accuracy"] = r.accuracy;
+  j["duration_s"] = r.record.rows.empty() ? 0.0 : r.record.rows.back()[0];
+  j["samples"] = r.record.rows.size();
+  auto torques = nlohmann::ordered_json::array();
+  for (const auto& t : r.torques)
+    torques.push_back({{"joint", t.joint},
+                       {"peak_torque_n_m", t.peak_torque_nm},
+                       {"capacity_n_m", t.capacity_nm > 0 ? nlohmann::ordered_json(t.capacity_nm) : nlohmann::ordered_json(nullptr)},
+                       {"exceeded", t.exceeded}});
+  j["torques"] = torques;
+  j["energy"] = {{"initial_j", r.initial_energy_j},
+                 {"final_j", r.final_energy_j},
+                 {"motion_work_j", r.motion_work_j},
+                 {"dissipated_j", r.dissipated_j},
+                 {"balance_error_j", r.energy_balance_error_j}};
+  j["steps"] = r.steps;
+  j["realizations"] = r.realizations;
+  j["wall_time_s"] = r.wall_seconds;
+  j["warnings"] = warnings;
+  return j;
+}
+
+std::string summaryText(const Scene& scene, const SimulationResult& r, const std::vector<std::string>& warnings) {
+  std::ostringstream os;
+  os << scene.name << "  (scene: " << scene.source << ")\n";
+  os << strf("Time run: %.4g s with %s (accuracy %.1e), %zu samples; %d steps, %d realizations, %.2f s wall time\n\n",
+             r.record.rows.empty() ? 0.0 : r.record.rows.back()[0], r.integrator.c_str(), r.accuracy, r.record.rows.size(),
+             r.steps, r.realizations, r.wall_seconds);
+  Table t({"joint", "peak_torque_N*m", "capacity_N*m", "within"});
+  for (const auto& q : r.torques)
+    t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",
+           q.capacity_nm > 0 ? (q.exceeded ? "EXCEEDED" : "yes") : "-"});
+  os << "Torques the torquers must give\n" << t.text();
+  os << strf("\nEnergy: E(0) %.6g J, E(end) %.6g J, work of the commanded motions %.6g J, dissipated %.6g J;\n"
+             "balance error %.3g J (E(end) - E(0) - work + dissipated)\n",
+             r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j);
+  for (const auto& w : warnings) os << "warning: " << w << '\n';
+  return os.str();
+}
+
+std::string historyCsv(const SimulationRecord& rec) {
+  std::ostringstream os;
+  for (std::size_t c = 0; c < rec.columns.size(); ++c) os << (c ? "," : "") << rec.columns[c];
+  os << '\n';
+  for (const auto& row : rec.rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) os << (c ? "," : "") << strf("%.10g", row[c]);
+    os << '\n';
+  }
+  return os.str();
+}
+
+}  // namespace
+
+int runSimulateCommand(const SimulateArgs& args) {
+  return guarded([&] {
+    Scene scene = loadScene(args);
+    if (!args.integrator.empty()) scene.simulation.integrator = args.integrator;
+    if (args.accuracy > 0) scene.simulation.accuracy = args.accuracy;
+    if (args.duration > 0) scene.simulation.duration = args.duration;
+    if (args.sample_rate > 0) scene.simulation.sample_rate_hz = args.sample_rate;
+    std::vector<std::string> warnings;
+    if (scene.article.base.type == BaseType::Table && scene.article.base.motion) {
+      std::shared_ptr<const facility::TableProgram> program;
+      try {
+        program = makeTableProgram(*scene.article.base.motion);
+      } catch (const std::invalid_argument& e) {
+        throw SceneError(e.what());
+      }
+      const facility::ProgramCheck check = facility::checkProgram(*program, {}, scene.simulation.duration);
+      if (!check.within_stroke) throw SceneError(scene.source + ": base.motion: " + check.messages.front());
+      for (const auto& m : check.messages) warnings.push_back(m);
+    }
+    for (const auto& w : warnings) std::cerr << "mmvlab: warning: " << w << '\n';
+    std::unique_ptr<OutputDir> out;
+    if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
+    const bool tty = ::isatty(STDERR_FILENO);
+    const auto start = std::chrono::steady_clock::now();
+    int shown = -1;
+    auto progress = [&](double f) {
+      if (!tty) return;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const int pct = static_cast<int>(100 * f);
+      if (elapsed < 1.0 || pct == shown) return;
+      shown = pct;
+      std::fprintf(stderr, "\r[%-40s] %3d %%", std::string(static_cast<std::size_t>(40 * f), '#').c_str(), pct);
+      if (pct == 100) std::fprintf(stderr, "\n");
+    };
+    SimulationResult r;
+    try {
+      r = simulate(scene, progress);
+    } catch (const std::invalid_argument& e) {  // a facility model refused its command
+      throw SceneError(scene.source + ": " + e.what());
+    }
+    if (shown >= 0 && shown < 100) std::fprintf(stderr, "\n");
+    for (const auto& t : r.torques)
+      if (t.exceeded)
+        warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
+                           strf("%.4g", t.capacity_nm) + " N*m");
+    if (out) {
+      std::ofstream(out->stage("history.csv"), std::ios::binary) << historyCsv(r.record);
+      std::ofstream(out->stage("summary.json"), std::ios::binary) << summaryJson(r, warnings).dump(2) << '\n';
+      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+    }
+    std::cout << (args.json ? summaryJson(r, warnings).dump(2) + "\n" : summaryText(scene, r, warnings)) << std::flush;
+    return kOk;
+  });
+}
+
+}  // namespace mmv::cli
