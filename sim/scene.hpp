@@ -3,7 +3,9 @@
 /// radians), read from YAML (docs/scene-format.md). No Simbody here.
 
 #include <array>
+#include <cstdint>
 #include <optional>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +34,17 @@ struct SimulationSpec {
   bool from_equilibrium = true; ///< start at the static equilibrium, else at the scene's angles at rest.
 };
 
+/// A sensor recorded in time runs (facility/sensors.hpp for the models).
+struct SensorSceneSpec {
+  std::string name;
+  std::string type;    ///< encoder, rate_gyro, accelerometer.
+  std::string target;  ///< joint (encoder) or named point (gyro, accelerometer).
+  int axis = 0;        ///< accelerometer: 0 along the link (body x), 1 across it (body y).
+  double noise_sigma = 0;  ///< in the measured unit; 0: none.
+  std::uint64_t seed = 1;
+  std::string where;   ///< file:line:col, for errors found later.
+};
+
 struct Scene {
   std::string name;
   std::string source;  ///< file the scene came from, or "<default scene>".
@@ -39,6 +52,7 @@ struct Scene {
   ArticleSpec article;
   std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
   SimulationSpec simulation;
+  std::vector<SensorSceneSpec> sensors;
 };
 
 /// Bad scene content. what() is one line: "file:line:col: what is wrong (got X)".

@@ -217,7 +217,7 @@ class SceneParser {
     if (!root.IsDefined() || root.IsNull())
       r_.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
-                                     "links", "closures", "loads", "damping", "simulation"});
+                                     "links", "closures", "loads", "damping", "simulation", "sensors"});
     Scene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -239,6 +239,7 @@ class SceneParser {
     if (top.count("loads")) readLoads(top.at("loads"), a);
     if (top.count("damping")) scene.damping = readDamping(top.at("damping"));
     if (top.count("simulation")) scene.simulation = readSimulation(top.at("simulation"));
+    if (top.count("sensors")) readSensors(top.at("sensors"), scene);
     return scene;
   }
 
@@ -270,6 +271,41 @@ class SceneParser {
       if (it->first.IsScalar()) keys.push_back(it->first.Scalar());
     if (keys.empty()) r_.fail(n.Mark(), path + " must name at least one entry");
     return keys;
+  }
+
+  void readSensors(const YAML::Node& n, Scene& scene) {
+    const std::size_t count = r_.sequence(n, "sensors");
+    for (std::size_t i = 0; i < count; ++i) {
+      const YAML::Node& sn = n[i];
+      const std::string path = "sensors[" + std::to_string(i) + "]";
+      auto m = r_.mapping(sn, path, {"name", "type", "joint", "point", "axis", "noise_sigma", "seed"});
+      SensorSceneSpec s;
+      s.name = r_.text(r_.require(m, sn, path, "name"), path + ".name");
+      const YAML::Node& tn = r_.require(m, sn, path, "type");
+      s.type = r_.text(tn, path + ".type");
+      if (s.type == "encoder") {
+        const YAML::Node& jn = r_.require(m, sn, path, "joint");
+        s.target = r_.text(jn, path + ".joint");
+        r_.known(jn, path + ".joint", "joint", s.target, scene.article.joints);
+        if (m.count("point") || m.count("axis")) r_.fail(sn.Mark(), path + ": an encoder reads a joint, not a point or axis");
+      } else if (s.type == "rate_gyro" || s.type == "accelerometer") {
+        s.target = point(r_.require(m, sn, path, "point"), path + ".point", scene.article);
+        if (m.count("joint")) r_.fail(m.at("joint").Mark(), path + ".joint applies only to encoders");
+        if (m.count("axis")) {
+          if (s.type != "accelerometer") r_.fail(m.at("axis").Mark(), path + ".axis applies only to accelerometers");
+          const std::string a = r_.text(m.at("axis"), path + ".axis");
+          if (a != "axial" && a != "transverse")
+            r_.fail(m.at("axis").Mark(), path + ".axis: unknown axis '" + a + "' (known: axial, transverse)");
+          s.axis = a == "transverse";
+        }
+      } else {
+        r_.fail(tn.Mark(), path + ".type: unknown sensor '" + s.type + "' (known: encoder, rate_gyro, accelerometer)");
+      }
+      if (m.count("noise_sigma")) s.noise_sigma = r_.nonNegative(m.at("noise_sigma"), path + ".noise_sigma", "");
+      if (m.count("seed")) s.seed = static_cast<std::uint64_t>(r_.integer(m.at("seed"), path + ".seed"));
+      s.where = where(sn);
+      scene.sensors.push_back(s);
+    }
   }
 
   SimulationSpec readSimulation(const YAML::Node& n) {

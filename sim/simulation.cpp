@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "article/article_builder.hpp"
+#include "facility/sensors.hpp"
 #include "sim/statics.hpp"
 
 namespace mmv {
@@ -84,6 +85,40 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
       cols.push_back(p.name + "_x_m");
       cols.push_back(p.name + "_y_m");
     }
+  // Sensors: true signal -> facility model -> column.
+  struct Live {
+    facility::Sensor model;
+    int joint = -1;             // encoder
+    const NamedPoint* point = nullptr;  // gyro, accelerometer
+    int axis = 0;
+    bool gyro = false;
+  };
+  std::vector<Live> sensors;
+  for (const auto& ss : scene.sensors) {
+    facility::SensorSpec fs = ss.type == "encoder" ? facility::encoderSpec()
+                              : ss.type == "rate_gyro" ? facility::rateGyroSpec()
+                                                       : facility::accelerometerSpec();
+    fs.noise_sigma = ss.noise_sigma;
+    fs.seed = ss.seed;
+    if (std::max(fs.high_cut_hz, fs.low_cut_hz) >= 0.5 * spec.sample_rate_hz)
+      throw SceneError(ss.where + ": sensor '" + ss.name + "' has a band edge at " + std::to_string(fs.high_cut_hz) +
+                       " Hz: simulation.sample_rate_hz must be above twice that (got " +
+                       std::to_string(spec.sample_rate_hz) + ")");
+    Live live{facility::Sensor(fs, spec.sample_rate_hz)};
+    if (ss.type == "encoder") {
+      for (int i = 0; i < model->getNumCoordinates(); ++i)
+        if (model->getCoordinates()[i].name == ss.target) live.joint = i;
+    } else {
+      live.point = model->findPoint(ss.target);
+    }
+    if (live.joint < 0 && !live.point) throw SceneError(ss.where + ": sensor '" + ss.name + "': '" + ss.target + "' does not exist in the model");
+    live.axis = ss.axis;
+    live.gyro = ss.type == "rate_gyro";
+    const char* unit = ss.type == "encoder" ? "rad" : ss.type == "rate_gyro" ? "rad_per_s" : "m_per_s2";
+    cols.push_back(ss.name + "_" + unit);
+    r.sensors.push_back({ss.name, ss.type, unit, 0, 0});
+    sensors.push_back(std::move(live));
+  }
   for (int j : joints) {
     JointTorqueSummary t;
     t.joint = model->getCoordinates()[j].name;
@@ -127,6 +162,22 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
       row.push_back(x[0]);
       row.push_back(x[1]);
     }
+    for (auto& live : sensors) {
+      double truth;
+      if (live.joint >= 0) {
+        truth = st.getQ()[model->getQIndex(live.joint)];
+      } else {
+        const SimTK::MobilizedBody& mb = matter.getMobilizedBody(live.point->mobod);
+        if (live.gyro) {
+          truth = mb.getBodyAngularVelocity(st)[2];
+        } else {
+          const SimTK::Vec3 a_W = mb.findStationAccelerationInGround(st, live.point->station_B);
+          const SimTK::Vec3 f_B = mb.getBodyRotation(st).transpose() * (a_W - model->getGravity());
+          truth = f_B[live.axis];
+        }
+      }
+      row.push_back(live.model.sample(truth));
+    }
     for (double v : row)
       if (!std::isfinite(v))
         throw NumericalError("non-finite state at t = " + std::to_string(t) + " s (" + spec.integrator + ", accuracy " +
@@ -147,6 +198,10 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     if (progress) progress(double(k) / n);
   }
   for (auto& t : r.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    r.sensors[i].saturated_samples = sensors[i].model.saturatedSamples();
+    r.sensors[i].samples = sensors[i].model.samples();
+  }
   r.energy_balance_error_j = (r.final_energy_j - r.initial_energy_j) - (r.motion_work_j - r.dissipated_j);
   r.steps = integ->getNumStepsTaken();
   r.realizations = integ->getNumRealizations();

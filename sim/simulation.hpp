@@ -13,6 +13,12 @@
 /// only linearly where a command's acceleration jumps, as in a trapezoidal slew --
 /// raise the sample rate there), steps, realizations, and wall time.
 ///
+/// Sensors (scene `sensors:`; facility/sensors.hpp) are sampled at the sample rate:
+/// an encoder reads its joint's angle (rad), a rate gyro the angular rate about z of
+/// the body carrying its point (rad/s), an accelerometer the specific force (a - g) at
+/// its point along the carrying body's x (axial) or y (transverse) axis (m/s^2). Each
+/// adds a column `<name>_<unit>` and a saturation count.
+///
 /// Integrators: "rk_merson" (default), "rk_feldberg", "rk3", "rk2", "cpodes" (BDF,
 /// for stiff models), "verlet", "semi_explicit_euler2", "explicit_euler".
 
@@ -36,8 +42,14 @@ struct JointTorqueSummary {
   bool exceeded = false;
 };
 
+struct SensorSummary {
+  std::string name, type, unit;
+  int saturated_samples = 0, samples = 0;
+};
+
 struct SimulationResult {
   SimulationRecord record;
+  std::vector<SensorSummary> sensors;
   std::vector<JointTorqueSummary> torques;
   double initial_energy_j = 0, final_energy_j = 0;
   double motion_work_j = 0, dissipated_j = 0;

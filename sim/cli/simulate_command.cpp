@@ -33,6 +33,11 @@ nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<
                        {"capacity_n_m", t.capacity_nm > 0 ? nlohmann::ordered_json(t.capacity_nm) : nlohmann::ordered_json(nullptr)},
                        {"exceeded", t.exceeded}});
   j["torques"] = torques;
+  auto sensors = nlohmann::ordered_json::array();
+  for (const auto& s : r.sensors)
+    sensors.push_back({{"name", s.name}, {"type", s.type}, {"unit", s.unit}, {"saturated_samples", s.saturated_samples},
+                       {"samples", s.samples}});
+  j["sensors"] = sensors;
   j["energy"] = {{"initial_j", r.initial_energy_j},
                  {"final_j", r.final_energy_j},
                  {"motion_work_j", r.motion_work_j},
@@ -56,6 +61,12 @@ std::string summaryText(const Scene& scene, const SimulationResult& r, const std
     t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",
            q.capacity_nm > 0 ? (q.exceeded ? "EXCEEDED" : "yes") : "-"});
   os << "Torques the torquers must give\n" << t.text();
+  if (!r.sensors.empty()) {
+    Table st({"sensor", "type", "unit", "saturated_samples"});
+    for (const auto& s : r.sensors)
+      st.add({s.name, s.type, s.unit, strf("%d of %d", s.saturated_samples, s.samples)});
+    os << "\nSensors\n" << st.text();
+  }
   os << strf("\nEnergy: E(0) %.6g J, E(end) %.6g J, work of the commanded motions %.6g J, dissipated %.6g J;\n"
              "balance error %.3g J (E(end) - E(0) - work + dissipated)\n",
              r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j);
@@ -117,6 +128,10 @@ int runSimulateCommand(const SimulateArgs& args) {
       throw SceneError(scene.source + ": " + e.what());
     }
     if (shown >= 0 && shown < 100) std::fprintf(stderr, "\n");
+    for (const auto& s : r.sensors)
+      if (s.saturated_samples > 0)
+        warnings.push_back("sensor " + s.name + " saturated in " + std::to_string(s.saturated_samples) + " of " +
+                           std::to_string(s.samples) + " samples");
     for (const auto& t : r.torques)
       if (t.exceeded)
         warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +

@@ -190,6 +190,22 @@ TEST(SceneYaml, DampingAndTable) {
             "s.yaml:3:70: base.motion.frequency_hz must be > 0 Hz (got 0)");
 }
 
+TEST(SceneYaml, Sensors) {
+  const std::string good = std::string(kGood) +
+                           "sensors:\n  - {name: e1, type: encoder, joint: j1}\n"
+                           "  - {name: a1, type: accelerometer, point: l1.tip, axis: transverse, noise_sigma: 0.01}\n";
+  const Scene s = parseScene(good, "s.yaml");
+  ASSERT_EQ(s.sensors.size(), 2u);
+  EXPECT_EQ(s.sensors[1].axis, 1);
+  EXPECT_EQ(errorOf(std::string(kGood) + "sensors:\n  - {name: g, type: rate_gyro, point: l7.tip}\n"),
+            "s.yaml:29:39: sensors[0].point: unknown point 'l7.tip' (points are <joint>, <link>.root, <link>.tip and "
+            "<link>.h1 .. <link>.h<segments>)");
+  EXPECT_NE(errorOf(std::string(kGood) + "sensors:\n  - {name: x, type: lidar, point: l1.tip}\n").find("unknown sensor 'lidar'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(std::string(kGood) + "sensors:\n  - {name: e, type: encoder, joint: j9}\n").find("unknown joint 'j9'"),
+            std::string::npos);
+}
+
 TEST(SceneYaml, EmptyScene) {
   EXPECT_EQ(errorOf(""), "s.yaml:1:1: the scene is empty (expected a mapping with 'links' and 'joints')");
 }
