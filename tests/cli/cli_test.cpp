@@ -345,7 +345,7 @@ TEST_F(Cli, SimulateSlewScene) {
   EXPECT_NE(r.out.find("Torques the torquers must give"), std::string::npos);
   const std::string csv = slurp(out / "history.csv");
   EXPECT_EQ(csv.rfind("time_s,table_x_m,joint1_angle_deg,joint1_torque_n_m,", 0), 0u);
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 401);  // header + 2 s at 200 Hz + t = 0
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 1001);  // header + 2 s at 500 Hz + t = 0
   EXPECT_EQ(csv.find("nan"), std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(j["integrator"], "cpodes");
