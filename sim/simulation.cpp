@@ -6,6 +6,7 @@
 
 #include "article/article_builder.hpp"
 #include "facility/sensors.hpp"
+#include "sim/external_stepper.hpp"
 #include "sim/statics.hpp"
 
 namespace mmv {
@@ -22,7 +23,8 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const
   if (name == "semi_explicit_euler2") return std::make_unique<SimTK::SemiExplicitEuler2Integrator>(sys);
   if (name == "explicit_euler") return std::make_unique<SimTK::ExplicitEulerIntegrator>(sys);
   throw SceneError(source + ": unknown integrator '" + name +
-                   "' (known: rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler)");
+                   "' (known: rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler, "
+                   "cvode_bdf, cvode_adams)");
 }
 
 /// Power dissipated by the dampers, sum c u^2 (W).
@@ -53,12 +55,22 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   }
   s.updU() = 0;
   s.setTime(0);
-  auto integ = makeIntegrator(spec.integrator, sys, scene.source);
-  integ->setAccuracy(spec.accuracy);
-  integ->setInternalStepLimit(1000000);
-  integ->setReturnEveryInternalStep(false);
-  SimTK::TimeStepper stepper(sys, *integ);
-  stepper.initialize(s);
+  // Simbody's integrators through a TimeStepper, or SUNDIALS CVODE.
+  std::unique_ptr<SimTK::Integrator> integ;
+  std::unique_ptr<SimTK::TimeStepper> stepper;
+  std::unique_ptr<ExternalStepper> cvode;
+  if (spec.integrator == "cvode_bdf" || spec.integrator == "cvode_adams") {
+    cvode = makeCvodeStepper(sys, spec.integrator == "cvode_bdf", spec.accuracy);
+    std::string error;
+    if (!cvode->initialize(s, error)) throw NumericalError(error);
+  } else {
+    integ = makeIntegrator(spec.integrator, sys, scene.source);
+    integ->setAccuracy(spec.accuracy);
+    integ->setInternalStepLimit(1000000);
+    integ->setReturnEveryInternalStep(false);
+    stepper = std::make_unique<SimTK::TimeStepper>(sys, *integ);
+    stepper->initialize(s);
+  }
 
   SimulationResult r;
   r.integrator = spec.integrator;
@@ -132,9 +144,14 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   double last_motion_power = 0, last_dissipation = 0;
   for (int k = 0; k <= n; ++k) {
     const double t = spec.duration * k / n;
-    if (k > 0) {
+    if (k > 0 && cvode) {
+      std::string error;  // names the CVODE flag
+      if (!cvode->stepTo(t, error)) throw NumericalError(error);
+    } else if (k > 0) {
       try {
-        stepper.stepTo(t);
+        stepper->stepTo(t);
+      } catch (const NumericalError&) {
+        throw;
       } catch (const std::exception& e) {
         throw NumericalError("integration failed at t = " + std::to_string(integ->getTime()) + " s: " + e.what());
       }
@@ -142,7 +159,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
         throw NumericalError("the " + spec.integrator + " integrator stopped at t = " + std::to_string(integ->getTime()) +
                              " s: " + SimTK::Integrator::getTerminationReasonString(integ->getTerminationReason()));
     }
-    const SimTK::State& st = integ->getState();
+    const SimTK::State& st = cvode ? cvode->state() : integ->getState();
     sys.realize(st, SimTK::Stage::Acceleration);
     SimTK::Vector motion_forces;
     matter.findMotionForces(st, motion_forces);
@@ -203,8 +220,8 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     r.sensors[i].samples = sensors[i].model.samples();
   }
   r.energy_balance_error_j = (r.final_energy_j - r.initial_energy_j) - (r.motion_work_j - r.dissipated_j);
-  r.steps = integ->getNumStepsTaken();
-  r.realizations = integ->getNumRealizations();
+  r.steps = cvode ? static_cast<int>(cvode->steps()) : integ->getNumStepsTaken();
+  r.realizations = cvode ? static_cast<int>(cvode->evaluations()) : integ->getNumRealizations();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -19,8 +19,11 @@
 /// its point along the carrying body's x (axial) or y (transverse) axis (m/s^2). Each
 /// adds a column `<name>_<unit>` and a saturation count.
 ///
-/// Integrators: "rk_merson" (default), "rk_feldberg", "rk3", "rk2", "cpodes" (BDF,
-/// for stiff models), "verlet", "semi_explicit_euler2", "explicit_euler".
+/// Integrators: Simbody's "rk_merson" (default), "rk_feldberg", "rk3", "rk2",
+/// "cpodes" (BDF, for stiff models), "verlet", "semi_explicit_euler2",
+/// "explicit_euler"; and SUNDIALS CVODE's "cvode_bdf" (dense Newton, stiff) and
+/// "cvode_adams" (fixed point, non-stiff) on the same model (sim/cvode_integrator.hpp).
+/// For CVODE "realizations" counts right-hand-side evaluations.
 
 #include <functional>
 #include <string>

@@ -1,0 +1,38 @@
+#pragma once
+/// SUNDIALS CVODE on a Simbody system: y = Simbody's Y (q, u, z), y' = f(t, y) from
+/// realizing a State to Acceleration after applying the prescribed motions (slews, the
+/// table). BDF with a dense Newton solver (stiff models) or Adams with fixed-point
+/// iteration (non-stiff). Every SUNDIALS object is owned by an RAII handle and every
+/// return code is checked: a failure throws NumericalError naming the CVODE flag
+/// (CV_TOO_MUCH_WORK: too many steps; CV_ERR_FAILURE / CV_CONV_FAILURE: the step size
+/// underflowed on error-test or convergence failures; ...) and the time.
+
+#include <memory>
+#include <string>
+
+#include <Simbody.h>
+
+namespace mmv {
+
+class CvodeIntegrator {
+ public:
+  enum class Method { Bdf, Adams };
+  CvodeIntegrator(const SimTK::MultibodySystem& system, Method method, double relative_tolerance);
+  ~CvodeIntegrator();
+  CvodeIntegrator(const CvodeIntegrator&) = delete;
+  CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
+
+  void initialize(const SimTK::State& s);
+  /// Advances to time t (> the current time); the state is then realized to Acceleration.
+  void stepTo(double t);
+  const SimTK::State& getState() const { return state_; }
+  long steps() const;
+  long rhsEvaluations() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  SimTK::State state_;
+};
+
+}  // namespace mmv

@@ -1,0 +1,40 @@
+#include "sim/external_stepper.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <climits>
+#include <filesystem>
+
+#include "sim/statics.hpp"
+
+namespace mmv {
+
+std::unique_ptr<ExternalStepper> makeCvodeStepper(const SimTK::MultibodySystem& system, bool bdf, double rtol) {
+  // Next to the executable first, then where the build put it.
+  std::vector<std::string> candidates;
+  char exe[PATH_MAX];
+  const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n > 0) {
+    exe[n] = '\0';
+    candidates.push_back((std::filesystem::path(exe).parent_path() / "libmmvlab_cvode.so").string());
+  }
+#ifdef MMVLAB_CVODE_PLUGIN
+  candidates.push_back(MMVLAB_CVODE_PLUGIN);
+#endif
+  std::string tried;
+  for (const auto& path : candidates) {
+    // Loaded once per process and kept: the steppers it creates run its code.
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+    if (!handle) {
+      tried += (tried.empty() ? "" : "; ") + path + " (" + ::dlerror() + ")";
+      continue;
+    }
+    auto create = reinterpret_cast<CreateStepper>(::dlsym(handle, "mmv_create_cvode_stepper"));
+    if (!create) throw NumericalError(path + ": no mmv_create_cvode_stepper");
+    return std::unique_ptr<ExternalStepper>(create(&system, bdf ? 1 : 0, rtol));
+  }
+  throw NumericalError("the CVODE integrators need libmmvlab_cvode.so: tried " + tried);
+}
+
+}  // namespace mmv
