@@ -144,8 +144,9 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
   // Ticks: decades with 2 and 5 between (log axes), "nice" steps (linear axes).
   auto logTicks = [&](double a0, double a1, const std::function<void(double, bool)>& f) {
     const bool short_range = a1 - a0 < 3;
+    const std::vector<double> mult = a1 - a0 < 1 ? std::vector<double>{1, 1.5, 2, 3, 5, 7} : std::vector<double>{1, 2, 5};
     for (int e = static_cast<int>(std::floor(a0)); e <= static_cast<int>(std::ceil(a1)); ++e)
-      for (double m : {1.0, 2.0, 5.0}) {
+      for (double m : mult) {
         const double v = std::log10(m) + e;
         if (v >= a0 && v <= a1) f(v, m == 1.0 || short_range);
       }
@@ -190,14 +191,25 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
   for (std::size_t k = 0; k < series.size(); ++k) {
     const auto& s = series[k];
     const cv::Scalar colour = colourFor(series.size() > 1 ? 0.85 * double(k) / (series.size() - 1) : 0.3);
-    for (std::size_t i = 1; i < s.x.size(); ++i) {
+    for (std::size_t i = 1; i < s.x.size() && !s.markers_only; ++i) {
       if (!usable(s.x[i - 1], s.y[i - 1]) || !usable(s.x[i], s.y[i])) continue;
-      if (s.dashed && i % 2 == 0) continue;
-      cv::line(img, {px(s.x[i - 1]), py(s.y[i - 1])}, {px(s.x[i]), py(s.y[i])}, colour, 2, cv::LINE_AA);
+      const cv::Point a(px(s.x[i - 1]), py(s.y[i - 1])), b(px(s.x[i]), py(s.y[i]));
+      if (!s.dashed) {
+        cv::line(img, a, b, colour, 2, cv::LINE_AA);
+        continue;
+      }
+      // Dashes of 8 px with 6 px gaps along the segment.
+      const double len = std::hypot(b.x - a.x, b.y - a.y);
+      for (double d = 0; d < len; d += 14) {
+        const double e = std::min(len, d + 8);
+        const cv::Point p0(a.x + (b.x - a.x) * d / len, a.y + (b.y - a.y) * d / len);
+        const cv::Point p1(a.x + (b.x - a.x) * e / len, a.y + (b.y - a.y) * e / len);
+        cv::line(img, p0, p1, colour, 2, cv::LINE_AA);
+      }
     }
-    if (s.x.size() < 80)
+    if (s.x.size() < 80 || s.markers_only)
       for (std::size_t i = 0; i < s.x.size(); ++i)
-        if (usable(s.x[i], s.y[i])) cv::circle(img, {px(s.x[i]), py(s.y[i])}, 3, colour, cv::FILLED, cv::LINE_AA);
+        if (usable(s.x[i], s.y[i])) cv::circle(img, {px(s.x[i]), py(s.y[i])}, s.markers_only ? 5 : 3, colour, cv::FILLED, cv::LINE_AA);
     const int ly = top + 10 + 22 * static_cast<int>(k);
     if (legend && ly < top + ph) {
       cv::line(img, {left + pw + 15, ly - 4}, {left + pw + 40, ly - 4}, colour, 2);
@@ -209,9 +221,9 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
 }  // namespace
 
 void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
-                      const std::string& x_label, const std::string& y_label, bool log_y) {
+                      const std::string& x_label, const std::string& y_label, bool log_y, bool log_x) {
   cv::Mat img(600, 900, CV_8UC3, kWhite);
-  drawPanel(img, cv::Rect(90, 50, 900 - 90 - 200, 600 - 50 - 70), series, title, x_label, y_label, false, log_y, true);
+  drawPanel(img, cv::Rect(90, 50, 900 - 90 - 200, 600 - 50 - 70), series, title, x_label, y_label, log_x, log_y, true);
   save(path, img);
 }
 

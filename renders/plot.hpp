@@ -20,11 +20,12 @@ struct Series {
   std::string label;
   std::vector<double> x, y;  ///< equal lengths; non-finite points break the line.
   bool dashed = false;
+  bool markers_only = false;  ///< points without connecting lines.
 };
 
 /// Line plot of several series with axes, ticks, labels and a legend.
 void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
-                      const std::string& x_label, const std::string& y_label, bool log_y = false);
+                      const std::string& x_label, const std::string& y_label, bool log_y = false, bool log_x = false);
 
 struct BodeTrace {
   std::string label;

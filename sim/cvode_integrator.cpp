@@ -159,9 +159,11 @@ long CvodeIntegrator::steps() const {
 }
 
 long CvodeIntegrator::rhsEvaluations() const {
-  long n = 0;
+  long n = 0, jac = 0;
   CVodeGetNumRhsEvals(impl_->mem.p, &n);
-  return n;
+  // The dense Newton solver's difference-quotient Jacobians cost evaluations too.
+  if (impl_->method == Method::Bdf) CVodeGetNumLinRhsEvals(impl_->mem.p, &jac);
+  return n + jac;
 }
 
 }  // namespace mmv

@@ -27,7 +27,7 @@ class CvodeIntegrator {
   void stepTo(double t);
   const SimTK::State& getState() const { return state_; }
   long steps() const;
-  long rhsEvaluations() const;
+  long rhsEvaluations() const;  ///< including the Jacobians' difference quotients (BDF)
 
  private:
   struct Impl;

@@ -92,7 +92,19 @@ struct SimulateArgs : SceneArgs {
   bool force = false;
 };
 
+struct TradeArgs : SceneArgs {
+  bool json = false;
+  std::vector<std::string> integrators;
+  std::vector<double> accuracies;
+  std::vector<int> segments_ladder;
+  double duration = 0;
+  double target_error = 1e-4;  ///< m
+  std::string out;
+  bool force = false;
+};
+
 int runModesCommand(const ModesArgs& args);
+int runTradeCommand(const TradeArgs& args);
 int runSimulateCommand(const SimulateArgs& args);
 int runFrfCommand(const LinearArgs& args);
 int runRomCommand(const LinearArgs& args);

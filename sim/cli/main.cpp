@@ -103,6 +103,21 @@ int main(int argc, char** argv) {
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");
   si->add_flag("--force", sim.force, "Replace files of the same names in --out");
 
+  TradeArgs tr;
+  CLI::App* tp = app.add_subcommand("trade", "Speed-accuracy trade of a time run: integrators x tolerances, segments");
+  addSceneOptions(tp, tr);
+  tp->add_flag("--json", tr.json, "Print JSON instead of tables");
+  tp->add_option("--integrators", tr.integrators, "Comma-separated (default rk_merson,rk3,cpodes,cvode_bdf,cvode_adams)")
+      ->delimiter(',');
+  tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
+  tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
+  tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);
+  tp->add_option("--target-error", tr.target_error, "Error to meet, m (the cheapest run within it is named)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  tp->add_option("--out", tr.out, "Write trade.csv, trade.json and trade.png here");
+  tp->add_flag("--force", tr.force, "Replace files of the same names in --out");
+
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
   try {
@@ -117,6 +132,7 @@ int main(int argc, char** argv) {
   if (sp->parsed()) return runSweepCommand(sw);
   lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
   if (si->parsed()) return runSimulateCommand(sim);
+  if (tp->parsed()) return runTradeCommand(tr);
   if (fr->parsed()) return runFrfCommand(lin);
   if (ro->parsed()) return runRomCommand(lin);
   return runSceneCommand();

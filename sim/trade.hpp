@@ -1,0 +1,48 @@
+#pragma once
+/// The speed-accuracy trade of a time run: every integrator over a ladder of
+/// tolerances, and the segments per link over a ladder, against a tight reference.
+///
+/// Error: the largest distance, over the samples and the link tips, between a run's
+/// tip positions and the reference's (m). The reference is CPodes at accuracy 1e-10;
+/// CVODE BDF at 1e-10 is run too, and their largest difference is the reference's own
+/// uncertainty (errors below it cannot be told apart). Cost: wall-clock CPU seconds and
+/// right-hand-side evaluations (realizations). A run is on the Pareto front when no
+/// other run is both cheaper and more accurate. A run that fails is listed with its
+/// diagnostic instead of numbers.
+
+#include <string>
+#include <vector>
+
+#include "sim/scene.hpp"
+
+namespace mmv {
+
+struct TradeRun {
+  std::string integrator;
+  double accuracy = 0;
+  int segments = 0;  ///< 0: the scene's.
+  bool ok = true;
+  std::string failure;
+  double error_m = 0, seconds = 0;
+  long evaluations = 0;
+  bool pareto = false;
+};
+
+struct TradeOptions {
+  std::vector<std::string> integrators{"rk_merson", "rk3", "cpodes", "cvode_bdf", "cvode_adams"};
+  std::vector<double> accuracies{1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+  std::vector<int> segments{2, 4, 8};  ///< with the reference integrator at 1e-8 (compared to the scene's segments).
+  double duration = 0;  ///< 0: the scene's.
+};
+
+struct TradeStudy {
+  std::string scene_name;
+  double duration = 0;
+  double reference_uncertainty_m = 0;
+  double reference_seconds = 0;
+  std::vector<TradeRun> runs;
+};
+
+TradeStudy runTrade(const Scene& scene, const TradeOptions& options);
+
+}  // namespace mmv
