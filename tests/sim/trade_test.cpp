@@ -1,0 +1,47 @@
+#include "sim/trade.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace mmv {
+namespace {
+
+// A short flexible slew: for each integrator the error against the reference falls as
+// the accuracy tightens by 1e3, the reference is far more certain than the errors, and
+// the Pareto front is the set of runs no other run dominates.
+TEST(Trade, ErrorsFallWithAccuracyAndTheFrontIsNonDominated) {
+  Scene s = loadDefaultScene();
+  overrideSegments(s, 2);
+  SlewSpec sl;
+  sl.to = 45 * M_PI / 180;
+  s.article.joints[1].slew = sl;
+  s.simulation.duration = 0.8;
+  s.simulation.sample_rate_hz = 50;
+  TradeOptions o;
+  o.integrators = {"rk_merson", "cpodes", "cvode_bdf"};
+  o.accuracies = {1e-3, 1e-6};
+  o.segments = {1};
+  const TradeStudy t = runTrade(s, o);
+  ASSERT_EQ(t.runs.size(), 7u);
+  EXPECT_LT(t.reference_uncertainty_m, 1e-6);
+  for (std::size_t i = 0; i < 6; i += 2) {
+    ASSERT_TRUE(t.runs[i].ok && t.runs[i + 1].ok) << t.runs[i].failure << t.runs[i + 1].failure;
+    EXPECT_LT(t.runs[i + 1].error_m, t.runs[i].error_m) << t.runs[i].integrator;
+    EXPECT_GT(t.runs[i].error_m, t.reference_uncertainty_m);
+  }
+  int front = 0;
+  for (const auto& a : t.runs) {
+    if (!a.pareto) continue;
+    ++front;
+    for (const auto& b : t.runs)
+      if (b.ok && !b.segments && &a != &b)
+        EXPECT_FALSE(b.seconds < a.seconds && b.error_m < a.error_m) << a.integrator << " is dominated by " << b.integrator;
+  }
+  EXPECT_GE(front, 1);
+  EXPECT_EQ(t.runs.back().segments, 1);  // the segment ladder: 1 segment against the scene's 2
+  EXPECT_GT(t.runs.back().error_m, t.runs[1].error_m);
+}
+
+}  // namespace
+}  // namespace mmv
