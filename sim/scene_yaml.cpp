@@ -313,7 +313,11 @@ class SceneParser {
     SimulationSpec s;
     if (m.count("duration")) s.duration = r_.positive(m.at("duration"), "simulation.duration", " s");
     if (m.count("integrator")) s.integrator = r_.text(m.at("integrator"), "simulation.integrator");
-    if (m.count("accuracy")) s.accuracy = r_.positive(m.at("accuracy"), "simulation.accuracy", "");
+    if (m.count("accuracy")) {
+      s.accuracy = r_.positive(m.at("accuracy"), "simulation.accuracy", "");
+      if (s.accuracy >= 1)
+        r_.fail(m.at("accuracy").Mark(), "simulation.accuracy must be below 1 (a relative accuracy; got " + m.at("accuracy").Scalar() + ")");
+    }
     if (m.count("sample_rate_hz")) s.sample_rate_hz = r_.positive(m.at("sample_rate_hz"), "simulation.sample_rate_hz", " Hz");
     if (m.count("start")) {
       const std::string st = r_.text(m.at("start"), "simulation.start");

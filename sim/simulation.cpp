@@ -1,7 +1,9 @@
 #include "sim/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "article/article_builder.hpp"
@@ -43,6 +45,9 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   if (!scene.article.closures.empty())
     throw SceneError(scene.source + ": time runs of closed trees (closures) are not supported yet");
   const SimulationSpec& spec = scene.simulation;
+  // Simbody asserts (and aborts) outside (0, 1); say so instead.
+  if (!(spec.accuracy > 0 && spec.accuracy < 1))
+    throw SceneError(scene.source + ": simulation accuracy must be in (0, 1) (got " + std::to_string(spec.accuracy) + ")");
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
   const SimTK::MultibodySystem& sys = model->getSystem();
@@ -211,6 +216,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     last_motion_power = motion_power;
     last_dissipation = diss;
     r.final_energy_j = energy(st);
+    r.peak_kinetic_energy_j = std::max(r.peak_kinetic_energy_j, matter.calcKineticEnergy(st));
     r.record.rows.push_back(std::move(row));
     if (progress) progress(double(k) / n);
   }
@@ -224,6 +230,21 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   r.realizations = cvode ? static_cast<int>(cvode->evaluations()) : integ->getNumRealizations();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+double energyScale(const SimulationResult& r) {
+  return std::max({r.peak_kinetic_energy_j, std::abs(r.motion_work_j), std::abs(r.dissipated_j)});
+}
+
+std::string energyBalanceWarning(const SimulationResult& r) {
+  const double scale = energyScale(r), err = std::abs(r.energy_balance_error_j);
+  if (err <= 0.01 * scale || (scale == 0 && err == 0)) return {};
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "energy balance error %.3g J is %.3g %% of the run's energy scale %.3g J: the run is not accurate "
+                "(tighten the accuracy, %.1e; for a trapezoidal slew also raise the sample rate)",
+                err, scale > 0 ? 100 * err / scale : 100.0, scale, r.accuracy);
+  return buf;
 }
 
 }  // namespace mmv

@@ -57,6 +57,7 @@ struct SimulationResult {
   double initial_energy_j = 0, final_energy_j = 0;
   double motion_work_j = 0, dissipated_j = 0;
   double energy_balance_error_j = 0;  ///< (E_end - E_0) - (W - D).
+  double peak_kinetic_energy_j = 0;   ///< largest kinetic energy at a sample.
   std::string integrator;
   double accuracy = 0;
   int steps = 0, realizations = 0;
@@ -68,5 +69,15 @@ struct SimulationResult {
 /// integrator) or NumericalError (the integrator gave up: step size too small, too many
 /// steps, or a non-finite state; the message names it and the time).
 SimulationResult simulate(const Scene& scene, const std::function<void(double)>& progress = {});
+
+/// The energy scale a balance error is judged against: the largest of the peak kinetic
+/// energy, |work of the motions| and the dissipation (potential energy has no natural
+/// zero). 0 when nothing moved.
+double energyScale(const SimulationResult& r);
+
+/// A warning when |energy balance error| exceeds 1 % of energyScale(r): the run is not
+/// accurate enough to trust (loosen no further; tighten the accuracy or, for a
+/// trapezoidal slew, raise the sample rate the balance is integrated at). Empty if fine.
+std::string energyBalanceWarning(const SimulationResult& r);
 
 }  // namespace mmv

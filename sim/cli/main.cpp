@@ -97,7 +97,14 @@ int main(int argc, char** argv) {
   si->add_flag("--json", sim.json, "Print the summary as JSON");
   si->add_option("--integrator", sim.integrator,
                  "rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler (default: the scene's)");
-  si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy (default: the scene's)")->check(CLI::PositiveNumber);
+  si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy in (0, 1) (default: the scene's)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            double a = 0;
+            try { a = std::stod(v); } catch (...) { return std::string("not a number"); }
+            return a > 0 && a < 1 ? std::string() : std::string("a relative accuracy must be in (0, 1)");
+          },
+          "(0,1)"));
   si->add_option("--duration", sim.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);
   si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(CLI::PositiveNumber);
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");

@@ -42,7 +42,8 @@ nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<
                  {"final_j", r.final_energy_j},
                  {"motion_work_j", r.motion_work_j},
                  {"dissipated_j", r.dissipated_j},
-                 {"balance_error_j", r.energy_balance_error_j}};
+                 {"balance_error_j", r.energy_balance_error_j},
+                 {"peak_kinetic_j", r.peak_kinetic_energy_j}};
   j["steps"] = r.steps;
   j["realizations"] = r.realizations;
   j["wall_time_s"] = r.wall_seconds;
@@ -136,6 +137,7 @@ int runSimulateCommand(const SimulateArgs& args) {
       if (t.exceeded)
         warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
                            strf("%.4g", t.capacity_nm) + " N*m");
+    if (const std::string w = energyBalanceWarning(r); !w.empty()) warnings.push_back(w);
     if (out) {
       std::ofstream(out->stage("history.csv"), std::ios::binary) << historyCsv(r.record);
       std::ofstream(out->stage("summary.json"), std::ios::binary) << summaryJson(r, warnings).dump(2) << '\n';

@@ -371,6 +371,18 @@ TEST_F(Cli, SimulateBadInput) {
   EXPECT_EQ(w.code, 0) << w.err;
   EXPECT_NE(w.err.find("above the table's 10 Hz bandwidth"), std::string::npos) << w.err;
   EXPECT_EQ(run("simulate --integrator leapfrog --duration 0.1").code, 65);
+  // Simbody aborts on an accuracy outside (0, 1); we refuse it first, on the command
+  // line (usage) and in a scene (data, with its line).
+  const Result a = run("simulate --accuracy 1 --duration 0.1");
+  EXPECT_EQ(a.code, 64);
+  EXPECT_NE(a.err.find("(0, 1)"), std::string::npos) << a.err;
+  std::string loose = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml");
+  const std::string acc = "accuracy: 1.0e-6";
+  ASSERT_NE(loose.find(acc), std::string::npos);
+  loose.replace(loose.find(acc), acc.size(), "accuracy: 2");
+  const Result b = run("simulate --duration 0.1 " + write("loose.yaml", loose).string());
+  EXPECT_EQ(b.code, 65);
+  EXPECT_NE(b.err.find("simulation.accuracy must be below 1 (a relative accuracy; got 2)"), std::string::npos) << b.err;
 }
 
 TEST_F(Cli, TradeWritesItsStudy) {
