@@ -103,6 +103,7 @@ class Builder {
       // Held in statics and modes, so what is welded to it counts as fixed there.
       ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
     }
+    if (base.gimbal) ground = buildGimbal(*base.gimbal, ground);
     // Breadth-first from the base so that every parent exists before its children.
     std::deque<std::pair<const JointSpec*, Frame>> todo;
     for (const auto& j : a_.joints)
@@ -122,6 +123,56 @@ class Builder {
   }
 
  private:
+  /// Holds a locked coordinate's pin at its angle (zero prescribed speed) or drives it
+  /// along its slew, the slew limited to +-range.
+  static void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, double range) {
+    if (spec) {
+      const facility::SlewLimits limits{range, spec->max_rate, spec->max_acceleration};
+      const facility::Slew slew = facility::makeSlew(
+          spec->trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, angle, spec->to,
+          spec->start_time, limits);
+      SimTK::Motion::Custom(pin, new SlewMotion(slew, spec->start_time));
+    } else {
+      SimTK::Motion::Steady(pin, 0.0);
+    }
+  }
+
+  /// Yaw (about y), pitch (about z), roll (about x), outer to inner, on `parent` without
+  /// its base-direction rotation; returns the frame on the roll ring where the base
+  /// joints go. Each ring is a held coordinate "gimbal.<axis>".
+  Frame buildGimbal(const GimbalSpec& g, const Frame& parent) {
+    auto& matter = model_.updMatter();
+    const int part = model_.addPart("gimbal", Part::Kind::Gimbal, "");
+    const SimTK::Body::Rigid ring(SimTK::MassProperties(g.ring_mass, SimTK::Vec3(0), SimTK::Inertia(g.ring_inertia)));
+    // A pin turns about its frames' z; these rotations put z along the axis.
+    const SimTK::Rotation z_to_y(-M_PI / 2, SimTK::XAxis), z_to_x(M_PI / 2, SimTK::YAxis);
+    const struct {
+      const char* name;
+      const GimbalAxisSpec* spec;
+      SimTK::Rotation axis;
+    } axes[3] = {{"gimbal.yaw", &g.yaw, z_to_y}, {"gimbal.pitch", &g.pitch, SimTK::Rotation()}, {"gimbal.roll", &g.roll, z_to_x}};
+    SimTK::MobilizedBodyIndex inboard = parent.mobod;
+    SimTK::Transform X_inboard(parent.X_BF.p());  // the parent frame's origin, world-aligned
+    for (const auto& a : axes) {
+      SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(inboard), SimTK::Transform(a.axis, X_inboard.p()), ring,
+                                    SimTK::Transform(a.axis));
+      Coordinate c;
+      c.name = a.name;
+      c.kind = CoordinateKind::Joint;
+      c.motion = CoordinateMotion::Rotation;
+      c.part = "gimbal";
+      c.mobod = pin.getMobilizedBodyIndex();
+      c.reference = a.spec->angle;
+      c.held = true;
+      model_.addCoordinate(c);
+      model_.addBody(pin.getMobilizedBodyIndex(), part, parent.grounded);
+      holdOrSlew(pin, a.spec->angle, a.spec->slew, a.spec->range);
+      inboard = pin.getMobilizedBodyIndex();
+      X_inboard = SimTK::Transform();
+    }
+    return Frame{inboard, rotZ(a_.base.direction), parent.grounded};
+  }
+
   void buildJoint(const JointSpec& j, const Frame& parent) {
     built_joints_[j.name] = true;
     auto& matter = model_.updMatter();
@@ -183,15 +234,7 @@ class Builder {
           model_.addCoordinate(coord);
           // A locked torquer holds its angle in the dynamics too (zero prescribed speed),
           // or follows its slew.
-          if (coord.held && j.slew) {
-            const facility::SlewLimits limits{M_PI, j.slew->max_rate, j.slew->max_acceleration};
-            const facility::Slew slew = facility::makeSlew(
-                j.slew->trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, j.angle,
-                j.slew->to, j.slew->start_time, limits);
-            SimTK::Motion::Custom(pin, new SlewMotion(slew, j.slew->start_time));
-          } else if (coord.held) {
-            SimTK::Motion::Steady(pin, 0.0);
-          }
+          if (coord.held) holdOrSlew(pin, j.angle, j.slew, M_PI);
           rotor = ix;
           rotor_mount = l.mount_angle;
         } else if (k == 0) {

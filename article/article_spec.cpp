@@ -15,6 +15,15 @@ const Section* ArticleSpec::findSection(const std::string& n) const { return fin
 const JointSpec* ArticleSpec::findJoint(const std::string& n) const { return findByName(joints, n); }
 const LinkSpec* ArticleSpec::findLink(const std::string& n) const { return findByName(links, n); }
 
+double ArticleSpec::torqueCapacity(const std::string& c) const {
+  if (const JointSpec* j = findJoint(c)) return j->torque_capacity;
+  if (!base.gimbal) return 0.0;
+  if (c == "gimbal.yaw") return base.gimbal->yaw.torque_capacity;
+  if (c == "gimbal.pitch") return base.gimbal->pitch.torque_capacity;
+  if (c == "gimbal.roll") return base.gimbal->roll.torque_capacity;
+  return 0.0;
+}
+
 std::vector<std::string> articlePointNames(const ArticleSpec& a) {
   std::vector<std::string> names;
   for (const auto& j : a.joints) names.push_back(j.name);

@@ -115,12 +115,34 @@ struct LoadSpec {
 /// motion is prescribed (held at rest in statics and modes).
 enum class BaseType { Fixed, Floating, Table };
 
+/// One axis of the gimbal (AGS, DATASHEET section 2): an angle it holds, or a slew.
+struct GimbalAxisSpec {
+  double angle = 0;             ///< rad, commanded (the start of a slew).
+  std::optional<SlewSpec> slew;
+  double range = 0;             ///< rad: |angle| and a slew's end stay within it.
+  double torque_capacity = 0;   ///< N*m the axis motor can give.
+};
+
+/// The 3-axis gimbal between the table (or the floor) and the article's base: yaw about
+/// the vertical (world y), then pitch about the normal of the article's plane (z),
+/// then roll about world x, outer to inner. All three are held (statics, modes) or
+/// driven (time runs) by their motors; the article's planar joints ride on the roll
+/// ring (the payload plate), so pitch turns the article in its plane and yaw and roll
+/// turn that plane (the links stay rigid out of it).
+struct GimbalSpec {
+  static constexpr double kDeg = 3.14159265358979323846 / 180;
+  GimbalAxisSpec yaw{0, {}, 45 * kDeg, 200}, pitch{0, {}, 45 * kDeg, 200}, roll{0, {}, 90 * kDeg, 50};
+  double ring_mass = 10;     ///< kg of each moving ring (the roll ring carries the payload plate).
+  double ring_inertia = 1;   ///< kg*m^2 of each ring about every axis.
+};
+
 struct BaseSpec {
   BaseType type = BaseType::Fixed;
   std::array<double, 3> position{0, 0, 0};  ///< m, world frame.
   double direction = 0;  ///< rad, world direction of a base joint's zero angle (from +x, ccw).
   double table_mass = 100;  ///< kg, the table's moving mass (BaseType::Table).
   std::optional<TableMotion> motion;  ///< BaseType::Table: the program; none = at rest.
+  std::optional<GimbalSpec> gimbal;   ///< built only when the scene names one.
 };
 
 struct ArticleSpec {
@@ -136,6 +158,9 @@ struct ArticleSpec {
   const Section* findSection(const std::string& name) const;
   const JointSpec* findJoint(const std::string& name) const;
   const LinkSpec* findLink(const std::string& name) const;
+  /// The torque capacity (N*m, 0: not given) of a joint's torquer or of a gimbal axis
+  /// ("gimbal.yaw", "gimbal.pitch", "gimbal.roll").
+  double torqueCapacity(const std::string& coordinate) const;
 };
 
 /// The named points the builder creates for `a` (see article_builder.hpp), in order.

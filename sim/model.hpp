@@ -46,7 +46,7 @@ struct Coordinate {
 /// A part: a link (all its pieces), a torquer, a tip mass, or the excitation table.
 struct Part {
   std::string name;
-  enum class Kind { Link, Torquer, TipMass, Table } kind = Kind::Link;
+  enum class Kind { Link, Torquer, TipMass, Table, Gimbal } kind = Kind::Link;
   /// The link that carries this part: itself for a link, the link a tip mass is on,
   /// the parent link whose tip holds a torquer; empty for a torquer on the base.
   std::string carrier;

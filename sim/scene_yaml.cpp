@@ -348,8 +348,57 @@ class SceneParser {
     return d;
   }
 
+  SlewSpec readSlew(const YAML::Node& sn, const std::string& path) {
+    auto sm = r_.mapping(sn, path, {"to_deg", "start_s", "shape", "max_rate_deg_s", "max_acceleration_deg_s2"});
+    SlewSpec sl;
+    sl.to = r_.number(r_.require(sm, sn, path, "to_deg"), path + ".to_deg") * kDegToRad;
+    if (sm.count("start_s")) sl.start_time = r_.nonNegative(sm.at("start_s"), path + ".start_s", " s");
+    if (sm.count("shape")) {
+      const std::string sh = r_.text(sm.at("shape"), path + ".shape");
+      if (sh != "cycloidal" && sh != "trapezoidal")
+        r_.fail(sm.at("shape").Mark(), path + ".shape: unknown shape '" + sh + "' (known: cycloidal, trapezoidal)");
+      sl.trapezoidal = sh == "trapezoidal";
+    }
+    if (sm.count("max_rate_deg_s")) sl.max_rate = r_.positive(sm.at("max_rate_deg_s"), path + ".max_rate_deg_s", " deg/s") * kDegToRad;
+    if (sm.count("max_acceleration_deg_s2"))
+      sl.max_acceleration = r_.positive(sm.at("max_acceleration_deg_s2"), path + ".max_acceleration_deg_s2", " deg/s^2") * kDegToRad;
+    return sl;
+  }
+
+  /// base.gimbal: {yaw|pitch|roll: {angle_deg, slew, range_deg, torque_capacity}, ring_mass, ring_inertia}.
+  /// A commanded angle or a slew's end beyond the axis's range is an error at its line.
+  GimbalSpec readGimbal(const YAML::Node& n) {
+    auto m = r_.mapping(n, "base.gimbal", {"yaw", "pitch", "roll", "ring_mass", "ring_inertia"});
+    GimbalSpec g;
+    for (auto [name, axis] : {std::pair<const char*, GimbalAxisSpec*>{"yaw", &g.yaw}, {"pitch", &g.pitch}, {"roll", &g.roll}}) {
+      if (!m.count(name)) continue;
+      const std::string path = std::string("base.gimbal.") + name;
+      const YAML::Node& an = m.at(name);
+      auto am = r_.mapping(an, path, {"angle_deg", "slew", "range_deg", "torque_capacity"});
+      if (am.count("range_deg")) axis->range = r_.positive(am.at("range_deg"), path + ".range_deg", " deg") * kDegToRad;
+      if (am.count("torque_capacity"))
+        axis->torque_capacity = r_.positive(am.at("torque_capacity"), path + ".torque_capacity", " N*m");
+      auto within = [&](const YAML::Node& v, double angle, const std::string& key) {
+        if (std::abs(angle) > axis->range + 1e-12)
+          r_.fail(v.Mark(), key + ": " + v.Scalar() + " deg is beyond the gimbal's +-" +
+                                std::to_string(static_cast<int>(std::lround(axis->range / kDegToRad))) + " deg " + name + " range");
+      };
+      if (am.count("angle_deg")) {
+        axis->angle = r_.number(am.at("angle_deg"), path + ".angle_deg") * kDegToRad;
+        within(am.at("angle_deg"), axis->angle, path + ".angle_deg");
+      }
+      if (am.count("slew")) {
+        axis->slew = readSlew(am.at("slew"), path + ".slew");
+        within(am.at("slew")["to_deg"], axis->slew->to, path + ".slew.to_deg");
+      }
+    }
+    if (m.count("ring_mass")) g.ring_mass = r_.positive(m.at("ring_mass"), "base.gimbal.ring_mass", " kg");
+    if (m.count("ring_inertia")) g.ring_inertia = r_.positive(m.at("ring_inertia"), "base.gimbal.ring_inertia", " kg*m^2");
+    return g;
+  }
+
   void readBase(const YAML::Node& n, BaseSpec& b) {
-    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg", "table_mass", "motion"});
+    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg", "table_mass", "motion", "gimbal"});
     if (m.count("type")) {
       const std::string t = r_.text(m.at("type"), "base.type");
       if (t == "table") b.type = BaseType::Table;
@@ -423,6 +472,7 @@ class SceneParser {
                                                 m.at("position")[2].Scalar() + ")");
     }
     if (m.count("direction_deg")) b.direction = r_.number(m.at("direction_deg"), "base.direction_deg") * kDegToRad;
+    if (m.count("gimbal")) b.gimbal = readGimbal(m.at("gimbal"));
   }
 
   void checkName(const YAML::Node& n, const std::string& path, const std::string& name) {
@@ -467,20 +517,7 @@ class SceneParser {
         const YAML::Node& sn = m.at("slew");
         if (j.hold != JointHold::Locked)
           r_.fail(sn.Mark(), path + ".slew: only a locked joint (its torquer holding the angle) follows a slew");
-        auto sm = r_.mapping(sn, path + ".slew", {"to_deg", "start_s", "shape", "max_rate_deg_s", "max_acceleration_deg_s2"});
-        SlewSpec sl;
-        sl.to = r_.number(r_.require(sm, sn, path + ".slew", "to_deg"), path + ".slew.to_deg") * kDegToRad;
-        if (sm.count("start_s")) sl.start_time = r_.nonNegative(sm.at("start_s"), path + ".slew.start_s", " s");
-        if (sm.count("shape")) {
-          const std::string sh = r_.text(sm.at("shape"), path + ".slew.shape");
-          if (sh != "cycloidal" && sh != "trapezoidal")
-            r_.fail(sm.at("shape").Mark(), path + ".slew.shape: unknown shape '" + sh + "' (known: cycloidal, trapezoidal)");
-          sl.trapezoidal = sh == "trapezoidal";
-        }
-        if (sm.count("max_rate_deg_s")) sl.max_rate = r_.positive(sm.at("max_rate_deg_s"), path + ".slew.max_rate_deg_s", " deg/s") * kDegToRad;
-        if (sm.count("max_acceleration_deg_s2"))
-          sl.max_acceleration = r_.positive(sm.at("max_acceleration_deg_s2"), path + ".slew.max_acceleration_deg_s2", " deg/s^2") * kDegToRad;
-        j.slew = sl;
+        j.slew = readSlew(sn, path + ".slew");
       }
       joint_marks_[j.name] = {jn.Mark(), path};
       a.joints.push_back(j);

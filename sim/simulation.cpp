@@ -139,8 +139,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   for (int j : joints) {
     JointTorqueSummary t;
     t.joint = model->getCoordinates()[j].name;
-    const JointSpec* js = scene.article.findJoint(t.joint);
-    t.capacity_nm = js ? js->torque_capacity : 0.0;
+    t.capacity_nm = scene.article.torqueCapacity(t.joint);
     r.torques.push_back(t);
   }
 

@@ -344,13 +344,18 @@ TEST_F(Cli, SimulateSlewScene) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Torques the torquers must give"), std::string::npos);
   const std::string csv = slurp(out / "history.csv");
-  EXPECT_EQ(csv.rfind("time_s,table_x_m,joint1_angle_deg,joint1_torque_n_m,", 0), 0u);
+  EXPECT_EQ(csv.rfind("time_s,table_x_m,gimbal.yaw_angle_deg,gimbal.yaw_torque_n_m,gimbal.pitch_angle_deg,", 0), 0u);
+  EXPECT_NE(csv.find(",joint1_angle_deg,joint1_torque_n_m,"), std::string::npos);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 1001);  // header + 2 s at 500 Hz + t = 0
   EXPECT_EQ(csv.find("nan"), std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(j["integrator"], "cpodes");
-  EXPECT_EQ(j["torques"].size(), 3u);
-  EXPECT_GT(j["torques"][0]["peak_torque_n_m"].get<double>(), 90.0);  // at least the static holding torque
+  ASSERT_EQ(j["torques"].size(), 6u);  // gimbal yaw, pitch, roll; joints 1 to 3
+  EXPECT_EQ(j["torques"][1]["joint"], "gimbal.pitch");
+  EXPECT_EQ(j["torques"][3]["joint"], "joint1");
+  EXPECT_GT(j["torques"][3]["peak_torque_n_m"].get<double>(), 90.0);  // at least the static holding torque
+  // The pitch axis and joint 1 share the point and the axis: the same moment.
+  EXPECT_NEAR(j["torques"][1]["peak_torque_n_m"].get<double>(), j["torques"][3]["peak_torque_n_m"].get<double>(), 1e-6);
   EXPECT_GT(j["realizations"].get<int>(), 0);
 }
 

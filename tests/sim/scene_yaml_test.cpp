@@ -128,6 +128,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:22:12: links[1].joint: unknown joint 'j7' (known: j1, j2)"},
         BadCase{"nan", "    length: 1.0", "    length: .nan",
                 "s.yaml:19:13: links[0].length must be a finite number (got .nan)"},
+        BadCase{"gimbal beyond range", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    pitch: {angle_deg: 50}",
+                "s.yaml:5:24: base.gimbal.pitch.angle_deg: 50 deg is beyond the gimbal's +-45 deg pitch range"},
+        BadCase{"gimbal slew beyond range", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    roll: {slew: {to_deg: -95}}",
+                "s.yaml:5:27: base.gimbal.roll.slew.to_deg: -95 deg is beyond the gimbal's +-90 deg roll range"},
+        BadCase{"gimbal unknown axis", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    tilt: {angle_deg: 5}",
+                "s.yaml:5:5: unknown key 'base.gimbal.tilt' (allowed: yaw, pitch, roll, ring_mass, ring_inertia)"},
         BadCase{"out of plane gravity", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 1]",
                 "s.yaml:2:21: gravity[2] must be 0 m/s^2: the article moves in the x-y plane (got 1)"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
@@ -136,6 +145,23 @@ INSTANTIATE_TEST_SUITE_P(
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
       return name;
     });
+
+TEST(SceneYaml, GimbalOnlyWhenNamed) {
+  EXPECT_FALSE(parseScene(kGood, "s.yaml").article.base.gimbal);
+  const Scene s = parseScene(replaceLine(kGood, "gravity: [0, -9.81, 0]",
+                                         "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    roll: {angle_deg: -90, "
+                                         "torque_capacity: 60}\n    pitch: {slew: {to_deg: 45}}\n    ring_mass: 4"),
+                             "s.yaml");
+  ASSERT_TRUE(s.article.base.gimbal);
+  const GimbalSpec& g = *s.article.base.gimbal;
+  EXPECT_NEAR(g.roll.angle, -M_PI / 2, 1e-15);
+  EXPECT_EQ(g.roll.torque_capacity, 60.0);
+  EXPECT_EQ(g.yaw.torque_capacity, 200.0);  // DATASHEET section 2 defaults
+  ASSERT_TRUE(g.pitch.slew);
+  EXPECT_NEAR(g.pitch.slew->to, M_PI / 4, 1e-15);
+  EXPECT_EQ(g.ring_mass, 4.0);
+  EXPECT_EQ(s.article.torqueCapacity("gimbal.roll"), 60.0);
+}
 
 TEST(SceneYaml, LoopOfJointsIsNotConnected) {
   const std::string text = replaceLine(kGood, "    parent: base", "    parent: l2a");
