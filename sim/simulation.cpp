@@ -90,7 +90,14 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     if (c.name == "table.x") table = i;
     if (c.kind == CoordinateKind::Joint && c.motion == CoordinateMotion::Rotation) joints.push_back(i);
   }
-  if (table >= 0) cols.push_back("table_x_m");
+  if (table >= 0) {
+    cols.push_back("table_x_m");
+    cols.push_back("table_force_n");
+    const SimTK::State& ref = model->getReferenceState();
+    const double table_mass =
+        matter.getMobilizedBody(model->getCoordinates()[table].mobod).getBodyMass(ref);
+    r.carried_weight_n = (matter.calcSystemMass(ref) - table_mass) * model->getGravity().norm();
+  }
   for (int j : joints) {
     cols.push_back(model->getCoordinates()[j].name + "_angle_deg");
     cols.push_back(model->getCoordinates()[j].name + "_torque_n_m");
@@ -168,7 +175,12 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     SimTK::Vector motion_forces;
     matter.findMotionForces(st, motion_forces);
     std::vector<double> row{t};
-    if (table >= 0) row.push_back(st.getQ()[model->getQIndex(table)]);
+    if (table >= 0) {
+      const double force = -motion_forces[model->getUIndex(table)];
+      row.push_back(st.getQ()[model->getQIndex(table)]);
+      row.push_back(force);
+      r.peak_table_force_n = std::max(r.peak_table_force_n, std::abs(force));
+    }
     for (std::size_t j = 0; j < joints.size(); ++j) {
       const int i = joints[j];
       // Simbody's motion force is the reaction; the torquer applies its negative

@@ -13,6 +13,8 @@
 /// only linearly where a command's acceleration jumps, as in a trapezoidal slew --
 /// raise the sample rate there), steps, realizations, and wall time.
 ///
+/// With a table, also its actuator's force along x (`table_force_n`).
+///
 /// Sensors (scene `sensors:`; facility/sensors.hpp) are sampled at the sample rate:
 /// an encoder reads its joint's angle (rad), a rate gyro the angular rate about z of
 /// the body carrying its point (rad/s), an accelerometer the specific force (a - g) at
@@ -58,6 +60,11 @@ struct SimulationResult {
   double motion_work_j = 0, dissipated_j = 0;
   double energy_balance_error_j = 0;  ///< (E_end - E_0) - (W - D).
   double peak_kinetic_energy_j = 0;   ///< largest kinetic energy at a sample.
+  /// With a table: the peak force its actuator must give along x (the table's own
+  /// moving mass included; column `table_force_n`), and the weight it carries
+  /// (everything but the table: article, torquers, gimbal), against its payload.
+  double peak_table_force_n = 0;
+  double carried_weight_n = 0;
   std::string integrator;
   double accuracy = 0;
   int steps = 0, realizations = 0;

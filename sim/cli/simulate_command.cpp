@@ -44,6 +44,9 @@ nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<
                  {"dissipated_j", r.dissipated_j},
                  {"balance_error_j", r.energy_balance_error_j},
                  {"peak_kinetic_j", r.peak_kinetic_energy_j}};
+  if (r.carried_weight_n > 0)
+    j["table"] = {{"peak_force_n", r.peak_table_force_n}, {"carried_weight_n", r.carried_weight_n},
+                  {"payload_n", facility::TableSpec{}.payload_n}};
   j["steps"] = r.steps;
   j["realizations"] = r.realizations;
   j["wall_time_s"] = r.wall_seconds;
@@ -62,6 +65,9 @@ std::string summaryText(const Scene& scene, const SimulationResult& r, const std
     t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",
            q.capacity_nm > 0 ? (q.exceeded ? "EXCEEDED" : "yes") : "-"});
   os << "Torques the torquers must give\n" << t.text();
+  if (r.carried_weight_n > 0)
+    os << strf("\nTable: peak actuator force %.4g N; carries %.4g N of its %.4g N payload\n", r.peak_table_force_n,
+               r.carried_weight_n, facility::TableSpec{}.payload_n);
   if (!r.sensors.empty()) {
     Table st({"sensor", "type", "unit", "saturated_samples"});
     for (const auto& s : r.sensors)
@@ -138,6 +144,9 @@ int runSimulateCommand(const SimulateArgs& args) {
         warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
                            strf("%.4g", t.capacity_nm) + " N*m");
     if (const std::string w = energyBalanceWarning(r); !w.empty()) warnings.push_back(w);
+    if (const double payload = facility::TableSpec{}.payload_n; r.carried_weight_n > payload)
+      warnings.push_back("the table carries " + strf("%.4g", r.carried_weight_n) + " N, above its " +
+                         strf("%.4g", payload) + " N payload");
     if (out) {
       std::ofstream(out->stage("history.csv"), std::ios::binary) << historyCsv(r.record);
       std::ofstream(out->stage("summary.json"), std::ios::binary) << summaryJson(r, warnings).dump(2) << '\n';

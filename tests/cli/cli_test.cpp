@@ -344,12 +344,14 @@ TEST_F(Cli, SimulateSlewScene) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Torques the torquers must give"), std::string::npos);
   const std::string csv = slurp(out / "history.csv");
-  EXPECT_EQ(csv.rfind("time_s,table_x_m,gimbal.yaw_angle_deg,gimbal.yaw_torque_n_m,gimbal.pitch_angle_deg,", 0), 0u);
+  EXPECT_EQ(csv.rfind("time_s,table_x_m,table_force_n,gimbal.yaw_angle_deg,gimbal.yaw_torque_n_m,gimbal.pitch_angle_deg,", 0), 0u);
   EXPECT_NE(csv.find(",joint1_angle_deg,joint1_torque_n_m,"), std::string::npos);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 1001);  // header + 2 s at 500 Hz + t = 0
   EXPECT_EQ(csv.find("nan"), std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(j["integrator"], "cpodes");
+  EXPECT_NEAR(j["table"]["carried_weight_n"].get<double>(), 956.4, 0.1);  // article + 3 x 10 kg rings
+  EXPECT_GT(j["table"]["peak_force_n"].get<double>(), 0.0);
   ASSERT_EQ(j["torques"].size(), 6u);  // gimbal yaw, pitch, roll; joints 1 to 3
   EXPECT_EQ(j["torques"][1]["joint"], "gimbal.pitch");
   EXPECT_EQ(j["torques"][3]["joint"], "joint1");
@@ -388,6 +390,14 @@ TEST_F(Cli, SimulateBadInput) {
   const Result b = run("simulate --duration 0.1 " + write("loose.yaml", loose).string());
   EXPECT_EQ(b.code, 65);
   EXPECT_NE(b.err.find("simulation.accuracy must be below 1 (a relative accuracy; got 2)"), std::string::npos) << b.err;
+  // Gimbal rings of 200 kg put the table over its 2.3 kN payload: a warning.
+  std::string heavy = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml");
+  const std::string ring = "ring_mass: 10 ";
+  ASSERT_NE(heavy.find(ring), std::string::npos);
+  heavy.replace(heavy.find(ring), ring.size(), "ring_mass: 200 ");
+  const Result h = run("simulate --duration 0.05 --segments 2 " + write("heavy.yaml", heavy).string());
+  EXPECT_EQ(h.code, 0) << h.err;
+  EXPECT_NE(h.out.find("warning: the table carries 6546 N, above its 2300 N payload"), std::string::npos) << h.out;
 }
 
 TEST_F(Cli, TradeWritesItsStudy) {

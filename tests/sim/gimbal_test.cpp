@@ -94,6 +94,30 @@ TEST(Gimbal, PitchSlewTorqueIsTheInverseDynamics) {
     if (ts.joint == "gimbal.pitch") EXPECT_DOUBLE_EQ(ts.capacity_nm, 200.0);
 }
 
+// Everything held rigid on the table (a rigid link on a held gimbal) moves with it, so
+// the table's actuator must give (table mass + carried mass) x the table's
+// acceleration at every sample (1e-9 of the peak), and the carried weight is the
+// link's and the three rings' (m + 3 m_ring) g.
+TEST(Gimbal, TableForceIsTheWholeMassTimesItsAcceleration) {
+  Scene s = rigidLinkOnGimbal(0, 20 * kDeg, 0);
+  s.article.base.type = BaseType::Table;
+  s.article.base.table_mass = 100;
+  const double amp = 0.002, f = 3.0, w = 2 * M_PI * f;
+  s.article.base.motion = TableMotion::sine(amp, f);
+  s.simulation.duration = 0.5;
+  const SimulationResult r = simulate(s);
+  const double carried = 3.0 + 3 * 10.0;
+  EXPECT_NEAR(r.carried_weight_n, carried * 9.81, 1e-9);
+  const int force = column(r.record, "table_force_n");
+  double peak = 0;
+  for (const auto& row : r.record.rows) {
+    const double expected = (100 + carried) * (-amp * w * w * std::sin(w * row[0]));
+    EXPECT_NEAR(row[force], expected, 1e-9 * (100 + carried) * amp * w * w) << "t = " << row[0];
+    peak = std::max(peak, std::abs(row[force]));
+  }
+  EXPECT_DOUBLE_EQ(r.peak_table_force_n, peak);
+}
+
 // Held gimbal angles in the modal analysis of the MMV article: pitch p gives exactly
 // the modes of the article with its base turned by p in the plane; roll r leaves
 // gravity's in-plane part g cos r, so the modes are those of the article under g cos r
