@@ -1,6 +1,8 @@
 #include "sim/cvode_integrator.hpp"
 #include "sim/external_stepper.hpp"
 
+#include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -9,6 +11,7 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 
@@ -21,8 +24,21 @@ struct NumericalError : std::runtime_error {
 
 namespace {
 
-void check(int flag, const char* call) {
-  if (flag < 0) throw NumericalError(std::string("CVODE ") + call + " failed: " + CVodeGetReturnFlagName(flag));
+using Method = CvodeIntegrator::Method;
+
+bool isArkode(Method m) { return m == Method::ArkErk || m == Method::ArkDirk; }
+
+std::string flagName(Method m, int flag) {
+  char* name = m == Method::ArkErk ? ERKStepGetReturnFlagName(flag)
+               : m == Method::ArkDirk ? ARKStepGetReturnFlagName(flag)
+                                      : CVodeGetReturnFlagName(flag);
+  std::string s = name ? name : "unknown flag";
+  std::free(name);  // SUNDIALS allocates it
+  return s;
+}
+
+void check(Method m, int flag, const char* call) {
+  if (flag < 0) throw NumericalError(std::string(isArkode(m) ? "ARKODE " : "CVODE ") + call + " failed: " + flagName(m, flag));
 }
 
 template <class T, void (*Free)(T)>
@@ -49,9 +65,13 @@ struct Context {
   }
 };
 struct Memory {
+  Method method = Method::Bdf;
   void* p = nullptr;
   ~Memory() {
-    if (p) CVodeFree(&p);
+    if (!p) return;
+    if (method == Method::ArkErk) ERKStepFree(&p);
+    else if (method == Method::ArkDirk) ARKStepFree(&p);
+    else CVodeFree(&p);
   }
 };
 
@@ -107,34 +127,50 @@ CvodeIntegrator::~CvodeIntegrator() = default;
 
 void CvodeIntegrator::initialize(const SimTK::State& s) {
   Impl& m = *impl_;
+  const Method me = m.method;
   m.work = s;
   const int n = s.getNY();
   m.y.p = N_VNew_Serial(n, m.ctx.c);
-  if (!m.y.p) throw NumericalError("CVODE: cannot allocate the state vector");
+  if (!m.y.p) throw NumericalError("SUNDIALS: cannot allocate the state vector");
   double* d = N_VGetArrayPointer(m.y.p);
   for (int i = 0; i < n; ++i) d[i] = s.getY()[i];
-  m.mem.p = CVodeCreate(m.method == Method::Bdf ? CV_BDF : CV_ADAMS, m.ctx.c);
-  if (!m.mem.p) throw NumericalError("CVodeCreate failed");
-  check(CVodeInit(m.mem.p, &Impl::rhs, s.getTime(), m.y.p), "CVodeInit");
-  check(CVodeSetUserData(m.mem.p, &m), "CVodeSetUserData");
+  m.mem.method = me;
   // Absolute tolerance: the relative one times a unit scale (rad, m, rad/s, m/s).
-  check(CVodeSStolerances(m.mem.p, m.rtol, m.rtol), "CVodeSStolerances");
-  check(CVodeSetMaxNumSteps(m.mem.p, 1000000), "CVodeSetMaxNumSteps");
-  if (m.method == Method::Bdf) {
+  switch (me) {
+    case Method::Adams:
+    case Method::Bdf:
+      m.mem.p = CVodeCreate(me == Method::Bdf ? CV_BDF : CV_ADAMS, m.ctx.c);
+      if (!m.mem.p) throw NumericalError("CVodeCreate failed");
+      check(me, CVodeInit(m.mem.p, &Impl::rhs, s.getTime(), m.y.p), "CVodeInit");
+      check(me, CVodeSetUserData(m.mem.p, &m), "CVodeSetUserData");
+      check(me, CVodeSStolerances(m.mem.p, m.rtol, m.rtol), "CVodeSStolerances");
+      check(me, CVodeSetMaxNumSteps(m.mem.p, 1000000), "CVodeSetMaxNumSteps");
+      break;
+    case Method::ArkErk:
+      m.mem.p = ERKStepCreate(&Impl::rhs, s.getTime(), m.y.p, m.ctx.c);
+      if (!m.mem.p) throw NumericalError("ERKStepCreate failed");
+      check(me, ERKStepSetUserData(m.mem.p, &m), "ERKStepSetUserData");
+      check(me, ERKStepSStolerances(m.mem.p, m.rtol, m.rtol), "ERKStepSStolerances");
+      check(me, ERKStepSetMaxNumSteps(m.mem.p, 1000000), "ERKStepSetMaxNumSteps");
+      break;
+    case Method::ArkDirk:
+      m.mem.p = ARKStepCreate(nullptr, &Impl::rhs, s.getTime(), m.y.p, m.ctx.c);  // all implicit
+      if (!m.mem.p) throw NumericalError("ARKStepCreate failed");
+      check(me, ARKStepSetUserData(m.mem.p, &m), "ARKStepSetUserData");
+      check(me, ARKStepSStolerances(m.mem.p, m.rtol, m.rtol), "ARKStepSStolerances");
+      check(me, ARKStepSetMaxNumSteps(m.mem.p, 1000000), "ARKStepSetMaxNumSteps");
+      break;
+  }
+  if (me == Method::Bdf || me == Method::ArkDirk) {
     m.A.p = SUNDenseMatrix(n, n, m.ctx.c);
     m.ls.p = SUNLinSol_Dense(m.y.p, m.A.p, m.ctx.c);
-    if (!m.A.p || !m.ls.p)
-      throw NumericalError("CVODE: cannot create the dense linear solver (vector id " +
-                           std::to_string(N_VGetVectorID(m.y.p)) + ", length " + std::to_string(N_VGetLength(m.y.p)) +
-                           ", matrix " + (m.A.p ? std::to_string(SUNMatGetID(m.A.p)) + " " +
-                                                      std::to_string(SUNDenseMatrix_Rows(m.A.p)) + "x" +
-                                                      std::to_string(SUNDenseMatrix_Columns(m.A.p))
-                                                : std::string("null")) + ")");
-    check(CVodeSetLinearSolver(m.mem.p, m.ls.p, m.A.p), "CVodeSetLinearSolver");
-  } else {
+    if (!m.A.p || !m.ls.p) throw NumericalError("SUNDIALS: cannot create the dense linear solver for " + std::to_string(n) + " states");
+    if (me == Method::Bdf) check(me, CVodeSetLinearSolver(m.mem.p, m.ls.p, m.A.p), "CVodeSetLinearSolver");
+    else check(me, ARKStepSetLinearSolver(m.mem.p, m.ls.p, m.A.p), "ARKStepSetLinearSolver");
+  } else if (me == Method::Adams) {
     m.nls.p = SUNNonlinSol_FixedPoint(m.y.p, 0, m.ctx.c);
     if (!m.nls.p) throw NumericalError("CVODE: cannot create the fixed-point solver");
-    check(CVodeSetNonlinearSolver(m.mem.p, m.nls.p), "CVodeSetNonlinearSolver");
+    check(me, CVodeSetNonlinearSolver(m.mem.p, m.nls.p), "CVodeSetNonlinearSolver");
   }
   m.load(s.getTime(), m.y.p);
   state_ = m.work;
@@ -143,10 +179,12 @@ void CvodeIntegrator::initialize(const SimTK::State& s) {
 void CvodeIntegrator::stepTo(double t) {
   Impl& m = *impl_;
   double reached = 0;
-  const int flag = CVode(m.mem.p, t, m.y.p, &reached, CV_NORMAL);
+  const int flag = m.method == Method::ArkErk    ? ERKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
+                   : m.method == Method::ArkDirk ? ARKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
+                                                 : CVode(m.mem.p, t, m.y.p, &reached, CV_NORMAL);
   if (flag < 0)
-    throw NumericalError(std::string("CVODE stopped at t = ") + std::to_string(reached) + " s: " +
-                         CVodeGetReturnFlagName(flag));
+    throw NumericalError(std::string(isArkode(m.method) ? "ARKODE" : "CVODE") + " stopped at t = " +
+                         std::to_string(reached) + " s: " + flagName(m.method, flag));
   m.load(reached, m.y.p);
   state_ = m.work;
   m.system.realize(state_, SimTK::Stage::Acceleration);
@@ -154,16 +192,25 @@ void CvodeIntegrator::stepTo(double t) {
 
 long CvodeIntegrator::steps() const {
   long n = 0;
-  CVodeGetNumSteps(impl_->mem.p, &n);
+  if (impl_->method == Method::ArkErk) ERKStepGetNumSteps(impl_->mem.p, &n);
+  else if (impl_->method == Method::ArkDirk) ARKStepGetNumSteps(impl_->mem.p, &n);
+  else CVodeGetNumSteps(impl_->mem.p, &n);
   return n;
 }
 
 long CvodeIntegrator::rhsEvaluations() const {
-  long n = 0, jac = 0;
-  CVodeGetNumRhsEvals(impl_->mem.p, &n);
-  // The dense Newton solver's difference-quotient Jacobians cost evaluations too.
-  if (impl_->method == Method::Bdf) CVodeGetNumLinRhsEvals(impl_->mem.p, &jac);
-  return n + jac;
+  long n = 0, jac = 0, explicit_evals = 0;
+  // The dense Newton solvers' difference-quotient Jacobians cost evaluations too.
+  switch (impl_->method) {
+    case Method::ArkErk: ERKStepGetNumRhsEvals(impl_->mem.p, &n); break;
+    case Method::ArkDirk:
+      ARKStepGetNumRhsEvals(impl_->mem.p, &explicit_evals, &n);
+      ARKStepGetNumLinRhsEvals(impl_->mem.p, &jac);
+      break;
+    case Method::Bdf: CVodeGetNumLinRhsEvals(impl_->mem.p, &jac); [[fallthrough]];
+    case Method::Adams: CVodeGetNumRhsEvals(impl_->mem.p, &n); break;
+  }
+  return n + jac + explicit_evals;
 }
 
 }  // namespace mmv
@@ -173,8 +220,7 @@ namespace {
 
 class CvodeStepper : public ExternalStepper {
  public:
-  CvodeStepper(const SimTK::MultibodySystem& sys, bool bdf, double rtol)
-      : integ_(sys, bdf ? CvodeIntegrator::Method::Bdf : CvodeIntegrator::Method::Adams, rtol) {}
+  CvodeStepper(const SimTK::MultibodySystem& sys, CvodeIntegrator::Method method, double rtol) : integ_(sys, method, rtol) {}
   bool initialize(const SimTK::State& s, std::string& error) override { return guard([&] { integ_.initialize(s); }, error); }
   bool stepTo(double t, std::string& error) override { return guard([&] { integ_.stepTo(t); }, error); }
   const SimTK::State& state() const override { return integ_.getState(); }
@@ -198,6 +244,7 @@ class CvodeStepper : public ExternalStepper {
 }  // namespace
 }  // namespace mmv
 
-extern "C" mmv::ExternalStepper* mmv_create_cvode_stepper(const SimTK::MultibodySystem* system, int bdf, double rtol) {
-  return new mmv::CvodeStepper(*system, bdf != 0, rtol);
+extern "C" mmv::ExternalStepper* mmv_create_cvode_stepper(const SimTK::MultibodySystem* system, int method, double rtol) {
+  if (method < 0 || method > 3) return nullptr;
+  return new mmv::CvodeStepper(*system, static_cast<mmv::CvodeIntegrator::Method>(method), rtol);
 }

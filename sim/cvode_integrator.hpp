@@ -1,8 +1,10 @@
 #pragma once
-/// SUNDIALS CVODE on a Simbody system: y = Simbody's Y (q, u, z), y' = f(t, y) from
+/// SUNDIALS CVODE or ARKODE on a Simbody system: y = Simbody's Y (q, u, z), y' = f(t, y) from
 /// realizing a State to Acceleration after applying the prescribed motions (slews, the
-/// table). BDF with a dense Newton solver (stiff models) or Adams with fixed-point
-/// iteration (non-stiff). Every SUNDIALS object is owned by an RAII handle and every
+/// table). CVODE: BDF with a dense Newton solver (stiff models) or Adams with
+/// fixed-point iteration (non-stiff). ARKODE: ERKStep's default adaptive explicit
+/// Runge-Kutta (order 4, non-stiff) or ARKStep fully implicit (its default order-4
+/// SDIRK, dense Newton; stiff). Every SUNDIALS object is owned by an RAII handle and every
 /// return code is checked: a failure throws NumericalError naming the CVODE flag
 /// (CV_TOO_MUCH_WORK: too many steps; CV_ERR_FAILURE / CV_CONV_FAILURE: the step size
 /// underflowed on error-test or convergence failures; ...) and the time.
@@ -16,7 +18,7 @@ namespace mmv {
 
 class CvodeIntegrator {
  public:
-  enum class Method { Bdf, Adams };
+  enum class Method { Adams = 0, Bdf = 1, ArkErk = 2, ArkDirk = 3 };  ///< the plugin's method codes
   CvodeIntegrator(const SimTK::MultibodySystem& system, Method method, double relative_tolerance);
   ~CvodeIntegrator();
   CvodeIntegrator(const CvodeIntegrator&) = delete;

@@ -10,7 +10,8 @@
 
 namespace mmv {
 
-std::unique_ptr<ExternalStepper> makeCvodeStepper(const SimTK::MultibodySystem& system, bool bdf, double rtol) {
+std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
+                                                     double rtol) {
   // Next to the executable first, then where the build put it.
   std::vector<std::string> candidates;
   char exe[PATH_MAX];
@@ -32,9 +33,11 @@ std::unique_ptr<ExternalStepper> makeCvodeStepper(const SimTK::MultibodySystem& 
     }
     auto create = reinterpret_cast<CreateStepper>(::dlsym(handle, "mmv_create_cvode_stepper"));
     if (!create) throw NumericalError(path + ": no mmv_create_cvode_stepper");
-    return std::unique_ptr<ExternalStepper>(create(&system, bdf ? 1 : 0, rtol));
+    ExternalStepper* stepper = create(&system, static_cast<int>(method), rtol);
+    if (!stepper) throw NumericalError(path + ": unknown SUNDIALS method " + std::to_string(static_cast<int>(method)));
+    return std::unique_ptr<ExternalStepper>(stepper);
   }
-  throw NumericalError("the CVODE integrators need libmmvlab_cvode.so: tried " + tried);
+  throw NumericalError("the SUNDIALS integrators need libmmvlab_cvode.so: tried " + tried);
 }
 
 }  // namespace mmv

@@ -25,11 +25,15 @@ class ExternalStepper {
 };
 
 /// The plugin's factory (extern "C").
-using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system, int bdf, double relative_tolerance);
+using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system, int method, double relative_tolerance);
 
-/// Loads the CVODE plugin and creates a stepper (BDF with a dense Newton solver, or
-/// Adams with fixed-point iteration). Throws NumericalError if the plugin cannot be
-/// loaded (the message says where it was looked for).
-std::unique_ptr<ExternalStepper> makeCvodeStepper(const SimTK::MultibodySystem& system, bool bdf, double rtol);
+/// The plugin's methods (codes as CvodeIntegrator::Method).
+enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeDirk = 3 };
+
+/// Loads the SUNDIALS plugin and creates a stepper: CVODE BDF (dense Newton) or Adams
+/// (fixed point), ARKODE explicit RK or implicit SDIRK (dense Newton). Throws
+/// NumericalError if the plugin cannot be loaded (the message says where it was looked for).
+std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
+                                                     double rtol);
 
 }  // namespace mmv

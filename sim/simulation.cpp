@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 #include "article/article_builder.hpp"
@@ -26,7 +27,7 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const
   if (name == "explicit_euler") return std::make_unique<SimTK::ExplicitEulerIntegrator>(sys);
   throw SceneError(source + ": unknown integrator '" + name +
                    "' (known: rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler, "
-                   "cvode_bdf, cvode_adams)");
+                   "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk)");
 }
 
 /// Power dissipated by the dampers, sum c u^2 (W).
@@ -64,8 +65,12 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   std::unique_ptr<SimTK::Integrator> integ;
   std::unique_ptr<SimTK::TimeStepper> stepper;
   std::unique_ptr<ExternalStepper> cvode;
-  if (spec.integrator == "cvode_bdf" || spec.integrator == "cvode_adams") {
-    cvode = makeCvodeStepper(sys, spec.integrator == "cvode_bdf", spec.accuracy);
+  static const std::map<std::string, SundialsMethod> kSundials{{"cvode_bdf", SundialsMethod::CvodeBdf},
+                                                               {"cvode_adams", SundialsMethod::CvodeAdams},
+                                                               {"arkode_erk", SundialsMethod::ArkodeErk},
+                                                               {"arkode_dirk", SundialsMethod::ArkodeDirk}};
+  if (const auto it = kSundials.find(spec.integrator); it != kSundials.end()) {
+    cvode = makeSundialsStepper(sys, it->second, spec.accuracy);
     std::string error;
     if (!cvode->initialize(s, error)) throw NumericalError(error);
   } else {

@@ -23,8 +23,10 @@
 ///
 /// Integrators: Simbody's "rk_merson" (default), "rk_feldberg", "rk3", "rk2",
 /// "cpodes" (BDF, for stiff models), "verlet", "semi_explicit_euler2",
-/// "explicit_euler"; and SUNDIALS CVODE's "cvode_bdf" (dense Newton, stiff) and
-/// "cvode_adams" (fixed point, non-stiff) on the same model (sim/cvode_integrator.hpp).
+/// "explicit_euler"; SUNDIALS CVODE's "cvode_bdf" (dense Newton, stiff) and
+/// "cvode_adams" (fixed point, non-stiff), and ARKODE's "arkode_erk" (explicit RK,
+/// order 4) and "arkode_dirk" (implicit SDIRK, dense Newton) on the same model
+/// (sim/cvode_integrator.hpp).
 /// For CVODE "realizations" counts right-hand-side evaluations.
 
 #include <functional>

@@ -29,7 +29,7 @@ struct TradeRun {
 };
 
 struct TradeOptions {
-  std::vector<std::string> integrators{"rk_merson", "rk3", "cpodes", "cvode_bdf", "cvode_adams"};
+  std::vector<std::string> integrators{"rk_merson", "rk3", "cpodes", "cvode_bdf", "cvode_adams", "arkode_erk", "arkode_dirk"};
   std::vector<double> accuracies{1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
   std::vector<int> segments{2, 4, 8};  ///< with the reference integrator at 1e-8 (compared to the scene's segments).
   double duration = 0;  ///< 0: the scene's.

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
   CLI::App* tp = app.add_subcommand("trade", "Speed-accuracy trade of a time run: integrators x tolerances, segments");
   addSceneOptions(tp, tr);
   tp->add_flag("--json", tr.json, "Print JSON instead of tables");
-  tp->add_option("--integrators", tr.integrators, "Comma-separated (default rk_merson,rk3,cpodes,cvode_bdf,cvode_adams)")
+  tp->add_option("--integrators", tr.integrators, "Comma-separated (default rk_merson,rk3,cpodes,cvode_bdf,cvode_adams,arkode_erk,arkode_dirk)")
       ->delimiter(',');
   tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
   tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
