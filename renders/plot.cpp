@@ -190,7 +190,12 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
   }
   for (std::size_t k = 0; k < series.size(); ++k) {
     const auto& s = series[k];
-    const cv::Scalar colour = colourFor(series.size() > 1 ? 0.85 * double(k) / (series.size() - 1) : 0.3);
+    // Up to 8 series: the Okabe-Ito colour-blind-safe qualitative palette (BGR), so
+    // neighbouring series stay distinguishable; more: the sequential map.
+    static const cv::Scalar kQualitative[8] = {{0, 0, 0},       {0, 159, 230}, {233, 180, 86}, {115, 158, 0},
+                                               {66, 228, 240},  {178, 114, 0}, {0, 94, 213},   {167, 121, 204}};
+    const cv::Scalar colour = series.size() <= 8 ? kQualitative[k]
+                              : colourFor(0.85 * double(k) / (series.size() - 1));
     for (std::size_t i = 1; i < s.x.size() && !s.markers_only; ++i) {
       if (!usable(s.x[i - 1], s.y[i - 1]) || !usable(s.x[i], s.y[i])) continue;
       const cv::Point a(px(s.x[i - 1]), py(s.y[i - 1])), b(px(s.x[i]), py(s.y[i]));
