@@ -28,6 +28,14 @@ double maxAbsColumn(const SimulationRecord& r, const std::string& name) {
   return m;
 }
 
+// Two rigid 0.5 m links of 0.5 kg on free pins, released at rest from horizontal.
+Scene releasedDoublePendulum() {
+  Scene s = testing::chainScene(2, 1.0, 1.0, 9.81);
+  s.article.joints[0].angle = M_PI / 2;
+  s.simulation.from_equilibrium = false;
+  return s;
+}
+
 // One rigid uniform link (1 m, 3 kg) held horizontal by a servo of stiffness k; released
 // at its commanded angle it swings about the sagged equilibrium delta = m g L / (2 k).
 Scene stiffServo(double k) {
@@ -94,9 +102,7 @@ TEST(Extremes, HugeTipMassRatio) {
 // over 200 s: 2.9e-4 J and 1.7e-6 J); over 1000 s at 1e-6 it stays below 1e-3 m g L
 // (measured 1.3e-3 J = 1.4e-4 m g L, 141 000 steps, about 12 s) and is never flagged.
 TEST(Extremes, LongFreeRunEnergyDrift) {
-  Scene s = testing::chainScene(2, 1.0, 1.0, 9.81);
-  s.article.joints[0].angle = M_PI / 2;
-  s.simulation.from_equilibrium = false;
+  Scene s = releasedDoublePendulum();
   s.simulation.duration = 100;
   s.simulation.sample_rate_hz = 10;
   s.simulation.accuracy = 1e-6;
@@ -124,9 +130,7 @@ TEST(Extremes, LongFreeRunEnergyDrift) {
 // scale over these 2 s, and rightly carries none: the balance is a necessary check, not
 // a sufficient one. Outside (0, 1) Simbody would abort; simulate() refuses first.
 TEST(Extremes, ToleranceExtremes) {
-  Scene s = testing::chainScene(2, 1.0, 1.0, 9.81);
-  s.article.joints[0].angle = M_PI / 2;
-  s.simulation.from_equilibrium = false;
+  Scene s = releasedDoublePendulum();
   s.simulation.duration = 2;
   s.simulation.sample_rate_hz = 100;
   for (const char* integ : {"rk_merson", "cpodes", "cvode_bdf"}) {
