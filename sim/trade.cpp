@@ -3,23 +3,28 @@
 #include <algorithm>
 #include <cmath>
 
+#include "article/article_spec.hpp"
 #include "sim/simulation.hpp"
 #include "sim/statics.hpp"
 
 namespace mmv {
 namespace {
 
-/// Column indices of the link tips' x and y.
-std::vector<std::pair<int, int>> tipColumns(const SimulationRecord& r) {
+/// Column indices of the scored tips' x and y (every tip when `points` is empty).
+std::vector<std::pair<int, int>> tipColumns(const SimulationRecord& r, const std::vector<std::string>& points) {
   std::vector<std::pair<int, int>> out;
-  for (std::size_t c = 0; c + 1 < r.columns.size(); ++c)
-    if (r.columns[c].size() > 8 && r.columns[c].compare(r.columns[c].size() - 8, 8, ".tip_x_m") == 0)
+  for (std::size_t c = 0; c + 1 < r.columns.size(); ++c) {
+    const std::string& name = r.columns[c];
+    if (name.size() <= 8 || name.compare(name.size() - 8, 8, ".tip_x_m") != 0) continue;
+    const std::string point = name.substr(0, name.size() - 5);  // "link3a.tip"
+    if (points.empty() || std::find(points.begin(), points.end(), point) != points.end())
       out.push_back({static_cast<int>(c), static_cast<int>(c + 1)});
+  }
   return out;
 }
 
-double distance(const SimulationRecord& a, const SimulationRecord& b) {
-  const auto ca = tipColumns(a), cb = tipColumns(b);
+double distance(const SimulationRecord& a, const SimulationRecord& b, const std::vector<std::string>& points) {
+  const auto ca = tipColumns(a, points), cb = tipColumns(b, points);
   double worst = 0;
   const std::size_t rows = std::min(a.rows.size(), b.rows.size());
   for (std::size_t k = 0; k < rows; ++k)
@@ -34,8 +39,20 @@ double distance(const SimulationRecord& a, const SimulationRecord& b) {
 TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
   Scene scene = base;
   if (o.duration > 0) scene.simulation.duration = o.duration;
+  if (!o.points.empty()) {
+    std::vector<std::string> tips;
+    for (const auto& p : articlePointNames(scene.article))
+      if (p.size() > 4 && p.compare(p.size() - 4, 4, ".tip") == 0) tips.push_back(p);
+    for (const auto& p : o.points)
+      if (std::find(tips.begin(), tips.end(), p) == tips.end()) {
+        std::string known;
+        for (const auto& t : tips) known += (known.empty() ? "" : ", ") + t;
+        throw SceneError(scene.source + ": trade: '" + p + "' is not a link tip of the scene (known: " + known + ")");
+      }
+  }
   TradeStudy study;
   study.scene_name = scene.name;
+  study.points = o.points;
   study.duration = scene.simulation.duration;
   auto run = [&](Scene s, const std::string& integrator, double accuracy) {
     s.simulation.integrator = integrator;
@@ -44,7 +61,7 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
   };
   const SimulationResult ref = run(scene, "cpodes", 1e-10);
   const SimulationResult check = run(scene, "cvode_bdf", 1e-10);
-  study.reference_uncertainty_m = distance(ref.record, check.record);
+  study.reference_uncertainty_m = distance(ref.record, check.record, o.points);
   study.reference_seconds = ref.wall_seconds;
   for (const auto& name : o.integrators)
     for (double acc : o.accuracies) {
@@ -53,7 +70,7 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
       r.accuracy = acc;
       try {
         const SimulationResult s = run(scene, name, acc);
-        r.error_m = distance(s.record, ref.record);
+        r.error_m = distance(s.record, ref.record, o.points);
         r.seconds = s.wall_seconds;
         r.evaluations = s.realizations;
       } catch (const NumericalError& e) {
@@ -71,7 +88,7 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
     overrideSegments(s, n);
     try {
       const SimulationResult res = run(s, "cpodes", 1e-8);
-      r.error_m = distance(res.record, ref.record);
+      r.error_m = distance(res.record, ref.record, o.points);
       r.seconds = res.wall_seconds;
       r.evaluations = res.realizations;
     } catch (const NumericalError& e) {

@@ -2,8 +2,8 @@
 /// The speed-accuracy trade of a time run: every integrator over a ladder of
 /// tolerances, and the segments per link over a ladder, against a tight reference.
 ///
-/// Error: the largest distance, over the samples and the link tips, between a run's
-/// tip positions and the reference's (m). The reference is CPodes at accuracy 1e-10;
+/// Error: the largest distance, over the samples and the scored points (every link tip,
+/// or the tips the user names), between a run's positions and the reference's (m). The reference is CPodes at accuracy 1e-10;
 /// CVODE BDF at 1e-10 is run too, and their largest difference is the reference's own
 /// uncertainty (errors below it cannot be told apart). Cost: wall-clock CPU seconds and
 /// right-hand-side evaluations (realizations). A run is on the Pareto front when no
@@ -33,16 +33,20 @@ struct TradeOptions {
   std::vector<double> accuracies{1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
   std::vector<int> segments{2, 4, 8};  ///< with the reference integrator at 1e-8 (compared to the scene's segments).
   double duration = 0;  ///< 0: the scene's.
+  std::vector<std::string> points;  ///< tips scored, e.g. "link3a.tip"; empty: every link tip.
 };
 
 struct TradeStudy {
   std::string scene_name;
   double duration = 0;
+  std::vector<std::string> points;  ///< as TradeOptions::points.
   double reference_uncertainty_m = 0;
   double reference_seconds = 0;
   std::vector<TradeRun> runs;
 };
 
+/// Throws SceneError, before running anything, when options.points names a point that
+/// is not a link tip of the scene (the message lists the known ones).
 TradeStudy runTrade(const Scene& scene, const TradeOptions& options);
 
 }  // namespace mmv

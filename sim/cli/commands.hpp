@@ -97,6 +97,7 @@ struct TradeArgs : SceneArgs {
   std::vector<std::string> integrators;
   std::vector<double> accuracies;
   std::vector<int> segments_ladder;
+  std::vector<std::string> points;
   double duration = 0;
   double target_error = 1e-4;  ///< m
   std::string out;

@@ -28,6 +28,11 @@ std::string text(const TradeStudy& s, double target) {
   os << strf("Reference: cpodes at 1e-10 (%.2f s); its difference from cvode_bdf at 1e-10 is %.2g m, below which errors "
              "cannot be told apart\n\n",
              s.reference_seconds, s.reference_uncertainty_m);
+  if (!s.points.empty()) {
+    os << "Error scored at:";
+    for (const auto& p : s.points) os << ' ' << p;
+    os << "\n\n";
+  }
   Table t({"integrator", "accuracy", "segments", "tip_error_m", "cpu_s", "evaluations", "pareto"});
   for (const auto& r : s.runs) {
     if (!r.ok) {
@@ -53,6 +58,7 @@ nlohmann::ordered_json json(const TradeStudy& s, double target) {
   j["command"] = "trade";
   j["duration_s"] = s.duration;
   j["reference"] = {{"integrator", "cpodes"}, {"accuracy", 1e-10}, {"uncertainty_m", s.reference_uncertainty_m}};
+  j["points"] = s.points;  // empty: every link tip
   auto runs = nlohmann::ordered_json::array();
   for (const auto& r : s.runs) {
     nlohmann::ordered_json x = {{"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments}, {"ok", r.ok}};
@@ -84,6 +90,7 @@ int runTradeCommand(const TradeArgs& args) {
     if (!args.accuracies.empty()) o.accuracies = args.accuracies;
     if (!args.segments_ladder.empty()) o.segments = args.segments_ladder;
     o.duration = args.duration;
+    o.points = args.points;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const TradeStudy s = runTrade(scene, o);

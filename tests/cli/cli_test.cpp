@@ -404,14 +404,20 @@ TEST_F(Cli, TradeWritesItsStudy) {
   const fs::path out = dir_ / "trade";
   const Result r = run("trade " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string() +
                        " --segments 2 --duration 0.4 --integrators rk_merson,cvode_bdf --accuracies 1e-3,1e-5 "
-                       "--segment-ladder 1 --target-error 1e-3 --out " + out.string());
+                       "--segment-ladder 1 --target-error 1e-3 --points link3a.tip --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Cheapest run within"), std::string::npos);
+  EXPECT_NE(r.out.find("Error scored at: link3a.tip\n"), std::string::npos) << r.out;
   const std::string csv = slurp(out / "trade.csv");
   EXPECT_EQ(csv.rfind("integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 5);
   EXPECT_TRUE(isPng(out / "trade.png"));
-  EXPECT_EQ(nlohmann::json::parse(slurp(out / "trade.json"))["runs"].size(), 5u);
+  const nlohmann::json j = nlohmann::json::parse(slurp(out / "trade.json"));
+  EXPECT_EQ(j["runs"].size(), 5u);
+  EXPECT_EQ(j["points"], nlohmann::json::array({"link3a.tip"}));
+  const Result bad = run("trade --duration 0.1 --points tip9");
+  EXPECT_EQ(bad.code, 65);
+  EXPECT_NE(bad.err.find("'tip9' is not a link tip of the scene"), std::string::npos) << bad.err;
 }
 
 }  // namespace
