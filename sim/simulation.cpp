@@ -254,7 +254,7 @@ double energyScale(const SimulationResult& r) {
 
 std::string energyBalanceWarning(const SimulationResult& r) {
   const double scale = energyScale(r), err = std::abs(r.energy_balance_error_j);
-  if (err <= 0.01 * scale || (scale == 0 && err == 0)) return {};
+  if (err <= 0.01 * scale) return {};
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "energy balance error %.3g J is %.3g %% of the run's energy scale %.3g J: the run is not accurate "

@@ -63,31 +63,14 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
   const SimulationResult check = run(scene, "cvode_bdf", 1e-10);
   study.reference_uncertainty_m = distance(ref.record, check.record, o.points);
   study.reference_seconds = ref.wall_seconds;
-  for (const auto& name : o.integrators)
-    for (double acc : o.accuracies) {
-      TradeRun r;
-      r.integrator = name;
-      r.accuracy = acc;
-      try {
-        const SimulationResult s = run(scene, name, acc);
-        r.error_m = distance(s.record, ref.record, o.points);
-        r.seconds = s.wall_seconds;
-        r.evaluations = s.realizations;
-      } catch (const NumericalError& e) {
-        r.ok = false;
-        r.failure = e.what();
-      }
-      study.runs.push_back(r);
-    }
-  for (int n : o.segments) {
+  // One scored run: its error against the reference and its cost, or its diagnostic.
+  auto measure = [&](const Scene& s, const std::string& integrator, double accuracy, int segments) {
     TradeRun r;
-    r.integrator = "cpodes";
-    r.accuracy = 1e-8;
-    r.segments = n;
-    Scene s = scene;
-    overrideSegments(s, n);
+    r.integrator = integrator;
+    r.accuracy = accuracy;
+    r.segments = segments;
     try {
-      const SimulationResult res = run(s, "cpodes", 1e-8);
+      const SimulationResult res = run(s, integrator, accuracy);
       r.error_m = distance(res.record, ref.record, o.points);
       r.seconds = res.wall_seconds;
       r.evaluations = res.realizations;
@@ -96,6 +79,13 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
       r.failure = e.what();
     }
     study.runs.push_back(r);
+  };
+  for (const auto& name : o.integrators)
+    for (double acc : o.accuracies) measure(scene, name, acc, 0);
+  for (int n : o.segments) {
+    Scene s = scene;
+    overrideSegments(s, n);
+    measure(s, "cpodes", 1e-8, n);
   }
   // Pareto front among the integrator runs at the scene's segments.
   for (auto& a : study.runs) {

@@ -61,15 +61,18 @@ TEST(Extremes, VeryStiffServo) {
   const double f = solveSceneModes(s).frequencies_hz(0);
   EXPECT_NEAR(f / (std::sqrt(k / (m * L * L / 3)) / (2 * M_PI)), 1.0, 1e-9);
   const double delta = m * g * L / (2 * k);
+  int explicit_steps = 0;
   for (const char* integ : {"rk_merson", "cpodes", "cvode_bdf"}) {
     Scene run = s;
     run.simulation.integrator = integ;
     const SimulationResult r = simulate(run);
     EXPECT_LT(maxAbsColumn(r.record, "j1_angle_deg") * M_PI / 180, 2 * delta + 1e-6) << integ;
     EXPECT_LT(std::abs(r.final_energy_j - r.initial_energy_j), 1e-6 * m * g * L) << integ;
+    if (std::string(integ) == "rk_merson") explicit_steps = r.steps;
   }
-  Scene soft = stiffServo(1e4), stiff = s;
-  EXPECT_GT(simulate(stiff).steps, 10 * simulate(soft).steps);
+  Scene soft = stiffServo(1e4);
+  soft.simulation.integrator = "rk_merson";
+  EXPECT_GT(explicit_steps, 10 * simulate(soft).steps);
 }
 
 // A tip mass 7000 times the beam's (the report's mass ratios are far smaller): the

@@ -7,17 +7,23 @@
 namespace mmv {
 namespace {
 
-// A short flexible slew: for each integrator the error against the reference falls as
-// the accuracy tightens by 1e3, the reference is far more certain than the errors, and
-// the Pareto front is the set of runs no other run dominates.
-TEST(Trade, ErrorsFallWithAccuracyAndTheFrontIsNonDominated) {
+// The default article at 2 segments per link, joint 2 slewing 0 -> 45 deg, 50 Hz samples.
+Scene shortSlew(double duration) {
   Scene s = loadDefaultScene();
   overrideSegments(s, 2);
   SlewSpec sl;
   sl.to = 45 * M_PI / 180;
   s.article.joints[1].slew = sl;
-  s.simulation.duration = 0.8;
+  s.simulation.duration = duration;
   s.simulation.sample_rate_hz = 50;
+  return s;
+}
+
+// A short flexible slew: for each integrator the error against the reference falls as
+// the accuracy tightens by 1e3, the reference is far more certain than the errors, and
+// the Pareto front is the set of runs no other run dominates.
+TEST(Trade, ErrorsFallWithAccuracyAndTheFrontIsNonDominated) {
+  const Scene s = shortSlew(0.8);
   TradeOptions o;
   o.integrators = {"rk_merson", "cpodes", "cvode_bdf"};
   o.accuracies = {1e-3, 1e-6};
@@ -48,13 +54,7 @@ TEST(Trade, ErrorsFallWithAccuracyAndTheFrontIsNonDominated) {
 // stiffest, shortest lever; measured several times smaller). A name that is not a tip
 // is refused before anything runs.
 TEST(Trade, ErrorAtChosenPoints) {
-  Scene s = loadDefaultScene();
-  overrideSegments(s, 2);
-  SlewSpec sl;
-  sl.to = 45 * M_PI / 180;
-  s.article.joints[1].slew = sl;
-  s.simulation.duration = 0.5;
-  s.simulation.sample_rate_hz = 50;
+  const Scene s = shortSlew(0.5);
   TradeOptions o;
   o.integrators = {"cpodes"};
   o.accuracies = {1e-3, 1e-5};
