@@ -10,6 +10,7 @@
 #include <string>
 
 #include "article/article_spec.hpp"
+#include "article/hamsas.hpp"
 
 namespace mmv {
 
@@ -53,6 +54,8 @@ struct Scene {
   std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
   SimulationSpec simulation;
   std::vector<SensorSceneSpec> sensors;
+  /// Set for a HAM-SAS isolator scene (top-level `hamsas:`); the article is then empty.
+  std::optional<HamsasSpec> hamsas;
 };
 
 /// Bad scene content. what() is one line: "file:line:col: what is wrong (got X)".

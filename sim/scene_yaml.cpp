@@ -216,6 +216,7 @@ class SceneParser {
   Scene parse(const YAML::Node& root, const std::string& source) {
     if (!root.IsDefined() || root.IsNull())
       r_.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
+    if (root.IsMap() && root["hamsas"]) return parseHamsas(root, source);
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
                                      "links", "closures", "loads", "damping", "simulation", "sensors"});
     Scene scene;
@@ -325,6 +326,41 @@ class SceneParser {
       s.from_equilibrium = st == "equilibrium";
     }
     return s;
+  }
+
+  /// A HAM-SAS isolator scene: `name` and `hamsas:` (docs/scene-format.md, docs/hamsas.md).
+  Scene parseHamsas(const YAML::Node& root, const std::string& source) {
+    auto top = r_.mapping(root, "", {"name", "hamsas"});
+    Scene scene;
+    scene.source = source;
+    scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
+    scene.gravity = {0, 0, -9.80665};
+    HamsasSpec h;
+    std::vector<std::string> allowed{"spherical_joints"};
+    for (const HamsasParameter& p : hamsasParameters()) allowed.push_back(p.key);
+    const YAML::Node& node = top.at("hamsas");
+    auto m = r_.mapping(node, "hamsas", allowed);
+    for (const HamsasParameter& p : hamsasParameters()) {
+      auto it = m.find(p.key);
+      if (it == m.end()) continue;
+      const std::string path = std::string("hamsas.") + p.key;
+      h.*p.field = p.sign == HamsasParameter::Positive      ? r_.positive(it->second, path, p.unit)
+                   : p.sign == HamsasParameter::NonNegative ? r_.nonNegative(it->second, path, p.unit)
+                                                            : r_.number(it->second, path);
+    }
+    if (m.count("spherical_joints")) {
+      const std::string j = r_.text(m.at("spherical_joints"), "hamsas.spherical_joints");
+      if (j != "stiff" && j != "ideal")
+        r_.fail(m.at("spherical_joints").Mark(), "hamsas.spherical_joints must be stiff or ideal (got " + j + ")");
+      h.ideal_joints = j == "ideal";
+    }
+    if (h.lp_length >= h.ip_length) {
+      std::ostringstream os;
+      os << "hamsas.lp_length must be shorter than hamsas.ip_length = " << h.ip_length << " m (got " << h.lp_length << ")";
+      r_.fail((m.count("lp_length") ? m.at("lp_length") : node).Mark(), os.str());
+    }
+    scene.hamsas = h;
+    return scene;
   }
 
   DampingSpec readDamping(const YAML::Node& n) {

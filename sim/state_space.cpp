@@ -216,12 +216,28 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
     int index;
     bool pair;
     double magnitude;
+    Eigen::MatrixXd residue;  ///< |C_o v| |w B_i| / |lambda| per output-input pair.
   };
   std::vector<ModeRef> modes;
+  Eigen::MatrixXd pair_max = Eigen::MatrixXd::Zero(full.C.rows(), full.B.cols());
   for (int i = 0; i < nx; ++i) {
     const double im = lambda[i].imag();
     if (im < -1e-12 * std::abs(lambda[i])) continue;
-    modes.push_back({i, im > 1e-12 * std::abs(lambda[i]), std::abs(lambda[i])});
+    const Eigen::VectorXd cv = (full.C.cast<cd>() * V.col(i)).cwiseAbs();
+    const Eigen::RowVectorXd wb = (W.row(i) * Bt.cast<cd>()).cwiseAbs();
+    const Eigen::MatrixXd r = cv * wb / std::max(std::abs(lambda[i]), 1e-300);
+    pair_max = pair_max.cwiseMax(r);
+    modes.push_back({i, im > 1e-12 * std::abs(lambda[i]), std::abs(lambda[i]), r});
+  }
+  int unseen = 0;
+  if (o.drop_unseen && pair_max.size()) {
+    // A mode is seen when some pair gets at least 1e-9 of that pair's largest modal
+    // contribution (pairs that are zero by symmetry are measured against 1e-12 of the
+    // model's largest, so their round-off sees nothing).
+    const Eigen::MatrixXd floor = (1e-9 * pair_max).cwiseMax(1e-12 * pair_max.maxCoeff());
+    std::vector<ModeRef> seen;
+    for (const auto& m : modes) ((m.residue - floor).maxCoeff() >= 0 ? seen.push_back(m) : void(++unseen));
+    modes.swap(seen);
   }
   std::stable_sort(modes.begin(), modes.end(), [](const ModeRef& a, const ModeRef& b) { return a.magnitude < b.magnitude; });
   std::vector<ModeRef> kept;
@@ -273,7 +289,8 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
   r.output_units = full.output_units;
   for (int k = 0; k < nr; ++k) r.state_names.push_back("modal" + std::to_string(k + 1));
   red.kept_modes = static_cast<int>(kept.size());
-  red.discarded_modes = static_cast<int>(modes.size() - kept.size());
+  red.discarded_modes = static_cast<int>(modes.size() - kept.size()) + unseen;
+  red.unseen_modes = unseen;
   for (const auto& m : kept) red.kept_frequencies_hz.push_back(m.magnitude / (2 * M_PI));
   if (o.residualize && red.discarded_modes > 0) {
     const Eigen::FullPivLU<Eigen::MatrixXd> a_full(full.A);

@@ -103,11 +103,15 @@ struct ReductionOptions {
                  ///< root no faster than them (0: use the band).
   double band_min_hz = 0, band_max_hz = 0;  ///< keep modes with |lambda|/2pi in the band.
   bool residualize = true;           ///< add the discarded modes' static contribution to D.
+  /// Skip modes no input-output pair sees (residue ||C v|| ||w B|| / |lambda| below 1e-9
+  /// of the largest): symmetric structures have many (an isolator's leg torsion).
+  bool drop_unseen = false;
 };
 
 struct ReducedModel {
   StateSpace model;
   int kept_modes = 0, discarded_modes = 0;
+  int unseen_modes = 0;  ///< of the discarded, those no input-output pair sees (drop_unseen).
   bool residualized = false;
   std::vector<double> kept_frequencies_hz;
 };

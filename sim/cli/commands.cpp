@@ -15,9 +15,17 @@ namespace mmv::cli {
 /// Loads the scene and applies command-line overrides.
 Scene loadScene(const SceneArgs& args) {
   Scene scene = args.scene_path.empty() ? loadDefaultScene() : loadSceneFile(args.scene_path);
+  if (scene.hamsas && (args.segments > 0 || args.no_gravity))
+    throw UsageError("--segments and --no-gravity do not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
   if (args.segments > 0) overrideSegments(scene, args.segments);
   if (args.no_gravity) scene.gravity = {0, 0, 0};
   return scene;
+}
+
+void requireArticleScene(const Scene& scene, const std::string& command) {
+  if (scene.hamsas)
+    throw UsageError(command + ": " + scene.source +
+                     " is a HAM-SAS isolator scene; it supports modes, frf and rom (docs/hamsas.md)");
 }
 
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {
@@ -61,8 +69,9 @@ int guarded(const std::function<int()>& body) {
 }
 
 int runModesCommand(const ModesArgs& args) {
-  return guarded([&] {
+  return guarded([&]() -> int {
     const Scene scene = loadScene(args);
+    if (scene.hamsas) return runHamsasModes(args, scene);
     ModesOptions opt;
     opt.max_modes = args.modes;
     opt.with_shapes = args.json;
@@ -76,6 +85,7 @@ int runModesCommand(const ModesArgs& args) {
 int runConvergeCommand(const ConvergeArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
+    requireArticleScene(scene, "converge");
     const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);
     const std::string out = args.json ? convergenceToJson(c).dump(2) + "\n" : formatConvergenceText(c);
     std::cout << out << std::flush;

@@ -10,6 +10,7 @@
 
 #include "sim/components.hpp"
 #include "sim/scene.hpp"
+#include "sim/state_space.hpp"
 
 namespace mmv::cli {
 
@@ -80,6 +81,7 @@ struct LinearArgs : SceneArgs {
   double damping_ratio = 0.01;
   bool damping_given = false;  ///< --damping overrides the scene's damping.
   bool rad = false;
+  std::vector<std::string> vary;  ///< HAM-SAS frf: one "KEY=V1,V2,...".
   std::string out;
   bool force = false;
 };
@@ -113,6 +115,15 @@ int runSweepCommand(const SweepArgs& args);
 int runCompareCommand(const CompareArgs& args);
 int runConvergeCommand(const ConvergeArgs& args);
 int runSceneCommand();
+
+// HAM-SAS isolator scenes (sim/cli/hamsas_command.cpp).
+int runHamsasModes(const ModesArgs& args, const Scene& scene);
+int runHamsasFrf(const LinearArgs& args, const Scene& scene, const std::vector<double>& freqs_hz);
+int runHamsasRom(const LinearArgs& args, const Scene& scene, const std::vector<double>& freqs_hz);
+/// --rom-modes / --band / --no-residualize as reduction options.
+ReductionOptions reductionOptions(const LinearArgs& args);
+/// Throws UsageError for a HAM-SAS scene given to a command that analyses the MMV article.
+void requireArticleScene(const Scene& scene, const std::string& command);
 
 // Shared by the command implementations.
 Scene loadScene(const SceneArgs& args);

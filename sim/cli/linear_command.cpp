@@ -65,7 +65,9 @@ LinearModel build(const LinearArgs& args, const Scene& scene) {
   return buildLinearModel(scene, in, out, d);
 }
 
-ReducedModel reduce(const LinearArgs& args, const StateSpace& full) {
+}  // namespace
+
+ReductionOptions reductionOptions(const LinearArgs& args) {
   ReductionOptions o;
   o.modes = args.rom_modes;
   if (!args.band.empty()) {
@@ -78,8 +80,12 @@ ReducedModel reduce(const LinearArgs& args, const StateSpace& full) {
     o.modes = 0;
   }
   o.residualize = !args.no_residualize;
-  return reduceModal(full, o);
+  return o;
 }
+
+namespace {
+
+ReducedModel reduce(const LinearArgs& args, const StateSpace& full) { return reduceModal(full, reductionOptions(args)); }
 
 std::vector<double> frequencies(const LinearArgs& a) {
   if (!(a.f_min > 0) || !(a.f_max > a.f_min)) throw UsageError("--from/--to: need 0 < FROM < TO (Hz)");
@@ -218,9 +224,11 @@ std::string uffFor(const LinearModel& lm, const Scene& scene, const std::vector<
 }  // namespace
 
 int runFrfCommand(const LinearArgs& args) {
-  return guarded([&] {
+  return guarded([&]() -> int {
     const Scene scene = loadScene(args);
     const std::vector<double> f = frequencies(args);
+    if (scene.hamsas) return runHamsasFrf(args, scene, f);
+    if (!args.vary.empty()) throw UsageError("--vary applies to HAM-SAS scenes only");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const LinearModel lm = build(args, scene);
@@ -276,10 +284,11 @@ int runFrfCommand(const LinearArgs& args) {
 }
 
 int runRomCommand(const LinearArgs& args) {
-  return guarded([&] {
+  return guarded([&]() -> int {
     if (args.out.empty()) throw UsageError("rom: --out DIR is required (it writes rom.mat and full.mat)");
     const Scene scene = loadScene(args);
     const std::vector<double> f = frequencies(args);
+    if (scene.hamsas) return runHamsasRom(args, scene, f);
     OutputDir out(args.out, args.force);
     const LinearModel lm = build(args, scene);
     const ReducedModel red = reduce(args, lm.full);

@@ -88,6 +88,7 @@ int main(int argc, char** argv) {
   CLI::App* fr = app.add_subcommand("frf", "Frequency responses and transmissibilities, full and reduced; CSV and Bode plots");
   addLinear(fr);
   fr->add_flag("--rad", lin.rad, "Plot against rad/s instead of Hz");
+  fr->add_option("--vary", lin.vary, "HAM-SAS: one parameter over values, KEY=V1,V2,... (e.g. counterweight_mass=0,3.5,7)")->expected(1);
   CLI::App* ro = app.add_subcommand("rom", "Reduced-order state-space model for control design, as .mat (Octave/MATLAB ss)");
   addLinear(ro);
 

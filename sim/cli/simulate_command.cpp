@@ -97,6 +97,7 @@ std::string historyCsv(const SimulationRecord& rec) {
 int runSimulateCommand(const SimulateArgs& args) {
   return guarded([&] {
     Scene scene = loadScene(args);
+    requireArticleScene(scene, "simulate");
     if (!args.integrator.empty()) scene.simulation.integrator = args.integrator;
     if (args.accuracy > 0) scene.simulation.accuracy = args.accuracy;
     if (args.duration > 0) scene.simulation.duration = args.duration;

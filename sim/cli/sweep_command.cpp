@@ -206,6 +206,7 @@ void plots(OutputDir& out, const SweepResult& r) {
 int runSweepCommand(const SweepArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
+    requireArticleScene(scene, "sweep-config");
     SweepOptions o;
     if (args.grids.empty() || args.grids.size() > 2) throw UsageError("--grid: give one or two grids");
     for (const auto& g : args.grids) o.axes.push_back(parseGrid(g, scene));

@@ -85,6 +85,7 @@ nlohmann::ordered_json json(const TradeStudy& s, double target) {
 int runTradeCommand(const TradeArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
+    requireArticleScene(scene, "trade");
     TradeOptions o;
     if (!args.integrators.empty()) o.integrators = args.integrators;
     if (!args.accuracies.empty()) o.accuracies = args.accuracies;
