@@ -6,6 +6,7 @@
 
 #include "article/article_builder.hpp"
 #include "sim/analysis.hpp"
+#include "sim/hamsas_analysis.hpp"
 #include "sim/linearize.hpp"
 #include "sim/modal.hpp"
 #include "sim/statics.hpp"
@@ -96,3 +97,24 @@ void BM_SynthesisAssumedModes(benchmark::State& st) {
 BENCHMARK(BM_SynthesisAssumedModes)->Apply(segmentArgs);
 
 }  // namespace
+
+// HAM-SAS (scenes/hamsas.yaml): linearization with preloads, eigen solution and
+// feature identification, stiff springs (0) and ideal joints (1); one 6 x 6
+// transmissibility point.
+mmv::HamsasSpec hamsasScene(bool ideal) {
+  mmv::HamsasSpec h = *mmv::loadSceneFile(MMVLAB_SOURCE_DIR "/scenes/hamsas.yaml").hamsas;
+  h.ideal_joints = ideal;
+  return h;
+}
+
+void BM_HamsasModes(benchmark::State& st) {
+  const mmv::HamsasSpec h = hamsasScene(st.range(0) != 0);
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::analyseHamsas(h));
+}
+BENCHMARK(BM_HamsasModes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_HamsasTransmissibilityPoint(benchmark::State& st) {
+  const mmv::HamsasModes h = mmv::analyseHamsas(hamsasScene(false));
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::spatialTransmissibility(h.model, h.lin, 2 * M_PI * 10.0));
+}
+BENCHMARK(BM_HamsasTransmissibilityPoint)->Unit(benchmark::kMicrosecond);

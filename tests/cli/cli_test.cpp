@@ -123,6 +123,77 @@ TEST_F(Cli, EveryShippedSceneRuns) {
   EXPECT_GE(count, 1);
 }
 
+TEST_F(Cli, HamsasModesTableAndJson) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string();
+  const Result r = run("modes " + scene);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("Measured (LASTI, in vacuum) vs model"), std::string::npos);
+  EXPECT_NE(r.out.find("effective spherical joints"), std::string::npos);
+  const Result j = run("modes --json --modes 0 " + scene);
+  ASSERT_EQ(j.code, 0) << j.err;
+  const nlohmann::json doc = nlohmann::json::parse(j.out);
+  EXPECT_EQ(doc["model"], "hamsas");
+  EXPECT_EQ(doc["features"].size(), 9u);
+  EXPECT_EQ(doc["modes"].size(), 60u);
+  for (const auto& f : doc["features"]) EXPECT_NEAR(f["model_hz"].get<double>() / f["measured_hz"].get<double>(), 1.0, 0.05);
+}
+
+TEST_F(Cli, HamsasFrfAndRomWriteTheirFiles) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string();
+  const Result f = run("frf " + scene + " --points 80 --out " + (dir_ / "frf").string() + " --vary counterweight_mass=0,3.5");
+  ASSERT_EQ(f.code, 0) << f.err;
+  for (const char* name : {"transmissibility.csv", "transmissibility_horizontal.png", "transmissibility_vertical.png",
+                           "transmissibility_angular.png", "transmissibility_10hz.png", "transmissibility_vary.png"})
+    EXPECT_TRUE(fs::exists(dir_ / "frf" / name)) << name;
+  EXPECT_NE(f.out.find("x <- ground x"), std::string::npos);
+  EXPECT_NE(f.out.find("Varying counterweight_mass"), std::string::npos);
+  const std::string csv = slurp(dir_ / "frf" / "transmissibility.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 81);
+  const Result r = run("rom " + scene + " --band 0:80 --out " + (dir_ / "rom").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(slurp(dir_ / "rom" / "rom.json"));
+  EXPECT_EQ(j["inputs"].size(), 8u);
+  EXPECT_EQ(j["outputs"].size(), 8u);
+  EXPECT_LT(j["reduced_states"].get<int>(), j["full_states"].get<int>());
+  EXPECT_LT(j["max_relative_frf_error"].get<double>(), 0.01);
+  EXPECT_TRUE(fs::exists(dir_ / "rom" / "rom.mat"));
+}
+
+TEST_F(Cli, HamsasSceneErrorsAndCommandsThatDoNotApply) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string();
+  for (const std::string cmd : {"compare ", "simulate ", "trade ", "converge ", "sweep-config "}) {
+    const Result r = run(cmd + scene + (cmd == "sweep-config " ? " --grid joint2:0:10:10" : ""));
+    EXPECT_EQ(r.code, 64) << cmd << r.err;
+    EXPECT_NE(r.err.find("HAM-SAS isolator scene"), std::string::npos) << cmd << r.err;
+  }
+  EXPECT_EQ(run("frf " + scene + " --vary no_such_key=1").code, 64);
+  EXPECT_EQ(run("frf " + scene + " --input table_x").code, 64);
+  EXPECT_EQ(run("modes --segments 4 " + scene).code, 64);
+  std::string text = slurp(scene);
+  const std::string from = "  sb_mass: 741.4";
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  std::string bad = text;
+  bad.replace(at, from.size(), "  sb_mass: -741.4");
+  Result r = run("modes " + write("bad.yaml", bad).string());
+  EXPECT_EQ(r.code, 65);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("bad.yaml:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("hamsas.sb_mass must be > 0 kg (got -741.4)"), std::string::npos) << r.err;
+  bad = text;
+  bad.replace(at, from.size(), "  sb_mas: 741.4");
+  r = run("modes " + write("typo.yaml", bad).string());
+  EXPECT_EQ(r.code, 65);
+  EXPECT_NE(r.err.find("unknown key 'hamsas.sb_mas'"), std::string::npos) << r.err;
+  bad = text;
+  const std::string joints = "spherical_joints: stiff";
+  bad.replace(bad.find(joints), joints.size(), "spherical_joints: rigid");
+  r = run("modes " + write("joints.yaml", bad).string());
+  EXPECT_EQ(r.code, 65);
+  EXPECT_NE(r.err.find("must be stiff or ideal (got rigid)"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, BadSceneExits65WithOneLineAndNoOutput) {
   std::string text = run("scene").out;
   const std::string from = "    length: 1.52";
