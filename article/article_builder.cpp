@@ -99,7 +99,7 @@ class Builder {
       c.held = true;  // at rest in statics and modes; driven in time runs
       model_.addCoordinate(c);
       model_.addBody(table.getMobilizedBodyIndex(), part, true);
-      if (base.motion) SimTK::Motion::Custom(table, new TableProgramMotion(makeTableProgram(*base.motion)));
+      if (base.motion) prescribeTableProgram(table, makeTableProgram(*base.motion));
       // Held in statics and modes, so what is welded to it counts as fixed there.
       ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
     }
@@ -331,13 +331,17 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
 std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m) {
   switch (m.type) {
     case TableMotion::Type::Sine:  // a dwell lasts as long as the run: no end of its own
-      return facility::sineDwell(m.amplitude, m.frequency_hz, std::numeric_limits<double>::max());
+      return facility::sineDwell(m.amplitude, m.frequency_hz, std::numeric_limits<double>::max(), m.ramp);
     case TableMotion::Type::Sweep: return facility::sineSweep(m.amplitude, m.from_hz, m.to_hz, m.duration, m.logarithmic);
     case TableMotion::Type::Random:
       return facility::bandLimitedRandom(m.rms, m.from_hz, m.to_hz, m.duration, m.seed);
     case TableMotion::Type::Profile: return facility::csvProfile(m.profile_csv, m.profile_source);
   }
   return nullptr;
+}
+
+void prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program) {
+  SimTK::Motion::Custom(mobod, new TableProgramMotion(std::move(program)));
 }
 
 std::unique_ptr<Model> buildArticleModel(const Scene& scene) {

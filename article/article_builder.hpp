@@ -30,4 +30,8 @@ std::unique_ptr<Model> buildArticleModel(const Scene& scene);
 /// The facility program for a table motion spec.
 std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m);
 
+/// Prescribes a one-coordinate mobilizer's position by a program (its velocity and
+/// acceleration analytically).
+void prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program);
+
 }  // namespace mmv

@@ -44,6 +44,7 @@ struct TableMotion {
   }
   double amplitude = 0;     ///< m (sine, sweep).
   double frequency_hz = 0;  ///< Hz (sine).
+  double ramp = 0;          ///< s (sine): raised-cosine ramp-in; 0: none.
   double from_hz = 0, to_hz = 0;  ///< Hz (sweep, random band).
   double duration = 0;      ///< s (sweep, random).
   bool logarithmic = false; ///< sweep.

@@ -10,20 +10,49 @@ namespace {
 
 class Sine : public TableProgram {
  public:
-  Sine(double a, double f, double T) : a_(a), w_(2 * M_PI * f), T_(T) {}
-  double position(double t) const override { return a_ * std::sin(w_ * t); }
-  double velocity(double t) const override { return a_ * w_ * std::cos(w_ * t); }
-  double acceleration(double t) const override { return -a_ * w_ * w_ * std::sin(w_ * t); }
+  Sine(double a, double f, double T, double ramp) : a_(a), w_(2 * M_PI * f), T_(T), ramp_(ramp) {}
+  double position(double t) const override {
+    double e, de, dde;
+    envelope(t, e, de, dde);
+    return a_ * e * std::sin(w_ * t);
+  }
+  double velocity(double t) const override {
+    double e, de, dde;
+    envelope(t, e, de, dde);
+    return a_ * (de * std::sin(w_ * t) + e * w_ * std::cos(w_ * t));
+  }
+  double acceleration(double t) const override {
+    double e, de, dde;
+    envelope(t, e, de, dde);
+    return a_ * ((dde - e * w_ * w_) * std::sin(w_ * t) + 2 * de * w_ * std::cos(w_ * t));
+  }
   double duration() const override { return T_; }
   double maxFrequencyHz() const override { return w_ / (2 * M_PI); }
   std::string describe() const override {
     std::ostringstream os;
     os << "sine dwell " << a_ << " m at " << w_ / (2 * M_PI) << " Hz";
+    if (ramp_ > 0) os << " (raised-cosine ramp-in over " << ramp_ << " s)";
     return os.str();
   }
 
  private:
-  double a_, w_, T_;
+  /// Amplitude envelope: 1/2 (1 - cos(pi t / ramp)) during the ramp, then 1, so the
+  /// motion starts from rest with zero acceleration instead of a velocity jump.
+  void envelope(double t, double& e, double& de, double& dde) const {
+    if (ramp_ <= 0 || t >= ramp_) {
+      e = 1, de = 0, dde = 0;
+      return;
+    }
+    if (t <= 0) {
+      e = 0, de = 0, dde = 0;
+      return;
+    }
+    const double k = M_PI / ramp_;
+    e = 0.5 * (1 - std::cos(k * t));
+    de = 0.5 * k * std::sin(k * t);
+    dde = 0.5 * k * k * std::cos(k * t);
+  }
+  double a_, w_, T_, ramp_;
 };
 
 class Sweep : public TableProgram {
@@ -145,9 +174,9 @@ void require(bool ok, const std::string& what) {
 
 }  // namespace
 
-std::unique_ptr<TableProgram> sineDwell(double a, double f, double T) {
-  require(f > 0 && T > 0 && std::isfinite(a), "sine dwell: frequency and duration must be > 0");
-  return std::make_unique<Sine>(a, f, T);
+std::unique_ptr<TableProgram> sineDwell(double a, double f, double T, double ramp) {
+  require(f > 0 && T > 0 && std::isfinite(a) && ramp >= 0, "sine dwell: frequency and duration must be > 0, ramp >= 0");
+  return std::make_unique<Sine>(a, f, T, ramp);
 }
 
 std::unique_ptr<TableProgram> sineSweep(double a, double f0, double f1, double T, bool log) {

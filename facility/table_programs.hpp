@@ -30,8 +30,10 @@ class TableProgram {
   virtual std::string describe() const = 0;
 };
 
-/// x = A sin(2 pi f t).
-std::unique_ptr<TableProgram> sineDwell(double amplitude, double frequency_hz, double duration);
+/// x = A e(t) sin(2 pi f t), e = 1, or with a ramp-in of `ramp` s a raised cosine
+/// 1/2 (1 - cos(pi t / ramp)) until then: the motion starts from rest, without the
+/// velocity jump that rings a structure's high modes.
+std::unique_ptr<TableProgram> sineDwell(double amplitude, double frequency_hz, double duration, double ramp = 0);
 /// x = A sin(phi(t)) with the instantaneous frequency phi'/(2 pi) going from f0 to f1
 /// over T, linearly or exponentially (log sweep).
 std::unique_ptr<TableProgram> sineSweep(double amplitude, double f0_hz, double f1_hz, double duration, bool logarithmic);

@@ -56,6 +56,9 @@ struct Scene {
   std::vector<SensorSceneSpec> sensors;
   /// Set for a HAM-SAS isolator scene (top-level `hamsas:`); the article is then empty.
   std::optional<HamsasSpec> hamsas;
+  /// HAM-SAS time runs: the ground's (base's) motion program along world x, y or z.
+  std::optional<TableMotion> ground_motion;
+  int ground_axis = 0;
 };
 
 /// Bad scene content. what() is one line: "file:line:col: what is wrong (got X)".

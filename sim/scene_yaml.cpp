@@ -328,9 +328,70 @@ class SceneParser {
     return s;
   }
 
+  /// A table (or ground) motion program; `extra` keys are allowed and left to the caller.
+  TableMotion readTableMotion(const YAML::Node& mn, const std::string& path, const std::vector<std::string>& extra) {
+    std::vector<std::string> keys{"type", "amplitude", "frequency_hz", "ramp_s", "from_hz", "to_hz", "duration", "log", "rms", "seed", "file"};
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    auto mm = r_.mapping(mn, path, keys);
+    const YAML::Node& tn = r_.require(mm, mn, path, "type");
+    const std::string t = r_.text(tn, path + ".type");
+    auto need = [&](const char* k) -> const YAML::Node& { return r_.require(mm, mn, path, k); };
+    auto only = [&](std::initializer_list<const char*> allowed) {
+      for (const auto& [k, v] : mm) {
+        bool ok = k == "type" || std::find(extra.begin(), extra.end(), k) != extra.end();
+        for (const char* a : allowed) ok = ok || k == a;
+        if (!ok) r_.fail(v.Mark(), path + "." + k + " does not apply to a " + t + " program");
+      }
+    };
+    TableMotion tm;
+    if (t == "sine") {
+      only({"amplitude", "frequency_hz", "ramp_s"});
+      tm.type = TableMotion::Type::Sine;
+      if (mm.count("ramp_s")) tm.ramp = r_.nonNegative(mm.at("ramp_s"), path + ".ramp_s", " s");
+      tm.amplitude = r_.number(need("amplitude"), path + ".amplitude");
+      tm.frequency_hz = r_.positive(need("frequency_hz"), path + ".frequency_hz", " Hz");
+    } else if (t == "sweep") {
+      only({"amplitude", "from_hz", "to_hz", "duration", "log"});
+      tm.type = TableMotion::Type::Sweep;
+      tm.amplitude = r_.number(need("amplitude"), path + ".amplitude");
+      tm.from_hz = r_.positive(need("from_hz"), path + ".from_hz", " Hz");
+      tm.to_hz = r_.positive(need("to_hz"), path + ".to_hz", " Hz");
+      tm.duration = r_.positive(need("duration"), path + ".duration", " s");
+      if (mm.count("log")) {
+        const std::string l = r_.text(mm.at("log"), path + ".log");
+        if (l != "true" && l != "false") r_.fail(mm.at("log").Mark(), path + ".log must be true or false (got " + l + ")");
+        tm.logarithmic = l == "true";
+      }
+    } else if (t == "random") {
+      only({"rms", "from_hz", "to_hz", "duration", "seed"});
+      tm.type = TableMotion::Type::Random;
+      tm.rms = r_.nonNegative(need("rms"), path + ".rms", " m");
+      tm.from_hz = r_.positive(need("from_hz"), path + ".from_hz", " Hz");
+      tm.to_hz = r_.positive(need("to_hz"), path + ".to_hz", " Hz");
+      if (tm.to_hz <= tm.from_hz) r_.fail(mm.at("to_hz").Mark(), path + ".to_hz must be > from_hz (got " + mm.at("to_hz").Scalar() + ")");
+      tm.duration = r_.positive(need("duration"), path + ".duration", " s");
+      if (mm.count("seed")) tm.seed = static_cast<std::uint64_t>(r_.integer(mm.at("seed"), path + ".seed"));
+    } else if (t == "csv") {
+      only({"file"});
+      tm.type = TableMotion::Type::Profile;
+      const YAML::Node& fn = need("file");
+      std::filesystem::path file = r_.text(fn, path + ".file");
+      if (file.is_relative()) file = std::filesystem::path(r_.file()).parent_path() / file;
+      std::ifstream in(file);
+      if (!in) r_.fail(fn.Mark(), path + ".file: cannot read profile '" + file.string() + "'");
+      std::ostringstream os;
+      os << in.rdbuf();
+      tm.profile_csv = os.str();
+      tm.profile_source = file.string();
+    } else {
+      r_.fail(tn.Mark(), path + ".type: unknown program '" + t + "' (known: sine, sweep, random, csv)");
+    }
+    return tm;
+  }
+
   /// A HAM-SAS isolator scene: `name` and `hamsas:` (docs/scene-format.md, docs/hamsas.md).
   Scene parseHamsas(const YAML::Node& root, const std::string& source) {
-    auto top = r_.mapping(root, "", {"name", "hamsas"});
+    auto top = r_.mapping(root, "", {"name", "hamsas", "ground_motion", "simulation"});
     Scene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -360,6 +421,16 @@ class SceneParser {
       r_.fail((m.count("lp_length") ? m.at("lp_length") : node).Mark(), os.str());
     }
     scene.hamsas = h;
+    if (top.count("ground_motion")) {
+      const YAML::Node& g = top.at("ground_motion");
+      scene.ground_motion = readTableMotion(g, "ground_motion", {"axis"});
+      if (g["axis"]) {
+        const std::string a = r_.text(g["axis"], "ground_motion.axis");
+        if (a != "x" && a != "y" && a != "z") r_.fail(g["axis"].Mark(), "ground_motion.axis must be x, y or z (got " + a + ")");
+        scene.ground_axis = a == "x" ? 0 : a == "y" ? 1 : 2;
+      }
+    }
+    if (top.count("simulation")) scene.simulation = readSimulation(top.at("simulation"));
     return scene;
   }
 
@@ -443,64 +514,7 @@ class SceneParser {
     for (const char* k : {"table_mass", "motion"})
       if (m.count(k) && b.type != BaseType::Table) r_.fail(m.at(k).Mark(), std::string("base.") + k + " applies only with type: table");
     if (m.count("table_mass")) b.table_mass = r_.positive(m.at("table_mass"), "base.table_mass", " kg");
-    if (m.count("motion")) {
-      const YAML::Node& mn = m.at("motion");
-      auto mm = r_.mapping(mn, "base.motion", {"type", "amplitude", "frequency_hz", "from_hz", "to_hz", "duration",
-                                               "log", "rms", "seed", "file"});
-      const YAML::Node& tn = r_.require(mm, mn, "base.motion", "type");
-      const std::string t = r_.text(tn, "base.motion.type");
-      auto need = [&](const char* k) -> const YAML::Node& { return r_.require(mm, mn, "base.motion", k); };
-      auto only = [&](std::initializer_list<const char*> allowed) {
-        for (const auto& [k, v] : mm) {
-          bool ok = k == "type";
-          for (const char* a : allowed) ok = ok || k == a;
-          if (!ok) r_.fail(v.Mark(), "base.motion." + k + " does not apply to a " + t + " program");
-        }
-      };
-      TableMotion tm;
-      if (t == "sine") {
-        only({"amplitude", "frequency_hz"});
-        tm.type = TableMotion::Type::Sine;
-        tm.amplitude = r_.number(need("amplitude"), "base.motion.amplitude");
-        tm.frequency_hz = r_.positive(need("frequency_hz"), "base.motion.frequency_hz", " Hz");
-      } else if (t == "sweep") {
-        only({"amplitude", "from_hz", "to_hz", "duration", "log"});
-        tm.type = TableMotion::Type::Sweep;
-        tm.amplitude = r_.number(need("amplitude"), "base.motion.amplitude");
-        tm.from_hz = r_.positive(need("from_hz"), "base.motion.from_hz", " Hz");
-        tm.to_hz = r_.positive(need("to_hz"), "base.motion.to_hz", " Hz");
-        tm.duration = r_.positive(need("duration"), "base.motion.duration", " s");
-        if (mm.count("log")) {
-          const std::string l = r_.text(mm.at("log"), "base.motion.log");
-          if (l != "true" && l != "false") r_.fail(mm.at("log").Mark(), "base.motion.log must be true or false (got " + l + ")");
-          tm.logarithmic = l == "true";
-        }
-      } else if (t == "random") {
-        only({"rms", "from_hz", "to_hz", "duration", "seed"});
-        tm.type = TableMotion::Type::Random;
-        tm.rms = r_.nonNegative(need("rms"), "base.motion.rms", " m");
-        tm.from_hz = r_.positive(need("from_hz"), "base.motion.from_hz", " Hz");
-        tm.to_hz = r_.positive(need("to_hz"), "base.motion.to_hz", " Hz");
-        if (tm.to_hz <= tm.from_hz) r_.fail(mm.at("to_hz").Mark(), "base.motion.to_hz must be > from_hz (got " + mm.at("to_hz").Scalar() + ")");
-        tm.duration = r_.positive(need("duration"), "base.motion.duration", " s");
-        if (mm.count("seed")) tm.seed = static_cast<std::uint64_t>(r_.integer(mm.at("seed"), "base.motion.seed"));
-      } else if (t == "csv") {
-        only({"file"});
-        tm.type = TableMotion::Type::Profile;
-        const YAML::Node& fn = need("file");
-        std::filesystem::path path = r_.text(fn, "base.motion.file");
-        if (path.is_relative()) path = std::filesystem::path(r_.file()).parent_path() / path;
-        std::ifstream in(path);
-        if (!in) r_.fail(fn.Mark(), "base.motion.file: cannot read profile '" + path.string() + "'");
-        std::ostringstream os;
-        os << in.rdbuf();
-        tm.profile_csv = os.str();
-        tm.profile_source = path.string();
-      } else {
-        r_.fail(tn.Mark(), "base.motion.type: unknown program '" + t + "' (known: sine, sweep, random, csv)");
-      }
-      b.motion = tm;
-    }
+    if (m.count("motion")) b.motion = readTableMotion(m.at("motion"), "base.motion", {});
     if (m.count("position")) {
       b.position = r_.vec3(m.at("position"), "base.position");
       if (b.position[2] != 0.0)

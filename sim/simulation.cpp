@@ -9,26 +9,12 @@
 
 #include "article/article_builder.hpp"
 #include "facility/sensors.hpp"
-#include "sim/external_stepper.hpp"
+#include "sim/hamsas_simulation.hpp"
+#include "sim/run_integrator.hpp"
 #include "sim/statics.hpp"
 
 namespace mmv {
 namespace {
-
-std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const SimTK::MultibodySystem& sys,
-                                                  const std::string& source) {
-  if (name == "rk_merson") return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(sys);
-  if (name == "rk_feldberg") return std::make_unique<SimTK::RungeKuttaFeldbergIntegrator>(sys);
-  if (name == "rk3") return std::make_unique<SimTK::RungeKutta3Integrator>(sys);
-  if (name == "rk2") return std::make_unique<SimTK::RungeKutta2Integrator>(sys);
-  if (name == "cpodes") return std::make_unique<SimTK::CPodesIntegrator>(sys, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
-  if (name == "verlet") return std::make_unique<SimTK::VerletIntegrator>(sys);
-  if (name == "semi_explicit_euler2") return std::make_unique<SimTK::SemiExplicitEuler2Integrator>(sys);
-  if (name == "explicit_euler") return std::make_unique<SimTK::ExplicitEulerIntegrator>(sys);
-  throw SceneError(source + ": unknown integrator '" + name +
-                   "' (known: rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler, "
-                   "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk)");
-}
 
 /// Power dissipated by the dampers, sum c u^2 (W).
 double dissipation(const Model& model, const SimTK::State& s) {
@@ -43,12 +29,10 @@ double dissipation(const Model& model, const SimTK::State& s) {
 }  // namespace
 
 SimulationResult simulate(const Scene& scene, const std::function<void(double)>& progress) {
+  if (scene.hamsas) return simulateHamsas(scene, progress);
   if (!scene.article.closures.empty())
     throw SceneError(scene.source + ": time runs of closed trees (closures) are not supported yet");
   const SimulationSpec& spec = scene.simulation;
-  // Simbody asserts (and aborts) outside (0, 1); say so instead.
-  if (!(spec.accuracy > 0 && spec.accuracy < 1))
-    throw SceneError(scene.source + ": simulation accuracy must be in (0, 1) (got " + std::to_string(spec.accuracy) + ")");
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
   const SimTK::MultibodySystem& sys = model->getSystem();
@@ -61,26 +45,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   }
   s.updU() = 0;
   s.setTime(0);
-  // Simbody's integrators through a TimeStepper, or SUNDIALS CVODE.
-  std::unique_ptr<SimTK::Integrator> integ;
-  std::unique_ptr<SimTK::TimeStepper> stepper;
-  std::unique_ptr<ExternalStepper> cvode;
-  static const std::map<std::string, SundialsMethod> kSundials{{"cvode_bdf", SundialsMethod::CvodeBdf},
-                                                               {"cvode_adams", SundialsMethod::CvodeAdams},
-                                                               {"arkode_erk", SundialsMethod::ArkodeErk},
-                                                               {"arkode_dirk", SundialsMethod::ArkodeDirk}};
-  if (const auto it = kSundials.find(spec.integrator); it != kSundials.end()) {
-    cvode = makeSundialsStepper(sys, it->second, spec.accuracy);
-    std::string error;
-    if (!cvode->initialize(s, error)) throw NumericalError(error);
-  } else {
-    integ = makeIntegrator(spec.integrator, sys, scene.source);
-    integ->setAccuracy(spec.accuracy);
-    integ->setInternalStepLimit(1000000);
-    integ->setReturnEveryInternalStep(false);
-    stepper = std::make_unique<SimTK::TimeStepper>(sys, *integ);
-    stepper->initialize(s);
-  }
+  RunIntegrator integrator(sys, spec.integrator, spec.accuracy, s, scene.source);
 
   SimulationResult r;
   r.integrator = spec.integrator;
@@ -111,6 +76,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   for (const auto& p : model->getPoints())
     if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0) {
       tips.push_back(&p);
+      r.record.scored.push_back({p.name, {static_cast<int>(cols.size()), static_cast<int>(cols.size()) + 1}});
       cols.push_back(p.name + "_x_m");
       cols.push_back(p.name + "_y_m");
     }
@@ -155,28 +121,8 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     r.torques.push_back(t);
   }
 
-  auto energy = [&](const SimTK::State& st) { return sys.calcEnergy(st); };
-  const int n = std::max(1, static_cast<int>(std::ceil(spec.duration * spec.sample_rate_hz)));
-  double last_motion_power = 0, last_dissipation = 0;
-  for (int k = 0; k <= n; ++k) {
-    const double t = spec.duration * k / n;
-    if (k > 0 && cvode) {
-      std::string error;  // names the CVODE flag
-      if (!cvode->stepTo(t, error)) throw NumericalError(error);
-    } else if (k > 0) {
-      try {
-        stepper->stepTo(t);
-      } catch (const NumericalError&) {
-        throw;
-      } catch (const std::exception& e) {
-        throw NumericalError("integration failed at t = " + std::to_string(integ->getTime()) + " s: " + e.what());
-      }
-      if (integ->isSimulationOver() && integ->getTime() < t - 1e-9 * spec.duration)
-        throw NumericalError("the " + spec.integrator + " integrator stopped at t = " + std::to_string(integ->getTime()) +
-                             " s: " + SimTK::Integrator::getTerminationReasonString(integ->getTerminationReason()));
-    }
-    const SimTK::State& st = cvode ? cvode->state() : integ->getState();
-    sys.realize(st, SimTK::Stage::Acceleration);
+  recordRun(sys, integrator, spec, r, progress, [&](const SimTK::State& st) { return dissipation(*model, st); },
+            [&](double t, const SimTK::State& st) {
     SimTK::Vector motion_forces;
     matter.findMotionForces(st, motion_forces);
     std::vector<double> row{t};
@@ -216,14 +162,38 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
       }
       row.push_back(live.model.sample(truth));
     }
+    return row;
+  });
+  for (auto& t : r.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    r.sensors[i].saturated_samples = sensors[i].model.saturatedSamples();
+    r.sensors[i].samples = sensors[i].model.samples();
+  }
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, const SimulationSpec& spec,
+               SimulationResult& r, const std::function<void(double)>& progress,
+               const std::function<double(const SimTK::State&)>& dissipation,
+               const std::function<std::vector<double>(double, const SimTK::State&)>& sample) {
+  const SimTK::SimbodyMatterSubsystem& matter = sys.getMatterSubsystem();
+  const int n = std::max(1, static_cast<int>(std::ceil(spec.duration * spec.sample_rate_hz)));
+  double last_motion_power = 0, last_dissipation = 0;
+  for (int k = 0; k <= n; ++k) {
+    const double t = spec.duration * k / n;
+    if (k > 0) integrator.stepTo(t);
+    const SimTK::State& st = integrator.state();
+    sys.realize(st, SimTK::Stage::Acceleration);
+    std::vector<double> row = sample(t, st);
     for (double v : row)
       if (!std::isfinite(v))
         throw NumericalError("non-finite state at t = " + std::to_string(t) + " s (" + spec.integrator + ", accuracy " +
                              std::to_string(spec.accuracy) + ")");
     // Energy bookkeeping (trapezoidal in time).
-    const double motion_power = matter.calcMotionPower(st), diss = dissipation(*model, st);
+    const double motion_power = matter.calcMotionPower(st), diss = dissipation(st);
     if (k == 0) {
-      r.initial_energy_j = energy(st);
+      r.initial_energy_j = sys.calcEnergy(st);
     } else {
       const double dt = spec.duration / n;
       r.motion_work_j += 0.5 * dt * (motion_power + last_motion_power);
@@ -231,21 +201,14 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     }
     last_motion_power = motion_power;
     last_dissipation = diss;
-    r.final_energy_j = energy(st);
+    r.final_energy_j = sys.calcEnergy(st);
     r.peak_kinetic_energy_j = std::max(r.peak_kinetic_energy_j, matter.calcKineticEnergy(st));
     r.record.rows.push_back(std::move(row));
     if (progress) progress(double(k) / n);
   }
-  for (auto& t : r.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
-  for (std::size_t i = 0; i < sensors.size(); ++i) {
-    r.sensors[i].saturated_samples = sensors[i].model.saturatedSamples();
-    r.sensors[i].samples = sensors[i].model.samples();
-  }
   r.energy_balance_error_j = (r.final_energy_j - r.initial_energy_j) - (r.motion_work_j - r.dissipated_j);
-  r.steps = cvode ? static_cast<int>(cvode->steps()) : integ->getNumStepsTaken();
-  r.realizations = cvode ? static_cast<int>(cvode->evaluations()) : integ->getNumRealizations();
-  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
+  r.steps = integrator.steps();
+  r.realizations = integrator.evaluations();
 }
 
 double energyScale(const SimulationResult& r) {

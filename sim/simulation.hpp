@@ -33,6 +33,8 @@
 #include <string>
 #include <vector>
 
+#include <Simbody.h>
+
 #include "sim/scene.hpp"
 
 namespace mmv {
@@ -40,6 +42,9 @@ namespace mmv {
 struct SimulationRecord {
   std::vector<std::string> columns;       ///< names with units, e.g. "joint2_angle_deg".
   std::vector<std::vector<double>> rows;  ///< one per sample, all finite.
+  /// The points a trade scores (link tips; the isolator's table and spring box): name
+  /// and the columns of its position components (m).
+  std::vector<std::pair<std::string, std::vector<int>>> scored;
 };
 
 struct JointTorqueSummary {
@@ -77,7 +82,18 @@ struct SimulationResult {
 /// is called with the fraction done (0..1) at each sample. Throws SceneError (unknown
 /// integrator) or NumericalError (the integrator gave up: step size too small, too many
 /// steps, or a non-finite state; the message names it and the time).
+/// A HAM-SAS scene (scene.hamsas) runs simulateHamsas (sim/hamsas_simulation.hpp).
 SimulationResult simulate(const Scene& scene, const std::function<void(double)>& progress = {});
+
+/// The sampling loop every time run shares: steps `integrator` to each sample time of
+/// `spec`, asks `sample` for the row (realized to Acceleration), refuses a non-finite
+/// value (NumericalError), and keeps the energy books of `r` (work of the prescribed
+/// motions and `dissipation` power, trapezoidal), its steps and evaluations.
+class RunIntegrator;
+void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, const SimulationSpec& spec,
+               SimulationResult& r, const std::function<void(double)>& progress,
+               const std::function<double(const SimTK::State&)>& dissipation,
+               const std::function<std::vector<double>(double, const SimTK::State&)>& sample);
 
 /// The energy scale a balance error is judged against: the largest of the peak kinetic
 /// energy, |work of the motions| and the dissipation (potential energy has no natural

@@ -10,27 +10,22 @@
 namespace mmv {
 namespace {
 
-/// Column indices of the scored tips' x and y (every tip when `points` is empty).
-std::vector<std::pair<int, int>> tipColumns(const SimulationRecord& r, const std::vector<std::string>& points) {
-  std::vector<std::pair<int, int>> out;
-  for (std::size_t c = 0; c + 1 < r.columns.size(); ++c) {
-    const std::string& name = r.columns[c];
-    if (name.size() <= 8 || name.compare(name.size() - 8, 8, ".tip_x_m") != 0) continue;
-    const std::string point = name.substr(0, name.size() - 5);  // "link3a.tip"
-    if (points.empty() || std::find(points.begin(), points.end(), point) != points.end())
-      out.push_back({static_cast<int>(c), static_cast<int>(c + 1)});
-  }
-  return out;
-}
-
+/// The largest distance between the two runs' scored points (every one when `points`
+/// is empty) over their common samples.
 double distance(const SimulationRecord& a, const SimulationRecord& b, const std::vector<std::string>& points) {
-  const auto ca = tipColumns(a, points), cb = tipColumns(b, points);
   double worst = 0;
   const std::size_t rows = std::min(a.rows.size(), b.rows.size());
-  for (std::size_t k = 0; k < rows; ++k)
-    for (std::size_t t = 0; t < std::min(ca.size(), cb.size()); ++t)
-      worst = std::max(worst, std::hypot(a.rows[k][ca[t].first] - b.rows[k][cb[t].first],
-                                         a.rows[k][ca[t].second] - b.rows[k][cb[t].second]));
+  for (const auto& [name, ca] : a.scored) {
+    if (!points.empty() && std::find(points.begin(), points.end(), name) == points.end()) continue;
+    for (const auto& [other, cb] : b.scored) {
+      if (other != name) continue;
+      for (std::size_t k = 0; k < rows; ++k) {
+        double d2 = 0;
+        for (std::size_t c = 0; c < ca.size(); ++c) d2 += std::pow(a.rows[k][ca[c]] - b.rows[k][cb[c]], 2);
+        worst = std::max(worst, std::sqrt(d2));
+      }
+    }
+  }
   return worst;
 }
 
@@ -41,13 +36,14 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
   if (o.duration > 0) scene.simulation.duration = o.duration;
   if (!o.points.empty()) {
     std::vector<std::string> tips;
+    if (scene.hamsas) tips = {"optical_table", "spring_box"};
     for (const auto& p : articlePointNames(scene.article))
       if (p.size() > 4 && p.compare(p.size() - 4, 4, ".tip") == 0) tips.push_back(p);
     for (const auto& p : o.points)
       if (std::find(tips.begin(), tips.end(), p) == tips.end()) {
         std::string known;
         for (const auto& t : tips) known += (known.empty() ? "" : ", ") + t;
-        throw SceneError(scene.source + ": trade: '" + p + "' is not a link tip of the scene (known: " + known + ")");
+        throw SceneError(scene.source + ": trade: '" + p + (scene.hamsas ? "' is not a scored body" : "' is not a link tip") + " of the scene (known: " + known + ")");
       }
   }
   TradeStudy study;
@@ -59,8 +55,9 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
     s.simulation.accuracy = accuracy;
     return simulate(s);
   };
-  const SimulationResult ref = run(scene, "cpodes", 1e-10);
-  const SimulationResult check = run(scene, "cvode_bdf", 1e-10);
+  if (scene.hamsas) study.reference_integrator = "rk_merson", study.check_integrator = "arkode_erk";
+  const SimulationResult ref = run(scene, study.reference_integrator, 1e-10);
+  const SimulationResult check = run(scene, study.check_integrator, 1e-10);
   study.reference_uncertainty_m = distance(ref.record, check.record, o.points);
   study.reference_seconds = ref.wall_seconds;
   // One scored run: its error against the reference and its cost, or its diagnostic.
@@ -82,7 +79,7 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
   };
   for (const auto& name : o.integrators)
     for (double acc : o.accuracies) measure(scene, name, acc, 0);
-  for (int n : o.segments) {
+  for (int n : scene.hamsas ? std::vector<int>{} : o.segments) {  // rigid bodies: no segments
     Scene s = scene;
     overrideSegments(s, n);
     measure(s, "cpodes", 1e-8, n);

@@ -25,7 +25,7 @@ Scene loadScene(const SceneArgs& args) {
 void requireArticleScene(const Scene& scene, const std::string& command) {
   if (scene.hamsas)
     throw UsageError(command + ": " + scene.source +
-                     " is a HAM-SAS isolator scene; it supports modes, frf and rom (docs/hamsas.md)");
+                     " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");
 }
 
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {

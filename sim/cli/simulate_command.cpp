@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -18,6 +19,22 @@
 namespace mmv::cli {
 namespace {
 
+/// The largest distance of each scored point from its start (link tips; the isolator's
+/// table and spring box), m.
+std::vector<std::pair<std::string, double>> peakDisplacements(const SimulationRecord& rec) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& [name, cols] : rec.scored) {
+    double peak = 0;
+    for (const auto& row : rec.rows) {
+      double d2 = 0;
+      for (int c : cols) d2 += std::pow(row[c] - rec.rows.front()[c], 2);
+      peak = std::max(peak, std::sqrt(d2));
+    }
+    out.push_back({name, peak});
+  }
+  return out;
+}
+
 nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<std::string>& warnings) {
   nlohmann::ordered_json j;
   j["mmvlab_version"] = mmvlabVersion();
@@ -33,6 +50,7 @@ nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<
                        {"capacity_n_m", t.capacity_nm > 0 ? nlohmann::ordered_json(t.capacity_nm) : nlohmann::ordered_json(nullptr)},
                        {"exceeded", t.exceeded}});
   j["torques"] = torques;
+  for (const auto& [name, peak] : peakDisplacements(r.record)) j["peak_displacement_m"][name] = peak;
   auto sensors = nlohmann::ordered_json::array();
   for (const auto& s : r.sensors)
     sensors.push_back({{"name", s.name}, {"type", s.type}, {"unit", s.unit}, {"saturated_samples", s.saturated_samples},
@@ -64,7 +82,10 @@ std::string summaryText(const Scene& scene, const SimulationResult& r, const std
   for (const auto& q : r.torques)
     t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",
            q.capacity_nm > 0 ? (q.exceeded ? "EXCEEDED" : "yes") : "-"});
-  os << "Torques the torquers must give\n" << t.text();
+  if (!r.torques.empty()) os << "Torques the torquers must give\n" << t.text();
+  Table d({"point", "peak_displacement_m"});
+  for (const auto& [name, peak] : peakDisplacements(r.record)) d.add({name, strf("%.4g", peak)});
+  if (!d.empty()) os << (r.torques.empty() ? "" : "\n") << "Largest displacement from the start\n" << d.text();
   if (r.carried_weight_n > 0)
     os << strf("\nTable: peak actuator force %.4g N; carries %.4g N of its %.4g N payload\n", r.peak_table_force_n,
                r.carried_weight_n, facility::TableSpec{}.payload_n);
@@ -97,8 +118,7 @@ std::string historyCsv(const SimulationRecord& rec) {
 int runSimulateCommand(const SimulateArgs& args) {
   return guarded([&] {
     Scene scene = loadScene(args);
-    requireArticleScene(scene, "simulate");
-    if (!args.integrator.empty()) scene.simulation.integrator = args.integrator;
+        if (!args.integrator.empty()) scene.simulation.integrator = args.integrator;
     if (args.accuracy > 0) scene.simulation.accuracy = args.accuracy;
     if (args.duration > 0) scene.simulation.duration = args.duration;
     if (args.sample_rate > 0) scene.simulation.sample_rate_hz = args.sample_rate;

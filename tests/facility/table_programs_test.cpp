@@ -94,3 +94,22 @@ TEST(TablePrograms, StrokeAndBandwidthChecks) {
 
 }  // namespace
 }  // namespace mmv::facility
+
+TEST(TablePrograms, SineRampStartsFromRestAndBecomesTheDwell) {
+  const auto ramped = mmv::facility::sineDwell(0.002, 3.0, 10.0, 0.5);
+  const auto plain = mmv::facility::sineDwell(0.002, 3.0, 10.0);
+  EXPECT_EQ(ramped->position(0), 0.0);
+  EXPECT_EQ(ramped->velocity(0), 0.0);  // no velocity jump (the plain dwell starts at A w)
+  EXPECT_EQ(ramped->acceleration(0), 0.0);
+  EXPECT_GT(plain->velocity(0), 0.03);
+  // Velocity and acceleration are the derivatives of position (central differences).
+  const double h = 1e-6;
+  for (double t : {0.05, 0.2, 0.37, 0.49, 0.8}) {
+    EXPECT_NEAR(ramped->velocity(t), (ramped->position(t + h) - ramped->position(t - h)) / (2 * h), 1e-7) << t;
+    EXPECT_NEAR(ramped->acceleration(t), (ramped->velocity(t + h) - ramped->velocity(t - h)) / (2 * h), 1e-5) << t;
+  }
+  for (double t : {0.5, 0.7, 2.3}) {
+    EXPECT_DOUBLE_EQ(ramped->position(t), plain->position(t));
+    EXPECT_DOUBLE_EQ(ramped->acceleration(t), plain->acceleration(t));
+  }
+}

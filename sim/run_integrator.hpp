@@ -1,0 +1,37 @@
+#pragma once
+/// One integrator for a time run, by name: Simbody's through a TimeStepper, or
+/// SUNDIALS' through the plugin (sim/external_stepper.hpp). Shared by every time run
+/// (the article's and the isolator's) so integrators are chosen, checked and reported
+/// the same way.
+
+#include <Simbody.h>
+
+#include <memory>
+#include <string>
+
+#include "sim/external_stepper.hpp"
+
+namespace mmv {
+
+class RunIntegrator {
+ public:
+  /// Throws SceneError (`source` in the message) for an unknown name or an accuracy
+  /// outside (0, 1), NumericalError if SUNDIALS cannot start.
+  RunIntegrator(const SimTK::MultibodySystem& system, const std::string& name, double accuracy,
+                const SimTK::State& initial, const std::string& source);
+  ~RunIntegrator();
+  /// Advances to t; throws NumericalError naming the integrator's reason and the time.
+  void stepTo(double t);
+  const SimTK::State& state() const;
+  int steps() const;
+  int evaluations() const;  ///< realizations (Simbody) or right-hand-side evaluations (SUNDIALS).
+
+ private:
+  std::string name_;
+  double accuracy_;
+  std::unique_ptr<SimTK::Integrator> integ_;
+  std::unique_ptr<SimTK::TimeStepper> stepper_;
+  std::unique_ptr<ExternalStepper> sundials_;
+};
+
+}  // namespace mmv
