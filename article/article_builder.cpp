@@ -231,6 +231,7 @@ class Builder {
           coord.reference = j.angle;
           coord.held = j.hold == JointHold::Locked;
           coord.stiffness = j.hold == JointHold::Servo ? j.servo_stiffness : 0.0;
+          if (j.torque_input) coord.input = makeTableProgram(*j.torque_input);
           model_.addCoordinate(coord);
           // A locked torquer holds its angle in the dynamics too (zero prescribed speed),
           // or follows its slew.

@@ -72,6 +72,9 @@ struct JointSpec {
   std::optional<LumpedMass> torquer;  ///< lumped on the parent side (stator housing).
   std::optional<SlewSpec> slew;       ///< time runs: a locked joint follows it from `angle`.
   double torque_capacity = 0;         ///< N*m the torquer can give (0: not checked).
+  /// Time runs: a commanded torque on a free or servo joint, as a program whose
+  /// "displacement" is the torque in N*m (facility/table_programs.hpp).
+  std::optional<TableMotion> torque_input;
 };
 
 struct LinkSpec {

@@ -170,7 +170,7 @@ SimulationResult simulateHamsas(const Scene& scene, const std::function<void(dou
   }
   for (const auto& sensor : model.sensors) cols.push_back("sensor_" + sensor.name + "_m");
 
-  recordRun(sys, integrator, spec, r, progress, [&](const SimTK::State& st) { return elements->dissipation(st); },
+  recordRun(sys, integrator, spec, r, progress, {}, [&](const SimTK::State& st) { return elements->dissipation(st); },
             [&](double t, const SimTK::State& st) {
     std::vector<double> row{t, program->position(t)};
     for (int b : {1, 2}) {

@@ -23,6 +23,28 @@ void Model::addBody(SimTK::MobilizedBodyIndex mobod, int part, bool grounded) {
   bodies_.push_back({mobod, part, grounded});
 }
 
+namespace {
+
+/// A commanded torque tau(t) on one mobility.
+class ProgramMobilityForce : public SimTK::Force::Custom::Implementation {
+ public:
+  ProgramMobilityForce(const SimTK::MobilizedBody& mobod, int u, std::shared_ptr<const facility::TableProgram> p)
+      : mobod_(mobod), u_(u), p_(std::move(p)) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                 SimTK::Vector& mobility_forces) const override {
+    mobod_.applyOneMobilityForce(s, SimTK::MobilizerUIndex(u_), p_->position(s.getTime()), mobility_forces);
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+  bool dependsOnlyOnPositions() const override { return false; }
+
+ private:
+  const SimTK::MobilizedBody& mobod_;
+  int u_;
+  std::shared_ptr<const facility::TableProgram> p_;
+};
+
+}  // namespace
+
 void Model::addCoordinate(const Coordinate& c) {
   assert(!finalized_);
   coords_.push_back(c);
@@ -34,6 +56,15 @@ void Model::addCoordinate(const Coordinate& c) {
     SimTK::Force::MobilityLinearDamper(forces_, matter_.getMobilizedBody(c.mobod),
                                        SimTK::MobilizerUIndex(c.mobilizer_q), c.damping);
   }
+  if (c.input)
+    SimTK::Force::Custom(forces_, new ProgramMobilityForce(matter_.getMobilizedBody(c.mobod), c.mobilizer_q, c.input));
+}
+
+double Model::inputPower(const SimTK::State& s) const {
+  double p = 0;
+  for (const auto& c : coords_)
+    if (c.input) p += c.input->position(s.getTime()) * matter_.getMobilizedBody(c.mobod).getOneU(s, SimTK::MobilizerUIndex(c.mobilizer_q));
+  return p;
 }
 
 void Model::addPointLoad(const PointLoad& load) {

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "facility/table_programs.hpp"
+
 namespace mmv {
 
 enum class CoordinateKind {
@@ -41,6 +43,9 @@ struct Coordinate {
   bool held = false;     ///< locked by its torquer: not a degree of freedom.
   double stiffness = 0;  ///< N*m/rad of the linear spring on this coordinate (0: none).
   double damping = 0;    ///< N*m*s/rad of a viscous damper on it (0: none); no static effect.
+  /// A commanded torque on a free or servo joint (N*m over time; time runs; in statics
+  /// and modes its value at t = 0, a dead load with no stiffness).
+  std::shared_ptr<const facility::TableProgram> input;
 };
 
 /// A part: a link (all its pieces), a torquer, a tip mass, or the excitation table.
@@ -105,6 +110,8 @@ class Model {
   /// Registers a coordinate; adds a linear spring if stiffness > 0 and a viscous
   /// damper if damping > 0.
   void addCoordinate(const Coordinate& c);
+  /// Power the coordinates' commanded torques deliver, sum tau(t) u (W).
+  double inputPower(const SimTK::State& s) const;
   void addPoint(const NamedPoint& p);
   /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.
   void addPointLoad(const PointLoad& load);

@@ -329,7 +329,8 @@ class SceneParser {
   }
 
   /// A table (or ground) motion program; `extra` keys are allowed and left to the caller.
-  TableMotion readTableMotion(const YAML::Node& mn, const std::string& path, const std::vector<std::string>& extra) {
+  TableMotion readTableMotion(const YAML::Node& mn, const std::string& path, const std::vector<std::string>& extra,
+                              const std::string& unit = " m") {
     std::vector<std::string> keys{"type", "amplitude", "frequency_hz", "ramp_s", "from_hz", "to_hz", "duration", "log", "rms", "seed", "file"};
     keys.insert(keys.end(), extra.begin(), extra.end());
     auto mm = r_.mapping(mn, path, keys);
@@ -365,7 +366,7 @@ class SceneParser {
     } else if (t == "random") {
       only({"rms", "from_hz", "to_hz", "duration", "seed"});
       tm.type = TableMotion::Type::Random;
-      tm.rms = r_.nonNegative(need("rms"), path + ".rms", " m");
+      tm.rms = r_.nonNegative(need("rms"), path + ".rms", unit);
       tm.from_hz = r_.positive(need("from_hz"), path + ".from_hz", " Hz");
       tm.to_hz = r_.positive(need("to_hz"), path + ".to_hz", " Hz");
       if (tm.to_hz <= tm.from_hz) r_.fail(mm.at("to_hz").Mark(), path + ".to_hz must be > from_hz (got " + mm.at("to_hz").Scalar() + ")");
@@ -539,7 +540,7 @@ class SceneParser {
       const YAML::Node& jn = n[i];
       const std::string path = "joints[" + std::to_string(i) + "]";
       auto m = r_.mapping(jn, path, {"name", "parent", "angle_deg", "hold", "servo_stiffness", "torquer", "slew",
-                                     "torque_capacity"});
+                                     "torque_capacity", "torque"});
       JointSpec j;
       const YAML::Node& name = r_.require(m, jn, path, "name");
       j.name = r_.text(name, path + ".name");
@@ -568,6 +569,12 @@ class SceneParser {
         if (j.hold != JointHold::Locked)
           r_.fail(sn.Mark(), path + ".slew: only a locked joint (its torquer holding the angle) follows a slew");
         j.slew = readSlew(sn, path + ".slew");
+      }
+      if (m.count("torque")) {
+        const YAML::Node& tn = m.at("torque");
+        if (j.hold == JointHold::Locked)
+          r_.fail(tn.Mark(), path + ".torque: a commanded torque needs a joint that moves (hold: free or servo)");
+        j.torque_input = readTableMotion(tn, path + ".torque", {}, " N*m");
       }
       joint_marks_[j.name] = {jn.Mark(), path};
       a.joints.push_back(j);

@@ -121,7 +121,8 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     r.torques.push_back(t);
   }
 
-  recordRun(sys, integrator, spec, r, progress, [&](const SimTK::State& st) { return dissipation(*model, st); },
+  recordRun(sys, integrator, spec, r, progress, [&](const SimTK::State& st) { return model->inputPower(st); },
+            [&](const SimTK::State& st) { return dissipation(*model, st); },
             [&](double t, const SimTK::State& st) {
     SimTK::Vector motion_forces;
     matter.findMotionForces(st, motion_forces);
@@ -135,8 +136,9 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
     for (std::size_t j = 0; j < joints.size(); ++j) {
       const int i = joints[j];
       // Simbody's motion force is the reaction; the torquer applies its negative
-      // (checked against the static holding torque at t = 0).
-      const double torque = -motion_forces[model->getUIndex(i)];
+      // (checked against the static holding torque at t = 0); a commanded torque adds.
+      const Coordinate& c = model->getCoordinates()[i];
+      const double torque = -motion_forces[model->getUIndex(i)] + (c.input ? c.input->position(t) : 0.0);
       row.push_back(st.getQ()[model->getQIndex(i)] * 180 / M_PI);
       row.push_back(torque);
       r.torques[j].peak_torque_nm = std::max(r.torques[j].peak_torque_nm, std::abs(torque));
@@ -175,6 +177,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
 
 void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, const SimulationSpec& spec,
                SimulationResult& r, const std::function<void(double)>& progress,
+               const std::function<double(const SimTK::State&)>& input_power,
                const std::function<double(const SimTK::State&)>& dissipation,
                const std::function<std::vector<double>(double, const SimTK::State&)>& sample) {
   const SimTK::SimbodyMatterSubsystem& matter = sys.getMatterSubsystem();
@@ -191,7 +194,8 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
         throw NumericalError("non-finite state at t = " + std::to_string(t) + " s (" + spec.integrator + ", accuracy " +
                              std::to_string(spec.accuracy) + ")");
     // Energy bookkeeping (trapezoidal in time).
-    const double motion_power = matter.calcMotionPower(st), diss = dissipation(st);
+    const double motion_power = matter.calcMotionPower(st) + (input_power ? input_power(st) : 0.0);
+    const double diss = dissipation(st);
     if (k == 0) {
       r.initial_energy_j = sys.calcEnergy(st);
     } else {

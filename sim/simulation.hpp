@@ -88,10 +88,12 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
 /// The sampling loop every time run shares: steps `integrator` to each sample time of
 /// `spec`, asks `sample` for the row (realized to Acceleration), refuses a non-finite
 /// value (NumericalError), and keeps the energy books of `r` (work of the prescribed
-/// motions and `dissipation` power, trapezoidal), its steps and evaluations.
+/// motions plus `input_power`'s, and `dissipation` power, trapezoidal), its steps and
+/// evaluations.
 class RunIntegrator;
 void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, const SimulationSpec& spec,
                SimulationResult& r, const std::function<void(double)>& progress,
+               const std::function<double(const SimTK::State&)>& input_power,
                const std::function<double(const SimTK::State&)>& dissipation,
                const std::function<std::vector<double>(double, const SimTK::State&)>& sample);
 

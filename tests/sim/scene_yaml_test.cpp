@@ -242,3 +242,20 @@ TEST(SceneYaml, MissingFile) {
 
 }  // namespace
 }  // namespace mmv
+
+namespace mmv {
+namespace {
+
+TEST(SceneYaml, TorqueInputOnlyOnAMovingJoint) {
+  const Scene s = parseScene(replaceLine(kGood, "    hold: free", "    hold: free\n    torque: {type: sine, amplitude: 2.5, frequency_hz: 3}"),
+                             "s.yaml");
+  ASSERT_TRUE(s.article.joints[1].torque_input.has_value());
+  EXPECT_EQ(s.article.joints[1].torque_input->amplitude, 2.5);
+  EXPECT_EQ(errorOf(replaceLine(kGood, "    angle_deg: 30", "    angle_deg: 30\n    torque: {type: sine, amplitude: 1, frequency_hz: 1}")),
+            "s.yaml:11:13: joints[0].torque: a commanded torque needs a joint that moves (hold: free or servo)");
+  EXPECT_EQ(errorOf(replaceLine(kGood, "    hold: free", "    hold: free\n    torque: {type: random, rms: -1, from_hz: 1, to_hz: 2, duration: 1}")),
+            "s.yaml:14:33: joints[1].torque.rms must be >= 0 N*m (got -1)");
+}
+
+}  // namespace
+}  // namespace mmv
