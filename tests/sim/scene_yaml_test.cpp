@@ -98,7 +98,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"malformed", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0",
                 "s.yaml:3:10: malformed YAML: end of sequence flow not found"},
         BadCase{"unknown key", "    angle_deg: 30", "    angel_deg: 30",
-                "s.yaml:10:5: unknown key 'joints[0].angel_deg' (allowed: name, parent, angle_deg, hold, servo_stiffness, torquer, slew, torque_capacity)"},
+                "s.yaml:10:5: unknown key 'joints[0].angel_deg' (allowed: name, parent, angle_deg, hold, servo_stiffness, torquer, slew, torque_capacity, torque)"},
         BadCase{"duplicate key", "    length: 1.0\n", "    length: 1.0\n    length: 2.0\n",
                 "s.yaml:20:5: duplicate key 'links[0].length'"},
         BadCase{"missing key", "    length: 0.5\n", "",
