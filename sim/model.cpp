@@ -78,6 +78,31 @@ void Model::addClosure(const Closure& c) {
   closures_.push_back(c);
 }
 
+SimTK::State Model::addClosureConstraints(const SimTK::State& at) {
+  system_.realize(at, SimTK::Stage::Position);
+  const SimTK::Vector q = at.getQ();
+  for (const auto& c : closures_) {
+    SimTK::MobilizedBody& a = matter_.updMobilizedBody(c.mobod_a);
+    for (const SimTK::Vec3& e : c.directions) {
+      if (c.to_ground) {
+        SimTK::Constraint::PointInPlane(matter_.updGround(), SimTK::UnitVec3(e), ~e * c.anchor_W, a, c.station_a);
+      } else {
+        SimTK::MobilizedBody& b = matter_.updMobilizedBody(c.mobod_b);
+        const SimTK::Vec3 n_B = ~b.getBodyRotation(at) * e;
+        SimTK::Constraint::PointInPlane(b, SimTK::UnitVec3(n_B), ~n_B * c.station_b, a, c.station_a);
+      }
+    }
+  }
+  system_.realizeTopology();
+  SimTK::State s = system_.getDefaultState();
+  s.updQ() = q;
+  s.updU() = 0;
+  system_.realize(s, SimTK::Stage::Position);
+  reference_state_ = s;
+  system_.realize(reference_state_, SimTK::Stage::Position);
+  return s;
+}
+
 int Model::getNumClosureRows() const {
   int n = 0;
   for (const auto& c : closures_) n += static_cast<int>(c.directions.size());

@@ -122,6 +122,12 @@ class Model {
   void setOnlyGravityAndPinSprings() { only_gravity_and_pin_springs_ = true; }
   /// Realizes topology and builds the reference state. Call once, last.
   void finalize();
+  /// Time runs of closed trees: makes every closure a Simbody constraint (a
+  /// PointInPlane per held direction; for a closure between two bodies the directions
+  /// turn with the second body, as they stand in `at`) so the dynamics hold it. Changes
+  /// the topology: states made before are invalid; returns a new state with `at`'s q.
+  /// Statics, linearization and modes keep their own treatment of closures.
+  SimTK::State addClosureConstraints(const SimTK::State& at);
 
   // --- use ----------------------------------------------------------------------
   const SimTK::MultibodySystem& getSystem() const { return system_; }

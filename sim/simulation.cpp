@@ -9,6 +9,7 @@
 
 #include "article/article_builder.hpp"
 #include "facility/sensors.hpp"
+#include "sim/closures.hpp"
 #include "sim/hamsas_simulation.hpp"
 #include "sim/run_integrator.hpp"
 #include "sim/statics.hpp"
@@ -30,8 +31,6 @@ double dissipation(const Model& model, const SimTK::State& s) {
 
 SimulationResult simulate(const Scene& scene, const std::function<void(double)>& progress) {
   if (scene.hamsas) return simulateHamsas(scene, progress);
-  if (!scene.article.closures.empty())
-    throw SceneError(scene.source + ": time runs of closed trees (closures) are not supported yet");
   const SimulationSpec& spec = scene.simulation;
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
@@ -45,6 +44,8 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   }
   s.updU() = 0;
   s.setTime(0);
+  const bool closed = !model->getClosures().empty();
+  if (closed) s = model->addClosureConstraints(s);  // the dynamics hold the closures from here
   RunIntegrator integrator(sys, spec.integrator, spec.accuracy, s, scene.source);
 
   SimulationResult r;
@@ -164,6 +165,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
       }
       row.push_back(live.model.sample(truth));
     }
+    if (closed) r.constraint_drift_m = std::max(r.constraint_drift_m, calcClosureErrors(*model, st).cwiseAbs().maxCoeff());
     return row;
   });
   for (auto& t : r.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
@@ -215,8 +217,20 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
   r.realizations = integrator.evaluations();
 }
 
+std::string constraintDriftWarning(const SimulationResult& r, double size_m) {
+  if (!(r.constraint_drift_m > 1e-6 * size_m)) return {};
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "closure drift %.3g m exceeds 1e-6 of the article's size (%.3g m): %s", r.constraint_drift_m, size_m,
+                r.integrator.rfind("cvode", 0) == 0 || r.integrator.rfind("arkode", 0) == 0
+                    ? "SUNDIALS' ODE methods do not project onto the closures; use a Simbody integrator"
+                    : "tighten the accuracy");
+  return buf;
+}
+
 double energyScale(const SimulationResult& r) {
-  return std::max({r.peak_kinetic_energy_j, std::abs(r.motion_work_j), std::abs(r.dissipated_j)});
+  return std::max({r.peak_kinetic_energy_j, std::abs(r.motion_work_j), std::abs(r.dissipated_j),
+                   1e-8 * std::max(std::abs(r.initial_energy_j), std::abs(r.final_energy_j))});
 }
 
 std::string energyBalanceWarning(const SimulationResult& r) {

@@ -67,6 +67,10 @@ struct SimulationResult {
   double motion_work_j = 0, dissipated_j = 0;
   double energy_balance_error_j = 0;  ///< (E_end - E_0) - (W - D).
   double peak_kinetic_energy_j = 0;   ///< largest kinetic energy at a sample.
+  /// Closed trees: the largest closure error at a sample (m). Simbody's integrators
+  /// project onto the closures to their accuracy; SUNDIALS' ODE methods do not, so their
+  /// drift grows (IDA, which would hold them, is not built).
+  double constraint_drift_m = 0;
   /// With a table: the peak force its actuator must give along x (the table's own
   /// moving mass included; column `table_force_n`), and the weight it carries
   /// (everything but the table: article, torquers, gimbal), against its payload.
@@ -97,9 +101,15 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
                const std::function<double(const SimTK::State&)>& dissipation,
                const std::function<std::vector<double>(double, const SimTK::State&)>& sample);
 
+/// A warning when a closed tree's constraint drift exceeds 1e-6 of the article's size
+/// (`size_m`). Empty if fine or open.
+std::string constraintDriftWarning(const SimulationResult& r, double size_m);
+
 /// The energy scale a balance error is judged against: the largest of the peak kinetic
 /// energy, |work of the motions| and the dissipation (potential energy has no natural
-/// zero). 0 when nothing moved.
+/// zero), and no less than 1e-8 of the stored energy |E| (below that a balance kept over
+/// thousands of steps is round-off and integration noise: a run in which nothing moves
+/// is not flagged). 0 only when E = 0 and nothing moved.
 double energyScale(const SimulationResult& r);
 
 /// A warning when |energy balance error| exceeds 1 % of energyScale(r): the run is not

@@ -65,6 +65,7 @@ nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<
   if (r.carried_weight_n > 0)
     j["table"] = {{"peak_force_n", r.peak_table_force_n}, {"carried_weight_n", r.carried_weight_n},
                   {"payload_n", facility::TableSpec{}.payload_n}};
+  if (r.constraint_drift_m > 0) j["constraint_drift_m"] = r.constraint_drift_m;
   j["steps"] = r.steps;
   j["realizations"] = r.realizations;
   j["wall_time_s"] = r.wall_seconds;
@@ -98,6 +99,7 @@ std::string summaryText(const Scene& scene, const SimulationResult& r, const std
   os << strf("\nEnergy: E(0) %.6g J, E(end) %.6g J, work of the commanded motions %.6g J, dissipated %.6g J;\n"
              "balance error %.3g J (E(end) - E(0) - work + dissipated)\n",
              r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j);
+  if (r.constraint_drift_m > 0) os << strf("Closures: largest drift %.3g m over the run\n", r.constraint_drift_m);
   for (const auto& w : warnings) os << "warning: " << w << '\n';
   return os.str();
 }
@@ -165,6 +167,9 @@ int runSimulateCommand(const SimulateArgs& args) {
         warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
                            strf("%.4g", t.capacity_nm) + " N*m");
     if (const std::string w = energyBalanceWarning(r); !w.empty()) warnings.push_back(w);
+    double size = 0;
+    for (const auto& l : scene.article.links) size += l.length;
+    if (const std::string w = constraintDriftWarning(r, size); !w.empty()) warnings.push_back(w);
     if (const double payload = facility::TableSpec{}.payload_n; r.carried_weight_n > payload)
       warnings.push_back("the table carries " + strf("%.4g", r.carried_weight_n) + " N, above its " +
                          strf("%.4g", payload) + " N payload");
