@@ -33,6 +33,10 @@ struct SimulationSpec {
   double accuracy = 1e-6;       ///< integrator relative accuracy.
   double sample_rate_hz = 200;  ///< output rows per second.
   bool from_equilibrium = true; ///< start at the static equilibrium, else at the scene's angles at rest.
+  /// The outputs `mmvlab trade` scores (link tips; HAM-SAS: optical_table, spring_box);
+  /// empty: every one. `--points` overrides.
+  std::vector<std::string> score_points;
+  std::string score_where;  ///< file:line:col of score_points, for errors found later.
 };
 
 /// A sensor recorded in time runs (facility/sensors.hpp for the models).

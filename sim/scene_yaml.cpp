@@ -310,7 +310,7 @@ class SceneParser {
   }
 
   SimulationSpec readSimulation(const YAML::Node& n) {
-    auto m = r_.mapping(n, "simulation", {"duration", "integrator", "accuracy", "sample_rate_hz", "start"});
+    auto m = r_.mapping(n, "simulation", {"duration", "integrator", "accuracy", "sample_rate_hz", "start", "score_points"});
     SimulationSpec s;
     if (m.count("duration")) s.duration = r_.positive(m.at("duration"), "simulation.duration", " s");
     if (m.count("integrator")) s.integrator = r_.text(m.at("integrator"), "simulation.integrator");
@@ -324,6 +324,13 @@ class SceneParser {
       const std::string st = r_.text(m.at("start"), "simulation.start");
       if (st != "equilibrium" && st != "rest") r_.fail(m.at("start").Mark(), "simulation.start: unknown start '" + st + "' (known: equilibrium, rest)");
       s.from_equilibrium = st == "equilibrium";
+    }
+    if (m.count("score_points")) {
+      const YAML::Node& sp = m.at("score_points");
+      const std::size_t count = r_.sequence(sp, "simulation.score_points");
+      for (std::size_t i = 0; i < count; ++i)
+        s.score_points.push_back(r_.text(sp[i], "simulation.score_points[" + std::to_string(i) + "]"));
+      s.score_where = r_.file() + ":" + std::to_string(sp.Mark().line + 1) + ":" + std::to_string(sp.Mark().column + 1);
     }
     return s;
   }

@@ -31,8 +31,11 @@ double distance(const SimulationRecord& a, const SimulationRecord& b, const std:
 
 }  // namespace
 
-TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
+TradeStudy runTrade(const Scene& base, const TradeOptions& options) {
   Scene scene = base;
+  TradeOptions o = options;
+  const bool from_scene = o.points.empty() && !scene.simulation.score_points.empty();
+  if (from_scene) o.points = scene.simulation.score_points;
   if (o.duration > 0) scene.simulation.duration = o.duration;
   if (!o.points.empty()) {
     std::vector<std::string> tips;
@@ -43,7 +46,7 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& o) {
       if (std::find(tips.begin(), tips.end(), p) == tips.end()) {
         std::string known;
         for (const auto& t : tips) known += (known.empty() ? "" : ", ") + t;
-        throw SceneError(scene.source + ": trade: '" + p + (scene.hamsas ? "' is not a scored body" : "' is not a link tip") + " of the scene (known: " + known + ")");
+        throw SceneError((from_scene ? scene.simulation.score_where + ": simulation.score_points" : scene.source + ": trade") + ": '" + p + (scene.hamsas ? "' is not a scored body" : "' is not a link tip") + " of the scene (known: " + known + ")");
       }
   }
   TradeStudy study;

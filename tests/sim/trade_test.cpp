@@ -78,6 +78,22 @@ TEST(Trade, ErrorAtChosenPoints) {
               std::string::npos)
         << e.what();
   }
+  // The scene may name the scored outputs itself (simulation.score_points).
+  Scene named = s;
+  named.simulation.score_points = {"link1.tip"};
+  named.simulation.score_where = "s.yaml:30:17";
+  o.points.clear();
+  const TradeStudy from_scene = runTrade(named, o);
+  ASSERT_EQ(from_scene.points, std::vector<std::string>{"link1.tip"});
+  for (std::size_t i = 0; i < one.runs.size(); ++i) EXPECT_NEAR(from_scene.runs[i].error_m, one.runs[i].error_m, 1e-15);
+  named.simulation.score_points = {"link7.tip"};
+  try {
+    runTrade(named, o);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("s.yaml:30:17: simulation.score_points: 'link7.tip' is not a link tip", 0), 0u)
+        << e.what();
+  }
 }
 
 }  // namespace
