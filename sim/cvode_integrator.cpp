@@ -80,7 +80,7 @@ struct Memory {
 struct CvodeIntegrator::Impl {
   const SimTK::MultibodySystem& system;
   Method method;
-  double rtol;
+  double rtol, atol;
   Context ctx;
   Handle<N_Vector, freeVector> y;
   Handle<SUNMatrix, freeMatrix> A;
@@ -88,7 +88,7 @@ struct CvodeIntegrator::Impl {
   Handle<SUNNonlinearSolver, freeNonlinearSolver> nls;
   Memory mem;
   SimTK::State work;
-  Impl(const SimTK::MultibodySystem& s, Method m, double r) : system(s), method(m), rtol(r) {}
+  Impl(const SimTK::MultibodySystem& s, Method m, double r, double a) : system(s), method(m), rtol(r), atol(a) {}
 
   /// Copies y into `work`, applies the prescribed motions and realizes to Acceleration.
   void load(double t, N_Vector yv) {
@@ -120,8 +120,8 @@ struct CvodeIntegrator::Impl {
   }
 };
 
-CvodeIntegrator::CvodeIntegrator(const SimTK::MultibodySystem& system, Method method, double rtol)
-    : impl_(std::make_unique<Impl>(system, method, rtol)) {}
+CvodeIntegrator::CvodeIntegrator(const SimTK::MultibodySystem& system, Method method, double rtol, double atol)
+    : impl_(std::make_unique<Impl>(system, method, rtol, atol > 0 ? atol : rtol)) {}
 
 CvodeIntegrator::~CvodeIntegrator() = default;
 
@@ -135,7 +135,7 @@ void CvodeIntegrator::initialize(const SimTK::State& s) {
   double* d = N_VGetArrayPointer(m.y.p);
   for (int i = 0; i < n; ++i) d[i] = s.getY()[i];
   m.mem.method = me;
-  // Absolute tolerance: the relative one times a unit scale (rad, m, rad/s, m/s).
+  // Absolute tolerance: given, or the relative one times a unit scale (rad, m, rad/s, m/s).
   switch (me) {
     case Method::Adams:
     case Method::Bdf:
@@ -143,21 +143,21 @@ void CvodeIntegrator::initialize(const SimTK::State& s) {
       if (!m.mem.p) throw NumericalError("CVodeCreate failed");
       check(me, CVodeInit(m.mem.p, &Impl::rhs, s.getTime(), m.y.p), "CVodeInit");
       check(me, CVodeSetUserData(m.mem.p, &m), "CVodeSetUserData");
-      check(me, CVodeSStolerances(m.mem.p, m.rtol, m.rtol), "CVodeSStolerances");
+      check(me, CVodeSStolerances(m.mem.p, m.rtol, m.atol), "CVodeSStolerances");
       check(me, CVodeSetMaxNumSteps(m.mem.p, 1000000), "CVodeSetMaxNumSteps");
       break;
     case Method::ArkErk:
       m.mem.p = ERKStepCreate(&Impl::rhs, s.getTime(), m.y.p, m.ctx.c);
       if (!m.mem.p) throw NumericalError("ERKStepCreate failed");
       check(me, ERKStepSetUserData(m.mem.p, &m), "ERKStepSetUserData");
-      check(me, ERKStepSStolerances(m.mem.p, m.rtol, m.rtol), "ERKStepSStolerances");
+      check(me, ERKStepSStolerances(m.mem.p, m.rtol, m.atol), "ERKStepSStolerances");
       check(me, ERKStepSetMaxNumSteps(m.mem.p, 1000000), "ERKStepSetMaxNumSteps");
       break;
     case Method::ArkDirk:
       m.mem.p = ARKStepCreate(nullptr, &Impl::rhs, s.getTime(), m.y.p, m.ctx.c);  // all implicit
       if (!m.mem.p) throw NumericalError("ARKStepCreate failed");
       check(me, ARKStepSetUserData(m.mem.p, &m), "ARKStepSetUserData");
-      check(me, ARKStepSStolerances(m.mem.p, m.rtol, m.rtol), "ARKStepSStolerances");
+      check(me, ARKStepSStolerances(m.mem.p, m.rtol, m.atol), "ARKStepSStolerances");
       check(me, ARKStepSetMaxNumSteps(m.mem.p, 1000000), "ARKStepSetMaxNumSteps");
       break;
   }
@@ -220,7 +220,8 @@ namespace {
 
 class CvodeStepper : public ExternalStepper {
  public:
-  CvodeStepper(const SimTK::MultibodySystem& sys, CvodeIntegrator::Method method, double rtol) : integ_(sys, method, rtol) {}
+  CvodeStepper(const SimTK::MultibodySystem& sys, CvodeIntegrator::Method method, double rtol, double atol)
+      : integ_(sys, method, rtol, atol) {}
   bool initialize(const SimTK::State& s, std::string& error) override { return guard([&] { integ_.initialize(s); }, error); }
   bool stepTo(double t, std::string& error) override { return guard([&] { integ_.stepTo(t); }, error); }
   const SimTK::State& state() const override { return integ_.getState(); }
@@ -244,7 +245,8 @@ class CvodeStepper : public ExternalStepper {
 }  // namespace
 }  // namespace mmv
 
-extern "C" mmv::ExternalStepper* mmv_create_cvode_stepper(const SimTK::MultibodySystem* system, int method, double rtol) {
+extern "C" mmv::ExternalStepper* mmv_create_cvode_stepper(const SimTK::MultibodySystem* system, int method, double rtol,
+                                                            double atol) {
   if (method < 0 || method > 3) return nullptr;
-  return new mmv::CvodeStepper(*system, static_cast<mmv::CvodeIntegrator::Method>(method), rtol);
+  return new mmv::CvodeStepper(*system, static_cast<mmv::CvodeIntegrator::Method>(method), rtol, atol);
 }

@@ -19,7 +19,9 @@ namespace mmv {
 class CvodeIntegrator {
  public:
   enum class Method { Adams = 0, Bdf = 1, ArkErk = 2, ArkDirk = 3 };  ///< the plugin's method codes
-  CvodeIntegrator(const SimTK::MultibodySystem& system, Method method, double relative_tolerance);
+  /// absolute_tolerance <= 0: the relative one.
+  CvodeIntegrator(const SimTK::MultibodySystem& system, Method method, double relative_tolerance,
+                  double absolute_tolerance = 0);
   ~CvodeIntegrator();
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;

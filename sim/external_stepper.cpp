@@ -11,7 +11,7 @@
 namespace mmv {
 
 std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
-                                                     double rtol) {
+                                                     double rtol, double atol) {
   // Next to the executable first, then where the build put it.
   std::vector<std::string> candidates;
   char exe[PATH_MAX];
@@ -33,7 +33,7 @@ std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySyste
     }
     auto create = reinterpret_cast<CreateStepper>(::dlsym(handle, "mmv_create_cvode_stepper"));
     if (!create) throw NumericalError(path + ": no mmv_create_cvode_stepper");
-    ExternalStepper* stepper = create(&system, static_cast<int>(method), rtol);
+    ExternalStepper* stepper = create(&system, static_cast<int>(method), rtol, atol);
     if (!stepper) throw NumericalError(path + ": unknown SUNDIALS method " + std::to_string(static_cast<int>(method)));
     return std::unique_ptr<ExternalStepper>(stepper);
   }

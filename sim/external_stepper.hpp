@@ -25,7 +25,8 @@ class ExternalStepper {
 };
 
 /// The plugin's factory (extern "C").
-using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system, int method, double relative_tolerance);
+using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system, int method, double relative_tolerance,
+                                           double absolute_tolerance);
 
 /// The plugin's methods (codes as CvodeIntegrator::Method).
 enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeDirk = 3 };
@@ -33,7 +34,8 @@ enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeD
 /// Loads the SUNDIALS plugin and creates a stepper: CVODE BDF (dense Newton) or Adams
 /// (fixed point), ARKODE explicit RK or implicit SDIRK (dense Newton). Throws
 /// NumericalError if the plugin cannot be loaded (the message says where it was looked for).
+/// `atol` <= 0: the relative tolerance (on the state's unit scale: rad, m, rad/s, m/s).
 std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
-                                                     double rtol);
+                                                     double rtol, double atol = 0);
 
 }  // namespace mmv

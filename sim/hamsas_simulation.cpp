@@ -154,7 +154,7 @@ SimulationResult simulateHamsas(const Scene& scene, const std::function<void(dou
   SimTK::State s = sys.getDefaultState();
   s.setTime(0);
   sys.realize(s, SimTK::Stage::Position);
-  RunIntegrator integrator(sys, spec.integrator, spec.accuracy, s, scene.source);
+  RunIntegrator integrator(sys, spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance);
 
   SimulationResult r;
   r.integrator = spec.integrator;

@@ -26,7 +26,7 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const
 }  // namespace
 
 RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::string& name, double accuracy,
-                             const SimTK::State& initial, const std::string& source)
+                             const SimTK::State& initial, const std::string& source, double atol)
     : name_(name), accuracy_(accuracy) {
   // Simbody asserts (and aborts) outside (0, 1); say so instead.
   if (!(accuracy > 0 && accuracy < 1))
@@ -36,11 +36,16 @@ RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::strin
                                                                {"arkode_erk", SundialsMethod::ArkodeErk},
                                                                {"arkode_dirk", SundialsMethod::ArkodeDirk}};
   if (const auto it = kSundials.find(name); it != kSundials.end()) {
-    sundials_ = makeSundialsStepper(sys, it->second, accuracy);
+    if (!(atol >= 0 && atol < 1))
+      throw SceneError(source + ": simulation absolute tolerance must be in [0, 1) (got " + std::to_string(atol) + ")");
+    sundials_ = makeSundialsStepper(sys, it->second, accuracy, atol);
     std::string error;
     if (!sundials_->initialize(initial, error)) throw NumericalError(error);
     return;
   }
+  if (atol > 0)
+    throw SceneError(source + ": an absolute tolerance applies to the SUNDIALS integrators (cvode_bdf, cvode_adams, "
+                     "arkode_erk, arkode_dirk); " + name + " measures its error relative to the state's unit scale only");
   integ_ = makeIntegrator(name, sys, source);
   integ_->setAccuracy(accuracy);
   integ_->setInternalStepLimit(1000000);

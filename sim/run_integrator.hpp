@@ -17,8 +17,10 @@ class RunIntegrator {
  public:
   /// Throws SceneError (`source` in the message) for an unknown name or an accuracy
   /// outside (0, 1), NumericalError if SUNDIALS cannot start.
+  /// `absolute_tolerance` > 0 applies to SUNDIALS' methods (SceneError for Simbody's,
+  /// which measure errors on the state's unit scale only); 0: the accuracy.
   RunIntegrator(const SimTK::MultibodySystem& system, const std::string& name, double accuracy,
-                const SimTK::State& initial, const std::string& source);
+                const SimTK::State& initial, const std::string& source, double absolute_tolerance = 0);
   ~RunIntegrator();
   /// Advances to t; throws NumericalError naming the integrator's reason and the time.
   void stepTo(double t);

@@ -31,6 +31,7 @@ struct SimulationSpec {
   double duration = 10;         ///< s.
   std::string integrator = "rk_merson";
   double accuracy = 1e-6;       ///< integrator relative accuracy.
+  double absolute_tolerance = 0;  ///< SUNDIALS integrators only (m, rad, m/s, rad/s); 0: the accuracy.
   double sample_rate_hz = 200;  ///< output rows per second.
   bool from_equilibrium = true; ///< start at the static equilibrium, else at the scene's angles at rest.
   /// The outputs `mmvlab trade` scores (link tips; HAM-SAS: optical_table, spring_box);

@@ -310,7 +310,8 @@ class SceneParser {
   }
 
   SimulationSpec readSimulation(const YAML::Node& n) {
-    auto m = r_.mapping(n, "simulation", {"duration", "integrator", "accuracy", "sample_rate_hz", "start", "score_points"});
+    auto m = r_.mapping(n, "simulation", {"duration", "integrator", "accuracy", "absolute_tolerance", "sample_rate_hz", "start",
+                                          "score_points"});
     SimulationSpec s;
     if (m.count("duration")) s.duration = r_.positive(m.at("duration"), "simulation.duration", " s");
     if (m.count("integrator")) s.integrator = r_.text(m.at("integrator"), "simulation.integrator");
@@ -318,6 +319,14 @@ class SceneParser {
       s.accuracy = r_.positive(m.at("accuracy"), "simulation.accuracy", "");
       if (s.accuracy >= 1)
         r_.fail(m.at("accuracy").Mark(), "simulation.accuracy must be below 1 (a relative accuracy; got " + m.at("accuracy").Scalar() + ")");
+    }
+    if (m.count("absolute_tolerance")) {
+      s.absolute_tolerance = r_.positive(m.at("absolute_tolerance"), "simulation.absolute_tolerance", "");
+      if (s.absolute_tolerance >= 1)
+        r_.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance must be below 1 (got " + m.at("absolute_tolerance").Scalar() + ")");
+      if (s.integrator.rfind("cvode", 0) != 0 && s.integrator.rfind("arkode", 0) != 0)
+        r_.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance applies to the SUNDIALS integrators "
+                                                   "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk; got integrator " + s.integrator + ")");
     }
     if (m.count("sample_rate_hz")) s.sample_rate_hz = r_.positive(m.at("sample_rate_hz"), "simulation.sample_rate_hz", " Hz");
     if (m.count("start")) {

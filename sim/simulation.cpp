@@ -46,7 +46,7 @@ SimulationResult simulate(const Scene& scene, const std::function<void(double)>&
   s.setTime(0);
   const bool closed = !model->getClosures().empty();
   if (closed) s = model->addClosureConstraints(s);  // the dynamics hold the closures from here
-  RunIntegrator integrator(sys, spec.integrator, spec.accuracy, s, scene.source);
+  RunIntegrator integrator(sys, spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance);
 
   SimulationResult r;
   r.integrator = spec.integrator;

@@ -90,6 +90,7 @@ struct SimulateArgs : SceneArgs {
   bool json = false;
   std::string integrator;  ///< empty: the scene's.
   double accuracy = 0, duration = 0, sample_rate = 0;  ///< 0: the scene's.
+  double absolute_tolerance = 0;                       ///< SUNDIALS only; 0: the scene's.
   std::string out;
   bool force = false;
 };

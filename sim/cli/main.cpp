@@ -97,7 +97,8 @@ int main(int argc, char** argv) {
   addSceneOptions(si, sim);
   si->add_flag("--json", sim.json, "Print the summary as JSON");
   si->add_option("--integrator", sim.integrator,
-                 "rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler (default: the scene's)");
+                 "rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler (Simbody); "
+                 "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk (SUNDIALS) (default: the scene's)");
   si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy in (0, 1) (default: the scene's)")
       ->check(CLI::Validator(
           [](std::string& v) {
@@ -106,6 +107,9 @@ int main(int argc, char** argv) {
             return a > 0 && a < 1 ? std::string() : std::string("a relative accuracy must be in (0, 1)");
           },
           "(0,1)"));
+  si->add_option("--absolute-tolerance", sim.absolute_tolerance,
+                 "SUNDIALS integrators: absolute tolerance (m, rad, m/s, rad/s; default: the scene's, else the accuracy)")
+      ->check(CLI::PositiveNumber);
   si->add_option("--duration", sim.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);
   si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(CLI::PositiveNumber);
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");

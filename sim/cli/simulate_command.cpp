@@ -122,6 +122,7 @@ int runSimulateCommand(const SimulateArgs& args) {
     Scene scene = loadScene(args);
         if (!args.integrator.empty()) scene.simulation.integrator = args.integrator;
     if (args.accuracy > 0) scene.simulation.accuracy = args.accuracy;
+    if (args.absolute_tolerance > 0) scene.simulation.absolute_tolerance = args.absolute_tolerance;
     if (args.duration > 0) scene.simulation.duration = args.duration;
     if (args.sample_rate > 0) scene.simulation.sample_rate_hz = args.sample_rate;
     std::vector<std::string> warnings;

@@ -289,3 +289,38 @@ TEST(Simulation, ClosedTreeHoldsItsClosureAndItsEnergy) {
 
 }  // namespace
 }  // namespace mmv
+
+namespace mmv {
+namespace {
+
+TEST(Simulation, AbsoluteToleranceResolvesSmallMotions) {
+  // A rigid pendulum swinging 1 urad: theta = theta0 cos(w t), w^2 = 3 g / (2 L). At a
+  // relative accuracy of 1e-3 the default absolute tolerance (the same 1e-3 rad) lets
+  // the motion be anything under a milliradian; an absolute tolerance resolves it.
+  Scene s = testing::chainScene(1, 1.0, 2.0, 9.81);
+  const double theta0 = 1e-6, w = std::sqrt(3 * 9.81 / 2.0);
+  s.article.joints[0].angle = theta0;
+  s.simulation.duration = 2.0;
+  s.simulation.sample_rate_hz = 100;
+  s.simulation.from_equilibrium = false;
+  s.simulation.integrator = "arkode_erk";
+  s.simulation.accuracy = 1e-3;
+  auto error = [&](double atol) {
+    s.simulation.absolute_tolerance = atol;
+    const SimulationResult r = simulate(s);
+    double worst = 0;
+    for (const auto& row : r.record.rows)
+      worst = std::max(worst, std::abs(row[1] * M_PI / 180 - theta0 * std::cos(w * row[0])));
+    return worst;
+  };
+  const double loose = error(0), tight = error(1e-13);
+  EXPECT_LT(tight, 1e-3 * theta0) << tight;
+  EXPECT_GT(loose, 10 * tight) << loose;
+  // Simbody's integrators have no absolute tolerance: asking for one is an error.
+  s.simulation.integrator = "rk_merson";
+  s.simulation.absolute_tolerance = 1e-9;
+  EXPECT_THROW(simulate(s), SceneError);
+}
+
+}  // namespace
+}  // namespace mmv
