@@ -4,6 +4,7 @@
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
+#include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
@@ -31,14 +32,17 @@ bool isArkode(Method m) { return m == Method::ArkErk || m == Method::ArkDirk; }
 std::string flagName(Method m, int flag) {
   char* name = m == Method::ArkErk ? ERKStepGetReturnFlagName(flag)
                : m == Method::ArkDirk ? ARKStepGetReturnFlagName(flag)
+               : m == Method::Ida     ? IDAGetReturnFlagName(flag)
                                       : CVodeGetReturnFlagName(flag);
   std::string s = name ? name : "unknown flag";
   std::free(name);  // SUNDIALS allocates it
   return s;
 }
 
+const char* packageName(Method m) { return isArkode(m) ? "ARKODE" : m == Method::Ida ? "IDA" : "CVODE"; }
+
 void check(Method m, int flag, const char* call) {
-  if (flag < 0) throw NumericalError(std::string(isArkode(m) ? "ARKODE " : "CVODE ") + call + " failed: " + flagName(m, flag));
+  if (flag < 0) throw NumericalError(std::string(packageName(m)) + " " + call + " failed: " + flagName(m, flag));
 }
 
 template <class T, void (*Free)(T)>
@@ -71,6 +75,7 @@ struct Memory {
     if (!p) return;
     if (method == Method::ArkErk) ERKStepFree(&p);
     else if (method == Method::ArkDirk) ARKStepFree(&p);
+    else if (method == Method::Ida) IDAFree(&p);
     else CVodeFree(&p);
   }
 };
@@ -83,6 +88,8 @@ struct CvodeIntegrator::Impl {
   double rtol, atol;
   Context ctx;
   Handle<N_Vector, freeVector> y;
+  Handle<N_Vector, freeVector> yp, id;  // IDA: y', and which components are differential
+  int ny = 0, np = 0;                   // IDA: Simbody's state size, position constraints
   Handle<SUNMatrix, freeMatrix> A;
   Handle<SUNLinearSolver, freeLinearSolver> ls;
   Handle<SUNNonlinearSolver, freeNonlinearSolver> nls;
@@ -101,6 +108,34 @@ struct CvodeIntegrator::Impl {
     system.realize(work, SimTK::Stage::Position);
     system.prescribeU(work);
     system.realize(work, SimTK::Stage::Acceleration);
+  }
+
+  /// IDA: F = [q' - qdot - ~Pq mu; u' - udot; perr] over y = [q; u; mu].
+  static int residual(double t, N_Vector yv, N_Vector ypv, N_Vector rr, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      self->load(t, yv);
+      const SimTK::State& w = self->work;
+      const double* y = N_VGetArrayPointer(yv);
+      const double* yp = N_VGetArrayPointer(ypv);
+      double* r = N_VGetArrayPointer(rr);
+      const SimTK::Vector& yd = w.getYDot();
+      const int nq = w.getNQ(), n = self->ny, np = self->np;
+      SimTK::Vector correction(nq, 0.0);
+      if (np > 0) {
+        SimTK::Vector mu(np);
+        for (int i = 0; i < np; ++i) mu[i] = y[n + i];
+        self->system.getMatterSubsystem().multiplyByPqTranspose(w, mu, correction);
+      }
+      for (int i = 0; i < n; ++i) {
+        r[i] = yp[i] - yd[i] - (i < nq ? correction[i] : 0.0);
+        if (!std::isfinite(r[i])) return 1;
+      }
+      for (int i = 0; i < np; ++i) r[n + i] = w.getQErr()[i];
+      return 0;
+    } catch (...) {
+      return -1;
+    }
   }
 
   static int rhs(double t, N_Vector yv, N_Vector ydot, void* user) {
@@ -129,6 +164,10 @@ void CvodeIntegrator::initialize(const SimTK::State& s) {
   Impl& m = *impl_;
   const Method me = m.method;
   m.work = s;
+  if (me == Method::Ida) {
+    initializeIda(s);
+    return;
+  }
   const int n = s.getNY();
   m.y.p = N_VNew_Serial(n, m.ctx.c);
   if (!m.y.p) throw NumericalError("SUNDIALS: cannot allocate the state vector");
@@ -176,15 +215,56 @@ void CvodeIntegrator::initialize(const SimTK::State& s) {
   state_ = m.work;
 }
 
+void CvodeIntegrator::initializeIda(const SimTK::State& s) {
+  Impl& m = *impl_;
+  const Method me = Method::Ida;
+  m.system.realize(m.work, SimTK::Stage::Acceleration);
+  if (s.getNQ() != s.getNU())
+    throw NumericalError("IDA here needs as many q as u (free bodies with quaternions are not supported): use cvode_bdf");
+  m.ny = s.getNY();
+  m.np = s.getNQErr();
+  const int n = m.ny + m.np;
+  m.y.p = N_VNew_Serial(n, m.ctx.c);
+  m.yp.p = N_VNew_Serial(n, m.ctx.c);
+  m.id.p = N_VNew_Serial(n, m.ctx.c);
+  if (!m.y.p || !m.yp.p || !m.id.p) throw NumericalError("SUNDIALS: cannot allocate IDA's vectors");
+  double* y = N_VGetArrayPointer(m.y.p);
+  double* yp = N_VGetArrayPointer(m.yp.p);
+  double* id = N_VGetArrayPointer(m.id.p);
+  // Consistent start: the state (on its closures), its derivative, multipliers 0.
+  for (int i = 0; i < m.ny; ++i) y[i] = s.getY()[i], yp[i] = m.work.getYDot()[i], id[i] = 1.0;
+  for (int i = m.ny; i < n; ++i) y[i] = 0.0, yp[i] = 0.0, id[i] = 0.0;
+  m.mem.method = me;
+  m.mem.p = IDACreate(m.ctx.c);
+  if (!m.mem.p) throw NumericalError("IDACreate failed");
+  check(me, IDAInit(m.mem.p, &Impl::residual, s.getTime(), m.y.p, m.yp.p), "IDAInit");
+  check(me, IDASetUserData(m.mem.p, &m), "IDASetUserData");
+  check(me, IDASStolerances(m.mem.p, m.rtol, m.atol), "IDASStolerances");
+  check(me, IDASetMaxNumSteps(m.mem.p, 1000000), "IDASetMaxNumSteps");
+  check(me, IDASetId(m.mem.p, m.id.p), "IDASetId");
+  check(me, IDASetSuppressAlg(m.mem.p, SUNTRUE), "IDASetSuppressAlg");  // multipliers: index 2
+  // An index-2 iteration matrix's conditioning grows as 1/h^2: IDA's own first step
+  // (from |y'| and the tolerances, about 1e-8 s here) makes it singular in double, so
+  // start at a step a multibody run resolves anyway.
+  if (m.np > 0) check(me, IDASetInitStep(m.mem.p, 1e-4), "IDASetInitStep");
+  m.A.p = SUNDenseMatrix(n, n, m.ctx.c);
+  m.ls.p = SUNLinSol_Dense(m.y.p, m.A.p, m.ctx.c);
+  if (!m.A.p || !m.ls.p) throw NumericalError("SUNDIALS: cannot create IDA's dense linear solver for " + std::to_string(n) + " unknowns");
+  check(me, IDASetLinearSolver(m.mem.p, m.ls.p, m.A.p), "IDASetLinearSolver");
+  m.load(s.getTime(), m.y.p);
+  state_ = m.work;
+}
+
 void CvodeIntegrator::stepTo(double t) {
   Impl& m = *impl_;
   double reached = 0;
   const int flag = m.method == Method::ArkErk    ? ERKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
                    : m.method == Method::ArkDirk ? ARKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
+                   : m.method == Method::Ida     ? IDASolve(m.mem.p, t, &reached, m.y.p, m.yp.p, IDA_NORMAL)
                                                  : CVode(m.mem.p, t, m.y.p, &reached, CV_NORMAL);
   if (flag < 0)
-    throw NumericalError(std::string(isArkode(m.method) ? "ARKODE" : "CVODE") + " stopped at t = " +
-                         std::to_string(reached) + " s: " + flagName(m.method, flag));
+    throw NumericalError(std::string(packageName(m.method)) + " stopped at t = " + std::to_string(reached) +
+                         " s: " + flagName(m.method, flag));
   m.load(reached, m.y.p);
   state_ = m.work;
   m.system.realize(state_, SimTK::Stage::Acceleration);
@@ -194,6 +274,7 @@ long CvodeIntegrator::steps() const {
   long n = 0;
   if (impl_->method == Method::ArkErk) ERKStepGetNumSteps(impl_->mem.p, &n);
   else if (impl_->method == Method::ArkDirk) ARKStepGetNumSteps(impl_->mem.p, &n);
+  else if (impl_->method == Method::Ida) IDAGetNumSteps(impl_->mem.p, &n);
   else CVodeGetNumSteps(impl_->mem.p, &n);
   return n;
 }
@@ -206,6 +287,10 @@ long CvodeIntegrator::rhsEvaluations() const {
     case Method::ArkDirk:
       ARKStepGetNumRhsEvals(impl_->mem.p, &explicit_evals, &n);
       ARKStepGetNumLinRhsEvals(impl_->mem.p, &jac);
+      break;
+    case Method::Ida:
+      IDAGetNumResEvals(impl_->mem.p, &n);
+      IDAGetNumLinResEvals(impl_->mem.p, &jac);
       break;
     case Method::Bdf: CVodeGetNumLinRhsEvals(impl_->mem.p, &jac); [[fallthrough]];
     case Method::Adams: CVodeGetNumRhsEvals(impl_->mem.p, &n); break;
@@ -247,6 +332,6 @@ class CvodeStepper : public ExternalStepper {
 
 extern "C" mmv::ExternalStepper* mmv_create_cvode_stepper(const SimTK::MultibodySystem* system, int method, double rtol,
                                                             double atol) {
-  if (method < 0 || method > 3) return nullptr;
+  if (method < 0 || method > 4) return nullptr;
   return new mmv::CvodeStepper(*system, static_cast<mmv::CvodeIntegrator::Method>(method), rtol, atol);
 }

@@ -18,7 +18,11 @@ namespace mmv {
 
 class CvodeIntegrator {
  public:
-  enum class Method { Adams = 0, Bdf = 1, ArkErk = 2, ArkDirk = 3 };  ///< the plugin's method codes
+  /// The plugin's method codes. Ida: the equations as a DAE, F(t, y, y') = 0, with the
+  /// position constraints (closures) held as algebraic equations by stabilizing
+  /// multipliers (Gear-Gupta-Leimkuhler): q' = qdot(q, u) + ~Pq mu, u' = udot(q, u),
+  /// perr(q) = 0; the multipliers are left out of the error test (index 2).
+  enum class Method { Adams = 0, Bdf = 1, ArkErk = 2, ArkDirk = 3, Ida = 4 };
   /// absolute_tolerance <= 0: the relative one.
   CvodeIntegrator(const SimTK::MultibodySystem& system, Method method, double relative_tolerance,
                   double absolute_tolerance = 0);
@@ -34,6 +38,7 @@ class CvodeIntegrator {
   long rhsEvaluations() const;  ///< including the Jacobians' difference quotients (BDF)
 
  private:
+  void initializeIda(const SimTK::State& s);
   struct Impl;
   std::unique_ptr<Impl> impl_;
   SimTK::State state_;

@@ -29,7 +29,7 @@ using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system,
                                            double absolute_tolerance);
 
 /// The plugin's methods (codes as CvodeIntegrator::Method).
-enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeDirk = 3 };
+enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeDirk = 3, Ida = 4 };
 
 /// Loads the SUNDIALS plugin and creates a stepper: CVODE BDF (dense Newton) or Adams
 /// (fixed point), ARKODE explicit RK or implicit SDIRK (dense Newton). Throws

@@ -20,10 +20,14 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const
   if (name == "explicit_euler") return std::make_unique<SimTK::ExplicitEulerIntegrator>(sys);
   throw SceneError(source + ": unknown integrator '" + name +
                    "' (known: rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler, "
-                   "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk)");
+                   "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ida)");
 }
 
 }  // namespace
+
+bool isSundialsIntegrator(const std::string& name) {
+  return name.rfind("cvode_", 0) == 0 || name.rfind("arkode_", 0) == 0 || name == "ida";
+}
 
 RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::string& name, double accuracy,
                              const SimTK::State& initial, const std::string& source, double atol)
@@ -34,7 +38,8 @@ RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::strin
   static const std::map<std::string, SundialsMethod> kSundials{{"cvode_bdf", SundialsMethod::CvodeBdf},
                                                                {"cvode_adams", SundialsMethod::CvodeAdams},
                                                                {"arkode_erk", SundialsMethod::ArkodeErk},
-                                                               {"arkode_dirk", SundialsMethod::ArkodeDirk}};
+                                                               {"arkode_dirk", SundialsMethod::ArkodeDirk},
+                                                               {"ida", SundialsMethod::Ida}};
   if (const auto it = kSundials.find(name); it != kSundials.end()) {
     if (!(atol >= 0 && atol < 1))
       throw SceneError(source + ": simulation absolute tolerance must be in [0, 1) (got " + std::to_string(atol) + ")");
@@ -45,7 +50,7 @@ RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::strin
   }
   if (atol > 0)
     throw SceneError(source + ": an absolute tolerance applies to the SUNDIALS integrators (cvode_bdf, cvode_adams, "
-                     "arkode_erk, arkode_dirk); " + name + " measures its error relative to the state's unit scale only");
+                     "arkode_erk, arkode_dirk, ida); " + name + " measures its error relative to the state's unit scale only");
   integ_ = makeIntegrator(name, sys, source);
   integ_->setAccuracy(accuracy);
   integ_->setInternalStepLimit(1000000);

@@ -13,6 +13,9 @@
 
 namespace mmv {
 
+/// True for the SUNDIALS integrators (cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ida).
+bool isSundialsIntegrator(const std::string& name);
+
 class RunIntegrator {
  public:
   /// Throws SceneError (`source` in the message) for an unknown name or an accuracy

@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 
+#include "sim/run_integrator.hpp"
 #include "sim/scene.hpp"
 
 namespace mmv {
@@ -324,9 +325,9 @@ class SceneParser {
       s.absolute_tolerance = r_.positive(m.at("absolute_tolerance"), "simulation.absolute_tolerance", "");
       if (s.absolute_tolerance >= 1)
         r_.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance must be below 1 (got " + m.at("absolute_tolerance").Scalar() + ")");
-      if (s.integrator.rfind("cvode", 0) != 0 && s.integrator.rfind("arkode", 0) != 0)
+      if (!isSundialsIntegrator(s.integrator))
         r_.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance applies to the SUNDIALS integrators "
-                                                   "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk; got integrator " + s.integrator + ")");
+                                                   "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ida; got integrator " + s.integrator + ")");
     }
     if (m.count("sample_rate_hz")) s.sample_rate_hz = r_.positive(m.at("sample_rate_hz"), "simulation.sample_rate_hz", " Hz");
     if (m.count("start")) {

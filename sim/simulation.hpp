@@ -26,7 +26,8 @@
 /// "explicit_euler"; SUNDIALS CVODE's "cvode_bdf" (dense Newton, stiff) and
 /// "cvode_adams" (fixed point, non-stiff), and ARKODE's "arkode_erk" (explicit RK,
 /// order 4) and "arkode_dirk" (implicit SDIRK, dense Newton) on the same model
-/// (sim/cvode_integrator.hpp).
+/// (sim/cvode_integrator.hpp), and IDA's "ida" (a closed tree as a stabilized index-2
+/// DAE, its closures held by multipliers).
 /// For CVODE "realizations" counts right-hand-side evaluations.
 
 #include <functional>
@@ -68,8 +69,8 @@ struct SimulationResult {
   double energy_balance_error_j = 0;  ///< (E_end - E_0) - (W - D).
   double peak_kinetic_energy_j = 0;   ///< largest kinetic energy at a sample.
   /// Closed trees: the largest closure error at a sample (m). Simbody's integrators
-  /// project onto the closures to their accuracy; SUNDIALS' ODE methods do not, so their
-  /// drift grows (IDA, which would hold them, is not built).
+  /// project onto the closures to their accuracy and IDA holds them as algebraic
+  /// equations; SUNDIALS' ODE methods do not, so their drift grows.
   double constraint_drift_m = 0;
   /// With a table: the peak force its actuator must give along x (the table's own
   /// moving mass included; column `table_force_n`), and the weight it carries

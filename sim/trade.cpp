@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "article/article_spec.hpp"
+#include "sim/run_integrator.hpp"
 #include "sim/simulation.hpp"
 #include "sim/statics.hpp"
 
@@ -57,7 +58,7 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& options) {
     s.simulation.integrator = integrator;
     s.simulation.accuracy = accuracy;
     // The scene's absolute tolerance applies to SUNDIALS' methods only.
-    if (integrator.rfind("cvode", 0) != 0 && integrator.rfind("arkode", 0) != 0) s.simulation.absolute_tolerance = 0;
+    if (!isSundialsIntegrator(integrator)) s.simulation.absolute_tolerance = 0;
     return simulate(s);
   };
   if (scene.hamsas) study.reference_integrator = "rk_merson", study.check_integrator = "arkode_erk";
