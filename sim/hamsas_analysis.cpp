@@ -29,6 +29,16 @@ const std::vector<std::pair<std::string, double>>& hamsasMeasuredFeatures() {
   return f;
 }
 
+namespace {
+
+double measured(const std::string& feature) {
+  for (const auto& [name, hz] : hamsasMeasuredFeatures())
+    if (name == feature) return hz;
+  throw std::logic_error("no measured feature " + feature);
+}
+
+}  // namespace
+
 HamsasModes analyseHamsas(const HamsasSpec& spec) {
   HamsasModes h;
   h.spec = spec;
@@ -109,22 +119,22 @@ HamsasModes analyseHamsas(const HamsasSpec& spec) {
   const std::map<std::string, double> gas = {{"ot", 1.0}, {"sb", -m_ot / m_sb}, {"lp", -m_ot / m_sb}};
   const std::map<std::string, double> table = {{"ot", 1.0}};
   for (int d = 0; d < 2; ++d)
-    byPattern(std::string("IP (horizontal) ") + kDirections[d], 0.065, pattern(s, stack, d),
+    byPattern(std::string("IP (horizontal) ") + kDirections[d], measured("IP (horizontal)"), pattern(s, stack, d),
               std::string("spring box, table and little pendulums translating together in ") + kDirections[d]);
   for (int d = 3; d < 5; ++d)
-    byPattern(std::string("DOF cross-coupling ") + kDirections[d], 0.125, pattern(s, table, d),
+    byPattern(std::string("DOF cross-coupling ") + kDirections[d], measured("DOF cross-coupling"), pattern(s, table, d),
               std::string("optical table tilting (") + kDirections[d] + ") on the MGAS springs");
-  byPattern("MGAS vertical", 0.100, pattern(s, table, 2), "optical table translating in z on the MGAS springs");
+  byPattern("MGAS vertical", measured("MGAS vertical"), pattern(s, table, 2), "optical table translating in z on the MGAS springs");
   for (int d = 0; d < 2; ++d)
-    byPattern(std::string("horizontal GAS ") + kDirections[d], 0.265, pattern(s, gas, d),
+    byPattern(std::string("horizontal GAS ") + kDirections[d], measured("horizontal GAS"), pattern(s, gas, d),
               std::string("optical table against the spring box in ") + kDirections[d] + ", zero momentum");
-  byShare("little pendulums", 22.0,
+  byShare("little pendulums", measured("little pendulums"),
           "lowest mode with >= 50 % of its kinetic energy in the IP legs rocking (rx, ry) and the little pendulums",
           [](const SpatialMode& m) {
             auto get = [&](const char* g) { auto it = m.kinetic_share.find(g); return it == m.kinetic_share.end() ? 0.0 : it->second; };
             return get("ip_leg.rx") + get("ip_leg.ry") + get("lp");
           });
-  byShare("effective spherical joints", 60.0, "lowest mode with >= 50 % of its strain energy in the joint springs' elasticity",
+  byShare("effective spherical joints", measured("effective spherical joints"), "lowest mode with >= 50 % of its strain energy in the joint springs' elasticity",
           [](const SpatialMode& m) {
             auto it = m.strain_share.find("joint");
             return it == m.strain_share.end() ? 0.0 : it->second;

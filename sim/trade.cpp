@@ -40,7 +40,8 @@ TradeStudy runTrade(const Scene& base, const TradeOptions& options) {
   if (o.duration > 0) scene.simulation.duration = o.duration;
   if (!o.points.empty()) {
     std::vector<std::string> tips;
-    if (scene.hamsas) tips = {"optical_table", "spring_box"};
+    if (scene.hamsas)  // the bodies simulateHamsas scores: the optical table and the spring box
+      for (int b : {1, 2}) tips.push_back(buildHamsas(*scene.hamsas).bodies[b].name);
     for (const auto& p : articlePointNames(scene.article))
       if (p.size() > 4 && p.compare(p.size() - 4, 4, ".tip") == 0) tips.push_back(p);
     for (const auto& p : o.points)
