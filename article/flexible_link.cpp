@@ -1,12 +1,13 @@
 #include "article/flexible_link.hpp"
 
-#include <cassert>
+#include <stdexcept>
 
 namespace mmv {
 
 LinkDiscretization discretizeLink(double length, double mass_per_length, double bending_stiffness,
                                   int segments, bool rigid) {
-  assert(length > 0 && mass_per_length > 0);
+  // The scene reader checks these with the scene's line and column; this guards callers in code.
+  if (!(length > 0 && mass_per_length > 0)) throw std::invalid_argument("discretizeLink: length and mass per length must be > 0");
   LinkDiscretization d;
   auto addPiece = [&](double x0, double l) {
     LinkPiece p;
@@ -20,7 +21,8 @@ LinkDiscretization discretizeLink(double length, double mass_per_length, double 
     addPiece(0.0, length);
     return d;
   }
-  assert(segments >= 1 && bending_stiffness > 0);
+  if (!(segments >= 1 && bending_stiffness > 0))
+    throw std::invalid_argument("discretizeLink: a flexible link needs segments >= 1 and E*I > 0");
   const double h = length / segments;
   addPiece(0.0, 0.5 * h);
   for (int k = 1; k < segments; ++k) addPiece((k - 0.5) * h, h);

@@ -4,17 +4,17 @@
 
 #include <benchmark/benchmark.h>
 
-#include "article/article_builder.hpp"
-#include "sim/analysis.hpp"
-#include "sim/hamsas_analysis.hpp"
-#include "sim/linearize.hpp"
-#include "sim/modal.hpp"
-#include "sim/statics.hpp"
+#include "sim/model/article_builder.hpp"
+#include "sim/modes/system_modes.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/statics/linearize.hpp"
+#include "sim/modes/modal.hpp"
+#include "sim/statics/statics.hpp"
 
 namespace {
 
-mmv::Scene sceneWith(int segments) {
-  mmv::Scene s = mmv::loadDefaultScene();
+mmv::ArticleScene sceneWith(int segments) {
+  mmv::ArticleScene s = mmv::loadDefaultScene();
   mmv::overrideSegments(s, segments);
   return s;
 }
@@ -25,7 +25,7 @@ void segmentArgs(benchmark::internal::Benchmark* b) {
 }
 
 void BM_Build(benchmark::State& st) {
-  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
   for (auto _ : st) benchmark::DoNotOptimize(mmv::buildArticleModel(s));
 }
 BENCHMARK(BM_Build)->Apply(segmentArgs);
@@ -53,7 +53,7 @@ void BM_Eigen(benchmark::State& st) {
 BENCHMARK(BM_Eigen)->Apply(segmentArgs);
 
 void BM_ModesPipeline(benchmark::State& st) {
-  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
   for (auto _ : st) benchmark::DoNotOptimize(mmv::solveSceneModes(s));
 }
 BENCHMARK(BM_ModesPipeline)->Apply(segmentArgs);
@@ -62,19 +62,19 @@ BENCHMARK(BM_ModesPipeline)->Apply(segmentArgs);
 
 // Linear models and synthesis (issues 3 and 5), at the default 16 segments unless the
 // argument says otherwise.
-#include "sim/cms.hpp"
-#include "sim/state_space.hpp"
+#include "sim/modes/cms.hpp"
+#include "sim/linear/state_space.hpp"
 
 namespace {
 
 void BM_LinearModel(benchmark::State& st) {
-  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
   for (auto _ : st) benchmark::DoNotOptimize(mmv::buildLinearModel(s, mmv::defaultInputs(), mmv::defaultOutputs(s), {}));
 }
 BENCHMARK(BM_LinearModel)->Apply(segmentArgs);
 
 void BM_ReduceModal(benchmark::State& st) {
-  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
   const mmv::LinearModel lm = mmv::buildLinearModel(s, mmv::defaultInputs(), mmv::defaultOutputs(s), {});
   mmv::ReductionOptions o;
   o.modes = 8;
@@ -83,14 +83,14 @@ void BM_ReduceModal(benchmark::State& st) {
 BENCHMARK(BM_ReduceModal)->Apply(segmentArgs);
 
 void BM_FrfPointFull(benchmark::State& st) {
-  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
   const mmv::LinearModel lm = mmv::buildLinearModel(s, mmv::defaultInputs(), mmv::defaultOutputs(s), {});
   for (auto _ : st) benchmark::DoNotOptimize(lm.second_order.response(2 * M_PI * 3.3));
 }
 BENCHMARK(BM_FrfPointFull)->Apply(segmentArgs);
 
 void BM_SynthesisAssumedModes(benchmark::State& st) {
-  const mmv::Scene s = sceneWith(static_cast<int>(st.range(0)));
+  const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
   mmv::SynthesisOptions o;
   for (auto _ : st) benchmark::DoNotOptimize(mmv::synthesize(s, o));
 }
@@ -102,7 +102,7 @@ BENCHMARK(BM_SynthesisAssumedModes)->Apply(segmentArgs);
 // feature identification, stiff springs (0) and ideal joints (1); one 6 x 6
 // transmissibility point.
 mmv::HamsasSpec hamsasScene(bool ideal) {
-  mmv::HamsasSpec h = *mmv::loadSceneFile(MMVLAB_SOURCE_DIR "/scenes/hamsas.yaml").hamsas;
+  mmv::HamsasSpec h = mmv::loadHamsasSceneFile(MMVLAB_SOURCE_DIR "/scenes/hamsas.yaml").isolator;
   h.ideal_joints = ideal;
   return h;
 }

@@ -8,15 +8,15 @@
 
 #include <cmath>
 
-#include "sim/analysis.hpp"
-#include "sim/simulation.hpp"
+#include "sim/modes/system_modes.hpp"
+#include "sim/time/simulation.hpp"
 
 namespace {
 
 const char* const kIntegrators[] = {"rk_merson", "cpodes", "cvode_bdf", "arkode_dirk"};
 
 void BM_Slew(benchmark::State& st) {
-  mmv::Scene s = mmv::loadDefaultScene();
+  mmv::ArticleScene s = mmv::loadDefaultScene();
   mmv::overrideSegments(s, static_cast<int>(st.range(0)));
   mmv::SlewSpec slew;
   slew.to = 45 * M_PI / 180;

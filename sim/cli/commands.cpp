@@ -4,28 +4,27 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "sim/analysis.hpp"
-#include "sim/cli/output_dir.hpp"
-#include "sim/converge.hpp"
-#include "sim/report.hpp"
-#include "sim/scene.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/scene/scene.hpp"
 
 namespace mmv::cli {
 
-/// Loads the scene and applies command-line overrides.
 Scene loadScene(const SceneArgs& args) {
-  Scene scene = args.scene_path.empty() ? loadDefaultScene() : loadSceneFile(args.scene_path);
-  if (scene.hamsas && (args.segments > 0 || args.no_gravity))
+  Scene scene = args.scene_path.empty() ? Scene(loadDefaultScene()) : loadSceneFile(args.scene_path);
+  if (auto* a = std::get_if<ArticleScene>(&scene)) {
+    if (args.segments > 0) overrideSegments(*a, args.segments);
+    if (args.no_gravity) a->gravity = {0, 0, 0};
+  } else if (args.segments > 0 || args.no_gravity) {
     throw UsageError("--segments and --no-gravity do not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
-  if (args.segments > 0) overrideSegments(scene, args.segments);
-  if (args.no_gravity) scene.gravity = {0, 0, 0};
+  }
   return scene;
 }
 
-void requireArticleScene(const Scene& scene, const std::string& command) {
-  if (scene.hamsas)
-    throw UsageError(command + ": " + scene.source +
-                     " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");
+ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command) {
+  Scene scene = loadScene(args);
+  if (auto* a = std::get_if<ArticleScene>(&scene)) return std::move(*a);
+  throw UsageError(command + ": " + sceneSource(scene) +
+                   " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");
 }
 
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {
@@ -62,35 +61,13 @@ int guarded(const std::function<int()>& body) {
   } catch (const NumericalError& e) {
     std::cerr << "mmvlab: numerical failure: " << e.what() << '\n';
     return kNumericalFailure;
+  } catch (const UnavailableError& e) {
+    std::cerr << "mmvlab: not available in this installation: " << e.what() << '\n';
+    return kUnavailable;
   } catch (const std::exception& e) {
     std::cerr << "mmvlab: internal error: " << e.what() << '\n';
     return kInternal;
   }
-}
-
-int runModesCommand(const ModesArgs& args) {
-  return guarded([&]() -> int {
-    const Scene scene = loadScene(args);
-    if (scene.hamsas) return runHamsasModes(args, scene);
-    ModesOptions opt;
-    opt.max_modes = args.modes;
-    opt.with_shapes = args.json;
-    const ModesReport rep = runModes(scene, opt);
-    const std::string out = args.json ? modesToJson(rep).dump(2) + "\n" : formatModesText(rep);
-    std::cout << out << std::flush;
-    return kOk;
-  });
-}
-
-int runConvergeCommand(const ConvergeArgs& args) {
-  return guarded([&] {
-    const Scene scene = loadScene(args);
-    requireArticleScene(scene, "converge");
-    const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);
-    const std::string out = args.json ? convergenceToJson(c).dump(2) + "\n" : formatConvergenceText(c);
-    std::cout << out << std::flush;
-    return kOk;
-  });
 }
 
 int runSceneCommand() {

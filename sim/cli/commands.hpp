@@ -8,9 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/components.hpp"
-#include "sim/scene.hpp"
-#include "sim/state_space.hpp"
+#include "sim/core/errors.hpp"
+#include "sim/modes/components.hpp"
+#include "sim/scene/scene.hpp"
+#include "sim/linear/state_space.hpp"
 
 namespace mmv::cli {
 
@@ -21,14 +22,9 @@ enum ExitCode : int {
   kUsage = 64,            ///< bad command line.
   kDataError = 65,        ///< bad scene content.
   kNoInput = 66,          ///< the scene file is missing or unreadable.
+  kUnavailable = 69,      ///< a part of the installation is missing (the SUNDIALS plugin).
   kInternal = 70,         ///< a bug: please report it.
   kCannotCreate = 73,     ///< the output cannot be written (or would replace files).
-};
-
-/// A command-line value the parser could not check (exit 64).
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 struct SceneArgs {
@@ -118,16 +114,17 @@ int runConvergeCommand(const ConvergeArgs& args);
 int runSceneCommand();
 
 // HAM-SAS isolator scenes (sim/cli/hamsas_command.cpp).
-int runHamsasModes(const ModesArgs& args, const Scene& scene);
-int runHamsasFrf(const LinearArgs& args, const Scene& scene, const std::vector<double>& freqs_hz);
-int runHamsasRom(const LinearArgs& args, const Scene& scene, const std::vector<double>& freqs_hz);
+int runHamsasModes(const ModesArgs& args, const HamsasScene& scene);
+int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
+int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
 /// --rom-modes / --band / --no-residualize as reduction options.
 ReductionOptions reductionOptions(const LinearArgs& args);
-/// Throws UsageError for a HAM-SAS scene given to a command that analyses the MMV article.
-void requireArticleScene(const Scene& scene, const std::string& command);
-
 // Shared by the command implementations.
+/// The scene (file or embedded default) with --segments and --no-gravity applied; the
+/// command dispatches on its kind once. UsageError for options that do not apply.
 Scene loadScene(const SceneArgs& args);
+/// The same for a command that analyses articles only: UsageError for a HAM-SAS scene.
+ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command);
 /// --bc and --tip-mass into `o`; throws UsageError naming the known values.
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o);
 /// Runs `body`, turning the error classes into messages on stderr and exit codes.

@@ -1,12 +1,12 @@
-// mmvlab compare: component modes against system modes (sim/compare.hpp).
+// mmvlab compare: component modes against system modes (sim/modes/compare.hpp).
 #include <fstream>
 #include <iostream>
 
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
-#include "sim/cli/output_dir.hpp"
-#include "sim/report_compare.hpp"
-#include "sim/table.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/io/report_compare.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -32,8 +32,7 @@ void macPng(const std::string& path, const SynthesisResult& s, const std::string
 
 int runCompareCommand(const CompareArgs& args) {
   return guarded([&] {
-    const Scene scene = loadScene(args);
-    requireArticleScene(scene, "compare");
+    const ArticleScene scene = loadArticleScene(args, "compare");
     CompareOptions o;
     parseComponentArgs(args.bc, args.tip_mass, o.component);
     o.modes_per_link = args.component_modes;

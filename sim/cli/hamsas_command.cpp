@@ -6,11 +6,11 @@
 
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
-#include "sim/cli/output_dir.hpp"
-#include "sim/hamsas_analysis.hpp"
-#include "sim/mat_file.hpp"
-#include "sim/report.hpp"
-#include "sim/table.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/io/mat_file.hpp"
+#include "sim/io/report.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -43,7 +43,7 @@ double preload(const HamsasModes& h, const std::string& prefix) {
   return v;
 }
 
-std::string modesText(const Scene& scene, const HamsasModes& h, int max_modes) {
+std::string modesText(const HamsasScene& scene, const HamsasModes& h, int max_modes) {
   std::ostringstream os;
   const ModalSolution& s = h.solution;
   os << scene.name << " [" << scene.source << "]: " << describe(h);
@@ -89,7 +89,7 @@ std::string modesText(const Scene& scene, const HamsasModes& h, int max_modes) {
   return os.str();
 }
 
-nlohmann::ordered_json modesJson(const Scene& scene, const HamsasModes& h, int max_modes) {
+nlohmann::ordered_json modesJson(const HamsasScene& scene, const HamsasModes& h, int max_modes) {
   nlohmann::ordered_json j;
   j["mmvlab_version"] = mmvlabVersion();
   j["scene"] = scene.name;
@@ -156,21 +156,21 @@ std::pair<std::string, std::vector<double>> parseVary(const std::string& text) {
 
 }  // namespace
 
-int runHamsasModes(const ModesArgs& args, const Scene& scene) {
-  const HamsasModes h = analyseHamsas(*scene.hamsas);
+int runHamsasModes(const ModesArgs& args, const HamsasScene& scene) {
+  const HamsasModes h = analyseHamsas(scene.isolator);
   const std::string out = args.json ? modesJson(scene, h, args.modes).dump(2) + "\n" : modesText(scene, h, args.modes);
   std::cout << out << std::flush;
   return kOk;
 }
 
-int runHamsasFrf(const LinearArgs& args, const Scene& scene, const std::vector<double>& f) {
+int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& f) {
   if (!args.inputs.empty() || !args.outputs.empty())
     throw UsageError("frf on a HAM-SAS scene computes the 6 x 6 ground-to-optical-table transmissibility; "
                      "--input/--output do not apply (the actuator-to-sensor model is `mmvlab rom`)");
   if (args.vary.size() > 1) throw UsageError("--vary: give one parameter");
   std::unique_ptr<OutputDir> out;
   if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-  const HamsasModes h = analyseHamsas(*scene.hamsas);
+  const HamsasModes h = analyseHamsas(scene.isolator);
   const std::vector<Eigen::MatrixXcd> T = hamsasTransmissibility(h, f);
   const Eigen::MatrixXcd T10 = spatialTransmissibility(h.model, h.lin, 2 * M_PI * 10.0);
 
@@ -204,7 +204,7 @@ int runHamsasFrf(const LinearArgs& args, const Scene& scene, const std::vector<d
     os << "\nVarying " << key << ":\n";
     Table v({key, "IP_Hz", "x_at_1_Hz_dB", "x_at_3_Hz_dB", "x_at_10_Hz_dB", "z_at_10_Hz_dB"});
     for (double x : values) {
-      const HamsasModes hv = analyseHamsas(applyVary(*scene.hamsas, key, x));
+      const HamsasModes hv = analyseHamsas(applyVary(scene.isolator, key, x));
       auto at = [&](double hz, int k) { return db(spatialTransmissibility(hv.model, hv.lin, 2 * M_PI * hz)(k, k)); };
       v.add({strf("%g", x), strf("%.4g", hv.features.front().model_hz), strf("%.1f", at(1, 0)), strf("%.1f", at(3, 0)),
              strf("%.1f", at(10, 0)), strf("%.1f", at(10, 2))});
@@ -265,12 +265,12 @@ int runHamsasFrf(const LinearArgs& args, const Scene& scene, const std::vector<d
   return kOk;
 }
 
-int runHamsasRom(const LinearArgs& args, const Scene& scene, const std::vector<double>& f) {
+int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& f) {
   if (!args.inputs.empty() || !args.outputs.empty())
     throw UsageError("rom on a HAM-SAS scene is the 8 x 8 model from the spring box's actuators to its sensors; "
                      "--input/--output do not apply");
   OutputDir out(args.out, args.force);
-  const HamsasModes h = analyseHamsas(*scene.hamsas);
+  const HamsasModes h = analyseHamsas(scene.isolator);
   const StateSpace full = hamsasControlModel(h);
   ReductionOptions options = reductionOptions(args);
   options.drop_unseen = true;

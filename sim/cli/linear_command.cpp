@@ -1,4 +1,4 @@
-// mmvlab frf and mmvlab rom: linear models for control design (sim/state_space.hpp).
+// mmvlab frf and mmvlab rom: linear models for control design (sim/linear/state_space.hpp).
 #include <cmath>
 #include <ctime>
 #include <map>
@@ -8,12 +8,12 @@
 
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
-#include "sim/cli/output_dir.hpp"
-#include "sim/mat_file.hpp"
-#include "sim/report.hpp"
-#include "sim/state_space.hpp"
-#include "sim/table.hpp"
-#include "sim/uff.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/io/mat_file.hpp"
+#include "sim/io/report.hpp"
+#include "sim/linear/state_space.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/uff.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -52,7 +52,7 @@ OutputSpec parseOutput(const std::string& text) {
   return o;
 }
 
-LinearModel build(const LinearArgs& args, const Scene& scene) {
+LinearModel build(const LinearArgs& args, const ArticleScene& scene) {
   std::vector<InputSpec> in;
   std::vector<OutputSpec> out;
   for (const auto& t : args.inputs) in.push_back(parseInput(t));
@@ -140,7 +140,7 @@ std::string summary(const LinearModel& lm, const ReducedModel& red, const ModelE
 
 /// The UFF file for a linear model: nodes at the equilibrium's named points, a trace
 /// line per link, the first mode shapes, and every FRF (or transmissibility) pair.
-std::string uffFor(const LinearModel& lm, const Scene& scene, const std::vector<double>& f,
+std::string uffFor(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
                    const std::vector<Eigen::MatrixXcd>& h) {
   const Model& model = *lm.solved.model;
   uff::File file;
@@ -225,9 +225,10 @@ std::string uffFor(const LinearModel& lm, const Scene& scene, const std::vector<
 
 int runFrfCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
-    const Scene scene = loadScene(args);
+    const Scene loaded = loadScene(args);
     const std::vector<double> f = frequencies(args);
-    if (scene.hamsas) return runHamsasFrf(args, scene, f);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasFrf(args, *h, f);
+    const ArticleScene& scene = std::get<ArticleScene>(loaded);
     if (!args.vary.empty()) throw UsageError("--vary applies to HAM-SAS scenes only");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
@@ -286,9 +287,10 @@ int runFrfCommand(const LinearArgs& args) {
 int runRomCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
     if (args.out.empty()) throw UsageError("rom: --out DIR is required (it writes rom.mat and full.mat)");
-    const Scene scene = loadScene(args);
+    const Scene loaded = loadScene(args);
     const std::vector<double> f = frequencies(args);
-    if (scene.hamsas) return runHamsasRom(args, scene, f);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h, f);
+    const ArticleScene& scene = std::get<ArticleScene>(loaded);
     OutputDir out(args.out, args.force);
     const LinearModel lm = build(args, scene);
     const ReducedModel red = reduce(args, lm.full);

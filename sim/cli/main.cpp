@@ -2,14 +2,34 @@
 #include <CLI/CLI.hpp>
 
 #include "sim/cli/commands.hpp"
-#include "sim/report.hpp"
+#include "sim/core/integrators.hpp"
+#include "sim/io/report.hpp"
 
 namespace {
+
+/// --integrator's help: every name in the one table.
+std::string integratorHelp() {
+  std::string simbody, sundials;
+  for (const auto& i : mmv::integratorTable())
+    (i.family == mmv::IntegratorInfo::Family::Simbody ? simbody : sundials) += (std::string(i.name) + ", ");
+  return simbody.substr(0, simbody.size() - 2) + " (Simbody's); " + sundials.substr(0, sundials.size() - 2) +
+         " (SUNDIALS) (default: the scene's)";
+}
+
+/// Accepts only integrator names from the table (exit 64 otherwise, with a suggestion).
+CLI::Validator integratorName() {
+  return CLI::Validator(
+      [](std::string& v) {
+        if (mmv::findIntegrator(v)) return std::string();
+        return "unknown integrator '" + v + "'" + mmv::integratorSuggestion(v) + " (known: " + mmv::integratorNames() + ")";
+      },
+      "INTEGRATOR");
+}
 
 void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
   cmd->add_option("scene", a.scene_path, "Scene file (YAML); default: the embedded MMV article scene");
   cmd->add_option("--segments", a.segments, "Segments per flexible link, overriding the scene")
-      ->check(CLI::Range(1, 4096));
+      ->check(CLI::Range(1, mmv::limits::kMaxSegments));
   cmd->add_flag("--no-gravity", a.no_gravity, "Set gravity to zero (the report's TREETOPS run had none)");
 }
 
@@ -33,7 +53,7 @@ int main(int argc, char** argv) {
   c->add_flag("--json", conv.json, "Print JSON instead of tables");
   c->add_option("--max-segments", conv.max_segments, "Finest segment count (a power of two is reached)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, mmv::limits::kMaxSegments));
   c->add_option("--modes", conv.modes, "Number of modes to tabulate")->capture_default_str()->check(CLI::Range(1, 1000));
 
   CompareArgs cmp;
@@ -96,9 +116,7 @@ int main(int argc, char** argv) {
   CLI::App* si = app.add_subcommand("simulate", "Time run: slews, table programs, free motion; torques, energy, history");
   addSceneOptions(si, sim);
   si->add_flag("--json", sim.json, "Print the summary as JSON");
-  si->add_option("--integrator", sim.integrator,
-                 "rk_merson, rk_feldberg, rk3, rk2, cpodes, verlet, semi_explicit_euler2, explicit_euler (Simbody); "
-                 "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk (SUNDIALS) (default: the scene's)");
+  si->add_option("--integrator", sim.integrator, integratorHelp())->check(integratorName());
   si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy in (0, 1) (default: the scene's)")
       ->check(CLI::Validator(
           [](std::string& v) {
@@ -120,7 +138,8 @@ int main(int argc, char** argv) {
   addSceneOptions(tp, tr);
   tp->add_flag("--json", tr.json, "Print JSON instead of tables");
   tp->add_option("--integrators", tr.integrators, "Comma-separated (default rk_merson,rk3,cpodes,cvode_bdf,cvode_adams,arkode_erk,arkode_dirk)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(integratorName());
   tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
   tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
   tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);

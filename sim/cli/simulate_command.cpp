@@ -1,186 +1,104 @@
-// mmvlab simulate: a time run of the scene (sim/simulation.hpp).
+// mmvlab simulate: a time run of the scene (sim/time/simulation.hpp; the isolator's:
+// sim/hamsas/hamsas_simulation.hpp), written by sim/io/simulation_report.hpp.
 #include <unistd.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
-#include "article/article_builder.hpp"
 #include "facility/table_programs.hpp"
 #include "sim/cli/commands.hpp"
-#include "sim/cli/output_dir.hpp"
-#include "sim/report.hpp"
-#include "sim/simulation.hpp"
-#include "sim/table.hpp"
+#include "sim/core/integrators.hpp"
+#include "sim/hamsas/hamsas_simulation.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/io/simulation_report.hpp"
+#include "sim/model/motions.hpp"
 
 namespace mmv::cli {
 namespace {
 
-/// The largest distance of each scored point from its start (link tips; the isolator's
-/// table and spring box), m.
-std::vector<std::pair<std::string, double>> peakDisplacements(const SimulationRecord& rec) {
-  std::vector<std::pair<std::string, double>> out;
-  for (const auto& [name, cols] : rec.scored) {
-    double peak = 0;
-    for (const auto& row : rec.rows) {
-      double d2 = 0;
-      for (int c : cols) d2 += std::pow(row[c] - rec.rows.front()[c], 2);
-      peak = std::max(peak, std::sqrt(d2));
-    }
-    out.push_back({name, peak});
-  }
-  return out;
+void applyOverrides(const SimulateArgs& args, SimulationSpec& spec) {
+  if (!args.integrator.empty()) spec.integrator = args.integrator;
+  if (args.accuracy > 0) spec.accuracy = args.accuracy;
+  if (args.absolute_tolerance > 0) spec.absolute_tolerance = args.absolute_tolerance;
+  if (args.duration > 0) spec.duration = args.duration;
+  if (args.sample_rate > 0) spec.sample_rate_hz = args.sample_rate;
+  if (spec.absolute_tolerance > 0 && !isSundialsIntegrator(spec.integrator))
+    throw UsageError("--absolute-tolerance applies to the SUNDIALS integrators only (got integrator " + spec.integrator + ")");
 }
 
-nlohmann::ordered_json summaryJson(const SimulationResult& r, const std::vector<std::string>& warnings) {
-  nlohmann::ordered_json j;
-  j["mmvlab_version"] = mmvlabVersion();
-  j["command"] = "simulate";
-  j["integrator"] = r.integrator;
-  j["accuracy"] = r.accuracy;
-  j["duration_s"] = r.record.rows.empty() ? 0.0 : r.record.rows.back()[0];
-  j["samples"] = r.record.rows.size();
-  auto torques = nlohmann::ordered_json::array();
-  for (const auto& t : r.torques)
-    torques.push_back({{"joint", t.joint},
-                       {"peak_torque_n_m", t.peak_torque_nm},
-                       {"capacity_n_m", t.capacity_nm > 0 ? nlohmann::ordered_json(t.capacity_nm) : nlohmann::ordered_json(nullptr)},
-                       {"exceeded", t.exceeded}});
-  j["torques"] = torques;
-  for (const auto& [name, peak] : peakDisplacements(r.record)) j["peak_displacement_m"][name] = peak;
-  auto sensors = nlohmann::ordered_json::array();
-  for (const auto& s : r.sensors)
-    sensors.push_back({{"name", s.name}, {"type", s.type}, {"unit", s.unit}, {"saturated_samples", s.saturated_samples},
-                       {"samples", s.samples}});
-  j["sensors"] = sensors;
-  j["energy"] = {{"initial_j", r.initial_energy_j},
-                 {"final_j", r.final_energy_j},
-                 {"motion_work_j", r.motion_work_j},
-                 {"dissipated_j", r.dissipated_j},
-                 {"balance_error_j", r.energy_balance_error_j},
-                 {"peak_kinetic_j", r.peak_kinetic_energy_j}};
-  if (r.carried_weight_n > 0)
-    j["table"] = {{"peak_force_n", r.peak_table_force_n}, {"carried_weight_n", r.carried_weight_n},
-                  {"payload_n", facility::TableSpec{}.payload_n}};
-  if (r.constraint_drift_m > 0) j["constraint_drift_m"] = r.constraint_drift_m;
-  j["steps"] = r.steps;
-  j["realizations"] = r.realizations;
-  j["wall_time_s"] = r.wall_seconds;
-  j["warnings"] = warnings;
-  return j;
+/// The table program's stroke (an error) and bandwidth (warnings) over the run.
+std::vector<std::string> checkTableProgram(const ArticleScene& scene) {
+  std::vector<std::string> warnings;
+  if (scene.article.base.type != BaseType::Table || !scene.article.base.motion) return warnings;
+  std::shared_ptr<const facility::TableProgram> program;
+  try {
+    program = makeTableProgram(*scene.article.base.motion);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(e.what());
+  }
+  const facility::ProgramCheck check = facility::checkProgram(*program, {}, scene.simulation.duration);
+  if (!check.within_stroke) throw SceneError(scene.source + ": base.motion: " + check.messages.front());
+  for (const auto& m : check.messages) warnings.push_back(m);
+  return warnings;
 }
 
-std::string summaryText(const Scene& scene, const SimulationResult& r, const std::vector<std::string>& warnings) {
-  std::ostringstream os;
-  os << scene.name << "  (scene: " << scene.source << ")\n";
-  os << strf("Time run: %.4g s with %s (accuracy %.1e), %zu samples; %d steps, %d realizations, %.2f s wall time\n\n",
-             r.record.rows.empty() ? 0.0 : r.record.rows.back()[0], r.integrator.c_str(), r.accuracy, r.record.rows.size(),
-             r.steps, r.realizations, r.wall_seconds);
-  Table t({"joint", "peak_torque_N*m", "capacity_N*m", "within"});
-  for (const auto& q : r.torques)
-    t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",
-           q.capacity_nm > 0 ? (q.exceeded ? "EXCEEDED" : "yes") : "-"});
-  if (!r.torques.empty()) os << "Torques the torquers must give\n" << t.text();
-  Table d({"point", "peak_displacement_m"});
-  for (const auto& [name, peak] : peakDisplacements(r.record)) d.add({name, strf("%.4g", peak)});
-  if (!d.empty()) os << (r.torques.empty() ? "" : "\n") << "Largest displacement from the start\n" << d.text();
-  if (r.carried_weight_n > 0)
-    os << strf("\nTable: peak actuator force %.4g N; carries %.4g N of its %.4g N payload\n", r.peak_table_force_n,
-               r.carried_weight_n, facility::TableSpec{}.payload_n);
-  if (!r.sensors.empty()) {
-    Table st({"sensor", "type", "unit", "saturated_samples"});
-    for (const auto& s : r.sensors)
-      st.add({s.name, s.type, s.unit, strf("%d of %d", s.saturated_samples, s.samples)});
-    os << "\nSensors\n" << st.text();
-  }
-  os << strf("\nEnergy: E(0) %.6g J, E(end) %.6g J, work of the commanded motions %.6g J, dissipated %.6g J;\n"
-             "balance error %.3g J (E(end) - E(0) - work + dissipated)\n",
-             r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j);
-  if (r.constraint_drift_m > 0) os << strf("Closures: largest drift %.3g m over the run\n", r.constraint_drift_m);
-  for (const auto& w : warnings) os << "warning: " << w << '\n';
-  return os.str();
+/// A progress bar on a terminal, after the first second.
+std::function<void(double)> progressBar() {
+  const bool tty = ::isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  auto shown = std::make_shared<int>(-1);
+  return [tty, start, shown](double f) {
+    if (!tty) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int pct = static_cast<int>(100 * f);
+    if (elapsed < 1.0 || pct == *shown) return;
+    *shown = pct;
+    std::fprintf(stderr, "\r[%-40s] %3d %%", std::string(static_cast<std::size_t>(40 * f), '#').c_str(), pct);
+    if (pct == 100) std::fprintf(stderr, "\n");
+  };
 }
 
-std::string historyCsv(const SimulationRecord& rec) {
-  std::ostringstream os;
-  for (std::size_t c = 0; c < rec.columns.size(); ++c) os << (c ? "," : "") << rec.columns[c];
-  os << '\n';
-  for (const auto& row : rec.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) os << (c ? "," : "") << strf("%.10g", row[c]);
-    os << '\n';
+int report(const SimulateArgs& args, const std::string& name, const std::string& source, const SimulationResult& r,
+           std::vector<std::string> warnings, double size_m, OutputDir* out) {
+  for (const auto& w : simulationWarnings(r, size_m)) warnings.push_back(w);
+  if (out) {
+    std::ofstream(out->stage("history.csv"), std::ios::binary) << simulationHistoryCsv(r.record);
+    std::ofstream(out->stage("summary.json"), std::ios::binary) << simulationJson(r, warnings).dump(2) << '\n';
+    for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
-  return os.str();
+  std::cout << (args.json ? simulationJson(r, warnings).dump(2) + "\n" : simulationText(name, source, r, warnings))
+            << std::flush;
+  return kOk;
 }
 
 }  // namespace
 
 int runSimulateCommand(const SimulateArgs& args) {
   return guarded([&] {
-    Scene scene = loadScene(args);
-        if (!args.integrator.empty()) scene.simulation.integrator = args.integrator;
-    if (args.accuracy > 0) scene.simulation.accuracy = args.accuracy;
-    if (args.absolute_tolerance > 0) scene.simulation.absolute_tolerance = args.absolute_tolerance;
-    if (args.duration > 0) scene.simulation.duration = args.duration;
-    if (args.sample_rate > 0) scene.simulation.sample_rate_hz = args.sample_rate;
-    std::vector<std::string> warnings;
-    if (scene.article.base.type == BaseType::Table && scene.article.base.motion) {
-      std::shared_ptr<const facility::TableProgram> program;
-      try {
-        program = makeTableProgram(*scene.article.base.motion);
-      } catch (const std::invalid_argument& e) {
-        throw SceneError(e.what());
-      }
-      const facility::ProgramCheck check = facility::checkProgram(*program, {}, scene.simulation.duration);
-      if (!check.within_stroke) throw SceneError(scene.source + ": base.motion: " + check.messages.front());
-      for (const auto& m : check.messages) warnings.push_back(m);
-    }
-    for (const auto& w : warnings) std::cerr << "mmvlab: warning: " << w << '\n';
+    Scene loaded = loadScene(args);
     std::unique_ptr<OutputDir> out;
+    if (auto* h = std::get_if<HamsasScene>(&loaded)) {
+      applyOverrides(args, h->simulation);
+      if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
+      const SimulationResult r = simulate(*h, progressBar());
+      return report(args, h->name, h->source, r, {}, 0.0, out.get());
+    }
+    ArticleScene& scene = std::get<ArticleScene>(loaded);
+    applyOverrides(args, scene.simulation);
+    std::vector<std::string> warnings = checkTableProgram(scene);
+    for (const auto& w : warnings) std::cerr << "mmvlab: warning: " << w << '\n';
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const bool tty = ::isatty(STDERR_FILENO);
-    const auto start = std::chrono::steady_clock::now();
-    int shown = -1;
-    auto progress = [&](double f) {
-      if (!tty) return;
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const int pct = static_cast<int>(100 * f);
-      if (elapsed < 1.0 || pct == shown) return;
-      shown = pct;
-      std::fprintf(stderr, "\r[%-40s] %3d %%", std::string(static_cast<std::size_t>(40 * f), '#').c_str(), pct);
-      if (pct == 100) std::fprintf(stderr, "\n");
-    };
     SimulationResult r;
     try {
-      r = simulate(scene, progress);
+      r = simulate(scene, progressBar());
     } catch (const std::invalid_argument& e) {  // a facility model refused its command
       throw SceneError(scene.source + ": " + e.what());
     }
-    if (shown >= 0 && shown < 100) std::fprintf(stderr, "\n");
-    for (const auto& s : r.sensors)
-      if (s.saturated_samples > 0)
-        warnings.push_back("sensor " + s.name + " saturated in " + std::to_string(s.saturated_samples) + " of " +
-                           std::to_string(s.samples) + " samples");
-    for (const auto& t : r.torques)
-      if (t.exceeded)
-        warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
-                           strf("%.4g", t.capacity_nm) + " N*m");
-    if (const std::string w = energyBalanceWarning(r); !w.empty()) warnings.push_back(w);
     double size = 0;
     for (const auto& l : scene.article.links) size += l.length;
-    if (const std::string w = constraintDriftWarning(r, size); !w.empty()) warnings.push_back(w);
-    if (const double payload = facility::TableSpec{}.payload_n; r.carried_weight_n > payload)
-      warnings.push_back("the table carries " + strf("%.4g", r.carried_weight_n) + " N, above its " +
-                         strf("%.4g", payload) + " N payload");
-    if (out) {
-      std::ofstream(out->stage("history.csv"), std::ios::binary) << historyCsv(r.record);
-      std::ofstream(out->stage("summary.json"), std::ios::binary) << summaryJson(r, warnings).dump(2) << '\n';
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-    }
-    std::cout << (args.json ? summaryJson(r, warnings).dump(2) + "\n" : summaryText(scene, r, warnings)) << std::flush;
-    return kOk;
+    return report(args, scene.name, scene.source, r, warnings, size, out.get());
   });
 }
 

@@ -6,15 +6,15 @@
 
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
-#include "sim/cli/output_dir.hpp"
-#include "sim/report.hpp"
-#include "sim/sweep.hpp"
-#include "sim/table.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/io/report.hpp"
+#include "sim/modes/sweep.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv::cli {
 namespace {
 
-GridAxis parseGrid(const std::string& text, const Scene& scene) {
+GridAxis parseGrid(const std::string& text, const ArticleScene& scene) {
   // JOINT:FROM:TO:STEP, angles in degrees.
   std::vector<std::string> parts;
   std::stringstream ss(text);
@@ -205,8 +205,7 @@ void plots(OutputDir& out, const SweepResult& r) {
 
 int runSweepCommand(const SweepArgs& args) {
   return guarded([&] {
-    const Scene scene = loadScene(args);
-    requireArticleScene(scene, "sweep-config");
+    const ArticleScene scene = loadArticleScene(args, "sweep-config");
     SweepOptions o;
     if (args.grids.empty() || args.grids.size() > 2) throw UsageError("--grid: give one or two grids");
     for (const auto& g : args.grids) o.axes.push_back(parseGrid(g, scene));

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "article/beam_theory.hpp"
-#include "article/article_builder.hpp"
-#include "sim/analysis.hpp"
+#include "sim/model/article_builder.hpp"
+#include "sim/modes/system_modes.hpp"
 #include "support/scenes.hpp"
 
 namespace mmv {
@@ -41,7 +41,7 @@ TEST(FlexibleLink, PiecesCarryTheWholeLinkAndHingesSitAtElementMidpoints) {
 }
 
 double cantileverFrequencyHz(const Beam& b, int segments, double mu, int mode) {
-  const Scene s = cantileverScene(b, segments, 0.0, 0.0, mu * b.massPerLength() * b.length);
+  const ArticleScene s = cantileverScene(b, segments, 0.0, 0.0, mu * b.massPerLength() * b.length);
   return solveSceneModes(s).frequencies_hz[mode];
 }
 
@@ -91,14 +91,14 @@ TEST(FlexibleLink, ReportLink3ClampedFree) {
   b.youngs = 61.0e9;
   b.area = M_PI * 0.00127 * 0.00127;
   b.second_moment = M_PI * std::pow(0.00127, 4) / 4;
-  const Scene s = cantileverScene(b, 32, 0.0);
+  const ArticleScene s = cantileverScene(b, 32, 0.0);
   const auto f = solveSceneModes(s).frequencies_hz;
   const double report[] = {3.287, 20.60, 57.68, 113.0};
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(f[i] / report[i] - 1.0, 0.0, 5e-3) << "mode " << i + 1;
 }
 
 TEST(FlexibleLink, RigidLinkIsOneBodyWithoutDegreesOfFreedomWhenHeld) {
-  const Scene s = cantileverScene(Beam{}, 8, 9.81, 0.0, 0.0, true);
+  const ArticleScene s = cantileverScene(Beam{}, 8, 9.81, 0.0, 0.0, true);
   const auto model = buildArticleModel(s);
   EXPECT_EQ(model->getNumCoordinates(), 1);  // the held joint only
   EXPECT_TRUE(model->getDofs().empty());

@@ -171,7 +171,14 @@ TEST_F(Cli, HamsasSceneErrorsAndCommandsThatDoNotApply) {
   // Time runs of the isolator: the scene's ground motion through the nonlinear model.
   const Result sim = run("simulate " + scene + " --duration 0.05 --json");
   ASSERT_EQ(sim.code, 0) << sim.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(sim.out));
+  const nlohmann::json sj = nlohmann::json::parse(sim.out);
+  EXPECT_EQ(sj["command"], "simulate");
+  EXPECT_NEAR(sj["duration_s"].get<double>(), 0.05, 1e-12);
+  // The isolator scores its optical table and spring box; under the ground's motion
+  // both move, and no torquer is involved.
+  EXPECT_GT(sj["peak_displacement_m"]["optical_table"].get<double>(), 0.0) << sim.out;
+  EXPECT_GT(sj["peak_displacement_m"]["spring_box"].get<double>(), 0.0) << sim.out;
+  EXPECT_TRUE(sj["torques"].empty());
   EXPECT_EQ(run("frf " + scene + " --input table_x").code, 64);
   EXPECT_EQ(run("modes --segments 4 " + scene).code, 64);
   std::string text = slurp(scene);
@@ -452,7 +459,22 @@ TEST_F(Cli, SimulateBadInput) {
   const Result w = run("simulate --duration 0.05 --segments 2 " + write("fast.yaml", text).string());
   EXPECT_EQ(w.code, 0) << w.err;
   EXPECT_NE(w.err.find("above the table's 10 Hz bandwidth"), std::string::npos) << w.err;
-  EXPECT_EQ(run("simulate --integrator leapfrog --duration 0.1").code, 65);
+  // An unknown integrator is a command-line mistake (64) named with the known ones,
+  // or a scene mistake (65) at its line and column, found before any model is built.
+  const Result li = run("simulate --integrator rk45 --duration 0.1");
+  EXPECT_EQ(li.code, 64);
+  EXPECT_NE(li.err.find("unknown integrator 'rk45'"), std::string::npos) << li.err;
+  EXPECT_NE(li.err.find("cvode_bdf"), std::string::npos) << li.err;
+  EXPECT_NE(li.err.find("ida"), std::string::npos) << li.err;
+  std::string named = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml");
+  const std::string integ = "integrator: cpodes";
+  ASSERT_NE(named.find(integ), std::string::npos);
+  named.replace(named.find(integ), integ.size(), "integrator: cpode");
+  const Result si = run("simulate --duration 0.1 " + write("integ.yaml", named).string());
+  EXPECT_EQ(si.code, 65);
+  EXPECT_NE(si.err.find("integ.yaml:"), std::string::npos) << si.err;
+  EXPECT_NE(si.err.find("simulation.integrator: unknown integrator 'cpode' (did you mean 'cpodes'?)"), std::string::npos)
+      << si.err;
   // Simbody aborts on an accuracy outside (0, 1); we refuse it first, on the command
   // line (usage) and in a scene (data, with its line).
   const Result a = run("simulate --accuracy 1 --duration 0.1");
@@ -490,9 +512,14 @@ TEST_F(Cli, TradeWritesItsStudy) {
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "trade.json"));
   EXPECT_EQ(j["runs"].size(), 5u);
   EXPECT_EQ(j["points"], nlohmann::json::array({"link3a.tip"}));
-  const Result bad = run("trade --duration 0.1 --points tip9");
-  EXPECT_EQ(bad.code, 65);
-  EXPECT_NE(bad.err.find("'tip9' is not a link tip of the scene"), std::string::npos) << bad.err;
+  // Command-line mistakes (64), refused before anything runs or is written.
+  const Result bad = run("trade --duration 0.1 --points tip9 --out " + (dir_ / "bad").string());
+  EXPECT_EQ(bad.code, 64);
+  EXPECT_NE(bad.err.find("--points: 'tip9' is not a link tip of the scene"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
+  const Result bi = run("trade --duration 0.1 --integrators rk_merson,rk45");
+  EXPECT_EQ(bi.code, 64);
+  EXPECT_NE(bi.err.find("unknown integrator 'rk45'"), std::string::npos) << bi.err;
 }
 
 }  // namespace

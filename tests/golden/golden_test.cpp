@@ -34,6 +34,8 @@ struct GoldenCase {
   std::string name, args;
 };
 
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << "mmvlab " << c.args; }
+
 std::vector<GoldenCase> readCases() {
   std::ifstream in(fs::path(MMVLAB_SOURCE_DIR) / "tests/golden/commands.txt");
   std::vector<GoldenCase> cases;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "sim/scene.hpp"
+#include "sim/scene/scene.hpp"
 
 namespace mmv::testing {
 
@@ -21,9 +21,9 @@ struct Beam {
 
 /// An article of one link on a locked base joint. direction_deg = 0: the link points
 /// along +x (horizontal, gravity along -y); -90: it hangs down.
-inline Scene cantileverScene(const Beam& b, int segments, double gravity, double direction_deg = 0.0,
+inline ArticleScene cantileverScene(const Beam& b, int segments, double gravity, double direction_deg = 0.0,
                              double tip_mass = 0.0, bool rigid = false) {
-  Scene s;
+  ArticleScene s;
   s.name = "cantilever";
   s.source = "<test>";
   s.gravity = {0, -gravity, 0};
@@ -56,9 +56,9 @@ inline Scene cantileverScene(const Beam& b, int segments, double gravity, double
 /// A hanging chain of n rigid links joined by free pins, hanging from a free pin.
 /// Each link: length total/n, mass per length mu. Optional point masses at every
 /// joint (on the parent side) and at the last tip.
-inline Scene chainScene(int n, double total_length, double mass_per_length, double gravity,
+inline ArticleScene chainScene(int n, double total_length, double mass_per_length, double gravity,
                         double joint_mass = 0.0, double tip_mass = 0.0) {
-  Scene s;
+  ArticleScene s;
   s.name = "chain";
   s.source = "<test>";
   s.gravity = {0, -gravity, 0};

@@ -1,0 +1,38 @@
+// mmvlab modes and converge: the system modes about the held equilibrium
+// (sim/modes/system_modes.hpp; the isolator's: sim/cli/hamsas_command.cpp) and their
+// convergence with segments per link (sim/modes/converge.hpp).
+#include <iostream>
+
+#include "sim/cli/commands.hpp"
+#include "sim/io/report.hpp"
+#include "sim/modes/converge.hpp"
+#include "sim/modes/system_modes.hpp"
+
+namespace mmv::cli {
+
+int runModesCommand(const ModesArgs& args) {
+  return guarded([&]() -> int {
+    const Scene loaded = loadScene(args);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasModes(args, *h);
+    const ArticleScene& scene = std::get<ArticleScene>(loaded);
+    ModesOptions opt;
+    opt.max_modes = args.modes;
+    opt.with_shapes = args.json;
+    const ModesReport rep = runModes(scene, opt);
+    const std::string out = args.json ? modesToJson(rep).dump(2) + "\n" : formatModesText(rep);
+    std::cout << out << std::flush;
+    return kOk;
+  });
+}
+
+int runConvergeCommand(const ConvergeArgs& args) {
+  return guarded([&] {
+    const ArticleScene scene = loadArticleScene(args, "converge");
+    const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);
+    const std::string out = args.json ? convergenceToJson(c).dump(2) + "\n" : formatConvergenceText(c);
+    std::cout << out << std::flush;
+    return kOk;
+  });
+}
+
+}  // namespace mmv::cli

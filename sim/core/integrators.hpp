@@ -1,0 +1,39 @@
+#pragma once
+/// The one table of time integrators: every name the scene (`simulation.integrator`),
+/// the command line (`--integrator`, `--integrators`) and the help text accept, with
+/// what the time runs need to know about it. Plain data (sim/time/run_integrator.hpp
+/// makes the integrator); it lives in core so that the scene reader checks names with
+/// the key's line and column before any model is built.
+
+#include <string>
+#include <vector>
+
+namespace mmv {
+
+struct IntegratorInfo {
+  enum class Family { Simbody, Sundials };
+  const char* name;         ///< as written in scenes and on the command line.
+  Family family;
+  bool implicit;            ///< for stiff models (a Newton iteration per step).
+  bool takes_absolute_tolerance;  ///< SUNDIALS' methods; Simbody's measure errors on the state's unit scale only.
+  const char* description;  ///< one line for the help text and docs.
+};
+
+/// Every integrator, Simbody's first, in the order the help lists them.
+const std::vector<IntegratorInfo>& integratorTable();
+/// The entry named `name`, or nullptr.
+const IntegratorInfo* findIntegrator(const std::string& name);
+/// True for the SUNDIALS integrators (the plugin's).
+bool isSundialsIntegrator(const std::string& name);
+/// "rk_merson, rk_feldberg, ..." (every name), for messages.
+std::string integratorNames();
+/// For an unknown name: " (did you mean 'x'?)" when one name is close, else "".
+std::string integratorSuggestion(const std::string& name);
+
+/// One allowed range per user quantity, stated once (docs/scene-format.md).
+namespace limits {
+constexpr int kMaxSegments = 4096;         ///< segments per flexible link.
+constexpr double kMinAccuracy = 1e-14;     ///< integrator relative accuracy, exclusive of 0 and 1.
+}  // namespace limits
+
+}  // namespace mmv

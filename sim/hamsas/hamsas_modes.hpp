@@ -1,0 +1,57 @@
+#pragma once
+/// HAM-SAS analyses: modes with energy shares and the measured-vs-model table,
+/// the 6 x 6 ground-to-optical-table transmissibility, and the actuator-to-sensor model.
+
+#include <Eigen/Dense>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "article/hamsas.hpp"
+#include "sim/hamsas/spatial_linear.hpp"
+#include "sim/linear/state_space.hpp"
+
+namespace mmv {
+
+struct SpatialMode {
+  double frequency_hz = 0;  ///< negative: unstable (sqrt(-omega^2) / 2 pi).
+  std::string label;        ///< the body group and direction holding most kinetic energy, e.g. "ot z".
+  std::map<std::string, double> kinetic_share;  ///< per body group, and per "group.direction".
+  /// Per element group (elastic part), and "preload": the work of the elements' preloads
+  /// (gravity carried through joints and springs: a pendulum's restoring stiffness).
+  std::map<std::string, double> strain_share;
+};
+
+/// One measured feature (DATASHEET section 3) and the model mode that shows it.
+struct FeatureMatch {
+  std::string feature;
+  double measured_hz = 0;
+  double model_hz = 0;  ///< 0 when no mode shows it (e.g. joint modes with ideal joints).
+  int mode = -1;        ///< 0-based index into the modes, -1 if none.
+  double shape_match = 0;  ///< mass-weighted correlation with the feature's shape, 0..1.
+  std::string rule;        ///< how the mode was identified.
+};
+
+struct HamsasModes {
+  HamsasSpec spec;
+  SpatialSpec model;
+  SpatialLinearization lin;
+  ModalSolution solution;
+  std::vector<SpatialMode> modes;
+  std::vector<FeatureMatch> features;
+  double max_relative_residual = 0;  ///< max_i ||K v - w^2 M v|| / (w^2 ||M v||), over the flexible modes.
+};
+
+/// Linearizes and solves; identifies the measured features. Throws NumericalError.
+HamsasModes analyseHamsas(const HamsasSpec& spec);
+
+/// The measured features (DATASHEET section 3), Hz.
+const std::vector<std::pair<std::string, double>>& hamsasMeasuredFeatures();
+
+/// Ground-to-optical-table transmissibility over a frequency grid (Hz): [f][6 x 6].
+std::vector<Eigen::MatrixXcd> hamsasTransmissibility(const HamsasModes& h, const std::vector<double>& freqs_hz);
+
+/// The 8 x 8 actuator (force, N) to sensor (relative displacement, m) model, full order.
+StateSpace hamsasControlModel(const HamsasModes& h);
+
+}  // namespace mmv

@@ -1,0 +1,72 @@
+#include "sim/io/mat_file.hpp"
+
+#include <matio.h>
+
+#include <memory>
+#include <stdexcept>
+
+namespace mmv {
+namespace {
+
+/// RAII for a matio file and for variables not yet handed to a cell.
+struct MatCloser {
+  void operator()(mat_t* m) const {
+    if (m) Mat_Close(m);
+  }
+};
+struct VarFreer {
+  void operator()(matvar_t* v) const {
+    if (v) Mat_VarFree(v);
+  }
+};
+using MatFile = std::unique_ptr<mat_t, MatCloser>;
+using MatVar = std::unique_ptr<matvar_t, VarFreer>;
+
+void write(mat_t* mat, MatVar var, const std::string& what) {
+  if (!var) throw std::runtime_error("cannot create .mat variable " + what);
+  if (Mat_VarWrite(mat, var.get(), MAT_COMPRESSION_NONE) != 0) throw std::runtime_error("cannot write .mat variable " + what);
+}
+
+void writeMatrix(mat_t* mat, const char* name, const Eigen::MatrixXd& m) {
+  // matio copies nothing: the data must live until the write; Eigen is column-major like MATLAB.
+  Eigen::MatrixXd copy = m;
+  size_t dims[2] = {static_cast<size_t>(m.rows()), static_cast<size_t>(m.cols())};
+  write(mat, MatVar(Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, copy.data(), 0)), name);
+}
+
+void writeStrings(mat_t* mat, const char* name, const std::vector<std::string>& items) {
+  size_t dims[2] = {items.size(), 1};
+  MatVar cell(Mat_VarCreate(name, MAT_C_CELL, MAT_T_CELL, 2, dims, nullptr, 0));
+  if (!cell) throw std::runtime_error(std::string("cannot create .mat cell ") + name);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    size_t sdims[2] = {1, items[i].size()};
+    // MAT_F_DONT_COPY_DATA is not used: matio copies the characters, the cell owns them.
+    matvar_t* s = Mat_VarCreate(nullptr, MAT_C_CHAR, MAT_T_UINT8, 2, sdims, const_cast<char*>(items[i].data()), 0);
+    if (!s) throw std::runtime_error(std::string("cannot create .mat string in ") + name);
+    Mat_VarSetCell(cell.get(), static_cast<int>(i), s);
+  }
+  write(mat, std::move(cell), name);
+}
+
+}  // namespace
+
+void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
+  MatFile mat(Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5));
+  if (!mat) throw std::runtime_error(path + ": cannot create .mat file");
+  const StateSpace s = d.standardForm();
+  writeMatrix(mat.get(), "A", s.A);
+  writeMatrix(mat.get(), "B", s.B);
+  writeMatrix(mat.get(), "C", s.C);
+  writeMatrix(mat.get(), "D", s.D);
+  writeMatrix(mat.get(), "E", s.E);
+  writeMatrix(mat.get(), "Ad", d.A);
+  writeMatrix(mat.get(), "Bd", d.B);
+  writeMatrix(mat.get(), "Ed", d.E);
+  writeStrings(mat.get(), "InputName", d.input_names);
+  writeStrings(mat.get(), "OutputName", d.output_names);
+  writeStrings(mat.get(), "StateName", d.state_names);
+  writeStrings(mat.get(), "InputUnit", d.input_units);
+  writeStrings(mat.get(), "OutputUnit", d.output_units);
+}
+
+}  // namespace mmv

@@ -1,0 +1,23 @@
+#pragma once
+/// Writers for analysis results: readable text tables (units in headers) and JSON
+/// (schema in docs/outputs.md, snake_case keys with units in names).
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sim/modes/system_modes.hpp"
+
+namespace mmv {
+
+struct ConvergenceStudy;  // sim/modes/converge.hpp
+
+std::string formatModesText(const ModesReport& r);
+nlohmann::ordered_json modesToJson(const ModesReport& r);
+
+std::string formatConvergenceText(const ConvergenceStudy& c);
+nlohmann::ordered_json convergenceToJson(const ConvergenceStudy& c);
+
+/// The version stamped into every JSON document.
+const char* mmvlabVersion();
+
+}  // namespace mmv

@@ -1,0 +1,127 @@
+#include <cmath>
+
+#include "sim/modes/converge.hpp"
+#include "sim/io/report.hpp"
+
+namespace mmv {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+using json = nlohmann::ordered_json;
+
+json shares(const std::vector<PartShare>& v) {
+  json o = json::object();
+  for (const auto& s : v) o[s.part] = s.fraction;
+  return o;
+}
+
+/// JSON has no NaN: a missing number is null.
+json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+}  // namespace
+
+json modesToJson(const ModesReport& r) {
+  json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "modes";
+  j["scene"] = {{"name", r.scene_name}, {"source", r.scene_source}};
+  json links = json::array();
+  for (const auto& [name, n] : r.model.link_segments)
+    links.push_back({{"name", name}, {"segments", n ? json(n) : json("rigid")}});
+  j["model"] = {{"links", links},
+                {"bodies", r.model.num_bodies},
+                {"coordinates", r.model.num_coordinates},
+                {"dofs", r.model.num_dofs},
+                {"total_mass_kg", r.model.total_mass_kg},
+                {"moving_mass_kg", r.model.moving_mass_kg},
+                {"gravity_m_per_s2", r.gravity}};
+  json joints = json::array();
+  for (const auto& jr : r.joints)
+    joints.push_back({{"name", jr.name},
+                      {"hold", jr.hold},
+                      {"commanded_angle_deg", jr.commanded_rad * kRadToDeg},
+                      {"equilibrium_angle_deg", jr.equilibrium_rad * kRadToDeg},
+                      {"torque_n_m", jr.torque_nm}});
+  json closures = json::array();
+  for (const auto& c : r.closures)
+    closures.push_back({{"name", c.name}, {"force_x_n", c.fx}, {"force_y_n", c.fy}, {"gap_m", c.error_m}});
+  json points = json::array();
+  for (const auto& p : r.points)
+    points.push_back({{"name", p.name}, {"x_m", p.x}, {"y_m", p.y}, {"deflection_x_m", p.dx}, {"deflection_y_m", p.dy}});
+  j["equilibrium"] = {{"converged", r.equilibrium_converged},
+                      {"iterations", r.equilibrium_iterations},
+                      {"residual_n_m", r.equilibrium_residual_nm},
+                      {"force_scale_n_m", r.force_scale_nm},
+                      {"joints", joints},
+                      {"closures", closures},
+                      {"points", points}};
+  json modes = json::array();
+  for (const auto& m : r.modes) {
+    json mj = {{"number", m.number},
+               {"stable", m.stable},
+               {"rigid_body", m.rigid_body},
+               {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
+               {"omega_squared_rad2_per_s2", m.omega2},
+               {"modal_mass_kg", m.modal_mass_kg},
+               {"peak_point", m.peak_point},
+               {"effective_mass_x_kg", m.effective_mass_x_kg},
+               {"effective_mass_y_kg", m.effective_mass_y_kg},
+               {"geometric_stiffness_share", m.geometric_stiffness_share},
+               {"dominant_link_kinetic", m.dominant_link_kinetic},
+               {"dominant_link_strain", m.dominant_link_strain},
+               {"kinetic_energy_share", shares(m.kinetic)},
+               {"strain_energy_share", shares(m.strain)},
+               {"kinetic_energy_share_by_link", shares(m.kinetic_by_link)},
+               {"strain_energy_share_by_link", shares(m.strain_by_link)}};
+    if (!m.stable) mj["growth_rate_per_s"] = std::sqrt(-m.omega2);
+    json shape = json::array();
+    for (const auto& p : m.shape) {
+      json pj = {{"point", p.point}, {"ux", p.ux}, {"uy", p.uy}};
+      if (p.has_rotation) pj["rz"] = p.rz;
+      shape.push_back(pj);
+    }
+    mj["shape"] = shape;
+    modes.push_back(mj);
+  }
+  j["modes"] = modes;
+  j["checks"] = {{"eigen_residual", r.eigen_residual},
+                 {"orthogonality_error", r.orthogonality_error},
+                 {"stiffness_asymmetry", r.stiffness_asymmetry}};
+  j["time_s"] = {{"build", r.seconds_build},
+                 {"equilibrium", r.seconds_equilibrium},
+                 {"linearize", r.seconds_linearize},
+                 {"eigen", r.seconds_eigen}};
+  return j;
+}
+
+json convergenceToJson(const ConvergenceStudy& c) {
+  json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "converge";
+  j["scene"] = {{"name", c.scene_name}, {"source", c.scene_source}};
+  json runs = json::array();
+  for (const auto& r : c.runs) {
+    json f = json::array();
+    for (double x : r.frequency_hz) f.push_back(x);
+    runs.push_back({{"segments", r.segments}, {"dofs", r.num_dofs}, {"time_s", r.seconds}, {"frequencies_hz", f}});
+  }
+  j["runs"] = runs;
+  json modes = json::array();
+  for (const auto& m : c.modes) {
+    json f = json::array();
+    for (double x : m.frequency_hz) f.push_back(number(x));
+    json mj = {{"number", m.number}, {"frequency_hz_by_run", f}};
+    mj["richardson_hz"] = m.has_estimate ? json(m.extrapolated_hz) : json(nullptr);
+    mj["estimated_relative_error"] = m.has_estimate ? json(m.estimated_relative_error) : json(nullptr);
+    mj["observed_order"] = m.has_observed_order ? json(m.observed_order) : json(nullptr);
+    json e = json::array();
+    for (double x : m.frequency_hz)
+      e.push_back(m.has_estimate ? number((x - m.extrapolated_hz) / m.extrapolated_hz) : json(nullptr));
+    mj["relative_error_by_run"] = e;
+    modes.push_back(mj);
+  }
+  j["modes"] = modes;
+  return j;
+}
+
+}  // namespace mmv

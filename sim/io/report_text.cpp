@@ -1,0 +1,128 @@
+#include <cstdarg>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "sim/modes/converge.hpp"
+#include "sim/io/report.hpp"
+#include "sim/core/text.hpp"
+
+namespace mmv {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+double shareOf(const std::vector<PartShare>& shares, const std::string& part) {
+  for (const auto& s : shares)
+    if (s.part == part) return s.fraction;
+  return 0;
+}
+
+}  // namespace
+
+const char* mmvlabVersion() { return "0.1.0"; }
+
+std::string formatModesText(const ModesReport& r) {
+  std::ostringstream os;
+  const double g = std::hypot(r.gravity[0], r.gravity[1]);
+  os << r.scene_name << "  (scene: " << r.scene_source << ")\n";
+  os << "Model: " << r.model.num_links << " links (segments:";
+  for (const auto& [name, n] : r.model.link_segments) os << ' ' << name << ' ' << (n ? std::to_string(n) : "rigid");
+  os << "), " << r.model.num_bodies << " bodies, " << r.model.num_dofs << " DOF; "
+     << strf("mass %.3f kg (%.3f kg moving); gravity %.4g m/s^2\n", r.model.total_mass_kg, r.model.moving_mass_kg, g);
+  os << strf("Static equilibrium: converged in %d Newton iteration%s, residual %.2g N*m (force scale %.3g N*m)\n\n",
+            r.equilibrium_iterations, r.equilibrium_iterations == 1 ? "" : "s", r.equilibrium_residual_nm,
+            r.force_scale_nm);
+
+  os << "Joints and the torque each torquer holds (ccw +, on the outboard link)\n";
+  os << strf("  %-10s %-7s %15s %17s %12s\n", "joint", "hold", "commanded_deg", "equilibrium_deg", "torque_N*m");
+  for (const auto& j : r.joints)
+    os << strf("  %-10s %-7s %15.3f %17.3f %12.4f\n", j.name.c_str(), j.hold.c_str(), j.commanded_rad * kRadToDeg,
+              j.equilibrium_rad * kRadToDeg, j.torque_nm);
+
+  if (!r.closures.empty()) {
+    os << "\nClosures and the force each applies to the article (world frame)\n";
+    os << strf("  %-14s %12s %12s %12s\n", "closure", "Fx_N", "Fy_N", "gap_m");
+    for (const auto& c : r.closures) os << strf("  %-14s %12.4f %12.4f %12.1e\n", c.name.c_str(), c.fx, c.fy, c.error_m);
+  }
+  os << "\nLink tips at equilibrium (deflection = equilibrium minus the unbent shape)\n";
+  os << strf("  %-12s %10s %10s %12s %12s\n", "point", "x_m", "y_m", "dx_mm", "dy_mm");
+  for (const auto& p : r.points)
+    if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0)
+      os << strf("  %-12s %10.4f %10.4f %12.4f %12.4f\n", p.name.c_str(), p.x, p.y, 1e3 * p.dx, 1e3 * p.dy);
+
+  os << "\nSystem modes about the equilibrium\n"
+        "  kinetic, strain: the link with the largest share of the mode's energy, counted with the\n"
+        "                   lumped masses it carries (tip mass, torquers at its tip)\n"
+        "  geometric_%: share of the modal stiffness from preload (gravity, loads, closure forces)\n"
+        "  m_eff: effective mass for base translation (what a shaker at the base sees)\n"
+        "  peak: the named point that moves most\n";
+  os << strf("  %4s %13s  %-20s %-20s %9s %10s %10s  %s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
+            "geometric_%", "m_eff_x_kg", "m_eff_y_kg", "peak");
+  for (const auto& m : r.modes) {
+    const std::string f = m.rigid_body ? strf("%13s", "0 (rigid)")
+                          : m.stable   ? strf("%13.4f", m.frequency_hz)
+                                       : strf("%13s", "UNSTABLE");
+    const std::string k = strf("%s (%.0f %%)", m.dominant_link_kinetic.c_str(), 100 * shareOf(m.kinetic_by_link, m.dominant_link_kinetic));
+    const std::string s = m.dominant_link_strain.empty()
+                              ? std::string("-")
+                              : strf("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain_by_link, m.dominant_link_strain));
+    os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
+              100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, m.peak_point.c_str());
+    if (!m.stable)
+      os << strf("       unstable: omega^2 = %.4g rad^2/s^2, growth rate %.4g 1/s\n", m.omega2, std::sqrt(-m.omega2));
+  }
+  if (static_cast<int>(r.modes.size()) < r.model.num_dofs)
+    os << "  (" << r.modes.size() << " of " << r.model.num_dofs << " modes shown; --modes 0 shows all)\n";
+  os << strf("\nChecks: eigen residual %.1e, M-orthogonality error %.1e, stiffness asymmetry %.1e\n", r.eigen_residual,
+            r.orthogonality_error, r.stiffness_asymmetry);
+  os << strf("Time: build %.1f ms, equilibrium %.1f ms, linearize %.1f ms, eigen %.1f ms\n", 1e3 * r.seconds_build,
+            1e3 * r.seconds_equilibrium, 1e3 * r.seconds_linearize, 1e3 * r.seconds_eigen);
+  return os.str();
+}
+
+std::string formatConvergenceText(const ConvergenceStudy& c) {
+  std::ostringstream os;
+  os << c.scene_name << "  (scene: " << c.scene_source << ")\n";
+  os << "Discretization study: every flexible link with N segments (rigid links unchanged).\n\n";
+  os << strf("  %8s %6s %12s\n", "segments", "DOF", "time_ms");
+  for (const auto& run : c.runs) os << strf("  %8d %6d %12.2f\n", run.segments, run.num_dofs, 1e3 * run.seconds);
+  os << "\nFrequency (Hz) of each mode against segments per link\n  mode";
+  for (const auto& run : c.runs) os << strf(" %11s", ("N=" + std::to_string(run.segments)).c_str());
+  os << strf(" %12s %8s %12s\n", "richardson", "order", "est_err_%");
+  for (const auto& m : c.modes) {
+    os << strf("  %4d", m.number);
+    for (std::size_t k = 0; k < c.runs.size(); ++k) {
+      const double f = k < m.frequency_hz.size() ? m.frequency_hz[k] : NAN;
+      if (std::isfinite(f)) os << strf(" %11.5f", f);
+      else os << strf(" %11s", "-");
+    }
+    if (m.has_estimate) {
+      os << strf(" %12.5f", m.extrapolated_hz);
+      if (m.has_observed_order) os << strf(" %8.2f", m.observed_order);
+      else os << strf(" %8s", "-");
+      os << strf(" %12.4f\n", 100 * m.estimated_relative_error);
+    } else {
+      os << strf(" %12s %8s %12s\n", "-", "-", "-");
+    }
+  }
+  os << "\nEstimated error (%) of each run against the Richardson value: what N segments cost in accuracy\n  mode";
+  for (const auto& run : c.runs) os << strf(" %11s", ("N=" + std::to_string(run.segments)).c_str());
+  os << "\n";
+  for (const auto& m : c.modes) {
+    if (!m.has_estimate) continue;
+    os << strf("  %4d", m.number);
+    for (std::size_t k = 0; k < c.runs.size(); ++k) {
+      const double f = k < m.frequency_hz.size() ? m.frequency_hz[k] : NAN;
+      if (std::isfinite(f)) os << strf(" %11.4f", 100 * (f - m.extrapolated_hz) / m.extrapolated_hz);
+      else os << strf(" %11s", "-");
+    }
+    os << "\n";
+  }
+  os << "\nrichardson: f_N + (f_N - f_N/2)/(2^2 - 1), assuming the discretization's O(1/N^2) error;\n"
+        "order: observed log2((f_N/4 - f_N/2)/(f_N/2 - f_N)) from the three finest runs;\n"
+        "est_err_%: |f_N - richardson| / richardson at the finest N, in percent.\n";
+  return os.str();
+}
+
+}  // namespace mmv

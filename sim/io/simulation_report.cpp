@@ -1,0 +1,130 @@
+#include "sim/io/simulation_report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "facility/table_programs.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/report.hpp"
+
+namespace mmv {
+namespace {
+
+/// The largest distance of each scored point from its start (link tips; the isolator's
+/// table and spring box), m.
+std::vector<std::pair<std::string, double>> peakDisplacements(const SimulationRecord& rec) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& [name, cols] : rec.scored) {
+    double peak = 0;
+    for (const auto& row : rec.rows) {
+      double d2 = 0;
+      for (int c : cols) d2 += std::pow(row[c] - rec.rows.front()[c], 2);
+      peak = std::max(peak, std::sqrt(d2));
+    }
+    out.push_back({name, peak});
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vector<std::string>& warnings) {
+  nlohmann::ordered_json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "simulate";
+  j["integrator"] = r.integrator;
+  j["accuracy"] = r.accuracy;
+  j["duration_s"] = r.record.rows.empty() ? 0.0 : r.record.rows.back()[0];
+  j["samples"] = r.record.rows.size();
+  auto torques = nlohmann::ordered_json::array();
+  for (const auto& t : r.torques)
+    torques.push_back({{"joint", t.joint},
+                       {"peak_torque_n_m", t.peak_torque_nm},
+                       {"capacity_n_m", t.capacity_nm > 0 ? nlohmann::ordered_json(t.capacity_nm) : nlohmann::ordered_json(nullptr)},
+                       {"exceeded", t.exceeded}});
+  j["torques"] = torques;
+  for (const auto& [name, peak] : peakDisplacements(r.record)) j["peak_displacement_m"][name] = peak;
+  auto sensors = nlohmann::ordered_json::array();
+  for (const auto& s : r.sensors)
+    sensors.push_back({{"name", s.name}, {"type", s.type}, {"unit", s.unit}, {"saturated_samples", s.saturated_samples},
+                       {"samples", s.samples}});
+  j["sensors"] = sensors;
+  j["energy"] = {{"initial_j", r.initial_energy_j},
+                 {"final_j", r.final_energy_j},
+                 {"motion_work_j", r.motion_work_j},
+                 {"dissipated_j", r.dissipated_j},
+                 {"balance_error_j", r.energy_balance_error_j},
+                 {"peak_kinetic_j", r.peak_kinetic_energy_j}};
+  if (r.carried_weight_n > 0)
+    j["table"] = {{"peak_force_n", r.peak_table_force_n}, {"carried_weight_n", r.carried_weight_n},
+                  {"payload_n", facility::TableSpec{}.payload_n}};
+  if (r.constraint_drift_m > 0) j["constraint_drift_m"] = r.constraint_drift_m;
+  j["steps"] = r.steps;
+  j["realizations"] = r.realizations;
+  j["wall_time_s"] = r.wall_seconds;
+  j["warnings"] = warnings;
+  return j;
+}
+
+std::string simulationText(const std::string& scene_name, const std::string& scene_source, const SimulationResult& r,
+                           const std::vector<std::string>& warnings) {
+  std::ostringstream os;
+  os << scene_name << "  (scene: " << scene_source << ")\n";
+  os << strf("Time run: %.4g s with %s (accuracy %.1e), %zu samples; %d steps, %d realizations, %.2f s wall time\n\n",
+             r.record.rows.empty() ? 0.0 : r.record.rows.back()[0], r.integrator.c_str(), r.accuracy, r.record.rows.size(),
+             r.steps, r.realizations, r.wall_seconds);
+  Table t({"joint", "peak_torque_N*m", "capacity_N*m", "within"});
+  for (const auto& q : r.torques)
+    t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",
+           q.capacity_nm > 0 ? (q.exceeded ? "EXCEEDED" : "yes") : "-"});
+  if (!r.torques.empty()) os << "Torques the torquers must give\n" << t.text();
+  Table d({"point", "peak_displacement_m"});
+  for (const auto& [name, peak] : peakDisplacements(r.record)) d.add({name, strf("%.4g", peak)});
+  if (!d.empty()) os << (r.torques.empty() ? "" : "\n") << "Largest displacement from the start\n" << d.text();
+  if (r.carried_weight_n > 0)
+    os << strf("\nTable: peak actuator force %.4g N; carries %.4g N of its %.4g N payload\n", r.peak_table_force_n,
+               r.carried_weight_n, facility::TableSpec{}.payload_n);
+  if (!r.sensors.empty()) {
+    Table st({"sensor", "type", "unit", "saturated_samples"});
+    for (const auto& s : r.sensors)
+      st.add({s.name, s.type, s.unit, strf("%d of %d", s.saturated_samples, s.samples)});
+    os << "\nSensors\n" << st.text();
+  }
+  os << strf("\nEnergy: E(0) %.6g J, E(end) %.6g J, work of the commanded motions %.6g J, dissipated %.6g J;\n"
+             "balance error %.3g J (E(end) - E(0) - work + dissipated)\n",
+             r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j);
+  if (r.constraint_drift_m > 0) os << strf("Closures: largest drift %.3g m over the run\n", r.constraint_drift_m);
+  for (const auto& w : warnings) os << "warning: " << w << '\n';
+  return os.str();
+}
+
+std::string simulationHistoryCsv(const SimulationRecord& rec) {
+  std::ostringstream os;
+  for (std::size_t c = 0; c < rec.columns.size(); ++c) os << (c ? "," : "") << rec.columns[c];
+  os << '\n';
+  for (const auto& row : rec.rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) os << (c ? "," : "") << strf("%.10g", row[c]);
+    os << '\n';
+  }
+  return os.str();
+}
+
+std::vector<std::string> simulationWarnings(const SimulationResult& r, double article_size_m) {
+  std::vector<std::string> warnings;
+  for (const auto& s : r.sensors)
+    if (s.saturated_samples > 0)
+      warnings.push_back("sensor " + s.name + " saturated in " + std::to_string(s.saturated_samples) + " of " +
+                         std::to_string(s.samples) + " samples");
+  for (const auto& t : r.torques)
+    if (t.exceeded)
+      warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
+                         strf("%.4g", t.capacity_nm) + " N*m");
+  if (const std::string w = energyBalanceWarning(r); !w.empty()) warnings.push_back(w);
+  if (const std::string w = constraintDriftWarning(r, article_size_m); !w.empty()) warnings.push_back(w);
+  if (const double payload = facility::TableSpec{}.payload_n; r.carried_weight_n > payload)
+    warnings.push_back("the table carries " + strf("%.4g", r.carried_weight_n) + " N, above its " + strf("%.4g", payload) +
+                       " N payload");
+  return warnings;
+}
+
+}  // namespace mmv

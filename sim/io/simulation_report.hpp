@@ -1,0 +1,24 @@
+#pragma once
+/// Writers for time runs (sim/time/simulation.hpp, and the isolator's): the summary as
+/// text and JSON (docs/outputs.md), the sampled history as CSV, and the warnings a
+/// run's numbers call for.
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "sim/time/simulation.hpp"
+
+namespace mmv {
+
+/// The warnings about a finished run: saturated sensors, torques above capacity, the
+/// energy balance, closure drift (against `article_size_m`, 0 for none), table payload.
+std::vector<std::string> simulationWarnings(const SimulationResult& r, double article_size_m);
+std::string simulationText(const std::string& scene_name, const std::string& scene_source, const SimulationResult& r,
+                           const std::vector<std::string>& warnings);
+nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vector<std::string>& warnings);
+/// history.csv: one header row (names with units), one row per sample, %.10g.
+std::string simulationHistoryCsv(const SimulationRecord& rec);
+
+}  // namespace mmv

@@ -1,0 +1,90 @@
+#include "sim/io/trade_report.hpp"
+
+#include <sstream>
+
+#include "sim/core/text.hpp"
+#include "sim/io/report.hpp"
+
+namespace mmv {
+namespace {
+
+const TradeRun* cheapestWithin(const TradeStudy& s, double target) {
+  const TradeRun* best = nullptr;
+  for (const auto& r : s.runs)
+    if (r.ok && !r.segments && r.error_m <= target && (!best || r.seconds < best->seconds)) best = &r;
+  return best;
+}
+
+}  // namespace
+
+std::string tradeText(const TradeStudy& s, double target) {
+  std::ostringstream os;
+  os << s.scene_name << strf(": speed-accuracy trade of a %.4g s time run\n", s.duration);
+  os << strf("Reference: %s at 1e-10 (%.2f s); its difference from %s at 1e-10 is %.2g m, below which errors "
+             "cannot be told apart\n\n",
+             s.reference_integrator.c_str(), s.reference_seconds, s.check_integrator.c_str(), s.reference_uncertainty_m);
+  if (!s.points.empty()) {
+    os << "Error scored at:";
+    for (const auto& p : s.points) os << ' ' << p;
+    os << "\n\n";
+  }
+  Table t({"integrator", "accuracy", "segments", "tip_error_m", "cpu_s", "evaluations", "pareto"});
+  for (const auto& r : s.runs) {
+    if (!r.ok) {
+      t.add({r.integrator, strf("%.0e", r.accuracy), r.segments ? strf("%d", r.segments) : "scene", "FAILED: " + r.failure});
+      continue;
+    }
+    t.add({r.integrator, strf("%.0e", r.accuracy), r.segments ? strf("%d", r.segments) : "scene", strf("%.3g", r.error_m),
+           strf("%.3f", r.seconds), strf("%ld", r.evaluations), r.pareto ? "*" : ""});
+  }
+  os << t.text();
+  const TradeRun* best = cheapestWithin(s, target);
+  if (best)
+    os << strf("\nCheapest run within %.3g m: %s at accuracy %.0e (%.3f s, error %.3g m)\n", target, best->integrator.c_str(),
+               best->accuracy, best->seconds, best->error_m);
+  else
+    os << strf("\nNo run reached %.3g m: tighten the accuracies\n", target);
+  return os.str();
+}
+
+nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
+  nlohmann::ordered_json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "trade";
+  j["duration_s"] = s.duration;
+  j["reference"] = {{"integrator", s.reference_integrator},
+                    {"check_integrator", s.check_integrator},
+                    {"accuracy", 1e-10},
+                    {"uncertainty_m", s.reference_uncertainty_m}};
+  j["points"] = s.points;  // empty: every link tip
+  auto runs = nlohmann::ordered_json::array();
+  for (const auto& r : s.runs) {
+    nlohmann::ordered_json x = {{"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments}, {"ok", r.ok}};
+    if (r.ok) {
+      x["tip_error_m"] = r.error_m;
+      x["cpu_s"] = r.seconds;
+      x["evaluations"] = r.evaluations;
+      x["pareto"] = r.pareto;
+    } else {
+      x["failure"] = r.failure;
+    }
+    runs.push_back(x);
+  }
+  j["runs"] = runs;
+  const TradeRun* best = cheapestWithin(s, target);
+  j["target_error_m"] = target;
+  j["cheapest_within_target"] = best ? nlohmann::ordered_json{{"integrator", best->integrator}, {"accuracy", best->accuracy}}
+                                     : nlohmann::ordered_json(nullptr);
+  return j;
+}
+
+std::string tradeCsv(const TradeStudy& s) {
+  std::ostringstream csv;
+  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto\n";
+  for (const auto& r : s.runs)
+    csv << r.integrator << ',' << strf("%.3g", r.accuracy) << ',' << r.segments << ',' << r.ok << ','
+        << (r.ok ? strf("%.6g,%.6g,%ld,%d", r.error_m, r.seconds, r.evaluations, r.pareto ? 1 : 0) : std::string(",,,")) << '\n';
+  return csv.str();
+}
+
+}  // namespace mmv

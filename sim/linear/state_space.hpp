@@ -1,0 +1,144 @@
+#pragma once
+/// Linear models for control design, from the linearization at an equilibrium.
+///
+/// Second-order form over the admissible coordinates (closed loops: q = Z eta):
+///     M q'' + C q' + K q = B_q u,    y = C_d q + C_v q' + C_a q'' + D_base u
+/// First-order descriptor form with x = [q; q']:
+///     E x' = A x + B u,   y = C x + D u,
+///     E = [I 0; 0 M],  A = [0 I; -K -C],  B = [0; B_q],
+/// acceleration outputs eliminated with q'' = M^-1 (B_q u - C q' - K q).
+///
+/// Inputs (units): base acceleration of the table in x or y (m/s^2), entering as the
+/// inertial load -M_qb b'' with M_qb = sum_b J_b^T m_b e (the mass coupling of a rigid
+/// base translation); torque at a joint that is a degree of freedom (N*m); force at a
+/// named point along x or y (N). Outputs: displacement (m), velocity (m/s) or
+/// acceleration (m/s^2) of a named point along x or y, relative to the base or absolute
+/// (absolute adds the base motion: for an acceleration output, D gains the base
+/// acceleration input itself). Absolute acceleration over base acceleration is the
+/// transmissibility.
+///
+/// Damping (DampingSpec, sim/scene/scene.hpp): modal ratios (C = M Phi diag(2 zeta omega)
+/// Phi^T M), Rayleigh (C = alpha M + beta K), or the hinges' viscous dampers
+/// (C = diag(hinge_beta * k) over the hinge coordinates), the last being the same
+/// damping the Simbody model carries in time runs.
+
+#include <Eigen/Dense>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "sim/modes/system_modes.hpp"
+
+namespace mmv {
+
+enum class InputKind { BaseAcceleration, JointTorque, PointForce };
+enum class OutputKind { Displacement, Velocity, Acceleration };
+
+struct InputSpec {
+  std::string name;
+  InputKind kind = InputKind::BaseAcceleration;
+  std::string target;  ///< joint (torque) or point (force); unused for the base.
+  int axis = 0;        ///< 0: x, 1: y (base and force).
+};
+
+struct OutputSpec {
+  std::string name;
+  OutputKind kind = OutputKind::Displacement;
+  std::string point;
+  int axis = 0;           ///< 0: x, 1: y.
+  bool absolute = false;  ///< add the base's own motion.
+};
+
+
+/// A descriptor state-space model with names and units.
+struct StateSpace {
+  Eigen::MatrixXd E, A, B, C, D;
+  std::vector<std::string> input_names, input_units, output_names, output_units, state_names;
+  /// Frequency response at s = i omega: C (s E - A)^-1 B + D (outputs x inputs).
+  Eigen::MatrixXcd response(double omega) const;
+  /// The same with E = I (A := E^-1 A, B := E^-1 B), for ss(A, B, C, D).
+  StateSpace standardForm() const;
+  /// Eigenvalues of the pencil (A, E), rad/s.
+  Eigen::VectorXcd poles() const;
+  int numStates() const { return static_cast<int>(A.rows()); }
+};
+
+/// First-order descriptor model of M q'' + C q' + K q = Bq u with outputs
+/// y = Cd q + Cv q' + Ca q'' + Dextra u (acceleration rows eliminated with M^-1).
+/// Any of Cd, Cv, Ca may be empty (zero). M must be invertible.
+StateSpace secondOrderModel(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, const Eigen::MatrixXd& K,
+                            const Eigen::MatrixXd& Bq, const Eigen::MatrixXd& Cd, const Eigen::MatrixXd& Cv,
+                            const Eigen::MatrixXd& Ca, const Eigen::MatrixXd& Dextra);
+
+/// The same response evaluated in second-order form, (K - w^2 M + i w C)^-1, for the
+/// full model: n x n instead of 2n x 2n solves.
+struct SecondOrderResponse {
+  Eigen::MatrixXd M, C, K, Bq, Cd, Cv, Ca, D;
+  Eigen::MatrixXcd response(double omega) const;
+};
+
+/// A solved scene with its linear model.
+struct LinearModel {
+  SolvedScene solved;
+  Eigen::MatrixXd Mz, Kz, Cz, Bq;  ///< second-order matrices over the admissible coordinates.
+  Eigen::MatrixXd Z;               ///< coordinates = Z eta (identity for an open tree).
+  StateSpace full;
+  SecondOrderResponse second_order;  ///< the same model, for fast full-model FRFs.
+  std::vector<InputSpec> inputs;
+  std::vector<OutputSpec> outputs;
+};
+
+/// Builds the linear model. Throws SceneError for an input or output naming an
+/// unknown point or joint, or a torque on a locked joint (it has no DOF).
+LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputSpec>& inputs,
+                             const std::vector<OutputSpec>& outputs, const DampingSpec& damping);
+
+/// Defaults when a command names none: base acceleration in x and y; absolute
+/// acceleration in x and y of every link tip.
+std::vector<InputSpec> defaultInputs();
+std::vector<OutputSpec> defaultOutputs(const ArticleScene& scene);
+
+struct ReductionOptions {
+  int modes = 0;  ///< keep the lowest `modes` oscillatory modes, plus any real (overdamped)
+                 ///< root no faster than them (0: use the band).
+  double band_min_hz = 0, band_max_hz = 0;  ///< keep modes with |lambda|/2pi in the band.
+  bool residualize = true;           ///< add the discarded modes' static contribution to D.
+  /// Skip modes no input-output pair sees (residue ||C v|| ||w B|| / |lambda| below 1e-9
+  /// of the largest): symmetric structures have many (an isolator's leg torsion).
+  bool drop_unseen = false;
+};
+
+struct ReducedModel {
+  StateSpace model;
+  int kept_modes = 0, discarded_modes = 0;
+  int unseen_modes = 0;  ///< of the discarded, those no input-output pair sees (drop_unseen).
+  bool residualized = false;
+  std::vector<double> kept_frequencies_hz;
+};
+
+/// Modal reduction of a first-order model (the slides' method): right and left
+/// eigenvectors of (A, E), complex pairs split into real and imaginary parts, kept
+/// modes projected (Petrov-Galerkin), giving descriptor form; with `residualize` the
+/// discarded modes' static response H_full(0) - H_kept(0) is added to D, so every DC
+/// gain is exact. Throws NumericalError when A is singular and residualization asked.
+ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& options);
+
+/// Largest |H_a(i w) - H_b(i w)| over the grid, per input-output pair, relative to the
+/// largest |H_a| of that pair (or to 1e-9 of the largest |H_a| of any pair, for a pair
+/// that is zero up to round-off); and the overall maximum.
+struct ModelError {
+  Eigen::MatrixXd relative;  ///< outputs x inputs.
+  double max_relative = 0;
+};
+ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std::vector<double>& omegas);
+
+/// The slides' cross-check: eigenvalues of an implicit integrator's Jacobian
+/// J(c) = E - c A (F = E y' - A y, dCoef = c) from the pencil J(-c) v = Lambda J(c) v,
+/// mapped back by lambda = (1/c) (Lambda - 1) / (Lambda + 1). Throws NumericalError if
+/// J(c) is singular.
+Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double dcoef);
+
+/// Log-spaced frequencies (Hz) from f0 to f1, n points.
+std::vector<double> logFrequencies(double f0_hz, double f1_hz, int n);
+
+}  // namespace mmv

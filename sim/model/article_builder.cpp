@@ -1,0 +1,309 @@
+#include "sim/model/article_builder.hpp"
+
+#include "sim/core/errors.hpp"
+#include "sim/model/motions.hpp"
+#include <limits>
+#include <cmath>
+#include <deque>
+#include <map>
+
+#include "article/flexible_link.hpp"
+#include "facility/slews.hpp"
+
+namespace mmv {
+namespace {
+
+SimTK::Transform rotZ(double angle, const SimTK::Vec3& p = SimTK::Vec3(0)) {
+  return SimTK::Transform(SimTK::Rotation(angle, SimTK::ZAxis), p);
+}
+
+/// A piece of length l and mass m, origin at its inboard end, x along the piece.
+/// In the plane only Izz = m l^2 / 12 about the centre matters (Euler-Bernoulli: no
+/// section rotary inertia). The out-of-plane axes get the section's gyration r^2 = I/A,
+/// Ixx = m r^2 and Iyy = m (l^2/12 + r^2), which keeps the inertia physically valid
+/// (triangle inequality) for short, thick pieces.
+SimTK::Body::Rigid pieceBody(const LinkPiece& p, double gyration_sq) {
+  const SimTK::Vec3 com(0.5 * p.length, 0, 0);
+  const SimTK::Inertia central(p.mass * gyration_sq, p.inertia_zz_about_com + p.mass * gyration_sq,
+                               p.inertia_zz_about_com);
+  return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
+}
+
+/// A lumped mass at the body origin with rotary inertia J about z (disc-like: J/2 in x, y).
+SimTK::Body::Rigid lumpedBody(const LumpedMass& m) {
+  const double j = m.rotary_inertia;
+  return SimTK::Body::Rigid(SimTK::MassProperties(m.mass, SimTK::Vec3(0), SimTK::Inertia(0.5 * j, 0.5 * j, j)));
+}
+
+struct Frame {  // a place to attach things: a body and a frame on it
+  SimTK::MobilizedBodyIndex mobod;
+  SimTK::Transform X_BF;
+  bool grounded = false;
+};
+
+class Builder {
+ public:
+  Builder(const ArticleScene& scene, Model& model) : scene_(scene), a_(scene.article), model_(model) {}
+
+  void build() {
+    auto& matter = model_.updMatter();
+    const BaseSpec& base = a_.base;
+    const SimTK::Vec3 p_base(base.position[0], base.position[1], base.position[2]);
+    Frame ground{matter.Ground().getMobilizedBodyIndex(), rotZ(base.direction, p_base), true};
+    if (base.type == BaseType::Table) {
+      // The table slides along world x; the article's base joints sit on it.
+      const int part = model_.addPart("table", Part::Kind::Table, "");
+      SimTK::MobilizedBody::Slider table(matter.updGround(), SimTK::Transform(p_base),
+                                         SimTK::Body::Rigid(SimTK::MassProperties(base.table_mass, SimTK::Vec3(0),
+                                                                                  SimTK::Inertia(base.table_mass))),
+                                         SimTK::Transform());
+      Coordinate c;
+      c.name = "table.x";
+      c.kind = CoordinateKind::Joint;
+      c.motion = CoordinateMotion::Translation;
+      c.part = "table";
+      c.mobod = table.getMobilizedBodyIndex();
+      c.held = true;  // at rest in statics and modes; driven in time runs
+      model_.addCoordinate(c);
+      model_.addBody(table.getMobilizedBodyIndex(), part, true);
+      if (base.motion) prescribeTableProgram(table, makeTableProgram(*base.motion));
+      // Held in statics and modes, so what is welded to it counts as fixed there.
+      ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
+    }
+    if (base.gimbal) ground = buildGimbal(*base.gimbal, ground);
+    // Breadth-first from the base so that every parent exists before its children.
+    std::deque<std::pair<const JointSpec*, Frame>> todo;
+    for (const auto& j : a_.joints)
+      if (j.parent == "base") todo.push_back({&j, ground});
+    while (!todo.empty()) {
+      auto [joint, parent] = todo.front();
+      todo.pop_front();
+      buildJoint(*joint, parent);
+      for (const auto& j : a_.joints) {
+        auto it = tips_.find(j.parent);
+        if (it != tips_.end() && !built_joints_.count(j.name) && !queued_.count(j.name)) {
+          queued_.insert({j.name, true});
+          todo.push_back({&j, it->second});
+        }
+      }
+    }
+  }
+
+ private:
+  /// Holds a locked coordinate's pin at its angle (zero prescribed speed) or drives it
+  /// along its slew, the slew limited to +-range.
+  static void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, double range) {
+    if (spec) {
+      const facility::SlewLimits limits{range, spec->max_rate, spec->max_acceleration};
+      const facility::Slew slew = facility::makeSlew(
+          spec->trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, angle, spec->to,
+          spec->start_time, limits);
+      prescribeSlew(pin, slew, spec->start_time);
+    } else {
+      SimTK::Motion::Steady(pin, 0.0);
+    }
+  }
+
+  /// Yaw (about y), pitch (about z), roll (about x), outer to inner, on `parent` without
+  /// its base-direction rotation; returns the frame on the roll ring where the base
+  /// joints go. Each ring is a held coordinate "gimbal.<axis>".
+  Frame buildGimbal(const GimbalSpec& g, const Frame& parent) {
+    auto& matter = model_.updMatter();
+    const int part = model_.addPart("gimbal", Part::Kind::Gimbal, "");
+    const SimTK::Body::Rigid ring(SimTK::MassProperties(g.ring_mass, SimTK::Vec3(0), SimTK::Inertia(g.ring_inertia)));
+    // A pin turns about its frames' z; these rotations put z along the axis.
+    const SimTK::Rotation z_to_y(-M_PI / 2, SimTK::XAxis), z_to_x(M_PI / 2, SimTK::YAxis);
+    const struct {
+      const char* name;
+      const GimbalAxisSpec* spec;
+      SimTK::Rotation axis;
+    } axes[3] = {{"gimbal.yaw", &g.yaw, z_to_y}, {"gimbal.pitch", &g.pitch, SimTK::Rotation()}, {"gimbal.roll", &g.roll, z_to_x}};
+    SimTK::MobilizedBodyIndex inboard = parent.mobod;
+    SimTK::Transform X_inboard(parent.X_BF.p());  // the parent frame's origin, world-aligned
+    for (const auto& a : axes) {
+      SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(inboard), SimTK::Transform(a.axis, X_inboard.p()), ring,
+                                    SimTK::Transform(a.axis));
+      Coordinate c;
+      c.name = a.name;
+      c.kind = CoordinateKind::Joint;
+      c.motion = CoordinateMotion::Rotation;
+      c.part = "gimbal";
+      c.mobod = pin.getMobilizedBodyIndex();
+      c.reference = a.spec->angle;
+      c.held = true;
+      model_.addCoordinate(c);
+      model_.addBody(pin.getMobilizedBodyIndex(), part, parent.grounded);
+      holdOrSlew(pin, a.spec->angle, a.spec->slew, a.spec->range);
+      inboard = pin.getMobilizedBodyIndex();
+      X_inboard = SimTK::Transform();
+    }
+    return Frame{inboard, rotZ(a_.base.direction), parent.grounded};
+  }
+
+  void buildJoint(const JointSpec& j, const Frame& parent) {
+    built_joints_[j.name] = true;
+    auto& matter = model_.updMatter();
+    model_.addPoint({j.name, parent.mobod, parent.X_BF.p(), true});
+    if (j.torquer) {
+      const int part = model_.addPart(j.name + ".torquer", Part::Kind::Torquer, j.parent == "base" ? "" : j.parent);
+      SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(parent.mobod), parent.X_BF, lumpedBody(*j.torquer),
+                                   SimTK::Transform());
+      model_.addBody(w.getMobilizedBodyIndex(), part, parent.grounded);
+    }
+    std::vector<const LinkSpec*> children;
+    for (const auto& l : a_.links)
+      if (l.joint == j.name) children.push_back(&l);
+    MMV_DEMAND(!children.empty());
+
+    // The first child's root piece carries the pin; the others are welded to it.
+    SimTK::MobilizedBodyIndex rotor;
+    double rotor_mount = 0;
+    for (std::size_t c = 0; c < children.size(); ++c) {
+      const LinkSpec& l = *children[c];
+      const LinkDiscretization d = discretize(l);
+      const int part = model_.addPart(l.name, Part::Kind::Link, l.name);
+      const double gyr2 = sectionGyrationSquared(*a_.findSection(l.section));
+      SimTK::MobilizedBodyIndex prev;
+      for (std::size_t k = 0; k < d.pieces.size(); ++k) {
+        const SimTK::Body::Rigid body = pieceBody(d.pieces[k], gyr2);
+        SimTK::MobilizedBodyIndex ix;
+        if (k == 0 && c == 0 && parent.grounded && a_.base.type == BaseType::Floating) {
+          // A floating root (component modes, free-free): rotation and both translations.
+          SimTK::MobilizedBody::Planar planar(matter.updMobilizedBody(parent.mobod), parent.X_BF, body,
+                                              rotZ(-l.mount_angle));
+          ix = planar.getMobilizedBodyIndex();
+          const char* names[] = {"", ".x", ".y"};
+          for (int q = 0; q < 3; ++q) {
+            Coordinate coord;
+            coord.name = j.name + names[q];
+            coord.kind = CoordinateKind::Joint;
+            coord.motion = q == 0 ? CoordinateMotion::Rotation : CoordinateMotion::Translation;
+            coord.mobilizer_q = q;
+            coord.part = j.name;
+            coord.mobod = ix;
+            coord.reference = q == 0 ? j.angle : 0.0;
+            model_.addCoordinate(coord);
+          }
+          rotor = ix;
+          rotor_mount = l.mount_angle;
+        } else if (k == 0 && c == 0) {
+          SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(parent.mobod), parent.X_BF, body,
+                                        rotZ(-l.mount_angle));
+          ix = pin.getMobilizedBodyIndex();
+          Coordinate coord;
+          coord.name = j.name;
+          coord.kind = CoordinateKind::Joint;
+          coord.part = j.name;
+          coord.mobod = ix;
+          coord.reference = j.angle;
+          coord.held = j.hold == JointHold::Locked;
+          coord.stiffness = j.hold == JointHold::Servo ? j.servo_stiffness : 0.0;
+          if (j.torque_input) coord.input = makeTableProgram(*j.torque_input);
+          model_.addCoordinate(coord);
+          // A locked torquer holds its angle in the dynamics too (zero prescribed speed),
+          // or follows its slew.
+          if (coord.held) holdOrSlew(pin, j.angle, j.slew, M_PI);
+          rotor = ix;
+          rotor_mount = l.mount_angle;
+        } else if (k == 0) {
+          SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(rotor), rotZ(-rotor_mount), body, rotZ(-l.mount_angle));
+          ix = w.getMobilizedBodyIndex();
+        } else {
+          const double l_prev = d.pieces[k - 1].length;
+          SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(prev), SimTK::Transform(SimTK::Vec3(l_prev, 0, 0)),
+                                        body, SimTK::Transform());
+          ix = pin.getMobilizedBodyIndex();
+          Coordinate coord;
+          coord.name = l.name + ".h" + std::to_string(k);
+          coord.kind = CoordinateKind::Hinge;
+          coord.part = l.name;
+          coord.mobod = ix;
+          coord.stiffness = d.hinge_stiffness[k - 1];
+          if (scene_.damping && scene_.damping->kind == DampingSpec::Kind::HingeViscous)
+            coord.damping = scene_.damping->hinge_beta * coord.stiffness;
+          model_.addCoordinate(coord);
+          model_.addPoint({coord.name, ix, SimTK::Vec3(0), false});
+        }
+        model_.addBody(ix, part, false);
+        if (k == 0) model_.addPoint({l.name + ".root", ix, SimTK::Vec3(0), true});
+        prev = ix;
+      }
+      const SimTK::Transform X_tip(SimTK::Vec3(d.pieces.back().length, 0, 0));
+      model_.addPoint({l.name + ".tip", prev, X_tip.p(), true});
+      if (l.tip_mass) {
+        const int tip_part = model_.addPart(l.name + ".tip_mass", Part::Kind::TipMass, l.name);
+        SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(prev), X_tip, lumpedBody(*l.tip_mass), SimTK::Transform());
+        model_.addBody(w.getMobilizedBodyIndex(), tip_part, false);
+      }
+      tips_[l.name] = Frame{prev, X_tip, false};
+    }
+  }
+
+  LinkDiscretization discretize(const LinkSpec& l) const {
+    const Material& mat = *a_.findMaterial(l.material);
+    const Section& sec = *a_.findSection(l.section);
+    return discretizeLink(l.length, mat.density * sectionArea(sec), mat.youngs_modulus * sectionSecondMoment(sec),
+                          l.segments, l.rigid);
+  }
+
+  const ArticleScene& scene_;
+  const ArticleSpec& a_;
+  Model& model_;
+  std::map<std::string, Frame> tips_;
+  std::map<std::string, bool> built_joints_, queued_;
+};
+
+const NamedPoint& requirePoint(const Model& model, const std::string& name, const std::string& where,
+                               const std::string& what) {
+  const NamedPoint* p = model.findPoint(name);
+  // The scene reader checked the name; only a --segments override can remove a hinge.
+  if (!p) throw SceneError(where + ": " + what + " '" + name + "' does not exist with the segment counts in use");
+  return *p;
+}
+
+void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
+  for (std::size_t i = 0; i < a.loads.size(); ++i) {
+    const LoadSpec& l = a.loads[i];
+    const NamedPoint& p = requirePoint(model, l.point, l.where, "loads[" + std::to_string(i) + "].point");
+    model.addPointLoad({p.mobod, p.station_B, SimTK::Vec3(l.force[0], l.force[1], l.force[2])});
+  }
+  for (std::size_t i = 0; i < a.closures.size(); ++i) {
+    const ClosureSpec& cs = a.closures[i];
+    const std::string path = "closures[" + std::to_string(i) + "]";
+    const NamedPoint& pa = requirePoint(model, cs.point, cs.where, path + ".point");
+    Closure c;
+    c.name = cs.name;
+    c.where = cs.where;
+    c.mobod_a = pa.mobod;
+    c.station_a = pa.station_B;
+    if (cs.to != "ground") {
+      const NamedPoint& pb = requirePoint(model, cs.to, cs.where, path + ".to");
+      c.to_ground = false;
+      c.mobod_b = pb.mobod;
+      c.station_b = pb.station_B;
+    } else if (cs.at) {
+      c.has_anchor = true;
+      c.anchor_W = SimTK::Vec3((*cs.at)[0], (*cs.at)[1], (*cs.at)[2]);
+    }
+    if (cs.type == ClosureType::Pin) {
+      c.directions = {SimTK::Vec3(1, 0, 0), SimTK::Vec3(0, 1, 0)};
+    } else {  // held across the line: its normal
+      c.directions = {SimTK::Vec3(-std::sin(cs.direction), std::cos(cs.direction), 0)};
+    }
+    model.addClosure(c);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
+  const auto& g = scene.gravity;
+  auto model = std::make_unique<Model>(SimTK::Vec3(g[0], g[1], g[2]));
+  Builder(scene, *model).build();
+  addLoadsAndClosures(scene.article, *model);
+  model->setOnlyGravityAndPinSprings();  // the builder adds nothing else
+  model->finalize();
+  return model;
+}
+
+}  // namespace mmv

@@ -1,0 +1,222 @@
+#include "sim/model/model.hpp"
+
+#include "sim/core/errors.hpp"
+#include <stdexcept>
+
+namespace mmv {
+
+Model::Model(const SimTK::Vec3& g_W)
+    : matter_(system_), forces_(system_), gravity_W_(g_W), gravity_(forces_, matter_, g_W) {}
+
+void Model::setGravityScale(SimTK::State& s, double scale) const { gravity_.setMagnitude(s, scale * gravity_W_.norm()); }
+
+SimTK::Vec3 Model::getGravity(const SimTK::State& s) const {
+  return gravity_W_.norm() > 0 ? gravity_.getMagnitude(s) * SimTK::Vec3(gravity_.getDownDirection(s)) : SimTK::Vec3(0);
+}
+
+int Model::addPart(const std::string& name, Part::Kind kind, const std::string& carrier) {
+  parts_.push_back({name, kind, carrier});
+  return static_cast<int>(parts_.size()) - 1;
+}
+
+void Model::addBody(SimTK::MobilizedBodyIndex mobod, int part, bool grounded) {
+  bodies_.push_back({mobod, part, grounded});
+}
+
+namespace {
+
+/// A commanded torque tau(t) on one mobility.
+class ProgramMobilityForce : public SimTK::Force::Custom::Implementation {
+ public:
+  ProgramMobilityForce(const SimTK::MobilizedBody& mobod, int u, std::shared_ptr<const facility::TableProgram> p)
+      : mobod_(mobod), u_(u), p_(std::move(p)) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                 SimTK::Vector& mobility_forces) const override {
+    mobod_.applyOneMobilityForce(s, SimTK::MobilizerUIndex(u_), p_->position(s.getTime()), mobility_forces);
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+  bool dependsOnlyOnPositions() const override { return false; }
+
+ private:
+  const SimTK::MobilizedBody& mobod_;
+  int u_;
+  std::shared_ptr<const facility::TableProgram> p_;
+};
+
+}  // namespace
+
+void Model::addCoordinate(const Coordinate& c) {
+  MMV_DEMAND(!finalized_);
+  coords_.push_back(c);
+  if (c.stiffness > 0) {
+    SimTK::Force::MobilityLinearSpring(forces_, matter_.getMobilizedBody(c.mobod),
+                                       SimTK::MobilizerQIndex(c.mobilizer_q), c.stiffness, c.reference);
+  }
+  if (c.damping > 0) {
+    SimTK::Force::MobilityLinearDamper(forces_, matter_.getMobilizedBody(c.mobod),
+                                       SimTK::MobilizerUIndex(c.mobilizer_q), c.damping);
+  }
+  if (c.input)
+    SimTK::Force::Custom(forces_, new ProgramMobilityForce(matter_.getMobilizedBody(c.mobod), c.mobilizer_q, c.input));
+}
+
+double Model::inputPower(const SimTK::State& s) const {
+  double p = 0;
+  for (const auto& c : coords_)
+    if (c.input) p += c.input->position(s.getTime()) * matter_.getMobilizedBody(c.mobod).getOneU(s, SimTK::MobilizerUIndex(c.mobilizer_q));
+  return p;
+}
+
+void Model::addPointLoad(const PointLoad& load) {
+  MMV_DEMAND(!finalized_);
+  SimTK::Force::ConstantForce(forces_, matter_.getMobilizedBody(load.mobod), load.station_B, load.force_W);
+  loads_.push_back(load);
+}
+
+void Model::addClosure(const Closure& c) {
+  MMV_DEMAND(!finalized_);
+  closures_.push_back(c);
+}
+
+SimTK::State Model::addClosureConstraints(const SimTK::State& at) {
+  system_.realize(at, SimTK::Stage::Position);
+  const SimTK::Vector q = at.getQ();
+  for (const auto& c : closures_) {
+    SimTK::MobilizedBody& a = matter_.updMobilizedBody(c.mobod_a);
+    for (const SimTK::Vec3& e : c.directions) {
+      if (c.to_ground) {
+        SimTK::Constraint::PointInPlane(matter_.updGround(), SimTK::UnitVec3(e), ~e * c.anchor_W, a, c.station_a);
+      } else {
+        SimTK::MobilizedBody& b = matter_.updMobilizedBody(c.mobod_b);
+        const SimTK::Vec3 n_B = ~b.getBodyRotation(at) * e;
+        SimTK::Constraint::PointInPlane(b, SimTK::UnitVec3(n_B), ~n_B * c.station_b, a, c.station_a);
+      }
+    }
+  }
+  system_.realizeTopology();
+  SimTK::State s = system_.getDefaultState();
+  s.updQ() = q;
+  s.updU() = 0;
+  system_.realize(s, SimTK::Stage::Position);
+  reference_state_ = s;
+  system_.realize(reference_state_, SimTK::Stage::Position);
+  return s;
+}
+
+int Model::getNumClosureRows() const {
+  int n = 0;
+  for (const auto& c : closures_) n += static_cast<int>(c.directions.size());
+  return n;
+}
+
+int Model::findBody(SimTK::MobilizedBodyIndex mobod) const {
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].mobod == mobod) return static_cast<int>(b);
+  return -1;
+}
+
+void Model::addPoint(const NamedPoint& p) { points_.push_back(p); }
+
+void Model::finalize() {
+  MMV_DEMAND(!finalized_);
+  system_.realizeTopology();
+  SimTK::State s = system_.getDefaultState();
+  system_.realizeModel(s);
+  for (std::size_t i = 0; i < coords_.size(); ++i) {
+    const auto& mb = matter_.getMobilizedBody(coords_[i].mobod);
+    if (mb.getNumQ(s) != mb.getNumU(s) || coords_[i].mobilizer_q >= mb.getNumQ(s))
+      throw std::logic_error("coordinate " + coords_[i].name + " does not match its mobilizer");
+    qindex_.push_back(SimTK::QIndex(mb.getFirstQIndex(s) + coords_[i].mobilizer_q));
+    uindex_.push_back(SimTK::UIndex(mb.getFirstUIndex(s) + coords_[i].mobilizer_q));
+    if (!coords_[i].held) dofs_.push_back(static_cast<int>(i));
+  }
+  if (static_cast<int>(coords_.size()) != s.getNQ() || s.getNQ() != s.getNU())
+    throw std::logic_error("model has mobilities that are not registered coordinates");
+  for (std::size_t i = 0; i < coords_.size(); ++i) s.updQ()[qindex_[i]] = coords_[i].reference;
+  system_.realize(s, SimTK::Stage::Position);
+  reference_state_ = s;
+  system_.realize(reference_state_, SimTK::Stage::Position);  // a copy's cache is not valid
+  for (auto& c : closures_) {
+    if (c.to_ground && !c.has_anchor) {
+      c.anchor_W = matter_.getMobilizedBody(c.mobod_a).findStationLocationInGround(s, c.station_a);
+      c.has_anchor = true;
+    }
+  }
+  // Ancestry: which coordinates move each body.
+  // A planar mobilizer carries three coordinates; list them all, outboard-most first.
+  std::vector<std::vector<int>> coords_of_mobod(matter_.getNumBodies());
+  for (std::size_t i = 0; i < coords_.size(); ++i) coords_of_mobod[coords_[i].mobod].push_back(static_cast<int>(i));
+  coord_body_.assign(coords_.size(), -1);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    std::vector<int> anc;
+    for (SimTK::MobilizedBodyIndex ix = bodies_[b].mobod; ix != SimTK::GroundIndex;
+         ix = matter_.getMobilizedBody(ix).getParentMobilizedBody().getMobilizedBodyIndex()) {
+      for (int c : coords_of_mobod[ix]) anc.push_back(c);
+    }
+    body_ancestors_.push_back(anc);
+    for (int c : coords_of_mobod[bodies_[b].mobod]) coord_body_[c] = static_cast<int>(b);
+  }
+  for (std::size_t i = 0; i < coords_.size(); ++i)
+    if (coord_body_[i] < 0) throw std::logic_error("coordinate " + coords_[i].name + " moves no registered body");
+  for (const auto& b : bodies_) {
+    const double m = matter_.getMobilizedBody(b.mobod).getBodyMass(s);
+    total_mass_ += m;
+    if (!b.grounded) moving_mass_ += m;
+  }
+  finalized_ = true;
+}
+
+const NamedPoint* Model::findPoint(const std::string& name) const {
+  for (const auto& p : points_)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+Eigen::VectorXd Model::getQ(const SimTK::State& s) const {
+  Eigen::VectorXd q(coords_.size());
+  for (std::size_t i = 0; i < coords_.size(); ++i) q[i] = s.getQ()[qindex_[i]];
+  return q;
+}
+
+void Model::setQ(SimTK::State& s, const Eigen::VectorXd& q) const {
+  MMV_DEMAND(q.size() == static_cast<Eigen::Index>(coords_.size()));
+  for (std::size_t i = 0; i < coords_.size(); ++i) {
+    s.updQ()[qindex_[i]] = q[i];
+    s.updU()[uindex_[i]] = 0.0;
+  }
+}
+
+Eigen::VectorXd Model::calcAppliedForces(SimTK::State& s) const {
+  system_.realize(s, SimTK::Stage::Dynamics);
+  const SimTK::Vector_<SimTK::SpatialVec>& body_forces = system_.getRigidBodyForces(s, SimTK::Stage::Dynamics);
+  const SimTK::Vector& mobility_forces = system_.getMobilityForces(s, SimTK::Stage::Dynamics);
+  SimTK::Vector f;
+  matter_.multiplyBySystemJacobianTranspose(s, body_forces, f);
+  f += mobility_forces;
+  Eigen::VectorXd out(coords_.size());
+  for (std::size_t i = 0; i < coords_.size(); ++i) out[i] = f[uindex_[i]];
+  return out;
+}
+
+Eigen::MatrixXd Model::calcFrameJacobians(const SimTK::State& s,
+                                          const std::vector<SimTK::MobilizedBodyIndex>& bodies,
+                                          const std::vector<SimTK::Vec3>& stations,
+                                          const std::vector<int>& cols) const {
+  MMV_DEMAND(bodies.size() == stations.size());
+  SimTK::Array_<SimTK::MobilizedBodyIndex> b(bodies.begin(), bodies.end());
+  SimTK::Array_<SimTK::Vec3> p(stations.begin(), stations.end());
+  SimTK::Matrix jf;
+  matter_.calcFrameJacobian(s, b, p, jf);
+  Eigen::MatrixXd out(jf.nrow(), cols.size());
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    const int u = uindex_[cols[j]];
+    for (int i = 0; i < jf.nrow(); ++i) out(i, j) = jf(i, u);
+  }
+  return out;
+}
+
+SimTK::Vec3 Model::findPointLocation(const SimTK::State& s, const NamedPoint& p) const {
+  return matter_.getMobilizedBody(p.mobod).findStationLocationInGround(s, p.station_B);
+}
+
+}  // namespace mmv

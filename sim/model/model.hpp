@@ -1,0 +1,211 @@
+#pragma once
+/// The Simbody model of a scene plus the names the analyses and reports need:
+/// generalized coordinates (what each one is, whether it is held), the parts bodies
+/// belong to, and named points. Built by sim/model/article_builder.hpp.
+///
+/// Mobilizers are planar pins about world z, welds, or (for a floating root) planar
+/// joints: rotation about z then translations along the ground frame's x and y. For
+/// all of them q' = u, so coordinate i has one q and one u.
+/// Units: angles in rad, torques in N*m, lengths in m, masses in kg.
+///
+/// A Model is built once and then used read-only (const); analyses work on their own
+/// SimTK::State copies (Simbody's "const system, mutable state" pattern).
+
+#include <Simbody.h>
+
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "facility/table_programs.hpp"
+
+namespace mmv {
+
+enum class CoordinateKind {
+  Joint,  ///< an article joint (torquer axis).
+  Hinge,  ///< a bending hinge inside a flexible link.
+};
+
+enum class CoordinateMotion {
+  Rotation,     ///< about world z through the body origin (rad).
+  Translation,  ///< along a ground-fixed direction (m).
+};
+
+struct Coordinate {
+  std::string name;  ///< "joint2" or "link1.h3".
+  CoordinateKind kind = CoordinateKind::Hinge;
+  CoordinateMotion motion = CoordinateMotion::Rotation;
+  int mobilizer_q = 0;  ///< which q of its mobilizer (0 for pins).
+  std::string part;  ///< the link (hinge) or joint (joint) it belongs to.
+  SimTK::MobilizedBodyIndex mobod;
+  double reference = 0;  ///< rad: commanded joint angle, or 0 for an unbent hinge.
+  bool held = false;     ///< locked by its torquer: not a degree of freedom.
+  double stiffness = 0;  ///< N*m/rad of the linear spring on this coordinate (0: none).
+  double damping = 0;    ///< N*m*s/rad of a viscous damper on it (0: none); no static effect.
+  /// A commanded torque on a free or servo joint (N*m over time; time runs; in statics
+  /// and modes its value at t = 0, a dead load with no stiffness).
+  std::shared_ptr<const facility::TableProgram> input;
+};
+
+/// A part: a link (all its pieces), a torquer, a tip mass, or the excitation table.
+struct Part {
+  std::string name;
+  enum class Kind { Link, Torquer, TipMass, Table, Gimbal } kind = Kind::Link;
+  /// The link that carries this part: itself for a link, the link a tip mass is on,
+  /// the parent link whose tip holds a torquer; empty for a torquer on the base.
+  std::string carrier;
+};
+
+struct BodyInfo {
+  SimTK::MobilizedBodyIndex mobod;
+  int part = -1;  ///< index into Model::parts().
+  bool grounded = false;  ///< welded to ground: never moves.
+};
+
+/// A constant force (dead load) at a station of a body, in the world frame.
+struct PointLoad {
+  SimTK::MobilizedBodyIndex mobod;
+  SimTK::Vec3 station_B;  ///< m, body frame.
+  SimTK::Vec3 force_W;    ///< N, world frame.
+};
+
+/// A loop closure: point A (on the article) held to a ground anchor or to point B,
+/// in both in-plane directions (pin) or across a line (slider). Its rows are the
+/// world directions e_r it holds: constraint e_r . (p_A - p_B) = 0.
+struct Closure {
+  std::string name;
+  std::string where;  ///< "file:line:col" of its scene entry.
+  SimTK::MobilizedBodyIndex mobod_a;
+  SimTK::Vec3 station_a;
+  bool to_ground = true;
+  SimTK::MobilizedBodyIndex mobod_b;  ///< when !to_ground.
+  SimTK::Vec3 station_b;
+  bool has_anchor = false;  ///< else the anchor is A's reference location (set by finalize).
+  SimTK::Vec3 anchor_W;     ///< m, when to_ground.
+  std::vector<SimTK::Vec3> directions;  ///< unit world directions held (2 for a pin, 1 for a slider).
+};
+
+/// A named point fixed on a body: "link1.tip", "link2.h3", "joint2", ...
+struct NamedPoint {
+  std::string name;
+  SimTK::MobilizedBodyIndex mobod;
+  SimTK::Vec3 station_B;  ///< position from the body origin, in the body frame (m).
+  bool report_rotation = false;  ///< rotation is meaningful here (roots, tips, joints).
+};
+
+class Model {
+ public:
+  /// Creates an empty system with uniform gravity g_W (m/s^2, world frame).
+  explicit Model(const SimTK::Vec3& g_W);
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  // --- building (used by builders only) ---------------------------------------
+  SimTK::MultibodySystem& updSystem() { return system_; }
+  SimTK::SimbodyMatterSubsystem& updMatter() { return matter_; }
+  SimTK::GeneralForceSubsystem& updForces() { return forces_; }
+  int addPart(const std::string& name, Part::Kind kind, const std::string& carrier);
+  void addBody(SimTK::MobilizedBodyIndex mobod, int part, bool grounded);
+  /// Registers a coordinate; adds a linear spring if stiffness > 0 and a viscous
+  /// damper if damping > 0.
+  void addCoordinate(const Coordinate& c);
+  /// Power the coordinates' commanded torques deliver, sum tau(t) u (W).
+  double inputPower(const SimTK::State& s) const;
+  void addPoint(const NamedPoint& p);
+  /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.
+  void addPointLoad(const PointLoad& load);
+  void addClosure(const Closure& c);
+  /// Declares that the only forces are uniform gravity, point loads and the
+  /// coordinates' linear springs, so the closed-form stiffness of sim/statics/linearize.hpp
+  /// applies. Builders that add other forces must not call this.
+  void setOnlyGravityAndPinSprings() { only_gravity_and_pin_springs_ = true; }
+  /// Realizes topology and builds the reference state. Call once, last.
+  void finalize();
+  /// Time runs of closed trees: makes every closure a Simbody constraint (a
+  /// PointInPlane per held direction; for a closure between two bodies the directions
+  /// turn with the second body, as they stand in `at`) so the dynamics hold it. Changes
+  /// the topology: states made before are invalid; returns a new state with `at`'s q.
+  /// Statics, linearization and modes keep their own treatment of closures.
+  SimTK::State addClosureConstraints(const SimTK::State& at);
+
+  // --- use ----------------------------------------------------------------------
+  const SimTK::MultibodySystem& getSystem() const { return system_; }
+  const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
+  const SimTK::Vec3& getGravity() const { return gravity_W_; }
+  /// Gravity in state `s` (the scene's, times any continuation scale), m/s^2.
+  SimTK::Vec3 getGravity(const SimTK::State& s) const;
+  const std::vector<Coordinate>& getCoordinates() const { return coords_; }
+  const std::vector<Part>& getParts() const { return parts_; }
+  const std::vector<BodyInfo>& getBodies() const { return bodies_; }
+  const std::vector<NamedPoint>& getPoints() const { return points_; }
+  const std::vector<PointLoad>& getPointLoads() const { return loads_; }
+  const std::vector<Closure>& getClosures() const { return closures_; }
+  /// Total number of closure constraint rows.
+  int getNumClosureRows() const;
+  /// Indices of the coordinates that are degrees of freedom (not held).
+  const std::vector<int>& getDofs() const { return dofs_; }
+  /// Index of coordinate i's speed in the Simbody state's u vector.
+  int getUIndex(int i) const { return uindex_[i]; }
+  /// Index of coordinate i in the Simbody state's q vector.
+  int getQIndex(int i) const { return qindex_[i]; }
+  int getNumCoordinates() const { return static_cast<int>(coords_.size()); }
+  /// The state with every coordinate at its reference value, realized to Position.
+  const SimTK::State& getReferenceState() const { return reference_state_; }
+  /// Total mass of all bodies, and of those that can move (not welded to ground), kg.
+  double getTotalMass() const { return total_mass_; }
+  double getMovingMass() const { return moving_mass_; }
+  const NamedPoint* findPoint(const std::string& name) const;
+  int findBody(SimTK::MobilizedBodyIndex mobod) const;  ///< index into getBodies(), -1 if none.
+  bool hasOnlyGravityAndPinSprings() const { return only_gravity_and_pin_springs_; }
+  /// Coordinates whose motion moves body b (index into getBodies()): its own
+  /// mobilizer's coordinate, if any, and those of all its ancestors.
+  const std::vector<int>& getAncestorCoordinates(int b) const { return body_ancestors_[b]; }
+  /// Index into getBodies() of the body that coordinate c's pin moves.
+  int getCoordinateBody(int c) const { return coord_body_[c]; }
+
+  /// Coordinate values of a state, in coordinate order (rad).
+  Eigen::VectorXd getQ(const SimTK::State& s) const;
+  /// Sets coordinate values (rad) and zero speeds.
+  void setQ(SimTK::State& s, const Eigen::VectorXd& q) const;
+
+  /// Applied generalized forces f(q) in N*m (gravity + springs) at zero speed:
+  /// the right-hand side of M q'' = f. Realizes `s` to Dynamics.
+  Eigen::VectorXd calcAppliedForces(SimTK::State& s) const;
+
+  /// Frame Jacobians of frames at `stations` (body frame, m) on `bodies`, restricted to
+  /// the columns of coordinates `cols`: rows 6t..6t+2 angular velocity (rad/s per unit
+  /// coordinate rate), rows 6t+3..6t+5 the station's linear velocity (m/s), world frame.
+  Eigen::MatrixXd calcFrameJacobians(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
+                                     const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols) const;
+
+  /// Scales gravity in state `s` (1 = the scene's g): for load continuation.
+  void setGravityScale(SimTK::State& s, double scale) const;
+
+  /// Position of a named point in the world frame (m); `s` realized to Position.
+  SimTK::Vec3 findPointLocation(const SimTK::State& s, const NamedPoint& p) const;
+
+ private:
+  SimTK::MultibodySystem system_;
+  SimTK::SimbodyMatterSubsystem matter_;
+  SimTK::GeneralForceSubsystem forces_;
+  SimTK::Vec3 gravity_W_;
+  SimTK::Force::Gravity gravity_;
+  std::vector<Coordinate> coords_;
+  std::vector<SimTK::QIndex> qindex_;
+  std::vector<SimTK::UIndex> uindex_;
+  std::vector<Part> parts_;
+  std::vector<BodyInfo> bodies_;
+  std::vector<NamedPoint> points_;
+  std::vector<PointLoad> loads_;
+  std::vector<Closure> closures_;
+  std::vector<int> dofs_;
+  SimTK::State reference_state_;
+  double total_mass_ = 0, moving_mass_ = 0;
+  std::vector<std::vector<int>> body_ancestors_;
+  std::vector<int> coord_body_;
+  bool only_gravity_and_pin_springs_ = false;
+  bool finalized_ = false;
+};
+
+}  // namespace mmv

@@ -1,0 +1,26 @@
+#pragma once
+/// Prescribed motions in time runs: a locked joint following a torquer slew
+/// (facility/slews.hpp) and a mobilizer following a table or ground motion program
+/// (facility/table_programs.hpp), as Simbody custom Motions with the position, its
+/// rate and its acceleration given analytically. Statics and modes do not see them.
+
+#include <Simbody.h>
+
+#include <memory>
+
+#include "facility/slews.hpp"
+#include "facility/table_programs.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+/// The facility program for a table motion spec.
+std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m);
+
+/// Prescribes a one-coordinate mobilizer's position by a program.
+void prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program);
+
+/// Prescribes a one-coordinate mobilizer's angle by a slew that starts at `start_s` (s).
+void prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s);
+
+}  // namespace mmv

@@ -1,0 +1,60 @@
+#pragma once
+/// Configuration maps: the system modes, and how well component-mode synthesis
+/// predicts them, over a grid of joint angles (one or two joints). At every grid
+/// point the scene's commanded angles are replaced, the equilibrium, linearization
+/// and modes are solved again, and the synthesis (sim/modes/cms.hpp) is compared with the
+/// full model. Modes are tracked from point to point by the MAC of their shapes at
+/// the named points (sim/modes/tracking.hpp), so a track follows one shape through
+/// crossings and veerings; a 2-D grid is walked back and forth (boustrophedon) so
+/// that consecutive points are neighbours.
+
+#include <string>
+#include <vector>
+
+#include "sim/modes/cms.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+struct GridAxis {
+  std::string joint;
+  double from_deg = 0, to_deg = 0, step_deg = 1;
+  std::vector<double> values() const;  ///< from, from+step, ..., up to to (inclusive within 1e-9 step).
+};
+
+struct SweepOptions {
+  std::vector<GridAxis> axes;  ///< one or two.
+  int modes = 6;               ///< tracks.
+  SynthesisOptions synthesis;  ///< compare_modes is set to modes + 4 (the tracking window).
+};
+
+struct TrackPoint {
+  int sorted_mode = 0;  ///< rank of the tracked mode at this point (1-based).
+  double frequency_hz = 0;
+  bool stable = true;
+  double mac_to_previous = 1;  ///< with the same track at the previous point.
+  double synth_hz = 0, synth_error = 0, synth_mac = 0;
+  std::string verdict, strain_link;
+};
+
+struct SweepPoint {
+  std::vector<double> angles_deg;  ///< one per axis.
+  bool solved = true;
+  std::string failure;             ///< why there is no result (e.g. a limit point of the equilibrium path).
+  std::vector<TrackPoint> tracks;  ///< empty when !solved.
+};
+
+struct SweepResult {
+  std::vector<GridAxis> axes;
+  std::string synthesis_method;
+  std::vector<SweepPoint> points;  ///< in walk order.
+  double min_tracking_mac = 1;     ///< worst MAC between consecutive points of any track.
+  int failed_points = 0;
+};
+
+/// Throws SceneError for an unknown joint. A grid point without an equilibrium (or
+/// with an ill-posed eigenproblem) is kept with solved = false and its failure; the
+/// tracks restart by frequency rank after it.
+SweepResult runSweep(const ArticleScene& scene, const SweepOptions& options);
+
+}  // namespace mmv

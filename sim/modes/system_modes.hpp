@@ -1,0 +1,136 @@
+#pragma once
+/// The `modes` analysis: build the scene's model, solve its static equilibrium with
+/// the torquers holding, linearize there and solve the system modes; then describe
+/// each mode the way a test engineer reads it. Results are plain data for the writers.
+///
+/// Per mode:
+///  - kinetic and strain energy shares per part (link, torquer, tip mass): kinetic
+///    from each body's mass centre velocity and spin in the shape, strain from the
+///    springs (hinges of a link; a servo joint counts as its joint);
+///  - the same shares per link, each link counted with the lumped masses it carries
+///    (its tip mass, the torquers at its tip): "which link carries the mode";
+///  - the preload's share of the modal stiffness, phi^T K_geometric phi / omega^2
+///    (gravity, loads and closure forces; negative when the preload softens);
+///  - effective modal masses for base translation in x and y, L^2 with
+///    L = sum_b m_b (J_b phi) . e (the mass a base shaker "sees" in that mode; they add
+///    up over all modes to the mass that moves relative to the base);
+///  - the modal mass for the shape scaled to 1 m at its largest translation (kg);
+///  - the shape at named points (translations, and rotations where meaningful).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/model/model.hpp"
+#include "sim/modes/modal.hpp"
+#include "sim/statics/linearize.hpp"
+#include "sim/scene/scene.hpp"
+#include "sim/statics/statics.hpp"
+
+namespace mmv {
+
+struct PartShare {
+  std::string part;
+  double fraction = 0;  ///< 0..1.
+};
+
+struct PointMotion {
+  std::string point;
+  double ux = 0, uy = 0;  ///< m per unit modal coordinate (mass-normalised shape).
+  double rz = 0;          ///< rad per unit modal coordinate (when has_rotation).
+  bool has_rotation = false;
+};
+
+struct ModeInfo {
+  int number = 0;  ///< 1-based.
+  double omega2 = 0;  ///< rad^2/s^2.
+  double frequency_hz = 0;  ///< meaningful when stable; 0 for a rigid-body mode.
+  bool stable = true;
+  bool rigid_body = false;  ///< zero frequency up to round-off (a mechanism).
+  double modal_mass_kg = 0;  ///< for the shape scaled to 1 m at peak_point.
+  std::string peak_point;
+  double effective_mass_x_kg = 0, effective_mass_y_kg = 0;
+  double geometric_stiffness_share = 0;
+  std::vector<PartShare> kinetic, strain;  ///< per part, sorted, largest first.
+  std::vector<PartShare> kinetic_by_link, strain_by_link;  ///< per carrying link, sorted.
+  std::string dominant_link_kinetic, dominant_link_strain;  ///< first of the *_by_link lists.
+  std::vector<PointMotion> shape;
+};
+
+struct JointReport {
+  std::string name;
+  std::string hold;  ///< locked, free, servo.
+  double commanded_rad = 0, equilibrium_rad = 0;
+  double torque_nm = 0;  ///< torque the torquer applies to its child (ccw +).
+};
+
+struct ClosureReport {
+  std::string name;
+  double fx = 0, fy = 0;  ///< N, force the closure applies to the article's point, world frame.
+  double error_m = 0;     ///< largest |Phi| of its rows at the equilibrium.
+};
+
+struct PointReport {
+  std::string name;
+  double x = 0, y = 0;    ///< m, deflected equilibrium, world frame.
+  double dx = 0, dy = 0;  ///< m, deflection: equilibrium minus the unbent shape.
+};
+
+struct ModelSummary {
+  int num_links = 0, num_bodies = 0, num_coordinates = 0, num_dofs = 0;
+  double total_mass_kg = 0, moving_mass_kg = 0;
+  std::vector<std::pair<std::string, int>> link_segments;  ///< 0 for rigid.
+};
+
+struct ModesReport {
+  std::string scene_name, scene_source;
+  std::array<double, 3> gravity{};
+  ModelSummary model;
+  bool equilibrium_converged = false;
+  int equilibrium_iterations = 0;
+  double equilibrium_residual_nm = 0, force_scale_nm = 0;
+  std::vector<JointReport> joints;
+  std::vector<ClosureReport> closures;
+  std::vector<PointReport> points;
+  std::vector<ModeInfo> modes;
+  double eigen_residual = 0, orthogonality_error = 0, stiffness_asymmetry = 0;
+  double seconds_build = 0, seconds_equilibrium = 0, seconds_linearize = 0, seconds_eigen = 0;
+};
+
+struct ModesOptions {
+  int max_modes = 0;        ///< 0: all.
+  bool with_shapes = true;  ///< fill ModeInfo::shape.
+  EquilibriumOptions equilibrium;
+};
+
+/// Runs the analysis. Throws NumericalError if the equilibrium does not converge or
+/// the eigenproblem is ill-posed.
+ModesReport runModes(const ArticleScene& scene, const ModesOptions& options = {});
+
+/// The solved full model: model, equilibrium, linearization and modes.
+struct SolvedScene {
+  std::unique_ptr<Model> model;
+  EquilibriumResult equilibrium;
+  LinearizedModel linearized;
+  ModalSolution modes;
+  double seconds_build = 0, seconds_equilibrium = 0, seconds_linearize = 0, seconds_eigen = 0;
+};
+/// Throws NumericalError if the equilibrium fails or the eigenproblem is ill-posed.
+SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq = {});
+
+/// Translations (x, y) of every named point per unit DOF motion at state s: rows
+/// 2p, 2p+1 for point p, columns over `dofs`. P * phi is a shape as a test sees it.
+Eigen::MatrixXd pointTranslationMatrix(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+
+/// The link with the largest share of the strain energy of shape phi (over the
+/// model's DOFs), with lumped parts counted with their link; "" if none strains.
+std::string dominantStrainLink(const Model& model, const std::vector<int>& dofs, const Eigen::VectorXd& phi);
+
+/// Frequencies only (Hz, negative for unstable shapes), the cheap path for sweeps.
+struct ModesSolve {
+  Eigen::VectorXd frequencies_hz;
+  int num_dofs = 0;
+};
+ModesSolve solveSceneModes(const ArticleScene& scene, const EquilibriumOptions& eq = {});
+
+}  // namespace mmv

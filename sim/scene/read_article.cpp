@@ -1,0 +1,389 @@
+// Scene sections of an article: materials, sections, base (table, gimbal), joints,
+// links, closures, loads; the tree check.
+#include <set>
+
+#include "sim/core/integrators.hpp"
+#include "sim/scene/reader_util.hpp"
+
+namespace mmv::scene_detail {
+
+namespace {
+
+LumpedMass readLumpedMass(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  auto m = r.mapping(n, path, {"mass", "rotary_inertia"});
+  LumpedMass out;
+  out.mass = r.positive(r.require(m, n, path, "mass"), path + ".mass", " kg");
+  if (m.count("rotary_inertia"))
+    out.rotary_inertia = r.nonNegative(m.at("rotary_inertia"), path + ".rotary_inertia", " kg*m^2");
+  return out;
+}
+
+Section readSection(const YamlReader& r, const std::string& name, const YAML::Node& n,
+                    const std::string& path) {
+  auto m = r.mapping(n, path, {"shape", "b", "h", "t", "radius", "area", "second_moment"});
+  Section s;
+  s.name = name;
+  const YAML::Node& shape = r.require(m, n, path, "shape");
+  const std::string kind = r.text(shape, path + ".shape");
+  auto need = [&](const char* key) -> const YAML::Node& { return r.require(m, n, path, key); };
+  auto forbid = [&](std::initializer_list<const char*> keys) {
+    for (const char* k : keys)
+      if (m.count(k))
+        r.fail(m.at(k).Mark(), path + "." + k + " does not apply to shape '" + kind + "'");
+  };
+  if (kind == "rectangle") {
+    s.shape = SectionShape::Rectangle;
+    forbid({"t", "radius", "area", "second_moment"});
+    s.b = r.positive(need("b"), path + ".b", " m");
+    s.h = r.positive(need("h"), path + ".h", " m");
+  } else if (kind == "rectangular_tube") {
+    s.shape = SectionShape::RectangularTube;
+    forbid({"radius", "area", "second_moment"});
+    s.b = r.positive(need("b"), path + ".b", " m");
+    s.h = r.positive(need("h"), path + ".h", " m");
+    s.t = r.positive(need("t"), path + ".t", " m");
+    if (2 * s.t >= std::min(s.b, s.h))
+      r.fail(need("t").Mark(), path + ".t must be < min(b, h)/2 m so the tube has a hole (got " +
+                                   need("t").Scalar() + ")");
+  } else if (kind == "round_rod") {
+    s.shape = SectionShape::RoundRod;
+    forbid({"b", "h", "t", "area", "second_moment"});
+    s.radius = r.positive(need("radius"), path + ".radius", " m");
+  } else if (kind == "explicit") {
+    s.shape = SectionShape::Explicit;
+    forbid({"b", "h", "t", "radius"});
+    s.explicit_area = r.positive(need("area"), path + ".area", " m^2");
+    s.explicit_second_moment = r.positive(need("second_moment"), path + ".second_moment", " m^4");
+  } else {
+    r.fail(shape.Mark(), path + ".shape: unknown shape '" + kind +
+                             "' (known: rectangle, rectangular_tube, round_rod, explicit)");
+  }
+  return s;
+}
+
+class SceneParser {
+ public:
+  SceneParser(const YamlReader& r) : r_(r) {}
+
+  ArticleScene parse(const YAML::Node& root, const std::string& source) {
+    auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
+                                     "links", "closures", "loads", "damping", "simulation", "sensors"});
+    ArticleScene scene;
+    scene.source = source;
+    scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
+    if (top.count("gravity")) {
+      scene.gravity = r_.vec3(top.at("gravity"), "gravity");
+      if (scene.gravity[2] != 0.0)
+        r_.fail(top.at("gravity")[2].Mark(),
+                "gravity[2] must be 0 m/s^2: the article moves in the x-y plane (got " +
+                    top.at("gravity")[2].Scalar() + ")");
+    }
+    ArticleSpec& a = scene.article;
+    readMaterials(r_.require(top, root, "", "materials"), a);
+    readSections(r_.require(top, root, "", "sections"), a);
+    if (top.count("base")) readBase(top.at("base"), a.base);
+    readJoints(r_.require(top, root, "", "joints"), a);
+    readLinks(r_.require(top, root, "", "links"), a);
+    checkTree(a);
+    if (top.count("closures")) readClosures(top.at("closures"), a);
+    if (top.count("loads")) readLoads(top.at("loads"), a);
+    if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
+    if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"));
+    if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
+    return scene;
+  }
+
+ private:
+  void readMaterials(const YAML::Node& n, ArticleSpec& a) {
+    auto m = r_.mapping(n, "materials", namesOf(n, "materials"));
+    for (const auto& [name, node] : m) {
+      const std::string path = "materials." + name;
+      auto mm = r_.mapping(node, path, {"density", "youngs_modulus"});
+      Material mat;
+      mat.name = name;
+      mat.density = r_.positive(r_.require(mm, node, path, "density"), path + ".density", " kg/m^3");
+      mat.youngs_modulus =
+          r_.positive(r_.require(mm, node, path, "youngs_modulus"), path + ".youngs_modulus", " Pa");
+      a.materials.push_back(mat);
+    }
+  }
+
+  void readSections(const YAML::Node& n, ArticleSpec& a) {
+    auto m = r_.mapping(n, "sections", namesOf(n, "sections"));
+    for (const auto& [name, node] : m) a.sections.push_back(readSection(r_, name, node, "sections." + name));
+  }
+
+  /// Every key of a name->item mapping is allowed; duplicates are still caught.
+  std::vector<std::string> namesOf(const YAML::Node& n, const std::string& path) {
+    if (!n.IsMap()) r_.fail(n.Mark(), path + " must be a mapping of names (got " + YamlReader::show(n) + ")");
+    std::vector<std::string> keys;
+    for (auto it = n.begin(); it != n.end(); ++it)
+      if (it->first.IsScalar()) keys.push_back(it->first.Scalar());
+    if (keys.empty()) r_.fail(n.Mark(), path + " must name at least one entry");
+    return keys;
+  }
+
+  /// base.gimbal: {yaw|pitch|roll: {angle_deg, slew, range_deg, torque_capacity}, ring_mass, ring_inertia}.
+  /// A commanded angle or a slew's end beyond the axis's range is an error at its line.
+  GimbalSpec readGimbal(const YAML::Node& n) {
+    auto m = r_.mapping(n, "base.gimbal", {"yaw", "pitch", "roll", "ring_mass", "ring_inertia"});
+    GimbalSpec g;
+    for (auto [name, axis] : {std::pair<const char*, GimbalAxisSpec*>{"yaw", &g.yaw}, {"pitch", &g.pitch}, {"roll", &g.roll}}) {
+      if (!m.count(name)) continue;
+      const std::string path = std::string("base.gimbal.") + name;
+      const YAML::Node& an = m.at(name);
+      auto am = r_.mapping(an, path, {"angle_deg", "slew", "range_deg", "torque_capacity"});
+      if (am.count("range_deg")) axis->range = r_.positive(am.at("range_deg"), path + ".range_deg", " deg") * kDegToRad;
+      if (am.count("torque_capacity"))
+        axis->torque_capacity = r_.positive(am.at("torque_capacity"), path + ".torque_capacity", " N*m");
+      auto within = [&](const YAML::Node& v, double angle, const std::string& key) {
+        if (std::abs(angle) > axis->range + 1e-12)
+          r_.fail(v.Mark(), key + ": " + v.Scalar() + " deg is beyond the gimbal's +-" +
+                                std::to_string(static_cast<int>(std::lround(axis->range / kDegToRad))) + " deg " + name + " range");
+      };
+      if (am.count("angle_deg")) {
+        axis->angle = r_.number(am.at("angle_deg"), path + ".angle_deg") * kDegToRad;
+        within(am.at("angle_deg"), axis->angle, path + ".angle_deg");
+      }
+      if (am.count("slew")) {
+        axis->slew = readSlew(r_, am.at("slew"), path + ".slew");
+        within(am.at("slew")["to_deg"], axis->slew->to, path + ".slew.to_deg");
+      }
+    }
+    if (m.count("ring_mass")) g.ring_mass = r_.positive(m.at("ring_mass"), "base.gimbal.ring_mass", " kg");
+    if (m.count("ring_inertia")) g.ring_inertia = r_.positive(m.at("ring_inertia"), "base.gimbal.ring_inertia", " kg*m^2");
+    return g;
+  }
+
+  void readBase(const YAML::Node& n, BaseSpec& b) {
+    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg", "table_mass", "motion", "gimbal"});
+    if (m.count("type")) {
+      const std::string t = r_.text(m.at("type"), "base.type");
+      if (t == "table") b.type = BaseType::Table;
+      else if (t != "fixed") r_.fail(m.at("type").Mark(), "base.type: unknown base type '" + t + "' (known: fixed, table)");
+    }
+    for (const char* k : {"table_mass", "motion"})
+      if (m.count(k) && b.type != BaseType::Table) r_.fail(m.at(k).Mark(), std::string("base.") + k + " applies only with type: table");
+    if (m.count("table_mass")) b.table_mass = r_.positive(m.at("table_mass"), "base.table_mass", " kg");
+    if (m.count("motion")) b.motion = readTableMotion(r_, m.at("motion"), "base.motion", {});
+    if (m.count("position")) {
+      b.position = r_.vec3(m.at("position"), "base.position");
+      if (b.position[2] != 0.0)
+        r_.fail(m.at("position")[2].Mark(), "base.position[2] must be 0 m: the article moves in the x-y plane (got " +
+                                                m.at("position")[2].Scalar() + ")");
+    }
+    if (m.count("direction_deg")) b.direction = r_.number(m.at("direction_deg"), "base.direction_deg") * kDegToRad;
+    if (m.count("gimbal")) b.gimbal = readGimbal(m.at("gimbal"));
+  }
+
+  void checkName(const YAML::Node& n, const std::string& path, const std::string& name) {
+    if (name == "base") r_.fail(n.Mark(), path + ": the name 'base' is reserved (got base)");
+    if (name.find_first_of(". \t/") != std::string::npos)
+      r_.fail(n.Mark(), path + " must not contain '.', '/' or spaces (got " + name + ")");
+    if (!names_.insert(name).second)
+      r_.fail(n.Mark(), path + ": name '" + name + "' is used twice among joints and links");
+  }
+
+  void readJoints(const YAML::Node& n, ArticleSpec& a) {
+    const std::size_t count = r_.sequence(n, "joints");
+    for (std::size_t i = 0; i < count; ++i) {
+      const YAML::Node& jn = n[i];
+      const std::string path = "joints[" + std::to_string(i) + "]";
+      auto m = r_.mapping(jn, path, {"name", "parent", "angle_deg", "hold", "servo_stiffness", "torquer", "slew",
+                                     "torque_capacity", "torque"});
+      JointSpec j;
+      const YAML::Node& name = r_.require(m, jn, path, "name");
+      j.name = r_.text(name, path + ".name");
+      checkName(name, path + ".name", j.name);
+      j.parent = r_.text(r_.require(m, jn, path, "parent"), path + ".parent");
+      joint_parent_marks_[j.name] = {m.at("parent").Mark(), path + ".parent"};
+      if (m.count("angle_deg")) j.angle = r_.number(m.at("angle_deg"), path + ".angle_deg") * kDegToRad;
+      if (m.count("hold")) {
+        const std::string h = r_.text(m.at("hold"), path + ".hold");
+        if (h == "locked") j.hold = JointHold::Locked;
+        else if (h == "free") j.hold = JointHold::Free;
+        else if (h == "servo") j.hold = JointHold::Servo;
+        else r_.fail(m.at("hold").Mark(), path + ".hold: unknown hold '" + h + "' (known: locked, free, servo)");
+      }
+      if (j.hold == JointHold::Servo) {
+        j.servo_stiffness = r_.positive(r_.require(m, jn, path, "servo_stiffness"),
+                                        path + ".servo_stiffness", " N*m/rad");
+      } else if (m.count("servo_stiffness")) {
+        r_.fail(m.at("servo_stiffness").Mark(), path + ".servo_stiffness applies only with hold: servo");
+      }
+      if (m.count("torquer")) j.torquer = readLumpedMass(r_, m.at("torquer"), path + ".torquer");
+      if (m.count("torque_capacity"))
+        j.torque_capacity = r_.positive(m.at("torque_capacity"), path + ".torque_capacity", " N*m");
+      if (m.count("slew")) {
+        const YAML::Node& sn = m.at("slew");
+        if (j.hold != JointHold::Locked)
+          r_.fail(sn.Mark(), path + ".slew: only a locked joint (its torquer holding the angle) follows a slew");
+        j.slew = readSlew(r_, sn, path + ".slew");
+      }
+      if (m.count("torque")) {
+        const YAML::Node& tn = m.at("torque");
+        if (j.hold == JointHold::Locked)
+          r_.fail(tn.Mark(), path + ".torque: a commanded torque needs a joint that moves (hold: free or servo)");
+        j.torque_input = readTableMotion(r_, tn, path + ".torque", {}, " N*m");
+      }
+      joint_marks_[j.name] = {jn.Mark(), path};
+      a.joints.push_back(j);
+    }
+  }
+
+  void readLinks(const YAML::Node& n, ArticleSpec& a) {
+    const std::size_t count = r_.sequence(n, "links");
+    for (std::size_t i = 0; i < count; ++i) {
+      const YAML::Node& ln = n[i];
+      const std::string path = "links[" + std::to_string(i) + "]";
+      auto m = r_.mapping(ln, path, {"name", "joint", "material", "section", "length", "segments",
+                                     "mount_angle_deg", "tip_mass", "branches"});
+      LinkSpec l;
+      const YAML::Node& name = r_.require(m, ln, path, "name");
+      l.name = r_.text(name, path + ".name");
+      const YAML::Node& joint = r_.require(m, ln, path, "joint");
+      l.joint = r_.text(joint, path + ".joint");
+      r_.known(joint, path + ".joint", "joint", l.joint, a.joints);
+      const YAML::Node& mat = r_.require(m, ln, path, "material");
+      l.material = r_.text(mat, path + ".material");
+      r_.known(mat, path + ".material", "material", l.material, a.materials);
+      const YAML::Node& sec = r_.require(m, ln, path, "section");
+      l.section = r_.text(sec, path + ".section");
+      r_.known(sec, path + ".section", "section", l.section, a.sections);
+      l.length = r_.positive(r_.require(m, ln, path, "length"), path + ".length", " m");
+      const YAML::Node& seg = r_.require(m, ln, path, "segments");
+      if (seg.IsScalar() && seg.Scalar() == "rigid") {
+        l.rigid = true;
+      } else {
+        if (!seg.IsScalar()) r_.fail(seg.Mark(), path + ".segments must be an integer >= 1 or 'rigid' (got " + YamlReader::show(seg) + ")");
+        char* end = nullptr;
+        const long v = std::strtol(seg.Scalar().c_str(), &end, 10);
+        if (*end != '\0' || end == seg.Scalar().c_str() || v < 1 || v > limits::kMaxSegments)
+          r_.fail(seg.Mark(), path + ".segments must be an integer from 1 to " + std::to_string(limits::kMaxSegments) +
+                                  " or 'rigid' (got " + seg.Scalar() + ")");
+        l.segments = static_cast<int>(v);
+      }
+      if (m.count("mount_angle_deg")) l.mount_angle = r_.number(m.at("mount_angle_deg"), path + ".mount_angle_deg") * kDegToRad;
+      if (m.count("tip_mass")) l.tip_mass = readLumpedMass(r_, m.at("tip_mass"), path + ".tip_mass");
+
+      int count = 1;
+      double spread = 0;
+      if (m.count("branches")) {
+        const YAML::Node& bn = m.at("branches");
+        auto bm = r_.mapping(bn, path + ".branches", {"count", "angle_deg"});
+        const YAML::Node& c = r_.require(bm, bn, path + ".branches", "count");
+        count = r_.integer(c, path + ".branches.count");
+        if (count < 1 || count > 26) r_.fail(c.Mark(), path + ".branches.count must be 1 to 26 (got " + c.Scalar() + ")");
+        if (count > 1) spread = r_.number(r_.require(bm, bn, path + ".branches", "angle_deg"), path + ".branches.angle_deg") * kDegToRad;
+      }
+      for (int k = 0; k < count; ++k) {
+        LinkSpec b = l;
+        if (count > 1) {
+          b.name = l.name + static_cast<char>('a' + k);
+          b.mount_angle += -0.5 * spread + spread * k / (count - 1);
+        }
+        checkName(name, path + ".name", b.name);
+        link_marks_[b.name] = {ln.Mark(), path};
+        a.links.push_back(b);
+      }
+    }
+  }
+
+  void readClosures(const YAML::Node& n, ArticleSpec& a) {
+    const std::size_t count = r_.sequence(n, "closures");
+    for (std::size_t i = 0; i < count; ++i) {
+      const YAML::Node& cn = n[i];
+      const std::string path = "closures[" + std::to_string(i) + "]";
+      auto m = r_.mapping(cn, path, {"name", "point", "to", "type", "at", "direction_deg"});
+      ClosureSpec c;
+      c.name = m.count("name") ? r_.text(m.at("name"), path + ".name") : "closure" + std::to_string(i + 1);
+      c.point = readPoint(r_, r_.require(m, cn, path, "point"), path + ".point", a);
+      if (m.count("to") && r_.text(m.at("to"), path + ".to") != "ground") {
+        c.to = readPoint(r_, m.at("to"), path + ".to", a);
+        if (c.to == c.point) r_.fail(m.at("to").Mark(), path + ".to must differ from its point (got " + c.to + ")");
+        if (m.count("at")) r_.fail(m.at("at").Mark(), path + ".at applies only to closures to the ground");
+      }
+      if (m.count("type")) {
+        const std::string t = r_.text(m.at("type"), path + ".type");
+        if (t == "pin" || t == "ball") c.type = ClosureType::Pin;
+        else if (t == "slider") c.type = ClosureType::Slider;
+        else r_.fail(m.at("type").Mark(), path + ".type: unknown closure type '" + t + "' (known: pin, ball, slider)");
+      }
+      if (m.count("direction_deg")) {
+        if (c.type != ClosureType::Slider)
+          r_.fail(m.at("direction_deg").Mark(), path + ".direction_deg applies only with type: slider");
+        c.direction = r_.number(m.at("direction_deg"), path + ".direction_deg") * kDegToRad;
+      }
+      if (m.count("at") && c.to == "ground") {
+        c.at = r_.vec3(m.at("at"), path + ".at");
+        if ((*c.at)[2] != 0.0)
+          r_.fail(m.at("at")[2].Mark(), path + ".at[2] must be 0 m: the article moves in the x-y plane (got " +
+                                            m.at("at")[2].Scalar() + ")");
+      }
+      c.where = r_.position(cn.Mark());
+      a.closures.push_back(c);
+    }
+  }
+
+  void readLoads(const YAML::Node& n, ArticleSpec& a) {
+    const std::size_t count = r_.sequence(n, "loads");
+    for (std::size_t i = 0; i < count; ++i) {
+      const YAML::Node& ln = n[i];
+      const std::string path = "loads[" + std::to_string(i) + "]";
+      auto m = r_.mapping(ln, path, {"point", "force"});
+      LoadSpec l;
+      l.point = readPoint(r_, r_.require(m, ln, path, "point"), path + ".point", a);
+      const YAML::Node& f = r_.require(m, ln, path, "force");
+      l.force = r_.vec3(f, path + ".force");
+      if (l.force[2] != 0.0)
+        r_.fail(f[2].Mark(), path + ".force[2] must be 0 N: the article moves in the x-y plane (got " + f[2].Scalar() + ")");
+      l.where = r_.position(ln.Mark());
+      a.loads.push_back(l);
+    }
+  }
+
+  /// Every joint hangs from the base or an existing link, carries a link, and the
+  /// links form a tree rooted at the base.
+  void checkTree(const ArticleSpec& a) {
+    for (const auto& j : a.joints) {
+      if (j.parent != "base" && !a.findLink(j.parent)) {
+        std::vector<std::string> known{"base"};
+        for (const auto& l : a.links) known.push_back(l.name);
+        const auto& loc = joint_parent_marks_.at(j.name);
+        r_.fail(loc.mark, loc.path + ": unknown parent '" + j.parent + "' (known: " + joinNames(known) + ")");
+      }
+      bool carries = false;
+      for (const auto& l : a.links) carries = carries || l.joint == j.name;
+      if (!carries) {
+        const auto& loc = joint_marks_.at(j.name);
+        r_.fail(loc.mark, loc.path + ": joint '" + j.name + "' carries no link");
+      }
+    }
+    for (const auto& l : a.links) {
+      // Walk towards the base; a walk longer than the number of links is a cycle.
+      std::string at = l.name;
+      for (std::size_t steps = 0;; ++steps) {
+        const LinkSpec* cur = a.findLink(at);
+        const std::string parent = a.findJoint(cur->joint)->parent;
+        if (parent == "base") break;
+        if (steps > a.links.size()) {
+          const auto& loc = link_marks_.at(l.name);
+          r_.fail(loc.mark, loc.path + ": link '" + l.name + "' is not connected to the base (its joints form a loop)");
+        }
+        at = parent;
+      }
+    }
+  }
+
+  const YamlReader& r_;
+  std::set<std::string> names_;
+  std::map<std::string, Located> joint_marks_, joint_parent_marks_, link_marks_;
+};
+
+}  // namespace
+
+ArticleScene readArticleScene(const YamlReader& r, const YAML::Node& root, const std::string& source) {
+  return SceneParser(r).parse(root, source);
+}
+
+}  // namespace mmv::scene_detail

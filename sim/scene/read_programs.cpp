@@ -1,0 +1,87 @@
+// Scene sections: table, ground and torque programs; torquer and gimbal slews.
+#include <filesystem>
+#include <fstream>
+
+#include "sim/scene/reader_util.hpp"
+
+namespace mmv::scene_detail {
+
+TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std::string& path,
+                            const std::vector<std::string>& extra, const std::string& unit) {
+  std::vector<std::string> keys{"type", "amplitude", "frequency_hz", "ramp_s", "from_hz", "to_hz", "duration", "log", "rms", "seed", "file"};
+  keys.insert(keys.end(), extra.begin(), extra.end());
+  auto mm = r.mapping(mn, path, keys);
+  const YAML::Node& tn = r.require(mm, mn, path, "type");
+  const std::string t = r.text(tn, path + ".type");
+  auto need = [&](const char* k) -> const YAML::Node& { return r.require(mm, mn, path, k); };
+  auto only = [&](std::initializer_list<const char*> allowed) {
+    for (const auto& [k, v] : mm) {
+      bool ok = k == "type" || std::find(extra.begin(), extra.end(), k) != extra.end();
+      for (const char* a : allowed) ok = ok || k == a;
+      if (!ok) r.fail(v.Mark(), path + "." + k + " does not apply to a " + t + " program");
+    }
+  };
+  TableMotion tm;
+  if (t == "sine") {
+    only({"amplitude", "frequency_hz", "ramp_s"});
+    tm.type = TableMotion::Type::Sine;
+    if (mm.count("ramp_s")) tm.ramp = r.nonNegative(mm.at("ramp_s"), path + ".ramp_s", " s");
+    tm.amplitude = r.number(need("amplitude"), path + ".amplitude");
+    tm.frequency_hz = r.positive(need("frequency_hz"), path + ".frequency_hz", " Hz");
+  } else if (t == "sweep") {
+    only({"amplitude", "from_hz", "to_hz", "duration", "log"});
+    tm.type = TableMotion::Type::Sweep;
+    tm.amplitude = r.number(need("amplitude"), path + ".amplitude");
+    tm.from_hz = r.positive(need("from_hz"), path + ".from_hz", " Hz");
+    tm.to_hz = r.positive(need("to_hz"), path + ".to_hz", " Hz");
+    tm.duration = r.positive(need("duration"), path + ".duration", " s");
+    if (mm.count("log")) {
+      const std::string l = r.text(mm.at("log"), path + ".log");
+      if (l != "true" && l != "false") r.fail(mm.at("log").Mark(), path + ".log must be true or false (got " + l + ")");
+      tm.logarithmic = l == "true";
+    }
+  } else if (t == "random") {
+    only({"rms", "from_hz", "to_hz", "duration", "seed"});
+    tm.type = TableMotion::Type::Random;
+    tm.rms = r.nonNegative(need("rms"), path + ".rms", unit);
+    tm.from_hz = r.positive(need("from_hz"), path + ".from_hz", " Hz");
+    tm.to_hz = r.positive(need("to_hz"), path + ".to_hz", " Hz");
+    if (tm.to_hz <= tm.from_hz) r.fail(mm.at("to_hz").Mark(), path + ".to_hz must be > from_hz (got " + mm.at("to_hz").Scalar() + ")");
+    tm.duration = r.positive(need("duration"), path + ".duration", " s");
+    if (mm.count("seed")) tm.seed = static_cast<std::uint64_t>(r.integer(mm.at("seed"), path + ".seed"));
+  } else if (t == "csv") {
+    only({"file"});
+    tm.type = TableMotion::Type::Profile;
+    const YAML::Node& fn = need("file");
+    std::filesystem::path file = r.text(fn, path + ".file");
+    if (file.is_relative()) file = std::filesystem::path(r.file()).parent_path() / file;
+    std::ifstream in(file);
+    if (!in) r.fail(fn.Mark(), path + ".file: cannot read profile '" + file.string() + "'");
+    std::ostringstream os;
+    os << in.rdbuf();
+    tm.profile_csv = os.str();
+    tm.profile_source = file.string();
+  } else {
+    r.fail(tn.Mark(), path + ".type: unknown program '" + t + "' (known: sine, sweep, random, csv)");
+  }
+  return tm;
+}
+
+SlewSpec readSlew(const YamlReader& r, const YAML::Node& sn, const std::string& path) {
+  auto sm = r.mapping(sn, path, {"to_deg", "start_s", "shape", "max_rate_deg_s", "max_acceleration_deg_s2"});
+  SlewSpec sl;
+  sl.to = r.number(r.require(sm, sn, path, "to_deg"), path + ".to_deg") * kDegToRad;
+  if (sm.count("start_s")) sl.start_time = r.nonNegative(sm.at("start_s"), path + ".start_s", " s");
+  if (sm.count("shape")) {
+    const std::string sh = r.text(sm.at("shape"), path + ".shape");
+    if (sh != "cycloidal" && sh != "trapezoidal")
+      r.fail(sm.at("shape").Mark(), path + ".shape: unknown shape '" + sh + "' (known: cycloidal, trapezoidal)");
+    sl.trapezoidal = sh == "trapezoidal";
+  }
+  if (sm.count("max_rate_deg_s")) sl.max_rate = r.positive(sm.at("max_rate_deg_s"), path + ".max_rate_deg_s", " deg/s") * kDegToRad;
+  if (sm.count("max_acceleration_deg_s2"))
+    sl.max_acceleration = r.positive(sm.at("max_acceleration_deg_s2"), path + ".max_acceleration_deg_s2", " deg/s^2") * kDegToRad;
+  return sl;
+}
+
+}  // namespace mmv::scene_detail

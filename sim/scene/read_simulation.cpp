@@ -1,0 +1,103 @@
+// Scene sections: simulation settings, sensors, damping.
+#include "sim/core/integrators.hpp"
+#include "sim/scene/reader_util.hpp"
+
+namespace mmv::scene_detail {
+
+SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n) {
+  auto m = r.mapping(n, "simulation", {"duration", "integrator", "accuracy", "absolute_tolerance", "sample_rate_hz", "start",
+                                        "score_points"});
+  SimulationSpec s;
+  if (m.count("duration")) s.duration = r.positive(m.at("duration"), "simulation.duration", " s");
+  if (m.count("integrator")) {
+    s.integrator = r.text(m.at("integrator"), "simulation.integrator");
+    if (!findIntegrator(s.integrator))
+      r.fail(m.at("integrator").Mark(), "simulation.integrator: unknown integrator '" + s.integrator + "'" +
+                                            integratorSuggestion(s.integrator) + " (known: " + integratorNames() + ")");
+  }
+  if (m.count("accuracy")) {
+    s.accuracy = r.positive(m.at("accuracy"), "simulation.accuracy", "");
+    if (s.accuracy >= 1)
+      r.fail(m.at("accuracy").Mark(), "simulation.accuracy must be below 1 (a relative accuracy; got " + m.at("accuracy").Scalar() + ")");
+  }
+  if (m.count("absolute_tolerance")) {
+    s.absolute_tolerance = r.positive(m.at("absolute_tolerance"), "simulation.absolute_tolerance", "");
+    if (s.absolute_tolerance >= 1)
+      r.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance must be below 1 (got " + m.at("absolute_tolerance").Scalar() + ")");
+    if (!isSundialsIntegrator(s.integrator))
+      r.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance applies to the SUNDIALS integrators "
+                                                 "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ida; got integrator " + s.integrator + ")");
+  }
+  if (m.count("sample_rate_hz")) s.sample_rate_hz = r.positive(m.at("sample_rate_hz"), "simulation.sample_rate_hz", " Hz");
+  if (m.count("start")) {
+    const std::string st = r.text(m.at("start"), "simulation.start");
+    if (st != "equilibrium" && st != "rest") r.fail(m.at("start").Mark(), "simulation.start: unknown start '" + st + "' (known: equilibrium, rest)");
+    s.from_equilibrium = st == "equilibrium";
+  }
+  if (m.count("score_points")) {
+    const YAML::Node& sp = m.at("score_points");
+    const std::size_t count = r.sequence(sp, "simulation.score_points");
+    for (std::size_t i = 0; i < count; ++i)
+      s.score_points.push_back(r.text(sp[i], "simulation.score_points[" + std::to_string(i) + "]"));
+    s.score_where = r.file() + ":" + std::to_string(sp.Mark().line + 1) + ":" + std::to_string(sp.Mark().column + 1);
+  }
+  return s;
+}
+
+void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) {
+  const std::size_t count = r.sequence(n, "sensors");
+  for (std::size_t i = 0; i < count; ++i) {
+    const YAML::Node& sn = n[i];
+    const std::string path = "sensors[" + std::to_string(i) + "]";
+    auto m = r.mapping(sn, path, {"name", "type", "joint", "point", "axis", "noise_sigma", "seed"});
+    SensorSceneSpec s;
+    s.name = r.text(r.require(m, sn, path, "name"), path + ".name");
+    const YAML::Node& tn = r.require(m, sn, path, "type");
+    s.type = r.text(tn, path + ".type");
+    if (s.type == "encoder") {
+      const YAML::Node& jn = r.require(m, sn, path, "joint");
+      s.target = r.text(jn, path + ".joint");
+      r.known(jn, path + ".joint", "joint", s.target, scene.article.joints);
+      if (m.count("point") || m.count("axis")) r.fail(sn.Mark(), path + ": an encoder reads a joint, not a point or axis");
+    } else if (s.type == "rate_gyro" || s.type == "accelerometer") {
+      s.target = readPoint(r, r.require(m, sn, path, "point"), path + ".point", scene.article);
+      if (m.count("joint")) r.fail(m.at("joint").Mark(), path + ".joint applies only to encoders");
+      if (m.count("axis")) {
+        if (s.type != "accelerometer") r.fail(m.at("axis").Mark(), path + ".axis applies only to accelerometers");
+        const std::string a = r.text(m.at("axis"), path + ".axis");
+        if (a != "axial" && a != "transverse")
+          r.fail(m.at("axis").Mark(), path + ".axis: unknown axis '" + a + "' (known: axial, transverse)");
+        s.axis = a == "transverse";
+      }
+    } else {
+      r.fail(tn.Mark(), path + ".type: unknown sensor '" + s.type + "' (known: encoder, rate_gyro, accelerometer)");
+    }
+    if (m.count("noise_sigma")) s.noise_sigma = r.nonNegative(m.at("noise_sigma"), path + ".noise_sigma", "");
+    if (m.count("seed")) s.seed = static_cast<std::uint64_t>(r.integer(m.at("seed"), path + ".seed"));
+    s.where = r.position(sn.Mark());
+    scene.sensors.push_back(s);
+  }
+}
+
+DampingSpec readDamping(const YamlReader& r, const YAML::Node& n) {
+  auto m = r.mapping(n, "damping", {"modal_ratio", "rayleigh", "hinge_beta"});
+  if (m.size() != 1) r.fail(n.Mark(), "damping must give exactly one of modal_ratio, rayleigh, hinge_beta");
+  DampingSpec d;
+  if (m.count("modal_ratio")) {
+    d.kind = DampingSpec::Kind::Modal;
+    d.modal_ratio = r.nonNegative(m.at("modal_ratio"), "damping.modal_ratio", "");
+    if (d.modal_ratio >= 1) r.fail(m.at("modal_ratio").Mark(), "damping.modal_ratio must be < 1 (got " + m.at("modal_ratio").Scalar() + ")");
+  } else if (m.count("rayleigh")) {
+    const YAML::Node& rn = m.at("rayleigh");
+    auto rm = r.mapping(rn, "damping.rayleigh", {"alpha", "beta"});
+    d.kind = DampingSpec::Kind::Rayleigh;
+    if (rm.count("alpha")) d.alpha = r.nonNegative(rm.at("alpha"), "damping.rayleigh.alpha", " 1/s");
+    if (rm.count("beta")) d.beta = r.nonNegative(rm.at("beta"), "damping.rayleigh.beta", " s");
+  } else {
+    d.kind = DampingSpec::Kind::HingeViscous;
+    d.hinge_beta = r.positive(m.at("hinge_beta"), "damping.hinge_beta", " s");
+  }
+  return d;
+}
+
+}  // namespace mmv::scene_detail

@@ -1,0 +1,20 @@
+#include "sim/scene/reader_util.hpp"
+
+namespace mmv::scene_detail {
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+std::string readPoint(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a) {
+  const std::string name = r.text(n, path);
+  const auto names = articlePointNames(a);
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    r.fail(n.Mark(), path + ": unknown point '" + name +
+                          "' (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>)");
+  return name;
+}
+
+}  // namespace mmv::scene_detail

@@ -1,0 +1,170 @@
+#pragma once
+// Internal to sim/scene: the YAML reading primitives every section reader shares, and
+// the section readers (one file per section: read_article, read_programs,
+// read_simulation, read_hamsas). yaml-cpp accepts duplicate keys silently and reports
+// missing keys without a position, so keys are checked here against the nodes' marks.
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sim/core/units.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv::scene_detail {
+
+/// "a, b, c".
+std::string joinNames(const std::vector<std::string>& names);
+
+/// Reads one document; knows the file name for messages.
+class YamlReader {
+ public:
+  explicit YamlReader(std::string file) : file_(std::move(file)) {}
+  const std::string& file() const { return file_; }
+
+  /// "file:line:col"; an empty document has a null mark (-1): the start of the file.
+  std::string position(const YAML::Mark& mark) const {
+    std::ostringstream os;
+    os << file_ << ':' << std::max(mark.line, 0) + 1 << ':' << std::max(mark.column, 0) + 1;
+    return os.str();
+  }
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
+    throw SceneError(position(mark) + ": " + what);
+  }
+
+  static std::string show(const YAML::Node& n) {
+    if (n.IsScalar()) return n.Scalar();
+    if (n.IsSequence()) return "a list";
+    if (n.IsMap()) return "a mapping";
+    return "nothing";
+  }
+
+  double number(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsScalar()) fail(n.Mark(), path + " must be a number (got " + show(n) + ")");
+    const std::string& s = n.Scalar();
+    std::string lower;
+    for (char ch : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos)
+      fail(n.Mark(), path + " must be a finite number (got " + s + ")");
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || end == s.c_str() || *end != '\0')
+      fail(n.Mark(), path + " must be a number (got " + s + ")");
+    if (!std::isfinite(v)) fail(n.Mark(), path + " must be a finite number (got " + s + ")");
+    return v;
+  }
+
+  double positive(const YAML::Node& n, const std::string& path, const std::string& unit) const {
+    const double v = number(n, path);
+    if (!(v > 0)) fail(n.Mark(), path + " must be > 0" + unit + " (got " + n.Scalar() + ")");
+    return v;
+  }
+
+  double nonNegative(const YAML::Node& n, const std::string& path, const std::string& unit) const {
+    const double v = number(n, path);
+    if (v < 0) fail(n.Mark(), path + " must be >= 0" + unit + " (got " + n.Scalar() + ")");
+    return v;
+  }
+
+  int integer(const YAML::Node& n, const std::string& path) const {
+    const double v = number(n, path);
+    if (v != std::floor(v) || std::abs(v) > 1e6)
+      fail(n.Mark(), path + " must be an integer (got " + n.Scalar() + ")");
+    return static_cast<int>(v);
+  }
+
+  std::string text(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsScalar() || n.Scalar().empty())
+      fail(n.Mark(), path + " must be a text value (got " + show(n) + ")");
+    return n.Scalar();
+  }
+
+  std::array<double, 3> vec3(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsSequence() || n.size() != 3)
+      fail(n.Mark(), path + " must be a list of 3 numbers (got " + show(n) + ")");
+    return {number(n[0], path + "[0]"), number(n[1], path + "[1]"), number(n[2], path + "[2]")};
+  }
+
+  /// Checks a mapping: no duplicate keys, only `allowed` keys. Returns key -> node.
+  std::map<std::string, YAML::Node> mapping(const YAML::Node& n, const std::string& path,
+                                            const std::vector<std::string>& allowed) const {
+    if (!n.IsMap()) fail(n.Mark(), path + " must be a mapping of keys (got " + show(n) + ")");
+    std::map<std::string, YAML::Node> out;
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      // A copy: `it->first` lives in a temporary proxy that dies with this statement
+      // (AddressSanitizer's stack-use-after-scope when a reference is kept).
+      const YAML::Node key = it->first;
+      if (!key.IsScalar()) fail(key.Mark(), path + ": keys must be text");
+      const std::string k = key.Scalar();
+      const std::string where = path.empty() ? k : path + "." + k;
+      if (out.count(k)) fail(key.Mark(), "duplicate key '" + where + "'");
+      bool ok = false;
+      for (const auto& a : allowed) ok = ok || a == k;
+      if (!ok)
+        fail(key.Mark(), "unknown key '" + where + "' (allowed: " + joinNames(allowed) + ")");
+      out.emplace(k, it->second);
+    }
+    return out;
+  }
+
+  /// A non-empty list; returns its size.
+  std::size_t sequence(const YAML::Node& n, const std::string& path) const {
+    if (!n.IsSequence() || n.size() == 0) fail(n.Mark(), path + " must be a non-empty list (got " + show(n) + ")");
+    return n.size();
+  }
+
+  /// Checks that `value` names one of `items` (anything with a .name).
+  template <class T>
+  void known(const YAML::Node& value, const std::string& path, const std::string& what, const std::string& name,
+             const std::vector<T>& items) const {
+    std::vector<std::string> names;
+    for (const auto& x : items) {
+      if (x.name == name) return;
+      names.push_back(x.name);
+    }
+    fail(value.Mark(), path + ": unknown " + what + " '" + name + "' (known: " + joinNames(names) + ")");
+  }
+
+  const YAML::Node& require(const std::map<std::string, YAML::Node>& m, const YAML::Node& parent,
+                            const std::string& path, const std::string& key) const {
+    auto it = m.find(key);
+    if (it == m.end())
+      fail(parent.Mark(), (path.empty() ? std::string("scene") : path) +
+                              " is missing required key '" + key + "'");
+    if (it->second.IsNull())
+      fail(it->second.Mark(), (path.empty() ? key : path + "." + key) + " has no value");
+    return it->second;
+  }
+
+ private:
+  std::string file_;
+};
+
+struct Located {
+  YAML::Mark mark;
+  std::string path;
+};
+
+// Section readers. Each throws SceneError at the offending key's line and column.
+ArticleScene readArticleScene(const YamlReader& r, const YAML::Node& root, const std::string& source);
+HamsasScene readHamsasScene(const YamlReader& r, const YAML::Node& root, const std::string& source);
+/// A table (or ground, or joint torque) program; `extra` keys are allowed and left to the caller.
+TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std::string& path,
+                            const std::vector<std::string>& extra, const std::string& unit = " m");
+SlewSpec readSlew(const YamlReader& r, const YAML::Node& sn, const std::string& path);
+SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n);
+DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
+void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
+/// A named point of the article; the message says how points are named.
+std::string readPoint(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a);
+
+}  // namespace mmv::scene_detail

@@ -1,0 +1,104 @@
+#pragma once
+/// A scene: what is tested and its environment as plain data in SI units (angles in
+/// radians), read from YAML (docs/scene-format.md). No Simbody here.
+///
+/// Scene is a variant of the two kinds of test article mmvlab analyses: the planar MMV
+/// article (ArticleScene, the default) and the HAM-SAS isolator (HamsasScene, a file
+/// with a top-level `hamsas:` key). The CLI dispatches on the kind once; every
+/// analysis takes the kind it understands.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <variant>
+#include <vector>
+#include <stdexcept>
+#include <string>
+
+#include "article/article_spec.hpp"
+#include "article/hamsas.hpp"
+#include "sim/core/errors.hpp"
+
+namespace mmv {
+
+/// Damping for linear models and time runs.
+struct DampingSpec {
+  enum class Kind {
+    Modal,         ///< every mode gets `modal_ratio` (linear models only).
+    Rayleigh,      ///< C = alpha M + beta K (linear models only).
+    HingeViscous,  ///< a viscous damper c = hinge_beta * k on every bending hinge (both).
+  } kind = Kind::Modal;
+  double modal_ratio = 0.01;
+  double alpha = 0, beta = 0;  ///< 1/s, s.
+  double hinge_beta = 0;       ///< s.
+};
+
+/// Settings of a time run (`simulation:` in the scene; the command line overrides).
+struct SimulationSpec {
+  double duration = 10;         ///< s.
+  std::string integrator = "rk_merson";
+  double accuracy = 1e-6;       ///< integrator relative accuracy.
+  double absolute_tolerance = 0;  ///< SUNDIALS integrators only (m, rad, m/s, rad/s); 0: the accuracy.
+  double sample_rate_hz = 200;  ///< output rows per second.
+  bool from_equilibrium = true; ///< start at the static equilibrium, else at the scene's angles at rest.
+  /// The outputs `mmvlab trade` scores (link tips; HAM-SAS: optical_table, spring_box);
+  /// empty: every one. `--points` overrides.
+  std::vector<std::string> score_points;
+  std::string score_where;  ///< file:line:col of score_points, for errors found later.
+};
+
+/// A sensor recorded in time runs (facility/sensors.hpp for the models).
+struct SensorSceneSpec {
+  std::string name;
+  std::string type;    ///< encoder, rate_gyro, accelerometer.
+  std::string target;  ///< joint (encoder) or named point (gyro, accelerometer).
+  int axis = 0;        ///< accelerometer: 0 along the link (body x), 1 across it (body y).
+  double noise_sigma = 0;  ///< in the measured unit; 0: none.
+  std::uint64_t seed = 1;
+  std::string where;   ///< file:line:col, for errors found later.
+};
+
+/// The MMV article (or any planar article of links, joints and closures).
+struct ArticleScene {
+  std::string name;
+  std::string source;  ///< file the scene came from, or "<default scene>".
+  std::array<double, 3> gravity{0, -9.80665, 0};  ///< m/s^2 in the world frame, z = 0.
+  ArticleSpec article;
+  std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
+  SimulationSpec simulation;
+  std::vector<SensorSceneSpec> sensors;
+};
+
+/// The HAM-SAS seismic isolator (article/hamsas.hpp), gravity along -z.
+struct HamsasScene {
+  std::string name;
+  std::string source;
+  HamsasSpec isolator;
+  SimulationSpec simulation;
+  /// Time runs: the ground's (base's) motion program along world x, y or z.
+  std::optional<TableMotion> ground_motion;
+  int ground_axis = 0;  ///< 0 x, 1 y, 2 z.
+};
+
+using Scene = std::variant<ArticleScene, HamsasScene>;
+
+/// The name and source of either kind.
+const std::string& sceneName(const Scene& scene);
+const std::string& sceneSource(const Scene& scene);
+
+/// Parses scene YAML text; `source_name` is used in error messages. Throws SceneError.
+Scene parseScene(const std::string& yaml_text, const std::string& source_name);
+/// Reads and parses a scene file. Throws SceneFileError or SceneError.
+Scene loadSceneFile(const std::string& path);
+/// The same for a file that must hold an article (or an isolator): SceneError
+/// naming the file and its kind otherwise.
+ArticleScene loadArticleSceneFile(const std::string& path);
+HamsasScene loadHamsasSceneFile(const std::string& path);
+/// The MMV article scene embedded in the binary (the same text as scenes/mmv.yaml).
+const char* defaultSceneYaml();
+ArticleScene loadDefaultScene();
+
+/// Replaces the segment count of every flexible (non-rigid) link; 1 <= n <= limits::kMaxSegments.
+void overrideSegments(ArticleScene& scene, int n);
+
+}  // namespace mmv

@@ -1,0 +1,159 @@
+#include "sim/statics/linearize.hpp"
+
+#include "sim/statics/closures.hpp"
+
+#include <stdexcept>
+
+namespace mmv {
+
+Eigen::MatrixXd calcStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
+  return model.hasOnlyGravityAndPinSprings() ? calcStiffnessClosedForm(model, s, dofs)
+                                             : calcStiffnessByDifferences(model, s, dofs);
+}
+
+namespace {
+
+/// G_k of the closed form: sum over point forces outboard of rotation k of F.(p - o_k).
+class GeometricTerms {
+ public:
+  GeometricTerms(const Model& model, const SimTK::State& s) : model_(model), s_(s), g_(model.getNumCoordinates(), 0.0) {}
+
+  void add(int body, const SimTK::Vec3& p_W, const SimTK::Vec3& F_W) {
+    const auto& coords = model_.getCoordinates();
+    for (int k : model_.getAncestorCoordinates(body)) {
+      if (coords[k].motion != CoordinateMotion::Rotation) continue;
+      const SimTK::Vec3 o = model_.getMatter().getMobilizedBody(coords[k].mobod).getBodyOriginLocation(s_);
+      g_[k] += ~F_W * (p_W - o);
+    }
+  }
+  void addStation(int body, const SimTK::Vec3& station_B, const SimTK::Vec3& F_W) {
+    const SimTK::MobilizedBody& mb = model_.getMatter().getMobilizedBody(model_.getBodies()[body].mobod);
+    add(body, mb.findStationLocationInGround(s_, station_B), F_W);
+  }
+
+  /// K_jk = G_k for rotations j inboard of or equal to k (both ways), over `dofs`.
+  Eigen::MatrixXd matrix(const std::vector<int>& dofs) const {
+    const auto& coords = model_.getCoordinates();
+    const int n = static_cast<int>(dofs.size());
+    std::vector<int> column(coords.size(), -1);  // coordinate -> row/column, -1 if held
+    for (int a = 0; a < n; ++a) column[dofs[a]] = a;
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+    for (int b = 0; b < n; ++b) {
+      const int k = dofs[b];
+      if (coords[k].motion != CoordinateMotion::Rotation) continue;
+      // Every rotation j that moves k's body (k itself included) is inboard of or
+      // equal to k, so the pair (j, k) gets k's term.
+      for (int j : model_.getAncestorCoordinates(model_.getCoordinateBody(k))) {
+        const int a = column[j];
+        if (a < 0 || coords[j].motion != CoordinateMotion::Rotation) continue;
+        K(a, b) = g_[k];
+        K(b, a) = g_[k];
+      }
+    }
+    return K;
+  }
+
+ private:
+  const Model& model_;
+  const SimTK::State& s_;
+  std::vector<double> g_;
+};
+
+}  // namespace
+
+Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& forces) {
+  SimTK::State work = s;
+  model.getSystem().realize(work, SimTK::Stage::Position);
+  GeometricTerms terms(model, work);
+  for (const auto& f : forces) terms.addStation(f.body, f.station_B, f.force_W);
+  return terms.matrix(dofs);
+}
+
+Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& extra) {
+  if (!model.hasOnlyGravityAndPinSprings())
+    throw std::logic_error("calcStiffnessClosedForm: the model has forces other than gravity, loads and springs");
+  SimTK::State work = s;
+  model.getSystem().realize(work, SimTK::Stage::Position);
+  const auto& matter = model.getMatter();
+  const auto& bodies = model.getBodies();
+  GeometricTerms terms(model, work);
+  const SimTK::Vec3 g = model.getGravity(work);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const SimTK::MobilizedBody& mb = matter.getMobilizedBody(bodies[b].mobod);
+    terms.addStation(static_cast<int>(b), mb.getBodyMassCenterStation(work), mb.getBodyMass(work) * g);
+  }
+  for (const auto& load : model.getPointLoads()) terms.addStation(model.findBody(load.mobod), load.station_B, load.force_W);
+  for (const auto& f : extra) terms.addStation(f.body, f.station_B, f.force_W);
+  Eigen::MatrixXd K = terms.matrix(dofs);
+  for (std::size_t b = 0; b < dofs.size(); ++b) K(b, b) += model.getCoordinates()[dofs[b]].stiffness;
+  return K;
+}
+
+Eigen::MatrixXd calcStiffnessByDifferences(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
+  constexpr double kStep = 1e-6;  // rad
+  SimTK::State work = s;
+  model.getSystem().realize(work, SimTK::Stage::Position);
+  const Eigen::VectorXd q0 = model.getQ(s);
+  const int n = static_cast<int>(dofs.size());
+  Eigen::MatrixXd K(n, n);
+  Eigen::VectorXd q = q0;
+  for (int j = 0; j < n; ++j) {
+    const int c = dofs[j];
+    q[c] = q0[c] + kStep;
+    model.setQ(work, q);
+    const Eigen::VectorXd fp = model.calcAppliedForces(work);
+    q[c] = q0[c] - kStep;
+    model.setQ(work, q);
+    const Eigen::VectorXd fm = model.calcAppliedForces(work);
+    q[c] = q0[c];
+    for (int i = 0; i < n; ++i) K(i, j) = -(fp[dofs[i]] - fm[dofs[i]]) / (2 * kStep);
+  }
+  return K;
+}
+
+Eigen::MatrixXd calcMass(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
+  SimTK::State work = s;
+  model.getSystem().realize(work, SimTK::Stage::Position);
+  SimTK::Matrix m;
+  model.getMatter().calcM(work, m);
+  // Coordinate i is mobility u[i] of its mobilizer; the model keeps them in u order.
+  const int n = static_cast<int>(dofs.size());
+  Eigen::MatrixXd M(n, n);
+  std::vector<int> u(n);
+  for (int i = 0; i < n; ++i) u[i] = model.getUIndex(dofs[i]);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) M(i, j) = m(u[i], u[j]);
+  return M;
+}
+
+LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
+                          const Eigen::VectorXd& closure_multipliers) {
+  LinearizedModel lin;
+  lin.dofs = model.getDofs();
+  const int n = static_cast<int>(lin.dofs.size());
+  lin.M = calcMass(model, equilibrium, lin.dofs);
+  lin.M = 0.5 * (lin.M + lin.M.transpose());
+  Eigen::MatrixXd K_raw = calcStiffness(model, equilibrium, lin.dofs);
+  const int m = model.getNumClosureRows();
+  if (m > 0) {
+    if (closure_multipliers.size() != m) throw std::invalid_argument("linearize: one multiplier per closure row needed");
+    K_raw += calcPointForceStiffness(model, equilibrium, lin.dofs, closureForces(model, closure_multipliers));
+    SimTK::State work = equilibrium;
+    model.getSystem().realize(work, SimTK::Stage::Position);
+    lin.G = calcClosureJacobian(model, work, lin.dofs);
+  } else {
+    lin.G.resize(0, n);
+  }
+  lin.Z = nullSpace(lin.G, n);
+  const double scale = n > 0 ? K_raw.cwiseAbs().maxCoeff() : 0.0;
+  lin.asymmetry = scale > 0 ? (K_raw - K_raw.transpose()).cwiseAbs().maxCoeff() / scale : 0.0;
+  lin.K = 0.5 * (K_raw + K_raw.transpose());
+  lin.K_elastic = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) lin.K_elastic(i, i) = model.getCoordinates()[lin.dofs[i]].stiffness;
+  lin.K_geometric = lin.K - lin.K_elastic;
+  return lin;
+}
+
+}  // namespace mmv

@@ -1,0 +1,63 @@
+#pragma once
+/// Linearization of the held article about a static equilibrium q*:
+///
+///     M dq'' + K dq = 0,   M = M(q*) (Simbody's mass matrix),  K = -df/dq (q*)
+///
+/// over the degrees of freedom (held joints removed). f(q) are the applied generalized
+/// forces at zero speed (gravity + springs), so K = K_elastic + K_geometric where
+/// K_elastic is the springs' diagonal stiffness and K_geometric the gravity stiffness
+/// at the deflected state (positive when gravity stabilises, e.g. a hanging link).
+/// K has two independent evaluations:
+///  - closed form, for models whose only forces are gravity, dead point loads and
+///    springs (Model::hasOnlyGravityAndPinSprings): a constant world force F at a
+///    point p has the stiffness  K_jk = F . (p - o_k)  for rotations j, k that both move
+///    p with j inboard of or equal to k (o_k: k's axis), and 0 for translations. Summed
+///    over gravity (F = m g at each mass centre) and loads, per coordinate k:
+///        K_jk = k_spring,k delta_jk + G_k,  G_k = sum_{F outboard of k} F . (p - o_k).
+///    Exact, O(n * depth). Constraint forces at a preloaded closed loop enter the same
+///    way (extra point forces, sim/statics/closures.hpp).
+///  - central differences of f (step 1e-6 rad, truncation error ~1e-10 relative) for
+///    any force model, O(n^2) force evaluations.
+/// The result is symmetrised; its asymmetry before that is reported, since a
+/// conservative system has a symmetric K.
+
+#include <Eigen/Dense>
+
+#include "sim/model/model.hpp"
+#include "sim/model/point_force.hpp"
+
+namespace mmv {
+
+struct LinearizedModel {
+  std::vector<int> dofs;        ///< coordinate index of each row/column.
+  Eigen::MatrixXd M;            ///< kg*m^2 (angle coordinates).
+  Eigen::MatrixXd K;            ///< N*m/rad, symmetric, closure preload included.
+  Eigen::MatrixXd K_elastic;    ///< N*m/rad, diagonal spring stiffness.
+  Eigen::MatrixXd K_geometric;  ///< K - K_elastic: gravity, loads and closure forces.
+  Eigen::MatrixXd G;            ///< closure Jacobian (rows x dofs), empty for an open tree.
+  Eigen::MatrixXd Z;            ///< orthonormal null-space basis of G (identity when open).
+  double asymmetry = 0;         ///< ||K_raw - K_raw^T||_max / ||K_raw||_max.
+};
+
+/// Stiffness -df/dq over `dofs` at the state `s` (not symmetrised): the closed form
+/// when the model allows it, finite differences otherwise.
+Eigen::MatrixXd calcStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+/// Central differences of the applied forces, for any model.
+Eigen::MatrixXd calcStiffnessByDifferences(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+/// Closed form for gravity + loads + springs (+ `extra` point forces); requires
+/// Model::hasOnlyGravityAndPinSprings().
+Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& extra = {});
+/// The stiffness -d(J^T F)/dq of point forces alone (no springs, no gravity), over `dofs`.
+Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
+                                        const std::vector<PointForce>& forces);
+
+/// Mass matrix restricted to `dofs` at the state `s`.
+Eigen::MatrixXd calcMass(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+
+/// `closure_multipliers`: the closure forces at the equilibrium (EquilibriumResult),
+/// empty for an open tree.
+LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
+                          const Eigen::VectorXd& closure_multipliers = Eigen::VectorXd());
+
+}  // namespace mmv

@@ -1,0 +1,43 @@
+#include "sim/time/external_stepper.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <climits>
+#include <filesystem>
+
+#include "sim/core/errors.hpp"
+
+namespace mmv {
+
+std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
+                                                     double rtol, double atol) {
+  // Next to the executable first, then where the build put it.
+  std::vector<std::string> candidates;
+  char exe[PATH_MAX];
+  const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n > 0) {
+    exe[n] = '\0';
+    candidates.push_back((std::filesystem::path(exe).parent_path() / "libmmvlab_sundials.so").string());
+  }
+#ifdef MMVLAB_SUNDIALS_PLUGIN
+  candidates.push_back(MMVLAB_SUNDIALS_PLUGIN);
+#endif
+  std::string tried;
+  for (const auto& path : candidates) {
+    // Loaded once per process and kept: the steppers it creates run its code.
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+    if (!handle) {
+      tried += (tried.empty() ? "" : "; ") + path + " (" + ::dlerror() + ")";
+      continue;
+    }
+    auto create = reinterpret_cast<CreateStepper>(::dlsym(handle, "mmv_create_sundials_stepper"));
+    if (!create) throw UnavailableError(path + ": no mmv_create_sundials_stepper");
+    ExternalStepper* stepper = create(&system, static_cast<int>(method), rtol, atol);
+    MMV_DEMAND(stepper != nullptr);  // every SundialsMethod has a stepper
+    return std::unique_ptr<ExternalStepper>(stepper);
+  }
+  throw UnavailableError("the SUNDIALS integrators need libmmvlab_sundials.so: tried " + tried);
+}
+
+}  // namespace mmv

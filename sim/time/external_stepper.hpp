@@ -1,0 +1,41 @@
+#pragma once
+/// An integrator that lives outside the main program: SUNDIALS (CVODE, ARKODE, IDA) is loaded from a
+/// plugin (libmmvlab_sundials.so) with dlopen(RTLD_LOCAL | RTLD_DEEPBIND), because
+/// Debian's libSimTKmath exports its own, older copy of SUNDIALS' N_Vector and CVODE
+/// symbols (for Simbody's CPodes): linked into one program the two interpose on each
+/// other and crash. Deep binding makes the plugin and SUNDIALS 6 resolve their symbols
+/// among themselves first. Errors cross the boundary as strings, not exceptions.
+
+#include <Simbody.h>
+
+#include <memory>
+#include <string>
+
+namespace mmv {
+
+class ExternalStepper {
+ public:
+  virtual ~ExternalStepper() = default;
+  virtual bool initialize(const SimTK::State& s, std::string& error) = 0;
+  /// Advances to t; the state is then realized to Acceleration.
+  virtual bool stepTo(double t, std::string& error) = 0;
+  virtual const SimTK::State& state() const = 0;
+  virtual long steps() const = 0;
+  virtual long evaluations() const = 0;  ///< right-hand-side evaluations
+};
+
+/// The plugin's factory (extern "C").
+using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system, int method, double relative_tolerance,
+                                           double absolute_tolerance);
+
+/// The plugin's methods (codes as SundialsIntegrator::Method).
+enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeDirk = 3, Ida = 4 };
+
+/// Loads the SUNDIALS plugin and creates a stepper: CVODE BDF (dense Newton) or Adams
+/// (fixed point), ARKODE explicit RK or implicit SDIRK (dense Newton). Throws
+/// UnavailableError if the plugin cannot be loaded (the message says where it was looked for).
+/// `atol` <= 0: the relative tolerance (on the state's unit scale: rad, m, rad/s, m/s).
+std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
+                                                     double rtol, double atol = 0);
+
+}  // namespace mmv

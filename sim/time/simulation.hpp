@@ -1,0 +1,117 @@
+#pragma once
+/// Time runs of the article (slews of locked joints, table programs, free motion),
+/// integrated by one of Simbody's integrators, recorded at a fixed sample rate.
+///
+/// Recorded per sample: the table's position (when the scene has one), every joint's
+/// angle and the torque its torquer applies (for a locked joint the motion force that
+/// makes it follow its command; 0 for a free one), and every link tip's position.
+/// Summarised: peak torques against each torquer's capacity, the energy balance
+///     E(t) - E(0) = W_motion(t) - D(t)
+/// (E = kinetic + potential energy, W_motion the work of the prescribed motions, D the
+/// dampers' dissipation, both integrated by the trapezoidal rule at the sample rate: the
+/// balance's error shrinks with the sample interval squared for smooth commands, but
+/// only linearly where a command's acceleration jumps, as in a trapezoidal slew --
+/// raise the sample rate there), steps, realizations, and wall time.
+///
+/// With a table, also its actuator's force along x (`table_force_n`).
+///
+/// Sensors (scene `sensors:`; facility/sensors.hpp) are sampled at the sample rate:
+/// an encoder reads its joint's angle (rad), a rate gyro the angular rate about z of
+/// the body carrying its point (rad/s), an accelerometer the specific force (a - g) at
+/// its point along the carrying body's x (axial) or y (transverse) axis (m/s^2). Each
+/// adds a column `<name>_<unit>` and a saturation count.
+///
+/// Integrators: every name in sim/core/integrators.hpp (Simbody's, and SUNDIALS'
+/// CVODE, ARKODE and IDA through the plugin, sim/time/sundials_plugin.hpp); IDA holds a
+/// closed tree's closures as algebraic equations.
+/// For SUNDIALS "realizations" counts right-hand-side evaluations.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Simbody.h>
+
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+struct SimulationRecord {
+  std::vector<std::string> columns;       ///< names with units, e.g. "joint2_angle_deg".
+  std::vector<std::vector<double>> rows;  ///< one per sample, all finite.
+  /// The points a trade scores (link tips; the isolator's table and spring box): name
+  /// and the columns of its position components (m).
+  std::vector<std::pair<std::string, std::vector<int>>> scored;
+};
+
+struct JointTorqueSummary {
+  std::string joint;
+  double peak_torque_nm = 0;
+  double capacity_nm = 0;  ///< 0: not given.
+  bool exceeded = false;
+};
+
+struct SensorSummary {
+  std::string name, type, unit;
+  int saturated_samples = 0, samples = 0;
+};
+
+struct SimulationResult {
+  SimulationRecord record;
+  std::vector<SensorSummary> sensors;
+  std::vector<JointTorqueSummary> torques;
+  double initial_energy_j = 0, final_energy_j = 0;
+  double motion_work_j = 0, dissipated_j = 0;
+  double energy_balance_error_j = 0;  ///< (E_end - E_0) - (W - D).
+  double peak_kinetic_energy_j = 0;   ///< largest kinetic energy at a sample.
+  /// Closed trees: the largest closure error at a sample (m). Simbody's integrators
+  /// project onto the closures to their accuracy and IDA holds them as algebraic
+  /// equations; SUNDIALS' ODE methods do not, so their drift grows.
+  double constraint_drift_m = 0;
+  /// With a table: the peak force its actuator must give along x (the table's own
+  /// moving mass included; column `table_force_n`), and the weight it carries
+  /// (everything but the table: article, torquers, gimbal), against its payload.
+  double peak_table_force_n = 0;
+  double carried_weight_n = 0;
+  std::string integrator;
+  double accuracy = 0;
+  int steps = 0, realizations = 0;
+  double wall_seconds = 0;
+};
+
+/// Runs the scene's time run with its `simulation:` settings. `progress`, if given,
+/// is called with the fraction done (0..1) at each sample. Throws SceneError (unknown
+/// integrator) or NumericalError (the integrator gave up: step size too small, too many
+/// steps, or a non-finite state; the message names it and the time).
+/// (The isolator's runs: sim/hamsas/hamsas_simulation.hpp.)
+SimulationResult simulate(const ArticleScene& scene, const std::function<void(double)>& progress = {});
+
+/// The sampling loop every time run shares: steps `integrator` to each sample time of
+/// `spec`, asks `sample` for the row (realized to Acceleration), refuses a non-finite
+/// value (NumericalError), and keeps the energy books of `r` (work of the prescribed
+/// motions plus `input_power`'s, and `dissipation` power, trapezoidal), its steps and
+/// evaluations.
+class RunIntegrator;
+void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, const SimulationSpec& spec,
+               SimulationResult& r, const std::function<void(double)>& progress,
+               const std::function<double(const SimTK::State&)>& input_power,
+               const std::function<double(const SimTK::State&)>& dissipation,
+               const std::function<std::vector<double>(double, const SimTK::State&)>& sample);
+
+/// A warning when a closed tree's constraint drift exceeds 1e-6 of the article's size
+/// (`size_m`). Empty if fine or open.
+std::string constraintDriftWarning(const SimulationResult& r, double size_m);
+
+/// The energy scale a balance error is judged against: the largest of the peak kinetic
+/// energy, |work of the motions| and the dissipation (potential energy has no natural
+/// zero), and no less than 1e-8 of the stored energy |E| (below that a balance kept over
+/// thousands of steps is round-off and integration noise: a run in which nothing moves
+/// is not flagged). 0 only when E = 0 and nothing moved.
+double energyScale(const SimulationResult& r);
+
+/// A warning when |energy balance error| exceeds 1 % of energyScale(r): the run is not
+/// accurate enough to trust (loosen no further; tighten the accuracy or, for a
+/// trapezoidal slew, raise the sample rate the balance is integrated at). Empty if fine.
+std::string energyBalanceWarning(const SimulationResult& r);
+
+}  // namespace mmv

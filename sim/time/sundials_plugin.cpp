@@ -1,0 +1,337 @@
+#include "sim/time/sundials_plugin.hpp"
+#include "sim/time/external_stepper.hpp"
+
+#include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_erkstep.h>
+#include <cvode/cvode.h>
+#include <ida/ida.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+
+namespace mmv {
+
+/// Errors inside the plugin (never leaves it: the stepper turns it into a string).
+struct PluginFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+namespace {
+
+using Method = SundialsIntegrator::Method;
+
+bool isArkode(Method m) { return m == Method::ArkErk || m == Method::ArkDirk; }
+
+std::string flagName(Method m, int flag) {
+  char* name = m == Method::ArkErk ? ERKStepGetReturnFlagName(flag)
+               : m == Method::ArkDirk ? ARKStepGetReturnFlagName(flag)
+               : m == Method::Ida     ? IDAGetReturnFlagName(flag)
+                                      : CVodeGetReturnFlagName(flag);
+  std::string s = name ? name : "unknown flag";
+  std::free(name);  // SUNDIALS allocates it
+  return s;
+}
+
+const char* packageName(Method m) { return isArkode(m) ? "ARKODE" : m == Method::Ida ? "IDA" : "CVODE"; }
+
+void check(Method m, int flag, const char* call) {
+  if (flag < 0) throw PluginFailure(std::string(packageName(m)) + " " + call + " failed: " + flagName(m, flag));
+}
+
+template <class T, void (*Free)(T)>
+struct Handle {
+  T p = nullptr;
+  ~Handle() {
+    if (p) Free(p);
+  }
+};
+void freeVector(N_Vector v) { N_VDestroy(v); }
+void freeMatrix(SUNMatrix m) { SUNMatDestroy(m); }
+void freeLinearSolver(SUNLinearSolver s) { SUNLinSolFree(s); }
+void freeNonlinearSolver(SUNNonlinearSolver s) { SUNNonlinSolFree(s); }
+
+}  // namespace
+
+struct Context {
+  SUNContext c = nullptr;
+  Context() {
+    if (SUNContext_Create(nullptr, &c) != 0) throw PluginFailure("SUNContext_Create failed");
+  }
+  ~Context() {
+    if (c) SUNContext_Free(&c);
+  }
+};
+struct Memory {
+  Method method = Method::Bdf;
+  void* p = nullptr;
+  ~Memory() {
+    if (!p) return;
+    if (method == Method::ArkErk) ERKStepFree(&p);
+    else if (method == Method::ArkDirk) ARKStepFree(&p);
+    else if (method == Method::Ida) IDAFree(&p);
+    else CVodeFree(&p);
+  }
+};
+
+// Members are destroyed in reverse order of declaration: the CVODE memory first, then
+// the solvers and vectors it used, the SUNDIALS context last.
+struct SundialsIntegrator::Impl {
+  const SimTK::MultibodySystem& system;
+  Method method;
+  double rtol, atol;
+  Context ctx;
+  Handle<N_Vector, freeVector> y;
+  Handle<N_Vector, freeVector> yp, id;  // IDA: y', and which components are differential
+  int ny = 0, np = 0;                   // IDA: Simbody's state size, position constraints
+  Handle<SUNMatrix, freeMatrix> A;
+  Handle<SUNLinearSolver, freeLinearSolver> ls;
+  Handle<SUNNonlinearSolver, freeNonlinearSolver> nls;
+  Memory mem;
+  SimTK::State work;
+  Impl(const SimTK::MultibodySystem& s, Method m, double r, double a) : system(s), method(m), rtol(r), atol(a) {}
+
+  /// Copies y into `work`, applies the prescribed motions and realizes to Acceleration.
+  void load(double t, N_Vector yv) {
+    work.setTime(t);
+    SimTK::Vector& Y = work.updY();
+    const double* d = N_VGetArrayPointer(yv);
+    for (int i = 0; i < Y.size(); ++i) Y[i] = d[i];
+    system.realize(work, SimTK::Stage::Time);
+    system.prescribeQ(work);
+    system.realize(work, SimTK::Stage::Position);
+    system.prescribeU(work);
+    system.realize(work, SimTK::Stage::Acceleration);
+  }
+
+  /// IDA: F = [q' - qdot - ~Pq mu; u' - udot; perr] over y = [q; u; mu].
+  static int residual(double t, N_Vector yv, N_Vector ypv, N_Vector rr, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      self->load(t, yv);
+      const SimTK::State& w = self->work;
+      const double* y = N_VGetArrayPointer(yv);
+      const double* yp = N_VGetArrayPointer(ypv);
+      double* r = N_VGetArrayPointer(rr);
+      const SimTK::Vector& yd = w.getYDot();
+      const int nq = w.getNQ(), n = self->ny, np = self->np;
+      SimTK::Vector correction(nq, 0.0);
+      if (np > 0) {
+        SimTK::Vector mu(np);
+        for (int i = 0; i < np; ++i) mu[i] = y[n + i];
+        self->system.getMatterSubsystem().multiplyByPqTranspose(w, mu, correction);
+      }
+      for (int i = 0; i < n; ++i) {
+        r[i] = yp[i] - yd[i] - (i < nq ? correction[i] : 0.0);
+        if (!std::isfinite(r[i])) return 1;
+      }
+      for (int i = 0; i < np; ++i) r[n + i] = w.getQErr()[i];
+      return 0;
+    } catch (...) {
+      return -1;
+    }
+  }
+
+  static int rhs(double t, N_Vector yv, N_Vector ydot, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      self->load(t, yv);
+      const SimTK::Vector& yd = self->work.getYDot();
+      double* out = N_VGetArrayPointer(ydot);
+      for (int i = 0; i < yd.size(); ++i) {
+        if (!std::isfinite(yd[i])) return 1;  // recoverable: CVODE retries with a smaller step
+        out[i] = yd[i];
+      }
+      return 0;
+    } catch (...) {
+      return -1;  // unrecoverable
+    }
+  }
+};
+
+SundialsIntegrator::SundialsIntegrator(const SimTK::MultibodySystem& system, Method method, double rtol, double atol)
+    : impl_(std::make_unique<Impl>(system, method, rtol, atol > 0 ? atol : rtol)) {}
+
+SundialsIntegrator::~SundialsIntegrator() = default;
+
+void SundialsIntegrator::initialize(const SimTK::State& s) {
+  Impl& m = *impl_;
+  const Method me = m.method;
+  m.work = s;
+  if (me == Method::Ida) {
+    initializeIda(s);
+    return;
+  }
+  const int n = s.getNY();
+  m.y.p = N_VNew_Serial(n, m.ctx.c);
+  if (!m.y.p) throw PluginFailure("SUNDIALS: cannot allocate the state vector");
+  double* d = N_VGetArrayPointer(m.y.p);
+  for (int i = 0; i < n; ++i) d[i] = s.getY()[i];
+  m.mem.method = me;
+  // Absolute tolerance: given, or the relative one times a unit scale (rad, m, rad/s, m/s).
+  switch (me) {
+    case Method::Adams:
+    case Method::Bdf:
+      m.mem.p = CVodeCreate(me == Method::Bdf ? CV_BDF : CV_ADAMS, m.ctx.c);
+      if (!m.mem.p) throw PluginFailure("CVodeCreate failed");
+      check(me, CVodeInit(m.mem.p, &Impl::rhs, s.getTime(), m.y.p), "CVodeInit");
+      check(me, CVodeSetUserData(m.mem.p, &m), "CVodeSetUserData");
+      check(me, CVodeSStolerances(m.mem.p, m.rtol, m.atol), "CVodeSStolerances");
+      check(me, CVodeSetMaxNumSteps(m.mem.p, 1000000), "CVodeSetMaxNumSteps");
+      break;
+    case Method::ArkErk:
+      m.mem.p = ERKStepCreate(&Impl::rhs, s.getTime(), m.y.p, m.ctx.c);
+      if (!m.mem.p) throw PluginFailure("ERKStepCreate failed");
+      check(me, ERKStepSetUserData(m.mem.p, &m), "ERKStepSetUserData");
+      check(me, ERKStepSStolerances(m.mem.p, m.rtol, m.atol), "ERKStepSStolerances");
+      check(me, ERKStepSetMaxNumSteps(m.mem.p, 1000000), "ERKStepSetMaxNumSteps");
+      break;
+    case Method::ArkDirk:
+      m.mem.p = ARKStepCreate(nullptr, &Impl::rhs, s.getTime(), m.y.p, m.ctx.c);  // all implicit
+      if (!m.mem.p) throw PluginFailure("ARKStepCreate failed");
+      check(me, ARKStepSetUserData(m.mem.p, &m), "ARKStepSetUserData");
+      check(me, ARKStepSStolerances(m.mem.p, m.rtol, m.atol), "ARKStepSStolerances");
+      check(me, ARKStepSetMaxNumSteps(m.mem.p, 1000000), "ARKStepSetMaxNumSteps");
+      break;
+  }
+  if (me == Method::Bdf || me == Method::ArkDirk) {
+    m.A.p = SUNDenseMatrix(n, n, m.ctx.c);
+    m.ls.p = SUNLinSol_Dense(m.y.p, m.A.p, m.ctx.c);
+    if (!m.A.p || !m.ls.p) throw PluginFailure("SUNDIALS: cannot create the dense linear solver for " + std::to_string(n) + " states");
+    if (me == Method::Bdf) check(me, CVodeSetLinearSolver(m.mem.p, m.ls.p, m.A.p), "CVodeSetLinearSolver");
+    else check(me, ARKStepSetLinearSolver(m.mem.p, m.ls.p, m.A.p), "ARKStepSetLinearSolver");
+  } else if (me == Method::Adams) {
+    m.nls.p = SUNNonlinSol_FixedPoint(m.y.p, 0, m.ctx.c);
+    if (!m.nls.p) throw PluginFailure("CVODE: cannot create the fixed-point solver");
+    check(me, CVodeSetNonlinearSolver(m.mem.p, m.nls.p), "CVodeSetNonlinearSolver");
+  }
+  m.load(s.getTime(), m.y.p);
+  state_ = m.work;
+}
+
+void SundialsIntegrator::initializeIda(const SimTK::State& s) {
+  Impl& m = *impl_;
+  const Method me = Method::Ida;
+  m.system.realize(m.work, SimTK::Stage::Acceleration);
+  if (s.getNQ() != s.getNU())
+    throw PluginFailure("IDA here needs as many q as u (free bodies with quaternions are not supported): use cvode_bdf");
+  m.ny = s.getNY();
+  m.np = s.getNQErr();
+  const int n = m.ny + m.np;
+  m.y.p = N_VNew_Serial(n, m.ctx.c);
+  m.yp.p = N_VNew_Serial(n, m.ctx.c);
+  m.id.p = N_VNew_Serial(n, m.ctx.c);
+  if (!m.y.p || !m.yp.p || !m.id.p) throw PluginFailure("SUNDIALS: cannot allocate IDA's vectors");
+  double* y = N_VGetArrayPointer(m.y.p);
+  double* yp = N_VGetArrayPointer(m.yp.p);
+  double* id = N_VGetArrayPointer(m.id.p);
+  // Consistent start: the state (on its closures), its derivative, multipliers 0.
+  for (int i = 0; i < m.ny; ++i) y[i] = s.getY()[i], yp[i] = m.work.getYDot()[i], id[i] = 1.0;
+  for (int i = m.ny; i < n; ++i) y[i] = 0.0, yp[i] = 0.0, id[i] = 0.0;
+  m.mem.method = me;
+  m.mem.p = IDACreate(m.ctx.c);
+  if (!m.mem.p) throw PluginFailure("IDACreate failed");
+  check(me, IDAInit(m.mem.p, &Impl::residual, s.getTime(), m.y.p, m.yp.p), "IDAInit");
+  check(me, IDASetUserData(m.mem.p, &m), "IDASetUserData");
+  check(me, IDASStolerances(m.mem.p, m.rtol, m.atol), "IDASStolerances");
+  check(me, IDASetMaxNumSteps(m.mem.p, 1000000), "IDASetMaxNumSteps");
+  check(me, IDASetId(m.mem.p, m.id.p), "IDASetId");
+  check(me, IDASetSuppressAlg(m.mem.p, SUNTRUE), "IDASetSuppressAlg");  // multipliers: index 2
+  // An index-2 iteration matrix's conditioning grows as 1/h^2: IDA's own first step
+  // (from |y'| and the tolerances, about 1e-8 s here) makes it singular in double, so
+  // start at a step a multibody run resolves anyway.
+  if (m.np > 0) check(me, IDASetInitStep(m.mem.p, 1e-4), "IDASetInitStep");
+  m.A.p = SUNDenseMatrix(n, n, m.ctx.c);
+  m.ls.p = SUNLinSol_Dense(m.y.p, m.A.p, m.ctx.c);
+  if (!m.A.p || !m.ls.p) throw PluginFailure("SUNDIALS: cannot create IDA's dense linear solver for " + std::to_string(n) + " unknowns");
+  check(me, IDASetLinearSolver(m.mem.p, m.ls.p, m.A.p), "IDASetLinearSolver");
+  m.load(s.getTime(), m.y.p);
+  state_ = m.work;
+}
+
+void SundialsIntegrator::stepTo(double t) {
+  Impl& m = *impl_;
+  double reached = 0;
+  const int flag = m.method == Method::ArkErk    ? ERKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
+                   : m.method == Method::ArkDirk ? ARKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
+                   : m.method == Method::Ida     ? IDASolve(m.mem.p, t, &reached, m.y.p, m.yp.p, IDA_NORMAL)
+                                                 : CVode(m.mem.p, t, m.y.p, &reached, CV_NORMAL);
+  if (flag < 0)
+    throw PluginFailure(std::string(packageName(m.method)) + " stopped at t = " + std::to_string(reached) +
+                         " s: " + flagName(m.method, flag));
+  m.load(reached, m.y.p);
+  state_ = m.work;
+  m.system.realize(state_, SimTK::Stage::Acceleration);
+}
+
+long SundialsIntegrator::steps() const {
+  long n = 0;
+  if (impl_->method == Method::ArkErk) ERKStepGetNumSteps(impl_->mem.p, &n);
+  else if (impl_->method == Method::ArkDirk) ARKStepGetNumSteps(impl_->mem.p, &n);
+  else if (impl_->method == Method::Ida) IDAGetNumSteps(impl_->mem.p, &n);
+  else CVodeGetNumSteps(impl_->mem.p, &n);
+  return n;
+}
+
+long SundialsIntegrator::rhsEvaluations() const {
+  long n = 0, jac = 0, explicit_evals = 0;
+  // The dense Newton solvers' difference-quotient Jacobians cost evaluations too.
+  switch (impl_->method) {
+    case Method::ArkErk: ERKStepGetNumRhsEvals(impl_->mem.p, &n); break;
+    case Method::ArkDirk:
+      ARKStepGetNumRhsEvals(impl_->mem.p, &explicit_evals, &n);
+      ARKStepGetNumLinRhsEvals(impl_->mem.p, &jac);
+      break;
+    case Method::Ida:
+      IDAGetNumResEvals(impl_->mem.p, &n);
+      IDAGetNumLinResEvals(impl_->mem.p, &jac);
+      break;
+    case Method::Bdf: CVodeGetNumLinRhsEvals(impl_->mem.p, &jac); [[fallthrough]];
+    case Method::Adams: CVodeGetNumRhsEvals(impl_->mem.p, &n); break;
+  }
+  return n + jac + explicit_evals;
+}
+
+}  // namespace mmv
+
+namespace mmv {
+namespace {
+
+class CvodeStepper : public ExternalStepper {
+ public:
+  CvodeStepper(const SimTK::MultibodySystem& sys, SundialsIntegrator::Method method, double rtol, double atol)
+      : integ_(sys, method, rtol, atol) {}
+  bool initialize(const SimTK::State& s, std::string& error) override { return guard([&] { integ_.initialize(s); }, error); }
+  bool stepTo(double t, std::string& error) override { return guard([&] { integ_.stepTo(t); }, error); }
+  const SimTK::State& state() const override { return integ_.getState(); }
+  long steps() const override { return integ_.steps(); }
+  long evaluations() const override { return integ_.rhsEvaluations(); }
+
+ private:
+  template <class F>
+  static bool guard(F&& f, std::string& error) {
+    try {
+      f();
+      return true;
+    } catch (const std::exception& e) {
+      error = e.what();
+      return false;
+    }
+  }
+  SundialsIntegrator integ_;
+};
+
+}  // namespace
+}  // namespace mmv
+
+extern "C" mmv::ExternalStepper* mmv_create_sundials_stepper(const SimTK::MultibodySystem* system, int method, double rtol,
+                                                            double atol) {
+  if (method < 0 || method > 4) return nullptr;
+  return new mmv::CvodeStepper(*system, static_cast<mmv::SundialsIntegrator::Method>(method), rtol, atol);
+}

@@ -1,0 +1,116 @@
+#include "sim/time/trade.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "article/article_spec.hpp"
+#include "sim/core/integrators.hpp"
+
+namespace mmv {
+namespace {
+
+/// The largest distance between the two runs' scored points (every one when `points`
+/// is empty) over their common samples.
+double distance(const SimulationRecord& a, const SimulationRecord& b, const std::vector<std::string>& points) {
+  double worst = 0;
+  const std::size_t rows = std::min(a.rows.size(), b.rows.size());
+  for (const auto& [name, ca] : a.scored) {
+    if (!points.empty() && std::find(points.begin(), points.end(), name) == points.end()) continue;
+    for (const auto& [other, cb] : b.scored) {
+      if (other != name) continue;
+      for (std::size_t k = 0; k < rows; ++k) {
+        double d2 = 0;
+        for (std::size_t c = 0; c < ca.size(); ++c) d2 += std::pow(a.rows[k][ca[c]] - b.rows[k][cb[c]], 2);
+        worst = std::max(worst, std::sqrt(d2));
+      }
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
+  TradeProblem p;
+  ArticleScene scene = base;
+  if (duration > 0) scene.simulation.duration = duration;
+  p.scene_name = scene.name;
+  p.duration = scene.simulation.duration;
+  p.simulation = scene.simulation;
+  for (const auto& name : articlePointNames(scene.article))
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tip") == 0) p.scorable.push_back(name);
+  p.scorable_kind = "link tip";
+  p.run = [scene](const SimulationSpec& spec, int segments) {
+    ArticleScene s = scene;
+    s.simulation = spec;
+    if (segments > 0) overrideSegments(s, segments);
+    return simulate(s);
+  };
+  return p;
+}
+
+TradeStudy runTrade(const TradeProblem& problem, const TradeOptions& options) {
+  TradeOptions o = options;
+  const SimulationSpec& spec0 = problem.simulation;
+  const bool from_scene = o.points.empty() && !spec0.score_points.empty();
+  if (from_scene) o.points = spec0.score_points;
+  for (const auto& p : o.points)
+    if (std::find(problem.scorable.begin(), problem.scorable.end(), p) == problem.scorable.end()) {
+      std::string known;
+      for (const auto& t : problem.scorable) known += (known.empty() ? "" : ", ") + t;
+      const std::string what = "'" + p + "' is not a " + problem.scorable_kind + " of the scene (known: " + known + ")";
+      if (from_scene) throw SceneError(spec0.score_where + ": simulation.score_points: " + what);
+      throw UsageError("--points: " + what);
+    }
+  TradeStudy study;
+  study.scene_name = problem.scene_name;
+  study.points = o.points;
+  study.duration = problem.duration;
+  study.reference_integrator = problem.reference_integrator;
+  study.check_integrator = problem.check_integrator;
+  auto run = [&](int segments, const std::string& integrator, double accuracy) {
+    SimulationSpec spec = spec0;
+    spec.integrator = integrator;
+    spec.accuracy = accuracy;
+    // The scene's absolute tolerance applies to SUNDIALS' methods only.
+    if (!isSundialsIntegrator(integrator)) spec.absolute_tolerance = 0;
+    return problem.run(spec, segments);
+  };
+  const SimulationResult ref = run(0, study.reference_integrator, 1e-10);
+  const SimulationResult check = run(0, study.check_integrator, 1e-10);
+  study.reference_uncertainty_m = distance(ref.record, check.record, o.points);
+  study.reference_seconds = ref.wall_seconds;
+  // One scored run: its error against the reference and its cost, or its diagnostic.
+  auto measure = [&](int segments, const std::string& integrator, double accuracy) {
+    TradeRun r;
+    r.integrator = integrator;
+    r.accuracy = accuracy;
+    r.segments = segments;
+    try {
+      const SimulationResult res = run(segments, integrator, accuracy);
+      r.error_m = distance(res.record, ref.record, o.points);
+      r.seconds = res.wall_seconds;
+      r.evaluations = res.realizations;
+    } catch (const NumericalError& e) {
+      r.ok = false;
+      r.failure = e.what();
+    }
+    study.runs.push_back(r);
+  };
+  for (const auto& name : o.integrators)
+    for (double acc : o.accuracies) measure(0, name, acc);
+  if (problem.has_segments)  // rigid bodies: no segments
+    for (int n : o.segments) measure(n, "cpodes", 1e-8);
+  // Pareto front among the integrator runs at the scene's segments.
+  for (auto& a : study.runs) {
+    if (!a.ok || a.segments) continue;
+    a.pareto = true;
+    for (const auto& b : study.runs)
+      if (b.ok && !b.segments && &a != &b && b.seconds <= a.seconds && b.error_m <= a.error_m &&
+          (b.seconds < a.seconds || b.error_m < a.error_m))
+        a.pareto = false;
+  }
+  return study;
+}
+
+}  // namespace mmv

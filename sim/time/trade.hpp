@@ -1,0 +1,78 @@
+#pragma once
+/// The speed-accuracy trade of a time run: every integrator over a ladder of
+/// tolerances, and the segments per link over a ladder, against a tight reference.
+///
+/// Error: the largest distance, over the samples and the scored points (every link tip,
+/// or the tips the user names; for HAM-SAS the optical table and the spring box), between
+/// a run's positions and the reference's (m). The reference is CPodes at accuracy 1e-10,
+/// and CVODE BDF at 1e-10 is run too: their largest difference is the reference's own
+/// uncertainty (errors below it cannot be told apart). For HAM-SAS the pair is RK-Merson
+/// and ARKODE ERK at 1e-10: the isolator's lightly damped kHz joint modes keep BDF at
+/// low order, which makes a tight BDF run cost minutes (docs/hamsas.md); the segment
+/// ladder does not apply (rigid bodies). Cost: wall-clock CPU seconds and
+/// right-hand-side evaluations (realizations). A run is on the Pareto front when no
+/// other run is both cheaper and more accurate. A run that fails is listed with its
+/// diagnostic instead of numbers.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/scene/scene.hpp"
+#include "sim/time/simulation.hpp"
+
+namespace mmv {
+
+struct TradeRun {
+  std::string integrator;
+  double accuracy = 0;
+  int segments = 0;  ///< 0: the scene's.
+  bool ok = true;
+  std::string failure;
+  double error_m = 0, seconds = 0;
+  long evaluations = 0;
+  bool pareto = false;
+};
+
+struct TradeOptions {
+  std::vector<std::string> integrators{"rk_merson", "rk3", "cpodes", "cvode_bdf", "cvode_adams", "arkode_erk", "arkode_dirk"};
+  std::vector<double> accuracies{1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+  std::vector<int> segments{2, 4, 8};  ///< with the reference integrator at 1e-8 (compared to the scene's segments).
+  double duration = 0;  ///< 0: the scene's.
+  std::vector<std::string> points;  ///< tips scored, e.g. "link3a.tip"; empty: every link tip.
+};
+
+struct TradeStudy {
+  std::string scene_name;
+  double duration = 0;
+  std::vector<std::string> points;  ///< as TradeOptions::points.
+  std::string reference_integrator = "cpodes", check_integrator = "cvode_bdf";  ///< both at 1e-10.
+  double reference_uncertainty_m = 0;
+  double reference_seconds = 0;
+  std::vector<TradeRun> runs;
+};
+
+/// What a trade runs: one kind of scene's time run as a function of the integrator
+/// settings and the segments per link. Made by articleTradeProblem (below) or, for
+/// the isolator, hamsasTradeProblem (sim/hamsas/hamsas_simulation.hpp).
+struct TradeProblem {
+  std::string scene_name;
+  double duration = 0;                  ///< s.
+  SimulationSpec simulation;            ///< the scene's settings (duration applied).
+  std::vector<std::string> scorable;    ///< the names a trade can score.
+  std::string scorable_kind;            ///< "link tip", "scored body": for messages.
+  std::string reference_integrator = "cpodes", check_integrator = "cvode_bdf";
+  bool has_segments = true;             ///< rigid bodies only: no segment ladder.
+  /// Runs with `spec` at `segments` per link (0: the scene's).
+  std::function<SimulationResult(const SimulationSpec& spec, int segments)> run;
+};
+
+/// The article's trade problem; `duration` > 0 overrides the scene's.
+TradeProblem articleTradeProblem(const ArticleScene& scene, double duration = 0);
+
+/// Throws, before running anything, when a scored point is not one the problem
+/// scores: SceneError at simulation.score_points for the scene's, UsageError for
+/// options.points (the message lists the known ones).
+TradeStudy runTrade(const TradeProblem& problem, const TradeOptions& options);
+
+}  // namespace mmv

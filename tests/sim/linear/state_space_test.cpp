@@ -1,0 +1,173 @@
+#include "sim/linear/state_space.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "support/scenes.hpp"
+
+namespace mmv {
+namespace {
+
+using cd = std::complex<double>;
+using Eigen::MatrixXd;
+
+// One DOF, m x'' + c x' + k x = f: displacement 1/(k - w^2 m + i w c), velocity i w
+// times that, acceleration -w^2 times that. Both evaluations (first- and second-order
+// form) to 1e-12 relative: only round-off separates them from the formula.
+TEST(StateSpace, OneDofFrfMatchesTheFormula) {
+  const double m = 2.0, c = 0.3, k = 50.0;
+  MatrixXd M(1, 1), C(1, 1), K(1, 1), B(1, 1), I(1, 1), O(1, 1);
+  M << m;
+  C << c;
+  K << k;
+  B << 1;
+  I << 1;
+  O << 0;
+  MatrixXd Cd(3, 1), Cv(3, 1), Ca(3, 1);
+  Cd << 1, 0, 0;
+  Cv << 0, 1, 0;
+  Ca << 0, 0, 1;
+  const StateSpace ss = secondOrderModel(M, C, K, B, Cd, Cv, Ca, MatrixXd());
+  const SecondOrderResponse so{M, C, K, B, Cd, Cv, Ca, MatrixXd::Zero(3, 1)};
+  for (double f : logFrequencies(0.01, 100, 57)) {
+    const double w = 2 * M_PI * f;
+    const cd x = 1.0 / cd(k - w * w * m, w * c);
+    const cd expect[3] = {x, cd(0, w) * x, -w * w * x};
+    const Eigen::MatrixXcd h1 = ss.response(w), h2 = so.response(w);
+    for (int r = 0; r < 3; ++r) {
+      EXPECT_LT(std::abs(h1(r, 0) - expect[r]), 1e-12 * std::abs(expect[r])) << f << " " << r;
+      EXPECT_LT(std::abs(h2(r, 0) - expect[r]), 1e-12 * std::abs(expect[r])) << f << " " << r;
+    }
+  }
+}
+
+// Two DOF chain (ground - k1 - m1 - k2 - m2), Rayleigh damping, force on m2: the
+// 2x2 inverse written out by hand (Cramer), independent of the LU used in the code.
+TEST(StateSpace, TwoDofFrfMatchesCramer) {
+  const double m1 = 1.0, m2 = 0.5, k1 = 100, k2 = 40, a = 0.1, b = 1e-3;
+  MatrixXd M(2, 2), K(2, 2);
+  M << m1, 0, 0, m2;
+  K << k1 + k2, -k2, -k2, k2;
+  const MatrixXd C = a * M + b * K;
+  MatrixXd B(2, 1), Cd(2, 2);
+  B << 0, 1;
+  Cd << 1, 0, 0, 1;
+  const StateSpace ss = secondOrderModel(M, C, K, B, Cd, MatrixXd(), MatrixXd(), MatrixXd());
+  for (double f : logFrequencies(0.1, 50, 41)) {
+    const double w = 2 * M_PI * f;
+    const cd d11 = k1 + k2 - w * w * m1 + cd(0, w) * (a * m1 + b * (k1 + k2));
+    const cd d12 = -k2 + cd(0, w) * (-b * k2);
+    const cd d22 = k2 - w * w * m2 + cd(0, w) * (a * m2 + b * k2);
+    const cd det = d11 * d22 - d12 * d12;
+    const cd x1 = -d12 / det, x2 = d11 / det;  // column 2 of the inverse
+    const Eigen::MatrixXcd h = ss.response(w);
+    EXPECT_LT(std::abs(h(0, 0) - x1), 1e-12 * std::abs(x1)) << f;
+    EXPECT_LT(std::abs(h(1, 0) - x2), 1e-12 * std::abs(x2)) << f;
+  }
+}
+
+// A point-mass pendulum on the table, modal damping zeta: the absolute acceleration of
+// the mass over the table's is (w0^2 + 2 i zeta w0 w) / (w0^2 - w^2 + 2 i zeta w0 w),
+// the classical base-excitation transmissibility. The rod weighs 1e-9 of the mass:
+// 1e-7 relative.
+TEST(StateSpace, PendulumOnTheTableTransmissibility) {
+  const double l = 0.8, g = 9.81, zeta = 0.05;
+  const ArticleScene s = testing::chainScene(1, l, 1e-9, g, 0.0, 2.0);
+  DampingSpec d;
+  d.modal_ratio = zeta;
+  const LinearModel lm = buildLinearModel(s, {{"table_x", InputKind::BaseAcceleration, "", 0}},
+                                          {{"tip_ax", OutputKind::Acceleration, "l1.tip", 0, true}}, d);
+  const double w0 = std::sqrt(g / l);
+  for (double f : logFrequencies(0.05, 5.0, 31)) {
+    const double w = 2 * M_PI * f;
+    const cd t = cd(w0 * w0, 2 * zeta * w0 * w) / cd(w0 * w0 - w * w, 2 * zeta * w0 * w);
+    EXPECT_LT(std::abs(lm.full.response(w)(0, 0) - t), 1e-7 * std::abs(t)) << f;
+    EXPECT_LT(std::abs(lm.second_order.response(w)(0, 0) - t), 1e-7 * std::abs(t)) << f;
+  }
+}
+
+LinearModel defaultModel() {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, 8);
+  DampingSpec d;
+  d.modal_ratio = 0.02;
+  return buildLinearModel(s, defaultInputs(), defaultOutputs(s), d);
+}
+
+TEST(StateSpace, ResidualizationKeepsEveryDcGainAndTruncationDoesNot) {
+  const LinearModel lm = defaultModel();
+  const Eigen::MatrixXcd h0 = lm.full.response(0.0);
+  ReductionOptions o;
+  o.modes = 4;
+  const ReducedModel res = reduceModal(lm.full, o);
+  EXPECT_TRUE(res.residualized);
+  EXPECT_LT((res.model.response(0.0) - h0).cwiseAbs().maxCoeff(), 1e-10 * h0.cwiseAbs().maxCoeff());
+  o.residualize = false;
+  const ReducedModel trunc = reduceModal(lm.full, o);
+  EXPECT_GT((trunc.model.response(0.0) - h0).cwiseAbs().maxCoeff(), 1e-3 * h0.cwiseAbs().maxCoeff());
+}
+
+TEST(StateSpace, BandErrorFallsAsModesAreAdded) {
+  const LinearModel lm = defaultModel();
+  std::vector<double> w = logFrequencies(0.1, 60, 200);
+  for (double& x : w) x *= 2 * M_PI;
+  double previous = INFINITY;
+  for (int k : {4, 8, 12, 16, 24}) {
+    ReductionOptions o;
+    o.modes = k;
+    const double e = compareResponses(lm.full, reduceModal(lm.full, o).model, w).max_relative;
+    EXPECT_LE(e, previous * (1 + 1e-9)) << k;
+    previous = e;
+  }
+  EXPECT_LT(previous, 1e-3);
+  ReductionOptions all;
+  all.modes = 1000;
+  EXPECT_LT(compareResponses(lm.full, reduceModal(lm.full, all).model, w).max_relative, 1e-9);
+}
+
+// With modal damping zeta the poles are -zeta w +- i w sqrt(1 - zeta^2) for every
+// undamped frequency w of the linearization.
+TEST(StateSpace, PolesAreTheLinearizationsEigenvalues) {
+  const LinearModel lm = defaultModel();
+  const ModalSolution modes = solveModes(lm.Mz, lm.Kz);
+  const Eigen::VectorXcd p = lm.full.poles();
+  for (Eigen::Index i = 0; i < modes.omega2.size(); ++i) {
+    const double w = std::sqrt(modes.omega2[i]);
+    const cd expect(-0.02 * w, w * std::sqrt(1 - 0.02 * 0.02));
+    double best = INFINITY;
+    for (Eigen::Index j = 0; j < p.size(); ++j) best = std::min(best, std::abs(p[j] - expect));
+    EXPECT_LT(best, 1e-7 * w) << "mode " << i;
+  }
+}
+
+// The slides' method: eigenvalues of the implicit integrator's Jacobian pencil, mapped
+// back with the inverse Tustin transform, equal the poles found directly.
+TEST(StateSpace, IntegratorJacobianPencilGivesThePoles) {
+  const LinearModel lm = defaultModel();
+  const Eigen::VectorXcd p = lm.full.poles();
+  for (double dcoef : {1e-3, 1e-2}) {
+    const Eigen::VectorXcd q = polesFromIntegratorJacobian(lm.full, dcoef);
+    ASSERT_EQ(q.size(), p.size());
+    for (Eigen::Index i = 0; i < p.size(); ++i) {
+      double best = INFINITY;
+      for (Eigen::Index j = 0; j < q.size(); ++j) best = std::min(best, std::abs(q[j] - p[i]));
+      EXPECT_LT(best, 1e-6 * std::abs(p[i])) << "pole " << i << " dCoef " << dcoef;
+    }
+  }
+}
+
+TEST(StateSpace, BadSpecsAreNamed) {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, 2);
+  const DampingSpec d;
+  EXPECT_THROW(buildLinearModel(s, {{"t", InputKind::JointTorque, "joint2", 0}}, defaultOutputs(s), d), SceneError);
+  EXPECT_THROW(buildLinearModel(s, defaultInputs(), {{"y", OutputKind::Displacement, "link9.tip", 0, false}}, d),
+               SceneError);
+  EXPECT_THROW(buildLinearModel(s, defaultInputs(), {{"y", OutputKind::Displacement, "link1.tip", 0, true}}, d),
+               SceneError);
+}
+
+}  // namespace
+}  // namespace mmv

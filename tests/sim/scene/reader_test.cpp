@@ -1,0 +1,265 @@
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+namespace {
+
+ArticleScene parseArticle(const std::string& text, const std::string& source) {
+  return std::get<ArticleScene>(parseScene(text, source));
+}
+
+// A small valid scene; each bad-input test edits one line of it.
+const char* kGood = R"(name: two links
+gravity: [0, -9.81, 0]
+materials:
+  steel: {density: 7800, youngs_modulus: 2.0e11}
+sections:
+  bar: {shape: rectangle, b: 0.02, h: 0.01}
+joints:
+  - name: j1
+    parent: base
+    angle_deg: 30
+  - name: j2
+    parent: l1
+    hold: free
+links:
+  - name: l1
+    joint: j1
+    material: steel
+    section: bar
+    length: 1.0
+    segments: 4
+  - name: l2
+    joint: j2
+    material: steel
+    section: bar
+    length: 0.5
+    segments: rigid
+    branches: {count: 2, angle_deg: 20}
+)";
+
+std::string replaceLine(const std::string& text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  std::string out = text;
+  out.replace(at, from.size(), to);
+  return out;
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    parseArticle(text, "s.yaml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(SceneYaml, GoodSceneParses) {
+  const ArticleScene s = parseArticle(kGood, "s.yaml");
+  EXPECT_EQ(s.name, "two links");
+  ASSERT_EQ(s.article.links.size(), 3u);  // l2 expands into two branches
+  EXPECT_EQ(s.article.links[1].name, "l2a");
+  EXPECT_EQ(s.article.links[2].name, "l2b");
+  EXPECT_NEAR(s.article.links[1].mount_angle, -10 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(s.article.links[2].mount_angle, 10 * M_PI / 180, 1e-15);
+  EXPECT_TRUE(s.article.links[1].rigid);
+  EXPECT_EQ(s.article.links[0].segments, 4);
+  EXPECT_NEAR(s.article.joints[0].angle, M_PI / 6, 1e-15);
+  EXPECT_EQ(s.article.joints[1].hold, JointHold::Free);
+}
+
+TEST(SceneYaml, DefaultSceneParsesAndMatchesReportTable1) {
+  const ArticleScene s = loadDefaultScene();
+  ASSERT_EQ(s.article.links.size(), 4u);
+  EXPECT_EQ(s.article.findLink("link1")->length, 2.44);
+  EXPECT_EQ(s.article.findLink("link3b")->length, 0.762);
+  EXPECT_EQ(s.article.findMaterial("carbon_carbon")->youngs_modulus, 41.4e9);
+}
+
+struct BadCase {
+  const char* what;  // also the test name
+  const char* from;
+  const char* to;
+  const char* expected;  // the whole message
+};
+
+class SceneYamlBad : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(SceneYamlBad, OneLineErrorWithPosition) {
+  const BadCase& c = GetParam();
+  EXPECT_EQ(errorOf(replaceLine(kGood, c.from, c.to)), c.expected) << c.what;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Classes, SceneYamlBad,
+    ::testing::Values(
+        BadCase{"malformed", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0",
+                "s.yaml:3:10: malformed YAML: end of sequence flow not found"},
+        BadCase{"unknown key", "    angle_deg: 30", "    angel_deg: 30",
+                "s.yaml:10:5: unknown key 'joints[0].angel_deg' (allowed: name, parent, angle_deg, hold, servo_stiffness, torquer, slew, torque_capacity, torque)"},
+        BadCase{"duplicate key", "    length: 1.0\n", "    length: 1.0\n    length: 2.0\n",
+                "s.yaml:20:5: duplicate key 'links[0].length'"},
+        BadCase{"missing key", "    length: 0.5\n", "",
+                "s.yaml:21:5: links[1] is missing required key 'length'"},
+        BadCase{"wrong type", "    length: 1.0", "    length: [1.0]",
+                "s.yaml:19:13: links[0].length must be a number (got a list)"},
+        BadCase{"not a number", "    length: 1.0", "    length: 1.0m",
+                "s.yaml:19:13: links[0].length must be a number (got 1.0m)"},
+        BadCase{"length <= 0", "    length: 1.0", "    length: -0.76",
+                "s.yaml:19:13: links[0].length must be > 0 m (got -0.76)"},
+        BadCase{"E <= 0", "youngs_modulus: 2.0e11", "youngs_modulus: 0",
+                "s.yaml:4:42: materials.steel.youngs_modulus must be > 0 Pa (got 0)"},
+        BadCase{"rho <= 0", "density: 7800", "density: -1",
+                "s.yaml:4:20: materials.steel.density must be > 0 kg/m^3 (got -1)"},
+        BadCase{"A <= 0", "bar: {shape: rectangle, b: 0.02, h: 0.01}", "bar: {shape: explicit, area: 0, second_moment: 1e-9}",
+                "s.yaml:6:32: sections.bar.area must be > 0 m^2 (got 0)"},
+        BadCase{"I <= 0", "bar: {shape: rectangle, b: 0.02, h: 0.01}", "bar: {shape: explicit, area: 1e-4, second_moment: -1e-9}",
+                "s.yaml:6:53: sections.bar.second_moment must be > 0 m^4 (got -1e-9)"},
+        BadCase{"segments < 1", "    segments: 4", "    segments: 0",
+                "s.yaml:20:15: links[0].segments must be an integer from 1 to 4096 or 'rigid' (got 0)"},
+        BadCase{"unknown material", "    material: steel\n    section: bar\n    length: 1.0",
+                "    material: steal\n    section: bar\n    length: 1.0",
+                "s.yaml:17:15: links[0].material: unknown material 'steal' (known: steel)"},
+        BadCase{"unknown link", "    parent: l1", "    parent: l9",
+                "s.yaml:12:13: joints[1].parent: unknown parent 'l9' (known: base, l1, l2a, l2b)"},
+        BadCase{"unknown joint", "    joint: j2", "    joint: j7",
+                "s.yaml:22:12: links[1].joint: unknown joint 'j7' (known: j1, j2)"},
+        BadCase{"nan", "    length: 1.0", "    length: .nan",
+                "s.yaml:19:13: links[0].length must be a finite number (got .nan)"},
+        BadCase{"gimbal beyond range", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    pitch: {angle_deg: 50}",
+                "s.yaml:5:24: base.gimbal.pitch.angle_deg: 50 deg is beyond the gimbal's +-45 deg pitch range"},
+        BadCase{"gimbal slew beyond range", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    roll: {slew: {to_deg: -95}}",
+                "s.yaml:5:27: base.gimbal.roll.slew.to_deg: -95 deg is beyond the gimbal's +-90 deg roll range"},
+        BadCase{"gimbal unknown axis", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    tilt: {angle_deg: 5}",
+                "s.yaml:5:5: unknown key 'base.gimbal.tilt' (allowed: yaw, pitch, roll, ring_mass, ring_inertia)"},
+        BadCase{"out of plane gravity", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 1]",
+                "s.yaml:2:21: gravity[2] must be 0 m/s^2: the article moves in the x-y plane (got 1)"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) {
+      std::string name = info.param.what;
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
+
+TEST(SceneYaml, GimbalOnlyWhenNamed) {
+  EXPECT_FALSE(parseArticle(kGood, "s.yaml").article.base.gimbal);
+  const ArticleScene s = parseArticle(replaceLine(kGood, "gravity: [0, -9.81, 0]",
+                                         "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    roll: {angle_deg: -90, "
+                                         "torque_capacity: 60}\n    pitch: {slew: {to_deg: 45}}\n    ring_mass: 4"),
+                             "s.yaml");
+  ASSERT_TRUE(s.article.base.gimbal);
+  const GimbalSpec& g = *s.article.base.gimbal;
+  EXPECT_NEAR(g.roll.angle, -M_PI / 2, 1e-15);
+  EXPECT_EQ(g.roll.torque_capacity, 60.0);
+  EXPECT_EQ(g.yaw.torque_capacity, 200.0);  // DATASHEET section 2 defaults
+  ASSERT_TRUE(g.pitch.slew);
+  EXPECT_NEAR(g.pitch.slew->to, M_PI / 4, 1e-15);
+  EXPECT_EQ(g.ring_mass, 4.0);
+  EXPECT_EQ(s.article.torqueCapacity("gimbal.roll"), 60.0);
+}
+
+TEST(SceneYaml, LoopOfJointsIsNotConnected) {
+  const std::string text = replaceLine(kGood, "    parent: base", "    parent: l2a");
+  EXPECT_EQ(errorOf(text), "s.yaml:15:5: links[0]: link 'l1' is not connected to the base (its joints form a loop)");
+}
+
+TEST(SceneYaml, ClosureAndLoadKeys) {
+  std::string text = std::string(kGood) +
+                     "closures:\n  - {name: prop, point: l1.tip, type: slider, direction_deg: 90}\n"
+                     "  - {point: l2a.tip, to: l1.h2}\n"
+                     "loads:\n  - {point: j2, force: [0, -10, 0]}\n";
+  const ArticleScene s = parseArticle(text, "s.yaml");
+  ASSERT_EQ(s.article.closures.size(), 2u);
+  EXPECT_EQ(s.article.closures[0].type, ClosureType::Slider);
+  EXPECT_NEAR(s.article.closures[0].direction, M_PI / 2, 1e-15);
+  EXPECT_EQ(s.article.closures[0].where, "s.yaml:29:5");
+  EXPECT_EQ(s.article.closures[1].to, "l1.h2");
+  EXPECT_EQ(s.article.closures[1].name, "closure2");
+  ASSERT_EQ(s.article.loads.size(), 1u);
+  EXPECT_EQ(s.article.loads[0].force[1], -10);
+}
+
+TEST(SceneYaml, ClosureNamingAnUnknownPoint) {
+  const std::string text = std::string(kGood) + "closures:\n  - {point: l3.tip}\n";
+  EXPECT_EQ(errorOf(text),
+            "s.yaml:29:13: closures[0].point: unknown point 'l3.tip' (points are <joint>, <link>.root, <link>.tip and "
+            "<link>.h1 .. <link>.h<segments>)");
+  const std::string hinge = std::string(kGood) + "closures:\n  - {point: l1.h5}\n";  // l1 has 4 segments
+  EXPECT_NE(errorOf(hinge).find("unknown point 'l1.h5'"), std::string::npos);
+  const std::string at = std::string(kGood) + "closures:\n  - {point: l1.tip, to: l1.h2, at: [0, 0, 0]}\n";
+  EXPECT_NE(errorOf(at).find("closures[0].at applies only to closures to the ground"), std::string::npos);
+}
+
+TEST(SceneYaml, DampingAndTable) {
+  std::string text = replaceLine(kGood, "gravity: [0, -9.81, 0]",
+                                 "gravity: [0, -9.81, 0]\nbase: {type: table, table_mass: 50, motion: {type: sine, amplitude: 0.002, "
+                                 "frequency_hz: 3}}\ndamping: {hinge_beta: 0.01}");
+  const ArticleScene s = parseArticle(text, "s.yaml");
+  EXPECT_EQ(s.article.base.type, BaseType::Table);
+  EXPECT_EQ(s.article.base.table_mass, 50);
+  ASSERT_TRUE(s.article.base.motion.has_value());
+  EXPECT_EQ(s.article.base.motion->frequency_hz, 3);
+  ASSERT_TRUE(s.damping.has_value());
+  EXPECT_EQ(s.damping->kind, DampingSpec::Kind::HingeViscous);
+  EXPECT_EQ(s.damping->hinge_beta, 0.01);
+  EXPECT_EQ(errorOf(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\ndamping: {modal_ratio: 0.02, hinge_beta: 0.01}")),
+            "s.yaml:3:10: damping must give exactly one of modal_ratio, rayleigh, hinge_beta");
+  EXPECT_EQ(errorOf(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nbase: {table_mass: 5}")),
+            "s.yaml:3:20: base.table_mass applies only with type: table");
+  EXPECT_EQ(errorOf(replaceLine(kGood, "gravity: [0, -9.81, 0]",
+                                "gravity: [0, -9.81, 0]\nbase: {type: table, motion: {type: sine, amplitude: 1, frequency_hz: 0}}")),
+            "s.yaml:3:70: base.motion.frequency_hz must be > 0 Hz (got 0)");
+}
+
+TEST(SceneYaml, Sensors) {
+  const std::string good = std::string(kGood) +
+                           "sensors:\n  - {name: e1, type: encoder, joint: j1}\n"
+                           "  - {name: a1, type: accelerometer, point: l1.tip, axis: transverse, noise_sigma: 0.01}\n";
+  const ArticleScene s = parseArticle(good, "s.yaml");
+  ASSERT_EQ(s.sensors.size(), 2u);
+  EXPECT_EQ(s.sensors[1].axis, 1);
+  EXPECT_EQ(errorOf(std::string(kGood) + "sensors:\n  - {name: g, type: rate_gyro, point: l7.tip}\n"),
+            "s.yaml:29:39: sensors[0].point: unknown point 'l7.tip' (points are <joint>, <link>.root, <link>.tip and "
+            "<link>.h1 .. <link>.h<segments>)");
+  EXPECT_NE(errorOf(std::string(kGood) + "sensors:\n  - {name: x, type: lidar, point: l1.tip}\n").find("unknown sensor 'lidar'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(std::string(kGood) + "sensors:\n  - {name: e, type: encoder, joint: j9}\n").find("unknown joint 'j9'"),
+            std::string::npos);
+}
+
+TEST(SceneYaml, EmptyScene) {
+  EXPECT_EQ(errorOf(""), "s.yaml:1:1: the scene is empty (expected a mapping with 'links' and 'joints')");
+}
+
+TEST(SceneYaml, MissingFile) {
+  EXPECT_THROW(loadSceneFile("/nonexistent/scene.yaml"), SceneFileError);
+}
+
+}  // namespace
+}  // namespace mmv
+
+namespace mmv {
+namespace {
+
+TEST(SceneYaml, TorqueInputOnlyOnAMovingJoint) {
+  const ArticleScene s = parseArticle(replaceLine(kGood, "    hold: free", "    hold: free\n    torque: {type: sine, amplitude: 2.5, frequency_hz: 3}"),
+                             "s.yaml");
+  ASSERT_TRUE(s.article.joints[1].torque_input.has_value());
+  EXPECT_EQ(s.article.joints[1].torque_input->amplitude, 2.5);
+  EXPECT_EQ(errorOf(replaceLine(kGood, "    angle_deg: 30", "    angle_deg: 30\n    torque: {type: sine, amplitude: 1, frequency_hz: 1}")),
+            "s.yaml:11:13: joints[0].torque: a commanded torque needs a joint that moves (hold: free or servo)");
+  EXPECT_EQ(errorOf(replaceLine(kGood, "    hold: free", "    hold: free\n    torque: {type: random, rms: -1, from_hz: 1, to_hz: 2, duration: 1}")),
+            "s.yaml:14:33: joints[1].torque.rms must be >= 0 N*m (got -1)");
+}
+
+}  // namespace
+}  // namespace mmv
