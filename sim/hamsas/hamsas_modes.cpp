@@ -37,58 +37,46 @@ double measured(const std::string& feature) {
   throw std::logic_error("no measured feature " + feature);
 }
 
-}  // namespace
+/// Kinetic energy shares per group and direction, strain shares per element group,
+/// and a label (the group and direction that carry the most).
+SpatialMode describeMode(const SpatialSpec& s, const SpatialLinearization& lin, const Eigen::VectorXd& phi, double frequency_hz) {
+  SpatialMode m;
+  m.frequency_hz = frequency_hz;
+  const double T = phi.dot(lin.M * phi);
+  std::map<std::string, Eigen::Matrix<double, 6, 1>> by_dir;
+  for (std::size_t b = 1; b < s.bodies.size(); ++b) {
+    const int r = SpatialLinearization::row(static_cast<int>(b));
+    const Eigen::VectorXd pb = phi.segment<6>(r);
+    const Eigen::Matrix<double, 6, 6> Mb = lin.M.block<6, 6>(r, r);
+    m.kinetic_share[s.bodies[b].group] += pb.dot(Mb * pb) / T;
+    auto& d = by_dir.try_emplace(s.bodies[b].group, Eigen::Matrix<double, 6, 1>::Zero()).first->second;
+    for (int k = 0; k < 6; ++k) d[k] += pb[k] * (Mb.row(k).dot(pb));
+  }
+  const double V = phi.dot(lin.K * phi);
+  for (const auto& e : lin.elements) {
+    m.strain_share[e.group] += phi.dot(e.K * phi) / V;
+    m.strain_share["preload"] += phi.dot(e.K_preload * phi) / V;
+  }
+  std::string best;
+  double share = -1;
+  const auto groups = m.kinetic_share;
+  for (const auto& [g, d] : by_dir)
+    for (int k = 0; k < 6; ++k) m.kinetic_share[g + "." + kDirections[k]] = d[k] / T;
+  for (const auto& [g, v] : groups)
+    if (v > share) share = v, best = g;
+  Eigen::Index k;
+  by_dir[best].maxCoeff(&k);
+  m.label = best + " " + kDirections[k];
+  return m;
+}
 
-HamsasModes analyseHamsas(const HamsasSpec& spec) {
-  HamsasModes h;
-  h.spec = spec;
-  h.model = buildHamsas(spec);
-  h.lin = linearizeSpatial(h.model, spec.ideal_joints);
-  h.solution = spatialModes(h.lin);
+/// The measured features matched to modes: by correlation with a rigid pattern (IP,
+/// tilt, vertical, GAS) or by the first mode with half its energy in a group.
+void matchFeatures(const HamsasSpec& spec, HamsasModes& h) {
   const SpatialSpec& s = h.model;
   const SpatialLinearization& lin = h.lin;
   const ModalSolution& sol = h.solution;
   const int nm = static_cast<int>(sol.omega2.size());
-
-  for (int i = 0; i < nm; ++i) {
-    const Eigen::VectorXd phi = sol.shapes.col(i);
-    SpatialMode m;
-    m.frequency_hz = sol.frequencyHz(i);
-    const double T = phi.dot(lin.M * phi);
-    std::map<std::string, Eigen::Matrix<double, 6, 1>> by_dir;
-    for (std::size_t b = 1; b < s.bodies.size(); ++b) {
-      const int r = SpatialLinearization::row(static_cast<int>(b));
-      const Eigen::VectorXd pb = phi.segment<6>(r);
-      const Eigen::Matrix<double, 6, 6> Mb = lin.M.block<6, 6>(r, r);
-      m.kinetic_share[s.bodies[b].group] += pb.dot(Mb * pb) / T;
-      auto& d = by_dir.try_emplace(s.bodies[b].group, Eigen::Matrix<double, 6, 1>::Zero()).first->second;
-      for (int k = 0; k < 6; ++k) d[k] += pb[k] * (Mb.row(k).dot(pb));
-    }
-    const double V = phi.dot(lin.K * phi);
-    for (const auto& e : lin.elements) {
-      m.strain_share[e.group] += phi.dot(e.K * phi) / V;
-      m.strain_share["preload"] += phi.dot(e.K_preload * phi) / V;
-    }
-    std::string best;
-    double share = -1;
-    const auto groups = m.kinetic_share;
-    for (const auto& [g, d] : by_dir)
-      for (int k = 0; k < 6; ++k) m.kinetic_share[g + "." + kDirections[k]] = d[k] / T;
-    for (const auto& [g, v] : groups)
-      if (v > share) share = v, best = g;
-    Eigen::Index k;
-    by_dir[best].maxCoeff(&k);
-    m.label = best + " " + kDirections[k];
-    h.modes.push_back(m);
-    if (sol.isStable(i) && !sol.isRigidBody(i)) {
-      const Eigen::VectorXd eta = lin.Z.transpose() * phi;
-      const Eigen::VectorXd mv = lin.Mz * eta;
-      h.max_relative_residual =
-          std::max(h.max_relative_residual, (lin.Kz * eta - sol.omega2[i] * mv).norm() / (sol.omega2[i] * mv.norm()));
-    }
-  }
-
-  // Features identified by shape: the stable mode best correlated with a rigid pattern.
   auto correlate = [&](const Eigen::VectorXd& v, int i) {
     const Eigen::VectorXd phi = sol.shapes.col(i);
     const double num = phi.dot(lin.M * v);
@@ -139,6 +127,29 @@ HamsasModes analyseHamsas(const HamsasSpec& spec) {
             auto it = m.strain_share.find("joint");
             return it == m.strain_share.end() ? 0.0 : it->second;
           });
+}
+
+}  // namespace
+
+HamsasModes analyseHamsas(const HamsasSpec& spec) {
+  HamsasModes h;
+  h.spec = spec;
+  h.model = buildHamsas(spec);
+  h.lin = linearizeSpatial(h.model, spec.ideal_joints);
+  h.solution = spatialModes(h.lin);
+  const SpatialLinearization& lin = h.lin;
+  const ModalSolution& sol = h.solution;
+  for (int i = 0; i < static_cast<int>(sol.omega2.size()); ++i) {
+    const Eigen::VectorXd phi = sol.shapes.col(i);
+    h.modes.push_back(describeMode(h.model, lin, phi, sol.frequencyHz(i)));
+    if (sol.isStable(i) && !sol.isRigidBody(i)) {
+      const Eigen::VectorXd eta = lin.Z.transpose() * phi;
+      const Eigen::VectorXd mv = lin.Mz * eta;
+      h.max_relative_residual =
+          std::max(h.max_relative_residual, (lin.Kz * eta - sol.omega2[i] * mv).norm() / (sol.omega2[i] * mv.norm()));
+    }
+  }
+  matchFeatures(spec, h);
   return h;
 }
 

@@ -47,18 +47,15 @@ Eigen::MatrixXd spatialPointJacobian(const SpatialSpec& s, int body, const Eigen
   return J;
 }
 
-SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
-  const int nb = static_cast<int>(s.bodies.size());
-  if (nb < 2) throw std::invalid_argument("spatial model: needs the base and at least one body");
-  const int N = 6 * nb, n = N - 6;
-  SpatialLinearization lin;
-  lin.ideal_joints = ideal_joints;
-  lin.num_free = n;
+namespace {
 
+/// Elastic stiffness and damping of every element, and their kinematic maps.
+/// `joint_rows` receives the point springs held as ideal constraints.
+Assembly assemble(const SpatialSpec& s, bool ideal_joints, std::vector<int>& joint_rows) {
+  const int nb = static_cast<int>(s.bodies.size()), N = 6 * nb;
   Assembly a;
   a.K_el = Eigen::MatrixXd::Zero(N, N);
   a.C = Eigen::MatrixXd::Zero(N, N);
-  std::vector<int> joint_rows;  // indices of constraint springs (ideal)
   for (std::size_t e = 0; e < s.springs.size(); ++e) {
     const PointSpring& sp = s.springs[e];
     const Eigen::MatrixXd D = spatialPointJacobian(s, sp.b, sp.point) - spatialPointJacobian(s, sp.a, sp.point);
@@ -79,24 +76,18 @@ SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
     a.K_el += Ke;
     a.C += R.transpose() * as.damping.asDiagonal() * R;
   }
+  return a;
+}
 
-  // Gravity on the free bodies' mass centres.
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
-  double weight = 0;
-  for (int b = 1; b < nb; ++b) {
-    f.segment<3>(6 * (b - 1)) = s.bodies[b].mass * s.gravity;
-    weight += s.bodies[b].mass * s.gravity.norm();
-  }
-  const Eigen::MatrixXd Kff_el = a.K_el.bottomRightCorner(n, n);
-
-  // Preloads: the linear-elastic force distribution that balances gravity at the design.
-  // Pendulums are mechanisms of the elastic stiffness alone (their stiffness is the
-  // preload's), so the system is solved in the least-squares sense over the elastic
-  // range; the null-space part moves no element, so the element forces are unique.
-  // The equilibrium residual below says whether gravity is really carried.
-  Eigen::MatrixXd G(3 * joint_rows.size(), n);
-  for (std::size_t j = 0; j < joint_rows.size(); ++j) G.middleRows(3 * j, 3) = a.D[joint_rows[j]].rightCols(n);
-  const int m = static_cast<int>(G.rows());
+/// Preloads: the linear-elastic force distribution that balances gravity `f` at the
+/// design. Pendulums are mechanisms of the elastic stiffness alone (their stiffness is
+/// the preload's), so the system is solved in the least-squares sense over the elastic
+/// range; the null-space part moves no element, so the element forces are unique. The
+/// equilibrium residual (checked by the caller) says whether gravity is really carried.
+/// Returns the displacements u (free bodies) and the ideal joints' forces lambda.
+void solvePreload(const Eigen::MatrixXd& Kff_el, const Eigen::MatrixXd& G, const Eigen::VectorXd& f, Eigen::VectorXd& u,
+                  Eigen::VectorXd& lambda) {
+  const int n = static_cast<int>(Kff_el.rows()), m = static_cast<int>(G.rows());
   // Constraint rows scaled to the stiffness so the bordered matrix keeps its conditioning.
   const double alpha = std::max(Kff_el.diagonal().cwiseAbs().maxCoeff(), 1.0);
   Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
@@ -114,14 +105,18 @@ SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
   Eigen::VectorXd coeff = es.eigenvectors().transpose() * rhs;
   for (int i = 0; i < ev.size(); ++i) coeff[i] = std::abs(ev[i]) > cut ? coeff[i] / ev[i] : 0.0;
   const Eigen::VectorXd sol = es.eigenvectors() * coeff;
-  const Eigen::VectorXd u = sol.head(n);
-  const Eigen::VectorXd lambda = alpha * sol.tail(m);
-  Eigen::VectorXd ufull = Eigen::VectorXd::Zero(N);
-  ufull.tail(n) = u;
+  u = sol.head(n);
+  lambda = alpha * sol.tail(m);
+}
 
-  // Element forces and the geometric (preload) stiffness each one adds.
+/// Element forces at the preload and the geometric stiffness each adds (into
+/// `element`, per element, full size); returns the total stiffness.
+Eigen::MatrixXd addPreloadStiffness(const SpatialSpec& s, bool ideal_joints, const Assembly& a, const Eigen::VectorXd& ufull,
+                                    const Eigen::VectorXd& lambda, SpatialLinearization& lin,
+                                    std::vector<Eigen::MatrixXd>& element) {
+  const int N = static_cast<int>(ufull.size());
   Eigen::MatrixXd K = a.K_el;
-  std::vector<Eigen::MatrixXd> element(a.element_el.size(), Eigen::MatrixXd::Zero(N, N));
+  element.assign(a.element_el.size(), Eigen::MatrixXd::Zero(N, N));
   int joint_k = 0;
   for (std::size_t e = 0; e < s.springs.size(); ++e) {
     const PointSpring& sp = s.springs[e];
@@ -146,16 +141,15 @@ SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
     element[s.springs.size() + e] += Kg;
     K += Kg;
   }
+  return K;
+}
 
-  // Equilibrium check at the design: gravity against every element's force.
-  Eigen::VectorXd res = f;
-  for (std::size_t e = 0; e < s.springs.size(); ++e) res -= a.D[e].rightCols(n).transpose() * lin.spring_force[e];
-  for (std::size_t e = 0; e < s.angular.size(); ++e) res -= a.R[e].rightCols(n).transpose() * lin.angular_moment[e];
-  lin.equilibrium_residual = weight > 0 ? res.norm() / weight : res.norm();
-  if (!(lin.equilibrium_residual < 1e-8))
-    throw NumericalError("spatial model: the elements cannot carry gravity at the design configuration (equilibrium residual " +
-                         std::to_string(lin.equilibrium_residual) + " of the weight): a loaded mechanism");
-
+/// Mass, stiffness, damping over the free bodies, each element's share, and the
+/// constrained (Z) forms; `G` holds the ideal joints' rows.
+void finishMatrices(const SpatialSpec& s, const Assembly& a, const Eigen::MatrixXd& K,
+                    const std::vector<Eigen::MatrixXd>& element, const Eigen::MatrixXd& G, bool has_joints,
+                    SpatialLinearization& lin) {
+  const int nb = static_cast<int>(s.bodies.size()), n = 6 * nb - 6;
   lin.M = Eigen::MatrixXd::Zero(n, n);
   for (int b = 1; b < nb; ++b) {
     lin.M.block<3, 3>(6 * (b - 1), 6 * (b - 1)) = s.bodies[b].mass * Eigen::Matrix3d::Identity();
@@ -172,8 +166,7 @@ SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
     const std::string& group = is_spring ? s.springs[e].group : s.angular[e - s.springs.size()].group;
     lin.elements.push_back({name, group, a.element_el[e].bottomRightCorner(n, n), element[e].bottomRightCorner(n, n)});
   }
-
-  if (joint_rows.empty()) {
+  if (!has_joints) {
     lin.Z = Eigen::MatrixXd::Identity(n, n);
   } else {
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(G, Eigen::ComputeFullV);
@@ -188,6 +181,43 @@ SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
   lin.Cz = lin.Z.transpose() * lin.C * lin.Z;
   lin.Mz = 0.5 * (lin.Mz + lin.Mz.transpose());
   lin.Kz = 0.5 * (lin.Kz + lin.Kz.transpose());
+}
+
+}  // namespace
+
+SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
+  const int nb = static_cast<int>(s.bodies.size());
+  if (nb < 2) throw std::invalid_argument("spatial model: needs the base and at least one body");
+  const int N = 6 * nb, n = N - 6;
+  SpatialLinearization lin;
+  lin.ideal_joints = ideal_joints;
+  lin.num_free = n;
+  std::vector<int> joint_rows;  // indices of constraint springs (ideal)
+  const Assembly a = assemble(s, ideal_joints, joint_rows);
+  // Gravity on the free bodies' mass centres.
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  double weight = 0;
+  for (int b = 1; b < nb; ++b) {
+    f.segment<3>(6 * (b - 1)) = s.bodies[b].mass * s.gravity;
+    weight += s.bodies[b].mass * s.gravity.norm();
+  }
+  Eigen::MatrixXd G(3 * joint_rows.size(), n);
+  for (std::size_t j = 0; j < joint_rows.size(); ++j) G.middleRows(3 * j, 3) = a.D[joint_rows[j]].rightCols(n);
+  Eigen::VectorXd u, lambda;
+  solvePreload(a.K_el.bottomRightCorner(n, n), G, f, u, lambda);
+  Eigen::VectorXd ufull = Eigen::VectorXd::Zero(N);
+  ufull.tail(n) = u;
+  std::vector<Eigen::MatrixXd> element;
+  const Eigen::MatrixXd K = addPreloadStiffness(s, ideal_joints, a, ufull, lambda, lin, element);
+  // Equilibrium check at the design: gravity against every element's force.
+  Eigen::VectorXd res = f;
+  for (std::size_t e = 0; e < s.springs.size(); ++e) res -= a.D[e].rightCols(n).transpose() * lin.spring_force[e];
+  for (std::size_t e = 0; e < s.angular.size(); ++e) res -= a.R[e].rightCols(n).transpose() * lin.angular_moment[e];
+  lin.equilibrium_residual = weight > 0 ? res.norm() / weight : res.norm();
+  if (!(lin.equilibrium_residual < 1e-8))
+    throw NumericalError("spatial model: the elements cannot carry gravity at the design configuration (equilibrium residual " +
+                         std::to_string(lin.equilibrium_residual) + " of the weight): a loaded mechanism");
+  finishMatrices(s, a, K, element, G, !joint_rows.empty(), lin);
   return lin;
 }
 

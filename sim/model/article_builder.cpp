@@ -154,89 +154,112 @@ class Builder {
     for (const auto& l : a_.links)
       if (l.joint == j.name) children.push_back(&l);
     MMV_DEMAND(!children.empty());
-
     // The first child's root piece carries the pin; the others are welded to it.
-    SimTK::MobilizedBodyIndex rotor;
-    double rotor_mount = 0;
-    for (std::size_t c = 0; c < children.size(); ++c) {
-      const LinkSpec& l = *children[c];
-      const LinkDiscretization d = discretize(l);
-      const int part = model_.addPart(l.name, Part::Kind::Link, l.name);
-      const double gyr2 = sectionGyrationSquared(*a_.findSection(l.section));
-      SimTK::MobilizedBodyIndex prev;
-      for (std::size_t k = 0; k < d.pieces.size(); ++k) {
-        const SimTK::Body::Rigid body = pieceBody(d.pieces[k], gyr2);
-        SimTK::MobilizedBodyIndex ix;
-        if (k == 0 && c == 0 && parent.grounded && a_.base.type == BaseType::Floating) {
-          // A floating root (component modes, free-free): rotation and both translations.
-          SimTK::MobilizedBody::Planar planar(matter.updMobilizedBody(parent.mobod), parent.X_BF, body,
-                                              rotZ(-l.mount_angle));
-          ix = planar.getMobilizedBodyIndex();
-          const char* names[] = {"", ".x", ".y"};
-          for (int q = 0; q < 3; ++q) {
-            Coordinate coord;
-            coord.name = j.name + names[q];
-            coord.kind = CoordinateKind::Joint;
-            coord.motion = q == 0 ? CoordinateMotion::Rotation : CoordinateMotion::Translation;
-            coord.mobilizer_q = q;
-            coord.part = j.name;
-            coord.mobod = ix;
-            coord.reference = q == 0 ? j.angle : 0.0;
-            model_.addCoordinate(coord);
-          }
-          rotor = ix;
-          rotor_mount = l.mount_angle;
-        } else if (k == 0 && c == 0) {
-          SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(parent.mobod), parent.X_BF, body,
-                                        rotZ(-l.mount_angle));
-          ix = pin.getMobilizedBodyIndex();
-          Coordinate coord;
-          coord.name = j.name;
-          coord.kind = CoordinateKind::Joint;
-          coord.part = j.name;
-          coord.mobod = ix;
-          coord.reference = j.angle;
-          coord.held = j.hold == JointHold::Locked;
-          coord.stiffness = j.hold == JointHold::Servo ? j.servo_stiffness : 0.0;
-          if (j.torque_input) coord.input = makeTableProgram(*j.torque_input);
-          model_.addCoordinate(coord);
-          // A locked torquer holds its angle in the dynamics too (zero prescribed speed),
-          // or follows its slew.
-          if (coord.held) holdOrSlew(pin, j.angle, j.slew, M_PI);
-          rotor = ix;
-          rotor_mount = l.mount_angle;
-        } else if (k == 0) {
-          SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(rotor), rotZ(-rotor_mount), body, rotZ(-l.mount_angle));
-          ix = w.getMobilizedBodyIndex();
-        } else {
-          const double l_prev = d.pieces[k - 1].length;
-          SimTK::MobilizedBody::Pin pin(matter.updMobilizedBody(prev), SimTK::Transform(SimTK::Vec3(l_prev, 0, 0)),
-                                        body, SimTK::Transform());
-          ix = pin.getMobilizedBodyIndex();
-          Coordinate coord;
-          coord.name = l.name + ".h" + std::to_string(k);
-          coord.kind = CoordinateKind::Hinge;
-          coord.part = l.name;
-          coord.mobod = ix;
-          coord.stiffness = d.hinge_stiffness[k - 1];
-          if (scene_.damping && scene_.damping->kind == DampingSpec::Kind::HingeViscous)
-            coord.damping = scene_.damping->hinge_beta * coord.stiffness;
-          model_.addCoordinate(coord);
-          model_.addPoint({coord.name, ix, SimTK::Vec3(0), false});
-        }
-        model_.addBody(ix, part, false);
-        if (k == 0) model_.addPoint({l.name + ".root", ix, SimTK::Vec3(0), true});
-        prev = ix;
+    Rotor rotor;
+    for (std::size_t c = 0; c < children.size(); ++c) buildLink(j, *children[c], c == 0, parent, rotor);
+  }
+
+  /// The body that turns with a joint, and the mount angle of the link it belongs to.
+  struct Rotor {
+    SimTK::MobilizedBodyIndex mobod;
+    double mount = 0;
+  };
+
+  /// One link of joint j: its pieces and hinges, named points and tip mass. The first
+  /// link of a joint (`first`) carries the joint's mobilizer and becomes the rotor.
+  void buildLink(const JointSpec& j, const LinkSpec& l, bool first, const Frame& parent, Rotor& rotor) {
+    auto& matter = model_.updMatter();
+    const LinkDiscretization d = discretize(l);
+    const int part = model_.addPart(l.name, Part::Kind::Link, l.name);
+    const double gyr2 = sectionGyrationSquared(*a_.findSection(l.section));
+    SimTK::MobilizedBodyIndex prev;
+    for (std::size_t k = 0; k < d.pieces.size(); ++k) {
+      const SimTK::Body::Rigid body = pieceBody(d.pieces[k], gyr2);
+      SimTK::MobilizedBodyIndex ix;
+      if (k == 0 && first) {
+        ix = parent.grounded && a_.base.type == BaseType::Floating ? addFloatingRoot(j, l, parent, body)
+                                                                    : addJointPin(j, l, parent, body);
+        rotor = {ix, l.mount_angle};
+      } else if (k == 0) {
+        SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(rotor.mobod), rotZ(-rotor.mount), body, rotZ(-l.mount_angle));
+        ix = w.getMobilizedBodyIndex();
+      } else {
+        ix = addHinge(l, d, k, prev, body);
       }
-      const SimTK::Transform X_tip(SimTK::Vec3(d.pieces.back().length, 0, 0));
-      model_.addPoint({l.name + ".tip", prev, X_tip.p(), true});
-      if (l.tip_mass) {
-        const int tip_part = model_.addPart(l.name + ".tip_mass", Part::Kind::TipMass, l.name);
-        SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(prev), X_tip, lumpedBody(*l.tip_mass), SimTK::Transform());
-        model_.addBody(w.getMobilizedBodyIndex(), tip_part, false);
-      }
-      tips_[l.name] = Frame{prev, X_tip, false};
+      model_.addBody(ix, part, false);
+      if (k == 0) model_.addPoint({l.name + ".root", ix, SimTK::Vec3(0), true});
+      prev = ix;
     }
+    const SimTK::Transform X_tip(SimTK::Vec3(d.pieces.back().length, 0, 0));
+    model_.addPoint({l.name + ".tip", prev, X_tip.p(), true});
+    if (l.tip_mass) {
+      const int tip_part = model_.addPart(l.name + ".tip_mass", Part::Kind::TipMass, l.name);
+      SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(prev), X_tip, lumpedBody(*l.tip_mass), SimTK::Transform());
+      model_.addBody(w.getMobilizedBodyIndex(), tip_part, false);
+    }
+    tips_[l.name] = Frame{prev, X_tip, false};
+  }
+
+  /// A floating root (component modes, free-free): rotation and both translations.
+  SimTK::MobilizedBodyIndex addFloatingRoot(const JointSpec& j, const LinkSpec& l, const Frame& parent,
+                                            const SimTK::Body::Rigid& body) {
+    SimTK::MobilizedBody::Planar planar(model_.updMatter().updMobilizedBody(parent.mobod), parent.X_BF, body,
+                                        rotZ(-l.mount_angle));
+    const SimTK::MobilizedBodyIndex ix = planar.getMobilizedBodyIndex();
+    const char* names[] = {"", ".x", ".y"};
+    for (int q = 0; q < 3; ++q) {
+      Coordinate coord;
+      coord.name = j.name + names[q];
+      coord.kind = CoordinateKind::Joint;
+      coord.motion = q == 0 ? CoordinateMotion::Rotation : CoordinateMotion::Translation;
+      coord.mobilizer_q = q;
+      coord.part = j.name;
+      coord.mobod = ix;
+      coord.reference = q == 0 ? j.angle : 0.0;
+      model_.addCoordinate(coord);
+    }
+    return ix;
+  }
+
+  /// The joint's pin: locked (held, or following its slew), servo (a spring to the
+  /// commanded angle) or free (with an optional commanded torque).
+  SimTK::MobilizedBodyIndex addJointPin(const JointSpec& j, const LinkSpec& l, const Frame& parent,
+                                        const SimTK::Body::Rigid& body) {
+    SimTK::MobilizedBody::Pin pin(model_.updMatter().updMobilizedBody(parent.mobod), parent.X_BF, body, rotZ(-l.mount_angle));
+    Coordinate coord;
+    coord.name = j.name;
+    coord.kind = CoordinateKind::Joint;
+    coord.part = j.name;
+    coord.mobod = pin.getMobilizedBodyIndex();
+    coord.reference = j.angle;
+    coord.held = j.hold == JointHold::Locked;
+    coord.stiffness = j.hold == JointHold::Servo ? j.servo_stiffness : 0.0;
+    if (j.torque_input) coord.input = makeTableProgram(*j.torque_input);
+    model_.addCoordinate(coord);
+    // A locked torquer holds its angle in the dynamics too (zero prescribed speed),
+    // or follows its slew.
+    if (coord.held) holdOrSlew(pin, j.angle, j.slew, M_PI);
+    return pin.getMobilizedBodyIndex();
+  }
+
+  /// Hinge k of a link: a pin with the bending spring E*I/h (and its damper).
+  SimTK::MobilizedBodyIndex addHinge(const LinkSpec& l, const LinkDiscretization& d, std::size_t k,
+                                     SimTK::MobilizedBodyIndex prev, const SimTK::Body::Rigid& body) {
+    const double l_prev = d.pieces[k - 1].length;
+    SimTK::MobilizedBody::Pin pin(model_.updMatter().updMobilizedBody(prev), SimTK::Transform(SimTK::Vec3(l_prev, 0, 0)),
+                                  body, SimTK::Transform());
+    const SimTK::MobilizedBodyIndex ix = pin.getMobilizedBodyIndex();
+    Coordinate coord;
+    coord.name = l.name + ".h" + std::to_string(k);
+    coord.kind = CoordinateKind::Hinge;
+    coord.part = l.name;
+    coord.mobod = ix;
+    coord.stiffness = d.hinge_stiffness[k - 1];
+    if (scene_.damping && scene_.damping->kind == DampingSpec::Kind::HingeViscous)
+      coord.damping = scene_.damping->hinge_beta * coord.stiffness;
+    model_.addCoordinate(coord);
+    model_.addPoint({coord.name, ix, SimTK::Vec3(0), false});
+    return ix;
   }
 
   LinkDiscretization discretize(const LinkSpec& l) const {

@@ -89,16 +89,11 @@ Eigen::MatrixXd craigBamptonForLink(const ArticleScene& scene, const std::string
   return craigBamptonBasis(M, K, C, k);
 }
 
-}  // namespace
-
-SynthesisResult synthesize(const ArticleScene& scene, const SynthesisOptions& o) {
-  SynthesisResult r;
-  const SolvedScene full = solveScene(scene);
-  const Model& model = *full.model;
-  const std::vector<int>& dofs = full.linearized.dofs;
+/// The synthesis basis T: joint DOFs kept, each flexible link's hinges spanned by its
+/// component basis (assumed modes or Craig-Bampton).
+Eigen::MatrixXd synthesisBasis(const ArticleScene& scene, const Model& model, const std::vector<int>& dofs,
+                               const SynthesisOptions& o) {
   const int n = static_cast<int>(dofs.size());
-
-  // Basis T: joint DOFs kept, each flexible link's hinges spanned by its component basis.
   std::vector<Eigen::MatrixXd> blocks;
   std::vector<std::vector<int>> rows_of_block;
   std::vector<int> joint_rows;
@@ -132,15 +127,29 @@ SynthesisResult synthesize(const ArticleScene& scene, const SynthesisOptions& o)
     for (Eigen::Index j = 0; j < blocks[b].cols(); ++j, ++c)
       for (std::size_t h = 0; h < rows_of_block[b].size(); ++h) T(rows_of_block[b][h], c) = blocks[b](h, j);
   }
-  const ModalSolution synth = ritzModes(full.linearized.M, full.linearized.K, T, full.linearized.G);
+  return T;
+}
 
+std::string methodDescription(const SynthesisOptions& o) {
   std::ostringstream method;
   method << cmsMethodName(o.method);
   if (o.method == CmsMethod::AssumedModes)
     method << ", " << componentBCName(o.component.bc) << ", tip mass: "
            << (o.component.explicit_tip ? "explicit" : tipMassRuleName(o.component.rule));
   method << ", " << o.modes_per_link << " per link";
-  r.method = method.str();
+  return method.str();
+}
+
+}  // namespace
+
+SynthesisResult synthesize(const ArticleScene& scene, const SynthesisOptions& o) {
+  SynthesisResult r;
+  const SolvedScene full = solveScene(scene);
+  const Model& model = *full.model;
+  const std::vector<int>& dofs = full.linearized.dofs;
+  const Eigen::MatrixXd T = synthesisBasis(scene, model, dofs, o);
+  const ModalSolution synth = ritzModes(full.linearized.M, full.linearized.K, T, full.linearized.G);
+  r.method = methodDescription(o);
   r.full_dofs = static_cast<int>(full.modes.omega2.size());
   r.reduced_dofs = static_cast<int>(synth.omega2.size());
 

@@ -98,6 +98,148 @@ ModesSolve solveSceneModes(const ArticleScene& scene, const EquilibriumOptions& 
   return out;
 }
 
+namespace {
+
+ModelSummary summarizeModel(const ArticleScene& scene, const Model& model, std::size_t num_dofs) {
+  ModelSummary m;
+  m.num_links = static_cast<int>(scene.article.links.size());
+  m.num_bodies = static_cast<int>(model.getBodies().size());
+  m.num_coordinates = model.getNumCoordinates();
+  m.num_dofs = static_cast<int>(num_dofs);
+  m.total_mass_kg = model.getTotalMass();
+  m.moving_mass_kg = model.getMovingMass();
+  for (const auto& l : scene.article.links) m.link_segments.push_back({l.name, l.rigid ? 0 : l.segments});
+  return m;
+}
+
+/// The torque each torquer holds at the equilibrium (ccw +, on the child).
+std::vector<JointReport> jointReports(const ArticleScene& scene, const Model& model, const EquilibriumResult& eq) {
+  const auto& coords = model.getCoordinates();
+  std::vector<JointReport> out;
+  for (const auto& j : scene.article.joints) {
+    JointReport jr;
+    jr.name = j.name;
+    jr.hold = holdName(j.hold);
+    jr.commanded_rad = j.angle;
+    for (std::size_t c = 0; c < coords.size(); ++c) {
+      if (coords[c].kind != CoordinateKind::Joint || coords[c].name != j.name) continue;
+      jr.equilibrium_rad = eq.q[c];
+      if (j.hold == JointHold::Locked) jr.torque_nm = -eq.generalized_force[c];
+      if (j.hold == JointHold::Servo) jr.torque_nm = -j.servo_stiffness * (eq.q[c] - j.angle);
+    }
+    out.push_back(jr);
+  }
+  return out;
+}
+
+std::vector<ClosureReport> closureReports(const Model& model, const SimTK::State& eqs, const EquilibriumResult& eq) {
+  const Eigen::VectorXd phi = model.getNumClosureRows() ? calcClosureErrors(model, eqs) : Eigen::VectorXd();
+  const auto forces = closureForces(model, eq.closure_multipliers);
+  std::vector<ClosureReport> out;
+  int row = 0, f = 0;
+  for (const auto& c : model.getClosures()) {
+    ClosureReport cr;
+    cr.name = c.name;
+    cr.fx = forces[f].force_W[0];
+    cr.fy = forces[f].force_W[1];
+    for (std::size_t d = 0; d < c.directions.size(); ++d) cr.error_m = std::max(cr.error_m, std::abs(phi[row++]));
+    f += c.to_ground ? 1 : 2;
+    out.push_back(cr);
+  }
+  return out;
+}
+
+/// Every named point at the equilibrium and its deflection from the unbent shape.
+std::vector<PointReport> pointReports(const Model& model, const SimTK::State& eqs, const EquilibriumResult& eq) {
+  const auto& coords = model.getCoordinates();
+  SimTK::State unbent = eq.state;
+  Eigen::VectorXd q = eq.q;
+  for (std::size_t c = 0; c < coords.size(); ++c)
+    if (coords[c].kind == CoordinateKind::Hinge) q[c] = 0.0;
+  model.setQ(unbent, q);
+  model.getSystem().realize(unbent, SimTK::Stage::Position);
+  std::vector<PointReport> out;
+  for (const auto& p : model.getPoints()) {
+    const SimTK::Vec3 x = model.findPointLocation(eqs, p);
+    const SimTK::Vec3 x0 = model.findPointLocation(unbent, p);
+    out.push_back({p.name, x[0], x[1], x[0] - x0[0], x[1] - x0[1]});
+  }
+  return out;
+}
+
+/// Jacobians at the equilibrium of every body's mass centre and every named point,
+/// with the bodies' masses and spins: what a mode's energies and shapes need.
+struct ModeKinematics {
+  Eigen::MatrixXd Jb, Jp;  ///< 6 rows (w; v) per body / point, columns over the DOFs.
+  std::vector<double> body_mass, body_izz;
+};
+
+ModeKinematics modeKinematics(const Model& model, const SimTK::State& eqs, const std::vector<int>& dofs) {
+  ModeKinematics k;
+  std::vector<SimTK::MobilizedBodyIndex> body_ix, point_ix;
+  std::vector<SimTK::Vec3> body_com, point_st;
+  for (const auto& b : model.getBodies()) {
+    const SimTK::MassProperties mp = model.getMatter().getMobilizedBody(b.mobod).getBodyMassProperties(eqs);
+    body_ix.push_back(b.mobod);
+    body_com.push_back(mp.getMassCenter());
+    k.body_mass.push_back(mp.getMass());
+    k.body_izz.push_back(mp.calcCentralInertia().getMoments()[2]);
+  }
+  for (const auto& p : model.getPoints()) {
+    point_ix.push_back(p.mobod);
+    point_st.push_back(p.station_B);
+  }
+  k.Jb = model.calcFrameJacobians(eqs, body_ix, body_com, dofs);
+  k.Jp = model.calcFrameJacobians(eqs, point_ix, point_st, dofs);
+  return k;
+}
+
+/// Kinetic and strain energy shares per part and per carrying link, effective masses.
+void describeEnergies(const Model& model, const std::vector<int>& dofs, const ModeKinematics& k, const Eigen::VectorXd& phi,
+                      ModeInfo& m) {
+  std::map<std::string, double> kinetic, strain;
+  double Lx = 0, Ly = 0;
+  for (std::size_t b = 0; b < k.body_mass.size(); ++b) {
+    const Eigen::VectorXd v = k.Jb.middleRows(6 * b, 6) * phi;  // (w; v_com)
+    const double ke = 0.5 * (k.body_mass[b] * v.tail<3>().squaredNorm() + k.body_izz[b] * v[2] * v[2]);
+    kinetic[model.getParts()[model.getBodies()[b].part].name] += ke;
+    Lx += k.body_mass[b] * v[3];
+    Ly += k.body_mass[b] * v[4];
+  }
+  const auto& coords = model.getCoordinates();
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    const Coordinate& c = coords[dofs[i]];
+    if (c.stiffness > 0) strain[c.part] += 0.5 * c.stiffness * phi[i] * phi[i];
+  }
+  m.effective_mass_x_kg = Lx * Lx;
+  m.effective_mass_y_kg = Ly * Ly;
+  m.kinetic = sortedShares(kinetic);
+  m.strain = sortedShares(strain);
+  m.kinetic_by_link = sortedShares(byCarrier(kinetic, model));
+  m.strain_by_link = sortedShares(byCarrier(strain, model));
+  m.dominant_link_kinetic = m.kinetic_by_link.empty() ? "" : m.kinetic_by_link.front().part;
+  m.dominant_link_strain = m.strain_by_link.empty() ? "" : m.strain_by_link.front().part;
+}
+
+/// The shape at the named points, the point that moves most and the modal mass there.
+void describeShape(const Model& model, const ModeKinematics& k, const Eigen::VectorXd& phi, bool with_shapes, ModeInfo& m) {
+  const Eigen::VectorXd u = k.Jp * phi;
+  double peak = 0;
+  for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
+    const NamedPoint& np = model.getPoints()[p];
+    PointMotion pm{np.name, u[6 * p + 3], u[6 * p + 4], u[6 * p + 2], np.report_rotation};
+    const double mag = std::hypot(pm.ux, pm.uy);
+    if (mag > peak) {
+      peak = mag;
+      m.peak_point = np.name;
+    }
+    if (with_shapes) m.shape.push_back(pm);
+  }
+  m.modal_mass_kg = peak > 0 ? 1.0 / (peak * peak) : 0.0;
+}
+
+}  // namespace
+
 ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   ModesReport rep;
   rep.scene_name = scene.name;
@@ -109,84 +251,18 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.seconds_linearize = s.seconds_linearize;
   rep.seconds_eigen = s.seconds_eigen;
   const Model& model = *s.model;
-  const auto& coords = model.getCoordinates();
   const auto& dofs = s.linearized.dofs;
-
-  // Model summary.
-  rep.model.num_links = static_cast<int>(scene.article.links.size());
-  rep.model.num_bodies = static_cast<int>(model.getBodies().size());
-  rep.model.num_coordinates = model.getNumCoordinates();
-  rep.model.num_dofs = static_cast<int>(dofs.size());
-  rep.model.total_mass_kg = model.getTotalMass();
-  rep.model.moving_mass_kg = model.getMovingMass();
-  for (const auto& l : scene.article.links) rep.model.link_segments.push_back({l.name, l.rigid ? 0 : l.segments});
-
-  // Equilibrium: joints, deflections.
+  rep.model = summarizeModel(scene, model, dofs.size());
   rep.equilibrium_converged = s.equilibrium.converged;
   rep.equilibrium_iterations = s.equilibrium.iterations;
   rep.equilibrium_residual_nm = s.equilibrium.residual;
   rep.force_scale_nm = s.equilibrium.force_scale;
-  for (const auto& j : scene.article.joints) {
-    JointReport jr;
-    jr.name = j.name;
-    jr.hold = holdName(j.hold);
-    jr.commanded_rad = j.angle;
-    for (std::size_t c = 0; c < coords.size(); ++c) {
-      if (coords[c].kind != CoordinateKind::Joint || coords[c].name != j.name) continue;
-      jr.equilibrium_rad = s.equilibrium.q[c];
-      if (j.hold == JointHold::Locked) jr.torque_nm = -s.equilibrium.generalized_force[c];
-      if (j.hold == JointHold::Servo) jr.torque_nm = -j.servo_stiffness * (s.equilibrium.q[c] - j.angle);
-    }
-    rep.joints.push_back(jr);
-  }
+  rep.joints = jointReports(scene, model, s.equilibrium);
   SimTK::State eqs = s.equilibrium.state;  // a copied State must be realized again before use
   model.getSystem().realize(eqs, SimTK::Stage::Position);
-  {
-    const Eigen::VectorXd phi = model.getNumClosureRows() ? calcClosureErrors(model, eqs) : Eigen::VectorXd();
-    const auto forces = closureForces(model, s.equilibrium.closure_multipliers);
-    int row = 0, f = 0;
-    for (const auto& c : model.getClosures()) {
-      ClosureReport cr;
-      cr.name = c.name;
-      cr.fx = forces[f].force_W[0];
-      cr.fy = forces[f].force_W[1];
-      for (std::size_t d = 0; d < c.directions.size(); ++d) cr.error_m = std::max(cr.error_m, std::abs(phi[row++]));
-      f += c.to_ground ? 1 : 2;
-      rep.closures.push_back(cr);
-    }
-  }
-  SimTK::State unbent = s.equilibrium.state;
-  {
-    Eigen::VectorXd q = s.equilibrium.q;
-    for (std::size_t c = 0; c < coords.size(); ++c)
-      if (coords[c].kind == CoordinateKind::Hinge) q[c] = 0.0;
-    model.setQ(unbent, q);
-    model.getSystem().realize(unbent, SimTK::Stage::Position);
-  }
-  for (const auto& p : model.getPoints()) {
-    const SimTK::Vec3 x = model.findPointLocation(eqs, p);
-    const SimTK::Vec3 x0 = model.findPointLocation(unbent, p);
-    rep.points.push_back({p.name, x[0], x[1], x[0] - x0[0], x[1] - x0[1]});
-  }
-
-  // Jacobians at the equilibrium: body mass centres and named points.
-  std::vector<SimTK::MobilizedBodyIndex> body_ix, point_ix;
-  std::vector<SimTK::Vec3> body_com, point_st;
-  std::vector<double> body_mass, body_izz;
-  for (const auto& b : model.getBodies()) {
-    const SimTK::MassProperties mp = model.getMatter().getMobilizedBody(b.mobod).getBodyMassProperties(eqs);
-    body_ix.push_back(b.mobod);
-    body_com.push_back(mp.getMassCenter());
-    body_mass.push_back(mp.getMass());
-    body_izz.push_back(mp.calcCentralInertia().getMoments()[2]);
-  }
-  for (const auto& p : model.getPoints()) {
-    point_ix.push_back(p.mobod);
-    point_st.push_back(p.station_B);
-  }
-  const Eigen::MatrixXd Jb = model.calcFrameJacobians(eqs, body_ix, body_com, dofs);
-  const Eigen::MatrixXd Jp = model.calcFrameJacobians(eqs, point_ix, point_st, dofs);
-
+  rep.closures = closureReports(model, eqs, s.equilibrium);
+  rep.points = pointReports(model, eqs, s.equilibrium);
+  const ModeKinematics kin = modeKinematics(model, eqs, dofs);
   rep.eigen_residual = s.modes.max_residual;
   rep.orthogonality_error = s.modes.orthogonality_error;
   rep.stiffness_asymmetry = s.linearized.asymmetry;
@@ -201,42 +277,8 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     m.rigid_body = s.modes.isRigidBody(i);
     m.frequency_hz = s.modes.frequencyHz(i);
     m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.linearized.K_geometric * phi) / m.omega2;
-
-    std::map<std::string, double> kinetic, strain;
-    double Lx = 0, Ly = 0;
-    for (std::size_t b = 0; b < body_ix.size(); ++b) {
-      const Eigen::VectorXd v = Jb.middleRows(6 * b, 6) * phi;  // (w; v_com)
-      const double ke = 0.5 * (body_mass[b] * v.tail<3>().squaredNorm() + body_izz[b] * v[2] * v[2]);
-      kinetic[model.getParts()[model.getBodies()[b].part].name] += ke;
-      Lx += body_mass[b] * v[3];
-      Ly += body_mass[b] * v[4];
-    }
-    for (std::size_t k = 0; k < dofs.size(); ++k) {
-      const Coordinate& c = coords[dofs[k]];
-      if (c.stiffness > 0) strain[c.part] += 0.5 * c.stiffness * phi[k] * phi[k];
-    }
-    m.effective_mass_x_kg = Lx * Lx;
-    m.effective_mass_y_kg = Ly * Ly;
-    m.kinetic = sortedShares(kinetic);
-    m.strain = sortedShares(strain);
-    m.kinetic_by_link = sortedShares(byCarrier(kinetic, model));
-    m.strain_by_link = sortedShares(byCarrier(strain, model));
-    m.dominant_link_kinetic = m.kinetic_by_link.empty() ? "" : m.kinetic_by_link.front().part;
-    m.dominant_link_strain = m.strain_by_link.empty() ? "" : m.strain_by_link.front().part;
-
-    const Eigen::VectorXd u = Jp * phi;
-    double peak = 0;
-    for (std::size_t p = 0; p < point_ix.size(); ++p) {
-      const NamedPoint& np = model.getPoints()[p];
-      PointMotion pm{np.name, u[6 * p + 3], u[6 * p + 4], u[6 * p + 2], np.report_rotation};
-      const double mag = std::hypot(pm.ux, pm.uy);
-      if (mag > peak) {
-        peak = mag;
-        m.peak_point = np.name;
-      }
-      if (options.with_shapes) m.shape.push_back(pm);
-    }
-    m.modal_mass_kg = peak > 0 ? 1.0 / (peak * peak) : 0.0;
+    describeEnergies(model, dofs, kin, phi, m);
+    describeShape(model, kin, phi, options.with_shapes, m);
     rep.modes.push_back(std::move(m));
   }
   return rep;

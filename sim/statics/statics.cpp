@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 #include "sim/statics/closures.hpp"
@@ -34,125 +35,159 @@ double gravityMomentScale(const Model& model, const SimTK::State& s) {
 
 namespace {
 
-/// Newton's method from (q, lambda) in state s (whose gravity scale is set).
-EquilibriumResult newton(const Model& model, SimTK::State s, Eigen::VectorXd q, Eigen::VectorXd lambda,
-                         const EquilibriumOptions& options, double force_scale, double size) {
-  EquilibriumResult r;
-  const std::vector<int>& dofs = model.getDofs();
-  const int n = static_cast<int>(dofs.size());
-  const int m = model.getNumClosureRows();
-  r.force_scale = force_scale;
-  const double tol = options.force_tolerance * r.force_scale;
-  const double tol_closure = 1e-12 * size;  // closures must close to 1e-12 of the article's size
+/// Newton's method on the KKT system (statics.hpp) from (q, lambda) in state s
+/// (whose gravity scale is set), with a backtracking line search.
+class Newton {
+ public:
+  Newton(const Model& model, SimTK::State s, const EquilibriumOptions& options, double force_scale, double size)
+      : model_(model), s_(std::move(s)), options_(options), dofs_(model.getDofs()),
+        n_(static_cast<int>(dofs_.size())), m_(model.getNumClosureRows()), size_(size) {
+    r_.force_scale = force_scale;
+    tol_ = options.force_tolerance * force_scale;
+    tol_closure_ = 1e-12 * size;  // closures must close to 1e-12 of the article's size
+  }
 
-  // Residuals at (q, lambda): force part over the DOFs, closure part.
+  EquilibriumResult solve(Eigen::VectorXd q, Eigen::VectorXd lambda);
+
+ private:
+  /// Residuals at (q, lambda): force part over the DOFs, closure part.
   struct Residual {
     Eigen::VectorXd f_all, force, closure;
     double merit = 0;
     bool converged = false;
   };
-  auto evaluate = [&](const Eigen::VectorXd& qv, const Eigen::VectorXd& lv) {
-    Residual res;
-    model.setQ(s, qv);
-    res.f_all = model.calcAppliedForces(s);
-    res.force.resize(n);
-    for (int i = 0; i < n; ++i) res.force[i] = res.f_all[dofs[i]];
-    if (m > 0) {
-      res.force += calcClosureJacobian(model, s, dofs).transpose() * lv;
-      res.closure = calcClosureErrors(model, s);
-    } else {
-      res.closure.resize(0);
-    }
-    // Converged when both parts are within tolerance; the line search uses the sum of
-    // squares of both parts, each relative to its physical scale (force scale, size).
-    const double fr = n ? res.force.cwiseAbs().maxCoeff() / tol : 0.0;
-    const double cr = m ? res.closure.cwiseAbs().maxCoeff() / tol_closure : 0.0;
-    res.converged = std::max(fr, cr) <= 1.0;
-    res.merit = (n ? (res.force / r.force_scale).squaredNorm() : 0.0) + (m ? (res.closure / size).squaredNorm() : 0.0);
-    return res;
-  };
+  Residual evaluate(const Eigen::VectorXd& qv, const Eigen::VectorXd& lv);
+  EquilibriumResult finish(bool ok, const std::string& why, const Residual& res);
+  /// The Newton step (dq over the DOFs; dlambda), or empty when the tangent is singular.
+  std::optional<Eigen::VectorXd> step(const Residual& res);
+  /// The first step length 1, 1/2, ... that reduces the merit sufficiently; false if none.
+  bool lineSearch(const Eigen::VectorXd& dx, Residual& res);
 
-  auto finish = [&](bool ok, const std::string& why, const Residual& res) {
-    model.setQ(s, q);
-    model.getSystem().realize(s, SimTK::Stage::Position);
-    r.generalized_force = res.f_all;
-    if (m > 0) {
-      // Closure forces on every coordinate (held joints included) for the torques.
-      std::vector<int> all(model.getNumCoordinates());
-      for (int i = 0; i < model.getNumCoordinates(); ++i) all[i] = i;
-      r.generalized_force += calcClosureJacobian(model, s, all).transpose() * lambda;
-    }
-    r.converged = ok;
-    r.failure = why;
-    r.residual = n ? res.force.cwiseAbs().maxCoeff() : 0.0;
-    r.closure_error = m ? res.closure.cwiseAbs().maxCoeff() : 0.0;
-    r.closure_multipliers = lambda;
-    r.q = q;
-    r.state = s;
-    return r;
-  };
+  const Model& model_;
+  SimTK::State s_;
+  const EquilibriumOptions& options_;
+  const std::vector<int>& dofs_;
+  const int n_, m_;
+  const double size_;
+  double tol_ = 0, tol_closure_ = 0;
+  Eigen::VectorXd q_, lambda_;
+  EquilibriumResult r_;
+};
 
-  Residual res = evaluate(q, lambda);
-  for (r.iterations = 0; r.iterations < options.max_iterations; ++r.iterations) {
+Newton::Residual Newton::evaluate(const Eigen::VectorXd& qv, const Eigen::VectorXd& lv) {
+  Residual res;
+  model_.setQ(s_, qv);
+  res.f_all = model_.calcAppliedForces(s_);
+  res.force.resize(n_);
+  for (int i = 0; i < n_; ++i) res.force[i] = res.f_all[dofs_[i]];
+  if (m_ > 0) {
+    res.force += calcClosureJacobian(model_, s_, dofs_).transpose() * lv;
+    res.closure = calcClosureErrors(model_, s_);
+  } else {
+    res.closure.resize(0);
+  }
+  // Converged when both parts are within tolerance; the line search uses the sum of
+  // squares of both parts, each relative to its physical scale (force scale, size).
+  const double fr = n_ ? res.force.cwiseAbs().maxCoeff() / tol_ : 0.0;
+  const double cr = m_ ? res.closure.cwiseAbs().maxCoeff() / tol_closure_ : 0.0;
+  res.converged = std::max(fr, cr) <= 1.0;
+  res.merit = (n_ ? (res.force / r_.force_scale).squaredNorm() : 0.0) + (m_ ? (res.closure / size_).squaredNorm() : 0.0);
+  return res;
+}
+
+EquilibriumResult Newton::finish(bool ok, const std::string& why, const Residual& res) {
+  model_.setQ(s_, q_);
+  model_.getSystem().realize(s_, SimTK::Stage::Position);
+  r_.generalized_force = res.f_all;
+  if (m_ > 0) {
+    // Closure forces on every coordinate (held joints included) for the torques.
+    std::vector<int> all(model_.getNumCoordinates());
+    for (int i = 0; i < model_.getNumCoordinates(); ++i) all[i] = i;
+    r_.generalized_force += calcClosureJacobian(model_, s_, all).transpose() * lambda_;
+  }
+  r_.converged = ok;
+  r_.failure = why;
+  r_.residual = n_ ? res.force.cwiseAbs().maxCoeff() : 0.0;
+  r_.closure_error = m_ ? res.closure.cwiseAbs().maxCoeff() : 0.0;
+  r_.closure_multipliers = lambda_;
+  r_.q = q_;
+  r_.state = s_;
+  return r_;
+}
+
+std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
+  model_.setQ(s_, q_);
+  model_.getSystem().realize(s_, SimTK::Stage::Position);
+  const Eigen::MatrixXd K = calcStiffness(model_, s_, dofs_);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n_ + m_, n_ + m_);
+  A.topLeftCorner(n_, n_) = -K;
+  if (m_ > 0) {
+    const Eigen::MatrixXd G = calcClosureJacobian(model_, s_, dofs_);
+    A.topLeftCorner(n_, n_) -= calcPointForceStiffness(model_, s_, dofs_, closureForces(model_, lambda_));
+    A.topRightCorner(n_, m_) = G.transpose();
+    A.bottomLeftCorner(m_, n_) = G;
+  }
+  Eigen::VectorXd rhs(n_ + m_);
+  rhs << -res.force, -res.closure;
+  // Singular relative to the problem, not only to A itself: a 1x1 K of 1e-17 N*m/rad
+  // is singular next to a 100 N*m load even though it is its own largest pivot.
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+  const double k_ref = std::max(K.diagonal().cwiseAbs().maxCoeff(), r_.force_scale);
+  const double pivot = lu.matrixLU().diagonal().head(n_).cwiseAbs().minCoeff();
+  if (!(pivot >= 1e-12 * k_ref) || !(lu.rcond() >= 1e-15)) return std::nullopt;
+  return Eigen::VectorXd(lu.solve(rhs));
+}
+
+bool Newton::lineSearch(const Eigen::VectorXd& dx, Residual& res) {
+  double alpha = 1.0;
+  for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
+    Eigen::VectorXd q_try = q_;
+    for (int i = 0; i < n_; ++i) q_try[dofs_[i]] += alpha * dx[i];
+    const Eigen::VectorXd l_try = lambda_ + alpha * dx.tail(m_);
+    Residual trial = evaluate(q_try, l_try);
+    if (std::isfinite(trial.merit) && (trial.merit <= (1.0 - 1e-4 * alpha) * res.merit || trial.converged)) {
+      q_ = q_try;
+      lambda_ = l_try;
+      res = trial;
+      return true;
+    }
+  }
+  return false;
+}
+
+EquilibriumResult Newton::solve(Eigen::VectorXd q, Eigen::VectorXd lambda) {
+  q_ = std::move(q);
+  lambda_ = std::move(lambda);
+  Residual res = evaluate(q_, lambda_);
+  for (r_.iterations = 0; r_.iterations < options_.max_iterations; ++r_.iterations) {
     if (!std::isfinite(res.merit)) return finish(false, "non-finite generalized force", res);
-    if (res.converged || n == 0) return finish(true, "", res);
-    model.setQ(s, q);
-    model.getSystem().realize(s, SimTK::Stage::Position);
-    const Eigen::MatrixXd K = calcStiffness(model, s, dofs);
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
-    A.topLeftCorner(n, n) = -K;
-    if (m > 0) {
-      const Eigen::MatrixXd G = calcClosureJacobian(model, s, dofs);
-      A.topLeftCorner(n, n) -= calcPointForceStiffness(model, s, dofs, closureForces(model, lambda));
-      A.topRightCorner(n, m) = G.transpose();
-      A.bottomLeftCorner(m, n) = G;
-    }
-    Eigen::VectorXd rhs(n + m);
-    rhs << -res.force, -res.closure;
-    // Singular relative to the problem, not only to A itself: a 1x1 K of 1e-17 N*m/rad
-    // is singular next to a 100 N*m load even though it is its own largest pivot.
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-    const double k_ref = std::max(K.diagonal().cwiseAbs().maxCoeff(), r.force_scale);
-    const double pivot = lu.matrixLU().diagonal().head(n).cwiseAbs().minCoeff();
-    if (!(pivot >= 1e-12 * k_ref) || !(lu.rcond() >= 1e-15)) {
+    if (res.converged || n_ == 0) return finish(true, "", res);
+    const std::optional<Eigen::VectorXd> dx = step(res);
+    if (!dx) {
       std::ostringstream os;
-      os << "tangent stiffness is singular at iteration " << r.iterations
+      os << "tangent stiffness is singular at iteration " << r_.iterations
          << " (a free joint with nothing to restore it, or a mechanism)";
       return finish(false, os.str(), res);
     }
-    const Eigen::VectorXd step = lu.solve(rhs);
-    // Backtracking: accept the first step that reduces the residual sufficiently.
-    double alpha = 1.0;
-    bool accepted = false;
-    Eigen::VectorXd q_try, l_try;
-    Residual trial;
-    for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
-      q_try = q;
-      for (int i = 0; i < n; ++i) q_try[dofs[i]] += alpha * step[i];
-      l_try = lambda + alpha * step.tail(m);
-      trial = evaluate(q_try, l_try);
-      if (std::isfinite(trial.merit) && (trial.merit <= (1.0 - 1e-4 * alpha) * res.merit || trial.converged)) {
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) {
+    if (!lineSearch(*dx, res)) {
       std::ostringstream os;
-      os << "line search failed at iteration " << r.iterations << " (residual " << res.force.cwiseAbs().maxCoeff()
+      os << "line search failed at iteration " << r_.iterations << " (residual " << res.force.cwiseAbs().maxCoeff()
          << " N*m)";
       return finish(false, os.str(), res);
     }
-    q = q_try;
-    lambda = l_try;
-    res = trial;
   }
   if (res.converged) return finish(true, "", res);
   std::ostringstream os;
-  os << "did not converge in " << options.max_iterations << " Newton iterations (residual "
-     << (n ? res.force.cwiseAbs().maxCoeff() : 0.0) << " N*m, tolerance " << tol << " N*m";
-  if (m > 0) os << "; closure error " << res.closure.cwiseAbs().maxCoeff() << " m";
+  os << "did not converge in " << options_.max_iterations << " Newton iterations (residual "
+     << (n_ ? res.force.cwiseAbs().maxCoeff() : 0.0) << " N*m, tolerance " << tol_ << " N*m";
+  if (m_ > 0) os << "; closure error " << res.closure.cwiseAbs().maxCoeff() << " m";
   os << ")";
   return finish(false, os.str(), res);
+}
+
+EquilibriumResult newton(const Model& model, SimTK::State s, Eigen::VectorXd q, Eigen::VectorXd lambda,
+                         const EquilibriumOptions& options, double force_scale, double size) {
+  return Newton(model, std::move(s), options, force_scale, size).solve(std::move(q), std::move(lambda));
 }
 
 }  // namespace

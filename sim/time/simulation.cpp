@@ -26,70 +26,98 @@ double dissipation(const Model& model, const SimTK::State& s) {
   return p;
 }
 
-}  // namespace
+/// A sensor in a run: its facility model and what it reads.
+struct LiveSensor {
+  facility::Sensor model;
+  int joint = -1;                     ///< encoder: the coordinate.
+  const NamedPoint* point = nullptr;  ///< gyro, accelerometer.
+  int axis = 0;
+  bool gyro = false;
+};
 
-SimulationResult simulate(const ArticleScene& scene, const std::function<void(double)>& progress) {
-  const SimulationSpec& spec = scene.simulation;
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto model = buildArticleModel(scene);
-  const SimTK::MultibodySystem& sys = model->getSystem();
-  const auto& matter = model->getMatter();
-  SimTK::State s = model->getReferenceState();
-  if (spec.from_equilibrium) {
-    const EquilibriumResult eq = solveEquilibrium(*model);
-    if (!eq.converged) throw NumericalError("static equilibrium failed: " + eq.failure);
-    s = eq.state;
+/// The columns of an article's run and the row at each sample (see simulation.hpp).
+class ArticleRecorder {
+ public:
+  ArticleRecorder(const Model& model, const ArticleScene& scene, SimulationResult& r) : model_(model), r_(r) {
+    r_.record.columns.push_back("time_s");
+    addTableColumns();
+    addJointColumns(scene);
+    addTipColumns();
+    addSensors(scene);
   }
-  s.updU() = 0;
-  s.setTime(0);
-  const bool closed = !model->getClosures().empty();
-  if (closed) s = model->addClosureConstraints(s);  // the dynamics hold the closures from here
-  RunIntegrator integrator(sys, spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance);
 
-  SimulationResult r;
-  r.integrator = spec.integrator;
-  r.accuracy = spec.accuracy;
-  // Columns.
-  auto& cols = r.record.columns;
-  cols.push_back("time_s");
-  int table = -1;
-  std::vector<int> joints;
-  for (int i = 0; i < model->getNumCoordinates(); ++i) {
-    const Coordinate& c = model->getCoordinates()[i];
-    if (c.name == "table.x") table = i;
-    if (c.kind == CoordinateKind::Joint && c.motion == CoordinateMotion::Rotation) joints.push_back(i);
+  std::vector<double> sample(double t, const SimTK::State& st);
+
+  /// Peaks against capacities, sensor saturation counts.
+  void finish() {
+    for (auto& t : r_.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
+    for (std::size_t i = 0; i < sensors_.size(); ++i) {
+      r_.sensors[i].saturated_samples = sensors_[i].model.saturatedSamples();
+      r_.sensors[i].samples = sensors_[i].model.samples();
+    }
   }
-  if (table >= 0) {
-    cols.push_back("table_x_m");
-    cols.push_back("table_force_n");
-    const SimTK::State& ref = model->getReferenceState();
-    const double table_mass =
-        matter.getMobilizedBody(model->getCoordinates()[table].mobod).getBodyMass(ref);
-    r.carried_weight_n = (matter.calcSystemMass(ref) - table_mass) * model->getGravity().norm();
+
+ private:
+  void addTableColumns();
+  void addJointColumns(const ArticleScene& scene);
+  void addTipColumns();
+  void addSensors(const ArticleScene& scene);
+  double sensorTruth(const LiveSensor& live, const SimTK::State& st) const;
+
+  const Model& model_;
+  SimulationResult& r_;
+  int table_ = -1;
+  std::vector<int> joints_;
+  std::vector<const NamedPoint*> tips_;
+  std::vector<LiveSensor> sensors_;
+};
+
+void ArticleRecorder::addTableColumns() {
+  auto& cols = r_.record.columns;
+  for (int i = 0; i < model_.getNumCoordinates(); ++i)
+    if (model_.getCoordinates()[i].name == "table.x") table_ = i;
+  if (table_ < 0) return;
+  cols.push_back("table_x_m");
+  cols.push_back("table_force_n");
+  const SimTK::State& ref = model_.getReferenceState();
+  const auto& matter = model_.getMatter();
+  const double table_mass = matter.getMobilizedBody(model_.getCoordinates()[table_].mobod).getBodyMass(ref);
+  r_.carried_weight_n = (matter.calcSystemMass(ref) - table_mass) * model_.getGravity().norm();
+}
+
+void ArticleRecorder::addJointColumns(const ArticleScene& scene) {
+  for (int i = 0; i < model_.getNumCoordinates(); ++i) {
+    const Coordinate& c = model_.getCoordinates()[i];
+    if (c.kind == CoordinateKind::Joint && c.motion == CoordinateMotion::Rotation) joints_.push_back(i);
   }
-  for (int j : joints) {
-    cols.push_back(model->getCoordinates()[j].name + "_angle_deg");
-    cols.push_back(model->getCoordinates()[j].name + "_torque_n_m");
+  for (int j : joints_) {
+    r_.record.columns.push_back(model_.getCoordinates()[j].name + "_angle_deg");
+    r_.record.columns.push_back(model_.getCoordinates()[j].name + "_torque_n_m");
   }
-  std::vector<const NamedPoint*> tips;
-  for (const auto& p : model->getPoints())
+  for (int j : joints_) {
+    JointTorqueSummary t;
+    t.joint = model_.getCoordinates()[j].name;
+    t.capacity_nm = scene.article.torqueCapacity(t.joint);
+    r_.torques.push_back(t);
+  }
+}
+
+void ArticleRecorder::addTipColumns() {
+  auto& cols = r_.record.columns;
+  for (const auto& p : model_.getPoints())
     if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0) {
-      tips.push_back(&p);
-      r.record.scored.push_back({p.name, {static_cast<int>(cols.size()), static_cast<int>(cols.size()) + 1}});
+      tips_.push_back(&p);
+      r_.record.scored.push_back({p.name, {static_cast<int>(cols.size()), static_cast<int>(cols.size()) + 1}});
       cols.push_back(p.name + "_x_m");
       cols.push_back(p.name + "_y_m");
     }
-  // Sensors: true signal -> facility model -> column.
-  struct Live {
-    facility::Sensor model;
-    int joint = -1;             // encoder
-    const NamedPoint* point = nullptr;  // gyro, accelerometer
-    int axis = 0;
-    bool gyro = false;
-  };
-  std::vector<Live> sensors;
+}
+
+/// Sensors: true signal -> facility model -> column.
+void ArticleRecorder::addSensors(const ArticleScene& scene) {
+  const SimulationSpec& spec = scene.simulation;
   for (const auto& ss : scene.sensors) {
-    facility::SensorSpec fs = ss.type == "encoder" ? facility::encoderSpec()
+    facility::SensorSpec fs = ss.type == "encoder"     ? facility::encoderSpec()
                               : ss.type == "rate_gyro" ? facility::rateGyroSpec()
                                                        : facility::accelerometerSpec();
     fs.noise_sigma = ss.noise_sigma;
@@ -98,79 +126,95 @@ SimulationResult simulate(const ArticleScene& scene, const std::function<void(do
       throw SceneError(ss.where + ": sensor '" + ss.name + "' has a band edge at " + std::to_string(fs.high_cut_hz) +
                        " Hz: simulation.sample_rate_hz must be above twice that (got " +
                        std::to_string(spec.sample_rate_hz) + ")");
-    Live live{facility::Sensor(fs, spec.sample_rate_hz)};
+    LiveSensor live{facility::Sensor(fs, spec.sample_rate_hz)};
     if (ss.type == "encoder") {
-      for (int i = 0; i < model->getNumCoordinates(); ++i)
-        if (model->getCoordinates()[i].name == ss.target) live.joint = i;
+      for (int i = 0; i < model_.getNumCoordinates(); ++i)
+        if (model_.getCoordinates()[i].name == ss.target) live.joint = i;
     } else {
-      live.point = model->findPoint(ss.target);
+      live.point = model_.findPoint(ss.target);
     }
-    if (live.joint < 0 && !live.point) throw SceneError(ss.where + ": sensor '" + ss.name + "': '" + ss.target + "' does not exist in the model");
+    if (live.joint < 0 && !live.point)
+      throw SceneError(ss.where + ": sensor '" + ss.name + "': '" + ss.target + "' does not exist in the model");
     live.axis = ss.axis;
     live.gyro = ss.type == "rate_gyro";
     const char* unit = ss.type == "encoder" ? "rad" : ss.type == "rate_gyro" ? "rad_per_s" : "m_per_s2";
-    cols.push_back(ss.name + "_" + unit);
-    r.sensors.push_back({ss.name, ss.type, unit, 0, 0});
-    sensors.push_back(std::move(live));
+    r_.record.columns.push_back(ss.name + "_" + unit);
+    r_.sensors.push_back({ss.name, ss.type, unit, 0, 0});
+    sensors_.push_back(std::move(live));
   }
-  for (int j : joints) {
-    JointTorqueSummary t;
-    t.joint = model->getCoordinates()[j].name;
-    t.capacity_nm = scene.article.torqueCapacity(t.joint);
-    r.torques.push_back(t);
-  }
+}
 
-  recordRun(sys, integrator, spec, r, progress, [&](const SimTK::State& st) { return model->inputPower(st); },
-            [&](const SimTK::State& st) { return dissipation(*model, st); },
-            [&](double t, const SimTK::State& st) {
-    SimTK::Vector motion_forces;
-    matter.findMotionForces(st, motion_forces);
-    std::vector<double> row{t};
-    if (table >= 0) {
-      const double force = -motion_forces[model->getUIndex(table)];
-      row.push_back(st.getQ()[model->getQIndex(table)]);
-      row.push_back(force);
-      r.peak_table_force_n = std::max(r.peak_table_force_n, std::abs(force));
-    }
-    for (std::size_t j = 0; j < joints.size(); ++j) {
-      const int i = joints[j];
-      // Simbody's motion force is the reaction; the torquer applies its negative
-      // (checked against the static holding torque at t = 0); a commanded torque adds.
-      const Coordinate& c = model->getCoordinates()[i];
-      const double torque = -motion_forces[model->getUIndex(i)] + (c.input ? c.input->position(t) : 0.0);
-      row.push_back(st.getQ()[model->getQIndex(i)] * 180 / M_PI);
-      row.push_back(torque);
-      r.torques[j].peak_torque_nm = std::max(r.torques[j].peak_torque_nm, std::abs(torque));
-    }
-    for (const NamedPoint* p : tips) {
-      const SimTK::Vec3 x = model->findPointLocation(st, *p);
-      row.push_back(x[0]);
-      row.push_back(x[1]);
-    }
-    for (auto& live : sensors) {
-      double truth;
-      if (live.joint >= 0) {
-        truth = st.getQ()[model->getQIndex(live.joint)];
-      } else {
-        const SimTK::MobilizedBody& mb = matter.getMobilizedBody(live.point->mobod);
-        if (live.gyro) {
-          truth = mb.getBodyAngularVelocity(st)[2];
-        } else {
-          const SimTK::Vec3 a_W = mb.findStationAccelerationInGround(st, live.point->station_B);
-          const SimTK::Vec3 f_B = mb.getBodyRotation(st).transpose() * (a_W - model->getGravity());
-          truth = f_B[live.axis];
-        }
-      }
-      row.push_back(live.model.sample(truth));
-    }
-    if (closed) r.constraint_drift_m = std::max(r.constraint_drift_m, calcClosureErrors(*model, st).cwiseAbs().maxCoeff());
-    return row;
-  });
-  for (auto& t : r.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
-  for (std::size_t i = 0; i < sensors.size(); ++i) {
-    r.sensors[i].saturated_samples = sensors[i].model.saturatedSamples();
-    r.sensors[i].samples = sensors[i].model.samples();
+double ArticleRecorder::sensorTruth(const LiveSensor& live, const SimTK::State& st) const {
+  if (live.joint >= 0) return st.getQ()[model_.getQIndex(live.joint)];
+  const SimTK::MobilizedBody& mb = model_.getMatter().getMobilizedBody(live.point->mobod);
+  if (live.gyro) return mb.getBodyAngularVelocity(st)[2];
+  const SimTK::Vec3 a_W = mb.findStationAccelerationInGround(st, live.point->station_B);
+  const SimTK::Vec3 f_B = mb.getBodyRotation(st).transpose() * (a_W - model_.getGravity());
+  return f_B[live.axis];
+}
+
+std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
+  SimTK::Vector motion_forces;
+  model_.getMatter().findMotionForces(st, motion_forces);
+  std::vector<double> row{t};
+  if (table_ >= 0) {
+    const double force = -motion_forces[model_.getUIndex(table_)];
+    row.push_back(st.getQ()[model_.getQIndex(table_)]);
+    row.push_back(force);
+    r_.peak_table_force_n = std::max(r_.peak_table_force_n, std::abs(force));
   }
+  for (std::size_t j = 0; j < joints_.size(); ++j) {
+    const int i = joints_[j];
+    // Simbody's motion force is the reaction; the torquer applies its negative
+    // (checked against the static holding torque at t = 0); a commanded torque adds.
+    const Coordinate& c = model_.getCoordinates()[i];
+    const double torque = -motion_forces[model_.getUIndex(i)] + (c.input ? c.input->position(t) : 0.0);
+    row.push_back(st.getQ()[model_.getQIndex(i)] * 180 / M_PI);
+    row.push_back(torque);
+    r_.torques[j].peak_torque_nm = std::max(r_.torques[j].peak_torque_nm, std::abs(torque));
+  }
+  for (const NamedPoint* p : tips_) {
+    const SimTK::Vec3 x = model_.findPointLocation(st, *p);
+    row.push_back(x[0]);
+    row.push_back(x[1]);
+  }
+  for (auto& live : sensors_) row.push_back(live.model.sample(sensorTruth(live, st)));
+  if (!model_.getClosures().empty())
+    r_.constraint_drift_m = std::max(r_.constraint_drift_m, calcClosureErrors(model_, st).cwiseAbs().maxCoeff());
+  return row;
+}
+
+/// The run's start: the static equilibrium (or the scene's angles) at rest, with the
+/// closures as constraints from here on.
+SimTK::State initialState(Model& model, const SimulationSpec& spec) {
+  SimTK::State s = model.getReferenceState();
+  if (spec.from_equilibrium) {
+    const EquilibriumResult eq = solveEquilibrium(model);
+    if (!eq.converged) throw NumericalError("static equilibrium failed: " + eq.failure);
+    s = eq.state;
+  }
+  s.updU() = 0;
+  s.setTime(0);
+  if (!model.getClosures().empty()) s = model.addClosureConstraints(s);
+  return s;
+}
+
+}  // namespace
+
+SimulationResult simulate(const ArticleScene& scene, const std::function<void(double)>& progress) {
+  const SimulationSpec& spec = scene.simulation;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto model = buildArticleModel(scene);
+  const SimTK::State s = initialState(*model, spec);
+  RunIntegrator integrator(model->getSystem(), spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance);
+  SimulationResult r;
+  r.integrator = spec.integrator;
+  r.accuracy = spec.accuracy;
+  ArticleRecorder recorder(*model, scene, r);
+  recordRun(model->getSystem(), integrator, spec, r, progress, [&](const SimTK::State& st) { return model->inputPower(st); },
+            [&](const SimTK::State& st) { return dissipation(*model, st); },
+            [&](double t, const SimTK::State& st) { return recorder.sample(t, st); });
+  recorder.finish();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

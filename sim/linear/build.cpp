@@ -1,0 +1,179 @@
+// Building the article's linear model (sim/linear/state_space.hpp): damping, base
+// coupling, inputs and outputs over the closure-admissible coordinates.
+#include <cmath>
+
+#include "sim/core/errors.hpp"
+#include "sim/linear/state_space.hpp"
+
+namespace mmv {
+namespace {
+
+/// The damping matrix over the admissible coordinates (Z^T C Z).
+Eigen::MatrixXd dampingMatrix(const LinearModel& lm, const Model& model, const std::vector<int>& dofs,
+                              const DampingSpec& damping) {
+  const Eigen::MatrixXd& Z = lm.Z;
+  if (damping.kind == DampingSpec::Kind::Rayleigh) return damping.alpha * lm.Mz + damping.beta * lm.Kz;
+  if (damping.kind == DampingSpec::Kind::HingeViscous) {
+    Eigen::VectorXd c(dofs.size());
+    for (std::size_t a = 0; a < dofs.size(); ++a) {
+      const Coordinate& co = model.getCoordinates()[dofs[a]];
+      c[a] = co.kind == CoordinateKind::Hinge ? damping.hinge_beta * co.stiffness : 0.0;
+    }
+    return Z.transpose() * c.asDiagonal() * Z;
+  }
+  const ModalSolution modes = solveModes(lm.Mz, lm.Kz);
+  const Eigen::Index nz = Z.cols();
+  Eigen::VectorXd c(nz);
+  for (Eigen::Index i = 0; i < nz; ++i) c[i] = 2 * damping.modal_ratio * std::sqrt(std::max(modes.omega2[i], 0.0));
+  return lm.Mz * modes.shapes * c.asDiagonal() * modes.shapes.transpose() * lm.Mz;
+}
+
+/// Base coupling M_qb e_a = sum_b m_b J_b^T e_a (mass centres), over the DOFs.
+Eigen::MatrixXd baseCoupling(const Model& model, const SimTK::State& st, const std::vector<int>& dofs) {
+  Eigen::MatrixXd Mqb = Eigen::MatrixXd::Zero(dofs.size(), 2);
+  std::vector<SimTK::MobilizedBodyIndex> ix;
+  std::vector<SimTK::Vec3> com;
+  std::vector<double> mass;
+  for (const auto& b : model.getBodies()) {
+    const auto mp = model.getMatter().getMobilizedBody(b.mobod).getBodyMassProperties(st);
+    ix.push_back(b.mobod);
+    com.push_back(mp.getMassCenter());
+    mass.push_back(mp.getMass());
+  }
+  const Eigen::MatrixXd J = model.calcFrameJacobians(st, ix, com, dofs);
+  for (std::size_t b = 0; b < ix.size(); ++b)
+    for (int a = 0; a < 2; ++a) Mqb.col(a) += mass[b] * J.row(6 * b + 3 + a).transpose();
+  return Mqb;
+}
+
+/// The Jacobian row of a named point's translation along world axis `axis`, over the DOFs.
+Eigen::RowVectorXd pointRow(const ArticleScene& scene, const Model& model, const SimTK::State& st,
+                            const std::vector<int>& dofs, const std::string& point, int axis, const std::string& what) {
+  const NamedPoint* p = model.findPoint(point);
+  if (!p) throw SceneError(scene.source + ": " + what + ": unknown point '" + point + "'");
+  const Eigen::MatrixXd J = model.calcFrameJacobians(st, {p->mobod}, {p->station_B}, dofs);
+  return Eigen::RowVectorXd(J.row(3 + axis));
+}
+
+/// The generalized force over the DOFs per unit of input `in`.
+Eigen::VectorXd inputForce(const ArticleScene& scene, const Model& model, const SimTK::State& st,
+                           const std::vector<int>& dofs, const Eigen::MatrixXd& Mqb, const InputSpec& in) {
+  const int n = static_cast<int>(dofs.size());
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+  switch (in.kind) {
+    case InputKind::BaseAcceleration: return -Mqb.col(in.axis);
+    case InputKind::PointForce: return pointRow(scene, model, st, dofs, in.target, in.axis, "input " + in.name).transpose();
+    case InputKind::JointTorque: {
+      int row = -1;
+      for (int a = 0; a < n; ++a)
+        if (model.getCoordinates()[dofs[a]].name == in.target) row = a;
+      if (row < 0) {
+        bool exists = false;
+        for (const auto& c : model.getCoordinates()) exists = exists || c.name == in.target;
+        throw SceneError(scene.source + ": input " + in.name + ": " +
+                         (exists ? "joint '" + in.target + "' is locked (hold: locked), so a torque there moves nothing; use hold: free or servo"
+                                 : "unknown joint '" + in.target + "'"));
+      }
+      g[row] = 1.0;
+      return g;
+    }
+  }
+  return g;
+}
+
+/// Output rows for displacement, velocity and acceleration, and the direct feedthrough of
+/// an absolute acceleration from a base-acceleration input.
+void outputMatrices(const ArticleScene& scene, const Model& model, const SimTK::State& st, const std::vector<int>& dofs,
+                    const Eigen::MatrixXd& Z, const std::vector<InputSpec>& inputs, const std::vector<OutputSpec>& outputs,
+                    SecondOrderResponse& so) {
+  const Eigen::Index no = outputs.size(), ni = inputs.size(), nz = Z.cols();
+  so.Cd = so.Cv = so.Ca = Eigen::MatrixXd::Zero(no, nz);
+  so.D = Eigen::MatrixXd::Zero(no, ni);
+  bool base_input = false;
+  for (const auto& in : inputs) base_input = base_input || in.kind == InputKind::BaseAcceleration;
+  for (Eigen::Index r = 0; r < no; ++r) {
+    const OutputSpec& out = outputs[r];
+    const Eigen::RowVectorXd P = pointRow(scene, model, st, dofs, out.point, out.axis, "output " + out.name) * Z;
+    if (out.absolute && out.kind != OutputKind::Acceleration && base_input)
+      throw SceneError(scene.source + ": output " + out.name +
+                       ": an absolute displacement or velocity needs the base's displacement, not its acceleration: use an "
+                       "absolute acceleration (transmissibility) or a relative output");
+    if (out.kind == OutputKind::Displacement) so.Cd.row(r) = P;
+    if (out.kind == OutputKind::Velocity) so.Cv.row(r) = P;
+    if (out.kind == OutputKind::Acceleration) {
+      so.Ca.row(r) = P;
+      if (out.absolute)  // the base's own acceleration
+        for (Eigen::Index k = 0; k < ni; ++k)
+          if (inputs[k].kind == InputKind::BaseAcceleration && inputs[k].axis == out.axis) so.D(r, k) = 1.0;
+    }
+  }
+}
+
+/// Names and units of the inputs, outputs and states.
+void nameSignals(const Model& model, const LinearizedModel& lin, const std::vector<InputSpec>& inputs,
+                 const std::vector<OutputSpec>& outputs, StateSpace& ss) {
+  const char* in_units[] = {"m/s^2", "N*m", "N"};
+  for (const auto& in : inputs) {
+    ss.input_names.push_back(in.name);
+    ss.input_units.push_back(in_units[static_cast<int>(in.kind)]);
+  }
+  const char* out_units[] = {"m", "m/s", "m/s^2"};
+  for (const auto& out : outputs) {
+    ss.output_names.push_back(out.name);
+    ss.output_units.push_back(out_units[static_cast<int>(out.kind)]);
+  }
+  const bool open = lin.G.rows() == 0;
+  const int nz = static_cast<int>(lin.Z.cols());
+  for (int i = 0; i < nz; ++i)
+    ss.state_names.push_back(open ? model.getCoordinates()[lin.dofs[i]].name : "eta" + std::to_string(i + 1));
+  for (int i = 0; i < nz; ++i) ss.state_names.push_back(ss.state_names[i] + "_dot");
+}
+
+}  // namespace
+
+std::vector<InputSpec> defaultInputs() {
+  return {{"table_x", InputKind::BaseAcceleration, "", 0}, {"table_y", InputKind::BaseAcceleration, "", 1}};
+}
+
+std::vector<OutputSpec> defaultOutputs(const ArticleScene& scene) {
+  std::vector<OutputSpec> out;
+  for (const auto& l : scene.article.links)
+    for (int a = 0; a < 2; ++a)
+      out.push_back({l.name + ".tip_a" + (a ? "y" : "x"), OutputKind::Acceleration, l.name + ".tip", a, true});
+  return out;
+}
+
+LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputSpec>& inputs,
+                             const std::vector<OutputSpec>& outputs, const DampingSpec& damping) {
+  LinearModel lm;
+  lm.solved = solveScene(scene);
+  lm.inputs = inputs;
+  lm.outputs = outputs;
+  const Model& model = *lm.solved.model;
+  const LinearizedModel& lin = lm.solved.linearized;
+  const std::vector<int>& dofs = lin.dofs;
+  lm.Z = lin.Z;
+  const Eigen::MatrixXd& Z = lm.Z;
+  lm.Mz = Z.transpose() * lin.M * Z;
+  lm.Kz = Z.transpose() * lin.K * Z;
+  lm.Mz = 0.5 * (lm.Mz + lm.Mz.transpose());
+  lm.Kz = 0.5 * (lm.Kz + lm.Kz.transpose());
+  lm.Cz = dampingMatrix(lm, model, dofs, damping);
+  SimTK::State st = lm.solved.equilibrium.state;
+  model.getSystem().realize(st, SimTK::Stage::Position);
+  const Eigen::MatrixXd Mqb = baseCoupling(model, st, dofs);
+  lm.Bq = Eigen::MatrixXd::Zero(Z.cols(), inputs.size());
+  for (std::size_t k = 0; k < inputs.size(); ++k)
+    lm.Bq.col(k) = Z.transpose() * inputForce(scene, model, st, dofs, Mqb, inputs[k]);
+  SecondOrderResponse& so = lm.second_order;
+  outputMatrices(scene, model, st, dofs, Z, inputs, outputs, so);
+  so.M = lm.Mz;
+  so.C = lm.Cz;
+  so.K = lm.Kz;
+  so.Bq = lm.Bq;
+  lm.full = secondOrderModel(lm.Mz, lm.Cz, lm.Kz, lm.Bq, so.Cd, so.Cv, so.Ca, so.D);
+  nameSignals(model, lin, inputs, outputs, lm.full);
+  return lm;
+}
+
+}  // namespace mmv
