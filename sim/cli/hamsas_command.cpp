@@ -1,143 +1,19 @@
-// mmvlab modes / frf / rom on a HAM-SAS isolator scene (article/hamsas.hpp).
-#include <cmath>
+// mmvlab modes / frf / rom on a HAM-SAS isolator scene (sim/hamsas/), written by
+// sim/io/hamsas_report.hpp; the figures by renders/.
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
-#include "sim/io/output_dir.hpp"
-#include "sim/hamsas/hamsas_modes.hpp"
-#include "sim/io/mat_file.hpp"
-#include "sim/io/report.hpp"
 #include "sim/core/text.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/io/hamsas_report.hpp"
+#include "sim/io/mat_file.hpp"
+#include "sim/io/output_dir.hpp"
 
 namespace mmv::cli {
 namespace {
-
-const char* kDof[6] = {"x", "y", "z", "rx", "ry", "rz"};
-const char* kUnit[6] = {"m", "m", "m", "rad", "rad", "rad"};
-
-double db(std::complex<double> v) { return 20 * std::log10(std::abs(v) + 1e-300); }
-
-std::string describe(const HamsasModes& h) {
-  std::ostringstream os;
-  const SpatialSpec& m = h.model;
-  os << strf("%d bodies (the base's motion prescribed), %d coordinates", static_cast<int>(m.bodies.size()),
-             h.lin.num_free);
-  if (h.spec.ideal_joints)
-    os << strf(", %d after the ideal joints' constraints (%d redundant)", static_cast<int>(h.lin.Z.cols()),
-               h.lin.redundant_constraints);
-  os << "; effective spherical joints: "
-     << (h.spec.ideal_joints ? std::string("ideal ball joints (constraints)")
-                             : strf("stiff springs of %.3g N/m", h.spec.joint_stiffness))
-     << '\n';
-  return os.str();
-}
-
-/// The largest |force| carried by the elements of `group` whose name starts with `prefix`.
-double preload(const HamsasModes& h, const std::string& prefix) {
-  double v = 0;
-  for (std::size_t e = 0; e < h.model.springs.size(); ++e)
-    if (h.model.springs[e].name.rfind(prefix, 0) == 0) v = std::max(v, h.lin.spring_force[e].norm());
-  return v;
-}
-
-std::string modesText(const HamsasScene& scene, const HamsasModes& h, int max_modes) {
-  std::ostringstream os;
-  const ModalSolution& s = h.solution;
-  os << scene.name << " [" << scene.source << "]: " << describe(h);
-  os << strf("Equilibrium at the design configuration (preloads balance gravity): residual %.2g of the weight\n",
-             h.lin.equilibrium_residual);
-  os << strf("  preloads: MGAS springs %.1f N each, little pendulums %.1f N tension, IP flex joints %.1f N\n",
-             preload(h, "mgas"), preload(h, "lp_bottom"), preload(h, "flex_joint"));
-  double wmin = 0, wmax = 0;
-  for (int i = 0; i < s.omega2.size(); ++i)
-    if (s.omega2[i] > 0) wmin = wmin > 0 ? std::min(wmin, s.omega2[i]) : s.omega2[i], wmax = std::max(wmax, s.omega2[i]);
-  os << strf("Eigen solution: %d modes, eigenvalue span %.2g (stiffest / softest omega^2); max relative residual "
-             "||K v - w^2 M v|| / (w^2 ||M v||) = %.2g; M-orthogonality %.2g\n\n",
-             static_cast<int>(s.omega2.size()), wmin > 0 ? wmax / wmin : 0.0, h.max_relative_residual,
-             s.orthogonality_error);
-  int unstable = 0;
-  for (int i = 0; i < s.omega2.size(); ++i) unstable += !s.isStable(i);
-  if (unstable) os << strf("UNSTABLE: %d mode(s) with negative stiffness (listed with negative frequency)\n\n", unstable);
-  os << "Measured (LASTI, in vacuum) vs model:\n";
-  Table t({"feature", "measured_Hz", "model_Hz", "error_%", "mode", "shape_match", "identified_as"});
-  for (const FeatureMatch& f : h.features)
-    t.add({f.feature, strf("%.4g", f.measured_hz), f.mode >= 0 ? strf("%.4g", f.model_hz) : "none",
-           f.mode >= 0 ? strf("%+.2f", 100 * (f.model_hz / f.measured_hz - 1)) : "-",
-           f.mode >= 0 ? std::to_string(f.mode + 1) : "-", strf("%.3f", f.shape_match), f.rule});
-  os << t.text() << '\n';
-  os << "Modes (kinetic energy by body group; strain energy by element group, 'preload' = gravity's work):\n";
-  Table m({"mode", "f_Hz", "label", "kinetic_energy", "strain_energy"});
-  const int n = max_modes > 0 ? std::min<int>(max_modes, static_cast<int>(h.modes.size())) : static_cast<int>(h.modes.size());
-  for (int i = 0; i < n; ++i) {
-    auto top = [](const std::map<std::string, double>& shares, bool skip_dirs) {
-      std::vector<std::pair<double, std::string>> v;
-      for (const auto& [k, x] : shares)
-        if (!skip_dirs || k.find('.') == std::string::npos) v.push_back({-std::abs(x), k});
-      std::sort(v.begin(), v.end());
-      std::string out;
-      for (std::size_t j = 0; j < v.size() && j < 3 && -v[j].first >= 0.005; ++j)
-        out += (j ? " " : "") + v[j].second + strf("=%.0f%%", 100 * shares.at(v[j].second));
-      return out;
-    };
-    m.add({std::to_string(i + 1), strf("%.5g", h.modes[i].frequency_hz), h.modes[i].label, top(h.modes[i].kinetic_share, true),
-           top(h.modes[i].strain_share, false)});
-  }
-  os << m.text();
-  return os.str();
-}
-
-nlohmann::ordered_json modesJson(const HamsasScene& scene, const HamsasModes& h, int max_modes) {
-  nlohmann::ordered_json j;
-  j["mmvlab_version"] = mmvlabVersion();
-  j["scene"] = scene.name;
-  j["source"] = scene.source;
-  j["model"] = "hamsas";
-  j["bodies"] = h.model.bodies.size();
-  j["coordinates"] = h.lin.Z.cols();
-  j["spherical_joints"] = h.spec.ideal_joints ? "ideal" : "stiff";
-  // The design configuration is the equilibrium by the preloads; the residual says how well.
-  j["equilibrium"] = {{"converged", true}, {"residual_over_weight", h.lin.equilibrium_residual}};
-  j["eigen"] = {{"max_relative_residual", h.max_relative_residual}, {"orthogonality_error", h.solution.orthogonality_error}};
-  for (const FeatureMatch& f : h.features)
-    j["features"].push_back({{"feature", f.feature},
-                             {"measured_hz", f.measured_hz},
-                             {"model_hz", f.mode >= 0 ? nlohmann::ordered_json(f.model_hz) : nlohmann::ordered_json()},
-                             {"mode", f.mode >= 0 ? nlohmann::ordered_json(f.mode + 1) : nlohmann::ordered_json()},
-                             {"shape_match", f.shape_match},
-                             {"rule", f.rule}});
-  const int n = max_modes > 0 ? std::min<int>(max_modes, static_cast<int>(h.modes.size())) : static_cast<int>(h.modes.size());
-  for (int i = 0; i < n; ++i) {
-    nlohmann::ordered_json m;
-    m["mode"] = i + 1;
-    m["frequency_hz"] = h.modes[i].frequency_hz;
-    m["stable"] = h.solution.isStable(i);
-    m["label"] = h.modes[i].label;
-    for (const auto& [k, v] : h.modes[i].kinetic_share)
-      if (k.find('.') == std::string::npos) m["kinetic_share"][k] = v;
-    m["strain_share"] = h.modes[i].strain_share;
-    j["modes"].push_back(m);
-  }
-  return j;
-}
-
-HamsasSpec applyVary(HamsasSpec spec, const std::string& key, double value) {
-  for (const HamsasParameter& p : hamsasParameters())
-    if (key == p.key) {
-      spec.*p.field = value;
-      try {
-        buildHamsas(spec);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--vary ") + key + strf("=%g: ", value) + e.what());
-      }
-      return spec;
-    }
-  std::string known;
-  for (const HamsasParameter& p : hamsasParameters()) known += (known.empty() ? "" : ", ") + std::string(p.key);
-  throw UsageError("--vary: unknown HAM-SAS parameter '" + key + "' (known: " + known + ")");
-}
 
 std::pair<std::string, std::vector<double>> parseVary(const std::string& text) {
   const auto eq = text.find('=');
@@ -154,11 +30,51 @@ std::pair<std::string, std::vector<double>> parseVary(const std::string& text) {
   return {text.substr(0, eq), values};
 }
 
+/// The transmissibility figures: horizontal, vertical, angular, the 10 Hz heat map and
+/// the varied parameter's curves.
+void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const std::vector<double>& f,
+                                const std::vector<Eigen::MatrixXcd>& T, const Eigen::MatrixXcd& T10,
+                                const std::string& vary_key, const std::vector<HamsasVaryPoint>& varied,
+                                const std::string& vary_unit) {
+  auto series = [&](int i, int j) {
+    render::Series s{std::string(hamsasDofName(i)) + " <- ground " + hamsasDofName(j), f, {}};
+    for (const auto& Tk : T) s.y.push_back(decibels(Tk(i, j)));
+    return s;
+  };
+  try {
+    render::writeLinePlotPng(out.stage("transmissibility_horizontal.png"), {series(0, 0), series(1, 1), series(0, 4), series(1, 3)},
+                             name + ": horizontal transmissibility (table / ground)", "frequency (Hz)",
+                             "magnitude (dB; m/m, m/rad)", false, true);
+    render::writeLinePlotPng(out.stage("transmissibility_vertical.png"), {series(2, 2)},
+                             name + ": vertical transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB)", false,
+                             true);
+    render::writeLinePlotPng(out.stage("transmissibility_angular.png"), {series(3, 3), series(4, 4), series(5, 5)},
+                             name + ": angular transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB)", false,
+                             true);
+    Eigen::MatrixXd heat(6, 6);
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) heat(i, j) = std::max(decibels(T10(i, j)), -250.0);  // zero by symmetry: the floor
+    std::vector<std::string> names;
+    for (int k = 0; k < 6; ++k) names.push_back(hamsasDofName(k));
+    render::writeHeatmapPng(out.stage("transmissibility_10hz.png"), heat, names, names,
+                            name + ": |T| at 10 Hz (dB, floor -250)", "optical table", "ground", -250, 0);
+    if (!varied.empty()) {
+      std::vector<render::Series> curves;
+      for (const auto& p : varied) curves.push_back({strf("%g", p.value) + vary_unit, f, p.x_db});
+      render::writeLinePlotPng(out.stage("transmissibility_vary.png"), curves, name + ": x transmissibility vs " + vary_key,
+                               "frequency (Hz)", "magnitude (dB)", false, true);
+    }
+  } catch (const std::runtime_error& e) {
+    throw OutputError(e.what());
+  }
+}
+
 }  // namespace
 
 int runHamsasModes(const ModesArgs& args, const HamsasScene& scene) {
   const HamsasModes h = analyseHamsas(scene.isolator);
-  const std::string out = args.json ? modesJson(scene, h, args.modes).dump(2) + "\n" : modesText(scene, h, args.modes);
+  const std::string out =
+      args.json ? hamsasModesJson(scene, h, args.modes).dump(2) + "\n" : hamsasModesText(scene, h, args.modes);
   std::cout << out << std::flush;
   return kOk;
 }
@@ -168,100 +84,32 @@ int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::ve
     throw UsageError("frf on a HAM-SAS scene computes the 6 x 6 ground-to-optical-table transmissibility; "
                      "--input/--output do not apply (the actuator-to-sensor model is `mmvlab rom`)");
   if (args.vary.size() > 1) throw UsageError("--vary: give one parameter");
+  std::string vary_key, vary_unit;
+  std::vector<double> vary_values;
+  if (!args.vary.empty()) std::tie(vary_key, vary_values) = parseVary(args.vary.front());
   std::unique_ptr<OutputDir> out;
   if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
   const HamsasModes h = analyseHamsas(scene.isolator);
   const std::vector<Eigen::MatrixXcd> T = hamsasTransmissibility(h, f);
   const Eigen::MatrixXcd T10 = spatialTransmissibility(h.model, h.lin, 2 * M_PI * 10.0);
-
-  std::ostringstream os;
-  os << scene.name << " [" << scene.source << "]: ground-to-optical-table transmissibility, " << describe(h);
-  os << strf("Ground motion at the base's reference point; table motion at its mass centre; %g-%g Hz, %zu points\n\n",
-             f.front(), f.back(), f.size());
-  Table t({"transmissibility", "unit", "at_f_min", "peak_Hz", "peak_dB", "at_10_Hz_dB", "goal_at_10_Hz"});
-  for (int k = 0; k < 6; ++k) {
-    std::size_t best = 0;
-    for (std::size_t i = 0; i < f.size(); ++i)
-      if (std::abs(T[i](k, k)) > std::abs(T[best](k, k))) best = i;
-    const double at10 = db(T10(k, k));
-    const std::string goal = k < 3 ? (at10 <= -80 ? "meets 80 dB" : at10 <= -70 ? "meets 70 dB" : "misses 70 dB") : "-";
-    t.add({std::string(kDof[k]) + " <- ground " + kDof[k], std::string(kUnit[k]) + "/" + kUnit[k], strf("%.4g", std::abs(T.front()(k, k))),
-           strf("%.4g", f[best]), strf("%.2f", db(T[best](k, k))), strf("%.1f", at10), goal});
-  }
-  os << t.text();
-  double off = -1e300;
-  int oi = 0, oj = 0;
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j)
-      if (i != j && db(T10(i, j)) > off) off = db(T10(i, j)), oi = i, oj = j;
-  os << strf("Largest cross-coupling at 10 Hz: %s <- ground %s, %.1f dB (%s/%s)\n", kDof[oi], kDof[oj], off, kUnit[oi], kUnit[oj]);
-  os << "(the 70-80 dB goal is the slides' horizontal and vertical attenuation above 10 Hz)\n";
-
-  // Parameter variation: the horizontal transmissibility per value.
-  std::vector<render::Series> varied;
-  if (!args.vary.empty()) {
-    const auto [key, values] = parseVary(args.vary.front());
-    os << "\nVarying " << key << ":\n";
-    Table v({key, "IP_Hz", "x_at_1_Hz_dB", "x_at_3_Hz_dB", "x_at_10_Hz_dB", "z_at_10_Hz_dB"});
-    for (double x : values) {
-      const HamsasModes hv = analyseHamsas(applyVary(scene.isolator, key, x));
-      auto at = [&](double hz, int k) { return db(spatialTransmissibility(hv.model, hv.lin, 2 * M_PI * hz)(k, k)); };
-      v.add({strf("%g", x), strf("%.4g", hv.features.front().model_hz), strf("%.1f", at(1, 0)), strf("%.1f", at(3, 0)),
-             strf("%.1f", at(10, 0)), strf("%.1f", at(10, 2))});
-      std::string unit;
-      for (const HamsasParameter& p : hamsasParameters())
-        if (key == p.key) unit = p.unit;
-      render::Series s{strf("%g", x) + unit, f, {}};
-      for (const auto& Ti : hamsasTransmissibility(hv, f)) s.y.push_back(db(Ti(0, 0)));
-      varied.push_back(s);
-    }
-    os << v.text();
-  }
-
-  if (out) {
-    std::ostringstream csv;
-    csv << "frequency_hz";
-    for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) csv << ",T_" << kDof[i] << "_from_" << kDof[j] << "_db,T_" << kDof[i] << "_from_" << kDof[j] << "_phase_deg";
-    csv << '\n';
-    for (std::size_t k = 0; k < f.size(); ++k) {
-      csv << strf("%.8g", f[k]);
-      for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 6; ++j) csv << strf(",%.8g,%.8g", db(T[k](i, j)), std::arg(T[k](i, j)) * 180 / M_PI);
-      csv << '\n';
-    }
-    std::ofstream(out->stage("transmissibility.csv"), std::ios::binary) << csv.str();
-    auto series = [&](int i, int j) {
-      render::Series s{std::string(kDof[i]) + " <- ground " + kDof[j], f, {}};
-      for (const auto& Tk : T) s.y.push_back(db(Tk(i, j)));
-      return s;
-    };
+  std::string text = hamsasTransmissibilityText(scene, h, f, T, T10);
+  std::vector<HamsasVaryPoint> varied;
+  if (!vary_key.empty()) {
     try {
-      render::writeLinePlotPng(out->stage("transmissibility_horizontal.png"), {series(0, 0), series(1, 1), series(0, 4), series(1, 3)},
-                               scene.name + ": horizontal transmissibility (table / ground)", "frequency (Hz)",
-                               "magnitude (dB; m/m, m/rad)", false, true);
-      render::writeLinePlotPng(out->stage("transmissibility_vertical.png"), {series(2, 2)},
-                               scene.name + ": vertical transmissibility (table / ground)", "frequency (Hz)",
-                               "magnitude (dB)", false, true);
-      render::writeLinePlotPng(out->stage("transmissibility_angular.png"), {series(3, 3), series(4, 4), series(5, 5)},
-                               scene.name + ": angular transmissibility (table / ground)", "frequency (Hz)",
-                               "magnitude (dB)", false, true);
-      Eigen::MatrixXd heat(6, 6);
-      for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 6; ++j) heat(i, j) = std::max(db(T10(i, j)), -250.0);  // zero by symmetry: the floor
-      std::vector<std::string> names(kDof, kDof + 6);
-      render::writeHeatmapPng(out->stage("transmissibility_10hz.png"), heat, names, names,
-                              scene.name + ": |T| at 10 Hz (dB, floor -250)", "optical table", "ground", -250, 0);
-      if (!varied.empty())
-        render::writeLinePlotPng(out->stage("transmissibility_vary.png"), varied,
-                                 scene.name + ": x transmissibility vs " + parseVary(args.vary.front()).first,
-                                 "frequency (Hz)", "magnitude (dB)", false, true);
-    } catch (const std::runtime_error& e) {
-      throw OutputError(e.what());
+      varied = varyHamsas(scene.isolator, vary_key, vary_values, f);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError("--vary " + args.vary.front() + ": " + e.what());
     }
+    for (const HamsasParameter& p : hamsasParameters())
+      if (vary_key == p.key) vary_unit = p.unit;
+    text += hamsasVaryText(vary_key, varied);
+  }
+  if (out) {
+    std::ofstream(out->stage("transmissibility.csv"), std::ios::binary) << hamsasTransmissibilityCsv(f, T);
+    writeTransmissibilityPlots(*out, scene.name, f, T, T10, vary_key, varied, vary_unit);
     for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
-  std::cout << os.str() << std::flush;
+  std::cout << text << std::flush;
   return kOk;
 }
 
@@ -284,41 +132,9 @@ int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::ve
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }
-  nlohmann::ordered_json j;
-  j["mmvlab_version"] = mmvlabVersion();
-  j["command"] = "rom";
-  j["model"] = "hamsas actuators to sensors";
-  j["full_states"] = full.numStates();
-  j["reduced_states"] = red.model.numStates();
-  j["kept_modes"] = red.kept_modes;
-  j["kept_frequencies_hz"] = red.kept_frequencies_hz;
-  j["residualized"] = red.residualized;
-  j["unseen_modes_dropped"] = red.unseen_modes;
-  j["band_hz"] = {f.front(), f.back()};
-  j["max_relative_frf_error"] = err.max_relative;
-  j["inputs"] = full.input_names;
-  j["input_units"] = full.input_units;
-  j["outputs"] = full.output_names;
-  j["output_units"] = full.output_units;
-  std::ofstream(out.stage("rom.json"), std::ios::binary) << j.dump(2) << '\n';
+  std::ofstream(out.stage("rom.json"), std::ios::binary) << hamsasRomJson(full, red, err, f).dump(2) << '\n';
   for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-
-  std::ostringstream os;
-  os << scene.name << " [" << scene.source << "]: actuators to sensors on the spring box, " << describe(h);
-  os << strf("Full model: %d states, %d inputs (N), %d outputs (m); reduced: %d modes (%d states), %s\n", full.numStates(),
-             static_cast<int>(full.B.cols()), static_cast<int>(full.C.rows()), red.kept_modes, red.model.numStates(),
-             red.residualized ? "statically residualized (every DC gain exact)" : "truncated");
-  os << strf("Modes no actuator-sensor pair sees (dropped first): %d\n", red.unseen_modes);
-  os << "Kept modes (Hz):";
-  for (double x : red.kept_frequencies_hz) os << strf(" %.4g", x);
-  os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n\n", f.front(),
-             f.back(), 100 * err.max_relative);
-  Table t({"sensor", "actuator", "DC_compliance_m_per_N", "rom_error_%"});
-  const Eigen::MatrixXcd h0 = full.response(0.0);
-  for (Eigen::Index i = 0; i < full.C.rows(); ++i)
-    t.add({full.output_names[i], full.input_names[i], strf("%.4g", h0(i, i).real()), strf("%.3g", 100 * err.relative(i, i))});
-  os << t.text();
-  std::cout << os.str() << std::flush;
+  std::cout << hamsasRomText(scene, h, full, red, err, f) << std::flush;
   return kOk;
 }
 

@@ -10,10 +10,9 @@
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/mat_file.hpp"
-#include "sim/io/report.hpp"
+#include "sim/io/linear_report.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/core/text.hpp"
-#include "sim/io/uff.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -92,135 +91,6 @@ std::vector<double> frequencies(const LinearArgs& a) {
   return logFrequencies(a.f_min, a.f_max, a.points);
 }
 
-std::string safe(std::string s) {
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '_';
-  return s;
-}
-
-std::string summary(const LinearModel& lm, const ReducedModel& red, const ModelError& err, const std::vector<double>& f) {
-  std::ostringstream os;
-  const StateSpace& s = lm.full;
-  os << "Linear model about the equilibrium: " << s.numStates() << " states, " << s.B.cols() << " inputs, " << s.C.rows()
-     << " outputs\n";
-  os << "Reduced model: " << red.kept_modes << " modes (" << red.model.numStates() << " states), "
-     << (red.residualized ? "statically residualized (every DC gain exact)" : "truncated") << "; kept modes (Hz):";
-  for (double x : red.kept_frequencies_hz) os << strf(" %.3g", x);
-  os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n\n", f.front(),
-             f.back(), 100 * err.max_relative);
-  Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%"});
-  for (Eigen::Index o = 0; o < s.C.rows(); ++o)
-    for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
-      auto mag = [&](double hz) { return std::abs(lm.second_order.response(2 * M_PI * hz)(o, i)); };
-      std::size_t best = 0;
-      std::vector<double> m(f.size());
-      for (std::size_t k = 0; k < f.size(); ++k) {
-        m[k] = mag(f[k]);
-        if (m[k] > m[best]) best = k;
-      }
-      // Refine the grid's maximum between its neighbours (golden section on |H|), so a
-      // coarse grid does not misplace a lightly damped peak.
-      double lo = f[best > 0 ? best - 1 : 0], hi = f[std::min(best + 1, f.size() - 1)];
-      const double g = 0.5 * (std::sqrt(5.0) - 1);
-      for (int it = 0; it < 60 && hi - lo > 1e-9 * hi; ++it) {
-        const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-        (mag(a) > mag(b) ? hi : lo) = mag(a) > mag(b) ? b : a;
-      }
-      double fpeak = 0.5 * (lo + hi);
-      double peak_mag = mag(fpeak);
-      if (m[best] > peak_mag) fpeak = f[best], peak_mag = m[best];
-      const double peak = 20 * std::log10(peak_mag + 1e-300);
-      const double at10 = 20 * std::log10(std::abs(lm.second_order.response(2 * M_PI * 10.0)(o, i)) + 1e-300);
-      t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], strf("%.4g", fpeak),
-             strf("%.2f", peak), strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i))});
-    }
-  os << t.text();
-  return os.str();
-}
-
-/// The UFF file for a linear model: nodes at the equilibrium's named points, a trace
-/// line per link, the first mode shapes, and every FRF (or transmissibility) pair.
-std::string uffFor(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
-                   const std::vector<Eigen::MatrixXcd>& h) {
-  const Model& model = *lm.solved.model;
-  uff::File file;
-  file.model_name = scene.name;
-  file.description = "mmvlab frf: " + scene.source;
-  {
-    const std::time_t now = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&now, &tm);
-    char d[16], t[16];
-    std::strftime(d, sizeof d, "%d-%b-%y", &tm);
-    std::strftime(t, sizeof t, "%H:%M:%S", &tm);
-    file.date = d;
-    for (char& c : file.date) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    file.time = t;
-  }
-  std::map<std::string, int> label;
-  SimTK::State st = lm.solved.equilibrium.state;
-  model.getSystem().realize(st, SimTK::Stage::Position);
-  for (const auto& p : model.getPoints()) {
-    const SimTK::Vec3 x = model.findPointLocation(st, p);
-    const int id = static_cast<int>(file.nodes.size()) + 1;
-    label[p.name] = id;
-    file.nodes.push_back({id, {x[0], x[1], x[2]}});
-  }
-  int trace = 1;
-  for (const auto& l : scene.article.links) {
-    uff::TraceLine t{trace++, l.name, {}};
-    t.nodes.push_back(label[l.name + ".root"]);
-    for (int k = 1; !l.rigid && k <= l.segments; ++k) t.nodes.push_back(label[l.name + ".h" + std::to_string(k)]);
-    t.nodes.push_back(label[l.name + ".tip"]);
-    file.trace_lines.push_back(t);
-  }
-  const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
-  const ModalSolution& modes = lm.solved.modes;
-  for (int k = 0; k < std::min<int>(12, static_cast<int>(modes.omega2.size())); ++k) {
-    uff::ModeShape m;
-    m.mode = k + 1;
-    m.frequency_hz = modes.frequencyHz(k);
-    m.modal_mass = 1.0;
-    const Eigen::VectorXd u = P * modes.shapes.col(k);
-    for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
-      m.nodes.push_back(static_cast<int>(p) + 1);
-      m.translations.push_back({u[2 * p], u[2 * p + 1], 0.0});
-    }
-    file.modes.push_back(m);
-  }
-  const StateSpace& s = lm.full;
-  const int spec_out[] = {8, 11, 12}, spec_in[] = {12, 0, 13};  // displacement, velocity, acceleration; force
-  for (Eigen::Index o = 0; o < s.C.rows(); ++o)
-    for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
-      const OutputSpec& out = lm.outputs[o];
-      const InputSpec& in = lm.inputs[i];
-      uff::Function fn;
-      const bool transmissibility = in.kind == InputKind::BaseAcceleration && out.kind == OutputKind::Acceleration && out.absolute;
-      fn.function_type = transmissibility ? 5 : 4;
-      fn.id1 = s.output_names[o] + " / " + s.input_names[i];
-      fn.id2 = scene.name;
-      fn.response_node = label[out.point];
-      fn.response_direction = out.axis + 1;
-      fn.reference_node = in.kind == InputKind::PointForce ? label[in.target] : in.kind == InputKind::JointTorque ? label[in.target] : 0;
-      fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis + 1;
-      fn.ordinate_type = spec_out[static_cast<int>(out.kind)];
-      fn.ordinate_length_exp = 1;
-      fn.ordinate_label = s.output_names[o];
-      fn.ordinate_units = s.output_units[o];
-      fn.denominator_type = spec_in[static_cast<int>(in.kind)];
-      fn.denominator_length_exp = in.kind == InputKind::BaseAcceleration ? 1 : in.kind == InputKind::JointTorque ? 1 : 0;
-      fn.denominator_force_exp = in.kind == InputKind::BaseAcceleration ? 0 : 1;
-      fn.denominator_label = s.input_names[i];
-      fn.denominator_units = s.input_units[i];
-      for (std::size_t k = 0; k < f.size(); ++k) {
-        fn.frequency_hz.push_back(f[k]);
-        fn.values.push_back(h[k](o, i));
-      }
-      file.functions.push_back(fn);
-    }
-  return uff::write(file);
-}
-
 }  // namespace
 
 int runFrfCommand(const LinearArgs& args) {
@@ -246,18 +116,13 @@ int runFrfCommand(const LinearArgs& args) {
       }
       for (Eigen::Index o = 0; o < s.C.rows(); ++o)
         for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
-          const std::string base = safe(s.output_names[o]) + "__" + safe(s.input_names[i]);
-          std::ostringstream csv;
-          csv << "frequency_hz,magnitude_db,phase_deg,magnitude_" << safe(s.output_units[o]) << "_per_"
-              << safe(s.input_units[i]) << ",rom_magnitude_db,rom_phase_deg\n";
+          const std::string base = safeFileName(s.output_names[o]) + "__" + safeFileName(s.input_names[i]);
           render::BodeTrace full{"full model (" + std::to_string(s.numStates()) + " states)"}, rom{
               "reduced (" + std::to_string(red.model.numStates()) + " states)"};
           rom.dashed = true;
           for (std::size_t k = 0; k < f.size(); ++k) {
             const std::complex<double> a = hf[k](o, i), b = hr[k](o, i);
             const double fa = 20 * std::log10(std::abs(a) + 1e-300), fb = 20 * std::log10(std::abs(b) + 1e-300);
-            csv << strf("%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", f[k], fa, std::arg(a) * 180 / M_PI, std::abs(a), fb,
-                        std::arg(b) * 180 / M_PI);
             const double x = args.rad ? w[k] : f[k];
             full.frequency.push_back(x);
             full.magnitude_db.push_back(fa);
@@ -266,7 +131,7 @@ int runFrfCommand(const LinearArgs& args) {
             rom.magnitude_db.push_back(fb);
             rom.phase_deg.push_back(std::arg(b) * 180 / M_PI);
           }
-          std::ofstream(out->stage("frf_" + base + ".csv"), std::ios::binary) << csv.str();
+          std::ofstream(out->stage("frf_" + base + ".csv"), std::ios::binary) << frfCsv(s, o, i, f, hf, hr);
           try {
             render::writeBodePng(out->stage("bode_" + base + ".png"), {full, rom},
                                  s.output_names[o] + " / " + s.input_names[i] + " (" + s.output_units[o] + " per " +
@@ -276,10 +141,10 @@ int runFrfCommand(const LinearArgs& args) {
             throw OutputError(e.what());
           }
         }
-      std::ofstream(out->stage("frf.uff"), std::ios::binary) << uffFor(lm, scene, f, hf);
+      std::ofstream(out->stage("frf.uff"), std::ios::binary) << frfUff(lm, scene, f, hf);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << summary(lm, red, err, f) << std::flush;
+    std::cout << linearSummaryText(lm, red, err, f) << std::flush;
     return kOk;
   });
 }
@@ -303,23 +168,9 @@ int runRomCommand(const LinearArgs& args) {
     } catch (const std::runtime_error& e) {
       throw OutputError(e.what());
     }
-    nlohmann::ordered_json j;
-    j["mmvlab_version"] = mmvlabVersion();
-    j["command"] = "rom";
-    j["full_states"] = lm.full.numStates();
-    j["reduced_states"] = red.model.numStates();
-    j["kept_modes"] = red.kept_modes;
-    j["kept_frequencies_hz"] = red.kept_frequencies_hz;
-    j["residualized"] = red.residualized;
-    j["band_hz"] = {f.front(), f.back()};
-    j["max_relative_frf_error"] = err.max_relative;
-    j["inputs"] = lm.full.input_names;
-    j["input_units"] = lm.full.input_units;
-    j["outputs"] = lm.full.output_names;
-    j["output_units"] = lm.full.output_units;
-    std::ofstream(out.stage("rom.json"), std::ios::binary) << j.dump(2) << '\n';
+    std::ofstream(out.stage("rom.json"), std::ios::binary) << romJson(lm, red, err, f).dump(2) << '\n';
     for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-    std::cout << summary(lm, red, err, f) << std::flush;
+    std::cout << linearSummaryText(lm, red, err, f) << std::flush;
     return kOk;
   });
 }

@@ -7,6 +7,8 @@
 
 namespace {
 
+using namespace mmv::cli;
+
 /// --integrator's help: every name in the one table.
 std::string integratorHelp() {
   std::string simbody, sundials;
@@ -33,21 +35,17 @@ void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
   cmd->add_flag("--no-gravity", a.no_gravity, "Set gravity to zero (the report's TREETOPS run had none)");
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  using namespace mmv::cli;
-  CLI::App app{"mmvlab: plan ground tests of flexible multibody test articles (MMV arm, HAM-SAS)"};
-  app.set_version_flag("--version", std::string("mmvlab ") + mmv::mmvlabVersion());
-  app.require_subcommand(1);
-
-  ModesArgs modes;
+/// `mmvlab modes` and its options.
+CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
   CLI::App* m = app.add_subcommand("modes", "Static equilibrium with the torquers holding, then the system modes");
   addSceneOptions(m, modes);
   m->add_flag("--json", modes.json, "Print JSON (docs/outputs.md) instead of tables");
   m->add_option("--modes", modes.modes, "Number of modes to report (0: all)")->capture_default_str()->check(CLI::NonNegativeNumber);
+  return m;
+}
 
-  ConvergeArgs conv;
+/// `mmvlab converge` and its options.
+CLI::App* addConvergeCommand(CLI::App& app, ConvergeArgs& conv) {
   CLI::App* c = app.add_subcommand("converge", "Frequencies against segments per link (1, 2, 4, ...), Richardson error, time");
   addSceneOptions(c, conv);
   c->add_flag("--json", conv.json, "Print JSON instead of tables");
@@ -55,8 +53,11 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(1, mmv::limits::kMaxSegments));
   c->add_option("--modes", conv.modes, "Number of modes to tabulate")->capture_default_str()->check(CLI::Range(1, 1000));
+  return c;
+}
 
-  CompareArgs cmp;
+/// `mmvlab compare` and its options.
+CLI::App* addCompareCommand(CLI::App& app, CompareArgs& cmp) {
   CLI::App* cp = app.add_subcommand(
       "compare", "Component modes (report Table 2) against system modes (Table 3), synthesis errors and MAC");
   addSceneOptions(cp, cmp);
@@ -72,8 +73,11 @@ int main(int argc, char** argv) {
   cp->add_option("--topology", cmp.topologies, "open, closed, or open,closed (side by side)")->delimiter(',');
   cp->add_option("--out", cmp.out, "Also write compare.md, CSV, JSON and MAC heat maps (PNG) into this directory");
   cp->add_flag("--force", cmp.force, "Replace files of the same names in --out");
+  return cp;
+}
 
-  SweepArgs sw;
+/// `mmvlab sweep-config` and its options.
+CLI::App* addSweepCommand(CLI::App& app, SweepArgs& sw) {
   CLI::App* sp = app.add_subcommand(
       "sweep-config", "System modes and synthesis error over a grid of joint angles, modes tracked by shape");
   addSceneOptions(sp, sw);
@@ -88,8 +92,11 @@ int main(int argc, char** argv) {
   sp->add_flag("--json", sw.json, "Print JSON instead of tables");
   sp->add_option("--out", sw.out, "Also write sweep.csv, sweep.json and PNG plots into this directory");
   sp->add_flag("--force", sw.force, "Replace files of the same names in --out");
+  return sp;
+}
 
-  LinearArgs lin;
+/// `mmvlab frf` and `mmvlab rom` (one set of options).
+std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin) {
   auto addLinear = [&](CLI::App* cmd) {
     addSceneOptions(cmd, lin);
     cmd->add_option("--input", lin.inputs, "table_x, table_y, torque:JOINT, force:POINT:x|y (default: table_x, table_y)");
@@ -111,8 +118,11 @@ int main(int argc, char** argv) {
   fr->add_option("--vary", lin.vary, "HAM-SAS: one parameter over values, KEY=V1,V2,... (e.g. counterweight_mass=0,3.5,7)")->expected(1);
   CLI::App* ro = app.add_subcommand("rom", "Reduced-order state-space model for control design, as .mat (Octave/MATLAB ss)");
   addLinear(ro);
+  return {fr, ro};
+}
 
-  SimulateArgs sim;
+/// `mmvlab simulate` and its options.
+CLI::App* addSimulateCommand(CLI::App& app, SimulateArgs& sim) {
   CLI::App* si = app.add_subcommand("simulate", "Time run: slews, table programs, free motion; torques, energy, history");
   addSceneOptions(si, sim);
   si->add_flag("--json", sim.json, "Print the summary as JSON");
@@ -132,8 +142,11 @@ int main(int argc, char** argv) {
   si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(CLI::PositiveNumber);
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");
   si->add_flag("--force", sim.force, "Replace files of the same names in --out");
+  return si;
+}
 
-  TradeArgs tr;
+/// `mmvlab trade` and its options.
+CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
   CLI::App* tp = app.add_subcommand("trade", "Speed-accuracy trade of a time run: integrators x tolerances, segments");
   addSceneOptions(tp, tr);
   tp->add_flag("--json", tr.json, "Print JSON instead of tables");
@@ -150,6 +163,31 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   tp->add_option("--out", tr.out, "Write trade.csv, trade.json and trade.png here");
   tp->add_flag("--force", tr.force, "Replace files of the same names in --out");
+  return tp;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace mmv::cli;
+  CLI::App app{"mmvlab: plan ground tests of flexible multibody test articles (MMV arm, HAM-SAS)"};
+  app.set_version_flag("--version", std::string("mmvlab ") + mmv::mmvlabVersion());
+  app.require_subcommand(1);
+
+  ModesArgs modes;
+  CLI::App* m = addModesCommand(app, modes);
+  ConvergeArgs conv;
+  CLI::App* c = addConvergeCommand(app, conv);
+  CompareArgs cmp;
+  CLI::App* cp = addCompareCommand(app, cmp);
+  SweepArgs sw;
+  CLI::App* sp = addSweepCommand(app, sw);
+  LinearArgs lin;
+  const auto [fr, ro] = addLinearCommands(app, lin);
+  SimulateArgs sim;
+  CLI::App* si = addSimulateCommand(app, sim);
+  TradeArgs tr;
+  CLI::App* tp = addTradeCommand(app, tr);
 
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 

@@ -181,4 +181,33 @@ StateSpace hamsasControlModel(const HamsasModes& h) {
   return ss;
 }
 
+std::vector<HamsasVaryPoint> varyHamsas(const HamsasSpec& base, const std::string& key, const std::vector<double>& values,
+                                        const std::vector<double>& f) {
+  const HamsasParameter* param = nullptr;
+  std::string known;
+  for (const HamsasParameter& p : hamsasParameters()) {
+    if (key == p.key) param = &p;
+    known += (known.empty() ? "" : ", ") + std::string(p.key);
+  }
+  if (!param) throw std::invalid_argument("unknown HAM-SAS parameter '" + key + "' (known: " + known + ")");
+  auto db = [](std::complex<double> v) { return 20 * std::log10(std::abs(v) + 1e-300); };
+  std::vector<HamsasVaryPoint> out;
+  for (double x : values) {
+    HamsasSpec spec = base;
+    spec.*param->field = x;
+    const HamsasModes hv = analyseHamsas(spec);  // buildHamsas refuses non-physical values
+    auto at = [&](double hz, int k) { return db(spatialTransmissibility(hv.model, hv.lin, 2 * M_PI * hz)(k, k)); };
+    HamsasVaryPoint p;
+    p.value = x;
+    p.ip_hz = hv.features.front().model_hz;
+    p.x_at_1hz_db = at(1, 0);
+    p.x_at_3hz_db = at(3, 0);
+    p.x_at_10hz_db = at(10, 0);
+    p.z_at_10hz_db = at(10, 2);
+    for (const auto& Ti : hamsasTransmissibility(hv, f)) p.x_db.push_back(db(Ti(0, 0)));
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 }  // namespace mmv

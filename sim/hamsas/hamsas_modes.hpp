@@ -54,4 +54,19 @@ std::vector<Eigen::MatrixXcd> hamsasTransmissibility(const HamsasModes& h, const
 /// The 8 x 8 actuator (force, N) to sensor (relative displacement, m) model, full order.
 StateSpace hamsasControlModel(const HamsasModes& h);
 
+/// One value of a varied parameter: the IP frequency and the transmissibility's
+/// x and z magnitudes at 1, 3 and 10 Hz (dB), and |T_xx| over `freqs_hz` (dB).
+struct HamsasVaryPoint {
+  double value = 0;
+  double ip_hz = 0;
+  double x_at_1hz_db = 0, x_at_3hz_db = 0, x_at_10hz_db = 0, z_at_10hz_db = 0;
+  std::vector<double> x_db;
+};
+
+/// The isolator with parameter `key` (a HamsasParameter key) set to each value.
+/// Throws std::invalid_argument for an unknown key (the message lists the known ones)
+/// or a non-physical value.
+std::vector<HamsasVaryPoint> varyHamsas(const HamsasSpec& spec, const std::string& key, const std::vector<double>& values,
+                                        const std::vector<double>& freqs_hz);
+
 }  // namespace mmv

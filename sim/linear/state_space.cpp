@@ -96,4 +96,26 @@ Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double c) {
   return lambda;
 }
 
+std::pair<double, double> refinedPeak(const SecondOrderResponse& h, Eigen::Index o, Eigen::Index i, const std::vector<double>& f) {
+  auto mag = [&](double hz) { return std::abs(h.response(2 * M_PI * hz)(o, i)); };
+  std::size_t best = 0;
+  std::vector<double> m(f.size());
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    m[k] = mag(f[k]);
+    if (m[k] > m[best]) best = k;
+  }
+  // Refine the grid's maximum between its neighbours (golden section on |H|), so a
+  // coarse grid does not misplace a lightly damped peak.
+  double lo = f[best > 0 ? best - 1 : 0], hi = f[std::min(best + 1, f.size() - 1)];
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  for (int it = 0; it < 60 && hi - lo > 1e-9 * hi; ++it) {
+    const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+    (mag(a) > mag(b) ? hi : lo) = mag(a) > mag(b) ? b : a;
+  }
+  double fpeak = 0.5 * (lo + hi);
+  double peak_mag = mag(fpeak);
+  if (m[best] > peak_mag) fpeak = f[best], peak_mag = m[best];
+  return {fpeak, peak_mag};
+}
+
 }  // namespace mmv

@@ -1,0 +1,159 @@
+#include "sim/io/linear_report.hpp"
+
+#include <cmath>
+#include <ctime>
+#include <map>
+#include <sstream>
+
+#include "sim/core/text.hpp"
+#include "sim/io/report.hpp"
+#include "sim/io/uff.hpp"
+
+namespace mmv {
+
+std::string safeFileName(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '_';
+  return s;
+}
+
+std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err, const std::vector<double>& f) {
+  std::ostringstream os;
+  const StateSpace& s = lm.full;
+  os << "Linear model about the equilibrium: " << s.numStates() << " states, " << s.B.cols() << " inputs, " << s.C.rows()
+     << " outputs\n";
+  os << "Reduced model: " << red.kept_modes << " modes (" << red.model.numStates() << " states), "
+     << (red.residualized ? "statically residualized (every DC gain exact)" : "truncated") << "; kept modes (Hz):";
+  for (double x : red.kept_frequencies_hz) os << strf(" %.3g", x);
+  os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n\n", f.front(),
+             f.back(), 100 * err.max_relative);
+  Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%"});
+  for (Eigen::Index o = 0; o < s.C.rows(); ++o)
+    for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
+      const auto [fpeak, peak_mag] = refinedPeak(lm.second_order, o, i, f);
+      const double peak = 20 * std::log10(peak_mag + 1e-300);
+      const double at10 = 20 * std::log10(std::abs(lm.second_order.response(2 * M_PI * 10.0)(o, i)) + 1e-300);
+      t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], strf("%.4g", fpeak),
+             strf("%.2f", peak), strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i))});
+    }
+  os << t.text();
+  return os.str();
+}
+
+/// The UFF file for a linear model: nodes at the equilibrium's named points, a trace
+/// line per link, the first mode shapes, and every FRF (or transmissibility) pair.
+std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
+                   const std::vector<Eigen::MatrixXcd>& h) {
+  const Model& model = *lm.solved.model;
+  uff::File file;
+  file.model_name = scene.name;
+  file.description = "mmvlab frf: " + scene.source;
+  {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    char d[16], t[16];
+    std::strftime(d, sizeof d, "%d-%b-%y", &tm);
+    std::strftime(t, sizeof t, "%H:%M:%S", &tm);
+    file.date = d;
+    for (char& c : file.date) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    file.time = t;
+  }
+  std::map<std::string, int> label;
+  SimTK::State st = lm.solved.equilibrium.state;
+  model.getSystem().realize(st, SimTK::Stage::Position);
+  for (const auto& p : model.getPoints()) {
+    const SimTK::Vec3 x = model.findPointLocation(st, p);
+    const int id = static_cast<int>(file.nodes.size()) + 1;
+    label[p.name] = id;
+    file.nodes.push_back({id, {x[0], x[1], x[2]}});
+  }
+  int trace = 1;
+  for (const auto& l : scene.article.links) {
+    uff::TraceLine t{trace++, l.name, {}};
+    t.nodes.push_back(label[l.name + ".root"]);
+    for (int k = 1; !l.rigid && k <= l.segments; ++k) t.nodes.push_back(label[l.name + ".h" + std::to_string(k)]);
+    t.nodes.push_back(label[l.name + ".tip"]);
+    file.trace_lines.push_back(t);
+  }
+  const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
+  const ModalSolution& modes = lm.solved.modes;
+  for (int k = 0; k < std::min<int>(12, static_cast<int>(modes.omega2.size())); ++k) {
+    uff::ModeShape m;
+    m.mode = k + 1;
+    m.frequency_hz = modes.frequencyHz(k);
+    m.modal_mass = 1.0;
+    const Eigen::VectorXd u = P * modes.shapes.col(k);
+    for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
+      m.nodes.push_back(static_cast<int>(p) + 1);
+      m.translations.push_back({u[2 * p], u[2 * p + 1], 0.0});
+    }
+    file.modes.push_back(m);
+  }
+  const StateSpace& s = lm.full;
+  const int spec_out[] = {8, 11, 12}, spec_in[] = {12, 0, 13};  // displacement, velocity, acceleration; force
+  for (Eigen::Index o = 0; o < s.C.rows(); ++o)
+    for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
+      const OutputSpec& out = lm.outputs[o];
+      const InputSpec& in = lm.inputs[i];
+      uff::Function fn;
+      const bool transmissibility = in.kind == InputKind::BaseAcceleration && out.kind == OutputKind::Acceleration && out.absolute;
+      fn.function_type = transmissibility ? 5 : 4;
+      fn.id1 = s.output_names[o] + " / " + s.input_names[i];
+      fn.id2 = scene.name;
+      fn.response_node = label[out.point];
+      fn.response_direction = out.axis + 1;
+      fn.reference_node = in.kind == InputKind::PointForce ? label[in.target] : in.kind == InputKind::JointTorque ? label[in.target] : 0;
+      fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis + 1;
+      fn.ordinate_type = spec_out[static_cast<int>(out.kind)];
+      fn.ordinate_length_exp = 1;
+      fn.ordinate_label = s.output_names[o];
+      fn.ordinate_units = s.output_units[o];
+      fn.denominator_type = spec_in[static_cast<int>(in.kind)];
+      fn.denominator_length_exp = in.kind == InputKind::BaseAcceleration ? 1 : in.kind == InputKind::JointTorque ? 1 : 0;
+      fn.denominator_force_exp = in.kind == InputKind::BaseAcceleration ? 0 : 1;
+      fn.denominator_label = s.input_names[i];
+      fn.denominator_units = s.input_units[i];
+      for (std::size_t k = 0; k < f.size(); ++k) {
+        fn.frequency_hz.push_back(f[k]);
+        fn.values.push_back(h[k](o, i));
+      }
+      file.functions.push_back(fn);
+    }
+  return uff::write(file);
+}
+
+std::string frfCsv(const StateSpace& s, Eigen::Index o, Eigen::Index i, const std::vector<double>& f,
+                   const std::vector<Eigen::MatrixXcd>& full, const std::vector<Eigen::MatrixXcd>& reduced) {
+  std::ostringstream csv;
+  csv << "frequency_hz,magnitude_db,phase_deg,magnitude_" << safeFileName(s.output_units[o]) << "_per_"
+      << safeFileName(s.input_units[i]) << ",rom_magnitude_db,rom_phase_deg\n";
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    const std::complex<double> a = full[k](o, i), b = reduced[k](o, i);
+    const double fa = 20 * std::log10(std::abs(a) + 1e-300), fb = 20 * std::log10(std::abs(b) + 1e-300);
+    csv << strf("%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", f[k], fa, std::arg(a) * 180 / M_PI, std::abs(a), fb,
+                std::arg(b) * 180 / M_PI);
+  }
+  return csv.str();
+}
+
+nlohmann::ordered_json romJson(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
+                               const std::vector<double>& f) {
+  nlohmann::ordered_json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "rom";
+  j["full_states"] = lm.full.numStates();
+  j["reduced_states"] = red.model.numStates();
+  j["kept_modes"] = red.kept_modes;
+  j["kept_frequencies_hz"] = red.kept_frequencies_hz;
+  j["residualized"] = red.residualized;
+  j["band_hz"] = {f.front(), f.back()};
+  j["max_relative_frf_error"] = err.max_relative;
+  j["inputs"] = lm.full.input_names;
+  j["input_units"] = lm.full.input_units;
+  j["outputs"] = lm.full.output_names;
+  j["output_units"] = lm.full.output_units;
+  return j;
+}
+
+}  // namespace mmv

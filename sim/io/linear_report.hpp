@@ -1,0 +1,29 @@
+#pragma once
+/// Writers for the article's linear models (sim/linear/): the summary table of every
+/// input-output pair, the FRF CSV per pair, the UFF file (nodes, trace lines, modes,
+/// FRFs), and rom.json (docs/outputs.md).
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "sim/linear/state_space.hpp"
+
+namespace mmv {
+
+/// `s` with every character other than letters, digits, '.', '_' and '-' replaced by '_'.
+std::string safeFileName(std::string s);
+std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
+                              const std::vector<double>& f);
+/// The UFF file: nodes at the equilibrium's named points, a trace line per link, the
+/// first 12 mode shapes, and every FRF (or transmissibility) pair of `h` at f (Hz).
+std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
+                   const std::vector<Eigen::MatrixXcd>& h);
+/// frf_<output>__<input>.csv: magnitude (dB and in units), phase, and the reduced model's.
+std::string frfCsv(const StateSpace& s, Eigen::Index o, Eigen::Index i, const std::vector<double>& f,
+                   const std::vector<Eigen::MatrixXcd>& full, const std::vector<Eigen::MatrixXcd>& reduced);
+nlohmann::ordered_json romJson(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
+                               const std::vector<double>& f);
+
+}  // namespace mmv

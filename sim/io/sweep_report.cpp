@@ -1,0 +1,118 @@
+#include "sim/io/sweep_report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "sim/core/text.hpp"
+#include "sim/io/report.hpp"
+
+namespace mmv {
+
+std::string sweepCsv(const SweepResult& r) {
+  std::ostringstream os;
+  for (const auto& ax : r.axes) os << ax.joint << "_deg,";
+  os << "track,sorted_mode,frequency_hz,mac_to_previous,synthesized_frequency_hz,synthesis_relative_error,"
+        "synthesis_mac,verdict,strain_link\n";
+  for (const auto& p : r.points) {
+    if (!p.solved) {  // one row saying why there is nothing
+      for (double a : p.angles_deg) os << strf("%g,", a);
+      os << ",,,,,,,\"no equilibrium: " << p.failure << "\",\n";
+    }
+    for (std::size_t k = 0; k < p.tracks.size(); ++k) {
+      const TrackPoint& t = p.tracks[k];
+      for (double a : p.angles_deg) os << strf("%g,", a);
+      os << k + 1 << ',' << t.sorted_mode << ',' << (t.stable ? strf("%.8g", t.frequency_hz) : "") << ','
+         << strf("%.6f,%.8g,%.6g,%.6f", t.mac_to_previous, t.synth_hz, t.synth_error, t.synth_mac) << ',' << t.verdict
+         << ',' << t.strain_link << '\n';
+    }
+  }
+  return os.str();
+}
+
+std::string sweepText(const SweepResult& r) {
+  std::ostringstream os;
+  os << "Configuration map: system modes tracked by shape (MAC); in parentheses the synthesis error\n"
+     << "of " << r.synthesis_method << " (%; * = not 'predicted': MAC < 0.9 or |err| > 1 %)\n\n";
+  std::vector<std::string> head;
+  for (const auto& ax : r.axes) head.push_back(ax.joint + "_deg");
+  std::size_t tracks = 0;
+  for (const auto& p : r.points) tracks = std::max(tracks, p.tracks.size());
+  for (std::size_t k = 0; k < tracks; ++k) head.push_back(strf("track%zu_Hz (err_%%)", k + 1));
+  Table t(head);
+  for (const auto& p : r.points) {
+    std::vector<std::string> row;
+    for (double a : p.angles_deg) row.push_back(strf("%g", a));
+    if (!p.solved) row.push_back("no equilibrium (see below)");
+    for (const auto& tp : p.tracks)
+      row.push_back(tp.stable ? strf("%.4f (%+.2f)%s", tp.frequency_hz, 100 * tp.synth_error, tp.verdict == "predicted" ? " " : "*")
+                              : std::string("UNSTABLE"));
+    t.add(row);
+  }
+  os << t.text();
+  // Where does each track stop being predicted?
+  os << "\nPer track: worst synthesis error, and the grid points where the synthesis does not predict it\n";
+  Table s({"track", "strain link at start", "max |err|_%", "points not predicted", "points unstable"});
+  for (std::size_t k = 0; k < tracks; ++k) {
+    double worst = 0;
+    int bad = 0, solved = 0, unstable = 0;
+    std::string start;
+    for (const auto& p : r.points) {
+      if (k >= p.tracks.size()) continue;
+      if (start.empty()) start = p.tracks[k].strain_link;
+      if (!p.tracks[k].stable) {  // an error in a growth rate is not a frequency error
+        ++unstable;
+        continue;
+      }
+      ++solved;
+      worst = std::max(worst, std::abs(p.tracks[k].synth_error));
+      bad += p.tracks[k].verdict != "predicted";
+    }
+    s.add({strf("%zu", k + 1), start, strf("%.2f", 100 * worst), strf("%d of %d", bad, solved), strf("%d", unstable)});
+  }
+  os << s.text();
+  if (r.failed_points > 0) {
+    os << strf("\n%d grid point%s without a result:\n", r.failed_points, r.failed_points > 1 ? "s" : "");
+    for (const auto& p : r.points) {
+      if (p.solved) continue;
+      os << " ";
+      for (std::size_t a = 0; a < p.angles_deg.size(); ++a) os << ' ' << r.axes[a].joint << ' ' << strf("%g", p.angles_deg[a]) << " deg";
+      os << ": " << p.failure << '\n';
+    }
+  }
+  os << strf("\nTracking: worst MAC between consecutive points %.3f%s\n", r.min_tracking_mac,
+             r.min_tracking_mac < 0.8 ? " (low: refine the grid step to follow the shapes)" : "");
+  return os.str();
+}
+
+nlohmann::ordered_json sweepJson(const SweepResult& r) {
+  nlohmann::ordered_json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "sweep-config";
+  auto axes = nlohmann::ordered_json::array();
+  for (const auto& ax : r.axes)
+    axes.push_back({{"joint", ax.joint}, {"from_deg", ax.from_deg}, {"to_deg", ax.to_deg}, {"step_deg", ax.step_deg}});
+  j["axes"] = axes;
+  j["synthesis_method"] = r.synthesis_method;
+  j["min_tracking_mac"] = r.min_tracking_mac;
+  j["failed_points"] = r.failed_points;
+  auto pts = nlohmann::ordered_json::array();
+  for (const auto& p : r.points) {
+    auto tr = nlohmann::ordered_json::array();
+    for (const auto& t : p.tracks)
+      tr.push_back({{"sorted_mode", t.sorted_mode},
+                    {"frequency_hz", t.stable ? nlohmann::ordered_json(t.frequency_hz) : nlohmann::ordered_json(nullptr)},
+                    {"mac_to_previous", t.mac_to_previous},
+                    {"synthesized_frequency_hz", t.synth_hz},
+                    {"synthesis_relative_error", t.synth_error},
+                    {"synthesis_mac", t.synth_mac},
+                    {"verdict", t.verdict},
+                    {"strain_link", t.strain_link}});
+    nlohmann::ordered_json pj = {{"angles_deg", p.angles_deg}, {"solved", p.solved}, {"tracks", tr}};
+    if (!p.solved) pj["failure"] = p.failure;
+    pts.push_back(pj);
+  }
+  j["points"] = pts;
+  return j;
+}
+
+}  // namespace mmv
