@@ -119,7 +119,7 @@ struct LoadSpec {
 /// motion is prescribed (held at rest in statics and modes).
 enum class BaseType { Fixed, Floating, Table };
 
-/// One axis of the gimbal (AGS, DATASHEET section 2): an angle it holds, or a slew.
+/// One axis of the gimbal (AGS, docs/sources.md section 2): an angle it holds, or a slew.
 struct GimbalAxisSpec {
   double angle = 0;             ///< rad, commanded (the start of a slew).
   std::optional<SlewSpec> slew;

@@ -1,5 +1,5 @@
 #pragma once
-/// The LIGO HAM-SAS seismic isolator (DATASHEET section 3) as a spatial rigid-body
+/// The LIGO HAM-SAS seismic isolator (docs/sources.md section 3) as a spatial rigid-body
 /// network (article/spatial_spec.hpp): 11 bodies -- the base (prescribed ground
 /// motion), 4 inverted-pendulum (IP) legs with counterweights, 4 little pendulums (LP),
 /// the spring box (SB) and the optical table (OT) with its payload.

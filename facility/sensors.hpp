@@ -1,6 +1,6 @@
 #pragma once
 /// Sensor models of the Ground Test Facility (report, "Measurement and
-/// Instrumentation Specifications"; DATASHEET section 2). A sensor turns the true
+/// Instrumentation Specifications"; docs/sources.md section 2). A sensor turns the true
 /// value of what it measures, sampled at a fixed rate, into what the data system
 /// records:
 ///

@@ -1,4 +1,5 @@
 // mmvlab frf and mmvlab rom: linear models for control design (sim/linear/state_space.hpp).
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <map>
@@ -51,11 +52,33 @@ OutputSpec parseOutput(const std::string& text) {
   return o;
 }
 
+/// Checks the named points and joints against the scene before any model is built.
+void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, const std::vector<OutputSpec>& out) {
+  const std::vector<std::string> points = articlePointNames(scene.article);
+  auto known = [&](const std::string& p) { return std::find(points.begin(), points.end(), p) != points.end(); };
+  const std::string how = " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>)";
+  for (const auto& i : in) {
+    if (i.kind == InputKind::PointForce && !known(i.target))
+      throw UsageError("--input " + i.name + ": unknown point '" + i.target + "'" + how);
+    if (i.kind != InputKind::JointTorque) continue;
+    const JointSpec* j = scene.article.findJoint(i.target);
+    std::string joints;
+    for (const auto& x : scene.article.joints) joints += (joints.empty() ? "" : ", ") + x.name;
+    if (!j) throw UsageError("--input " + i.name + ": unknown joint '" + i.target + "' (known: " + joints + ")");
+    if (j->hold == JointHold::Locked)
+      throw UsageError("--input " + i.name + ": joint '" + i.target +
+                       "' is locked (hold: locked), so a torque there moves nothing; use a free or servo joint");
+  }
+  for (const auto& o : out)
+    if (!known(o.point)) throw UsageError("--output " + o.name + ": unknown point '" + o.point + "'" + how);
+}
+
 LinearModel build(const LinearArgs& args, const ArticleScene& scene) {
   std::vector<InputSpec> in;
   std::vector<OutputSpec> out;
   for (const auto& t : args.inputs) in.push_back(parseInput(t));
   for (const auto& t : args.outputs) out.push_back(parseOutput(t));
+  checkNames(scene, in, out);
   if (in.empty()) in = defaultInputs();
   if (out.empty()) out = defaultOutputs(scene);
   DampingSpec d;

@@ -22,7 +22,7 @@ struct SpatialMode {
   std::map<std::string, double> strain_share;
 };
 
-/// One measured feature (DATASHEET section 3) and the model mode that shows it.
+/// One measured feature (docs/sources.md section 3) and the model mode that shows it.
 struct FeatureMatch {
   std::string feature;
   double measured_hz = 0;
@@ -45,7 +45,7 @@ struct HamsasModes {
 /// Linearizes and solves; identifies the measured features. Throws NumericalError.
 HamsasModes analyseHamsas(const HamsasSpec& spec);
 
-/// The measured features (DATASHEET section 3), Hz.
+/// The measured features (docs/sources.md section 3), Hz.
 const std::vector<std::pair<std::string, double>>& hamsasMeasuredFeatures();
 
 /// Ground-to-optical-table transmissibility over a frequency grid (Hz): [f][6 x 6].

@@ -116,7 +116,7 @@ struct ReducedModel {
   std::vector<double> kept_frequencies_hz;
 };
 
-/// Modal reduction of a first-order model (the slides' method): right and left
+/// Modal reduction of a first-order model (the HAM-SAS authors' method, docs/sources.md section 3): right and left
 /// eigenvectors of (A, E), complex pairs split into real and imaginary parts, kept
 /// modes projected (Petrov-Galerkin), giving descriptor form; with `residualize` the
 /// discarded modes' static response H_full(0) - H_kept(0) is added to D, so every DC
@@ -132,7 +132,7 @@ struct ModelError {
 };
 ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std::vector<double>& omegas);
 
-/// The slides' cross-check: eigenvalues of an implicit integrator's Jacobian
+/// The HAM-SAS authors' cross-check (docs/sources.md section 3): eigenvalues of an implicit integrator's Jacobian
 /// J(c) = E - c A (F = E y' - A y, dCoef = c) from the pencil J(-c) v = Lambda J(c) v,
 /// mapped back by lambda = (1/c) (Lambda - 1) / (Lambda + 1). Throws NumericalError if
 /// J(c) is singular.

@@ -94,11 +94,7 @@ class Builder {
   /// along its slew, the slew limited to +-range.
   static void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, double range) {
     if (spec) {
-      const facility::SlewLimits limits{range, spec->max_rate, spec->max_acceleration};
-      const facility::Slew slew = facility::makeSlew(
-          spec->trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, angle, spec->to,
-          spec->start_time, limits);
-      prescribeSlew(pin, slew, spec->start_time);
+      prescribeSlew(pin, makeSlew(*spec, angle, range), spec->start_time);
     } else {
       SimTK::Motion::Steady(pin, 0.0);
     }
@@ -324,7 +320,7 @@ std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
   auto model = std::make_unique<Model>(SimTK::Vec3(g[0], g[1], g[2]));
   Builder(scene, *model).build();
   addLoadsAndClosures(scene.article, *model);
-  model->setOnlyGravityAndPinSprings();  // the builder adds nothing else
+  model->setClosedFormForces();  // the builder adds nothing else
   model->finalize();
   return model;
 }

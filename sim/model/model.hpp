@@ -119,7 +119,7 @@ class Model {
   /// Declares that the only forces are uniform gravity, point loads and the
   /// coordinates' linear springs, so the closed-form stiffness of sim/statics/linearize.hpp
   /// applies. Builders that add other forces must not call this.
-  void setOnlyGravityAndPinSprings() { only_gravity_and_pin_springs_ = true; }
+  void setClosedFormForces() { closed_form_forces_ = true; }
   /// Realizes topology and builds the reference state. Call once, last.
   void finalize();
   /// Time runs of closed trees: makes every closure a Simbody constraint (a
@@ -157,7 +157,7 @@ class Model {
   double getMovingMass() const { return moving_mass_; }
   const NamedPoint* findPoint(const std::string& name) const;
   int findBody(SimTK::MobilizedBodyIndex mobod) const;  ///< index into getBodies(), -1 if none.
-  bool hasOnlyGravityAndPinSprings() const { return only_gravity_and_pin_springs_; }
+  bool hasClosedFormForces() const { return closed_form_forces_; }
   /// Coordinates whose motion moves body b (index into getBodies()): its own
   /// mobilizer's coordinate, if any, and those of all its ancestors.
   const std::vector<int>& getAncestorCoordinates(int b) const { return body_ancestors_[b]; }
@@ -204,7 +204,7 @@ class Model {
   double total_mass_ = 0, moving_mass_ = 0;
   std::vector<std::vector<int>> body_ancestors_;
   std::vector<int> coord_body_;
-  bool only_gravity_and_pin_springs_ = false;
+  bool closed_form_forces_ = false;
   bool finalized_ = false;
 };
 

@@ -1,6 +1,5 @@
 #include "sim/model/motions.hpp"
 
-#include <limits>
 
 namespace mmv {
 namespace {
@@ -40,18 +39,6 @@ class TableProgramMotion : public SimTK::Motion::Custom::Implementation {
 };
 
 }  // namespace
-
-std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m) {
-  switch (m.type) {
-    case TableMotion::Type::Sine:  // a dwell lasts as long as the run: no end of its own
-      return facility::sineDwell(m.amplitude, m.frequency_hz, std::numeric_limits<double>::max(), m.ramp);
-    case TableMotion::Type::Sweep: return facility::sineSweep(m.amplitude, m.from_hz, m.to_hz, m.duration, m.logarithmic);
-    case TableMotion::Type::Random:
-      return facility::bandLimitedRandom(m.rms, m.from_hz, m.to_hz, m.duration, m.seed);
-    case TableMotion::Type::Profile: return facility::csvProfile(m.profile_csv, m.profile_source);
-  }
-  return nullptr;
-}
 
 void prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program) {
   SimTK::Motion::Custom(mobod, new TableProgramMotion(std::move(program)));

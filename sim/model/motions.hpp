@@ -10,12 +10,9 @@
 
 #include "facility/slews.hpp"
 #include "facility/table_programs.hpp"
-#include "sim/scene/scene.hpp"
+#include "sim/scene/programs.hpp"
 
 namespace mmv {
-
-/// The facility program for a table motion spec.
-std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m);
 
 /// Prescribes a one-coordinate mobilizer's position by a program.
 void prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program);

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "sim/core/integrators.hpp"
+#include "sim/scene/programs.hpp"
 #include "sim/scene/reader_util.hpp"
 
 namespace mmv::scene_detail {
@@ -90,10 +91,27 @@ class SceneParser {
     if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
     if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"));
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
+    if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration);
     return scene;
   }
 
  private:
+  /// The slew the facility would make from `from` (rad) within +-range: refused here,
+  /// at its key, rather than when the model is built.
+  void checkSlew(const YAML::Node& n, const std::string& path, const SlewSpec& slew, double from, double range) {
+    try {
+      (void)makeSlew(slew, from, range);
+    } catch (const std::invalid_argument& e) {
+      r_.fail(n.Mark(), path + ": " + e.what());
+    }
+  }
+
+  /// The table program must stay within the table's stroke over the scene's run.
+  void checkStroke(const TableMotion& motion, double duration) {
+    const facility::ProgramCheck check = facility::checkProgram(*makeTableProgram(motion), {}, duration);
+    if (!check.within_stroke) r_.fail(motion_mark_, "base.motion: " + check.messages.front());
+  }
+
   void readMaterials(const YAML::Node& n, ArticleSpec& a) {
     auto m = r_.mapping(n, "materials", namesOf(n, "materials"));
     for (const auto& [name, node] : m) {
@@ -148,6 +166,7 @@ class SceneParser {
       if (am.count("slew")) {
         axis->slew = readSlew(r_, am.at("slew"), path + ".slew");
         within(am.at("slew")["to_deg"], axis->slew->to, path + ".slew.to_deg");
+        checkSlew(am.at("slew"), path + ".slew", *axis->slew, axis->angle, axis->range);
       }
     }
     if (m.count("ring_mass")) g.ring_mass = r_.positive(m.at("ring_mass"), "base.gimbal.ring_mass", " kg");
@@ -165,7 +184,10 @@ class SceneParser {
     for (const char* k : {"table_mass", "motion"})
       if (m.count(k) && b.type != BaseType::Table) r_.fail(m.at(k).Mark(), std::string("base.") + k + " applies only with type: table");
     if (m.count("table_mass")) b.table_mass = r_.positive(m.at("table_mass"), "base.table_mass", " kg");
-    if (m.count("motion")) b.motion = readTableMotion(r_, m.at("motion"), "base.motion", {});
+    if (m.count("motion")) {
+      b.motion = readTableMotion(r_, m.at("motion"), "base.motion", {});
+      motion_mark_ = m.at("motion").Mark();
+    }
     if (m.count("position")) {
       b.position = r_.vec3(m.at("position"), "base.position");
       if (b.position[2] != 0.0)
@@ -219,6 +241,7 @@ class SceneParser {
         if (j.hold != JointHold::Locked)
           r_.fail(sn.Mark(), path + ".slew: only a locked joint (its torquer holding the angle) follows a slew");
         j.slew = readSlew(r_, sn, path + ".slew");
+        checkSlew(sn, path + ".slew", *j.slew, j.angle, M_PI);
       }
       if (m.count("torque")) {
         const YAML::Node& tn = m.at("torque");
@@ -378,6 +401,7 @@ class SceneParser {
   const YamlReader& r_;
   std::set<std::string> names_;
   std::map<std::string, Located> joint_marks_, joint_parent_marks_, link_marks_;
+  YAML::Mark motion_mark_;
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "sim/scene/programs.hpp"
 #include "sim/scene/reader_util.hpp"
 
 namespace mmv::scene_detail {
@@ -63,6 +64,13 @@ TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std
     tm.profile_source = file.string();
   } else {
     r.fail(tn.Mark(), path + ".type: unknown program '" + t + "' (known: sine, sweep, random, csv)");
+  }
+  // The facility builds the program now, so a program it refuses (a CSV profile it
+  // cannot read) is an error at this key, not when a model is built.
+  try {
+    (void)makeTableProgram(tm);
+  } catch (const std::invalid_argument& e) {
+    r.fail(mn.Mark(), path + ": " + e.what());
   }
   return tm;
 }

@@ -7,7 +7,7 @@
 namespace mmv {
 
 Eigen::MatrixXd calcStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
-  return model.hasOnlyGravityAndPinSprings() ? calcStiffnessClosedForm(model, s, dofs)
+  return model.hasClosedFormForces() ? calcStiffnessClosedForm(model, s, dofs)
                                              : calcStiffnessByDifferences(model, s, dofs);
 }
 
@@ -72,7 +72,7 @@ Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& 
 
 Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
                                         const std::vector<PointForce>& extra) {
-  if (!model.hasOnlyGravityAndPinSprings())
+  if (!model.hasClosedFormForces())
     throw std::logic_error("calcStiffnessClosedForm: the model has forces other than gravity, loads and springs");
   SimTK::State work = s;
   model.getSystem().realize(work, SimTK::Stage::Position);

@@ -9,7 +9,7 @@
 /// at the deflected state (positive when gravity stabilises, e.g. a hanging link).
 /// K has two independent evaluations:
 ///  - closed form, for models whose only forces are gravity, dead point loads and
-///    springs (Model::hasOnlyGravityAndPinSprings): a constant world force F at a
+///    springs (Model::hasClosedFormForces): a constant world force F at a
 ///    point p has the stiffness  K_jk = F . (p - o_k)  for rotations j, k that both move
 ///    p with j inboard of or equal to k (o_k: k's axis), and 0 for translations. Summed
 ///    over gravity (F = m g at each mass centre) and loads, per coordinate k:
@@ -45,7 +45,7 @@ Eigen::MatrixXd calcStiffness(const Model& model, const SimTK::State& s, const s
 /// Central differences of the applied forces, for any model.
 Eigen::MatrixXd calcStiffnessByDifferences(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
 /// Closed form for gravity + loads + springs (+ `extra` point forces); requires
-/// Model::hasOnlyGravityAndPinSprings().
+/// Model::hasClosedFormForces().
 Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
                                         const std::vector<PointForce>& extra = {});
 /// The stiffness -d(J^T F)/dq of point forces alone (no springs, no gravity), over `dofs`.

@@ -32,7 +32,8 @@ using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system,
 enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeDirk = 3, Ida = 4 };
 
 /// Loads the SUNDIALS plugin and creates a stepper: CVODE BDF (dense Newton) or Adams
-/// (fixed point), ARKODE explicit RK or implicit SDIRK (dense Newton). Throws
+/// (fixed point), ARKODE explicit RK or implicit SDIRK (dense Newton), or IDA (a DAE that
+/// holds closed trees' closures). Throws
 /// UnavailableError if the plugin cannot be loaded (the message says where it was looked for).
 /// `atol` <= 0: the relative tolerance (on the state's unit scale: rad, m, rad/s, m/s).
 std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,

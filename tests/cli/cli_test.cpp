@@ -411,10 +411,17 @@ TEST_F(Cli, RomWritesMatAndJson) {
 }
 
 TEST_F(Cli, LinearModelBadSpecs) {
-  EXPECT_EQ(run("frf --input torque:joint2").code, 65);  // joint2 is locked: no DOF for a torque
+  // Command-line names are checked against the scene before any model is built (64).
+  const Result locked = run("frf --input torque:joint2");  // joint2 is locked: no DOF for a torque
+  EXPECT_EQ(locked.code, 64);
+  EXPECT_NE(locked.err.find("joint 'joint2' is locked"), std::string::npos) << locked.err;
+  EXPECT_EQ(run("frf --input torque:joint9").code, 64);
+  EXPECT_EQ(run("frf --input force:link9.tip:x").code, 64);
   EXPECT_EQ(run("frf --input shaker").code, 64);
   EXPECT_EQ(run("frf --output link1.tip:z").code, 64);
-  EXPECT_EQ(run("frf --output link9.tip:x").code, 65);
+  const Result unknown = run("frf --output link9.tip:x");
+  EXPECT_EQ(unknown.code, 64);
+  EXPECT_NE(unknown.err.find("--output link9.tip:x: unknown point 'link9.tip'"), std::string::npos) << unknown.err;
   EXPECT_EQ(run("frf --from 10 --to 1").code, 64);
   EXPECT_EQ(run("frf --band 5:1").code, 64);
 }

@@ -15,7 +15,7 @@ SineDwellResult runSineDwell(const ArticleScene& scene, const SineDwellOptions& 
   // Closures are imposed by our statics and linearization, not by the Simbody system
   // the integrator advances: a closed tree would silently run open.
   if (!scene.article.closures.empty())
-    throw SceneError(scene.source + ": time runs of closed trees (closures) are not supported yet");
+    throw SceneError(scene.source + ": the sine-dwell test helper runs open trees only");
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
   const NamedPoint* p = model->findPoint(o.point);

@@ -1,5 +1,5 @@
 #pragma once
-/// Time-domain runs of the nonlinear Simbody model. For now: a sine dwell of the base
+/// Test support: a sine dwell of the base
 /// excitation table (scene `base: {type: table, motion: {type: sine, ...}}`) from the
 /// static equilibrium, integrated by Simbody's CPodes (BDF, for the stiff hinge
 /// dampers) to a steady state, and the complex amplitude of a point's absolute motion
@@ -29,8 +29,9 @@ struct SineDwellResult {
   double cpu_seconds = 0;
 };
 
-/// Throws SceneError if the scene has no table motion or has closures (closed trees
-/// are not integrated yet), NumericalError if the
+/// Test support (simulate() is the product's time run, closed trees included): open
+/// trees only. Throws SceneError if the scene has no table motion or has closures,
+/// NumericalError if the
 /// equilibrium or the integration fails (or the state becomes non-finite).
 SineDwellResult runSineDwell(const ArticleScene& scene, const SineDwellOptions& options);
 

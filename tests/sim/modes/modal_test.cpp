@@ -15,7 +15,7 @@ namespace mmv {
 namespace {
 
 // Double pendulum, equal point masses m and lengths l: omega^2 = (2 -+ sqrt 2) g / l
-// (DATASHEET section 4). The rods weigh 1e-9 of the masses: 1e-6 relative tolerance.
+// (docs/sources.md section 4). The rods weigh 1e-9 of the masses: 1e-6 relative tolerance.
 TEST(Modal, DoublePendulumClosedForm) {
   const double l = 0.5, m = 2.0, g = 9.81;
   const ArticleScene s = testing::chainScene(2, 2 * l, 1e-9, g, m, m);

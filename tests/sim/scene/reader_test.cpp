@@ -142,7 +142,18 @@ INSTANTIATE_TEST_SUITE_P(
                 "gravity: [0, -9.81, 0]\nbase:\n  gimbal:\n    tilt: {angle_deg: 5}",
                 "s.yaml:5:5: unknown key 'base.gimbal.tilt' (allowed: yaw, pitch, roll, ring_mass, ring_inertia)"},
         BadCase{"out of plane gravity", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 1]",
-                "s.yaml:2:21: gravity[2] must be 0 m/s^2: the article moves in the x-y plane (got 1)"}),
+                "s.yaml:2:21: gravity[2] must be 0 m/s^2: the article moves in the x-y plane (got 1)"},
+        // Programs and slews are built by the facility models while the scene is read,
+        // so what they refuse is reported at its key, before any model is built.
+        BadCase{"table stroke", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  type: table\n  motion: {type: sine, amplitude: 0.2, frequency_hz: 1}",
+                "s.yaml:5:11: base.motion: sine dwell 0.2 m at 1 Hz: peak displacement 0.2 m exceeds the table's +-0.15 m stroke"},
+        BadCase{"unreadable profile", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase:\n  type: table\n  motion: {type: csv, file: /dev/null}",
+                "s.yaml:5:11: base.motion: /dev/null:0: empty profile (expected the header time_s,x_m)"},
+        BadCase{"joint slew beyond a half turn", "    angle_deg: 30",
+                "    angle_deg: 30\n    slew: {to_deg: 200}",
+                "s.yaml:11:11: joints[0].slew: slew: angle 200.000000 deg is outside the joint's +-180.000000 deg"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.what;
       for (char& ch : name)
@@ -160,7 +171,7 @@ TEST(SceneYaml, GimbalOnlyWhenNamed) {
   const GimbalSpec& g = *s.article.base.gimbal;
   EXPECT_NEAR(g.roll.angle, -M_PI / 2, 1e-15);
   EXPECT_EQ(g.roll.torque_capacity, 60.0);
-  EXPECT_EQ(g.yaw.torque_capacity, 200.0);  // DATASHEET section 2 defaults
+  EXPECT_EQ(g.yaw.torque_capacity, 200.0);  // docs/sources.md section 2 defaults
   ASSERT_TRUE(g.pitch.slew);
   EXPECT_NEAR(g.pitch.slew->to, M_PI / 4, 1e-15);
   EXPECT_EQ(g.ring_mass, 4.0);

@@ -31,7 +31,7 @@ ArticleScene simplySupported(const Beam& b, int segments, double n_axial) {
   return s;
 }
 
-// DATASHEET section 4 and the slides' validation example: a simply supported beam under
+// docs/sources.md section 4 and the slides' validation example: a simply supported beam under
 // axial compression N has f1(N) = f1(0) sqrt(1 - N/N_cr), N_cr = pi^2 E I / L^2, and
 // f1(0) = (pi^2 / (2 pi L^2)) sqrt(E I / (rho A)). Measured at 64 segments: 0.000 %,
 // 0.004 %, 0.015 %, 0.09 % at N/N_cr = 0, 0.3, 0.6, 0.9 (and 1 % at 0.99, where the

@@ -1,0 +1,25 @@
+#include "sim/scene/programs.hpp"
+
+#include <limits>
+
+namespace mmv {
+
+std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m) {
+  switch (m.type) {
+    case TableMotion::Type::Sine:  // a dwell lasts as long as the run: no end of its own
+      return facility::sineDwell(m.amplitude, m.frequency_hz, std::numeric_limits<double>::max(), m.ramp);
+    case TableMotion::Type::Sweep: return facility::sineSweep(m.amplitude, m.from_hz, m.to_hz, m.duration, m.logarithmic);
+    case TableMotion::Type::Random:
+      return facility::bandLimitedRandom(m.rms, m.from_hz, m.to_hz, m.duration, m.seed);
+    case TableMotion::Type::Profile: return facility::csvProfile(m.profile_csv, m.profile_source);
+  }
+  return nullptr;
+}
+
+facility::Slew makeSlew(const SlewSpec& spec, double from, double range) {
+  const facility::SlewLimits limits{range, spec.max_rate, spec.max_acceleration};
+  return facility::makeSlew(spec.trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, from,
+                            spec.to, spec.start_time, limits);
+}
+
+}  // namespace mmv

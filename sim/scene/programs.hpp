@@ -1,0 +1,21 @@
+#pragma once
+/// The facility programs (plain data, facility/) a scene's motion specs stand for:
+/// table and ground motion, commanded joint torques, torquer slews. Built when the
+/// scene is read, so a program the facility refuses is an error at its key.
+
+#include <memory>
+
+#include "facility/slews.hpp"
+#include "facility/table_programs.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+/// The program for a motion spec. Throws std::invalid_argument (a bad CSV profile).
+std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m);
+
+/// The slew of a joint from `from` (rad) as `spec` commands, within +-range (rad).
+/// Throws std::invalid_argument when an end lies outside the range.
+facility::Slew makeSlew(const SlewSpec& spec, double from, double range);
+
+}  // namespace mmv
