@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Regenerates the committed figure data in docs/figures with the commands the docs
+# give, into a temporary directory, and compares every CSV, Markdown and UFF file with
+# the committed one (UFF dates masked). Exit 0 when all match, 1 with a diff otherwise.
+# ctest runs it (about 3 s); by hand: tests/golden/check_figures.sh build/mmvlab
+# The trade studies (docs/figures/trade-slew, hamsas-trade) record wall times and take
+# minutes, so they are not regenerated here.
+set -euo pipefail
+bin=$(realpath "${1:-build/mmvlab}")
+cd "$(dirname "$0")/../.."
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+run() { local name=$1; shift; "$bin" "$@" --out "$tmp/$name" >/dev/null 2>&1; }
+run compare-default compare
+run frf-table frf scenes/mmv-table.yaml --input table_x --output link3a.tip:x --rom-modes 10
+run hamsas frf scenes/hamsas.yaml --vary counterweight_mass=0,2,3.37,5,7
+run sweep-joint1 sweep-config --grid joint1:-90:90:15 --modes 6
+run sweep-closed-joint2 sweep-config scenes/mmv-closed.yaml --grid joint2:-45:45:15 --modes 6
+status=0
+for dir in compare-default frf-table hamsas sweep-joint1 sweep-closed-joint2; do
+  for f in docs/figures/$dir/*; do
+    case "$f" in *.png) continue ;; esac
+    new="$tmp/$dir/$(basename "$f")"
+    if [[ ! -f "$new" ]]; then echo "missing: $f"; status=1; continue; fi
+    if ! diff -q <(sed -E 's/[0-9]{2}-[A-Z]{3}-[0-9]{2} [0-9:]{8}/<date>/' "$f") \
+                 <(sed -E 's/[0-9]{2}-[A-Z]{3}-[0-9]{2} [0-9:]{8}/<date>/' "$new") >/dev/null; then
+      echo "differs: $f"; status=1
+    fi
+  done
+done
+[[ $status -eq 0 ]] && echo "docs/figures: every CSV, Markdown and UFF file reproduced byte for byte"
+exit $status
