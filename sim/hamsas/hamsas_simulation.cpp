@@ -192,12 +192,9 @@ SimulationResult simulate(const HamsasScene& scene, const std::function<void(dou
 }
 
 TradeProblem hamsasTradeProblem(const HamsasScene& base, double duration) {
-  TradeProblem p;
+  TradeProblem p = tradeProblemBase(base.name, base.simulation, duration);
   HamsasScene scene = base;
-  if (duration > 0) scene.simulation.duration = duration;
-  p.scene_name = scene.name;
-  p.duration = scene.simulation.duration;
-  p.simulation = scene.simulation;
+  scene.simulation = p.simulation;
   const SpatialSpec model = buildHamsas(scene.isolator);
   for (int b : {1, 2}) p.scorable.push_back(model.bodies[b].name);  // the bodies simulate() scores
   p.scorable_kind = "scored body";

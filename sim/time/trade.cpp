@@ -30,13 +30,19 @@ double distance(const SimulationRecord& a, const SimulationRecord& b, const std:
 
 }  // namespace
 
-TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
+TradeProblem tradeProblemBase(const std::string& scene_name, SimulationSpec simulation, double duration) {
   TradeProblem p;
+  if (duration > 0) simulation.duration = duration;
+  p.scene_name = scene_name;
+  p.duration = simulation.duration;
+  p.simulation = simulation;
+  return p;
+}
+
+TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
+  TradeProblem p = tradeProblemBase(base.name, base.simulation, duration);
   ArticleScene scene = base;
-  if (duration > 0) scene.simulation.duration = duration;
-  p.scene_name = scene.name;
-  p.duration = scene.simulation.duration;
-  p.simulation = scene.simulation;
+  scene.simulation = p.simulation;
   for (const auto& name : articlePointNames(scene.article))
     if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tip") == 0) p.scorable.push_back(name);
   p.scorable_kind = "link tip";

@@ -67,6 +67,10 @@ struct TradeProblem {
   std::function<SimulationResult(const SimulationSpec& spec, int segments)> run;
 };
 
+/// A problem's common part: the scene's name and simulation settings, with `duration`
+/// > 0 overriding the scene's (s). The caller adds what it scores and how it runs.
+TradeProblem tradeProblemBase(const std::string& scene_name, SimulationSpec simulation, double duration);
+
 /// The article's trade problem; `duration` > 0 overrides the scene's.
 TradeProblem articleTradeProblem(const ArticleScene& scene, double duration = 0);
 
