@@ -87,6 +87,7 @@ json modesToJson(const ModesReport& r) {
   j["checks"] = {{"eigen_residual", r.eigen_residual},
                  {"orthogonality_error", r.orthogonality_error},
                  {"stiffness_asymmetry", r.stiffness_asymmetry}};
+  if (!r.warnings.empty()) j["warnings"] = r.warnings;
   j["time_s"] = {{"build", r.seconds_build},
                  {"equilibrium", r.seconds_equilibrium},
                  {"linearize", r.seconds_linearize},

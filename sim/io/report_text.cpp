@@ -76,6 +76,7 @@ std::string formatModesText(const ModesReport& r) {
     os << "  (" << r.modes.size() << " of " << r.model.num_dofs << " modes shown; --modes 0 shows all)\n";
   os << strf("\nChecks: eigen residual %.1e, M-orthogonality error %.1e, stiffness asymmetry %.1e\n", r.eigen_residual,
             r.orthogonality_error, r.stiffness_asymmetry);
+  for (const auto& w : r.warnings) os << "warning: " << w << '\n';
   os << strf("Time: build %.1f ms, equilibrium %.1f ms, linearize %.1f ms, eigen %.1f ms\n", 1e3 * r.seconds_build,
             1e3 * r.seconds_equilibrium, 1e3 * r.seconds_linearize, 1e3 * r.seconds_eigen);
   return os.str();

@@ -148,7 +148,8 @@ SynthesisResult synthesize(const ArticleScene& scene, const SynthesisOptions& o)
   const Model& model = *full.model;
   const std::vector<int>& dofs = full.linearized.dofs;
   const Eigen::MatrixXd T = synthesisBasis(scene, model, dofs, o);
-  const ModalSolution synth = ritzModes(full.linearized.M, full.linearized.K, T, full.linearized.G);
+  ModalSolution synth = ritzModes(full.linearized.M, full.linearized.K, T, full.linearized.G);
+  markRigidBodyModes(synth, full.linearized, scene);  // T keeps the joint coordinates: the same mechanisms
   r.method = methodDescription(o);
   r.full_dofs = static_cast<int>(full.modes.omega2.size());
   r.reduced_dofs = static_cast<int>(synth.omega2.size());

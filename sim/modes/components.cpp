@@ -6,6 +6,7 @@
 #include "article/beam_theory.hpp"
 #include "sim/statics/linearize.hpp"
 #include "sim/modes/modal.hpp"
+#include "sim/modes/system_modes.hpp"
 #include "sim/statics/statics.hpp"
 
 namespace mmv {
@@ -146,7 +147,8 @@ ComponentResult calcComponentModes(const ArticleScene& scene, const std::string&
   const EquilibriumResult eq = solveEquilibrium(*model);
   if (!eq.converged) throw NumericalError("component " + link + ": " + eq.failure);
   const LinearizedModel lin = linearize(*model, eq.state, eq.closure_multipliers);
-  const ModalSolution sol = solveModes(lin.M, lin.K, lin.Z);
+  ModalSolution sol = solveModes(lin.M, lin.K, lin.Z);
+  markRigidBodyModes(sol, lin, cs);
 
   // Hinge rows of the DOF vector, in hinge order.
   std::vector<int> hinge_rows;

@@ -5,12 +5,15 @@
 ///
 /// solved as a symmetric-definite generalized eigenproblem (Eigen's
 /// GeneralizedSelfAdjointEigenSolver: Cholesky of M, then a symmetric QR iteration).
-/// Shapes are mass-normalised, phi^T M phi = 1. A mode with |omega^2| <= 1e-12 of the
-/// largest |omega^2| is a rigid-body (mechanism) mode: zero frequency up to round-off,
-/// e.g. a free joint with no gravity. A negative omega^2 beyond that means the
+/// Shapes are mass-normalised, phi^T M phi = 1. A negative omega^2 means the
 /// equilibrium is unstable in that shape (e.g. an upright link past buckling); it is
 /// reported as unstable, never as a NaN frequency.
-
+///
+/// Rigid-body (mechanism) modes come from the model's structure, never from a ratio to
+/// the stiffest mode (which grows as N^4 with the mesh and would swallow real modes on
+/// fine meshes): markRigidBodyModes counts the motions that strain no spring and on
+/// which the remaining (geometric) stiffness vanishes, and flags that many modes with
+/// the smallest |omega^2|. Without it no mode is rigid.
 #include <Eigen/Dense>
 #include <cmath>
 #include <vector>
@@ -25,12 +28,14 @@ struct ModalSolution {
   double max_residual = 0;         ///< max_i ||K v_i - w_i^2 M v_i|| / (||K v_i|| + |w_i^2| ||M v_i||).
   double orthogonality_error = 0;  ///< ||V^T M V - I||_max.
 
-  double rigid_body_threshold = 0;  ///< rad^2/s^2, 1e-12 * max |omega^2|.
+  std::vector<double> residuals;   ///< per mode, as max_residual.
+  std::vector<char> rigid;         ///< per mode: a rigid-body mode (markRigidBodyModes).
 
   /// Frequency in Hz of mode i: 0 for a rigid-body mode, or a negative number
   /// -sqrt(-omega2)/(2 pi) flagged by isStable(i) == false for an unstable shape.
   double frequencyHz(int i) const;
-  bool isRigidBody(int i) const { return std::abs(omega2[i]) <= rigid_body_threshold; }
+  bool isRigidBody(int i) const { return i < static_cast<int>(rigid.size()) && rigid[i]; }
+  int rigidBodyCount() const;
   bool isStable(int i) const { return omega2[i] >= 0 || isRigidBody(i); }
 };
 
@@ -42,5 +47,17 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
 /// (Z^T K Z) psi = omega^2 (Z^T M Z) psi, phi = Z psi. Residuals and orthogonality are
 /// those of the reduced problem; shapes stay mass-normalised (phi^T M phi = 1).
 ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z);
+
+/// The admissible motions q = Z eta that leave every coordinate with `strained[i]`
+/// unchanged (columns over q, orthonormal): the candidates for rigid-body modes.
+Eigen::MatrixXd unstrainedMotions(const Eigen::MatrixXd& Z, const std::vector<bool>& strained);
+
+/// Flags the rigid-body modes of `sol` (shapes over q): r = the number of independent
+/// motions in span(U) (U from unstrainedMotions) on which K vanishes, measured by the
+/// eigenvalues of (U^T K U, U^T M U) against 1e-8 of `omega2_scale` (rad^2/s^2, a
+/// mesh-independent scale of the geometric stiffness such as |g| / L) or of the largest
+/// such eigenvalue; then the r modes with the smallest |omega^2| are rigid.
+void markRigidBodyModes(ModalSolution& sol, const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& U,
+                        double omega2_scale);
 
 }  // namespace mmv

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <map>
+#include <sstream>
 
 #include "sim/model/article_builder.hpp"
 #include "sim/statics/closures.hpp"
@@ -62,8 +64,19 @@ SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_o
   s.seconds_linearize = secondsSince(t0);
   t0 = Clock::now();
   s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z);
+  markRigidBodyModes(s.modes, s.linearized, scene);
   s.seconds_eigen = secondsSince(t0);
   return s;
+}
+
+void markRigidBodyModes(ModalSolution& sol, const LinearizedModel& lin, const ArticleScene& scene) {
+  std::vector<bool> strained(lin.dofs.size());
+  for (std::size_t i = 0; i < lin.dofs.size(); ++i) strained[i] = lin.K_elastic(i, i) != 0.0;
+  double length = 0;
+  for (const auto& l : scene.article.links) length += l.length;
+  const double g = std::hypot(std::hypot(scene.gravity[0], scene.gravity[1]), scene.gravity[2]);
+  const double scale = length > 0 ? g / length : 0.0;
+  mmv::markRigidBodyModes(sol, lin.M, lin.K, unstrainedMotions(lin.Z, strained), scale);
 }
 
 Eigen::MatrixXd pointTranslationMatrix(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
@@ -238,6 +251,24 @@ void describeShape(const Model& model, const ModeKinematics& k, const Eigen::Vec
   m.modal_mass_kg = peak > 0 ? 1.0 / (peak * peak) : 0.0;
 }
 
+/// The eigen checks over the `count` modes reported, and a warning when a residual is
+/// too large to trust the printed digits.
+void checkReportedModes(const SolvedScene& s, int count, ModesReport& rep) {
+  const ModalSolution& m = s.modes;
+  for (int i = 0; i < count; ++i) rep.eigen_residual = std::max(rep.eigen_residual, m.residuals[i]);
+  const Eigen::MatrixXd V = m.shapes.leftCols(count);
+  rep.orthogonality_error =
+      count ? (V.transpose() * s.linearized.M * V - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff() : 0.0;
+  constexpr double kTrusted = 1e-6;
+  if (rep.eigen_residual > kTrusted) {
+    std::ostringstream os;
+    os << "eigen residual " << std::setprecision(2) << rep.eigen_residual << " of a reported mode exceeds " << kTrusted
+       << ": the dense eigen solution has lost accuracy at " << m.omega2.size()
+       << " DOF; trust fewer digits, or use fewer segments (mmvlab converge shows what they cost)";
+    rep.warnings.push_back(os.str());
+  }
+}
+
 }  // namespace
 
 ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
@@ -263,11 +294,10 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.closures = closureReports(model, eqs, s.equilibrium);
   rep.points = pointReports(model, eqs, s.equilibrium);
   const ModeKinematics kin = modeKinematics(model, eqs, dofs);
-  rep.eigen_residual = s.modes.max_residual;
-  rep.orthogonality_error = s.modes.orthogonality_error;
   rep.stiffness_asymmetry = s.linearized.asymmetry;
   const int n = static_cast<int>(s.modes.omega2.size());
   const int count = options.max_modes > 0 ? std::min(options.max_modes, n) : n;
+  checkReportedModes(s, count, rep);
   for (int i = 0; i < count; ++i) {
     const Eigen::VectorXd phi = s.modes.shapes.col(i);
     ModeInfo m;

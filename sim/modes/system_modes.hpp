@@ -93,7 +93,11 @@ struct ModesReport {
   std::vector<ClosureReport> closures;
   std::vector<PointReport> points;
   std::vector<ModeInfo> modes;
+  /// Over the modes reported: max relative residual ||K v - w^2 M v|| / (||K v|| + w^2 ||M v||)
+  /// and max |V^T M V - I|.
   double eigen_residual = 0, orthogonality_error = 0, stiffness_asymmetry = 0;
+  /// Checks that failed (an eigen residual above 1e-6 of a reported mode), for the user.
+  std::vector<std::string> warnings;
   double seconds_build = 0, seconds_equilibrium = 0, seconds_linearize = 0, seconds_eigen = 0;
 };
 
@@ -117,6 +121,12 @@ struct SolvedScene {
 };
 /// Throws NumericalError if the equilibrium fails or the eigenproblem is ill-posed.
 SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq = {});
+
+/// Flags the rigid-body modes of `sol` (shapes over lin.dofs) from the model's
+/// structure: the admissible motions that bend no hinge and stretch no servo spring
+/// (free joints) on which gravity, loads and closure forces exert no stiffness
+/// (modal.hpp, markRigidBodyModes, with the scale |g| / L of the scene's pendulums).
+void markRigidBodyModes(ModalSolution& sol, const LinearizedModel& lin, const ArticleScene& scene);
 
 /// Translations (x, y) of every named point per unit DOF motion at state s: rows
 /// 2p, 2p+1 for point p, columns over `dofs`. P * phi is a shape as a test sees it.

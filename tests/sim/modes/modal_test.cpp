@@ -146,6 +146,69 @@ TEST(Modal, MechanismHasARigidBodyMode) {
   }
 }
 
+// Rigid-body modes come from the structure, not from a ratio to the stiffest mode
+// (which grows as N^4 and swallowed real modes on fine meshes): a chain of free pins
+// without gravity has exactly one rigid-body mode per free pin; with gravity, none
+// (every pin is a pendulum); a floating (free-free) link has exactly its three planar
+// mobilities; a clamped article has none.
+TEST(Modal, RigidBodyModesAreTheFreeMobilities) {
+  for (int n : {1, 3, 5}) {
+    const ModesReport free = runModes(testing::chainScene(n, 1.0, 1.0, 0.0));
+    int rigid = 0;
+    for (const auto& m : free.modes) rigid += m.rigid_body;
+    EXPECT_EQ(rigid, n) << n << " free pins, no gravity";
+    const ModesReport hanging = runModes(testing::chainScene(n, 1.0, 1.0, 9.81));
+    for (const auto& m : hanging.modes) {
+      EXPECT_FALSE(m.rigid_body) << n << " pins under gravity: mode " << m.number;
+      EXPECT_GT(m.frequency_hz, 0.1);
+    }
+  }
+  ArticleScene floating = testing::cantileverScene(testing::Beam{}, 8, 0.0);
+  floating.article.base.type = BaseType::Floating;
+  const ModesReport f = runModes(floating);
+  int rigid = 0;
+  for (const auto& m : f.modes) rigid += m.rigid_body;
+  EXPECT_EQ(rigid, 3);
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(f.modes[i].rigid_body) << i;
+  EXPECT_GT(f.modes[3].frequency_hz, 1.0);
+}
+
+// The same on fine meshes, where the old 1e-12 * max omega^2 cutoff reported real modes
+// as rigid (the two-link demo's 0.6457 Hz mode at 192 segments, the default article's
+// 1.336 Hz mode at 512): every mode stays flexible and matches the extrapolation of
+// coarse meshes (converge's Richardson value from 32/64 segments; its own estimated
+// error is below 0.02 %, so 0.05 % separates a right answer from a wrong one). The
+// dense solver's absolute error, about eps * max omega^2, would be 5e-4 of the 0.6457 Hz
+// mode at 512 segments; the refined low modes must not show it.
+TEST(Modal, FineMeshesKeepEveryFlexibleMode) {
+  struct Case {
+    std::string scene;
+    std::vector<int> segments;
+  };
+  const std::string dir = std::string(MMVLAB_SOURCE_DIR) + "/scenes/";
+  for (const Case& c : {Case{"two-link-demo.yaml", {192, 512}}, Case{"mmv.yaml", {192}}}) {
+    ArticleScene base = loadArticleSceneFile(dir + c.scene);
+    auto firstModes = [&](int n) {
+      ArticleScene s = base;
+      overrideSegments(s, n);
+      ModesOptions o;
+      o.max_modes = 4;
+      o.with_shapes = false;
+      return runModes(s, o);
+    };
+    const ModesReport r32 = firstModes(32), r64 = firstModes(64);
+    for (int n : c.segments) {
+      const ModesReport fine = firstModes(n);
+      EXPECT_TRUE(fine.warnings.empty()) << c.scene << " " << n << ": " << fine.warnings.front();
+      for (int i = 0; i < 4; ++i) {
+        const double richardson = r64.modes[i].frequency_hz + (r64.modes[i].frequency_hz - r32.modes[i].frequency_hz) / 3;
+        EXPECT_FALSE(fine.modes[i].rigid_body) << c.scene << " " << n << " segments, mode " << i + 1;
+        EXPECT_NEAR(fine.modes[i].frequency_hz, richardson, 5e-4 * richardson) << c.scene << " " << n << ", mode " << i + 1;
+      }
+    }
+  }
+}
+
 // Near buckling: an upright cantilever under its own weight w buckles at Greenhill's
 // length L_cr = (7.8373 E I / w)^(1/3) (Timoshenko & Gere, Theory of Elastic
 // Stability, 2.9). The chain's critical length, found by bisection, is 0.067 %, 0.017 %
