@@ -34,7 +34,7 @@ namespace {
 double measured(const std::string& feature) {
   for (const auto& [name, hz] : hamsasMeasuredFeatures())
     if (name == feature) return hz;
-  throw std::logic_error("no measured feature " + feature);
+  throw InternalError("no measured feature " + feature);
 }
 
 /// Kinetic energy shares per group and direction, strain shares per element group,

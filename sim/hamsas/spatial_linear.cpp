@@ -187,7 +187,7 @@ void finishMatrices(const SpatialSpec& s, const Assembly& a, const Eigen::Matrix
 
 SpatialLinearization linearizeSpatial(const SpatialSpec& s, bool ideal_joints) {
   const int nb = static_cast<int>(s.bodies.size());
-  if (nb < 2) throw std::invalid_argument("spatial model: needs the base and at least one body");
+  MMV_DEMAND(nb >= 2);  // the base and at least one body
   const int N = 6 * nb, n = N - 6;
   SpatialLinearization lin;
   lin.ideal_joints = ideal_joints;

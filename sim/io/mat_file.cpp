@@ -1,5 +1,6 @@
 #include "sim/io/mat_file.hpp"
 
+#include "sim/core/errors.hpp"
 #include <matio.h>
 
 #include <memory>
@@ -23,8 +24,8 @@ using MatFile = std::unique_ptr<mat_t, MatCloser>;
 using MatVar = std::unique_ptr<matvar_t, VarFreer>;
 
 void write(mat_t* mat, MatVar var, const std::string& what) {
-  if (!var) throw std::runtime_error("cannot create .mat variable " + what);
-  if (Mat_VarWrite(mat, var.get(), MAT_COMPRESSION_NONE) != 0) throw std::runtime_error("cannot write .mat variable " + what);
+  if (!var) throw OutputError("cannot create .mat variable " + what);
+  if (Mat_VarWrite(mat, var.get(), MAT_COMPRESSION_NONE) != 0) throw OutputError("cannot write .mat variable " + what);
 }
 
 void writeMatrix(mat_t* mat, const char* name, const Eigen::MatrixXd& m) {
@@ -37,12 +38,12 @@ void writeMatrix(mat_t* mat, const char* name, const Eigen::MatrixXd& m) {
 void writeStrings(mat_t* mat, const char* name, const std::vector<std::string>& items) {
   size_t dims[2] = {items.size(), 1};
   MatVar cell(Mat_VarCreate(name, MAT_C_CELL, MAT_T_CELL, 2, dims, nullptr, 0));
-  if (!cell) throw std::runtime_error(std::string("cannot create .mat cell ") + name);
+  if (!cell) throw OutputError(std::string("cannot create .mat cell ") + name);
   for (std::size_t i = 0; i < items.size(); ++i) {
     size_t sdims[2] = {1, items[i].size()};
     // MAT_F_DONT_COPY_DATA is not used: matio copies the characters, the cell owns them.
     matvar_t* s = Mat_VarCreate(nullptr, MAT_C_CHAR, MAT_T_UINT8, 2, sdims, const_cast<char*>(items[i].data()), 0);
-    if (!s) throw std::runtime_error(std::string("cannot create .mat string in ") + name);
+    if (!s) throw OutputError(std::string("cannot create .mat string in ") + name);
     Mat_VarSetCell(cell.get(), static_cast<int>(i), s);
   }
   write(mat, std::move(cell), name);
@@ -52,7 +53,7 @@ void writeStrings(mat_t* mat, const char* name, const std::vector<std::string>& 
 
 void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
   MatFile mat(Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5));
-  if (!mat) throw std::runtime_error(path + ": cannot create .mat file");
+  if (!mat) throw OutputError(path + ": cannot create .mat file");
   const StateSpace s = d.standardForm();
   writeMatrix(mat.get(), "A", s.A);
   writeMatrix(mat.get(), "B", s.B);

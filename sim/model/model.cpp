@@ -125,13 +125,13 @@ void Model::finalize() {
   for (std::size_t i = 0; i < coords_.size(); ++i) {
     const auto& mb = matter_.getMobilizedBody(coords_[i].mobod);
     if (mb.getNumQ(s) != mb.getNumU(s) || coords_[i].mobilizer_q >= mb.getNumQ(s))
-      throw std::logic_error("coordinate " + coords_[i].name + " does not match its mobilizer");
+      throw InternalError("coordinate " + coords_[i].name + " does not match its mobilizer");
     qindex_.push_back(SimTK::QIndex(mb.getFirstQIndex(s) + coords_[i].mobilizer_q));
     uindex_.push_back(SimTK::UIndex(mb.getFirstUIndex(s) + coords_[i].mobilizer_q));
     if (!coords_[i].held) dofs_.push_back(static_cast<int>(i));
   }
   if (static_cast<int>(coords_.size()) != s.getNQ() || s.getNQ() != s.getNU())
-    throw std::logic_error("model has mobilities that are not registered coordinates");
+    throw InternalError("model has mobilities that are not registered coordinates");
   for (std::size_t i = 0; i < coords_.size(); ++i) s.updQ()[qindex_[i]] = coords_[i].reference;
   system_.realize(s, SimTK::Stage::Position);
   reference_state_ = s;
@@ -157,7 +157,7 @@ void Model::finalize() {
     for (int c : coords_of_mobod[bodies_[b].mobod]) coord_body_[c] = static_cast<int>(b);
   }
   for (std::size_t i = 0; i < coords_.size(); ++i)
-    if (coord_body_[i] < 0) throw std::logic_error("coordinate " + coords_[i].name + " moves no registered body");
+    if (coord_body_[i] < 0) throw InternalError("coordinate " + coords_[i].name + " moves no registered body");
   for (const auto& b : bodies_) {
     const double m = matter_.getMobilizedBody(b.mobod).getBodyMass(s);
     total_mass_ += m;

@@ -12,7 +12,7 @@
 namespace mmv {
 
 Eigen::MatrixXd modalAssuranceCriterion(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
-  if (A.rows() != B.rows()) throw std::invalid_argument("modalAssuranceCriterion: shapes of different lengths");
+  MMV_DEMAND(A.rows() == B.rows());
   Eigen::MatrixXd mac(A.cols(), B.cols());
   for (Eigen::Index i = 0; i < A.cols(); ++i)
     for (Eigen::Index j = 0; j < B.cols(); ++j) {
@@ -25,7 +25,7 @@ Eigen::MatrixXd modalAssuranceCriterion(const Eigen::MatrixXd& A, const Eigen::M
 
 Eigen::MatrixXd craigBamptonBasis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& C, int k) {
   const Eigen::Index n = K.rows(), nb = C.rows();
-  if (M.rows() != n || C.cols() != n) throw std::invalid_argument("craigBamptonBasis: sizes of M, K and C differ");
+  MMV_DEMAND(M.rows() == n && C.cols() == n);
   // Constraint modes: min 1/2 u^T K u subject to C u = e_b, i.e. [K C^T; C 0][u; mu] = [0; e_b].
   Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + nb, n + nb);
   kkt.topLeftCorner(n, n) = K;

@@ -61,7 +61,7 @@ void refineLowestModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, Modal
 
 ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   const Eigen::Index n = M.rows();
-  if (M.cols() != n || K.rows() != n || K.cols() != n) throw std::invalid_argument("solveModes: M and K must be square and of one size");
+  MMV_DEMAND(M.cols() == n && K.rows() == n && K.cols() == n);
   if (!M.allFinite() || !K.allFinite()) throw NumericalError("mass or stiffness matrix has non-finite entries");
   ModalSolution sol;
   if (n == 0) return sol;
@@ -105,7 +105,7 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
 }
 
 ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z) {
-  if (Z.rows() != M.rows()) throw std::invalid_argument("solveModes: Z must have one row per coordinate");
+  MMV_DEMAND(Z.rows() == M.rows());
   const Eigen::MatrixXd Mz = Z.transpose() * M * Z, Kz = Z.transpose() * K * Z;
   ModalSolution sol = solveModes(0.5 * (Mz + Mz.transpose()), 0.5 * (Kz + Kz.transpose()));
   sol.shapes = Z * sol.shapes;

@@ -18,7 +18,7 @@ std::vector<double> GridAxis::values() const {
 }
 
 SweepResult runSweep(const ArticleScene& scene, const SweepOptions& o) {
-  if (o.axes.empty() || o.axes.size() > 2) throw std::invalid_argument("runSweep: one or two axes");
+  MMV_DEMAND(!o.axes.empty() && o.axes.size() <= 2);  // one or two axes (the CLI checks --grid)
   for (const auto& ax : o.axes)
     if (!scene.article.findJoint(ax.joint)) throw SceneError(scene.source + ": the grid names an unknown joint '" + ax.joint + "'");
   SweepResult r;

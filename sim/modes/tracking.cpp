@@ -1,5 +1,6 @@
 #include "sim/modes/tracking.hpp"
 
+#include "sim/core/errors.hpp"
 #include <algorithm>
 #include <stdexcept>
 #include <tuple>
@@ -9,7 +10,7 @@
 namespace mmv {
 
 ModeMatch matchModes(const Eigen::MatrixXd& previous, const Eigen::MatrixXd& current) {
-  if (current.cols() < previous.cols()) throw std::invalid_argument("matchModes: fewer current modes than tracked ones");
+  MMV_DEMAND(current.cols() >= previous.cols());  // at least as many current modes as tracked ones
   const Eigen::MatrixXd mac = modalAssuranceCriterion(previous, current);
   std::vector<std::tuple<double, int, int>> pairs;
   for (Eigen::Index i = 0; i < mac.rows(); ++i)

@@ -1,5 +1,6 @@
 #include "sim/statics/linearize.hpp"
 
+#include "sim/core/errors.hpp"
 #include "sim/statics/closures.hpp"
 
 #include <stdexcept>
@@ -73,7 +74,7 @@ Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& 
 Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
                                         const std::vector<PointForce>& extra) {
   if (!model.hasClosedFormForces())
-    throw std::logic_error("calcStiffnessClosedForm: the model has forces other than gravity, loads and springs");
+    throw InternalError("calcStiffnessClosedForm: the model has forces other than gravity, loads and springs");
   SimTK::State work = s;
   model.getSystem().realize(work, SimTK::Stage::Position);
   const auto& matter = model.getMatter();
@@ -138,7 +139,7 @@ LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
   Eigen::MatrixXd K_raw = calcStiffness(model, equilibrium, lin.dofs);
   const int m = model.getNumClosureRows();
   if (m > 0) {
-    if (closure_multipliers.size() != m) throw std::invalid_argument("linearize: one multiplier per closure row needed");
+    MMV_DEMAND(closure_multipliers.size() == m);  // one multiplier per closure row
     K_raw += calcPointForceStiffness(model, equilibrium, lin.dofs, closureForces(model, closure_multipliers));
     SimTK::State work = equilibrium;
     model.getSystem().realize(work, SimTK::Stage::Position);
