@@ -1,11 +1,13 @@
 #include "sim/cli/commands.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 
 #include "sim/io/output_dir.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/scene/stations.hpp"
 
 namespace mmv::cli {
 
@@ -25,6 +27,22 @@ ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command)
   if (auto* a = std::get_if<ArticleScene>(&scene)) return std::move(*a);
   throw UsageError(command + ": " + sceneSource(scene) +
                    " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");
+}
+
+std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
+                                       const std::string& option) {
+  const std::vector<std::string> points = articlePointNames(article);
+  for (const auto& n : names) {
+    std::string error;
+    if (isStationName(n)) {
+      if (!parseStation(n, article, error)) throw UsageError(option + ": " + error);
+    } else if (std::find(points.begin(), points.end(), n) == points.end()) {
+      throw UsageError(option + ": unknown point '" + n +
+                       "' (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
+                       "<link>@<m>m or <link>@<fraction>)");
+    }
+  }
+  return names;
 }
 
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {

@@ -36,6 +36,7 @@ struct SceneArgs {
 struct ModesArgs : SceneArgs {
   bool json = false;
   int modes = 12;  ///< modes to report; 0 = all.
+  std::vector<std::string> points;  ///< named points or stations whose shapes are tabulated.
 };
 
 struct ConvergeArgs : SceneArgs {
@@ -125,6 +126,10 @@ ReductionOptions reductionOptions(const LinearArgs& args);
 Scene loadScene(const SceneArgs& args);
 /// The same for a command that analyses articles only: UsageError for a HAM-SAS scene.
 ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command);
+/// `names` if each is a named point or a station of `article`, else UsageError naming
+/// `option` and the reason.
+std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
+                                       const std::string& option);
 /// --bc and --tip-mass into `o`; throws UsageError naming the known values.
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o);
 /// Runs `body`, turning the error classes into messages on stderr and exit codes.

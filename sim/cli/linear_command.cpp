@@ -13,6 +13,7 @@
 #include "sim/io/mat_file.hpp"
 #include "sim/io/linear_report.hpp"
 #include "sim/linear/state_space.hpp"
+#include "sim/scene/stations.hpp"
 #include "sim/core/text.hpp"
 
 namespace mmv::cli {
@@ -55,11 +56,17 @@ OutputSpec parseOutput(const std::string& text) {
 /// Checks the named points and joints against the scene before any model is built.
 void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, const std::vector<OutputSpec>& out) {
   const std::vector<std::string> points = articlePointNames(scene.article);
-  auto known = [&](const std::string& p) { return std::find(points.begin(), points.end(), p) != points.end(); };
-  const std::string how = " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>)";
+  const std::string how = " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
+                          "<link>@<m>m or <link>@<fraction>)";
+  // Empty when `p` is a point or a station of the scene, else why not.
+  auto problem = [&](const std::string& p) -> std::string {
+    std::string error;
+    if (isStationName(p)) return parseStation(p, scene.article, error) ? "" : error;
+    return std::find(points.begin(), points.end(), p) != points.end() ? "" : "unknown point '" + p + "'" + how;
+  };
   for (const auto& i : in) {
-    if (i.kind == InputKind::PointForce && !known(i.target))
-      throw UsageError("--input " + i.name + ": unknown point '" + i.target + "'" + how);
+    if (i.kind == InputKind::PointForce && !problem(i.target).empty())
+      throw UsageError("--input " + i.name + ": " + problem(i.target));
     if (i.kind != InputKind::JointTorque) continue;
     const JointSpec* j = scene.article.findJoint(i.target);
     std::string joints;
@@ -70,7 +77,7 @@ void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, con
                        "' is locked (hold: locked), so a torque there moves nothing; use a free or servo joint");
   }
   for (const auto& o : out)
-    if (!known(o.point)) throw UsageError("--output " + o.name + ": unknown point '" + o.point + "'" + how);
+    if (!problem(o.point).empty()) throw UsageError("--output " + o.name + ": " + problem(o.point));
 }
 
 LinearModel build(const LinearArgs& args, const ArticleScene& scene) {

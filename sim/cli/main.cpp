@@ -41,6 +41,9 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
   addSceneOptions(m, modes);
   m->add_flag("--json", modes.json, "Print JSON (docs/outputs.md) instead of tables");
   m->add_option("--modes", modes.modes, "Number of modes to report (0: all)")->capture_default_str()->check(CLI::NonNegativeNumber);
+  m->add_option("--points", modes.points,
+                "Comma-separated points or stations whose mode shapes are tabulated, e.g. link1@0.5,link3a@0.762m,link2.tip")
+      ->delimiter(',');
   return m;
 }
 

@@ -18,6 +18,7 @@ int runModesCommand(const ModesArgs& args) {
     ModesOptions opt;
     opt.max_modes = args.modes;
     opt.with_shapes = args.json;
+    opt.points = checkedPoints(args.points, scene.article, "--points");
     const ModesReport rep = runModes(scene, opt);
     const std::string out = args.json ? modesToJson(rep).dump(2) + "\n" : formatModesText(rep);
     std::cout << out << std::flush;

@@ -3,9 +3,12 @@
 #include <cmath>
 #include <ctime>
 #include <map>
+#include <optional>
 #include <sstream>
 
+#include "sim/core/errors.hpp"
 #include "sim/core/text.hpp"
+#include "sim/model/stations.hpp"
 #include "sim/io/report.hpp"
 #include "sim/io/uff.hpp"
 
@@ -40,56 +43,24 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
   return os.str();
 }
 
-/// The UFF file for a linear model: nodes at the equilibrium's named points, a trace
-/// line per link, the first mode shapes, and every FRF (or transmissibility) pair.
-std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
-                   const std::vector<Eigen::MatrixXcd>& h) {
-  const Model& model = *lm.solved.model;
-  uff::File file;
-  file.model_name = scene.name;
-  file.description = "mmvlab frf: " + scene.source;
-  {
-    const std::time_t now = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&now, &tm);
-    char d[16], t[16];
-    std::strftime(d, sizeof d, "%d-%b-%y", &tm);
-    std::strftime(t, sizeof t, "%H:%M:%S", &tm);
-    file.date = d;
-    for (char& c : file.date) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    file.time = t;
-  }
-  std::map<std::string, int> label;
-  SimTK::State st = lm.solved.equilibrium.state;
-  model.getSystem().realize(st, SimTK::Stage::Position);
-  for (const auto& p : model.getPoints()) {
-    const SimTK::Vec3 x = model.findPointLocation(st, p);
-    const int id = static_cast<int>(file.nodes.size()) + 1;
-    label[p.name] = id;
-    file.nodes.push_back({id, {x[0], x[1], x[2]}});
-  }
-  int trace = 1;
-  for (const auto& l : scene.article.links) {
-    uff::TraceLine t{trace++, l.name, {}};
-    t.nodes.push_back(label[l.name + ".root"]);
-    for (int k = 1; !l.rigid && k <= l.segments; ++k) t.nodes.push_back(label[l.name + ".h" + std::to_string(k)]);
-    t.nodes.push_back(label[l.name + ".tip"]);
-    file.trace_lines.push_back(t);
-  }
-  const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
-  const ModalSolution& modes = lm.solved.modes;
-  for (int k = 0; k < std::min<int>(12, static_cast<int>(modes.omega2.size())); ++k) {
-    uff::ModeShape m;
-    m.mode = k + 1;
-    m.frequency_hz = modes.frequencyHz(k);
-    m.modal_mass = 1.0;
-    const Eigen::VectorXd u = P * modes.shapes.col(k);
-    for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
-      m.nodes.push_back(static_cast<int>(p) + 1);
-      m.translations.push_back({u[2 * p], u[2 * p + 1], 0.0});
-    }
-    file.modes.push_back(m);
-  }
+namespace {
+
+/// The file's date and time fields: now (UTC), as DD-MMM-YY and HH:MM:SS.
+void stampNow(uff::File& file) {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char d[16], t[16];
+  std::strftime(d, sizeof d, "%d-%b-%y", &tm);
+  std::strftime(t, sizeof t, "%H:%M:%S", &tm);
+  file.date = d;
+  for (char& c : file.date) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  file.time = t;
+}
+
+/// One dataset 58 per output-input pair: FRF (type 4) or transmissibility (type 5).
+void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
+                  const std::vector<Eigen::MatrixXcd>& h, std::map<std::string, int>& label, uff::File& file) {
   const StateSpace& s = lm.full;
   const int spec_out[] = {8, 11, 12}, spec_in[] = {12, 0, 13};  // displacement, velocity, acceleration; force
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
@@ -120,6 +91,66 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
       }
       file.functions.push_back(fn);
     }
+}
+
+}  // namespace
+
+/// The UFF file for a linear model: nodes at the equilibrium's named points, a trace
+/// line per link, the first mode shapes, and every FRF (or transmissibility) pair.
+std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
+                   const std::vector<Eigen::MatrixXcd>& h) {
+  const Model& model = *lm.solved.model;
+  uff::File file;
+  file.model_name = scene.name;
+  file.description = "mmvlab frf: " + scene.source;
+  stampNow(file);
+  std::map<std::string, int> label;
+  SimTK::State st = lm.solved.equilibrium.state;
+  model.getSystem().realize(st, SimTK::Stage::Position);
+  for (const auto& p : model.getPoints()) {
+    const SimTK::Vec3 x = model.findPointLocation(st, p);
+    const int id = static_cast<int>(file.nodes.size()) + 1;
+    label[p.name] = id;
+    file.nodes.push_back({id, {x[0], x[1], x[2]}});
+  }
+  // Stations the functions refer to are nodes too, after the mesh's points.
+  std::vector<std::string> used;
+  for (const auto& out : lm.outputs) used.push_back(out.point);
+  for (const auto& in : lm.inputs)
+    if (in.kind == InputKind::PointForce) used.push_back(in.target);
+  for (const auto& name : used) {
+    std::string error;
+    if (label.count(name)) continue;
+    const std::optional<PointRef> p = PointRef::resolve(model, scene.article, name, error);
+    MMV_DEMAND(p.has_value());  // the linear model resolved it already
+    const SimTK::Vec3 x = p->position(st);
+    const int id = static_cast<int>(file.nodes.size()) + 1;
+    label[name] = id;
+    file.nodes.push_back({id, {x[0], x[1], x[2]}});
+  }
+  int trace = 1;
+  for (const auto& l : scene.article.links) {
+    uff::TraceLine t{trace++, l.name, {}};
+    t.nodes.push_back(label[l.name + ".root"]);
+    for (int k = 1; !l.rigid && k <= l.segments; ++k) t.nodes.push_back(label[l.name + ".h" + std::to_string(k)]);
+    t.nodes.push_back(label[l.name + ".tip"]);
+    file.trace_lines.push_back(t);
+  }
+  const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
+  const ModalSolution& modes = lm.solved.modes;
+  for (int k = 0; k < std::min<int>(12, static_cast<int>(modes.omega2.size())); ++k) {
+    uff::ModeShape m;
+    m.mode = k + 1;
+    m.frequency_hz = modes.frequencyHz(k);
+    m.modal_mass = 1.0;
+    const Eigen::VectorXd u = P * modes.shapes.col(k);
+    for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
+      m.nodes.push_back(static_cast<int>(p) + 1);
+      m.translations.push_back({u[2 * p], u[2 * p + 1], 0.0});
+    }
+    file.modes.push_back(m);
+  }
+  addFunctions(lm, scene, f, h, label, file);
   return uff::write(file);
 }
 

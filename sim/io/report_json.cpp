@@ -81,6 +81,11 @@ json modesToJson(const ModesReport& r) {
       shape.push_back(pj);
     }
     mj["shape"] = shape;
+    if (!m.at_points.empty()) {
+      json at = json::array();
+      for (const auto& p : m.at_points) at.push_back({{"point", p.point}, {"ux_m", p.ux}, {"uy_m", p.uy}});
+      mj["at_points"] = at;
+    }
     modes.push_back(mj);
   }
   j["modes"] = modes;

@@ -74,6 +74,13 @@ std::string formatModesText(const ModesReport& r) {
   }
   if (static_cast<int>(r.modes.size()) < r.model.num_dofs)
     os << "  (" << r.modes.size() << " of " << r.model.num_dofs << " modes shown; --modes 0 shows all)\n";
+  if (!r.modes.empty() && !r.modes.front().at_points.empty()) {
+    os << "\nMode shapes at the points asked for (translation per unit modal coordinate, mass-normalised shapes)\n";
+    Table t({"mode", "point", "ux_m", "uy_m"});
+    for (const auto& m : r.modes)
+      for (const auto& p : m.at_points) t.add({std::to_string(m.number), p.point, strf("%.6g", p.ux), strf("%.6g", p.uy)});
+    os << t.text();
+  }
   os << strf("\nChecks: eigen residual %.1e, M-orthogonality error %.1e, stiffness asymmetry %.1e\n", r.eigen_residual,
             r.orthogonality_error, r.stiffness_asymmetry);
   for (const auto& w : r.warnings) os << "warning: " << w << '\n';

@@ -1,9 +1,11 @@
 // Building the article's linear model (sim/linear/state_space.hpp): damping, base
 // coupling, inputs and outputs over the closure-admissible coordinates.
 #include <cmath>
+#include <optional>
 
 #include "sim/core/errors.hpp"
 #include "sim/linear/state_space.hpp"
+#include "sim/model/stations.hpp"
 
 namespace mmv {
 namespace {
@@ -46,13 +48,13 @@ Eigen::MatrixXd baseCoupling(const Model& model, const SimTK::State& st, const s
   return Mqb;
 }
 
-/// The Jacobian row of a named point's translation along world axis `axis`, over the DOFs.
+/// The Jacobian row of a named point's (or a station's) translation along world axis `axis`, over the DOFs.
 Eigen::RowVectorXd pointRow(const ArticleScene& scene, const Model& model, const SimTK::State& st,
                             const std::vector<int>& dofs, const std::string& point, int axis, const std::string& what) {
-  const NamedPoint* p = model.findPoint(point);
-  if (!p) throw SceneError(scene.source + ": " + what + ": unknown point '" + point + "'");
-  const Eigen::MatrixXd J = model.calcFrameJacobians(st, {p->mobod}, {p->station_B}, dofs);
-  return Eigen::RowVectorXd(J.row(3 + axis));
+  std::string error;
+  const std::optional<PointRef> p = PointRef::resolve(model, scene.article, point, error);
+  if (!p) throw SceneError(scene.source + ": " + what + ": " + error);
+  return Eigen::RowVectorXd(p->translationJacobian(st, dofs).row(axis));
 }
 
 /// The generalized force over the DOFs per unit of input `in`.

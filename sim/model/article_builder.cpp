@@ -169,6 +169,9 @@ class Builder {
     const int part = model_.addPart(l.name, Part::Kind::Link, l.name);
     const double gyr2 = sectionGyrationSquared(*a_.findSection(l.section));
     SimTK::MobilizedBodyIndex prev;
+    LinkAxis axis;
+    axis.link = l.name;
+    axis.length = l.length;
     for (std::size_t k = 0; k < d.pieces.size(); ++k) {
       const SimTK::Body::Rigid body = pieceBody(d.pieces[k], gyr2);
       SimTK::MobilizedBodyIndex ix;
@@ -183,11 +186,27 @@ class Builder {
         ix = addHinge(l, d, k, prev, body);
       }
       model_.addBody(ix, part, false);
-      if (k == 0) model_.addPoint({l.name + ".root", ix, SimTK::Vec3(0), true});
+      if (k == 0) {
+        axis.points.push_back(static_cast<int>(model_.getPoints().size()));
+        model_.addPoint({l.name + ".root", ix, SimTK::Vec3(0), true});
+        axis.x.push_back(0.0);
+        axis.left.push_back(ix);
+        axis.right.push_back(ix);
+      } else {
+        axis.points.push_back(static_cast<int>(model_.getPoints().size()) - 1);  // the hinge's point, just added
+        axis.x.push_back(d.hinge_x[k - 1]);
+        axis.left.push_back(prev);
+        axis.right.push_back(ix);
+      }
       prev = ix;
     }
     const SimTK::Transform X_tip(SimTK::Vec3(d.pieces.back().length, 0, 0));
+    axis.points.push_back(static_cast<int>(model_.getPoints().size()));
     model_.addPoint({l.name + ".tip", prev, X_tip.p(), true});
+    axis.x.push_back(l.length);
+    axis.left.push_back(prev);
+    axis.right.push_back(prev);
+    model_.addLinkAxis(axis);
     if (l.tip_mass) {
       const int tip_part = model_.addPart(l.name + ".tip_mass", Part::Kind::TipMass, l.name);
       SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(prev), X_tip, lumpedBody(*l.tip_mass), SimTK::Transform());

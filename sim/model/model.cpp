@@ -117,6 +117,12 @@ int Model::findBody(SimTK::MobilizedBodyIndex mobod) const {
 
 void Model::addPoint(const NamedPoint& p) { points_.push_back(p); }
 
+const LinkAxis* Model::findLinkAxis(const std::string& link) const {
+  for (const auto& a : link_axes_)
+    if (a.link == link) return &a;
+  return nullptr;
+}
+
 void Model::finalize() {
   MMV_DEMAND(!finalized_);
   system_.realizeTopology();

@@ -94,6 +94,19 @@ struct NamedPoint {
   bool report_rotation = false;  ///< rotation is meaningful here (roots, tips, joints).
 };
 
+/// The mesh points along one link, root to tip, and where they sit on the undeformed
+/// link: what a station (sim/model/stations.hpp) is interpolated from. Node k's point
+/// is getPoints()[points[k]]; the link lies along the +x axis of each piece's body
+/// frame; a hinge node joins the pieces of its neighbours (`left`, `right`; equal at
+/// the root and the tip).
+struct LinkAxis {
+  std::string link;
+  double length = 0;  ///< m.
+  std::vector<double> x;  ///< m from the root, increasing: 0, hinges, length.
+  std::vector<int> points;
+  std::vector<SimTK::MobilizedBodyIndex> left, right;
+};
+
 class Model {
  public:
   /// Creates an empty system with uniform gravity g_W (m/s^2, world frame).
@@ -113,6 +126,7 @@ class Model {
   /// Power the coordinates' commanded torques deliver, sum tau(t) u (W).
   double inputPower(const SimTK::State& s) const;
   void addPoint(const NamedPoint& p);
+  void addLinkAxis(const LinkAxis& axis) { link_axes_.push_back(axis); }
   /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.
   void addPointLoad(const PointLoad& load);
   void addClosure(const Closure& c);
@@ -139,6 +153,8 @@ class Model {
   const std::vector<Part>& getParts() const { return parts_; }
   const std::vector<BodyInfo>& getBodies() const { return bodies_; }
   const std::vector<NamedPoint>& getPoints() const { return points_; }
+  /// The axis of link `link`, or nullptr.
+  const LinkAxis* findLinkAxis(const std::string& link) const;
   const std::vector<PointLoad>& getPointLoads() const { return loads_; }
   const std::vector<Closure>& getClosures() const { return closures_; }
   /// Total number of closure constraint rows.
@@ -197,6 +213,7 @@ class Model {
   std::vector<Part> parts_;
   std::vector<BodyInfo> bodies_;
   std::vector<NamedPoint> points_;
+  std::vector<LinkAxis> link_axes_;
   std::vector<PointLoad> loads_;
   std::vector<Closure> closures_;
   std::vector<int> dofs_;

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "sim/model/article_builder.hpp"
+#include "sim/model/stations.hpp"
 #include "sim/statics/closures.hpp"
 
 namespace mmv {
@@ -294,6 +296,15 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.closures = closureReports(model, eqs, s.equilibrium);
   rep.points = pointReports(model, eqs, s.equilibrium);
   const ModeKinematics kin = modeKinematics(model, eqs, dofs);
+  std::vector<PointRef> at_points;
+  std::vector<Eigen::MatrixXd> point_rows;
+  for (const auto& name : options.points) {
+    std::string error;
+    std::optional<PointRef> p = PointRef::resolve(model, scene.article, name, error);
+    if (!p) throw SceneError(scene.source + ": " + error);
+    point_rows.push_back(p->translationJacobian(eqs, dofs));
+    at_points.push_back(*p);
+  }
   rep.stiffness_asymmetry = s.linearized.asymmetry;
   const int n = static_cast<int>(s.modes.omega2.size());
   const int count = options.max_modes > 0 ? std::min(options.max_modes, n) : n;
@@ -309,6 +320,10 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.linearized.K_geometric * phi) / m.omega2;
     describeEnergies(model, dofs, kin, phi, m);
     describeShape(model, kin, phi, options.with_shapes, m);
+    for (std::size_t p = 0; p < at_points.size(); ++p) {
+      const Eigen::VectorXd u = point_rows[p] * phi;
+      m.at_points.push_back({at_points[p].name(), u[0], u[1], 0.0, false});
+    }
     rep.modes.push_back(std::move(m));
   }
   return rep;

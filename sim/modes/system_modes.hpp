@@ -55,6 +55,8 @@ struct ModeInfo {
   std::vector<PartShare> kinetic_by_link, strain_by_link;  ///< per carrying link, sorted.
   std::string dominant_link_kinetic, dominant_link_strain;  ///< first of the *_by_link lists.
   std::vector<PointMotion> shape;
+  /// The shape at the points and stations of ModesOptions::points, in that order.
+  std::vector<PointMotion> at_points;
 };
 
 struct JointReport {
@@ -104,6 +106,10 @@ struct ModesReport {
 struct ModesOptions {
   int max_modes = 0;        ///< 0: all.
   bool with_shapes = true;  ///< fill ModeInfo::shape.
+  /// Named points or stations (sim/scene/stations.hpp) whose translation each mode
+  /// reports in ModeInfo::at_points; each must name a point of the scene (the CLI
+  /// checks them first; here an unknown one is a SceneError).
+  std::vector<std::string> points;
   EquilibriumOptions equilibrium;
 };
 

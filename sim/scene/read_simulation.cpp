@@ -60,7 +60,7 @@ void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) 
       r.known(jn, path + ".joint", "joint", s.target, scene.article.joints);
       if (m.count("point") || m.count("axis")) r.fail(sn.Mark(), path + ": an encoder reads a joint, not a point or axis");
     } else if (s.type == "rate_gyro" || s.type == "accelerometer") {
-      s.target = readPoint(r, r.require(m, sn, path, "point"), path + ".point", scene.article);
+      s.target = readPointOrStation(r, r.require(m, sn, path, "point"), path + ".point", scene.article);
       if (m.count("joint")) r.fail(m.at("joint").Mark(), path + ".joint applies only to encoders");
       if (m.count("axis")) {
         if (s.type != "accelerometer") r.fail(m.at("axis").Mark(), path + ".axis applies only to accelerometers");

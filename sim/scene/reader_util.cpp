@@ -1,4 +1,5 @@
 #include "sim/scene/reader_util.hpp"
+#include "sim/scene/stations.hpp"
 
 namespace mmv::scene_detail {
 
@@ -14,6 +15,14 @@ std::string readPoint(const YamlReader& r, const YAML::Node& n, const std::strin
   if (std::find(names.begin(), names.end(), name) == names.end())
     r.fail(n.Mark(), path + ": unknown point '" + name +
                           "' (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>)");
+  return name;
+}
+
+std::string readPointOrStation(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a) {
+  const std::string name = r.text(n, path);
+  if (!isStationName(name)) return readPoint(r, n, path, a);
+  std::string error;
+  if (!parseStation(name, a, error)) r.fail(n.Mark(), path + ": " + error);
   return name;
 }
 

@@ -166,5 +166,7 @@ DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
 void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
 /// A named point of the article; the message says how points are named.
 std::string readPoint(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a);
+/// The same, or a station (sim/scene/stations.hpp): where sensors go.
+std::string readPointOrStation(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a);
 
 }  // namespace mmv::scene_detail

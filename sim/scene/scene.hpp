@@ -51,7 +51,7 @@ struct SimulationSpec {
 struct SensorSceneSpec {
   std::string name;
   std::string type;    ///< encoder, rate_gyro, accelerometer.
-  std::string target;  ///< joint (encoder) or named point (gyro, accelerometer).
+  std::string target;  ///< joint (encoder), named point or station (gyro, accelerometer).
   int axis = 0;        ///< accelerometer: 0 along the link (body x), 1 across it (body y).
   double noise_sigma = 0;  ///< in the measured unit; 0: none.
   std::uint64_t seed = 1;

@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "sim/model/article_builder.hpp"
 #include "facility/sensors.hpp"
+#include "sim/model/stations.hpp"
 #include "sim/statics/closures.hpp"
 #include "sim/time/run_integrator.hpp"
 #include "sim/statics/statics.hpp"
@@ -30,7 +32,7 @@ double dissipation(const Model& model, const SimTK::State& s) {
 struct LiveSensor {
   facility::Sensor model;
   int joint = -1;                     ///< encoder: the coordinate.
-  const NamedPoint* point = nullptr;  ///< gyro, accelerometer.
+  std::optional<PointRef> point;      ///< gyro, accelerometer: a named point or a station.
   int axis = 0;
   bool gyro = false;
 };
@@ -131,7 +133,9 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
       for (int i = 0; i < model_.getNumCoordinates(); ++i)
         if (model_.getCoordinates()[i].name == ss.target) live.joint = i;
     } else {
-      live.point = model_.findPoint(ss.target);
+      std::string error;
+      live.point = PointRef::resolve(model_, scene.article, ss.target, error);
+      if (!live.point) throw SceneError(ss.where + ": sensor '" + ss.name + "': " + error);
     }
     if (live.joint < 0 && !live.point)
       throw SceneError(ss.where + ": sensor '" + ss.name + "': '" + ss.target + "' does not exist in the model");
@@ -146,11 +150,9 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
 
 double ArticleRecorder::sensorTruth(const LiveSensor& live, const SimTK::State& st) const {
   if (live.joint >= 0) return st.getQ()[model_.getQIndex(live.joint)];
-  const SimTK::MobilizedBody& mb = model_.getMatter().getMobilizedBody(live.point->mobod);
-  if (live.gyro) return mb.getBodyAngularVelocity(st)[2];
-  const SimTK::Vec3 a_W = mb.findStationAccelerationInGround(st, live.point->station_B);
-  const SimTK::Vec3 f_B = mb.getBodyRotation(st).transpose() * (a_W - model_.getGravity());
-  return f_B[live.axis];
+  if (live.gyro) return live.point->angularRate(st);
+  const SimTK::Vec3 f_W = live.point->acceleration(st) - model_.getGravity();  // specific force
+  return ~f_W * live.point->localAxis(st, live.axis);
 }
 
 std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {

@@ -530,3 +530,64 @@ TEST_F(Cli, TradeWritesItsStudy) {
 }
 
 }  // namespace
+
+namespace {
+
+class CliStations : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("mmvlab_cli_stations_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  Result run(const std::string& args) {
+    const std::string cmd = std::string(MMVLAB_BINARY) + " " + args + " >" + (dir_ / "o").string() + " 2>" + (dir_ / "e").string();
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "o"), slurp(dir_ / "e")};
+  }
+  fs::path dir_;
+};
+
+// Stations name points of the physical article: the same station gives the same
+// answer on two meshes (within the discretization error), where a hinge name moves.
+TEST_F(CliStations, ModesAndFrfAcceptStations) {
+  const Result a = run("modes --json --modes 1 --segments 16 --points link1@1.83m");
+  const Result b = run("modes --json --modes 1 --segments 32 --points link1@1.83m");
+  ASSERT_EQ(a.code, 0) << a.err;
+  ASSERT_EQ(b.code, 0) << b.err;
+  const double ya = nlohmann::json::parse(a.out)["modes"][0]["at_points"][0]["uy_m"].get<double>();
+  const double yb = nlohmann::json::parse(b.out)["modes"][0]["at_points"][0]["uy_m"].get<double>();
+  EXPECT_NEAR(ya, yb, 2e-3 * std::abs(yb));  // O(h^2): 16 -> 32 segments changes the shape by ~0.1 %
+  const Result bad = run("modes --points link1@3m");
+  EXPECT_EQ(bad.code, 64);
+  EXPECT_NE(bad.err.find("--points: station 'link1@3m': 3m is outside link1 (0 to 2.44 m)"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.out, "");
+  const fs::path out = dir_ / "frf";
+  const Result f = run("frf " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml").string() +
+                       " --input table_x --output link1@0.5:x --points 20 --out " + out.string());
+  ASSERT_EQ(f.code, 0) << f.err;
+  EXPECT_TRUE(fs::exists(out / "frf_link1_0.5_x__table_x.csv"));
+  EXPECT_NE(slurp(out / "frf.uff").find("link1@0.5:x / table_x"), std::string::npos);
+  EXPECT_EQ(run("frf --output link1@2:x").code, 64);
+}
+
+// A scene's accelerometer may sit at a station.
+TEST_F(CliStations, SensorAtAStation) {
+  std::string text = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml");
+  const auto at = text.find("point: link1.tip");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 16, "point: link1@0.9");
+  const fs::path scene = dir_ / "station.yaml";
+  std::ofstream(scene) << text;
+  const Result r = run("simulate --duration 0.1 --segments 2 --json " + scene.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  text.replace(text.find("point: link1@0.9"), 16, "point: link1@1.9");
+  std::ofstream(scene) << text;
+  const Result bad = run("simulate --duration 0.1 --segments 2 " + scene.string());
+  EXPECT_EQ(bad.code, 65);
+  EXPECT_NE(bad.err.find("station.yaml:"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("fraction 1.9 is outside 0 to 1"), std::string::npos) << bad.err;
+}
+
+}  // namespace

@@ -119,7 +119,7 @@ TEST(Statics, NonConvergenceIsReported) {
   const EquilibriumResult eq = solveEquilibrium(*model, opt);
   EXPECT_FALSE(eq.converged);
   EXPECT_NE(eq.failure.find("did not converge in 1 Newton"), std::string::npos) << eq.failure;
-  EXPECT_THROW(runModes(cantileverScene(b, 16, kG), ModesOptions{0, false, opt}), NumericalError);
+  EXPECT_THROW(runModes(cantileverScene(b, 16, kG), ModesOptions{0, false, {}, opt}), NumericalError);
   // With continuation in gravity the same budget per step reaches the equilibrium.
   opt.continuation = true;
   const EquilibriumResult cont = solveEquilibrium(*model, opt);

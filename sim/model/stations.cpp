@@ -1,0 +1,176 @@
+#include "sim/model/stations.hpp"
+
+#include <algorithm>
+
+#include "sim/core/errors.hpp"
+
+namespace mmv {
+namespace {
+
+struct Hermite {
+  double h1, h2, h3, h4;
+};
+
+Hermite hermite(double xi) {
+  const double x2 = xi * xi, x3 = x2 * xi;
+  return {1 - 3 * x2 + 2 * x3, xi - 2 * x2 + x3, 3 * x2 - 2 * x3, x3 - x2};
+}
+
+const SimTK::Vec3 kZ(0, 0, 1);
+
+}  // namespace
+
+StationPoint::StationPoint(const Model& model, const StationSpec& spec) : model_(&model), spec_(spec) {
+  const LinkAxis* axis = model.findLinkAxis(spec.link);
+  MMV_DEMAND(axis != nullptr && axis->x.size() >= 2);
+  std::size_t k = 0;
+  while (k + 2 < axis->x.size() && spec.x > axis->x[k + 1]) ++k;
+  auto node = [&](std::size_t i) {
+    const NamedPoint& p = model.getPoints()[axis->points[i]];
+    return Node{p.mobod, axis->left[i], axis->right[i], p.station_B};
+  };
+  a_ = node(k);
+  b_ = node(k + 1);
+  ell_ = axis->x[k + 1] - axis->x[k];
+  xi_ = std::clamp((spec.x - axis->x[k]) / ell_, 0.0, 1.0);
+}
+
+SimTK::Vec3 StationPoint::position(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  auto point = [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationLocationInGround(s, n.station_B); };
+  auto dir = [&](const Node& n) {
+    return 0.5 * (m.getMobilizedBody(n.left).getBodyRotation(s).x() + m.getMobilizedBody(n.right).getBodyRotation(s).x());
+  };
+  const Hermite h = hermite(xi_);
+  const SimTK::Vec3 ea = dir(a_), eb = dir(b_);
+  return h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb +
+         spec_.offset * (kZ % ((1 - xi_) * ea + xi_ * eb));
+}
+
+SimTK::Vec3 StationPoint::velocity(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  auto point = [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationVelocityInGround(s, n.station_B); };
+  auto rate = [&](SimTK::MobilizedBodyIndex b) {
+    const auto& mb = m.getMobilizedBody(b);
+    return mb.getBodyAngularVelocity(s) % mb.getBodyRotation(s).x();
+  };
+  auto dir = [&](const Node& n) { return 0.5 * (rate(n.left) + rate(n.right)); };
+  const Hermite h = hermite(xi_);
+  const SimTK::Vec3 ea = dir(a_), eb = dir(b_);
+  return h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb +
+         spec_.offset * (kZ % ((1 - xi_) * ea + xi_ * eb));
+}
+
+SimTK::Vec3 StationPoint::acceleration(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  auto point = [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationAccelerationInGround(s, n.station_B); };
+  auto accel = [&](SimTK::MobilizedBodyIndex b) {
+    const auto& mb = m.getMobilizedBody(b);
+    const SimTK::Vec3 e = mb.getBodyRotation(s).x(), w = mb.getBodyAngularVelocity(s);
+    return mb.getBodyAngularAcceleration(s) % e + w % (w % e);
+  };
+  auto dir = [&](const Node& n) { return 0.5 * (accel(n.left) + accel(n.right)); };
+  const Hermite h = hermite(xi_);
+  const SimTK::Vec3 ea = dir(a_), eb = dir(b_);
+  return h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb +
+         spec_.offset * (kZ % ((1 - xi_) * ea + xi_ * eb));
+}
+
+SimTK::Vec3 StationPoint::direction(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  auto dir = [&](const Node& n) {
+    return 0.5 * (m.getMobilizedBody(n.left).getBodyRotation(s).x() + m.getMobilizedBody(n.right).getBodyRotation(s).x());
+  };
+  return ((1 - xi_) * dir(a_) + xi_ * dir(b_)).normalize();
+}
+
+double StationPoint::angularRate(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  auto w = [&](const Node& n) {
+    return 0.5 * (m.getMobilizedBody(n.left).getBodyAngularVelocity(s)[2] + m.getMobilizedBody(n.right).getBodyAngularVelocity(s)[2]);
+  };
+  return (1 - xi_) * w(a_) + xi_ * w(b_);
+}
+
+Eigen::MatrixXd StationPoint::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const {
+  const auto& m = model_->getMatter();
+  // Frames: the two node points, then the pieces whose directions enter.
+  const std::vector<SimTK::MobilizedBodyIndex> bodies{a_.point_body, b_.point_body, a_.left, a_.right, b_.left, b_.right};
+  const std::vector<SimTK::Vec3> stations{a_.station_B, b_.station_B, SimTK::Vec3(0), SimTK::Vec3(0), SimTK::Vec3(0),
+                                          SimTK::Vec3(0)};
+  const Eigen::MatrixXd J = model_->calcFrameJacobians(s, bodies, stations, dofs);  // (w; v) per frame
+  auto axis = [&](SimTK::MobilizedBodyIndex b) {
+    const SimTK::Vec3 e = m.getMobilizedBody(b).getBodyRotation(s).x();
+    return Eigen::Vector3d(e[0], e[1], e[2]);
+  };
+  // d e / d q_c = (J_w,c x e) for each piece; a node's direction is the mean of two.
+  auto dirRows = [&](int left_frame, int right_frame, SimTK::MobilizedBodyIndex left, SimTK::MobilizedBodyIndex right) {
+    Eigen::MatrixXd D(3, dofs.size());
+    const Eigen::Vector3d el = axis(left), er = axis(right);
+    for (Eigen::Index c = 0; c < D.cols(); ++c) {
+      const Eigen::Vector3d wl = J.block<3, 1>(6 * left_frame, c), wr = J.block<3, 1>(6 * right_frame, c);
+      D.col(c) = 0.5 * (wl.cross(el) + wr.cross(er));
+    }
+    return D;
+  };
+  const Eigen::MatrixXd Da = dirRows(2, 3, a_.left, a_.right), Db = dirRows(4, 5, b_.left, b_.right);
+  const Hermite h = hermite(xi_);
+  Eigen::MatrixXd P = h.h1 * J.middleRows(3, 3) + h.h2 * ell_ * Da + h.h3 * J.middleRows(9, 3) + h.h4 * ell_ * Db;
+  const Eigen::MatrixXd De = (1 - xi_) * Da + xi_ * Db;  // z x de: (-de_y, de_x)
+  P.row(0) -= spec_.offset * De.row(1);
+  P.row(1) += spec_.offset * De.row(0);
+  return P.topRows(2);
+}
+
+std::optional<PointRef> PointRef::resolve(const Model& model, const ArticleSpec& article, const std::string& name,
+                                          std::string& error) {
+  PointRef r(model, name);
+  if (isStationName(name)) {
+    const std::optional<StationSpec> spec = parseStation(name, article, error);
+    if (!spec) return std::nullopt;
+    r.station_.emplace(model, *spec);
+    return r;
+  }
+  r.point_ = model.findPoint(name);
+  if (!r.point_) {
+    error = "unknown point '" + name +
+            "' (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
+            "<link>@<m>m or <link>@<fraction>)";
+    return std::nullopt;
+  }
+  return r;
+}
+
+SimTK::Vec3 PointRef::position(const SimTK::State& s) const {
+  if (station_) return station_->position(s);
+  return model_->getMatter().getMobilizedBody(point_->mobod).findStationLocationInGround(s, point_->station_B);
+}
+
+SimTK::Vec3 PointRef::velocity(const SimTK::State& s) const {
+  if (station_) return station_->velocity(s);
+  return model_->getMatter().getMobilizedBody(point_->mobod).findStationVelocityInGround(s, point_->station_B);
+}
+
+SimTK::Vec3 PointRef::acceleration(const SimTK::State& s) const {
+  if (station_) return station_->acceleration(s);
+  return model_->getMatter().getMobilizedBody(point_->mobod).findStationAccelerationInGround(s, point_->station_B);
+}
+
+double PointRef::angularRate(const SimTK::State& s) const {
+  if (station_) return station_->angularRate(s);
+  return model_->getMatter().getMobilizedBody(point_->mobod).getBodyAngularVelocity(s)[2];
+}
+
+SimTK::Vec3 PointRef::localAxis(const SimTK::State& s, int axis) const {
+  const SimTK::Vec3 x = station_ ? station_->direction(s)
+                                 : SimTK::Vec3(model_->getMatter().getMobilizedBody(point_->mobod).getBodyRotation(s).x());
+  return axis == 0 ? x : SimTK::Vec3(-x[1], x[0], 0);
+}
+
+Eigen::MatrixXd PointRef::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const {
+  if (station_) return station_->translationJacobian(s, dofs);
+  const Eigen::MatrixXd J = model_->calcFrameJacobians(s, {point_->mobod}, {point_->station_B}, dofs);
+  return J.middleRows(3, 2);
+}
+
+}  // namespace mmv

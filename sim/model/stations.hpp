@@ -1,0 +1,81 @@
+#pragma once
+/// Where a station (sim/scene/stations.hpp) is and how it moves: interpolated along its
+/// link's mesh (Model::LinkAxis) with the beam's cubic Hermite shape functions,
+///
+///   p(xi) = H1 p_a + H2 l e_a + H3 p_b + H4 l e_b + offset z x e(xi),
+///   H1 = 1 - 3 xi^2 + 2 xi^3, H2 = xi - 2 xi^2 + xi^3, H3 = 3 xi^2 - 2 xi^3, H4 = xi^3 - xi^2,
+///
+/// between the mesh nodes a and b around the station (root, hinges, tip; l their
+/// distance along the undeformed link, xi = (x - x_a) / l), where p is a node's position
+/// and e the link's direction there: a piece's body x axis, the mean of the two pieces
+/// at a hinge; e(xi) = (1 - xi) e_a + xi e_b. Velocity and acceleration are this
+/// formula's exact time derivatives (e' = w x e, e'' = alpha x e + w x (w x e)), so a
+/// station's energy and motion agree. A rigid link's two nodes carry one piece: the
+/// station moves with it exactly. The interpolation error falls as O(h^2) with the
+/// segment length h (tests/sim/model/stations_test.cpp).
+
+#include <Eigen/Dense>
+#include <Simbody.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/model/model.hpp"
+#include "sim/scene/stations.hpp"
+
+namespace mmv {
+
+class StationPoint {
+ public:
+  /// `spec.link` must be a link of the model (the scene reader checked it).
+  StationPoint(const Model& model, const StationSpec& spec);
+
+  const StationSpec& spec() const { return spec_; }
+  SimTK::Vec3 position(const SimTK::State& s) const;      ///< m, world; needs Stage::Position.
+  SimTK::Vec3 velocity(const SimTK::State& s) const;      ///< m/s; needs Stage::Velocity.
+  SimTK::Vec3 acceleration(const SimTK::State& s) const;  ///< m/s^2; needs Stage::Acceleration.
+  /// The unit direction along the link at the station (world).
+  SimTK::Vec3 direction(const SimTK::State& s) const;
+  /// The rotation rate about z (rad/s): the nodes' rates, interpolated linearly.
+  double angularRate(const SimTK::State& s) const;
+  /// d p / d q for the coordinates `dofs`: rows x and y (m per unit coordinate).
+  Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const;
+
+ private:
+  struct Node {
+    SimTK::MobilizedBodyIndex point_body, left, right;
+    SimTK::Vec3 station_B;
+  };
+  const Model* model_;
+  StationSpec spec_;
+  Node a_, b_;
+  double xi_ = 0, ell_ = 0;
+};
+
+/// A point an output, a sensor or a mode-shape table reads: a named point of the mesh
+/// (`link1.tip`, `link1.h12`, `joint2`) or a station (`link1@0.75`).
+class PointRef {
+ public:
+  /// Resolves `name`; on an unknown name returns nothing and sets `error` (one line
+  /// that says how points and stations are named).
+  static std::optional<PointRef> resolve(const Model& model, const ArticleSpec& article, const std::string& name,
+                                         std::string& error);
+  const std::string& name() const { return name_; }
+  SimTK::Vec3 position(const SimTK::State& s) const;
+  SimTK::Vec3 velocity(const SimTK::State& s) const;
+  SimTK::Vec3 acceleration(const SimTK::State& s) const;
+  double angularRate(const SimTK::State& s) const;
+  /// Unit vectors of the point's local frame in the world: along the link (x) and across it (y).
+  SimTK::Vec3 localAxis(const SimTK::State& s, int axis) const;
+  Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const;  ///< rows x, y
+
+ private:
+  PointRef(const Model& model, std::string name) : model_(&model), name_(std::move(name)) {}
+  const Model* model_;
+  std::string name_;
+  const NamedPoint* point_ = nullptr;
+  std::optional<StationPoint> station_;
+};
+
+}  // namespace mmv

@@ -1,0 +1,82 @@
+#include "sim/scene/stations.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace mmv {
+namespace {
+
+/// A finite number filling `text` exactly, optionally followed by the unit "m".
+bool number(const std::string& text, double& value, bool& metres) {
+  std::string t = text;
+  metres = !t.empty() && t.back() == 'm';
+  if (metres) t.pop_back();
+  if (t.empty()) return false;
+  char* end = nullptr;
+  value = std::strtod(t.c_str(), &end);
+  return *end == '\0' && std::isfinite(value);
+}
+
+}  // namespace
+
+bool isStationName(const std::string& name) { return name.find('@') != std::string::npos; }
+
+std::optional<StationSpec> parseStation(const std::string& name, const ArticleSpec& article, std::string& error) {
+  const auto at = name.find('@');
+  if (at == std::string::npos || at == 0) {
+    error = "'" + name + "' is not a station (LINK@DIST m, LINK@FRACTION, optionally +OFFSETm)";
+    return std::nullopt;
+  }
+  StationSpec s;
+  s.name = name;
+  s.link = name.substr(0, at);
+  const LinkSpec* link = article.findLink(s.link);
+  if (!link) {
+    std::string known;
+    for (const auto& l : article.links) known += (known.empty() ? "" : ", ") + l.name;
+    error = "station '" + name + "': unknown link '" + s.link + "' (known: " + known + ")";
+    return std::nullopt;
+  }
+  std::string where = name.substr(at + 1), offset;
+  // The offset starts at a sign that does not follow an exponent's 'e'.
+  for (std::size_t i = 1; i < where.size(); ++i)
+    if ((where[i] == '+' || where[i] == '-') && where[i - 1] != 'e' && where[i - 1] != 'E') {
+      offset = where.substr(i);
+      where = where.substr(0, i);
+      break;
+    }
+  double pos = 0;
+  bool metres = false;
+  if (!number(where, pos, metres)) {
+    error = "station '" + name + "': expected a distance in m (e.g. " + s.link + "@1.2m) or a fraction (e.g. " + s.link +
+            "@0.5) after '@'";
+    return std::nullopt;
+  }
+  std::ostringstream range;
+  range << link->length;
+  if (metres) {
+    if (pos < 0 || pos > link->length) {
+      error = "station '" + name + "': " + where + " is outside " + s.link + " (0 to " + range.str() + " m)";
+      return std::nullopt;
+    }
+    s.x = pos;
+  } else {
+    if (pos < 0 || pos > 1) {
+      error = "station '" + name + "': fraction " + where + " is outside 0 to 1 (or give a distance in m, 0 to " +
+              range.str() + " m)";
+      return std::nullopt;
+    }
+    s.x = pos * link->length;
+  }
+  if (!offset.empty()) {
+    bool offset_metres = false;
+    if (!number(offset, s.offset, offset_metres) || !offset_metres) {
+      error = "station '" + name + "': the offset across the section is a distance in m (e.g. +0.0127m; got " + offset + ")";
+      return std::nullopt;
+    }
+  }
+  return s;
+}
+
+}  // namespace mmv

@@ -1,0 +1,35 @@
+#pragma once
+/// Stations: points of the physical article named by where they are, not by the mesh.
+///
+///     LINK@DIST m          e.g. link1@1.83m  (distance from the link's root, m)
+///     LINK@FRACTION        e.g. link1@0.75   (fraction of the link's length, 0..1)
+///     ...+OFFSETm / -OFFSETm   e.g. link1@0.75+0.0127m (across the section, along
+///                          the link's local y; the top face of link 1's tube)
+///
+/// A station's motion is interpolated from the discretized link with the beam's cubic
+/// (Hermite) shape functions (sim/model/stations.hpp), so it converges as the segments
+/// per link grow, where a hinge name (`link1.h12`) moves along the link as the mesh
+/// changes. Hinge and tip names stay valid as aliases of the mesh's points.
+
+#include <optional>
+#include <string>
+
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+struct StationSpec {
+  std::string name;    ///< as written.
+  std::string link;    ///< a link (or branch) of the article.
+  double x = 0;        ///< m from the link's root, 0 <= x <= length.
+  double offset = 0;   ///< m across the section (local y).
+};
+
+/// True when `name` is written as a station (it contains '@').
+bool isStationName(const std::string& name);
+
+/// Parses a station of `article`. On a malformed name, an unknown link or a position
+/// outside the link, returns nothing and sets `error` (one line, with the valid range).
+std::optional<StationSpec> parseStation(const std::string& name, const ArticleSpec& article, std::string& error);
+
+}  // namespace mmv
