@@ -104,7 +104,20 @@ struct TradeArgs : SceneArgs {
   bool force = false;
 };
 
+struct PlaceSensorsArgs : SceneArgs {
+  bool json = false;
+  std::string modes;       ///< "1-8"; empty: every mode below below_hz.
+  double below_hz = 50;
+  double spacing = 0.1;    ///< m between candidate stations.
+  int count = 8;
+  bool triaxial = false;
+  std::string method = "efi";
+  std::string out;
+  bool force = false;
+};
+
 int runModesCommand(const ModesArgs& args);
+int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);
 int runSimulateCommand(const SimulateArgs& args);
 int runFrfCommand(const LinearArgs& args);

@@ -169,6 +169,28 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
   return tp;
 }
 
+/// `mmvlab place-sensors` and its options.
+CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
+  CLI::App* p = app.add_subcommand("place-sensors",
+                                   "Sensor stations for the target modes: effective independence, kinetic energy or residue");
+  addSceneOptions(p, ps);
+  p->add_flag("--json", ps.json, "Print JSON instead of tables");
+  p->add_option("--modes", ps.modes, "Target modes, e.g. 1-8 or 1,3,5-7 (default: every mode below --below-hz)");
+  p->add_option("--below-hz", ps.below_hz, "Target every vibration mode below this frequency, Hz")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  p->add_option("--count", ps.count, "Sensors to place (triaxial: blocks)")->capture_default_str()->check(CLI::Range(1, 100000));
+  p->add_option("--spacing", ps.spacing, "Distance between candidate stations along each link, m")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-3, 100.0));
+  p->add_flag("--triaxial", ps.triaxial, "Place triaxial blocks (kept or removed whole) instead of uniaxial sensors");
+  p->add_option("--method", ps.method, "efi (effective independence), mke (modal kinetic energy) or dpr (driving-point residue)")
+      ->capture_default_str();
+  p->add_option("--out", ps.out, "Write placement.json, candidates.csv, automac.csv and automac.png here");
+  p->add_flag("--force", ps.force, "Replace files of the same names in --out");
+  return p;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -191,6 +213,8 @@ int main(int argc, char** argv) {
   CLI::App* si = addSimulateCommand(app, sim);
   TradeArgs tr;
   CLI::App* tp = addTradeCommand(app, tr);
+  PlaceSensorsArgs ps;
+  CLI::App* pl = addPlaceSensorsCommand(app, ps);
 
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
@@ -207,6 +231,7 @@ int main(int argc, char** argv) {
   lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
   if (si->parsed()) return runSimulateCommand(sim);
   if (tp->parsed()) return runTradeCommand(tr);
+  if (pl->parsed()) return runPlaceSensorsCommand(ps);
   if (fr->parsed()) return runFrfCommand(lin);
   if (ro->parsed()) return runRomCommand(lin);
   return runSceneCommand();

@@ -591,3 +591,45 @@ TEST_F(CliStations, SensorAtAStation) {
 }
 
 }  // namespace
+
+namespace {
+
+// mmvlab place-sensors on the default article: the modes below 50 Hz, EfI, files
+// written once and nothing on bad input.
+TEST_F(CliStations, PlaceSensorsOnTheDefaultArticle) {
+  const fs::path out = dir_ / "place";
+  const Result r = run("place-sensors --count 10 --json --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "place-sensors");
+  EXPECT_EQ(j["chosen"].size(), 10u);
+  for (const auto& f : j["target_frequencies_hz"]) EXPECT_LT(f.get<double>(), 50.0);
+  EXPECT_GE(j["target_modes"].size(), 6u);
+  EXPECT_GT(j["fisher_determinant"].get<double>(), 0.0);
+  for (const char* f : {"placement.json", "candidates.csv", "automac.csv", "automac.png"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  const std::string csv = slurp(out / "candidates.csv");
+  EXPECT_EQ(csv.rfind("station,link,x_along_link_m,axis,world_x_m,world_y_m,chosen,score\n", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + static_cast<long>(j["candidates"].get<int>()));
+  // Triaxial blocks and the other rankings run too.
+  EXPECT_EQ(run("place-sensors --count 5 --triaxial").code, 0);
+  EXPECT_EQ(run("place-sensors --count 5 --method dpr --modes 1-4").code, 0);
+}
+
+TEST_F(CliStations, PlaceSensorsBadInput) {
+  const Result big = run("place-sensors --count 1000 --out " + (dir_ / "x").string());
+  EXPECT_EQ(big.code, 64);
+  EXPECT_NE(big.err.find("--count 1000: there are 114 candidate sensors"), std::string::npos) << big.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
+  EXPECT_EQ(run("place-sensors --modes 0-3").code, 64);
+  const Result none = run("place-sensors --modes 999");
+  EXPECT_EQ(none.code, 64);
+  EXPECT_NE(none.err.find("mode 999 does not exist"), std::string::npos) << none.err;
+  EXPECT_EQ(run("place-sensors --method best").code, 64);
+  EXPECT_EQ(run("place-sensors --count 2 --modes 1-8").code, 64);  // EfI needs one direction per mode
+  EXPECT_EQ(run("place-sensors " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string()).code, 64);
+  const Result ro = run("place-sensors --out /proc/mmvlab-placement");
+  EXPECT_EQ(ro.code, 73);
+  EXPECT_EQ(ro.out, "");
+}
+
+}  // namespace

@@ -1,0 +1,73 @@
+// mmvlab place-sensors: choose sensor stations for the target modes
+// (sim/modes/place_sensors.hpp), written by sim/io/placement_report.hpp, the AutoMAC
+// heat map by renders/.
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "renders/plot.hpp"
+#include "sim/cli/commands.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/io/placement_report.hpp"
+
+namespace mmv::cli {
+namespace {
+
+/// "1-8", "1,3,5-7" -> {1, ..., 8}.
+std::vector<int> parseModeList(const std::string& text) {
+  std::vector<int> out;
+  std::stringstream ss(text);
+  for (std::string part; std::getline(ss, part, ',');) {
+    const auto dash = part.find('-');
+    char *e1 = nullptr, *e2 = nullptr;
+    const long a = std::strtol(part.c_str(), &e1, 10);
+    const long b = dash == std::string::npos ? a : std::strtol(part.c_str() + dash + 1, &e2, 10);
+    const bool ok = !part.empty() && (dash == std::string::npos ? *e1 == '\0' : (e1 == part.c_str() + dash && *e2 == '\0'));
+    if (!ok || a < 1 || b < a || b > 100000)
+      throw UsageError("--modes: expected mode numbers like 1-8 or 1,3,5-7 (got " + text + ")");
+    for (long m = a; m <= b; ++m) out.push_back(static_cast<int>(m));
+  }
+  return out;
+}
+
+}  // namespace
+
+int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
+  return guarded([&] {
+    const ArticleScene scene = loadArticleScene(args, "place-sensors");
+    PlacementOptions o;
+    if (!args.modes.empty()) o.modes = parseModeList(args.modes);
+    o.below_hz = args.below_hz;
+    o.spacing_m = args.spacing;
+    o.triaxial = args.triaxial;
+    o.count = args.count;
+    if (!parsePlacementMethod(args.method, o.method))
+      throw UsageError("--method: unknown method '" + args.method + "' (known: efi, mke, dpr)");
+    std::unique_ptr<OutputDir> out;
+    if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
+    const PlacementStudy s = runPlacement(scene, o);
+    if (out) {
+      std::ofstream(out->stage("placement.json"), std::ios::binary) << placementJson(s).dump(2) << '\n';
+      std::ofstream(out->stage("candidates.csv"), std::ios::binary) << placementCandidatesCsv(s);
+      std::ofstream(out->stage("automac.csv"), std::ios::binary) << placementAutoMacCsv(s);
+      std::vector<std::string> rows, cols;
+      for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
+        rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j], s.target_frequencies_hz[j]));
+        cols.push_back(std::to_string(s.target_modes[j]));
+      }
+      try {
+        render::writeHeatmapPng(out->stage("automac.png"), s.result.automac, rows, cols,
+                                strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()),
+                                "mode", "mode");
+      } catch (const std::runtime_error& e) {
+        throw OutputError(e.what());
+      }
+      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+    }
+    std::cout << (args.json ? placementJson(s).dump(2) + "\n" : placementText(s)) << std::flush;
+    return kOk;
+  });
+}
+
+}  // namespace mmv::cli

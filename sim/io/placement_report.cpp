@@ -1,0 +1,111 @@
+#include "sim/io/placement_report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "sim/core/text.hpp"
+#include "sim/io/report.hpp"
+
+namespace mmv {
+namespace {
+
+constexpr double kIndistinguishable = 0.9;  ///< AutoMAC above which two modes look alike.
+
+std::string conditionText(double c) { return std::isfinite(c) ? strf("%.3g", c) : "singular"; }
+
+}  // namespace
+
+std::vector<std::pair<int, int>> indistinguishableModes(const PlacementStudy& s) {
+  std::vector<std::pair<int, int>> out;
+  const Eigen::MatrixXd& mac = s.result.automac;
+  for (Eigen::Index i = 0; i < mac.rows(); ++i)
+    for (Eigen::Index j = i + 1; j < mac.cols(); ++j)
+      if (mac(i, j) > kIndistinguishable) out.push_back({s.target_modes[i], s.target_modes[j]});
+  return out;
+}
+
+std::string placementText(const PlacementStudy& s) {
+  std::ostringstream os;
+  const PlacementResult& r = s.result;
+  os << s.scene_name << ": " << r.kept_blocks.size() << (s.triaxial ? " triaxial blocks" : " uniaxial sensors") << " by "
+     << s.method << " from " << s.candidates.size() << " candidates\n";
+  os << "Target modes (Hz):";
+  for (std::size_t j = 0; j < s.target_modes.size(); ++j)
+    os << strf(" %d (%.4g)", s.target_modes[j], s.target_frequencies_hz[j]);
+  os << "\n\n";
+  Table t({"station", "axis", "x_m", "y_m", s.method == "effective independence" ? "EfI" : "score"});
+  for (std::size_t i = 0; i < r.kept_blocks.size(); ++i) {
+    const PlacementCandidate& c = s.candidates[r.kept_blocks[i]];
+    t.add({c.station, c.axis, strf("%.4f", c.world_x), strf("%.4f", c.world_y), strf("%.4g", r.block_score[i])});
+  }
+  os << t.text();
+  os << strf("\nFisher information: det %.4g, condition number %s; largest off-diagonal AutoMAC %.4f\n",
+             r.fisher_determinant, conditionText(r.fisher_condition).c_str(), r.max_offdiagonal_mac);
+  const auto alike = indistinguishableModes(s);
+  if (alike.empty()) {
+    os << "Every pair of target modes is told apart (AutoMAC <= " << kIndistinguishable << ")\n";
+  } else {
+    os << "Modes this set cannot tell apart (AutoMAC > " << kIndistinguishable << "):";
+    for (const auto& [a, b] : alike) os << " " << a << "&" << b;
+    os << "\n";
+  }
+  return os.str();
+}
+
+nlohmann::ordered_json placementJson(const PlacementStudy& s) {
+  nlohmann::ordered_json j;
+  const PlacementResult& r = s.result;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "place-sensors";
+  j["scene"] = s.scene_name;
+  j["method"] = s.method;
+  j["sensor"] = s.triaxial ? "triaxial" : "uniaxial";
+  j["target_modes"] = s.target_modes;
+  j["target_frequencies_hz"] = s.target_frequencies_hz;
+  j["candidates"] = s.candidates.size();
+  auto chosen = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < r.kept_blocks.size(); ++i) {
+    const PlacementCandidate& c = s.candidates[r.kept_blocks[i]];
+    chosen.push_back({{"station", c.station}, {"axis", c.axis}, {"x_m", c.world_x}, {"y_m", c.world_y}, {"score", r.block_score[i]}});
+  }
+  j["chosen"] = chosen;
+  j["fisher_determinant"] = r.fisher_determinant;
+  j["fisher_condition"] = std::isfinite(r.fisher_condition) ? nlohmann::ordered_json(r.fisher_condition) : nlohmann::ordered_json();
+  j["max_offdiagonal_automac"] = r.max_offdiagonal_mac;
+  auto alike = nlohmann::ordered_json::array();
+  for (const auto& [a, b] : indistinguishableModes(s)) alike.push_back({a, b});
+  j["indistinguishable_mode_pairs"] = alike;
+  return j;
+}
+
+std::string placementCandidatesCsv(const PlacementStudy& s) {
+  std::ostringstream os;
+  os << "station,link,x_along_link_m,axis,world_x_m,world_y_m,chosen,score\n";
+  std::vector<double> score(s.candidates.size(), 0.0);
+  std::vector<int> chosen(s.candidates.size(), 0);
+  for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
+    chosen[s.result.kept_blocks[i]] = 1;
+    score[s.result.kept_blocks[i]] = s.result.block_score[i];
+  }
+  for (std::size_t b = 0; b < s.candidates.size(); ++b) {
+    const PlacementCandidate& c = s.candidates[b];
+    os << c.station << ',' << c.link << ',' << strf("%.6g", c.x_m) << ',' << c.axis << ',' << strf("%.6g", c.world_x) << ','
+       << strf("%.6g", c.world_y) << ',' << chosen[b] << ',' << (chosen[b] ? strf("%.6g", score[b]) : std::string()) << '\n';
+  }
+  return os.str();
+}
+
+std::string placementAutoMacCsv(const PlacementStudy& s) {
+  std::ostringstream os;
+  os << "mode";
+  for (int m : s.target_modes) os << ",mode_" << m;
+  os << '\n';
+  for (Eigen::Index i = 0; i < s.result.automac.rows(); ++i) {
+    os << s.target_modes[i];
+    for (Eigen::Index j = 0; j < s.result.automac.cols(); ++j) os << ',' << strf("%.6f", s.result.automac(i, j));
+    os << '\n';
+  }
+  return os.str();
+}
+
+}  // namespace mmv

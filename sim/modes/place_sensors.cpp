@@ -1,0 +1,100 @@
+#include "sim/modes/place_sensors.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "article/section.hpp"
+#include "sim/core/errors.hpp"
+#include "sim/model/stations.hpp"
+#include "sim/modes/system_modes.hpp"
+
+namespace mmv {
+namespace {
+
+std::vector<int> targetModes(const ModalSolution& modes, const PlacementOptions& o) {
+  std::vector<int> out;
+  const int n = static_cast<int>(modes.omega2.size());
+  if (o.modes.empty()) {
+    for (int i = 0; i < n; ++i)
+      if (modes.isStable(i) && !modes.isRigidBody(i) && modes.frequencyHz(i) < o.below_hz) out.push_back(i + 1);
+    if (out.empty()) throw UsageError("--below-hz: no vibration mode below " + std::to_string(o.below_hz) + " Hz");
+    return out;
+  }
+  for (int m : o.modes) {
+    if (m < 1 || m > n) throw UsageError("--modes: mode " + std::to_string(m) + " does not exist (the model has " + std::to_string(n) + ")");
+    if (!modes.isStable(m - 1) || modes.isRigidBody(m - 1))
+      throw UsageError("--modes: mode " + std::to_string(m) + " is not a vibration mode (rigid or unstable)");
+    out.push_back(m);
+  }
+  return out;
+}
+
+/// Candidate stations of one link: every spacing out to the tip, the tip included.
+std::vector<double> stationsAlong(double length, double spacing) {
+  std::vector<double> x;
+  for (int k = 1; k * spacing < length - 1e-9 * length; ++k) x.push_back(k * spacing);
+  x.push_back(length);
+  return x;
+}
+
+}  // namespace
+
+PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {
+  MMV_DEMAND(o.spacing_m > 0);
+  const SolvedScene s = solveScene(scene);
+  const Model& model = *s.model;
+  SimTK::State st = s.equilibrium.state;
+  model.getSystem().realize(st, SimTK::Stage::Position);
+  PlacementStudy study;
+  study.scene_name = scene.name;
+  study.method = placementMethodName(o.method);
+  study.triaxial = o.triaxial;
+  study.target_modes = targetModes(s.modes, o);
+  const int k = static_cast<int>(study.target_modes.size());
+  Eigen::MatrixXd shapes(s.modes.shapes.rows(), k);
+  PlacementProblem p;
+  p.omega.resize(k);
+  for (int j = 0; j < k; ++j) {
+    shapes.col(j) = s.modes.shapes.col(study.target_modes[j] - 1);
+    study.target_frequencies_hz.push_back(s.modes.frequencyHz(study.target_modes[j] - 1));
+    p.omega[j] = 2 * M_PI * study.target_frequencies_hz.back();
+  }
+  std::vector<Eigen::RowVectorXd> rows;
+  std::vector<double> masses;
+  for (const auto& link : scene.article.links) {
+    const Material& mat = *scene.article.findMaterial(link.material);
+    const double mass = mat.density * sectionArea(*scene.article.findSection(link.section)) * o.spacing_m;
+    for (double x : stationsAlong(link.length, o.spacing_m)) {
+      char name[96];
+      std::snprintf(name, sizeof name, "%s@%.4gm", link.name.c_str(), x);
+      std::string error;
+      const std::optional<PointRef> ref = PointRef::resolve(model, scene.article, name, error);
+      MMV_DEMAND(ref.has_value());
+      const Eigen::MatrixXd u = ref->translationJacobian(st, s.linearized.dofs) * shapes;  // 2 x k, world x and y
+      const SimTK::Vec3 pos = ref->position(st);
+      for (int a = 0; a < 2; ++a) {
+        const SimTK::Vec3 e = ref->localAxis(st, a);
+        rows.push_back(e[0] * u.row(0) + e[1] * u.row(1));
+        masses.push_back(mass);
+        if (!o.triaxial || a == 0)
+          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : a == 0 ? "axial" : "transverse", pos[0], pos[1]});
+        p.block.push_back(static_cast<int>(study.candidates.size()) - 1);
+      }
+    }
+  }
+  p.phi.resize(rows.size(), k);
+  for (std::size_t r = 0; r < rows.size(); ++r) p.phi.row(r) = rows[r];
+  p.row_mass = Eigen::Map<Eigen::VectorXd>(masses.data(), masses.size());
+  const int blocks = static_cast<int>(study.candidates.size());
+  if (o.count < 1 || o.count > blocks)
+    throw UsageError("--count " + std::to_string(o.count) + ": there are " + std::to_string(blocks) + " candidate " +
+                     (o.triaxial ? "blocks" : "sensors") + " (spacing " + std::to_string(o.spacing_m) + " m)");
+  if (o.method == PlacementMethod::EffectiveIndependence && (o.triaxial ? 2 * o.count : o.count) < k)
+    throw UsageError("--count " + std::to_string(o.count) + ": effective independence needs at least one measured direction per target mode (" +
+                     std::to_string(k) + ")");
+  study.result = placeSensors(p, o.method, o.count);
+  return study;
+}
+
+}  // namespace mmv

@@ -1,0 +1,55 @@
+#pragma once
+/// `mmvlab place-sensors` on an article: candidate stations along every link, the
+/// target modes' shapes there, and the choice of sensor_placement.hpp.
+///
+/// Candidates: stations every `spacing` along each link (from one spacing out to the
+/// tip; the tip always), each measuring along the link (axial) and across it
+/// (transverse) in the plane of motion. A uniaxial candidate is one direction at one
+/// station; a triaxial block is both in-plane directions at a station, kept or removed
+/// together (the planar model has no out-of-plane motion, so a block's third axis reads
+/// nothing and is left out). Each row's tributary mass is the link's mass per length
+/// times the spacing. Shapes are the mass-normalised system modes about the static
+/// equilibrium (sim/modes/system_modes.hpp), evaluated at stations with the beam's
+/// shape functions (sim/model/stations.hpp), so the choice does not depend on the mesh.
+
+#include <string>
+#include <vector>
+
+#include "sim/modes/sensor_placement.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+struct PlacementOptions {
+  std::vector<int> modes;     ///< target modes, 1-based; empty: every mode below `below_hz`.
+  double below_hz = 50;       ///< Hz (the report's 0.1-50 Hz band).
+  double spacing_m = 0.1;     ///< m between candidate stations.
+  bool triaxial = false;
+  PlacementMethod method = PlacementMethod::EffectiveIndependence;
+  int count = 8;              ///< sensors (uniaxial) or blocks (triaxial) to keep.
+};
+
+struct PlacementCandidate {
+  std::string station;  ///< e.g. "link1@1.20m".
+  std::string link;
+  double x_m = 0;       ///< along the link from its root.
+  std::string axis;     ///< "axial", "transverse", or "triaxial" (a block).
+  double world_x = 0, world_y = 0;  ///< m, at the equilibrium.
+};
+
+struct PlacementStudy {
+  std::string scene_name;
+  std::string method;
+  bool triaxial = false;
+  std::vector<int> target_modes;             ///< 1-based.
+  std::vector<double> target_frequencies_hz;
+  std::vector<PlacementCandidate> candidates;  ///< one per block.
+  PlacementResult result;
+};
+
+/// Throws UsageError for target modes that do not exist or are not vibration modes
+/// (rigid or unstable), or a count larger than the candidates; NumericalError as the
+/// modes analysis or when the candidates cannot see every target mode.
+PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& options);
+
+}  // namespace mmv
