@@ -37,7 +37,7 @@ const std::map<std::string, std::set<std::string>>& allowedIncludes() {
   static const std::map<std::string, std::set<std::string>> rules{
       {"article", {}},           {"facility", {}},          {"sim/core", core},   {"sim/scene", scene},
       {"sim/model", model},      {"sim/statics", statics},  {"sim/modes", modes}, {"sim/linear", linear},
-      {"sim/time", time},        {"sim/hamsas", hamsas},    {"sim/io", io},       {"renders", {}},
+      {"sim/time", time},        {"sim/hamsas", hamsas},    {"sim/io", io},       {"renders", {"sim/core"}},
       {"sim/cli", cli},
   };
   return rules;
@@ -236,6 +236,8 @@ TEST(Architecture, ChecksCatchWhatTheyShould) {
   EXPECT_EQ(layeringViolations("sim/io/x.cpp", "#include \"renders/plot.hpp\"\n").size(), 1u);
   EXPECT_TRUE(layeringViolations("sim/hamsas/x.cpp", "#include \"sim/time/simulation.hpp\"\n").empty());
   EXPECT_TRUE(layeringViolations("sim/cli/x.cpp", "#include \"renders/plot.hpp\"\n").empty());
+  EXPECT_EQ(layeringViolations("renders/x.cpp", "#include \"sim/model/model.hpp\"\n").size(), 1u);
+  EXPECT_TRUE(layeringViolations("renders/x.cpp", "#include \"sim/core/drawing.hpp\"\n").empty());
   std::string body = "namespace a {\nint f(int x) {\n";
   for (int i = 0; i < 90; ++i) body += "  x += 1;  // }\n";
   body += "  auto g = [&]() { return \"}\"; };\n  return x;\n}\nstruct S {\n  int h() { return 1; }\n};\n}\n";

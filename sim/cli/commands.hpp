@@ -116,7 +116,17 @@ struct PlaceSensorsArgs : SceneArgs {
   bool force = false;
 };
 
+struct RenderArgs : SceneArgs {
+  std::string view = "front";
+  std::string mode;          ///< "", "K" or "K1-K2".
+  double scale = 0;          ///< m of drawing per unit modal coordinate; 0: automatic.
+  std::string size = "1280x720";
+  std::string out;
+  bool force = false;
+};
+
 int runModesCommand(const ModesArgs& args);
+int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);
 int runSimulateCommand(const SimulateArgs& args);

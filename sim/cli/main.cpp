@@ -191,6 +191,20 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   return p;
 }
 
+/// `mmvlab render` and its options.
+CLI::App* addRenderCommand(CLI::App& app, RenderArgs& r) {
+  CLI::App* c = app.add_subcommand("render", "Off-screen frames: the article with its sensors, a mode, a contact sheet, a mode's cycle");
+  addSceneOptions(c, r);
+  c->add_option("--view", r.view, "front, side, top or iso")->capture_default_str();
+  c->add_option("--mode", r.mode, "A mode (K) or a range (K1-K2: a contact sheet); none: the static equilibrium");
+  c->add_option("--scale", r.scale, "Drawing metres per unit modal coordinate (default: the largest translation 10 % of the article)")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--size", r.size, "WIDTHxHEIGHT in pixels")->capture_default_str();
+  c->add_option("--out", r.out, "The file: .png (a frame or a contact sheet), .mp4 or .avi (a mode's cycle)")->required();
+  c->add_flag("--force", r.force, "Replace the file if it exists");
+  return c;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -215,6 +229,8 @@ int main(int argc, char** argv) {
   CLI::App* tp = addTradeCommand(app, tr);
   PlaceSensorsArgs ps;
   CLI::App* pl = addPlaceSensorsCommand(app, ps);
+  RenderArgs rd;
+  CLI::App* rn = addRenderCommand(app, rd);
 
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
@@ -232,6 +248,7 @@ int main(int argc, char** argv) {
   if (si->parsed()) return runSimulateCommand(sim);
   if (tp->parsed()) return runTradeCommand(tr);
   if (pl->parsed()) return runPlaceSensorsCommand(ps);
+  if (rn->parsed()) return runRenderCommand(rd);
   if (fr->parsed()) return runFrfCommand(lin);
   if (ro->parsed()) return runRomCommand(lin);
   return runSceneCommand();

@@ -633,3 +633,28 @@ TEST_F(CliStations, PlaceSensorsBadInput) {
 }
 
 }  // namespace
+
+namespace {
+
+// mmvlab render: a PNG of the article, a mode, a contact sheet; bad input refused with
+// nothing written.
+TEST_F(CliStations, RenderWritesFramesAndRefusesBadInput) {
+  ::unsetenv("DISPLAY");
+  const fs::path png = dir_ / "article.png", sheet = dir_ / "sheet.png";
+  ASSERT_EQ(run("render --size 320x240 --out " + png.string()).code, 0);
+  EXPECT_TRUE(isPng(png));
+  const Result again = run("render --size 320x240 --out " + png.string());
+  EXPECT_EQ(again.code, 73);  // would replace a file
+  EXPECT_EQ(run("render --size 320x240 --out " + png.string() + " --force --mode 2 --view iso").code, 0);
+  ASSERT_EQ(run("render --size 200x150 --mode 1-4 --out " + sheet.string()).code, 0);
+  EXPECT_TRUE(isPng(sheet));
+  EXPECT_EQ(run("render --view underneath --out " + (dir_ / "v.png").string()).code, 64);
+  EXPECT_EQ(run("render --mode 999 --out " + (dir_ / "m.png").string()).code, 64);
+  EXPECT_EQ(run("render --out " + (dir_ / "m.gif").string()).code, 64);
+  EXPECT_EQ(run("render --size 10x10 --out " + (dir_ / "s.png").string()).code, 64);
+  EXPECT_EQ(run("render --out " + (dir_ / "no" / "such" / "dir.png").string()).code, 73);
+  for (const char* f : {"v.png", "m.png", "m.gif", "s.png"}) EXPECT_FALSE(fs::exists(dir_ / f)) << f;
+  for (const auto& e : fs::directory_iterator(dir_)) EXPECT_EQ(e.path().filename().string().rfind(".mmvlab-", 0), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,66 @@
+#pragma once
+/// A drawing list: what a 3-D frame shows, as plain data (SI units, world frame).
+/// sim/io builds one from a model and a state (sim/io/article_drawing.hpp); renders/
+/// draws it off-screen (renders/frame.hpp). Nothing here knows Simbody or OpenGL.
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace mmv {
+
+struct DrawItem {
+  enum class Shape {
+    Box,       ///< size: lengths along the pose's x, y, z (m).
+    Cylinder,  ///< axis along the pose's x; size: length, diameter, (unused) (m).
+    Sphere,    ///< size[0]: diameter (m).
+  };
+  Shape shape = Shape::Box;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< the item's centre and axes in the world.
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();
+  std::array<float, 4> rgba{0.7f, 0.7f, 0.7f, 1.0f};  ///< alpha < 1: translucent (drawn after the opaque items).
+  /// When set (finite), the colour comes from the list's colour bar at this value
+  /// (renders/ maps it with a standard colormap) and rgba only gives the alpha.
+  double value = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// Text anchored at a world point (drawn in 2-D over the frame, with a leader dot).
+struct DrawLabel {
+  Eigen::Vector3d at = Eigen::Vector3d::Zero();
+  std::string text;
+  std::array<float, 4> rgba{0.1f, 0.1f, 0.1f, 1.0f};
+};
+
+/// A colour scale shown beside the frame: what the items' colours mean.
+struct ColorBar {
+  std::string title;   ///< e.g. "|u| (m, shape scaled x 0.5)".
+  double min = 0, max = 1;
+};
+
+struct DrawList {
+  std::vector<DrawItem> items;
+  std::vector<DrawLabel> labels;
+  std::vector<std::pair<std::string, std::array<float, 4>>> legend;  ///< name and swatch colour.
+  std::string title;
+  bool has_color_bar = false;
+  ColorBar color_bar;
+  /// Axis-aligned bounds of everything drawn (m), for the camera presets.
+  Eigen::AlignedBox3d bounds() const;
+};
+
+/// A camera looking from `eye` at `target`, `up` up, with a vertical field of view.
+struct Camera {
+  Eigen::Vector3d eye{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
+  double fov_deg = 30;
+};
+
+/// The presets: "front" (looking along -z at the x-y plane of motion), "side" (along
+/// -x), "top" (along +y, down), "iso". The camera frames `bounds` with a margin.
+/// Returns false for an unknown name.
+bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& camera);
+
+}  // namespace mmv

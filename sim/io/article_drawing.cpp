@@ -1,0 +1,247 @@
+#include "sim/io/article_drawing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "article/section.hpp"
+#include "sim/core/errors.hpp"
+#include "sim/model/stations.hpp"
+
+namespace mmv {
+namespace {
+
+constexpr double kSteel = 7850;  ///< kg/m^3: how big a lumped mass is drawn.
+constexpr double kMinSection = 0.015;  ///< m: thinner sections are drawn this thick (link 3's 2.5 mm rods would vanish).
+const std::array<std::array<float, 4>, 7> kPalette{{{0.90f, 0.62f, 0.0f, 1}, {0.34f, 0.71f, 0.91f, 1}, {0.0f, 0.62f, 0.45f, 1},
+                                                    {0.0f, 0.45f, 0.70f, 1}, {0.84f, 0.37f, 0.0f, 1}, {0.80f, 0.47f, 0.65f, 1},
+                                                    {0.94f, 0.89f, 0.26f, 1}}};
+const std::array<float, 4> kTorquer{0.35f, 0.35f, 0.38f, 1}, kSensor{0.80f, 0.10f, 0.10f, 1}, kFixture{0.55f, 0.55f, 0.5f, 1};
+
+Eigen::Vector3d vec(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
+
+/// A pose with its x axis along `dir` and its z axis as near world z as possible.
+Eigen::Isometry3d along(const Eigen::Vector3d& centre, const Eigen::Vector3d& dir) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  const Eigen::Vector3d x = dir.normalized();
+  Eigen::Vector3d z = Eigen::Vector3d::UnitZ() - x.z() * x;
+  if (z.norm() < 1e-9) z = Eigen::Vector3d::UnitY();
+  z.normalize();
+  T.linear().col(0) = x;
+  T.linear().col(1) = z.cross(x);
+  T.linear().col(2) = z;
+  T.translation() = centre;
+  return T;
+}
+
+/// The cross-section as drawn: shape and size (height in the plane, width out of it),
+/// at least kMinSection so that every link shows.
+void sectionShape(const Section& s, DrawItem& item, double length) {
+  switch (s.shape) {
+    case SectionShape::RoundRod:
+      item.shape = DrawItem::Shape::Cylinder;
+      item.size = {length, 2 * s.radius, 2 * s.radius};
+      break;
+    case SectionShape::Rectangle:
+    case SectionShape::RectangularTube: item.size = {length, s.h, s.b}; break;
+    case SectionShape::Explicit: {
+      const double side = std::sqrt(s.explicit_area);
+      item.size = {length, side, side};
+      break;
+    }
+  }
+  item.size.y() = std::max(item.size.y(), kMinSection);
+  item.size.z() = std::max(item.size.z(), kMinSection);
+}
+
+/// Centreline samples of a link: 8 per segment (at least 16), root to tip.
+std::vector<StationPoint> samples(const Model& model, const LinkSpec& l) {
+  const int n = std::clamp(8 * (l.rigid ? 1 : l.segments), 16, 400);
+  std::vector<StationPoint> out;
+  for (int i = 0; i <= n; ++i) out.emplace_back(model, StationSpec{"", l.name, l.length * i / n, 0.0});
+  return out;
+}
+
+/// One link as boxes (or cylinders) between consecutive centreline points; `values`
+/// (one per point, may be empty) colour the segments through the colour bar.
+void addLink(DrawList& d, const ArticleSpec& a, const LinkSpec& l, const std::vector<Eigen::Vector3d>& pts,
+             const std::array<float, 4>& rgba, const std::vector<double>& values) {
+  const Section& sec = *a.findSection(l.section);
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    DrawItem it;
+    it.rgba = rgba;
+    it.pose = along(0.5 * (pts[i] + pts[i + 1]), pts[i + 1] - pts[i]);
+    sectionShape(sec, it, (pts[i + 1] - pts[i]).norm() * 1.02);  // a little overlap closes the joints between segments
+    if (!values.empty()) it.value = 0.5 * (values[i] + values[i + 1]);
+    d.items.push_back(it);
+  }
+}
+
+std::vector<Eigen::Vector3d> positions(const std::vector<StationPoint>& pts, const SimTK::State& s) {
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& p : pts) out.push_back(vec(p.position(s)));
+  return out;
+}
+
+/// A cylinder about world z (torquers, encoders) or a sphere, of steel of `mass`.
+DrawItem lumped(const Eigen::Vector3d& at, double mass, bool sphere) {
+  DrawItem it;
+  it.rgba = kTorquer;
+  const double volume = mass / kSteel;
+  if (sphere) {
+    it.shape = DrawItem::Shape::Sphere;
+    it.size = Eigen::Vector3d::Constant(std::cbrt(6 * volume / M_PI));
+  } else {
+    it.shape = DrawItem::Shape::Cylinder;
+    const double dia = std::cbrt(4 * volume / M_PI);  // length = diameter
+    it.size = {dia, dia, dia};
+  }
+  it.pose = along(at, Eigen::Vector3d::UnitZ());
+  return it;
+}
+
+void addHardware(DrawList& d, const ArticleScene& scene, const Model& model, const SimTK::State& s) {
+  const ArticleSpec& a = scene.article;
+  for (const auto& j : a.joints) {
+    const NamedPoint* p = model.findPoint(j.name);
+    if (p && j.torquer) d.items.push_back(lumped(vec(model.findPointLocation(s, *p)), j.torquer->mass, false));
+  }
+  for (const auto& l : a.links)
+    if (l.tip_mass) d.items.push_back(lumped(vec(model.findPointLocation(s, *model.findPoint(l.name + ".tip"))), l.tip_mass->mass, true));
+  for (const auto& c : a.closures) {
+    DrawItem it;
+    it.shape = DrawItem::Shape::Sphere;
+    it.rgba = kFixture;
+    it.size = Eigen::Vector3d::Constant(0.05);
+    it.pose.translation() = vec(model.findPointLocation(s, *model.findPoint(c.point)));
+    d.items.push_back(it);
+  }
+  const Eigen::Vector3d base(a.base.position[0], a.base.position[1], a.base.position[2]);
+  if (a.base.type == BaseType::Table) {  // schematic: a 1 m slab under the base
+    DrawItem it;
+    it.rgba = kFixture;
+    it.size = {1.0, 0.08, 1.0};
+    it.pose.translation() = base + Eigen::Vector3d(0, 0.25, 0);
+    d.items.push_back(it);
+    d.legend.push_back({"base excitation table (schematic)", kFixture});
+  }
+  if (a.base.gimbal) {  // schematic: three rings (yaw about y, pitch about z, roll about x)
+    const Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX()};
+    for (int k = 0; k < 3; ++k) {
+      DrawItem it;
+      it.shape = DrawItem::Shape::Cylinder;
+      it.rgba = {0.45f, 0.45f, 0.5f, 0.6f};
+      it.size = {0.02, 0.5 - 0.1 * k, 0.5 - 0.1 * k};
+      it.pose = along(base + Eigen::Vector3d(0, 0.12, 0), axes[k]);
+      d.items.push_back(it);
+    }
+    d.legend.push_back({"gimbal rings (schematic)", {0.45f, 0.45f, 0.5f, 1}});
+  }
+}
+
+void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, const SimTK::State& s) {
+  for (const auto& sensor : scene.sensors) {
+    Eigen::Vector3d at;
+    DrawItem it;
+    it.rgba = kSensor;
+    if (sensor.type == "encoder") {
+      const NamedPoint* p = model.findPoint(sensor.target);
+      MMV_DEMAND(p != nullptr);
+      at = vec(model.findPointLocation(s, *p));
+      it.shape = DrawItem::Shape::Cylinder;
+      it.size = {0.02, 0.14, 0.14};
+      it.pose = along(at + Eigen::Vector3d(0, 0, 0.08), Eigen::Vector3d::UnitZ());
+    } else {
+      std::string error;
+      const auto p = PointRef::resolve(model, scene.article, sensor.target, error);
+      MMV_DEMAND(p.has_value());
+      at = vec(p->position(s));
+      it.shape = sensor.type == "rate_gyro" ? DrawItem::Shape::Cylinder : DrawItem::Shape::Box;
+      it.size = Eigen::Vector3d::Constant(0.04);
+      it.pose = along(at + Eigen::Vector3d(0, 0, 0.03), vec(p->localAxis(s, 0)));
+    }
+    d.items.push_back(it);
+    d.labels.push_back({at, sensor.name + " (" + sensor.type + ")", kSensor});
+  }
+  if (!scene.sensors.empty()) d.legend.push_back({"sensors", kSensor});
+}
+
+}  // namespace
+
+DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s) {
+  DrawList d;
+  d.title = scene.name;
+  for (std::size_t k = 0; k < scene.article.links.size(); ++k) {
+    const LinkSpec& l = scene.article.links[k];
+    const auto& color = kPalette[k % kPalette.size()];
+    addLink(d, scene.article, l, positions(samples(model, l), s), color, {});
+    d.legend.push_back({l.name, color});
+  }
+  d.legend.push_back({"torquers, tip masses (as steel of their mass)", kTorquer});
+  d.legend.push_back({"sections drawn true to size, at least 15 mm", {1, 1, 1, 1}});
+  addHardware(d, scene, model, s);
+  addSensors(d, scene, model, s);
+  return d;
+}
+
+ModeFrames::ModeFrames(const ArticleScene& scene, const SolvedScene& solved, int mode, double scale)
+    : scene_(scene), solved_(solved), mode_(mode) {
+  const Model& model = *solved.model;
+  MMV_DEMAND(mode >= 0 && mode < solved.modes.omega2.size());
+  SimTK::State eq = solved.equilibrium.state;
+  model.getSystem().realize(eq, SimTK::Stage::Position);
+  const Eigen::VectorXd phi = solved.modes.shapes.col(mode);
+  const std::vector<int>& dofs = solved.linearized.dofs;
+  // The shape as the linear model has it: every centreline point displaced by its
+  // translation per unit modal coordinate (the stations' Jacobians times phi), scaled
+  // so the largest is 10 % of the article's extent unless a scale is given.
+  double peak = 0, extent = 0;
+  for (const auto& l : scene.article.links) {
+    const std::vector<StationPoint> pts = samples(model, l);
+    rest_.push_back(positions(pts, eq));
+    shape_.emplace_back();
+    for (const auto& p : pts) {
+      const Eigen::Vector2d u = p.translationJacobian(eq, dofs) * phi;
+      shape_.back().push_back(Eigen::Vector3d(u.x(), u.y(), 0));
+      peak = std::max(peak, u.norm());
+    }
+    extent += l.length;
+  }
+  scale_ = scale > 0 ? scale : (peak > 0 ? 0.1 * extent / peak : 1.0);
+  peak_ = scale_ * peak;
+  addHardware(hardware_, scene, model, eq);
+}
+
+DrawList ModeFrames::frame(double phase, bool short_title) const {
+  DrawList d = hardware_;
+  for (std::size_t j = 0; j < scene_.article.links.size(); ++j) {
+    std::vector<Eigen::Vector3d> moved;
+    std::vector<double> values;
+    for (std::size_t i = 0; i < rest_[j].size(); ++i) {
+      moved.push_back(rest_[j][i] + phase * scale_ * shape_[j][i]);
+      values.push_back(std::abs(phase) * scale_ * shape_[j][i].norm());
+    }
+    addLink(d, scene_.article, scene_.article.links[j], moved, {1, 1, 1, 1}, values);
+    addLink(d, scene_.article, scene_.article.links[j], rest_[j], {0.6f, 0.6f, 0.6f, 0.25f}, {});  // ghost
+  }
+  d.has_color_bar = true;
+  d.color_bar = {"|u| (m, drawn shape)", 0.0, peak_};
+  d.legend.push_back({"equilibrium (ghost)", {0.6f, 0.6f, 0.6f, 1}});
+  char title[256];
+  const double hz = solved_.modes.frequencyHz(mode_);
+  if (short_title)
+    std::snprintf(title, sizeof title, "mode %d: %.4g Hz (shape x %.3g)", mode_ + 1, hz, scale_);
+  else
+    std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz, shape x %.3g (largest translation %.3g m)",
+                  scene_.name.c_str(), mode_ + 1, hz, scale_, peak_);
+  d.title = title;
+  return d;
+}
+
+DrawList drawMode(const ArticleScene& scene, const SolvedScene& solved, int mode, double phase, double scale,
+                  double* used_scale, bool short_title) {
+  const ModeFrames frames(scene, solved, mode, scale);
+  if (used_scale) *used_scale = frames.scale();
+  return frames.frame(phase, short_title);
+}
+
+}  // namespace mmv

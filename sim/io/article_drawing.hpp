@@ -1,0 +1,59 @@
+#pragma once
+/// The article as a drawing list (sim/core/drawing.hpp) for off-screen frames:
+///
+///  - each link along its deflected centerline (the stations' Hermite interpolation,
+///    sim/model/stations.hpp, sampled 8 times per segment), with its real cross-section
+///    (rectangular tube or solid rectangle: a box of width b out of the plane and height
+///    h in it; round rod: a cylinder of its radius; sections under 15 mm are drawn 15 mm
+///    so that link 3's 2.5 mm rods show), one colour per link;
+///  - torquers as cylinders about the joint axis and tip masses as spheres, drawn with
+///    the volume of steel of their mass (7850 kg/m^3: a size, not a claim about the
+///    hardware's shape); the base excitation table as a slab under the base when the
+///    scene has one, the gimbal's rings when it names one; closures as small spheres;
+///  - the scene's sensors as glyphs by type (accelerometer: a cube; rate gyro: a
+///    cylinder; encoder: a ring around its joint), each labelled with its name.
+///
+/// A mode is drawn as the linear model has it: each centreline point of the
+/// equilibrium displaced by scale x its translation per unit modal coordinate (scale
+/// chosen so the largest is 10 % of the article's extent unless given), coloured by
+/// that translation's magnitude (a colour bar in m for the drawn shape), over a
+/// translucent grey ghost of the equilibrium; the hardware stays at the equilibrium.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/core/drawing.hpp"
+#include "sim/modes/system_modes.hpp"
+
+namespace mmv {
+
+/// The article at the state `s` (realized to Position).
+DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s);
+
+/// The frames of one mode (0-based): the shape is computed once, each frame only
+/// displaces it (an animation's 48 frames cost one Jacobian pass). `scale` > 0: metres
+/// of drawing per unit modal coordinate; 0: automatic.
+class ModeFrames {
+ public:
+  ModeFrames(const ArticleScene& scene, const SolvedScene& solved, int mode, double scale);
+  /// The mode at `phase` (-1..1: the shape's sign and size).
+  DrawList frame(double phase, bool short_title = false) const;
+  double scale() const { return scale_; }
+
+ private:
+  const ArticleScene& scene_;
+  const SolvedScene& solved_;
+  int mode_;
+  double scale_ = 1, peak_ = 0;  ///< peak_: the largest drawn translation, m.
+  std::vector<std::vector<Eigen::Vector3d>> rest_, shape_;
+  DrawList hardware_;
+};
+
+/// Mode `mode` (0-based) of a solved scene at phase `phase` (-1..1: the shape's sign and
+/// size). `scale` > 0: metres of drawing per unit modal coordinate; 0: automatic.
+/// Returns the list; `used_scale` receives the scale drawn.
+DrawList drawMode(const ArticleScene& scene, const SolvedScene& solved, int mode, double phase, double scale,
+                  double* used_scale = nullptr, bool short_title = false);
+
+}  // namespace mmv
