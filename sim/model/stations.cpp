@@ -35,45 +35,38 @@ StationPoint::StationPoint(const Model& model, const StationSpec& spec) : model_
   xi_ = std::clamp((spec.x - axis->x[k]) / ell_, 0.0, 1.0);
 }
 
-SimTK::Vec3 StationPoint::position(const SimTK::State& s) const {
-  const auto& m = model_->getMatter();
-  auto point = [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationLocationInGround(s, n.station_B); };
-  auto dir = [&](const Node& n) {
-    return 0.5 * (m.getMobilizedBody(n.left).getBodyRotation(s).x() + m.getMobilizedBody(n.right).getBodyRotation(s).x());
-  };
+SimTK::Vec3 StationPoint::interpolate(const NodeVector& point, const BodyVector& direction) const {
+  auto dir = [&](const Node& n) { return 0.5 * (direction(n.left) + direction(n.right)); };
   const Hermite h = hermite(xi_);
   const SimTK::Vec3 ea = dir(a_), eb = dir(b_);
   return h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb +
          spec_.offset * (kZ % ((1 - xi_) * ea + xi_ * eb));
+}
+
+SimTK::Vec3 StationPoint::position(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  return interpolate([&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationLocationInGround(s, n.station_B); },
+                     [&](SimTK::MobilizedBodyIndex b) { return SimTK::Vec3(m.getMobilizedBody(b).getBodyRotation(s).x()); });
 }
 
 SimTK::Vec3 StationPoint::velocity(const SimTK::State& s) const {
   const auto& m = model_->getMatter();
-  auto point = [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationVelocityInGround(s, n.station_B); };
-  auto rate = [&](SimTK::MobilizedBodyIndex b) {
-    const auto& mb = m.getMobilizedBody(b);
-    return mb.getBodyAngularVelocity(s) % mb.getBodyRotation(s).x();
-  };
-  auto dir = [&](const Node& n) { return 0.5 * (rate(n.left) + rate(n.right)); };
-  const Hermite h = hermite(xi_);
-  const SimTK::Vec3 ea = dir(a_), eb = dir(b_);
-  return h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb +
-         spec_.offset * (kZ % ((1 - xi_) * ea + xi_ * eb));
+  return interpolate([&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationVelocityInGround(s, n.station_B); },
+                     [&](SimTK::MobilizedBodyIndex b) {  // e' = w x e
+                       const auto& mb = m.getMobilizedBody(b);
+                       return SimTK::Vec3(mb.getBodyAngularVelocity(s) % mb.getBodyRotation(s).x());
+                     });
 }
 
 SimTK::Vec3 StationPoint::acceleration(const SimTK::State& s) const {
   const auto& m = model_->getMatter();
-  auto point = [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationAccelerationInGround(s, n.station_B); };
-  auto accel = [&](SimTK::MobilizedBodyIndex b) {
-    const auto& mb = m.getMobilizedBody(b);
-    const SimTK::Vec3 e = mb.getBodyRotation(s).x(), w = mb.getBodyAngularVelocity(s);
-    return mb.getBodyAngularAcceleration(s) % e + w % (w % e);
-  };
-  auto dir = [&](const Node& n) { return 0.5 * (accel(n.left) + accel(n.right)); };
-  const Hermite h = hermite(xi_);
-  const SimTK::Vec3 ea = dir(a_), eb = dir(b_);
-  return h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb +
-         spec_.offset * (kZ % ((1 - xi_) * ea + xi_ * eb));
+  return interpolate(
+      [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationAccelerationInGround(s, n.station_B); },
+      [&](SimTK::MobilizedBodyIndex b) {  // e'' = alpha x e + w x (w x e)
+        const auto& mb = m.getMobilizedBody(b);
+        const SimTK::Vec3 e = mb.getBodyRotation(s).x(), w = mb.getBodyAngularVelocity(s);
+        return SimTK::Vec3(mb.getBodyAngularAcceleration(s) % e + w % (w % e));
+      });
 }
 
 SimTK::Vec3 StationPoint::direction(const SimTK::State& s) const {

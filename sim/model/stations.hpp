@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 #include <Simbody.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,11 @@ class StationPoint {
     SimTK::MobilizedBodyIndex point_body, left, right;
     SimTK::Vec3 station_B;
   };
+  using NodeVector = std::function<SimTK::Vec3(const Node&)>;
+  using BodyVector = std::function<SimTK::Vec3(SimTK::MobilizedBodyIndex)>;
+  /// The Hermite formula (above) for a node quantity (position, velocity or
+  /// acceleration of its point) and the matching derivative of a piece's direction.
+  SimTK::Vec3 interpolate(const NodeVector& point, const BodyVector& direction) const;
   const Model* model_;
   StationSpec spec_;
   Node a_, b_;

@@ -533,25 +533,9 @@ TEST_F(Cli, TradeWritesItsStudy) {
 
 namespace {
 
-class CliStations : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mmvlab_cli_stations_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  Result run(const std::string& args) {
-    const std::string cmd = std::string(MMVLAB_BINARY) + " " + args + " >" + (dir_ / "o").string() + " 2>" + (dir_ / "e").string();
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "o"), slurp(dir_ / "e")};
-  }
-  fs::path dir_;
-};
-
 // Stations name points of the physical article: the same station gives the same
 // answer on two meshes (within the discretization error), where a hinge name moves.
-TEST_F(CliStations, ModesAndFrfAcceptStations) {
+TEST_F(Cli, ModesAndFrfAcceptStations) {
   const Result a = run("modes --json --modes 1 --segments 16 --points link1@1.83m");
   const Result b = run("modes --json --modes 1 --segments 32 --points link1@1.83m");
   ASSERT_EQ(a.code, 0) << a.err;
@@ -573,7 +557,7 @@ TEST_F(CliStations, ModesAndFrfAcceptStations) {
 }
 
 // A scene's accelerometer may sit at a station.
-TEST_F(CliStations, SensorAtAStation) {
+TEST_F(Cli, SensorAtAStation) {
   std::string text = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml");
   const auto at = text.find("point: link1.tip");
   ASSERT_NE(at, std::string::npos);
@@ -596,7 +580,7 @@ namespace {
 
 // mmvlab place-sensors on the default article: the modes below 50 Hz, EfI, files
 // written once and nothing on bad input.
-TEST_F(CliStations, PlaceSensorsOnTheDefaultArticle) {
+TEST_F(Cli, PlaceSensorsOnTheDefaultArticle) {
   const fs::path out = dir_ / "place";
   const Result r = run("place-sensors --count 10 --json --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.err;
@@ -615,7 +599,7 @@ TEST_F(CliStations, PlaceSensorsOnTheDefaultArticle) {
   EXPECT_EQ(run("place-sensors --count 5 --method dpr --modes 1-4").code, 0);
 }
 
-TEST_F(CliStations, PlaceSensorsBadInput) {
+TEST_F(Cli, PlaceSensorsBadInput) {
   const Result big = run("place-sensors --count 1000 --out " + (dir_ / "x").string());
   EXPECT_EQ(big.code, 64);
   EXPECT_NE(big.err.find("--count 1000: there are 114 candidate sensors"), std::string::npos) << big.err;
@@ -638,7 +622,7 @@ namespace {
 
 // mmvlab render: a PNG of the article, a mode, a contact sheet; bad input refused with
 // nothing written.
-TEST_F(CliStations, RenderWritesFramesAndRefusesBadInput) {
+TEST_F(Cli, RenderWritesFramesAndRefusesBadInput) {
   ::unsetenv("DISPLAY");
   const fs::path png = dir_ / "article.png", sheet = dir_ / "sheet.png";
   ASSERT_EQ(run("render --size 320x240 --out " + png.string()).code, 0);
