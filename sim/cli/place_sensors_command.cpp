@@ -1,13 +1,16 @@
 // mmvlab place-sensors: choose sensor stations for the target modes
-// (sim/modes/place_sensors.hpp), written by sim/io/placement_report.hpp, the AutoMAC
-// heat map by renders/.
+// (sim/modes/place_sensors.hpp), written by sim/io/placement_report.hpp; the AutoMAC
+// heat map and the review renders (the chosen sensors on the article and on each
+// target mode) by renders/.
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "renders/frame.hpp"
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
+#include "sim/io/article_drawing.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/placement_report.hpp"
 
@@ -29,6 +32,41 @@ std::vector<int> parseModeList(const std::string& text) {
     for (long m = a; m <= b; ++m) out.push_back(static_cast<int>(m));
   }
   return out;
+}
+
+/// The review renders: the article with the chosen sensors coloured by their score,
+/// and a contact sheet of the target modes with the sensors on them.
+void writeReviewRenders(OutputDir& out, const ArticleScene& scene, const PlacementStudy& s) {
+  const SolvedScene solved = solveScene(scene);
+  SimTK::State st = solved.equilibrium.state;
+  solved.model->getSystem().realize(st, SimTK::Stage::Position);
+  std::vector<Eigen::Vector3d> at;
+  std::vector<std::string> names;
+  std::vector<double> scores;
+  for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
+    const PlacementCandidate& c = s.candidates[s.result.kept_blocks[i]];
+    at.push_back({c.world_x, c.world_y, 0});
+    names.push_back(c.station + " " + c.axis);
+    scores.push_back(s.result.block_score[i]);
+  }
+  DrawList d = drawArticle(scene, *solved.model, st);
+  addSensorMarks(d, at, names, scores);
+  d.has_color_bar = true;
+  d.color_bar = {s.method == "effective independence" ? "EfI" : "score", 0.0, s.result.block_score.maxCoeff()};
+  d.title = strf("%s: %zu sensors by %s", scene.name.c_str(), at.size(), s.method.c_str());
+  Camera camera;
+  presetCamera("front", d.bounds(), camera);
+  render::writePng(out.stage("review_sensors.png"), render::renderFrame(d, camera, {1280, 720, 3}));
+  std::vector<cv::Mat> tiles;
+  for (int m : s.target_modes) {
+    DrawList md = ModeFrames(scene, solved, m - 1, 0.0).frame(1.0, true);
+    std::vector<std::string> bare(at.size());
+    addSensorMarks(md, at, bare);
+    Camera c;
+    presetCamera("front", md.bounds(), c);
+    tiles.push_back(render::renderFrame(md, c, {480, 320, 2}));
+  }
+  render::writePng(out.stage("review_modes.png"), render::contactSheet(tiles, std::min<int>(4, tiles.size())));
 }
 
 }  // namespace
@@ -60,6 +98,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
         render::writeHeatmapPng(out->stage("automac.png"), s.result.automac, rows, cols,
                                 strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()),
                                 "mode", "mode");
+        writeReviewRenders(*out, scene, s);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }

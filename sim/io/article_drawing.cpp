@@ -167,6 +167,20 @@ void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, cons
 
 }  // namespace
 
+void addSensorMarks(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
+                    const std::vector<double>& values) {
+  MMV_DEMAND(at.size() == names.size() && (values.empty() || values.size() == at.size()));
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    DrawItem it;
+    it.rgba = kSensor;
+    it.size = Eigen::Vector3d::Constant(0.06);
+    it.pose.translation() = at[i] + Eigen::Vector3d(0, 0, 0.04);
+    if (!values.empty()) it.value = values[i];
+    d.items.push_back(it);
+    d.labels.push_back({at[i], names[i], kSensor});
+  }
+}
+
 DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s) {
   DrawList d;
   d.title = scene.name;

@@ -31,6 +31,11 @@ namespace mmv {
 /// The article at the state `s` (realized to Position).
 DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s);
 
+/// Marks at sensor positions (world, m): cubes labelled `names`; coloured through the
+/// list's colour bar by `values` when given (one per mark), red otherwise.
+void addSensorMarks(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
+                    const std::vector<double>& values = {});
+
 /// The frames of one mode (0-based): the shape is computed once, each frame only
 /// displaces it (an animation's 48 frames cost one Jacobian pass). `scale` > 0: metres
 /// of drawing per unit modal coordinate; 0: automatic.

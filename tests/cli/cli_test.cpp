@@ -590,7 +590,8 @@ TEST_F(Cli, PlaceSensorsOnTheDefaultArticle) {
   for (const auto& f : j["target_frequencies_hz"]) EXPECT_LT(f.get<double>(), 50.0);
   EXPECT_GE(j["target_modes"].size(), 6u);
   EXPECT_GT(j["fisher_determinant"].get<double>(), 0.0);
-  for (const char* f : {"placement.json", "candidates.csv", "automac.csv", "automac.png"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const char* f : {"placement.json", "candidates.csv", "automac.csv", "automac.png", "review_sensors.png", "review_modes.png"})
+    EXPECT_TRUE(isPng(out / f) || std::string(f).find(".png") == std::string::npos) << f;
   const std::string csv = slurp(out / "candidates.csv");
   EXPECT_EQ(csv.rfind("station,link,x_along_link_m,axis,world_x_m,world_y_m,chosen,score\n", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + static_cast<long>(j["candidates"].get<int>()));
