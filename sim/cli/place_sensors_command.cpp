@@ -55,7 +55,7 @@ void writeReviewRenders(OutputDir& out, const ArticleScene& scene, const Placeme
   d.color_bar = {s.method == "effective independence" ? "EfI" : "score", 0.0, s.result.block_score.maxCoeff()};
   d.title = strf("%s: %zu sensors by %s", scene.name.c_str(), at.size(), s.method.c_str());
   Camera camera;
-  presetCamera("front", d.bounds(), camera);
+  presetCamera("front", d.bounds(), camera, d.up);
   render::writePng(out.stage("review_sensors.png"), render::renderFrame(d, camera, {1280, 720, 3}));
   std::vector<cv::Mat> tiles;
   for (int m : s.target_modes) {
@@ -63,7 +63,7 @@ void writeReviewRenders(OutputDir& out, const ArticleScene& scene, const Placeme
     std::vector<std::string> bare(at.size());
     addSensorMarks(md, at, bare);
     Camera c;
-    presetCamera("front", md.bounds(), c);
+    presetCamera("front", md.bounds(), c, md.up);
     tiles.push_back(render::renderFrame(md, c, {480, 320, 2}));
   }
   render::writePng(out.stage("review_modes.png"), render::contactSheet(tiles, std::min<int>(4, tiles.size())));

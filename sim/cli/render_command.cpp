@@ -1,15 +1,19 @@
-// mmvlab render: off-screen frames of the article (sim/io/article_drawing.hpp) drawn
-// by renders/frame.hpp: the article with its sensors, a mode, a contact sheet of
-// modes, or a mode's animated cycle, by the output's extension.
+// mmvlab render: off-screen frames of the article (sim/io/article_drawing.hpp) or the
+// HAM-SAS isolator (sim/io/hamsas_drawing.hpp) drawn by renders/frame.hpp: the still
+// scene, a mode, a contact sheet of modes, or a mode's cycle, by the output's extension.
 #include <unistd.h>
 
 #include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
 #include <iostream>
 #include <sstream>
 
 #include "renders/frame.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/article_drawing.hpp"
+#include "sim/io/hamsas_drawing.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -75,46 +79,84 @@ void writeAtomically(const std::string& path, bool force, Write write) {
 
 }  // namespace
 
+namespace {
+
+/// What a render draws, for either kind of scene: the static frame and mode frames.
+struct Drawings {
+  int modes = 0;
+  std::function<DrawList()> still;
+  std::function<DrawList(int mode, double phase, bool short_title)> mode;
+};
+
+void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings& dr) {
+  render::FrameOptions frame;
+  parseSize(args.size, frame);
+  auto cameraFor = [&](const DrawList& d) {
+    Camera camera;
+    if (!presetCamera(args.view, d.bounds(), camera, d.up))
+      throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso)");
+    return camera;
+  };
+  if (args.mode.empty()) {
+    if (ext != ".png") throw UsageError("--out " + args.out + ": a video needs --mode K (the mode's cycle)");
+    DrawList d = dr.still();
+    d.title += "  (" + args.view + " view)";
+    const cv::Mat img = render::renderFrame(d, cameraFor(d), frame);
+    writeAtomically(args.out, args.force, [&](const std::string& p) { render::writePng(p, img); });
+    return;
+  }
+  const std::vector<int> modes = parseModes(args.mode, dr.modes);
+  if (ext == ".png") {
+    std::vector<cv::Mat> tiles;
+    for (int m : modes) {
+      const DrawList d = dr.mode(m - 1, 1.0, modes.size() > 1);
+      tiles.push_back(render::renderFrame(d, cameraFor(d), frame));
+    }
+    const cv::Mat img = tiles.size() == 1 ? tiles[0] : render::contactSheet(tiles, std::min<int>(3, tiles.size()));
+    writeAtomically(args.out, args.force, [&](const std::string& p) { render::writePng(p, img); });
+    return;
+  }
+  if (modes.size() != 1) throw UsageError("--mode " + args.mode + ": a video shows one mode's cycle");
+  const Camera cam = cameraFor(dr.mode(modes[0] - 1, 1.0, false));  // one camera for every frame
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < 48; ++i) frames.push_back(render::renderFrame(dr.mode(modes[0] - 1, std::sin(2 * M_PI * i / 48), false), cam, frame));
+  writeAtomically(args.out, args.force, [&](const std::string& p) { render::writeVideo(p, frames, 24.0); });
+}
+
+}  // namespace
+
 int runRenderCommand(const RenderArgs& args) {
   return guarded([&] {
     if (args.out.empty()) throw UsageError("render: --out FILE is required (.png, .mp4 or .avi)");
     const std::string ext = extensionOf(args.out);
-    render::FrameOptions frame;
-    parseSize(args.size, frame);
-    const ArticleScene scene = loadArticleScene(args, "render");
-    const SolvedScene solved = solveScene(scene);
-    Camera camera;
-    auto cameraFor = [&](const DrawList& d) {
-      if (!presetCamera(args.view, d.bounds(), camera))
-        throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso)");
-      return camera;
-    };
-    if (args.mode.empty()) {
-      if (ext != ".png") throw UsageError("--out " + args.out + ": a video needs --mode K (the mode's cycle)");
-      SimTK::State st = solved.equilibrium.state;
-      solved.model->getSystem().realize(st, SimTK::Stage::Position);
-      DrawList d = drawArticle(scene, *solved.model, st);
-      d.title += "  (static equilibrium; " + args.view + " view)";
-      const cv::Mat img = render::renderFrame(d, cameraFor(d), frame);
-      writeAtomically(args.out, args.force, [&](const std::string& p) { render::writePng(p, img); });
+    render::FrameOptions check;
+    parseSize(args.size, check);  // a bad size is refused before any work
+    const Scene loaded = loadScene(args);
+    Drawings dr;
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
+      const HamsasModes modes = analyseHamsas(h->isolator);
+      dr.modes = static_cast<int>(modes.modes.size());
+      dr.still = [&] { return drawHamsas(*h, modes); };
+      dr.mode = [&](int m, double phase, bool short_title) { return drawHamsas(*h, modes, m, phase, args.scale, short_title); };
+      writeFrames(args, ext, dr);
     } else {
-      const std::vector<int> modes = parseModes(args.mode, static_cast<int>(solved.modes.omega2.size()));
-      if (ext == ".png") {
-        std::vector<cv::Mat> tiles;
-        for (int m : modes) {
-          const DrawList d = drawMode(scene, solved, m - 1, 1.0, args.scale, nullptr, modes.size() > 1);
-          tiles.push_back(render::renderFrame(d, cameraFor(d), frame));
-        }
-        const cv::Mat img = tiles.size() == 1 ? tiles[0] : render::contactSheet(tiles, std::min<int>(3, tiles.size()));
-        writeAtomically(args.out, args.force, [&](const std::string& p) { render::writePng(p, img); });
-      } else {
-        if (modes.size() != 1) throw UsageError("--mode " + args.mode + ": a video shows one mode's cycle");
-        const ModeFrames mode(scene, solved, modes[0] - 1, args.scale);
-        const Camera cam = cameraFor(mode.frame(1.0));  // one camera for every frame
-        std::vector<cv::Mat> frames;
-        for (int i = 0; i < 48; ++i) frames.push_back(render::renderFrame(mode.frame(std::sin(2 * M_PI * i / 48)), cam, frame));
-        writeAtomically(args.out, args.force, [&](const std::string& p) { render::writeVideo(p, frames, 24.0); });
-      }
+      const ArticleScene& scene = std::get<ArticleScene>(loaded);
+      const SolvedScene solved = solveScene(scene);
+      std::map<int, std::unique_ptr<ModeFrames>> cache;  // each mode's shape computed once
+      dr.modes = static_cast<int>(solved.modes.omega2.size());
+      dr.still = [&] {
+        SimTK::State st = solved.equilibrium.state;
+        solved.model->getSystem().realize(st, SimTK::Stage::Position);
+        DrawList d = drawArticle(scene, *solved.model, st);
+        d.title += "  (static equilibrium)";
+        return d;
+      };
+      dr.mode = [&](int m, double phase, bool short_title) {
+        auto& f = cache[m];
+        if (!f) f = std::make_unique<ModeFrames>(scene, solved, m, args.scale);
+        return f->frame(phase, short_title);
+      };
+      writeFrames(args, ext, dr);
     }
     std::cerr << "mmvlab: wrote " << args.out << '\n';
     return kOk;

@@ -16,14 +16,20 @@ Eigen::AlignedBox3d DrawList::bounds() const {
   return box;
 }
 
-bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& c) {
-  Eigen::Vector3d dir;  // from the target towards the eye
-  c.up = Eigen::Vector3d(0, 1, 0);
+bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& c, const Eigen::Vector3d& up) {
+  // Directions for +y up, then turned so that +y becomes `up` (+z up: x stays, y -> z, z -> -y).
+  Eigen::Vector3d dir, cam_up = Eigen::Vector3d::UnitY();
   if (name == "front") dir = Eigen::Vector3d(0, 0, 1);
   else if (name == "side") dir = Eigen::Vector3d(1, 0, 0);
-  else if (name == "top") dir = Eigen::Vector3d(0, 1, 0), c.up = Eigen::Vector3d(0, 0, -1);
+  else if (name == "top") dir = Eigen::Vector3d(0, 1, 0), cam_up = Eigen::Vector3d(0, 0, -1);
   else if (name == "iso") dir = Eigen::Vector3d(0.6, 0.45, 0.66).normalized();
   else return false;
+  if (up.z() > 0.5) {
+    auto turn = [](const Eigen::Vector3d& v) { return Eigen::Vector3d(v.x(), -v.z(), v.y()); };
+    dir = turn(dir);
+    cam_up = turn(cam_up);
+  }
+  c.up = cam_up;
   c.target = bounds.center();
   const double radius = std::max(0.5 * bounds.diagonal().norm(), 0.05);
   const double half = 0.5 * c.fov_deg * M_PI / 180;

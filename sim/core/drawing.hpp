@@ -48,6 +48,8 @@ struct DrawList {
   std::string title;
   bool has_color_bar = false;
   ColorBar color_bar;
+  /// The world's vertical (the article: +y, its plane of motion x-y; HAM-SAS: +z).
+  Eigen::Vector3d up = Eigen::Vector3d::UnitY();
   /// Axis-aligned bounds of everything drawn (m), for the camera presets.
   Eigen::AlignedBox3d bounds() const;
 };
@@ -58,9 +60,11 @@ struct Camera {
   double fov_deg = 30;
 };
 
-/// The presets: "front" (looking along -z at the x-y plane of motion), "side" (along
-/// -x), "top" (along +y, down), "iso". The camera frames `bounds` with a margin.
+/// The presets for a world whose vertical is `up` (+y or +z): "front" (for +y up:
+/// looking along -z at the x-y plane of motion; for +z up: along +y), "side" (along
+/// -x), "top" (down the vertical), "iso". The camera frames `bounds` with a margin.
 /// Returns false for an unknown name.
-bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& camera);
+bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& camera,
+                  const Eigen::Vector3d& up = Eigen::Vector3d::UnitY());
 
 }  // namespace mmv

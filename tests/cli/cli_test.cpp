@@ -633,6 +633,10 @@ TEST_F(Cli, RenderWritesFramesAndRefusesBadInput) {
   EXPECT_EQ(run("render --size 320x240 --out " + png.string() + " --force --mode 2 --view iso").code, 0);
   ASSERT_EQ(run("render --size 200x150 --mode 1-4 --out " + sheet.string()).code, 0);
   EXPECT_TRUE(isPng(sheet));
+  const fs::path isolator = dir_ / "hamsas.png";
+  ASSERT_EQ(run("render " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --mode 2 --size 320x240 --out " +
+                isolator.string()).code, 0);
+  EXPECT_TRUE(isPng(isolator));
   EXPECT_EQ(run("render --view underneath --out " + (dir_ / "v.png").string()).code, 64);
   EXPECT_EQ(run("render --mode 999 --out " + (dir_ / "m.png").string()).code, 64);
   EXPECT_EQ(run("render --out " + (dir_ / "m.gif").string()).code, 64);

@@ -64,6 +64,13 @@ TEST_F(Frame, PointsLandWhereTheProjectionSays) {
   }
   Camera c;
   EXPECT_FALSE(presetCamera("below", d.bounds(), c));
+  // With z up (HAM-SAS), "front" looks horizontally along +y and "top" straight down.
+  ASSERT_TRUE(presetCamera("front", d.bounds(), c, Eigen::Vector3d::UnitZ()));
+  EXPECT_LT(c.eye.y(), c.target.y());
+  EXPECT_NEAR(c.eye.z(), c.target.z(), 1e-12);
+  EXPECT_EQ(c.up, Eigen::Vector3d::UnitZ());
+  ASSERT_TRUE(presetCamera("top", d.bounds(), c, Eigen::Vector3d::UnitZ()));
+  EXPECT_GT(c.eye.z(), c.target.z());
 }
 
 // Mode 1 of the default article at phases +1 and -1: the pixel of link 2's tip on the

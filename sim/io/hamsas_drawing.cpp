@@ -1,0 +1,112 @@
+#include "sim/io/hamsas_drawing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "sim/core/errors.hpp"
+
+namespace mmv {
+namespace {
+
+const std::map<std::string, std::array<float, 4>>& groupColors() {
+  static const std::map<std::string, std::array<float, 4>> colors{
+      {"ot", {0.0f, 0.45f, 0.70f, 1}},     {"sb", {0.90f, 0.62f, 0.0f, 1}}, {"ip_leg", {0.0f, 0.62f, 0.45f, 1}},
+      {"lp", {0.80f, 0.47f, 0.65f, 1}},    {"base", {0.55f, 0.55f, 0.5f, 1}}};
+  return colors;
+}
+
+const char* groupName(const std::string& g) {
+  if (g == "ot") return "optical table";
+  if (g == "sb") return "spring box";
+  if (g == "ip_leg") return "IP legs with counterweights";
+  if (g == "lp") return "little pendulums";
+  return "base (prescribed motion)";
+}
+
+/// The uniform box with the body's mass and principal moments (world axes at design).
+Eigen::Vector3d boxOf(const SpatialBody& b) {
+  const Eigen::Vector3d I = b.inertia.diagonal();
+  Eigen::Vector3d side;
+  for (int k = 0; k < 3; ++k) {
+    const double s2 = b.mass > 0 ? 6 * (I.sum() - 2 * I[k]) / b.mass : 0.0;
+    side[k] = std::max(std::sqrt(std::max(s2, 0.0)), 0.02);
+  }
+  return side;
+}
+
+}  // namespace
+
+DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, double phase, double scale, bool short_title) {
+  const SpatialSpec& s = h.model;
+  DrawList d;
+  d.up = Eigen::Vector3d::UnitZ();
+  Eigen::VectorXd phi;
+  double k = 0, peak = 0;
+  Eigen::AlignedBox3d extent;
+  for (const auto& b : s.bodies) extent.extend(b.com);
+  if (mode >= 0) {
+    MMV_DEMAND(mode < h.solution.shapes.cols());
+    phi = h.solution.shapes.col(mode);
+    // The largest displacement of a body's corner: its translation plus its rotation
+    // times its half-diagonal.
+    for (std::size_t b = 1; b < s.bodies.size(); ++b) {
+      const int r = SpatialLinearization::row(static_cast<int>(b));
+      peak = std::max(peak, phi.segment<3>(r).norm() + phi.segment<3>(r + 3).norm() * 0.5 * boxOf(s.bodies[b]).norm());
+    }
+    k = scale > 0 ? scale : (peak > 0 ? 0.1 * std::max(extent.diagonal().norm(), 0.5) / peak : 1.0);
+  }
+  std::map<std::string, bool> seen;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    const SpatialBody& body = s.bodies[b];
+    DrawItem it;
+    it.rgba = groupColors().count(body.group) ? groupColors().at(body.group) : groupColors().at("base");
+    if (body.group == "ot") it.rgba[3] = 0.55f;  // the table would hide the spring box and the legs
+    it.size = b == 0 ? Eigen::Vector3d(1.6, 1.6, 0.05) : boxOf(body);
+    it.pose.translation() = b == 0 ? Eigen::Vector3d(body.com.x(), body.com.y(), extent.min().z() - 0.1) : body.com;
+    if (mode >= 0 && b > 0) {
+      const int r = SpatialLinearization::row(static_cast<int>(b));
+      DrawItem ghost = it;
+      ghost.rgba = {0.6f, 0.6f, 0.6f, 0.25f};
+      d.items.push_back(ghost);
+      const Eigen::Vector3d t = phase * k * phi.segment<3>(r), w = phase * k * phi.segment<3>(r + 3);
+      it.pose.translation() += t;
+      if (w.norm() > 0) it.pose.linear() = Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix();
+      it.value = t.norm();
+    }
+    d.items.push_back(it);
+    if (!seen[body.group]) {
+      d.legend.push_back({groupName(body.group), it.rgba});
+      seen[body.group] = true;
+    }
+  }
+  for (const auto& sp : s.springs) {
+    DrawItem it;
+    it.shape = DrawItem::Shape::Sphere;
+    it.size = Eigen::Vector3d::Constant(sp.joint ? 0.03 : 0.06);
+    it.rgba = sp.joint ? std::array<float, 4>{0.3f, 0.3f, 0.3f, 1} : std::array<float, 4>{0.84f, 0.37f, 0.0f, 1};
+    it.pose.translation() = sp.point;
+    d.items.push_back(it);
+  }
+  d.legend.push_back({"MGAS springs", {0.84f, 0.37f, 0.0f, 1}});
+  d.legend.push_back({"effective spherical joints", {0.3f, 0.3f, 0.3f, 1}});
+  for (const auto& sensor : s.sensors) d.labels.push_back({sensor.point, sensor.name, {0.8f, 0.1f, 0.1f, 1}});
+  char title[256];
+  if (mode < 0) {
+    std::snprintf(title, sizeof title, "%s: %zu bodies at the design configuration", scene.name.c_str(), s.bodies.size());
+  } else {
+    d.has_color_bar = true;
+    d.color_bar = {"|u| (m, drawn shape)", 0.0, k * peak};
+    d.legend.push_back({"design configuration (ghost)", {0.6f, 0.6f, 0.6f, 1}});
+    if (short_title)
+      std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s", mode + 1, h.modes[mode].frequency_hz, h.modes[mode].label.c_str());
+    else
+      std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz (%s), shape x %.3g", scene.name.c_str(), mode + 1,
+                    h.modes[mode].frequency_hz, h.modes[mode].label.c_str(), k);
+  }
+  d.title = title;
+  return d;
+}
+
+}  // namespace mmv

@@ -1,0 +1,23 @@
+#pragma once
+/// The HAM-SAS isolator (article/hamsas.hpp) as a drawing list for off-screen frames:
+/// each rigid body as the uniform box with its mass and principal moments of inertia
+/// (sides sqrt(6 (I2 + I3 - I1) / m), at least 2 cm; the base, whose motion is
+/// prescribed, as a slab under the legs), one colour per body group (optical table,
+/// spring box, IP legs with their counterweights, little pendulums), the springs' and
+/// joints' points as small spheres, the sensors labelled. A mode moves every body by
+/// scale x its translation and small rotation in the mode (scale chosen so the largest
+/// translation is 10 % of the isolator's extent unless given), coloured by that
+/// translation, over a translucent ghost.
+
+#include "sim/core/drawing.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+/// The isolator at rest (mode < 0) or mode `mode` (0-based) at `phase` (-1..1).
+/// `scale` > 0: metres of drawing per unit modal coordinate; 0: automatic.
+DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode = -1, double phase = 1.0, double scale = 0,
+                    bool short_title = false);
+
+}  // namespace mmv
