@@ -93,8 +93,24 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
   parseSize(args.size, frame);
   auto cameraFor = [&](const DrawList& d) {
     Camera camera;
+    if (args.view.rfind("sensor:", 0) == 0) {
+      // A close front view of one labelled sensor: the 0.6 m around it fill the frame.
+      const std::string name = args.view.substr(7);
+      std::string known;
+      for (const auto& l : d.labels) {
+        const std::string label = l.text.substr(0, l.text.find(' '));
+        if (label == name) {
+          presetCamera("front", Eigen::AlignedBox3d(l.at - Eigen::Vector3d::Constant(0.3), l.at + Eigen::Vector3d::Constant(0.3)),
+                       camera, d.up);
+          return camera;
+        }
+        known += (known.empty() ? "" : ", ") + label;
+      }
+      throw UsageError("--view " + args.view + ": no sensor '" + name + "' in the scene (known: " +
+                       (known.empty() ? "none" : known) + ")");
+    }
     if (!presetCamera(args.view, d.bounds(), camera, d.up))
-      throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso)");
+      throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso, sensor:NAME)");
     return camera;
   };
   if (args.mode.empty()) {

@@ -637,6 +637,11 @@ TEST_F(Cli, RenderWritesFramesAndRefusesBadInput) {
   ASSERT_EQ(run("render " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --mode 2 --size 320x240 --out " +
                 isolator.string()).code, 0);
   EXPECT_TRUE(isPng(isolator));
+  const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  EXPECT_EQ(run("render " + slew + " --view sensor:acc_link2_tip --size 320x240 --out " + (dir_ / "close.png").string()).code, 0);
+  const Result nosensor = run("render " + slew + " --view sensor:acc9 --out " + (dir_ / "v.png").string());
+  EXPECT_EQ(nosensor.code, 64);
+  EXPECT_NE(nosensor.err.find("no sensor 'acc9' in the scene (known: "), std::string::npos) << nosensor.err;
   EXPECT_EQ(run("render --view underneath --out " + (dir_ / "v.png").string()).code, 64);
   EXPECT_EQ(run("render --mode 999 --out " + (dir_ / "m.png").string()).code, 64);
   EXPECT_EQ(run("render --out " + (dir_ / "m.gif").string()).code, 64);
