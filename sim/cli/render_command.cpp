@@ -88,7 +88,7 @@ struct Drawings {
   std::function<DrawList(int mode, double phase, bool short_title)> mode;
 };
 
-void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings& dr) {
+void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings& dr, const std::vector<CameraView>& views) {
   render::FrameOptions frame;
   parseSize(args.size, frame);
   auto cameraFor = [&](const DrawList& d) {
@@ -109,8 +109,19 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
       throw UsageError("--view " + args.view + ": no sensor '" + name + "' in the scene (known: " +
                        (known.empty() ? "none" : known) + ")");
     }
+    std::string names;
+    for (const auto& v : views) {
+      if (v.name == args.view) {
+        camera.eye = {v.eye[0], v.eye[1], v.eye[2]};
+        camera.target = {v.target[0], v.target[1], v.target[2]};
+        camera.up = Eigen::Vector3d(v.up[0], v.up[1], v.up[2]).normalized();
+        camera.fov_deg = v.fov_deg;
+        return camera;
+      }
+      names += ", " + v.name;
+    }
     if (!presetCamera(args.view, d.bounds(), camera, d.up))
-      throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso, sensor:NAME)");
+      throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso, sensor:NAME" + names + ")");
     return camera;
   };
   if (args.mode.empty()) {
@@ -154,7 +165,7 @@ int runRenderCommand(const RenderArgs& args) {
       dr.modes = static_cast<int>(modes.modes.size());
       dr.still = [&] { return drawHamsas(*h, modes); };
       dr.mode = [&](int m, double phase, bool short_title) { return drawHamsas(*h, modes, m, phase, args.scale, short_title); };
-      writeFrames(args, ext, dr);
+      writeFrames(args, ext, dr, {});
     } else {
       const ArticleScene& scene = std::get<ArticleScene>(loaded);
       const SolvedScene solved = solveScene(scene);
@@ -172,7 +183,7 @@ int runRenderCommand(const RenderArgs& args) {
         if (!f) f = std::make_unique<ModeFrames>(scene, solved, m, args.scale);
         return f->frame(phase, short_title);
       };
-      writeFrames(args, ext, dr);
+      writeFrames(args, ext, dr, scene.views);
     }
     std::cerr << "mmvlab: wrote " << args.out << '\n';
     return kOk;

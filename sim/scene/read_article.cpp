@@ -1,5 +1,6 @@
 // Scene sections of an article: materials, sections, base (table, gimbal), joints,
 // links, closures, loads; the tree check.
+#include <Eigen/Dense>
 #include <set>
 
 #include "sim/core/integrators.hpp"
@@ -68,7 +69,7 @@ class SceneParser {
 
   ArticleScene parse(const YAML::Node& root, const std::string& source) {
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
-                                     "links", "closures", "loads", "damping", "simulation", "sensors"});
+                                     "links", "closures", "loads", "damping", "simulation", "sensors", "views"});
     ArticleScene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -91,11 +92,37 @@ class SceneParser {
     if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
     if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"));
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
+    if (top.count("views")) readViews(top.at("views"), scene);
     if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration);
     return scene;
   }
 
  private:
+  /// views: {NAME: {eye: [x, y, z], target: [x, y, z], up: [x, y, z], fov_deg: F}}.
+  void readViews(const YAML::Node& n, ArticleScene& scene) {
+    auto m = r_.mapping(n, "views", namesOf(n, "views"));
+    for (const auto& [name, node] : m) {
+      const std::string path = "views." + name;
+      auto v = r_.mapping(node, path, {"eye", "target", "up", "fov_deg"});
+      CameraView c;
+      c.name = name;
+      c.eye = r_.vec3(r_.require(v, node, path, "eye"), path + ".eye");
+      c.target = r_.vec3(r_.require(v, node, path, "target"), path + ".target");
+      if (v.count("up")) c.up = r_.vec3(v.at("up"), path + ".up");
+      if (v.count("fov_deg")) {
+        c.fov_deg = r_.positive(v.at("fov_deg"), path + ".fov_deg", " deg");
+        if (c.fov_deg >= 170) r_.fail(v.at("fov_deg").Mark(), path + ".fov_deg must be below 170 deg (got " + v.at("fov_deg").Scalar() + ")");
+      }
+      const Eigen::Vector3d eye(c.eye[0], c.eye[1], c.eye[2]), target(c.target[0], c.target[1], c.target[2]),
+          up(c.up[0], c.up[1], c.up[2]);
+      const Eigen::Vector3d look = target - eye;
+      if (!(look.norm() > 1e-9)) r_.fail(node.Mark(), path + ": eye and target must differ");
+      if (!(up.cross(look).norm() > 1e-9 * look.norm() * std::max(up.norm(), 1e-300)))
+        r_.fail(node.Mark(), path + ".up must not be parallel to the line of sight (or zero)");
+      scene.views.push_back(c);
+    }
+  }
+
   /// The slew the facility would make from `from` (rad) within +-range: refused here,
   /// at its key, rather than when the model is built.
   void checkSlew(const YAML::Node& n, const std::string& path, const SlewSpec& slew, double from, double range) {

@@ -58,6 +58,13 @@ struct SensorSceneSpec {
   std::string where;   ///< file:line:col, for errors found later.
 };
 
+/// A camera pose for renders (`views:`): looking from `eye` at `target`, `up` up.
+struct CameraView {
+  std::string name;
+  std::array<double, 3> eye{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};  ///< m, world.
+  double fov_deg = 30;  ///< vertical field of view.
+};
+
 /// The MMV article (or any planar article of links, joints and closures).
 struct ArticleScene {
   std::string name;
@@ -67,6 +74,7 @@ struct ArticleScene {
   std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
   SimulationSpec simulation;
   std::vector<SensorSceneSpec> sensors;
+  std::vector<CameraView> views;  ///< named camera poses for `mmvlab render --view NAME`.
 };
 
 /// The HAM-SAS seismic isolator (article/hamsas.hpp), gravity along -z.

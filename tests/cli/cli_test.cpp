@@ -642,6 +642,15 @@ TEST_F(Cli, RenderWritesFramesAndRefusesBadInput) {
   const Result nosensor = run("render " + slew + " --view sensor:acc9 --out " + (dir_ / "v.png").string());
   EXPECT_EQ(nosensor.code, 64);
   EXPECT_NE(nosensor.err.find("no sensor 'acc9' in the scene (known: "), std::string::npos) << nosensor.err;
+  // A camera pose the scene names (views:).
+  std::string withview = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv.yaml");
+  withview += "views:\n  close: {eye: [2.5, -3, 2], target: [2.5, -3, 0], fov_deg: 40}\n";
+  const fs::path vs = dir_ / "views.yaml";
+  std::ofstream(vs) << withview;
+  EXPECT_EQ(run("render " + vs.string() + " --view close --size 320x240 --out " + (dir_ / "close2.png").string()).code, 0);
+  const Result unknown_view = run("render " + vs.string() + " --view far --out " + (dir_ / "v.png").string());
+  EXPECT_EQ(unknown_view.code, 64);
+  EXPECT_NE(unknown_view.err.find("sensor:NAME, close)"), std::string::npos) << unknown_view.err;
   EXPECT_EQ(run("render --view underneath --out " + (dir_ / "v.png").string()).code, 64);
   EXPECT_EQ(run("render --mode 999 --out " + (dir_ / "m.png").string()).code, 64);
   EXPECT_EQ(run("render --out " + (dir_ / "m.gif").string()).code, 64);
