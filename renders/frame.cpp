@@ -67,87 +67,129 @@ Eigen::Matrix4d projectionMatrix(const Camera& c, double aspect) {
   return p;
 }
 
-void vertex(const Eigen::Isometry3d& T, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d w = T * p;
-  glVertex3d(w.x(), w.y(), w.z());
-}
+/// Triangles in the item's own frame (a unit shape scaled by its size): positions and
+/// normals, three vertices a triangle.
+struct Mesh {
+  std::vector<Eigen::Vector3f> p, n;
+  void quad(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, const Eigen::Vector3d& d,
+            const Eigen::Vector3d& na, const Eigen::Vector3d& nb, const Eigen::Vector3d& nc, const Eigen::Vector3d& nd) {
+    for (const Eigen::Vector3d* v : {&a, &b, &c, &a, &c, &d}) p.push_back(v->cast<float>());
+    for (const Eigen::Vector3d* v : {&na, &nb, &nc, &na, &nc, &nd}) n.push_back(v->cast<float>());
+  }
+  void triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, const Eigen::Vector3d& nn) {
+    for (const Eigen::Vector3d* v : {&a, &b, &c}) p.push_back(v->cast<float>());
+    for (int i = 0; i < 3; ++i) n.push_back(nn.cast<float>());
+  }
+};
 
-void normal(const Eigen::Isometry3d& T, const Eigen::Vector3d& n) {
-  const Eigen::Vector3d w = T.linear() * n;
-  glNormal3d(w.x(), w.y(), w.z());
-}
-
-void drawBox(const DrawItem& it) {
-  const Eigen::Vector3d h = 0.5 * it.size;
+/// A box of half-sizes 1/2 (the unit cube), flat faces.
+Mesh unitBox() {
+  Mesh m;
   static const int faces[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3}, {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
   static const double normals[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  glBegin(GL_QUADS);
+  auto corner = [](int v) { return Eigen::Vector3d((v & 1) ? 0.5 : -0.5, (v & 2) ? 0.5 : -0.5, (v & 4) ? 0.5 : -0.5); };
   for (int f = 0; f < 6; ++f) {
-    normal(it.pose, Eigen::Vector3d(normals[f][0], normals[f][1], normals[f][2]));
-    for (int v : faces[f])
-      vertex(it.pose, Eigen::Vector3d((v & 1) ? h.x() : -h.x(), (v & 2) ? h.y() : -h.y(), (v & 4) ? h.z() : -h.z()));
+    const Eigen::Vector3d nn(normals[f][0], normals[f][1], normals[f][2]);
+    m.quad(corner(faces[f][0]), corner(faces[f][1]), corner(faces[f][2]), corner(faces[f][3]), nn, nn, nn, nn);
   }
-  glEnd();
+  return m;
 }
 
-void drawCylinder(const DrawItem& it) {
+/// A cylinder of length 1 along x and diameter 1, smooth sides and flat ends.
+Mesh unitCylinder() {
   constexpr int n = 32;
-  const double l = 0.5 * it.size.x(), r = 0.5 * it.size.y();
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i <= n; ++i) {
-    const double a = 2 * M_PI * i / n, cy = std::cos(a), sz = std::sin(a);
-    normal(it.pose, Eigen::Vector3d(0, cy, sz));
-    vertex(it.pose, Eigen::Vector3d(-l, r * cy, r * sz));
-    vertex(it.pose, Eigen::Vector3d(l, r * cy, r * sz));
-  }
-  glEnd();
-  for (int side : {-1, 1}) {
-    glBegin(GL_TRIANGLE_FAN);
-    normal(it.pose, Eigen::Vector3d(side, 0, 0));
-    vertex(it.pose, Eigen::Vector3d(side * l, 0, 0));
-    for (int i = 0; i <= n; ++i) {
-      const double a = 2 * M_PI * i / n * side;
-      vertex(it.pose, Eigen::Vector3d(side * l, r * std::cos(a), r * std::sin(a)));
+  Mesh m;
+  auto ring = [](int i) { const double a = 2 * M_PI * i / n; return Eigen::Vector3d(0, 0.5 * std::cos(a), 0.5 * std::sin(a)); };
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d r0 = ring(i), r1 = ring(i + 1), l(0.5, 0, 0);
+    m.quad(r0 - l, r1 - l, r1 + l, r0 + l, 2 * r0, 2 * r1, 2 * r1, 2 * r0);
+    for (int side : {-1, 1}) {
+      const Eigen::Vector3d c = side * l, nn(side, 0, 0);
+      m.triangle(c, c + (side > 0 ? r0 : r1), c + (side > 0 ? r1 : r0), nn);
     }
-    glEnd();
   }
+  return m;
 }
 
-void drawSphere(const DrawItem& it) {
+/// A sphere of diameter 1, 16 rings of 24 segments.
+Mesh unitSphere() {
   constexpr int rings = 16, segments = 24;
-  const double r = 0.5 * it.size.x();
-  for (int i = 0; i < rings; ++i) {
-    const double a0 = M_PI * i / rings - M_PI / 2, a1 = M_PI * (i + 1) / rings - M_PI / 2;
-    glBegin(GL_QUAD_STRIP);
-    for (int j = 0; j <= segments; ++j) {
-      const double b = 2 * M_PI * j / segments;
-      for (double a : {a1, a0}) {
-        const Eigen::Vector3d n(std::cos(a) * std::cos(b), std::sin(a), std::cos(a) * std::sin(b));
-        normal(it.pose, n);
-        vertex(it.pose, r * n);
-      }
+  Mesh m;
+  auto at = [](int i, int j) {
+    const double a = M_PI * i / rings - M_PI / 2, b = 2 * M_PI * j / segments;
+    return Eigen::Vector3d(std::cos(a) * std::cos(b), std::sin(a), std::cos(a) * std::sin(b));
+  };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const Eigen::Vector3d a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      m.quad(0.5 * a, 0.5 * b, 0.5 * c, 0.5 * d, a, b, c, d);
     }
-    glEnd();
-  }
+  return m;
 }
 
-/// The colour of a value on the colour bar: OpenCV's viridis colormap.
+const Mesh& unitMesh(DrawItem::Shape shape) {
+  static const Mesh box = unitBox(), cylinder = unitCylinder(), sphere = unitSphere();
+  switch (shape) {
+    case DrawItem::Shape::Cylinder: return cylinder;
+    case DrawItem::Shape::Sphere: return sphere;
+    case DrawItem::Shape::Box: break;
+  }
+  return box;
+}
+
+/// OpenCV's viridis colormap as 256 RGB triples (looked up once).
+const std::array<std::array<float, 3>, 256>& viridis() {
+  static const std::array<std::array<float, 3>, 256> table = [] {
+    cv::Mat ramp(1, 256, CV_8UC1), colored;
+    for (int i = 0; i < 256; ++i) ramp.at<unsigned char>(i) = static_cast<unsigned char>(i);
+    cv::applyColorMap(ramp, colored, cv::COLORMAP_VIRIDIS);
+    std::array<std::array<float, 3>, 256> t{};
+    for (int i = 0; i < 256; ++i) {
+      const cv::Vec3b b = colored.at<cv::Vec3b>(i);
+      t[i] = {b[2] / 255.0f, b[1] / 255.0f, b[0] / 255.0f};
+    }
+    return t;
+  }();
+  return table;
+}
+
+/// The colour of a value on the colour bar.
 std::array<float, 4> barColor(const ColorBar& bar, double value, float alpha) {
   const double t = bar.max > bar.min ? std::clamp((value - bar.min) / (bar.max - bar.min), 0.0, 1.0) : 0.0;
-  cv::Mat v(1, 1, CV_8UC1, cv::Scalar(std::lround(255 * t))), c;
-  cv::applyColorMap(v, c, cv::COLORMAP_VIRIDIS);
-  const cv::Vec3b b = c.at<cv::Vec3b>(0);
-  return {b[2] / 255.0f, b[1] / 255.0f, b[0] / 255.0f, alpha};
+  const auto& c = viridis()[static_cast<std::size_t>(std::lround(255 * t))];
+  return {c[0], c[1], c[2], alpha};
 }
 
-void drawItem(const DrawItem& it, const DrawList& list) {
+/// Interleaved vertex data for glInterleavedArrays(GL_C4F_N3F_V3F): colour, normal, position.
+using VertexBuffer = std::vector<float>;
+
+void appendItem(VertexBuffer& vb, const DrawItem& it, const DrawList& list) {
   const std::array<float, 4> rgba = std::isfinite(it.value) ? barColor(list.color_bar, it.value, it.rgba[3]) : it.rgba;
-  glColor4f(rgba[0], rgba[1], rgba[2], rgba[3]);
-  switch (it.shape) {
-    case DrawItem::Shape::Box: drawBox(it); break;
-    case DrawItem::Shape::Cylinder: drawCylinder(it); break;
-    case DrawItem::Shape::Sphere: drawSphere(it); break;
+  const Mesh& m = unitMesh(it.shape);
+  Eigen::Vector3d scale = it.size;
+  if (it.shape == DrawItem::Shape::Sphere) scale.setConstant(it.size.x());
+  if (it.shape == DrawItem::Shape::Cylinder) scale.z() = scale.y();
+  // Positions map by R S, normals by R S^-1 (normalised by GL_NORMALIZE), in floats:
+  // the frame's precision is a pixel, far coarser than a float's.
+  const Eigen::Matrix3d R = it.pose.linear();
+  const Eigen::Matrix3f A = (R * scale.asDiagonal()).cast<float>();
+  const Eigen::Matrix3f N = (R * scale.cwiseMax(1e-12).cwiseInverse().asDiagonal()).cast<float>();
+  const Eigen::Vector3f t = it.pose.translation().cast<float>();
+  const std::size_t start = vb.size();
+  vb.resize(start + 10 * m.p.size());
+  float* out = vb.data() + start;
+  for (std::size_t i = 0; i < m.p.size(); ++i, out += 10) {
+    const Eigen::Vector3f w = A * m.p[i] + t, nn = N * m.n[i];
+    out[0] = rgba[0], out[1] = rgba[1], out[2] = rgba[2], out[3] = rgba[3];
+    out[4] = nn.x(), out[5] = nn.y(), out[6] = nn.z();
+    out[7] = w.x(), out[8] = w.y(), out[9] = w.z();
   }
+}
+
+void drawBuffer(const VertexBuffer& vb) {
+  if (vb.empty()) return;
+  glInterleavedArrays(GL_C4F_N3F_V3F, 0, vb.data());
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vb.size() / 10));
 }
 
 void setUpScene(const Camera& camera, int w, int h) {
@@ -264,20 +306,23 @@ cv::Mat renderFrame(const DrawList& list, const Camera& camera, const FrameOptio
   }
   const Context& ctx = *cached;
   setUpScene(camera, w, h);
-  for (const auto& it : list.items)
-    if (it.rgba[3] >= 1) drawItem(it, list);
+  VertexBuffer opaque, translucent;
+  for (const auto& it : list.items) appendItem(it.rgba[3] >= 1 ? opaque : translucent, it, list);
+  drawBuffer(opaque);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthMask(GL_FALSE);
-  for (const auto& it : list.items)
-    if (it.rgba[3] < 1) drawItem(it, list);
+  drawBuffer(translucent);
   glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
   glFinish();
+  // Reduce first (area averaging of the k x k samples), then convert and flip the
+  // small image: OpenGL's rows run bottom-up.
   const cv::Mat rgba(h, w, CV_8UC4, const_cast<unsigned char*>(ctx.buffer().data()));
-  cv::Mat bgr_big, flipped, out;
-  cv::cvtColor(rgba, bgr_big, cv::COLOR_RGBA2BGR);
-  cv::flip(bgr_big, flipped, 0);  // OpenGL's rows run bottom-up
-  cv::resize(flipped, out, cv::Size(o.width, o.height), 0, 0, cv::INTER_AREA);
+  cv::Mat small, bgr_small, out;
+  cv::resize(rgba, small, cv::Size(o.width, o.height), 0, 0, cv::INTER_AREA);
+  cv::cvtColor(small, bgr_small, cv::COLOR_RGBA2BGR);
+  cv::flip(bgr_small, out, 0);
   annotate(out, list, camera);
   return out;
 }
