@@ -263,13 +263,46 @@ void drawColorBar(cv::Mat& img, const ColorBar& bar) {
               cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
 }
 
+/// Where a label's text goes (its baseline's left end): beside its point, or the first
+/// place stepping down, then up, then to the left, that overlaps no label already
+/// placed (`taken`, which receives its box).
+cv::Point placeLabel(const std::string& text, const cv::Point2d& p, const cv::Size& frame, std::vector<cv::Rect>& taken) {
+  int base = 0;
+  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.42, 1, &base);
+  const int step = size.height + base + 2;
+  auto boxAt = [&](cv::Point o) { return cv::Rect(o.x, o.y - size.height - 1, size.width, step); };
+  auto free = [&](const cv::Rect& r) {
+    for (const auto& t : taken)
+      if ((r & t).area() > 0) return false;
+    return true;
+  };
+  const cv::Point right(static_cast<int>(p.x) + 6, static_cast<int>(p.y) - 6), left(static_cast<int>(p.x) - 6 - size.width, right.y);
+  cv::Point chosen = right;
+  bool found = false;
+  for (int k = 0; k < 24 && !found; ++k)
+    for (const cv::Point& side : {right, left}) {
+      const int shift = (k % 2 == 0 ? 1 : -1) * ((k + 1) / 2) * step;  // 0, -1, +1, -2, ... lines
+      const cv::Point o(side.x, side.y + shift);
+      if (o.y - size.height < 0 || o.y > frame.height || !free(boxAt(o))) continue;
+      chosen = o;
+      found = true;
+      break;
+    }
+  taken.push_back(boxAt(chosen));
+  return chosen;
+}
+
 void annotate(cv::Mat& img, const DrawList& list, const Camera& camera) {
   cv::putText(img, list.title, {14, 26}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  std::vector<cv::Rect> taken;
   for (const auto& l : list.labels) {
     cv::Point2d p;
     if (!projectPoint(camera, img.cols, img.rows, l.at, p)) continue;
     cv::circle(img, p, 3, bgr(l.rgba), -1, cv::LINE_AA);
-    cv::putText(img, l.text, p + cv::Point2d(6, -6), cv::FONT_HERSHEY_SIMPLEX, 0.42, bgr(l.rgba), 1, cv::LINE_AA);
+    const cv::Point text = placeLabel(l.text, p, img.size(), taken);
+    if (std::abs(text.y - 4 - p.y) > 8 || text.x < p.x)  // moved away: a leader line to its point
+      cv::line(img, p, cv::Point(text.x < p.x ? text.x + taken.back().width : text.x, text.y - 4), bgr(l.rgba), 1, cv::LINE_AA);
+    cv::putText(img, l.text, text, cv::FONT_HERSHEY_SIMPLEX, 0.42, bgr(l.rgba), 1, cv::LINE_AA);
   }
   int y = 50;
   for (const auto& [name, color] : list.legend) {

@@ -109,6 +109,11 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
       throw UsageError("--view " + args.view + ": no sensor '" + name + "' in the scene (known: " +
                        (known.empty() ? "none" : known) + ")");
     }
+    if (args.view == "lab") {  // the whole room, the article in it
+      if (!d.hasContext()) throw UsageError("--view lab: the scene has no lab: section (docs/scene-format.md)");
+      presetCamera("iso", d.bounds(true), camera, d.up);
+      return camera;
+    }
     std::string names;
     for (const auto& v : views) {
       if (v.name == args.view) {
@@ -121,7 +126,7 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
       names += ", " + v.name;
     }
     if (!presetCamera(args.view, d.bounds(), camera, d.up))
-      throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso, sensor:NAME" + names + ")");
+      throw UsageError("--view: unknown view '" + args.view + "' (known: front, side, top, iso, lab, sensor:NAME" + names + ")");
     return camera;
   };
   if (args.mode.empty()) {

@@ -4,16 +4,40 @@
 
 namespace mmv {
 
-Eigen::AlignedBox3d DrawList::bounds() const {
+Eigen::AlignedBox3d DrawList::bounds(bool with_context) const {
   Eigen::AlignedBox3d box;
   for (const auto& it : items) {
-    const double r = 0.5 * it.size.maxCoeff();
-    box.extend(it.pose.translation() + Eigen::Vector3d::Constant(r));
-    box.extend(it.pose.translation() - Eigen::Vector3d::Constant(r));
+    if (it.context && !with_context) continue;
+    Eigen::Vector3d half = 0.5 * it.size;
+    if (it.shape == DrawItem::Shape::Sphere) half.setConstant(0.5 * it.size.x());
+    if (it.shape == DrawItem::Shape::Cylinder) half.z() = half.y();
+    const Eigen::Vector3d extent = it.pose.linear().cwiseAbs() * half;  // the rotated box's half-extent
+    box.extend(it.pose.translation() + extent);
+    box.extend(it.pose.translation() - extent);
   }
-  for (const auto& l : labels) box.extend(l.at);
+  for (const auto& l : labels)
+    if (with_context || !l.context) box.extend(l.at);
   if (box.isEmpty()) box.extend(Eigen::Vector3d::Zero());
   return box;
+}
+
+bool DrawList::hasContext() const {
+  for (const auto& it : items)
+    if (it.context) return true;
+  return false;
+}
+
+Eigen::Isometry3d poseAlong(const Eigen::Vector3d& centre, const Eigen::Vector3d& dir) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  const Eigen::Vector3d x = dir.normalized();
+  Eigen::Vector3d z = Eigen::Vector3d::UnitZ() - x.z() * x;
+  if (z.norm() < 1e-9) z = Eigen::Vector3d::UnitY();
+  z.normalize();
+  T.linear().col(0) = x;
+  T.linear().col(1) = z.cross(x);
+  T.linear().col(2) = z;
+  T.translation() = centre;
+  return T;
 }
 
 bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& c, const Eigen::Vector3d& up) {

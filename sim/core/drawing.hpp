@@ -26,6 +26,9 @@ struct DrawItem {
   /// When set (finite), the colour comes from the list's colour bar at this value
   /// (renders/ maps it with a standard colormap) and rgba only gives the alpha.
   double value = std::numeric_limits<double>::quiet_NaN();
+  /// Surroundings (the lab's floor, platform, ceiling): drawn, but the camera presets
+  /// frame the article without them (DrawList::bounds).
+  bool context = false;
 };
 
 /// Text anchored at a world point (drawn in 2-D over the frame, with a leader dot).
@@ -33,6 +36,7 @@ struct DrawLabel {
   Eigen::Vector3d at = Eigen::Vector3d::Zero();
   std::string text;
   std::array<float, 4> rgba{0.1f, 0.1f, 0.1f, 1.0f};
+  bool context = false;  ///< as DrawItem::context.
 };
 
 /// A colour scale shown beside the frame: what the items' colours mean.
@@ -50,9 +54,15 @@ struct DrawList {
   ColorBar color_bar;
   /// The world's vertical (the article: +y, its plane of motion x-y; HAM-SAS: +z).
   Eigen::Vector3d up = Eigen::Vector3d::UnitY();
-  /// Axis-aligned bounds of everything drawn (m), for the camera presets.
-  Eigen::AlignedBox3d bounds() const;
+  /// Axis-aligned bounds of what is drawn (m), for the camera presets: the items and
+  /// labels that are not context, or everything with `with_context`.
+  Eigen::AlignedBox3d bounds(bool with_context = false) const;
+  bool hasContext() const;
 };
+
+/// A pose at `centre` with its x axis along `dir` and its z axis as near world z as
+/// possible (a beam piece, a cylinder's axis).
+Eigen::Isometry3d poseAlong(const Eigen::Vector3d& centre, const Eigen::Vector3d& dir);
 
 /// A camera looking from `eye` at `target`, `up` up, with a vertical field of view.
 struct Camera {

@@ -5,6 +5,7 @@
 
 #include "article/section.hpp"
 #include "sim/core/errors.hpp"
+#include "sim/io/facility_drawing.hpp"
 #include "sim/model/stations.hpp"
 
 namespace mmv {
@@ -18,20 +19,6 @@ const std::array<std::array<float, 4>, 7> kPalette{{{0.90f, 0.62f, 0.0f, 1}, {0.
 const std::array<float, 4> kTorquer{0.35f, 0.35f, 0.38f, 1}, kSensor{0.80f, 0.10f, 0.10f, 1}, kFixture{0.55f, 0.55f, 0.5f, 1};
 
 Eigen::Vector3d vec(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
-
-/// A pose with its x axis along `dir` and its z axis as near world z as possible.
-Eigen::Isometry3d along(const Eigen::Vector3d& centre, const Eigen::Vector3d& dir) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  const Eigen::Vector3d x = dir.normalized();
-  Eigen::Vector3d z = Eigen::Vector3d::UnitZ() - x.z() * x;
-  if (z.norm() < 1e-9) z = Eigen::Vector3d::UnitY();
-  z.normalize();
-  T.linear().col(0) = x;
-  T.linear().col(1) = z.cross(x);
-  T.linear().col(2) = z;
-  T.translation() = centre;
-  return T;
-}
 
 /// The cross-section as drawn: shape and size (height in the plane, width out of it),
 /// at least kMinSection so that every link shows.
@@ -69,7 +56,7 @@ void addLink(DrawList& d, const ArticleSpec& a, const LinkSpec& l, const std::ve
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     DrawItem it;
     it.rgba = rgba;
-    it.pose = along(0.5 * (pts[i] + pts[i + 1]), pts[i + 1] - pts[i]);
+    it.pose = poseAlong(0.5 * (pts[i] + pts[i + 1]), pts[i + 1] - pts[i]);
     sectionShape(sec, it, (pts[i + 1] - pts[i]).norm() * 1.02);  // a little overlap closes the joints between segments
     if (!values.empty()) it.value = 0.5 * (values[i] + values[i + 1]);
     d.items.push_back(it);
@@ -95,7 +82,7 @@ DrawItem lumped(const Eigen::Vector3d& at, double mass, bool sphere) {
     const double dia = std::cbrt(4 * volume / M_PI);  // length = diameter
     it.size = {dia, dia, dia};
   }
-  it.pose = along(at, Eigen::Vector3d::UnitZ());
+  it.pose = poseAlong(at, Eigen::Vector3d::UnitZ());
   return it;
 }
 
@@ -115,27 +102,7 @@ void addHardware(DrawList& d, const ArticleScene& scene, const Model& model, con
     it.pose.translation() = vec(model.findPointLocation(s, *model.findPoint(c.point)));
     d.items.push_back(it);
   }
-  const Eigen::Vector3d base(a.base.position[0], a.base.position[1], a.base.position[2]);
-  if (a.base.type == BaseType::Table) {  // schematic: a 1 m slab under the base
-    DrawItem it;
-    it.rgba = kFixture;
-    it.size = {1.0, 0.08, 1.0};
-    it.pose.translation() = base + Eigen::Vector3d(0, 0.25, 0);
-    d.items.push_back(it);
-    d.legend.push_back({"base excitation table (schematic)", kFixture});
-  }
-  if (a.base.gimbal) {  // schematic: three rings (yaw about y, pitch about z, roll about x)
-    const Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX()};
-    for (int k = 0; k < 3; ++k) {
-      DrawItem it;
-      it.shape = DrawItem::Shape::Cylinder;
-      it.rgba = {0.45f, 0.45f, 0.5f, 0.6f};
-      it.size = {0.02, 0.5 - 0.1 * k, 0.5 - 0.1 * k};
-      it.pose = along(base + Eigen::Vector3d(0, 0.12, 0), axes[k]);
-      d.items.push_back(it);
-    }
-    d.legend.push_back({"gimbal rings (schematic)", {0.45f, 0.45f, 0.5f, 1}});
-  }
+  addFacility(d, scene);
 }
 
 void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, const SimTK::State& s) {
@@ -149,7 +116,7 @@ void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, cons
       at = vec(model.findPointLocation(s, *p));
       it.shape = DrawItem::Shape::Cylinder;
       it.size = {0.02, 0.14, 0.14};
-      it.pose = along(at + Eigen::Vector3d(0, 0, 0.08), Eigen::Vector3d::UnitZ());
+      it.pose = poseAlong(at + Eigen::Vector3d(0, 0, 0.08), Eigen::Vector3d::UnitZ());
     } else {
       std::string error;
       const auto p = PointRef::resolve(model, scene.article, sensor.target, error);
@@ -157,7 +124,7 @@ void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, cons
       at = vec(p->position(s));
       it.shape = sensor.type == "rate_gyro" ? DrawItem::Shape::Cylinder : DrawItem::Shape::Box;
       it.size = Eigen::Vector3d::Constant(0.04);
-      it.pose = along(at + Eigen::Vector3d(0, 0, 0.03), vec(p->localAxis(s, 0)));
+      it.pose = poseAlong(at + Eigen::Vector3d(0, 0, 0.03), vec(p->localAxis(s, 0)));
     }
     d.items.push_back(it);
     d.labels.push_back({at, sensor.name + " (" + sensor.type + ")", kSensor});

@@ -69,7 +69,7 @@ class SceneParser {
 
   ArticleScene parse(const YAML::Node& root, const std::string& source) {
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
-                                     "links", "closures", "loads", "damping", "simulation", "sensors", "views"});
+                                     "links", "closures", "loads", "damping", "simulation", "sensors", "views", "lab"});
     ArticleScene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -93,6 +93,7 @@ class SceneParser {
     if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"));
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
     if (top.count("views")) readViews(top.at("views"), scene);
+    if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));
     if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration);
     return scene;
   }

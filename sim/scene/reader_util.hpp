@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "facility/lab.hpp"
+#include "sim/core/text.hpp"
 #include "sim/core/units.hpp"
 #include "sim/scene/scene.hpp"
 
@@ -163,6 +165,7 @@ TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std
 SlewSpec readSlew(const YamlReader& r, const YAML::Node& sn, const std::string& path);
 SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n);
 DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
+facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n);
 void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
 /// A named point of the article; the message says how points are named.
 std::string readPoint(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a);

@@ -17,6 +17,7 @@
 
 #include "article/article_spec.hpp"
 #include "article/hamsas.hpp"
+#include "facility/lab.hpp"
 #include "sim/core/errors.hpp"
 
 namespace mmv {
@@ -75,6 +76,7 @@ struct ArticleScene {
   SimulationSpec simulation;
   std::vector<SensorSceneSpec> sensors;
   std::vector<CameraView> views;  ///< named camera poses for `mmvlab render --view NAME`.
+  std::optional<facility::LabSpec> lab;  ///< `lab:`: the room, drawn by renders (none: the article alone).
 };
 
 /// The HAM-SAS seismic isolator (article/hamsas.hpp), gravity along -z.

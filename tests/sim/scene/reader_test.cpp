@@ -157,6 +157,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"view fov", "gravity: [0, -9.81, 0]",
                 "gravity: [0, -9.81, 0]\nviews:\n  wide: {eye: [0, 0, 5], target: [0, 0, 0], fov_deg: 175}",
                 "s.yaml:4:54: views.wide.fov_deg must be below 170 deg (got 175)"},
+        BadCase{"lab hole wider than the platform", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nlab: {hole_side_m: 7}",
+                "s.yaml:3:20: lab.hole_side_m: the hole (7 m) must be smaller than the platform (6.096 m x 8.8392 m)"},
+        BadCase{"lab platform above the ceiling", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nlab:\n  platform_height_m: 30",
+                "s.yaml:4:22: lab.platform_height_m: the platform (30 m, 0.3 m thick) must be below the ceiling (27.432 m)"},
+        BadCase{"lab unknown key", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nlab: {hole_m: 1}",
+                "s.yaml:3:7: unknown key 'lab.hole_m' (allowed: floor_length_m, floor_width_m, ceiling_height_m, "
+                "platform_height_m, hole_side_m, platform_length_m, platform_width_m, platform_thickness_m, "
+                "base_below_platform_m)"},
+        BadCase{"lab negative size", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nlab: {floor_width_m: -3}",
+                "s.yaml:3:22: lab.floor_width_m must be > 0 m (got -3)"},
         BadCase{"joint slew beyond a half turn", "    angle_deg: 30",
                 "    angle_deg: 30\n    slew: {to_deg: 200}",
                 "s.yaml:11:11: joints[0].slew: slew: angle 200.000000 deg is outside the joint's +-180.000000 deg"}),
@@ -166,6 +178,26 @@ INSTANTIATE_TEST_SUITE_P(
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
       return name;
     });
+
+TEST(SceneYaml, LabOnlyWhenNamedWithTheReportsDimensions) {
+  EXPECT_FALSE(parseArticle(kGood, "s.yaml").lab);
+  const ArticleScene s = parseArticle(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nlab: {}"), "s.yaml");
+  ASSERT_TRUE(s.lab);
+  // DATASHEET section 2: 53.5 ft x 29.0 ft floor, 90 ft ceiling, platform at 42.5 ft, 5 ft hole.
+  EXPECT_NEAR(s.lab->floor_length, 16.3068, 1e-12);
+  EXPECT_NEAR(s.lab->floor_width, 8.8392, 1e-12);
+  EXPECT_NEAR(s.lab->ceiling_height, 27.432, 1e-12);
+  EXPECT_NEAR(s.lab->platform_height, 12.954, 1e-12);
+  EXPECT_NEAR(s.lab->hole_side, 1.524, 1e-12);
+  const ArticleScene t = parseArticle(
+      replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nlab: {platform_height_m: 10, base_below_platform_m: 0}"),
+      "s.yaml");
+  EXPECT_EQ(t.lab->platform_height, 10.0);
+  const facility::LabLevels y = facility::labLevels(*t.lab, -1.0);
+  EXPECT_EQ(y.platform_top, -1.0);
+  EXPECT_EQ(y.floor, -11.0);
+  EXPECT_NEAR(y.ceiling, -11.0 + 27.432, 1e-12);
+}
 
 TEST(SceneYaml, GimbalOnlyWhenNamed) {
   EXPECT_FALSE(parseArticle(kGood, "s.yaml").article.base.gimbal);

@@ -1,0 +1,54 @@
+// The scene's optional `lab:` section (facility/lab.hpp): the room the article hangs
+// in, for renders and the envelope check. `lab: {}` is the report's laboratory.
+#include "sim/scene/reader_util.hpp"
+
+namespace mmv::scene_detail {
+
+facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n) {
+  struct Key {
+    const char* name;
+    double facility::LabSpec::*field;
+    bool may_be_zero;
+  };
+  static const Key keys[] = {
+      {"floor_length_m", &facility::LabSpec::floor_length, false},
+      {"floor_width_m", &facility::LabSpec::floor_width, false},
+      {"ceiling_height_m", &facility::LabSpec::ceiling_height, false},
+      {"platform_height_m", &facility::LabSpec::platform_height, false},
+      {"hole_side_m", &facility::LabSpec::hole_side, false},
+      {"platform_length_m", &facility::LabSpec::platform_length, false},
+      {"platform_width_m", &facility::LabSpec::platform_width, false},
+      {"platform_thickness_m", &facility::LabSpec::platform_thickness, false},
+      {"base_below_platform_m", &facility::LabSpec::base_below_platform, true},
+  };
+  std::vector<std::string> names;
+  for (const Key& k : keys) names.push_back(k.name);
+  const auto m = r.mapping(n, "lab", names);
+  facility::LabSpec lab;
+  for (const Key& k : keys) {
+    if (!m.count(k.name)) continue;
+    const std::string path = std::string("lab.") + k.name;
+    lab.*k.field = k.may_be_zero ? r.nonNegative(m.at(k.name), path, " m") : r.positive(m.at(k.name), path, " m");
+  }
+  // The relations between them, each reported at the key that breaks it (or the section).
+  auto at = [&](const char* key) { return m.count(key) ? m.at(key).Mark() : n.Mark(); };
+  auto need = [&](bool ok, const char* key, const std::string& what) {
+    if (!ok) r.fail(at(key), std::string("lab.") + key + ": " + what);
+  };
+  need(lab.platform_height + lab.platform_thickness < lab.ceiling_height, "platform_height_m",
+       strf("the platform (%g m, %g m thick) must be below the ceiling (%g m)", lab.platform_height,
+            lab.platform_thickness, lab.ceiling_height));
+  need(lab.platform_thickness < lab.platform_height, "platform_thickness_m",
+       strf("the platform's thickness (%g m) must be less than its height (%g m)", lab.platform_thickness,
+            lab.platform_height));
+  need(lab.hole_side < std::min(lab.platform_length, lab.platform_width), "hole_side_m",
+       strf("the hole (%g m) must be smaller than the platform (%g m x %g m)", lab.hole_side, lab.platform_length,
+            lab.platform_width));
+  need(lab.platform_length <= lab.floor_length, "platform_length_m",
+       strf("the platform (%g m) must fit over the floor (%g m)", lab.platform_length, lab.floor_length));
+  need(lab.platform_width <= lab.floor_width, "platform_width_m",
+       strf("the platform (%g m) must fit over the floor (%g m)", lab.platform_width, lab.floor_width));
+  return lab;
+}
+
+}  // namespace mmv::scene_detail

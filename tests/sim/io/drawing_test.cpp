@@ -1,0 +1,89 @@
+// The drawing lists renders are made from: what the scene names is drawn where it is,
+// and nothing it does not name.
+#include <gtest/gtest.h>
+
+#include "sim/io/article_drawing.hpp"
+#include "sim/io/facility_drawing.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+namespace {
+
+DrawList still(const ArticleScene& scene) {
+  const SolvedScene solved = solveScene(scene);
+  SimTK::State s = solved.equilibrium.state;
+  solved.model->getSystem().realize(s, SimTK::Stage::Position);
+  return drawArticle(scene, *solved.model, s);
+}
+
+bool covers(const DrawItem& it, const Eigen::Vector3d& p) {
+  if (it.shape != DrawItem::Shape::Box) return false;
+  const Eigen::Vector3d local = it.pose.inverse() * p;
+  return (local.cwiseAbs().array() <= 0.5 * it.size.array() + 1e-12).all();
+}
+
+int coveredBy(const DrawList& d, const Eigen::Vector3d& p, bool context) {
+  int n = 0;
+  for (const auto& it : d.items) n += it.context == context && covers(it, p);
+  return n;
+}
+
+ArticleScene slewScene() { return loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml"); }
+
+TEST(Drawing, LabPlatformHasItsHoleAtTheBaseAndTheFloorBelowIt) {
+  const ArticleScene scene = slewScene();
+  ASSERT_TRUE(scene.lab);
+  const facility::LabSpec& lab = *scene.lab;
+  const DrawList d = still(scene);
+  const Eigen::Vector3d base(scene.article.base.position[0], scene.article.base.position[1], scene.article.base.position[2]);
+  const double top = base.y() + lab.base_below_platform, mid = top - 0.5 * lab.platform_thickness;
+  // Inside the hole (its centre, and just inside its edge): no platform; just outside: platform.
+  EXPECT_EQ(coveredBy(d, {base.x(), mid, base.z()}, true), 0);
+  EXPECT_EQ(coveredBy(d, {base.x() + 0.49 * lab.hole_side, mid, base.z() + 0.49 * lab.hole_side}, true), 0);
+  EXPECT_EQ(coveredBy(d, {base.x() + 0.51 * lab.hole_side, mid, base.z()}, true), 1);
+  EXPECT_EQ(coveredBy(d, {base.x(), mid, base.z() - 0.51 * lab.hole_side}, true), 1);
+  EXPECT_EQ(coveredBy(d, {base.x() + 0.5 * lab.platform_length + 0.01, mid, base.z()}, true), 0);  // its far edge
+  EXPECT_EQ(coveredBy(d, {base.x(), top + 0.01, base.z() + 1}, true), 0);  // nothing of the lab above its top...
+  EXPECT_EQ(coveredBy(d, {base.x(), top - 0.01, base.z() + 1}, true), 1);  // ...and its slab below
+  // The floor 12.954 m (42.5 ft) below the platform's top, the ceiling 27.432 m (90 ft) above the floor.
+  EXPECT_EQ(coveredBy(d, {base.x() + 3, top - 12.954 - 0.01, base.z()}, true), 1);
+  EXPECT_EQ(coveredBy(d, {base.x() + 3, top - 12.954 + 0.01, base.z()}, true), 0);
+  EXPECT_EQ(coveredBy(d, {base.x() + 3, top - 12.954 + 27.432 + 0.01, base.z()}, true), 1);
+  // The table sits on the platform, over the hole.
+  EXPECT_GE(coveredBy(d, {base.x(), top + 0.05, base.z()}, false), 1);
+}
+
+TEST(Drawing, PresetsFrameTheArticleNotTheRoom) {
+  ArticleScene scene = slewScene();
+  const DrawList with = still(scene);
+  scene.lab.reset();
+  const DrawList without = still(scene);
+  EXPECT_TRUE(with.hasContext());
+  EXPECT_FALSE(without.hasContext());
+  EXPECT_LT((with.bounds().min() - without.bounds().min()).norm(), 1e-9);
+  EXPECT_LT((with.bounds().max() - without.bounds().max()).norm(), 1e-9);
+  EXPECT_GT(with.bounds(true).sizes().y(), 27.0);  // the room: floor to ceiling
+}
+
+TEST(Drawing, OnlyWhatTheSceneNames) {
+  const ArticleScene plain = loadDefaultScene();  // fixed base, no gimbal, no lab
+  ASSERT_FALSE(plain.article.base.gimbal);
+  ASSERT_FALSE(plain.lab);
+  const DrawList d = still(plain);
+  EXPECT_FALSE(d.hasContext());
+  for (const auto& [name, rgba] : d.legend) {
+    EXPECT_EQ(name.find("gimbal"), std::string::npos) << name;
+    EXPECT_EQ(name.find("table"), std::string::npos) << name;
+  }
+  const DrawList slew = still(slewScene());
+  int gimbal = 0, table = 0;
+  for (const auto& [name, rgba] : slew.legend) {
+    gimbal += name.find("gimbal") != std::string::npos;
+    table += name.find("table") != std::string::npos;
+  }
+  EXPECT_EQ(gimbal, 1);
+  EXPECT_EQ(table, 1);
+}
+
+}  // namespace
+}  // namespace mmv
