@@ -375,17 +375,82 @@ void writePng(const std::string& path, const cv::Mat& image) {
   if (!cv::imwrite(path, image)) throw std::runtime_error(path + ": cannot write the PNG");
 }
 
-void writeVideo(const std::string& path, const std::vector<cv::Mat>& frames, double fps) {
-  if (frames.empty()) throw std::runtime_error(path + ": no frames");
+VideoSink::VideoSink(const std::string& path, double fps, cv::Size size) : path_(path), size_(size) {
   const auto dot = path.rfind('.');
   const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
   int fourcc = 0;
   if (ext == ".mp4") fourcc = cv::VideoWriter::fourcc('m', 'p', '4', 'v');
   else if (ext == ".avi") fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
   else throw std::runtime_error(path + ": a video is .mp4 or .avi");
-  cv::VideoWriter writer(path, cv::CAP_FFMPEG, fourcc, fps, frames[0].size());
-  if (!writer.isOpened()) throw std::runtime_error(path + ": cannot open the video encoder");
-  for (const auto& f : frames) writer.write(f);
+  writer_ = std::make_unique<cv::VideoWriter>(path, cv::CAP_FFMPEG, fourcc, fps, size);
+  if (!writer_->isOpened()) throw std::runtime_error(path + ": cannot open the video encoder");
+}
+
+VideoSink::~VideoSink() = default;
+
+void VideoSink::write(const cv::Mat& frame) {
+  if (frame.size() != size_) throw std::runtime_error(path_ + ": a frame of another size");
+  writer_->write(frame);
+  ++frames_;
+}
+
+void writeVideo(const std::string& path, const std::vector<cv::Mat>& frames, double fps) {
+  if (frames.empty()) throw std::runtime_error(path + ": no frames");
+  VideoSink sink(path, fps, frames[0].size());
+  for (const auto& f : frames) sink.write(f);
+}
+
+namespace {
+
+/// One strip of the trace panel.
+void drawStrip(cv::Mat& img, const cv::Rect& r, const Trace& tr, double t0, double t1, double now) {
+  double lo = *std::min_element(tr.v.begin(), tr.v.end()), hi = *std::max_element(tr.v.begin(), tr.v.end());
+  if (!(hi > lo)) lo -= 1, hi += 1;
+  auto y = [&](double v) { return r.y + r.height - 1 - static_cast<int>(std::lround((v - lo) / (hi - lo) * (r.height - 1))); };
+  auto x = [&](double t) { return r.x + static_cast<int>(std::lround((t - t0) / (t1 - t0) * (r.width - 1))); };
+  cv::rectangle(img, r, cv::Scalar(200, 200, 200), 1);
+  // Per pixel column: the least and greatest sample in it, joined to the next column.
+  std::vector<double> mn(r.width, 1e300), mx(r.width, -1e300);
+  for (std::size_t i = 0; i < tr.t.size(); ++i) {
+    const int c = std::clamp(x(tr.t[i]) - r.x, 0, r.width - 1);
+    mn[c] = std::min(mn[c], tr.v[i]);
+    mx[c] = std::max(mx[c], tr.v[i]);
+  }
+  int last = -1;
+  for (int c = 0; c < r.width; ++c) {
+    if (mn[c] > mx[c]) continue;
+    const bool past = t0 + (t1 - t0) * c / std::max(1, r.width - 1) <= now;
+    const cv::Scalar colour = past ? cv::Scalar(180, 90, 20) : cv::Scalar(190, 190, 190);
+    cv::line(img, {r.x + c, y(mn[c])}, {r.x + c, y(mx[c])}, colour, 1);
+    if (last >= 0) cv::line(img, {r.x + last, y(0.5 * (mn[last] + mx[last]))}, {r.x + c, y(0.5 * (mn[c] + mx[c]))}, colour, 1);
+    last = c;
+  }
+  const int cx = x(std::clamp(now, t0, t1));
+  cv::line(img, {cx, r.y}, {cx, r.y + r.height - 1}, cv::Scalar(40, 40, 200), 1);
+  const auto it = std::upper_bound(tr.t.begin(), tr.t.end(), now);
+  const std::size_t k = it == tr.t.begin() ? 0 : static_cast<std::size_t>(it - tr.t.begin()) - 1;
+  char text[160];
+  std::snprintf(text, sizeof text, "%s: %.4g  [%.3g, %.3g]", tr.name.c_str(), tr.v[k], lo, hi);
+  cv::putText(img, text, {r.x + 4, r.y + 13}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+}
+
+}  // namespace
+
+cv::Mat tracePanel(const std::vector<Trace>& traces, double now, cv::Size size) {
+  cv::Mat img(size, CV_8UC3, cv::Scalar(255, 255, 255));
+  double t0 = 1e300, t1 = -1e300;
+  for (const auto& tr : traces)
+    if (!tr.t.empty()) t0 = std::min(t0, tr.t.front()), t1 = std::max(t1, tr.t.back());
+  if (traces.empty() || !(t1 > t0)) return img;
+  const int n = static_cast<int>(traces.size()), top = 40, bottom = 30;
+  const int strip = std::max(24, (size.height - top - bottom) / n);
+  for (int i = 0; i < n; ++i)
+    if (!traces[i].t.empty())
+      drawStrip(img, cv::Rect(8, top + i * strip, size.width - 16, strip - 8), traces[i], t0, t1, now);
+  char text[64];
+  std::snprintf(text, sizeof text, "t = %.3f s of %.3g s", now, t1);
+  cv::putText(img, text, {8, size.height - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  return img;
 }
 
 }  // namespace mmv::render

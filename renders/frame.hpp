@@ -8,10 +8,16 @@
 
 #include <opencv2/core.hpp>
 
+#include <memory>
+
 #include <string>
 #include <vector>
 
 #include "sim/core/drawing.hpp"
+
+namespace cv {
+class VideoWriter;
+}
 
 namespace mmv::render {
 
@@ -34,8 +40,39 @@ cv::Mat contactSheet(const std::vector<cv::Mat>& tiles, int columns);
 /// Writes a PNG; throws std::runtime_error when it cannot.
 void writePng(const std::string& path, const cv::Mat& image);
 
-/// Writes frames as a video: .mp4 (MPEG-4 part 2) or .avi (Motion JPEG), at `fps`.
-/// Throws std::runtime_error for another extension or when the encoder cannot open.
+/// A video written frame by frame (a long run's frames are never all in memory):
+/// .mp4 (MPEG-4 part 2) or .avi (Motion JPEG), at `fps`, every frame of `size`.
+/// Throws std::runtime_error for another extension, when the encoder cannot open, or
+/// for a frame of another size.
+class VideoSink {
+ public:
+  VideoSink(const std::string& path, double fps, cv::Size size);
+  ~VideoSink();  ///< closes the file
+  VideoSink(const VideoSink&) = delete;
+  VideoSink& operator=(const VideoSink&) = delete;
+  void write(const cv::Mat& frame);
+  int frames() const { return frames_; }
+
+ private:
+  std::string path_;
+  cv::Size size_;
+  int frames_ = 0;
+  std::unique_ptr<cv::VideoWriter> writer_;
+};
+
+/// Writes frames as a video (VideoSink).
 void writeVideo(const std::string& path, const std::vector<cv::Mat>& frames, double fps);
+
+/// A signal over time, for an inset.
+struct Trace {
+  std::string name;  ///< with its unit, e.g. "acc_link2_tip (m/s^2)".
+  std::vector<double> t, v;
+};
+
+/// A panel of `size` showing `traces`, one strip each: the whole history in grey (each
+/// pixel column spans its samples' least and greatest, so no peak is lost), the part up
+/// to `now` in colour, a cursor at `now` and the value there. Placed beside a frame
+/// (cv::hconcat), it hides none of the article.
+cv::Mat tracePanel(const std::vector<Trace>& traces, double now, cv::Size size);
 
 }  // namespace mmv::render

@@ -123,7 +123,14 @@ struct RenderArgs : SceneArgs {
   std::string size = "1280x720";
   std::string out;
   bool force = false;
+  std::string history;              ///< a `simulate --out` directory: draw the run.
+  double fps = 30, speed = 1;       ///< history videos: frames per second; run seconds per video second.
+  double at = -1;                   ///< history stills: the run time (s); < 0: the run's end.
+  std::vector<std::string> traces;  ///< history: history.csv columns (or sensor names) shown in an inset.
 };
+
+/// `render --history`: frames of a time run (sim/cli/render_history.cpp).
+void renderHistory(const RenderArgs& args, const std::string& ext);
 
 int runModesCommand(const ModesArgs& args);
 int runRenderCommand(const RenderArgs& args);

@@ -193,14 +193,20 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
 
 /// `mmvlab render` and its options.
 CLI::App* addRenderCommand(CLI::App& app, RenderArgs& r) {
-  CLI::App* c = app.add_subcommand("render", "Off-screen frames: the article with its sensors, a mode, a contact sheet, a mode's cycle");
+  CLI::App* c = app.add_subcommand("render", "Off-screen frames: the article with its sensors, a mode, a contact sheet, a mode's cycle, a time run");
   addSceneOptions(c, r);
   c->add_option("--view", r.view, "front, side, top, iso (framing the article), lab (the whole room of a scene with lab:), sensor:NAME (close up on a scene sensor), or a view the scene names (views:)")->capture_default_str();
   c->add_option("--mode", r.mode, "A mode (K) or a range (K1-K2: a contact sheet); none: the static equilibrium");
   c->add_option("--scale", r.scale, "Drawing metres per unit modal coordinate (default: the largest translation 10 % of the article)")
       ->check(CLI::PositiveNumber);
   c->add_option("--size", r.size, "WIDTHxHEIGHT in pixels")->capture_default_str();
-  c->add_option("--out", r.out, "The file: .png (a frame or a contact sheet), .mp4 or .avi (a mode's cycle)")->required();
+  c->add_option("--history", r.history, "A `mmvlab simulate --out` directory: draw the run (video, or a still --at a time)");
+  c->add_option("--fps", r.fps, "History videos: frames per second")->check(CLI::Range(1.0, 240.0))->capture_default_str();
+  c->add_option("--speed", r.speed, "History videos: run seconds per video second (0.25: slow motion)")
+      ->check(CLI::Range(1e-3, 1e3))->capture_default_str();
+  c->add_option("--at", r.at, "History stills (.png): the run time in s (default: the run's end)")->check(CLI::NonNegativeNumber);
+  c->add_option("--traces", r.traces, "History: comma-separated sensors or history.csv columns drawn in an inset")->delimiter(',');
+  c->add_option("--out", r.out, "The file: .png (a frame or a contact sheet), .mp4 or .avi (a mode's cycle or a run)")->required();
   c->add_flag("--force", r.force, "Replace the file if it exists");
   return c;
 }

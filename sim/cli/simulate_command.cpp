@@ -60,12 +60,30 @@ std::function<void(double)> progressBar() {
   };
 }
 
+/// run.json: what a run was made from, so that `render --history` can rebuild its model.
+nlohmann::ordered_json runRecord(const SimulateArgs& args, const std::string& source, const SimulationSpec& spec) {
+  nlohmann::ordered_json j;
+  j["scene_source"] = source;
+  j["scene_copy"] = "scene.yaml";
+  j["segments_override"] = args.segments;  // 0: the scene's own
+  j["no_gravity"] = args.no_gravity;
+  j["integrator"] = spec.integrator;
+  j["accuracy"] = spec.accuracy;
+  j["duration_s"] = spec.duration;
+  j["sample_rate_hz"] = spec.sample_rate_hz;
+  return j;
+}
+
 int report(const SimulateArgs& args, const std::string& name, const std::string& source, const SimulationResult& r,
-           std::vector<std::string> warnings, double size_m, OutputDir* out) {
+           std::vector<std::string> warnings, double size_m, OutputDir* out, const std::string& scene_text,
+           const SimulationSpec& spec) {
   for (const auto& w : simulationWarnings(r, size_m)) warnings.push_back(w);
   if (out) {
     std::ofstream(out->stage("history.csv"), std::ios::binary) << simulationHistoryCsv(r.record);
     std::ofstream(out->stage("summary.json"), std::ios::binary) << simulationJson(r, warnings).dump(2) << '\n';
+    std::ofstream(out->stage("scene.yaml"), std::ios::binary) << scene_text;
+    std::ofstream(out->stage("run.json"), std::ios::binary) << runRecord(args, source, spec).dump(2) << '\n';
+    if (!r.states.rows.empty()) std::ofstream(out->stage("states.csv"), std::ios::binary) << simulationHistoryCsv(r.states);
     for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
   std::cout << (args.json ? simulationJson(r, warnings).dump(2) + "\n" : simulationText(name, source, r, warnings))
@@ -83,7 +101,7 @@ int runSimulateCommand(const SimulateArgs& args) {
       applyOverrides(args, h->simulation);
       if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
       const SimulationResult r = simulate(*h, progressBar());
-      return report(args, h->name, h->source, r, {}, 0.0, out.get());
+      return report(args, h->name, h->source, r, {}, 0.0, out.get(), h->text, h->simulation);
     }
     ArticleScene& scene = std::get<ArticleScene>(loaded);
     applyOverrides(args, scene.simulation);
@@ -98,7 +116,7 @@ int runSimulateCommand(const SimulateArgs& args) {
     }
     double size = 0;
     for (const auto& l : scene.article.links) size += l.length;
-    return report(args, scene.name, scene.source, r, warnings, size, out.get());
+    return report(args, scene.name, scene.source, r, warnings, size, out.get(), scene.text, scene.simulation);
   });
 }
 

@@ -102,7 +102,11 @@ void addHardware(DrawList& d, const ArticleScene& scene, const Model& model, con
     it.pose.translation() = vec(model.findPointLocation(s, *model.findPoint(c.point)));
     d.items.push_back(it);
   }
-  addFacility(d, scene);
+  // The table (a slider along world x) carries the table and gimbal drawings.
+  Eigen::Vector3d moved = Eigen::Vector3d::Zero();
+  for (int i = 0; i < model.getNumCoordinates(); ++i)
+    if (model.getCoordinates()[i].name == "table.x") moved.x() = s.getQ()[model.getQIndex(i)];
+  addFacility(d, scene, moved);
 }
 
 void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, const SimTK::State& s) {

@@ -63,9 +63,9 @@ void addLab(DrawList& d, const facility::LabSpec& lab, const Eigen::Vector3d& ba
 
 double mountHeight(const ArticleScene& scene) { return scene.lab ? scene.lab->base_below_platform : 0.6; }
 
-void addFacility(DrawList& d, const ArticleScene& scene) {
+void addFacility(DrawList& d, const ArticleScene& scene, const Eigen::Vector3d& moved) {
   const BaseSpec& b = scene.article.base;
-  const Eigen::Vector3d base(b.position[0], b.position[1], b.position[2]);
+  const Eigen::Vector3d still(b.position[0], b.position[1], b.position[2]), base = still + moved;
   const double top = mountHeight(scene);  // the table's underside, above the base joint
   const bool table = b.type == BaseType::Table;
   if (table) {
@@ -91,7 +91,7 @@ void addFacility(DrawList& d, const ArticleScene& scene) {
   }
   if ((table || scene.lab) && hang > 0)
     d.items.push_back(cylinder(base + Eigen::Vector3d(0, 0.5 * hang, 0), Eigen::Vector3d::UnitY(), hang, 0.06, kTable));
-  if (scene.lab) addLab(d, *scene.lab, base);
+  if (scene.lab) addLab(d, *scene.lab, still);
 }
 
 }  // namespace mmv

@@ -22,7 +22,8 @@ namespace mmv {
 /// The mount's height (m): the base joint below the platform's top (or the table's underside).
 double mountHeight(const ArticleScene& scene);
 
-/// Adds the table, the gimbal, the post and, with `lab:`, the room.
-void addFacility(DrawList& d, const ArticleScene& scene);
+/// Adds the table, the gimbal, the post and, with `lab:`, the room. `moved`: the
+/// table's displacement (world, m), which carries the gimbal too; the room stays.
+void addFacility(DrawList& d, const ArticleScene& scene, const Eigen::Vector3d& moved = Eigen::Vector3d::Zero());
 
 }  // namespace mmv

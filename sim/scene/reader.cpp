@@ -21,8 +21,14 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name) {
   }
   if (!root.IsDefined() || root.IsNull())
     reader.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
-  if (root.IsMap() && root["hamsas"]) return scene_detail::readHamsasScene(reader, root, source_name);
-  return scene_detail::readArticleScene(reader, root, source_name);
+  if (root.IsMap() && root["hamsas"]) {
+    HamsasScene h = scene_detail::readHamsasScene(reader, root, source_name);
+    h.text = yaml_text;
+    return h;
+  }
+  ArticleScene a = scene_detail::readArticleScene(reader, root, source_name);
+  a.text = yaml_text;
+  return a;
 }
 
 Scene loadSceneFile(const std::string& path) {

@@ -70,6 +70,7 @@ struct CameraView {
 struct ArticleScene {
   std::string name;
   std::string source;  ///< file the scene came from, or "<default scene>".
+  std::string text;    ///< the YAML as read (a run's output directory keeps a copy).
   std::array<double, 3> gravity{0, -9.80665, 0};  ///< m/s^2 in the world frame, z = 0.
   ArticleSpec article;
   std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
@@ -83,6 +84,7 @@ struct ArticleScene {
 struct HamsasScene {
   std::string name;
   std::string source;
+  std::string text;  ///< the YAML as read.
   HamsasSpec isolator;
   SimulationSpec simulation;
   /// Time runs: the ground's (base's) motion program along world x, y or z.

@@ -46,6 +46,9 @@ class ArticleRecorder {
     addJointColumns(scene);
     addTipColumns();
     addSensors(scene);
+    r_.states.columns.push_back("time_s");
+    for (const auto& c : model_.getCoordinates())
+      r_.states.columns.push_back(c.name + (c.motion == CoordinateMotion::Rotation ? "_rad" : "_m"));
   }
 
   std::vector<double> sample(double t, const SimTK::State& st);
@@ -181,6 +184,9 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
     row.push_back(x[1]);
   }
   for (auto& live : sensors_) row.push_back(live.model.sample(sensorTruth(live, st)));
+  std::vector<double> q{t};
+  for (int i = 0; i < model_.getNumCoordinates(); ++i) q.push_back(st.getQ()[model_.getQIndex(i)]);
+  r_.states.rows.push_back(std::move(q));
   if (!model_.getClosures().empty())
     r_.constraint_drift_m = std::max(r_.constraint_drift_m, calcClosureErrors(model_, st).cwiseAbs().maxCoeff());
   return row;

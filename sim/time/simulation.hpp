@@ -58,6 +58,9 @@ struct SensorSummary {
 
 struct SimulationResult {
   SimulationRecord record;
+  /// Article runs: the time and every coordinate of the model at each sample (column
+  /// `<coordinate>_rad`, or `_m` for the table), enough to redraw the run.
+  SimulationRecord states;
   std::vector<SensorSummary> sensors;
   std::vector<JointTorqueSummary> torques;
   double initial_energy_j = 0, final_energy_j = 0;

@@ -1,0 +1,51 @@
+#pragma once
+// Internal to sim/cli: what `mmvlab render`'s still, mode and history frames share:
+// the size option, the camera a view names, and files written whole or not at all.
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "renders/frame.hpp"
+#include "sim/core/errors.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv::cli {
+
+/// "1280x720" -> width, height (16..8192 each); UsageError otherwise.
+void parseSize(const std::string& text, render::FrameOptions& o);
+
+/// The camera for `--view VIEW` on drawing `d`: a preset framing `frame` (the drawing's
+/// own bounds when empty), `lab` (the whole room), `sensor:NAME`, or a scene view.
+/// UsageError for an unknown view.
+Camera chooseCamera(const std::string& view, const DrawList& d, const std::vector<CameraView>& views,
+                    const Eigen::AlignedBox3d& frame = Eigen::AlignedBox3d());
+
+/// Writes through a temporary name in the same directory, renamed on success, so a
+/// failed or interrupted run leaves no partial file; refuses to replace a file unless
+/// `force` (OutputError, exit 73).
+template <class Write>
+void writeAtomically(const std::string& path, bool force, Write write) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  std::error_code ec;
+  if (fs::exists(target, ec) && !force) throw OutputError(path + ": exists (use --force to replace it)");
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir, ec)) throw OutputError(path + ": the directory " + dir.string() + " does not exist");
+  const fs::path tmp = dir / (".mmvlab-" + std::to_string(::getpid()) + "-" + target.filename().string());
+  try {
+    write(tmp.string());
+  } catch (const std::exception& e) {
+    fs::remove(tmp, ec);
+    throw OutputError(e.what());
+  }
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw OutputError(path + ": cannot write (" + ec.message() + ")");
+  }
+}
+
+}  // namespace mmv::cli

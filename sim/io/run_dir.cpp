@@ -1,0 +1,128 @@
+#include "sim/io/run_dir.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <algorithm>
+
+#include "sim/core/text.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+namespace {
+
+std::string readText(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw SceneFileError(path + ": not found (is the directory a `mmvlab simulate --out` run of an article?)");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  if (!in) throw SceneFileError(path + ": cannot read");
+  return os.str();
+}
+
+std::vector<std::string> splitCommas(const std::string& line) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    out.push_back(line.substr(start, comma - start));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
+
+}  // namespace
+
+int CsvTable::column(const std::string& name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+CsvTable parseNumericCsv(const std::string& text, const std::string& source) {
+  std::istringstream is(text);
+  std::string line;
+  CsvTable t;
+  if (!std::getline(is, line) || line.empty()) throw SceneError(source + ":1:1: empty (expected a header row)");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  t.columns = splitCommas(line);
+  if (t.columns.front() != "time_s") throw SceneError(source + ":1:1: the first column must be time_s (got " + t.columns.front() + ")");
+  for (int n = 2; std::getline(is, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = splitCommas(line);
+    if (cells.size() != t.columns.size())
+      throw SceneError(strf("%s:%d:1: %zu values, the header has %zu columns", source.c_str(), n, cells.size(), t.columns.size()));
+    std::vector<double> row;
+    std::size_t col = 1;
+    for (const auto& c : cells) {
+      char* end = nullptr;
+      const double v = std::strtod(c.c_str(), &end);
+      if (c.empty() || *end != '\0' || !std::isfinite(v))
+        throw SceneError(strf("%s:%d:%zu: %s is not a finite number", source.c_str(), n, col, c.c_str()));
+      row.push_back(v);
+      col += c.size() + 1;
+    }
+    if (!t.rows.empty() && !(row[0] > t.rows.back()[0]))
+      throw SceneError(strf("%s:%d:1: time %g s does not increase", source.c_str(), n, row[0]));
+    t.rows.push_back(std::move(row));
+  }
+  if (t.rows.size() < 2) throw SceneError(source + ": fewer than two rows");
+  return t;
+}
+
+void checkRunModel(const RunDir& run, const Model& model) {
+  std::vector<std::string> want{"time_s"};
+  for (const auto& c : model.getCoordinates()) want.push_back(c.name + (c.motion == CoordinateMotion::Rotation ? "_rad" : "_m"));
+  if (want == run.states.columns) return;
+  throw SceneError(strf("%s/states.csv: the run has %zu coordinates, the model of %s has %zu (or other names): "
+                        "render a run with the scene and segments it was made with (its scene.yaml and run.json)",
+                        run.dir.c_str(), run.states.columns.size() - 1, run.scene.source.c_str(), want.size() - 1));
+}
+
+void setRunCoordinates(const CsvTable& states, double t, const Model& model, SimTK::State& s) {
+  const auto& rows = states.rows;
+  auto it = std::upper_bound(rows.begin(), rows.end(), t, [](double v, const std::vector<double>& r) { return v < r[0]; });
+  const std::size_t hi = std::clamp<std::size_t>(static_cast<std::size_t>(it - rows.begin()), 1, rows.size() - 1), lo = hi - 1;
+  const double w = std::clamp((t - rows[lo][0]) / (rows[hi][0] - rows[lo][0]), 0.0, 1.0);
+  for (int i = 0; i < model.getNumCoordinates(); ++i)
+    s.updQ()[model.getQIndex(i)] = (1 - w) * rows[lo][i + 1] + w * rows[hi][i + 1];
+  s.setTime(t);
+  model.getSystem().realize(s, SimTK::Stage::Position);
+}
+
+RunDir readRunDir(const std::string& dir, const std::string& scene_path) {
+  RunDir r;
+  r.dir = dir;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) throw SceneFileError(dir + ": not a directory (--history takes a `mmvlab simulate --out` directory)");
+  const std::string run_json = dir + "/run.json";
+  nlohmann::json run;
+  try {
+    run = nlohmann::json::parse(readText(run_json));
+    r.segments_override = run.at("segments_override").get<int>();
+  } catch (const nlohmann::json::exception& e) {
+    throw SceneError(run_json + ": not a run record (" + e.what() + ")");
+  }
+  const std::string scene_file = scene_path.empty() ? dir + "/scene.yaml" : scene_path;
+  Scene scene = scene_path.empty() ? parseScene(readText(scene_file), scene_file) : loadSceneFile(scene_file);
+  auto* a = std::get_if<ArticleScene>(&scene);
+  if (!a) throw SceneError(scene_file + ": a HAM-SAS run; render --history draws article runs only");
+  r.scene = std::move(*a);
+  if (r.segments_override > 0) overrideSegments(r.scene, r.segments_override);
+  r.history = parseNumericCsv(readText(dir + "/history.csv"), dir + "/history.csv");
+  r.states = parseNumericCsv(readText(dir + "/states.csv"), dir + "/states.csv");
+  if (r.history.rows.size() != r.states.rows.size())
+    throw SceneError(strf("%s: history.csv has %zu rows, states.csv %zu: not one run", dir.c_str(), r.history.rows.size(),
+                          r.states.rows.size()));
+  return r;
+}
+
+}  // namespace mmv

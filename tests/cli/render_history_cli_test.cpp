@@ -1,0 +1,67 @@
+// mmvlab render --history: a simulate run redrawn as a video or a still, with sensor
+// traces, and the mistakes a user makes with it refused without a partial file.
+#include <opencv2/videoio.hpp>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+TEST_F(Cli, RenderHistoryDrawsASimulateRun) {
+  ::unsetenv("DISPLAY");
+  const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const fs::path run_dir = dir_ / "run";
+  ASSERT_EQ(run("simulate " + slew + " --segments 2 --duration 0.5 --sample-rate 250 --out " + run_dir.string()).code, 0);
+  for (const char* f : {"history.csv", "states.csv", "scene.yaml", "run.json", "summary.json"})
+    EXPECT_TRUE(fs::exists(run_dir / f)) << f;
+  // A video: 0.5 s at 30 frames/s and speed 1 is 16 frames; at speed 0.5, 31.
+  const fs::path video = dir_ / "slew.avi";
+  const Result v = run("render --history " + run_dir.string() + " --traces enc1,acc_link2_tip --size 320x240 --out " +
+                       video.string());
+  ASSERT_EQ(v.code, 0) << v.err;
+  cv::VideoCapture in(video.string());
+  ASSERT_TRUE(in.isOpened());
+  EXPECT_EQ(static_cast<int>(in.get(cv::CAP_PROP_FRAME_COUNT)), 16);
+  EXPECT_EQ(static_cast<int>(in.get(cv::CAP_PROP_FRAME_WIDTH)), 320);
+  const fs::path slow = dir_ / "slow.avi";
+  ASSERT_EQ(run("render --history " + run_dir.string() + " --speed 0.5 --size 160x120 --out " + slow.string()).code, 0);
+  EXPECT_EQ(static_cast<int>(cv::VideoCapture(slow.string()).get(cv::CAP_PROP_FRAME_COUNT)), 31);
+  // A still at a time; the same run and time give the same pixels.
+  const fs::path a = dir_ / "a.png", b = dir_ / "b.png", end = dir_ / "end.png";
+  ASSERT_EQ(run("render --history " + run_dir.string() + " --at 0.3 --size 320x240 --out " + a.string()).code, 0);
+  ASSERT_EQ(run("render --history " + run_dir.string() + " --at 0.3 --size 320x240 --out " + b.string()).code, 0);
+  EXPECT_TRUE(isPng(a));
+  EXPECT_EQ(slurp(a), slurp(b));
+  ASSERT_EQ(run("render --history " + run_dir.string() + " --size 320x240 --out " + end.string()).code, 0);
+  EXPECT_NE(slurp(a), slurp(end));  // the slew moved the article between 0.3 s and the end
+}
+
+TEST_F(Cli, RenderHistoryRefusesWhatItCannotDraw) {
+  const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const fs::path run_dir = dir_ / "run", out = dir_ / "x.png";
+  ASSERT_EQ(run("simulate " + slew + " --segments 2 --duration 0.2 --sample-rate 250 --out " + run_dir.string()).code, 0);
+  const Result missing = run("render --history " + (dir_ / "nothing").string() + " --out " + out.string());
+  EXPECT_EQ(missing.code, 66);
+  EXPECT_NE(missing.err.find("not a directory"), std::string::npos) << missing.err;
+  const Result other = run("render " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv.yaml").string() + " --history " +
+                           run_dir.string() + " --out " + out.string());
+  EXPECT_EQ(other.code, 65);  // another scene's model
+  EXPECT_NE(other.err.find("render a run with the scene and segments it was made with"), std::string::npos) << other.err;
+  const Result trace = run("render --history " + run_dir.string() + " --traces acc9 --out " + out.string());
+  EXPECT_EQ(trace.code, 64);
+  EXPECT_NE(trace.err.find("no sensor or column 'acc9'"), std::string::npos) << trace.err;
+  EXPECT_EQ(run("render --history " + run_dir.string() + " --at 5 --out " + out.string()).code, 64);
+  EXPECT_EQ(run("render --history " + run_dir.string() + " --mode 1 --out " + out.string()).code, 64);
+  EXPECT_EQ(run("render --history " + run_dir.string() + " --segments 4 --out " + out.string()).code, 64);
+  EXPECT_EQ(run("render --traces enc1 --out " + out.string()).code, 64);
+  // A damaged states.csv is named at its line.
+  std::ofstream(run_dir / "states.csv", std::ios::app) << "0.1,oops\n";
+  const Result bad = run("render --history " + run_dir.string() + " --out " + out.string());
+  EXPECT_EQ(bad.code, 65);
+  EXPECT_NE(bad.err.find("states.csv:"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(out));
+  for (const auto& e : fs::directory_iterator(dir_)) EXPECT_EQ(e.path().filename().string().rfind(".mmvlab-", 0), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing

@@ -1,0 +1,68 @@
+// A time run read back for renders: its recorded coordinates put the model where the
+// run had it (the tips land on the history's tip columns), and bad files are named.
+#include <gtest/gtest.h>
+
+#include "sim/io/run_dir.hpp"
+#include "sim/io/simulation_report.hpp"
+#include "sim/model/article_builder.hpp"
+
+namespace mmv {
+namespace {
+
+TEST(RunDir, RecordedCoordinatesPutTheTipsWhereTheRunHadThem) {
+  ArticleScene scene = loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml");
+  overrideSegments(scene, 2);
+  scene.simulation.duration = 0.4;
+  scene.simulation.sample_rate_hz = 250;
+  const SimulationResult r = simulate(scene);
+  RunDir run;
+  run.dir = "<test>";
+  run.scene = scene;
+  run.history = parseNumericCsv(simulationHistoryCsv(r.record), "history.csv");
+  run.states = parseNumericCsv(simulationHistoryCsv(r.states), "states.csv");
+  const auto model = buildArticleModel(scene);
+  EXPECT_NO_THROW(checkRunModel(run, *model));
+  SimTK::State s = model->getReferenceState();
+  int checked = 0;
+  for (std::size_t k = 0; k < run.history.rows.size(); k += 10) {
+    setRunCoordinates(run.states, run.history.rows[k][0], *model, s);
+    for (const char* tip : {"link2.tip", "link3a.tip"}) {
+      const SimTK::Vec3 x = model->findPointLocation(s, *model->findPoint(tip));
+      const int cx = run.history.column(std::string(tip) + "_x_m"), cy = run.history.column(std::string(tip) + "_y_m");
+      ASSERT_GT(cx, 0);
+      EXPECT_NEAR(x[0], run.history.rows[k][static_cast<std::size_t>(cx)], 1e-8) << tip << " at row " << k;
+      EXPECT_NEAR(x[1], run.history.rows[k][static_cast<std::size_t>(cy)], 1e-8) << tip << " at row " << k;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 20);
+  // Between two samples: the coordinates halfway.
+  const auto& a = run.states.rows[3], &b = run.states.rows[4];
+  setRunCoordinates(run.states, 0.5 * (a[0] + b[0]), *model, s);
+  for (int i = 0; i < model->getNumCoordinates(); ++i)
+    EXPECT_NEAR(s.getQ()[model->getQIndex(i)], 0.5 * (a[i + 1] + b[i + 1]), 1e-15);
+  // Another mesh is another model: refused.
+  ArticleScene finer = scene;
+  overrideSegments(finer, 3);
+  EXPECT_THROW(checkRunModel(run, *buildArticleModel(finer)), SceneError);
+}
+
+TEST(RunDir, MalformedCsvIsNamedAtItsLineAndColumn) {
+  auto message = [](const std::string& text) {
+    try {
+      parseNumericCsv(text, "h.csv");
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("time_s,a\n0,1\n0.1,nan\n"), "h.csv:3:5: nan is not a finite number");
+  EXPECT_EQ(message("time_s,a\n0,1\n0.1\n"), "h.csv:3:1: 1 values, the header has 2 columns");
+  EXPECT_EQ(message("time_s,a\n0,1\n0,2\n"), "h.csv:3:1: time 0 s does not increase");
+  EXPECT_EQ(message("t,a\n0,1\n"), "h.csv:1:1: the first column must be time_s (got t)");
+  EXPECT_EQ(message(""), "h.csv:1:1: empty (expected a header row)");
+  EXPECT_EQ(message("time_s,a\n0,1\n"), "h.csv: fewer than two rows");
+}
+
+}  // namespace
+}  // namespace mmv
