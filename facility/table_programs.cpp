@@ -59,8 +59,19 @@ class Sweep : public TableProgram {
  public:
   Sweep(double a, double f0, double f1, double T, bool log) : a_(a), f0_(f0), f1_(f1), T_(T), log_(log) {}
   // Phase, its rate and its acceleration: phi, phi', phi''.
+  /// Outside [0, T] the sweep dwells at its end frequencies with a continuous phase, so
+  /// position, velocity and acceleration stay one motion (clamping t alone held the
+  /// position while the velocity went on: a contradiction the integrators crawled through).
   void phase(double t, double& p, double& dp, double& ddp) const {
-    t = std::clamp(t, 0.0, T_);
+    if (t < 0) {
+      p = 2 * M_PI * f0_ * t, dp = 2 * M_PI * f0_, ddp = 0;
+      return;
+    }
+    if (t > T_) {
+      phase(T_, p, dp, ddp);
+      p += 2 * M_PI * f1_ * (t - T_), dp = 2 * M_PI * f1_, ddp = 0;
+      return;
+    }
     if (log_) {
       const double k = std::log(f1_ / f0_) / T_;
       p = 2 * M_PI * f0_ * (std::exp(k * t) - 1) / k;

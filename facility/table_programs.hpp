@@ -35,7 +35,8 @@ class TableProgram {
 /// velocity jump that rings a structure's high modes.
 std::unique_ptr<TableProgram> sineDwell(double amplitude, double frequency_hz, double duration, double ramp = 0);
 /// x = A sin(phi(t)) with the instantaneous frequency phi'/(2 pi) going from f0 to f1
-/// over T, linearly or exponentially (log sweep).
+/// over T, linearly or exponentially (log sweep); before 0 and after T it dwells at f0
+/// and f1 (the phase continuous), as a sine dwell runs on past its duration.
 std::unique_ptr<TableProgram> sineSweep(double amplitude, double f0_hz, double f1_hz, double duration, bool logarithmic);
 /// Band-limited random: n_lines sinusoids of equal amplitude, evenly spaced between
 /// f_lo and f_hi, with phases drawn from a seeded generator; RMS displacement `rms`.
