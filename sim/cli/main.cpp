@@ -159,7 +159,7 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
   tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
   tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
   tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);
-  tp->add_option("--points", tr.points, "Comma-separated link tips the error is scored at, e.g. link3a.tip (default: every tip)")
+  tp->add_option("--points", tr.points, "Comma-separated link tips or stations the error is scored at, e.g. link3a.tip,link1@0.5 (default: every tip)")
       ->delimiter(',');
   tp->add_option("--target-error", tr.target_error, "Error to meet, m (the cheapest run within it is named)")
       ->capture_default_str()

@@ -11,6 +11,7 @@
 #include "sim/model/article_builder.hpp"
 #include "facility/sensors.hpp"
 #include "sim/model/stations.hpp"
+#include "sim/scene/stations.hpp"
 #include "sim/statics/closures.hpp"
 #include "sim/time/run_integrator.hpp"
 #include "sim/statics/statics.hpp"
@@ -44,7 +45,7 @@ class ArticleRecorder {
     r_.record.columns.push_back("time_s");
     addTableColumns();
     addJointColumns(scene);
-    addTipColumns();
+    addTipColumns(scene);
     addSensors(scene);
     r_.states.columns.push_back("time_s");
     for (const auto& c : model_.getCoordinates())
@@ -65,7 +66,7 @@ class ArticleRecorder {
  private:
   void addTableColumns();
   void addJointColumns(const ArticleScene& scene);
-  void addTipColumns();
+  void addTipColumns(const ArticleScene& scene);
   void addSensors(const ArticleScene& scene);
   double sensorTruth(const LiveSensor& live, const SimTK::State& st) const;
 
@@ -74,6 +75,7 @@ class ArticleRecorder {
   int table_ = -1;
   std::vector<int> joints_;
   std::vector<const NamedPoint*> tips_;
+  std::vector<PointRef> stations_;  ///< scored stations, after the tips
   std::vector<LiveSensor> sensors_;
 };
 
@@ -107,15 +109,27 @@ void ArticleRecorder::addJointColumns(const ArticleScene& scene) {
   }
 }
 
-void ArticleRecorder::addTipColumns() {
+void ArticleRecorder::addTipColumns(const ArticleScene& scene) {
   auto& cols = r_.record.columns;
+  auto add = [&](const std::string& name) {
+    r_.record.scored.push_back({name, {static_cast<int>(cols.size()), static_cast<int>(cols.size()) + 1}});
+    cols.push_back(name + "_x_m");
+    cols.push_back(name + "_y_m");
+  };
   for (const auto& p : model_.getPoints())
     if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0) {
       tips_.push_back(&p);
-      r_.record.scored.push_back({p.name, {static_cast<int>(cols.size()), static_cast<int>(cols.size()) + 1}});
-      cols.push_back(p.name + "_x_m");
-      cols.push_back(p.name + "_y_m");
+      add(p.name);
     }
+  // Stations the scene (or a trade) scores: recorded beside the tips.
+  for (const auto& name : scene.simulation.score_points) {
+    if (!isStationName(name)) continue;
+    std::string error;
+    auto ref = PointRef::resolve(model_, scene.article, name, error);
+    if (!ref) throw SceneError(scene.simulation.score_where + ": simulation.score_points: '" + name + "': " + error);
+    stations_.push_back(std::move(*ref));
+    add(name);
+  }
 }
 
 /// Sensors: true signal -> facility model -> column.
@@ -180,6 +194,11 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
   }
   for (const NamedPoint* p : tips_) {
     const SimTK::Vec3 x = model_.findPointLocation(st, *p);
+    row.push_back(x[0]);
+    row.push_back(x[1]);
+  }
+  for (const auto& p : stations_) {
+    const SimTK::Vec3 x = p.position(st);
     row.push_back(x[0]);
     row.push_back(x[1]);
   }

@@ -5,6 +5,7 @@
 
 #include "article/article_spec.hpp"
 #include "sim/core/integrators.hpp"
+#include "sim/scene/stations.hpp"
 
 namespace mmv {
 namespace {
@@ -46,6 +47,10 @@ TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
   for (const auto& name : articlePointNames(scene.article))
     if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tip") == 0) p.scorable.push_back(name);
   p.scorable_kind = "link tip";
+  const ArticleSpec article = scene.article;
+  p.also_scores = [article](const std::string& name, std::string& error) {
+    return isStationName(name) && parseStation(name, article, error).has_value();
+  };
   p.run = [scene](const SimulationSpec& spec, int segments) {
     ArticleScene s = scene;
     s.simulation = spec;
@@ -60,14 +65,18 @@ TradeStudy runTrade(const TradeProblem& problem, const TradeOptions& options) {
   const SimulationSpec& spec0 = problem.simulation;
   const bool from_scene = o.points.empty() && !spec0.score_points.empty();
   if (from_scene) o.points = spec0.score_points;
-  for (const auto& p : o.points)
-    if (std::find(problem.scorable.begin(), problem.scorable.end(), p) == problem.scorable.end()) {
-      std::string known;
-      for (const auto& t : problem.scorable) known += (known.empty() ? "" : ", ") + t;
-      const std::string what = "'" + p + "' is not a " + problem.scorable_kind + " of the scene (known: " + known + ")";
-      if (from_scene) throw SceneError(spec0.score_where + ": simulation.score_points: " + what);
-      throw UsageError("--points: " + what);
-    }
+  for (const auto& p : o.points) {
+    if (std::find(problem.scorable.begin(), problem.scorable.end(), p) != problem.scorable.end()) continue;
+    std::string error;
+    if (problem.also_scores && problem.also_scores(p, error)) continue;
+    std::string known;
+    for (const auto& t : problem.scorable) known += (known.empty() ? "" : ", ") + t;
+    if (problem.also_scores) known += ", or a station <link>@<m>m or <link>@<fraction>";
+    const std::string what = error.empty() ? "'" + p + "' is not a " + problem.scorable_kind + " of the scene (known: " + known + ")"
+                                           : "'" + p + "': " + error;
+    if (from_scene) throw SceneError(spec0.score_where + ": simulation.score_points: " + what);
+    throw UsageError("--points: " + what);
+  }
   TradeStudy study;
   study.scene_name = problem.scene_name;
   study.points = o.points;
@@ -76,6 +85,7 @@ TradeStudy runTrade(const TradeProblem& problem, const TradeOptions& options) {
   study.check_integrator = problem.check_integrator;
   auto run = [&](int segments, const std::string& integrator, double accuracy) {
     SimulationSpec spec = spec0;
+    spec.score_points = o.points;  // every run records the points scored (stations among them)
     spec.integrator = integrator;
     spec.accuracy = accuracy;
     // The scene's absolute tolerance applies to SUNDIALS' methods only.

@@ -61,6 +61,9 @@ struct TradeProblem {
   SimulationSpec simulation;            ///< the scene's settings (duration applied).
   std::vector<std::string> scorable;    ///< the names a trade can score.
   std::string scorable_kind;            ///< "link tip", "scored body": for messages.
+  /// Other names it can score (the article's stations, `link1@0.75`): true, or false
+  /// with `error` saying why; none: only `scorable`.
+  std::function<bool(const std::string& name, std::string& error)> also_scores;
   std::string reference_integrator = "cpodes", check_integrator = "cvode_bdf";
   bool has_segments = true;             ///< rigid bodies only: no segment ladder.
   /// Runs with `spec` at `segments` per link (0: the scene's).

@@ -97,5 +97,33 @@ TEST(Trade, ErrorAtChosenPoints) {
   }
 }
 
+// A trade scores stations too (the physical article, not the mesh): the station at
+// link 1's far end is its tip, so its errors are the tip's; a station off the link is
+// refused before anything runs, with the station's own message.
+TEST(Trade, ScoresStations) {
+  const ArticleScene s = shortSlew(0.3);
+  TradeOptions o;
+  o.integrators = {"cpodes"};
+  o.accuracies = {1e-3, 1e-5};
+  o.segments = {};
+  o.points = {"link1.tip"};
+  const TradeStudy tip = runTrade(articleTradeProblem(s), o);
+  o.points = {"link1@1"};
+  const TradeStudy station = runTrade(articleTradeProblem(s), o);
+  ASSERT_EQ(tip.runs.size(), station.runs.size());
+  for (std::size_t i = 0; i < tip.runs.size(); ++i) {
+    EXPECT_GT(station.runs[i].error_m, 0.0);
+    EXPECT_NEAR(station.runs[i].error_m, tip.runs[i].error_m, 1e-12 + 1e-9 * tip.runs[i].error_m);
+  }
+  o.points = {"link1@3m"};
+  try {
+    runTrade(articleTradeProblem(s), o);
+    ADD_FAILURE() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--points: 'link1@3m': "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("outside link1"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace mmv
