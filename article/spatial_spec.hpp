@@ -9,6 +9,9 @@
 /// small rotation vector (rx, ry, rz), world axes.
 
 #include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -67,5 +70,18 @@ struct SpatialSpec {
   int output_body = 1;  ///< the body whose motion is the transmissibility output (the optical table).
   int bodyIndex(const std::string& name) const;
 };
+
+/// The sides (m, world axes) of the uniform box with the body's mass and principal
+/// moments, s_k^2 = 6 (I_1 + I_2 + I_3 - 2 I_k) / m, at least 2 cm: how renders draw
+/// the body, and where sensor candidates sit on it (its centre and corners).
+inline Eigen::Vector3d equivalentBox(const SpatialBody& b) {
+  const Eigen::Vector3d I = b.inertia.diagonal();
+  Eigen::Vector3d side;
+  for (int k = 0; k < 3; ++k) {
+    const double s2 = b.mass > 0 ? 6 * (I.sum() - 2 * I[k]) / b.mass : 0.0;
+    side[k] = std::max(std::sqrt(std::max(s2, 0.0)), 0.02);
+  }
+  return side;
+}
 
 }  // namespace mmv

@@ -3,6 +3,7 @@
 // heat map and the review renders (the chosen sensors on the article and on each
 // target mode) by renders/.
 #include <fstream>
+#include <optional>
 #include <iostream>
 #include <sstream>
 
@@ -10,7 +11,9 @@
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
+#include "sim/hamsas/hamsas_placement.hpp"
 #include "sim/io/article_drawing.hpp"
+#include "sim/io/hamsas_drawing.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/placement_report.hpp"
 
@@ -69,11 +72,43 @@ void writeReviewRenders(OutputDir& out, const ArticleScene& scene, const Placeme
   render::writePng(out.stage("review_modes.png"), render::contactSheet(tiles, std::min<int>(4, tiles.size())));
 }
 
+/// The same for the isolator: the chosen points on its bodies, and on each target mode.
+void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const HamsasModes& h, const PlacementStudy& s) {
+  std::vector<Eigen::Vector3d> at;
+  std::vector<std::string> names;
+  std::vector<double> scores;
+  for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
+    const PlacementCandidate& c = s.candidates[s.result.kept_blocks[i]];
+    at.push_back({c.world_x, c.world_y, c.world_z});
+    names.push_back(c.station + " " + c.axis);
+    scores.push_back(s.result.block_score[i]);
+  }
+  DrawList d = drawHamsas(scene, h);
+  d.labels.clear();  // the scene's own sensors would crowd the chosen ones
+  addSensorMarks(d, at, names, scores);
+  d.has_color_bar = true;
+  d.color_bar = {s.method == "effective independence" ? "EfI" : "score", 0.0, s.result.block_score.maxCoeff()};
+  d.title = strf("%s: %zu sensors by %s", scene.name.c_str(), at.size(), s.method.c_str());
+  Camera camera;
+  presetCamera("iso", d.bounds(), camera, d.up);
+  render::writePng(out.stage("review_sensors.png"), render::renderFrame(d, camera, {1280, 720, 3}));
+  std::vector<cv::Mat> tiles;
+  for (int m : s.target_modes) {
+    DrawList md = drawHamsas(scene, h, m - 1, 1.0, 0.0, true);
+    md.labels.clear();
+    addSensorMarks(md, at, std::vector<std::string>(at.size()));
+    Camera c;
+    presetCamera("iso", md.bounds(), c, md.up);
+    tiles.push_back(render::renderFrame(md, c, {480, 320, 2}));
+  }
+  render::writePng(out.stage("review_modes.png"), render::contactSheet(tiles, std::min<int>(4, tiles.size())));
+}
+
 }  // namespace
 
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "place-sensors");
+    const Scene loaded = loadScene(args);
     PlacementOptions o;
     if (!args.modes.empty()) o.modes = parseModeList(args.modes);
     o.below_hz = args.below_hz;
@@ -84,7 +119,11 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       throw UsageError("--method: unknown method '" + args.method + "' (known: efi, mke, dpr)");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const PlacementStudy s = runPlacement(scene, o);
+    const auto* article = std::get_if<ArticleScene>(&loaded);
+    const auto* isolator = std::get_if<HamsasScene>(&loaded);
+    std::optional<HamsasModes> h;
+    if (isolator) h = analyseHamsas(isolator->isolator);
+    const PlacementStudy s = article ? runPlacement(*article, o) : runHamsasPlacement(*isolator, *h, o);
     if (out) {
       std::ofstream(out->stage("placement.json"), std::ios::binary) << placementJson(s).dump(2) << '\n';
       std::ofstream(out->stage("candidates.csv"), std::ios::binary) << placementCandidatesCsv(s);
@@ -98,7 +137,8 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
         render::writeHeatmapPng(out->stage("automac.png"), s.result.automac, rows, cols,
                                 strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()),
                                 "mode", "mode");
-        writeReviewRenders(*out, scene, s);
+        if (article) writeReviewRenders(*out, *article, s);
+        else writeHamsasReviewRenders(*out, *isolator, *h, s);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }

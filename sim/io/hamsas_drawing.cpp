@@ -25,17 +25,6 @@ const char* groupName(const std::string& g) {
   return "base (prescribed motion)";
 }
 
-/// The uniform box with the body's mass and principal moments (world axes at design).
-Eigen::Vector3d boxOf(const SpatialBody& b) {
-  const Eigen::Vector3d I = b.inertia.diagonal();
-  Eigen::Vector3d side;
-  for (int k = 0; k < 3; ++k) {
-    const double s2 = b.mass > 0 ? 6 * (I.sum() - 2 * I[k]) / b.mass : 0.0;
-    side[k] = std::max(std::sqrt(std::max(s2, 0.0)), 0.02);
-  }
-  return side;
-}
-
 }  // namespace
 
 DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, double phase, double scale, bool short_title) {
@@ -53,7 +42,7 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
     // times its half-diagonal.
     for (std::size_t b = 1; b < s.bodies.size(); ++b) {
       const int r = SpatialLinearization::row(static_cast<int>(b));
-      peak = std::max(peak, phi.segment<3>(r).norm() + phi.segment<3>(r + 3).norm() * 0.5 * boxOf(s.bodies[b]).norm());
+      peak = std::max(peak, phi.segment<3>(r).norm() + phi.segment<3>(r + 3).norm() * 0.5 * equivalentBox(s.bodies[b]).norm());
     }
     k = scale > 0 ? scale : (peak > 0 ? 0.1 * std::max(extent.diagonal().norm(), 0.5) / peak : 1.0);
   }
@@ -63,7 +52,7 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
     DrawItem it;
     it.rgba = groupColors().count(body.group) ? groupColors().at(body.group) : groupColors().at("base");
     if (body.group == "ot") it.rgba[3] = 0.55f;  // the table would hide the spring box and the legs
-    it.size = b == 0 ? Eigen::Vector3d(1.6, 1.6, 0.05) : boxOf(body);
+    it.size = b == 0 ? Eigen::Vector3d(1.6, 1.6, 0.05) : equivalentBox(body);
     it.pose.translation() = b == 0 ? Eigen::Vector3d(body.com.x(), body.com.y(), extent.min().z() - 0.1) : body.com;
     if (mode >= 0 && b > 0) {
       const int r = SpatialLinearization::row(static_cast<int>(b));

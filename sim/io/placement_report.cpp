@@ -33,10 +33,10 @@ std::string placementText(const PlacementStudy& s) {
   for (std::size_t j = 0; j < s.target_modes.size(); ++j)
     os << strf(" %d (%.4g)", s.target_modes[j], s.target_frequencies_hz[j]);
   os << "\n\n";
-  Table t({"station", "axis", "x_m", "y_m", s.method == "effective independence" ? "EfI" : "score"});
+  Table t({"station", "axis", "x_m", "y_m", "z_m", s.method == "effective independence" ? "EfI" : "score"});
   for (std::size_t i = 0; i < r.kept_blocks.size(); ++i) {
     const PlacementCandidate& c = s.candidates[r.kept_blocks[i]];
-    t.add({c.station, c.axis, strf("%.4f", c.world_x), strf("%.4f", c.world_y), strf("%.4g", r.block_score[i])});
+    t.add({c.station, c.axis, strf("%.4f", c.world_x), strf("%.4f", c.world_y), strf("%.4f", c.world_z), strf("%.4g", r.block_score[i])});
   }
   os << t.text();
   os << strf("\nFisher information: det %.4g, condition number %s; largest off-diagonal AutoMAC %.4f\n",
@@ -66,7 +66,7 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   auto chosen = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < r.kept_blocks.size(); ++i) {
     const PlacementCandidate& c = s.candidates[r.kept_blocks[i]];
-    chosen.push_back({{"station", c.station}, {"axis", c.axis}, {"x_m", c.world_x}, {"y_m", c.world_y}, {"score", r.block_score[i]}});
+    chosen.push_back({{"station", c.station}, {"axis", c.axis}, {"x_m", c.world_x}, {"y_m", c.world_y}, {"z_m", c.world_z}, {"score", r.block_score[i]}});
   }
   j["chosen"] = chosen;
   j["fisher_determinant"] = r.fisher_determinant;
@@ -80,7 +80,7 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
 
 std::string placementCandidatesCsv(const PlacementStudy& s) {
   std::ostringstream os;
-  os << "station,link,x_along_link_m,axis,world_x_m,world_y_m,chosen,score\n";
+  os << "station,link,x_along_link_m,axis,world_x_m,world_y_m,world_z_m,chosen,score\n";
   std::vector<double> score(s.candidates.size(), 0.0);
   std::vector<int> chosen(s.candidates.size(), 0);
   for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
@@ -90,7 +90,7 @@ std::string placementCandidatesCsv(const PlacementStudy& s) {
   for (std::size_t b = 0; b < s.candidates.size(); ++b) {
     const PlacementCandidate& c = s.candidates[b];
     os << c.station << ',' << c.link << ',' << strf("%.6g", c.x_m) << ',' << c.axis << ',' << strf("%.6g", c.world_x) << ','
-       << strf("%.6g", c.world_y) << ',' << chosen[b] << ',' << (chosen[b] ? strf("%.6g", score[b]) : std::string()) << '\n';
+       << strf("%.6g", c.world_y) << ',' << strf("%.6g", c.world_z) << ',' << chosen[b] << ',' << (chosen[b] ? strf("%.6g", score[b]) : std::string()) << '\n';
   }
   return os.str();
 }

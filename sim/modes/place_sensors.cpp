@@ -12,7 +12,9 @@
 namespace mmv {
 namespace {
 
-std::vector<int> targetModes(const ModalSolution& modes, const PlacementOptions& o) {
+}  // namespace
+
+std::vector<int> placementTargets(const ModalSolution& modes, const PlacementOptions& o) {
   std::vector<int> out;
   const int n = static_cast<int>(modes.omega2.size());
   if (o.modes.empty()) {
@@ -29,6 +31,20 @@ std::vector<int> targetModes(const ModalSolution& modes, const PlacementOptions&
   }
   return out;
 }
+
+void choosePlacement(PlacementStudy& study, const PlacementProblem& p, const PlacementOptions& o, int directions,
+                     const std::string& where) {
+  const int blocks = static_cast<int>(study.candidates.size()), k = static_cast<int>(study.target_modes.size());
+  if (o.count < 1 || o.count > blocks)
+    throw UsageError("--count " + std::to_string(o.count) + ": there are " + std::to_string(blocks) + " candidate " +
+                     (o.triaxial ? "blocks" : "sensors") + " (" + where + ")");
+  if (o.method == PlacementMethod::EffectiveIndependence && (o.triaxial ? directions * o.count : o.count) < k)
+    throw UsageError("--count " + std::to_string(o.count) + ": effective independence needs at least one measured direction per target mode (" +
+                     std::to_string(k) + ")");
+  study.result = placeSensors(p, o.method, o.count);
+}
+
+namespace {
 
 /// Candidate stations of one link: every spacing out to the tip, the tip included.
 std::vector<double> stationsAlong(double length, double spacing) {
@@ -50,7 +66,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   study.scene_name = scene.name;
   study.method = placementMethodName(o.method);
   study.triaxial = o.triaxial;
-  study.target_modes = targetModes(s.modes, o);
+  study.target_modes = placementTargets(s.modes, o);
   const int k = static_cast<int>(study.target_modes.size());
   Eigen::MatrixXd shapes(s.modes.shapes.rows(), k);
   PlacementProblem p;
@@ -78,7 +94,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
         rows.push_back(e[0] * u.row(0) + e[1] * u.row(1));
         masses.push_back(mass);
         if (!o.triaxial || a == 0)
-          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : a == 0 ? "axial" : "transverse", pos[0], pos[1]});
+          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : a == 0 ? "axial" : "transverse", pos[0], pos[1], pos[2]});
         p.block.push_back(static_cast<int>(study.candidates.size()) - 1);
       }
     }
@@ -86,14 +102,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   p.phi.resize(rows.size(), k);
   for (std::size_t r = 0; r < rows.size(); ++r) p.phi.row(r) = rows[r];
   p.row_mass = Eigen::Map<Eigen::VectorXd>(masses.data(), masses.size());
-  const int blocks = static_cast<int>(study.candidates.size());
-  if (o.count < 1 || o.count > blocks)
-    throw UsageError("--count " + std::to_string(o.count) + ": there are " + std::to_string(blocks) + " candidate " +
-                     (o.triaxial ? "blocks" : "sensors") + " (spacing " + std::to_string(o.spacing_m) + " m)");
-  if (o.method == PlacementMethod::EffectiveIndependence && (o.triaxial ? 2 * o.count : o.count) < k)
-    throw UsageError("--count " + std::to_string(o.count) + ": effective independence needs at least one measured direction per target mode (" +
-                     std::to_string(k) + ")");
-  study.result = placeSensors(p, o.method, o.count);
+  choosePlacement(study, p, o, 2, "spacing " + std::to_string(o.spacing_m) + " m");
   return study;
 }
 

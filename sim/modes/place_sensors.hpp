@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/modes/modal.hpp"
 #include "sim/modes/sensor_placement.hpp"
 #include "sim/scene/scene.hpp"
 
@@ -34,7 +35,7 @@ struct PlacementCandidate {
   std::string link;
   double x_m = 0;       ///< along the link from its root.
   std::string axis;     ///< "axial", "transverse", or "triaxial" (a block).
-  double world_x = 0, world_y = 0;  ///< m, at the equilibrium.
+  double world_x = 0, world_y = 0, world_z = 0;  ///< m, at the equilibrium.
 };
 
 struct PlacementStudy {
@@ -51,5 +52,14 @@ struct PlacementStudy {
 /// (rigid or unstable), or a count larger than the candidates; NumericalError as the
 /// modes analysis or when the candidates cannot see every target mode.
 PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& options);
+
+/// What every kind of placement shares. The target modes (1-based): `options.modes`, or
+/// every vibration mode below `options.below_hz` (UsageError as runPlacement).
+std::vector<int> placementTargets(const ModalSolution& modes, const PlacementOptions& options);
+/// Checks the count against `study.candidates` (one per block; `directions` rows per
+/// triaxial block; `where` says what the candidates are, for the message) and fills
+/// `study.result` from `p`.
+void choosePlacement(PlacementStudy& study, const PlacementProblem& p, const PlacementOptions& options, int directions,
+                     const std::string& where);
 
 }  // namespace mmv

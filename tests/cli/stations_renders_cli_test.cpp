@@ -76,11 +76,23 @@ TEST_F(Cli, PlaceSensorsOnTheDefaultArticle) {
   for (const char* f : {"placement.json", "candidates.csv", "automac.csv", "automac.png", "review_sensors.png", "review_modes.png"})
     EXPECT_TRUE(isPng(out / f) || std::string(f).find(".png") == std::string::npos) << f;
   const std::string csv = slurp(out / "candidates.csv");
-  EXPECT_EQ(csv.rfind("station,link,x_along_link_m,axis,world_x_m,world_y_m,chosen,score\n", 0), 0u);
+  EXPECT_EQ(csv.rfind("station,link,x_along_link_m,axis,world_x_m,world_y_m,world_z_m,chosen,score\n", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + static_cast<long>(j["candidates"].get<int>()));
   // Triaxial blocks and the other rankings run too.
   EXPECT_EQ(run("place-sensors --count 5 --triaxial").code, 0);
   EXPECT_EQ(run("place-sensors --count 5 --method dpr --modes 1-4").code, 0);
+}
+
+TEST_F(Cli, PlaceSensorsOnHamsas) {
+  const fs::path out = dir_ / "hamsas";
+  const Result r = run("place-sensors " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() +
+                       " --below-hz 5 --count 12 --json --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["target_modes"].size(), 9u);
+  EXPECT_EQ(j["candidates"].get<int>(), 270);  // 10 moving bodies x 9 points x 3 axes
+  EXPECT_LT(j["max_offdiagonal_automac"].get<double>(), 0.1);
+  for (const char* f : {"review_sensors.png", "review_modes.png", "automac.png"}) EXPECT_TRUE(isPng(out / f)) << f;
 }
 
 TEST_F(Cli, PlaceSensorsBadInput) {

@@ -1,0 +1,28 @@
+#pragma once
+/// `mmvlab place-sensors` on the HAM-SAS isolator: candidates on its rigid bodies and
+/// the choice of sensor_placement.hpp for the target modes.
+///
+/// Candidates: on every moving body, its mass centre and the 8 corners of its
+/// equivalent box (article/spatial_spec.hpp: the box renders draw), each measuring
+/// along world x, y and z; a corner sees the body's rotation, u = t + theta x r. A
+/// uniaxial candidate is one axis at one point; a triaxial block is the three. Each
+/// row's tributary mass is the body's mass over its 9 points. Shapes are the
+/// isolator's mass-normalised modes (sim/hamsas/hamsas_modes.hpp).
+
+#include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/modes/place_sensors.hpp"
+
+namespace mmv {
+
+/// The candidates (one per block, appended to `candidates`) and their rows of the
+/// target modes' shapes (1-based `targets`).
+PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<int>& targets, bool triaxial,
+                                  std::vector<PlacementCandidate>& candidates);
+
+/// As runPlacement for an article; `options.spacing_m` does not apply (the points are
+/// the bodies'). Throws UsageError for modes that do not exist or are not vibration
+/// modes, or a count above the candidates; NumericalError when the candidates cannot
+/// see every target mode.
+PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h, const PlacementOptions& options);
+
+}  // namespace mmv
