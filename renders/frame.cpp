@@ -294,7 +294,17 @@ cv::Point placeLabel(const std::string& text, const cv::Point2d& p, const cv::Si
 
 void annotate(cv::Mat& img, const DrawList& list, const Camera& camera) {
   cv::putText(img, list.title, {14, 26}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-  std::vector<cv::Rect> taken;
+  // The legend first: labels keep clear of it (and of the title).
+  std::vector<cv::Rect> taken{cv::Rect(0, 0, img.cols, 34)};
+  int y = 50, widest = 0;
+  for (const auto& [name, color] : list.legend) {
+    cv::rectangle(img, {14, y - 10}, {26, y + 2}, bgr(color), -1);
+    cv::putText(img, name, {32, y}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    int base = 0;
+    widest = std::max(widest, cv::getTextSize(name, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &base).width);
+    y += 18;
+  }
+  if (!list.legend.empty()) taken.emplace_back(0, 34, 32 + widest + 4, y - 34);
   for (const auto& l : list.labels) {
     cv::Point2d p;
     if (!projectPoint(camera, img.cols, img.rows, l.at, p)) continue;
@@ -303,12 +313,6 @@ void annotate(cv::Mat& img, const DrawList& list, const Camera& camera) {
     if (std::abs(text.y - 4 - p.y) > 8 || text.x < p.x)  // moved away: a leader line to its point
       cv::line(img, p, cv::Point(text.x < p.x ? text.x + taken.back().width : text.x, text.y - 4), bgr(l.rgba), 1, cv::LINE_AA);
     cv::putText(img, l.text, text, cv::FONT_HERSHEY_SIMPLEX, 0.42, bgr(l.rgba), 1, cv::LINE_AA);
-  }
-  int y = 50;
-  for (const auto& [name, color] : list.legend) {
-    cv::rectangle(img, {14, y - 10}, {26, y + 2}, bgr(color), -1);
-    cv::putText(img, name, {32, y}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-    y += 18;
   }
   drawScaleBar(img, camera);
   if (list.has_color_bar) drawColorBar(img, list.color_bar);

@@ -132,8 +132,21 @@ void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, cons
     }
     d.items.push_back(it);
     d.labels.push_back({at, sensor.name + " (" + sensor.type + ")", kSensor});
+    // Its measuring axis: an accelerometer's along or across its link; a gyro's and
+    // an encoder's the rotation axis, out of the plane of motion.
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+    if (sensor.type == "accelerometer") {
+      std::string error;
+      axis = vec(PointRef::resolve(model, scene.article, sensor.target, error)->localAxis(s, sensor.axis));
+    }
+    DrawItem arrow;
+    arrow.shape = DrawItem::Shape::Cylinder;
+    arrow.rgba = {0.45f, 0.0f, 0.0f, 1};
+    arrow.size = {0.16, 0.008, 0.008};
+    arrow.pose = poseAlong(it.pose.translation() + 0.08 * axis, axis);
+    d.items.push_back(arrow);
   }
-  if (!scene.sensors.empty()) d.legend.push_back({"sensors", kSensor});
+  if (!scene.sensors.empty()) d.legend.push_back({"sensors (rod: measuring axis)", kSensor});
 }
 
 }  // namespace
