@@ -25,6 +25,25 @@ const char* groupName(const std::string& g) {
   return "base (prescribed motion)";
 }
 
+/// The sensors (relative displacement, spring box to base): a cube and a rod along the
+/// direction each measures, labelled.
+void addSensors(DrawList& d, const SpatialSpec& s) {
+  for (const auto& sensor : s.sensors) {
+    DrawItem cube;
+    cube.rgba = {0.8f, 0.1f, 0.1f, 1};
+    cube.size = Eigen::Vector3d::Constant(0.04);
+    cube.pose.translation() = sensor.point;
+    d.items.push_back(cube);
+    DrawItem rod;
+    rod.shape = DrawItem::Shape::Cylinder;
+    rod.rgba = {0.45f, 0.0f, 0.0f, 1};
+    rod.size = {0.16, 0.008, 0.008};
+    rod.pose = poseAlong(sensor.point + 0.08 * sensor.direction.normalized(), sensor.direction);
+    d.items.push_back(rod);
+    d.labels.push_back({sensor.point, sensor.name, {0.8f, 0.1f, 0.1f, 1}});
+  }
+}
+
 }  // namespace
 
 DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, double phase, double scale, bool short_title) {
@@ -80,22 +99,7 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
   }
   d.legend.push_back({"MGAS springs", {0.84f, 0.37f, 0.0f, 1}});
   d.legend.push_back({"effective spherical joints", {0.3f, 0.3f, 0.3f, 1}});
-  // The sensors (relative displacement, spring box to base): a cube and a rod along
-  // the direction each measures.
-  for (const auto& sensor : s.sensors) {
-    DrawItem cube;
-    cube.rgba = {0.8f, 0.1f, 0.1f, 1};
-    cube.size = Eigen::Vector3d::Constant(0.04);
-    cube.pose.translation() = sensor.point;
-    d.items.push_back(cube);
-    DrawItem rod;
-    rod.shape = DrawItem::Shape::Cylinder;
-    rod.rgba = {0.45f, 0.0f, 0.0f, 1};
-    rod.size = {0.16, 0.008, 0.008};
-    rod.pose = poseAlong(sensor.point + 0.08 * sensor.direction.normalized(), sensor.direction);
-    d.items.push_back(rod);
-    d.labels.push_back({sensor.point, sensor.name, {0.8f, 0.1f, 0.1f, 1}});
-  }
+  addSensors(d, s);
   if (!s.sensors.empty()) d.legend.push_back({"sensors (rod: measuring axis)", {0.8f, 0.1f, 0.1f, 1}});
   char title[256];
   if (mode < 0) {
