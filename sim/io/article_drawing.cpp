@@ -204,6 +204,7 @@ ModeFrames::ModeFrames(const ArticleScene& scene, const SolvedScene& solved, int
     }
     extent += l.length;
   }
+  dominant_ = dominantStrainLink(model, dofs, phi);
   scale_ = scale > 0 ? scale : (peak > 0 ? 0.1 * extent / peak : 1.0);
   peak_ = scale_ * peak;
   addHardware(hardware_, scene, model, eq);
@@ -227,10 +228,10 @@ DrawList ModeFrames::frame(double phase, bool short_title) const {
   char title[256];
   const double hz = solved_.modes.frequencyHz(mode_);
   if (short_title)
-    std::snprintf(title, sizeof title, "mode %d: %.4g Hz (shape x %.3g)", mode_ + 1, hz, scale_);
+    std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s (x %.3g)", mode_ + 1, hz, dominant_.c_str(), scale_);
   else
-    std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz, shape x %.3g (largest translation %.3g m)",
-                  scene_.name.c_str(), mode_ + 1, hz, scale_, peak_);
+    std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz, most strain in %s, shape x %.3g (largest translation %.3g m)",
+                  scene_.name.c_str(), mode_ + 1, hz, dominant_.c_str(), scale_, peak_);
   d.title = title;
   return d;
 }

@@ -51,6 +51,7 @@ class ModeFrames {
   const SolvedScene& solved_;
   int mode_;
   double scale_ = 1, peak_ = 0;  ///< peak_: the largest drawn translation, m.
+  std::string dominant_;         ///< the link holding most of the mode's strain energy.
   std::vector<std::vector<Eigen::Vector3d>> rest_, shape_;
   DrawList hardware_;
 };
