@@ -12,7 +12,8 @@
 namespace mmv::cli {
 
 Scene loadScene(const SceneArgs& args) {
-  Scene scene = args.scene_path.empty() ? Scene(loadDefaultScene()) : loadSceneFile(args.scene_path);
+  Scene scene = args.scene_path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", args.sets)
+                                         : loadSceneFile(args.scene_path, args.sets);
   if (auto* a = std::get_if<ArticleScene>(&scene)) {
     if (args.segments > 0) overrideSegments(*a, args.segments);
     if (args.no_gravity) a->gravity = {0, 0, 0};

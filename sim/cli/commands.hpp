@@ -31,6 +31,7 @@ struct SceneArgs {
   std::string scene_path;  ///< empty: the embedded default scene.
   int segments = 0;        ///< > 0: override every flexible link's segment count.
   bool no_gravity = false; ///< analyse without gravity (as the report's TREETOPS run).
+  std::vector<std::string> sets;  ///< --set KEY=VALUE overrides of scene keys.
 };
 
 struct ModesArgs : SceneArgs {

@@ -33,6 +33,10 @@ void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
   cmd->add_option("--segments", a.segments, "Segments per flexible link, overriding the scene")
       ->check(CLI::Range(1, mmv::limits::kMaxSegments));
   cmd->add_flag("--no-gravity", a.no_gravity, "Set gravity to zero (the report's TREETOPS run had none)");
+  cmd->add_option("--set", a.sets,
+                  "KEY=VALUE: override a scene key (repeatable), e.g. links.link1.length=2.5, joints.joint2.angle_deg=15; "
+                  "checked as if it were in the file")
+      ->allow_extra_args(false);
 }
 
 /// `mmvlab modes` and its options.

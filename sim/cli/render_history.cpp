@@ -46,8 +46,8 @@ std::vector<render::Trace> tracesFor(const RunDir& run, const std::vector<std::s
 }  // namespace
 
 void renderHistory(const RenderArgs& args, const std::string& ext) {
-  if (args.segments > 0 || args.no_gravity)
-    throw UsageError("render --history: the run's own segments and gravity are used (run.json); drop --segments/--no-gravity");
+  if (args.segments > 0 || args.no_gravity || !args.sets.empty())
+    throw UsageError("render --history: the run's own segments, gravity and overrides are used (run.json); drop --segments, --no-gravity and --set");
   render::FrameOptions size, frame;
   parseSize(args.size, size);
   frame = size;  // with traces, the article takes the left 60 % and the traces the rest

@@ -65,6 +65,7 @@ nlohmann::ordered_json runRecord(const SimulateArgs& args, const std::string& so
   nlohmann::ordered_json j;
   j["scene_source"] = source;
   j["scene_copy"] = "scene.yaml";
+  j["overrides"] = args.sets;  // --set KEY=VALUE, applied to scene.yaml
   j["segments_override"] = args.segments;  // 0: the scene's own
   j["no_gravity"] = args.no_gravity;
   j["integrator"] = spec.integrator;

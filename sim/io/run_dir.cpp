@@ -108,11 +108,12 @@ RunDir readRunDir(const std::string& dir, const std::string& scene_path) {
   try {
     run = nlohmann::json::parse(readText(run_json));
     r.segments_override = run.at("segments_override").get<int>();
+    if (run.contains("overrides")) r.overrides = run.at("overrides").get<std::vector<std::string>>();
   } catch (const nlohmann::json::exception& e) {
     throw SceneError(run_json + ": not a run record (" + e.what() + ")");
   }
   const std::string scene_file = scene_path.empty() ? dir + "/scene.yaml" : scene_path;
-  Scene scene = scene_path.empty() ? parseScene(readText(scene_file), scene_file) : loadSceneFile(scene_file);
+  Scene scene = scene_path.empty() ? parseScene(readText(scene_file), scene_file, r.overrides) : loadSceneFile(scene_file, r.overrides);
   auto* a = std::get_if<ArticleScene>(&scene);
   if (!a) throw SceneError(scene_file + ": a HAM-SAS run; render --history draws article runs only");
   r.scene = std::move(*a);

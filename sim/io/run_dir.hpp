@@ -29,6 +29,7 @@ struct RunDir {
   std::string dir;
   ArticleScene scene;        ///< the scene copy, with the run's overrides applied.
   int segments_override = 0; ///< the run's --segments (0: the scene's own).
+  std::vector<std::string> overrides;  ///< the run's --set KEY=VALUE, applied to its scene.
   CsvTable history, states;
 };
 

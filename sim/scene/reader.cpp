@@ -1,6 +1,7 @@
 // Scene files: loading (bounded, regular files only), parsing into the kind of scene
 // the top-level keys say, the embedded default. Sections are read in read_*.cpp.
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,7 +12,83 @@ namespace mmv {
 
 using scene_detail::YamlReader;
 
-Scene parseScene(const std::string& yaml_text, const std::string& source_name) {
+namespace {
+
+/// The child of `node` named `part`: a mapping's key, or a list's item whose `name`
+/// is `part` (or whose index it is). Null when there is none.
+YAML::Node childOf(const YAML::Node& node, const std::string& part, std::string& known) {
+  if (node.IsMap()) {
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const YAML::Node key = it->first;
+      if (key.IsScalar() && key.Scalar() == part) return it->second;
+      known += (known.empty() ? "" : ", ") + key.Scalar();
+    }
+    return YAML::Node(YAML::NodeType::Undefined);
+  }
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const YAML::Node item = node[i];
+      const YAML::Node name = item.IsMap() ? item["name"] : YAML::Node();
+      if ((name && name.IsScalar() && name.Scalar() == part) || std::to_string(i) == part) return item;
+      known += (known.empty() ? "" : ", ") + (name && name.IsScalar() ? name.Scalar() : std::to_string(i));
+    }
+  }
+  return YAML::Node(YAML::NodeType::Undefined);
+}
+
+/// Applies `--set KEY=VALUE` overrides to the document: KEY is a dotted path of
+/// mapping keys and list items (by their `name`, or index); VALUE is YAML. Missing
+/// keys are added (the section readers then check them as if they were in the file).
+/// Each override's key and value are parsed on a line of their own after the file's
+/// lines, so an error in them is reported at "--set KEY=VALUE".
+void applyOverrides(YAML::Node& root, const std::vector<std::string>& sets, int first_line) {
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    const std::string& set = sets[k];
+    const auto eq = set.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--set " + set + ": expected KEY=VALUE, e.g. links.link1.length=2.5");
+    const std::string key = set.substr(0, eq), value = set.substr(eq + 1);
+    std::vector<std::string> parts;
+    std::stringstream ss(key);
+    for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+    if (std::find(parts.begin(), parts.end(), "") != parts.end()) throw UsageError("--set " + set + ": an empty part in the key");
+    // The deepest part of the path the document has.
+    // reset(), not operator=: assigning one YAML::Node to another rewrites the first's data.
+    YAML::Node node;
+    node.reset(root);
+    std::size_t depth = 0;
+    for (; depth + 1 < parts.size(); ++depth) {
+      std::string known;
+      YAML::Node child;
+      child.reset(childOf(node, parts[depth], known));
+      if (!child.IsDefined()) {
+        if (!node.IsMap())
+          throw SceneError("--set " + set + ": no item '" + parts[depth] + "' (known: " + (known.empty() ? "none" : known) + ")");
+        break;  // from here on the override brings its own sections
+      }
+      node.reset(child);
+    }
+    if (!node.IsMap()) throw SceneError("--set " + set + ": '" + key + "' does not name a key of a mapping");
+    // The rest as one flow mapping on the override's own line: {"b": {"c": VALUE}}.
+    std::string text = std::string(static_cast<std::size_t>(first_line) + k, '\n');
+    for (std::size_t i = depth; i < parts.size(); ++i) text += (i > depth ? "{\"" : "\"") + parts[i] + "\": ";
+    text += value + std::string(parts.size() - 1 - depth, '}');
+    YAML::Node doc;
+    try {
+      doc = YAML::Load(text);
+    } catch (const YAML::ParserException& e) {
+      throw SceneError("--set " + set + ": malformed YAML value: " + e.msg);
+    }
+    std::string known;
+    if (childOf(node, parts[depth], known).IsDefined()) node.remove(parts[depth]);
+    const auto pair = doc.begin();
+    node.force_insert(pair->first, pair->second);
+  }
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& yaml_text, const std::string& source_name, const std::vector<std::string>& sets) {
   YamlReader reader(source_name);
   YAML::Node root;
   try {
@@ -21,17 +98,33 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name) {
   }
   if (!root.IsDefined() || root.IsNull())
     reader.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
+  if (!sets.empty()) {
+    if (!root.IsMap()) reader.fail(root.Mark(), "the scene must be a mapping of keys");
+    const int first_line = static_cast<int>(std::count(yaml_text.begin(), yaml_text.end(), '\n')) + 10;
+    reader.setOverrides(first_line, sets);
+    applyOverrides(root, sets, first_line);
+  }
   if (root.IsMap() && root["hamsas"]) {
     HamsasScene h = scene_detail::readHamsasScene(reader, root, source_name);
     h.text = yaml_text;
+    h.overrides = sets;
+    if (!sets.empty()) h.source += overrideSuffix(sets);
     return h;
   }
   ArticleScene a = scene_detail::readArticleScene(reader, root, source_name);
   a.text = yaml_text;
+  a.overrides = sets;
+  if (!sets.empty()) a.source += overrideSuffix(sets);
   return a;
 }
 
-Scene loadSceneFile(const std::string& path) {
+std::string overrideSuffix(const std::vector<std::string>& sets) {
+  std::string out;
+  for (const auto& s : sets) out += " --set " + s;
+  return out;
+}
+
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw SceneFileError(path + ": is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
@@ -39,7 +132,7 @@ Scene loadSceneFile(const std::string& path) {
   std::ostringstream os;
   os << in.rdbuf();
   if (in.bad()) throw SceneFileError(path + ": cannot read scene file");
-  return parseScene(os.str(), path);
+  return parseScene(os.str(), path, sets);
 }
 
 ArticleScene loadArticleSceneFile(const std::string& path) {

@@ -32,8 +32,19 @@ class YamlReader {
   explicit YamlReader(std::string file) : file_(std::move(file)) {}
   const std::string& file() const { return file_; }
 
-  /// "file:line:col"; an empty document has a null mark (-1): the start of the file.
+  /// Values from `--set KEY=VALUE` are parsed from lines at and after `first_line`
+  /// (beyond the file's own): a mark there is the override `labels[line - first_line]`.
+  void setOverrides(int first_line, std::vector<std::string> labels) {
+    override_line_ = first_line;
+    override_labels_ = std::move(labels);
+  }
+
+  /// "file:line:col", or "--set KEY=VALUE" for a value that came from the command
+  /// line; an empty document has a null mark (-1): the start of the file.
   std::string position(const YAML::Mark& mark) const {
+    const int k = mark.line - override_line_;
+    if (!override_labels_.empty() && k >= 0 && k < static_cast<int>(override_labels_.size()))
+      return "--set " + override_labels_[static_cast<std::size_t>(k)];
     std::ostringstream os;
     os << file_ << ':' << std::max(mark.line, 0) + 1 << ':' << std::max(mark.column, 0) + 1;
     return os.str();
@@ -149,6 +160,8 @@ class YamlReader {
 
  private:
   std::string file_;
+  int override_line_ = -1;
+  std::vector<std::string> override_labels_;
 };
 
 struct Located {

@@ -71,6 +71,7 @@ struct ArticleScene {
   std::string name;
   std::string source;  ///< file the scene came from, or "<default scene>".
   std::string text;    ///< the YAML as read (a run's output directory keeps a copy).
+  std::vector<std::string> overrides;  ///< the --set KEY=VALUE it was read with.
   std::array<double, 3> gravity{0, -9.80665, 0};  ///< m/s^2 in the world frame, z = 0.
   ArticleSpec article;
   std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
@@ -85,6 +86,7 @@ struct HamsasScene {
   std::string name;
   std::string source;
   std::string text;  ///< the YAML as read.
+  std::vector<std::string> overrides;  ///< the --set KEY=VALUE it was read with.
   HamsasSpec isolator;
   SimulationSpec simulation;
   /// Time runs: the ground's (base's) motion program along world x, y or z.
@@ -98,10 +100,17 @@ using Scene = std::variant<ArticleScene, HamsasScene>;
 const std::string& sceneName(const Scene& scene);
 const std::string& sceneSource(const Scene& scene);
 
-/// Parses scene YAML text; `source_name` is used in error messages. Throws SceneError.
-Scene parseScene(const std::string& yaml_text, const std::string& source_name);
+/// Parses scene YAML text; `source_name` is used in error messages. `sets` are
+/// `--set KEY=VALUE` overrides (KEY a dotted path: mapping keys, list items by name,
+/// e.g. links.link1.length=2.5), applied to the document before it is read, so each
+/// value is checked as if it were in the file; an error in one names it ("--set
+/// KEY=VALUE: ..."). The scene's source then ends with the overrides. Throws
+/// SceneError (UsageError for a malformed --set).
+Scene parseScene(const std::string& yaml_text, const std::string& source_name, const std::vector<std::string>& sets = {});
 /// Reads and parses a scene file. Throws SceneFileError or SceneError.
-Scene loadSceneFile(const std::string& path);
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets = {});
+/// " --set A=1 --set B=2": how a source names its overrides.
+std::string overrideSuffix(const std::vector<std::string>& sets);
 /// The same for a file that must hold an article (or an isolator): SceneError
 /// naming the file and its kind otherwise.
 ArticleScene loadArticleSceneFile(const std::string& path);

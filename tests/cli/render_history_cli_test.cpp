@@ -36,6 +36,26 @@ TEST_F(Cli, RenderHistoryDrawsASimulateRun) {
   EXPECT_NE(slurp(a), slurp(end));  // the slew moved the article between 0.3 s and the end
 }
 
+// --set on the command line: recorded with the run, applied again when it is redrawn.
+TEST_F(Cli, SetOverridesAreRecordedAndReapplied) {
+  const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const fs::path run_dir = dir_ / "run";
+  const Result sim = run("simulate " + slew + " --segments 2 --duration 0.2 --sample-rate 250 --set links.link1.length=2.0 "
+                         "--set damping.hinge_beta=0.004 --json --out " + run_dir.string());
+  ASSERT_EQ(sim.code, 0) << sim.err;
+  EXPECT_NE(slurp(run_dir / "run.json").find("\"links.link1.length=2.0\""), std::string::npos);
+  EXPECT_EQ(run("render --history " + run_dir.string() + " --size 160x120 --out " + (dir_ / "a.png").string()).code, 0);
+  const Result text = run("modes --modes 1 --set links.link1.length=2.0");
+  EXPECT_NE(text.out.find("(scene: <default scene> --set links.link1.length=2.0)"), std::string::npos) << text.out;
+  const Result bad = run("modes --set links.link1.length=-1");
+  EXPECT_EQ(bad.code, 65);
+  EXPECT_NE(bad.err.find("--set links.link1.length=-1: links[0].length must be > 0 m (got -1)"), std::string::npos) << bad.err;
+  EXPECT_EQ(run("modes --set links.link1.length").code, 64);
+  const Result isolator = run("modes " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() +
+                              " --set hamsas.counterweight_mass=3.4 --json");
+  EXPECT_EQ(isolator.code, 0) << isolator.err;
+}
+
 TEST_F(Cli, RenderHistoryRefusesWhatItCannotDraw) {
   const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
   const fs::path run_dir = dir_ / "run", out = dir_ / "x.png";
