@@ -67,6 +67,7 @@ struct JointSpec {
   std::string name;
   std::string parent;      ///< "base" or the name of a link (or branch) whose tip carries it.
   double angle = 0;        ///< commanded angle in rad.
+  double range = 45 * 3.14159265358979323846 / 180;  ///< rad, +-: the torquer's travel (report: +-45 deg); angles and slews within it.
   JointHold hold = JointHold::Locked;
   double servo_stiffness = 0;  ///< N*m/rad, > 0 when hold is Servo.
   std::optional<LumpedMass> torquer;  ///< lumped on the parent side (stator housing).

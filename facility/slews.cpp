@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -12,8 +13,12 @@ Slew makeSlew(SlewShape shape, double from, double to, double, const SlewLimits&
     throw std::invalid_argument("slew: range, rate and acceleration limits must be > 0");
   for (double a : {from, to})
     if (std::abs(a) > lim.range * (1 + 1e-12))
-      throw std::invalid_argument("slew: angle " + std::to_string(a * 180 / M_PI) + " deg is outside the joint's +-" +
-                                  std::to_string(lim.range * 180 / M_PI) + " deg");
+    {
+      char what[160];
+      std::snprintf(what, sizeof what, "slew: angle %.6g deg is outside the joint's +-%.6g deg range", a * 180 / M_PI,
+                    lim.range * 180 / M_PI);
+      throw std::invalid_argument(what);
+    }
   Slew s;
   s.shape_ = shape;
   s.from_ = from;

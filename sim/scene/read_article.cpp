@@ -234,13 +234,31 @@ class SceneParser {
       r_.fail(n.Mark(), path + ": name '" + name + "' is used twice among joints and links");
   }
 
+  /// The joint's range (range_deg; the report's torquers: +-45 deg): a held or servo
+  /// angle beyond it is refused at its line, as are a slew's ends (checkSlew); a free
+  /// joint's starting angle only within +-180 deg.
+  void checkJointRange(const std::map<std::string, YAML::Node>& m, const std::string& path, JointSpec& j) {
+    if (m.count("range_deg")) {
+      j.range = r_.positive(m.at("range_deg"), path + ".range_deg", " deg") * kDegToRad;
+      if (j.range > M_PI + 1e-12)
+        r_.fail(m.at("range_deg").Mark(), path + ".range_deg must be <= 180 deg (got " + m.at("range_deg").Scalar() + ")");
+    }
+    if (!m.count("angle_deg")) return;
+    const double limit = j.hold == JointHold::Free ? M_PI : j.range;
+    if (std::abs(j.angle) > limit + 1e-12)
+      r_.fail(m.at("angle_deg").Mark(),
+              path + ".angle_deg: " + m.at("angle_deg").Scalar() + " deg is beyond the joint's +-" +
+                  strf("%g", limit / kDegToRad) +
+                  (j.hold == JointHold::Free ? " deg" : " deg range (its torquer's; range_deg sets another)"));
+  }
+
   void readJoints(const YAML::Node& n, ArticleSpec& a) {
     const std::size_t count = r_.sequence(n, "joints");
     for (std::size_t i = 0; i < count; ++i) {
       const YAML::Node& jn = n[i];
       const std::string path = "joints[" + std::to_string(i) + "]";
       auto m = r_.mapping(jn, path, {"name", "parent", "angle_deg", "hold", "servo_stiffness", "torquer", "slew",
-                                     "torque_capacity", "torque"});
+                                     "torque_capacity", "torque", "range_deg"});
       JointSpec j;
       const YAML::Node& name = r_.require(m, jn, path, "name");
       j.name = r_.text(name, path + ".name");
@@ -261,6 +279,7 @@ class SceneParser {
       } else if (m.count("servo_stiffness")) {
         r_.fail(m.at("servo_stiffness").Mark(), path + ".servo_stiffness applies only with hold: servo");
       }
+      checkJointRange(m, path, j);
       if (m.count("torquer")) j.torquer = readLumpedMass(r_, m.at("torquer"), path + ".torquer");
       if (m.count("torque_capacity"))
         j.torque_capacity = r_.positive(m.at("torque_capacity"), path + ".torque_capacity", " N*m");
@@ -269,7 +288,7 @@ class SceneParser {
         if (j.hold != JointHold::Locked)
           r_.fail(sn.Mark(), path + ".slew: only a locked joint (its torquer holding the angle) follows a slew");
         j.slew = readSlew(r_, sn, path + ".slew");
-        checkSlew(sn, path + ".slew", *j.slew, j.angle, M_PI);
+        checkSlew(sn, path + ".slew", *j.slew, j.angle, j.range);
       }
       if (m.count("torque")) {
         const YAML::Node& tn = m.at("torque");

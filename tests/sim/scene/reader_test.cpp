@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"malformed", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0",
                 "s.yaml:3:10: malformed YAML: end of sequence flow not found"},
         BadCase{"unknown key", "    angle_deg: 30", "    angel_deg: 30",
-                "s.yaml:10:5: unknown key 'joints[0].angel_deg' (allowed: name, parent, angle_deg, hold, servo_stiffness, torquer, slew, torque_capacity, torque)"},
+                "s.yaml:10:5: unknown key 'joints[0].angel_deg' (allowed: name, parent, angle_deg, hold, servo_stiffness, torquer, slew, torque_capacity, torque, range_deg)"},
         BadCase{"duplicate key", "    length: 1.0\n", "    length: 1.0\n    length: 2.0\n",
                 "s.yaml:20:5: duplicate key 'links[0].length'"},
         BadCase{"missing key", "    length: 0.5\n", "",
@@ -171,13 +171,30 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:3:22: lab.floor_width_m must be > 0 m (got -3)"},
         BadCase{"joint slew beyond a half turn", "    angle_deg: 30",
                 "    angle_deg: 30\n    slew: {to_deg: 200}",
-                "s.yaml:11:11: joints[0].slew: slew: angle 200.000000 deg is outside the joint's +-180.000000 deg"}),
+                "s.yaml:11:11: joints[0].slew: slew: angle 200 deg is outside the joint's +-45 deg range"},
+        // The report's torquers move +-45 deg: a 60 deg slew and a 400 deg angle are refused.
+        BadCase{"joint slew beyond the torquers range", "    angle_deg: 30",
+                "    angle_deg: 30\n    slew: {to_deg: 60}",
+                "s.yaml:11:11: joints[0].slew: slew: angle 60 deg is outside the joint's +-45 deg range"},
+        BadCase{"held angle beyond the torquers range", "    angle_deg: 30", "    angle_deg: 400",
+                "s.yaml:10:16: joints[0].angle_deg: 400 deg is beyond the joint's +-45 deg range (its torquer's; range_deg sets another)"},
+        BadCase{"joint range beyond a half turn", "    angle_deg: 30", "    angle_deg: 30\n    range_deg: 200",
+                "s.yaml:11:16: joints[0].range_deg must be <= 180 deg (got 200)"},
+        BadCase{"free joint beyond a half turn", "    hold: free", "    hold: free\n    angle_deg: 270",
+                "s.yaml:14:16: joints[1].angle_deg: 270 deg is beyond the joint's +-180 deg"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.what;
       for (char& ch : name)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
       return name;
     });
+
+TEST(SceneYaml, JointRangeWidensWhenTheSceneSaysSo) {
+  const ArticleScene s = parseArticle(replaceLine(kGood, "    angle_deg: 30", "    angle_deg: 80\n    range_deg: 90\n    slew: {to_deg: -85}"), "s.yaml");
+  EXPECT_NEAR(s.article.joints[0].range, M_PI / 2, 1e-15);
+  EXPECT_NEAR(s.article.joints[0].angle, 80 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(parseArticle(kGood, "s.yaml").article.joints[0].range, M_PI / 4, 1e-15);  // the report's +-45 deg
+}
 
 TEST(SceneYaml, LabOnlyWhenNamedWithTheReportsDimensions) {
   EXPECT_FALSE(parseArticle(kGood, "s.yaml").lab);
