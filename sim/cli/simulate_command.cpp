@@ -10,6 +10,7 @@
 #include "facility/table_programs.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/simulation_report.hpp"
@@ -24,6 +25,9 @@ void applyOverrides(const SimulateArgs& args, SimulationSpec& spec) {
   if (args.absolute_tolerance > 0) spec.absolute_tolerance = args.absolute_tolerance;
   if (args.duration > 0) spec.duration = args.duration;
   if (args.sample_rate > 0) spec.sample_rate_hz = args.sample_rate;
+  if (spec.duration * spec.sample_rate_hz > limits::kMaxSamples)
+    throw UsageError(strf("--duration %g s at --sample-rate %g Hz is %.3g samples, above the limit of %.0f", spec.duration,
+                          spec.sample_rate_hz, spec.duration * spec.sample_rate_hz, limits::kMaxSamples));
   if (spec.absolute_tolerance > 0 && !isSundialsIntegrator(spec.integrator))
     throw UsageError("--absolute-tolerance applies to the SUNDIALS integrators only (got integrator " + spec.integrator + ")");
 }

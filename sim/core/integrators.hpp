@@ -33,6 +33,10 @@ std::string integratorSuggestion(const std::string& name);
 /// One allowed range per user quantity, stated once (docs/scene-format.md).
 namespace limits {
 constexpr int kMaxSegments = 4096;         ///< segments per flexible link.
+/// Rows of a time run (duration x sample rate): a million rows of history are about
+/// 200 MB of CSV; beyond that a run is a mistake (a rate in Hz meant in kHz, a duration
+/// in ms), not a plan.
+constexpr double kMaxSamples = 1e6;
 constexpr double kMinAccuracy = 1e-14;     ///< integrator relative accuracy, exclusive of 0 and 1.
 }  // namespace limits
 

@@ -29,6 +29,11 @@ SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n) {
                                                  "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ida; got integrator " + s.integrator + ")");
   }
   if (m.count("sample_rate_hz")) s.sample_rate_hz = r.positive(m.at("sample_rate_hz"), "simulation.sample_rate_hz", " Hz");
+  if (s.duration * s.sample_rate_hz > limits::kMaxSamples) {
+    const YAML::Node& at = m.count("sample_rate_hz") ? m.at("sample_rate_hz") : m.at("duration");
+    r.fail(at.Mark(), strf("simulation: %g s at %g Hz is %.3g samples, above the limit of %.0f (a rate or a duration in the "
+                           "wrong unit?)", s.duration, s.sample_rate_hz, s.duration * s.sample_rate_hz, limits::kMaxSamples));
+  }
   if (m.count("start")) {
     const std::string st = r.text(m.at("start"), "simulation.start");
     if (st != "equilibrium" && st != "rest") r.fail(m.at("start").Mark(), "simulation.start: unknown start '" + st + "' (known: equilibrium, rest)");

@@ -5,6 +5,7 @@
 
 #include "article/article_spec.hpp"
 #include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
 #include "sim/scene/stations.hpp"
 
 namespace mmv {
@@ -34,6 +35,10 @@ double distance(const SimulationRecord& a, const SimulationRecord& b, const std:
 TradeProblem tradeProblemBase(const std::string& scene_name, SimulationSpec simulation, double duration) {
   TradeProblem p;
   if (duration > 0) simulation.duration = duration;
+  if (simulation.duration * simulation.sample_rate_hz > limits::kMaxSamples)
+    throw UsageError(strf("--duration %g s at the scene's %g Hz is %.3g samples, above the limit of %.0f a run",
+                          simulation.duration, simulation.sample_rate_hz, simulation.duration * simulation.sample_rate_hz,
+                          limits::kMaxSamples));
   p.scene_name = scene_name;
   p.duration = simulation.duration;
   p.simulation = simulation;

@@ -51,6 +51,12 @@ TEST_F(Cli, SetOverridesAreRecordedAndReapplied) {
   EXPECT_EQ(bad.code, 65);
   EXPECT_NE(bad.err.find("--set links.link1.length=-1: links[0].length must be > 0 m (got -1)"), std::string::npos) << bad.err;
   EXPECT_EQ(run("modes --set links.link1.length").code, 64);
+  // Runs that would never end or fill the disk are refused before they start.
+  const Result huge = run("simulate --sample-rate 1e9 --duration 1e6");
+  EXPECT_EQ(huge.code, 64);
+  EXPECT_NE(huge.err.find("above the limit of 1000000"), std::string::npos) << huge.err;
+  EXPECT_EQ(run("simulate --set simulation.sample_rate_hz=1e9").code, 65);
+  EXPECT_EQ(run("trade --duration 1e6").code, 64);
   const Result isolator = run("modes " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() +
                               " --set hamsas.counterweight_mass=3.4 --json");
   EXPECT_EQ(isolator.code, 0) << isolator.err;

@@ -180,6 +180,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:10:16: joints[0].angle_deg: 400 deg is beyond the joint's +-45 deg range (its torquer's; range_deg sets another)"},
         BadCase{"joint range beyond a half turn", "    angle_deg: 30", "    angle_deg: 30\n    range_deg: 200",
                 "s.yaml:11:16: joints[0].range_deg must be <= 180 deg (got 200)"},
+        BadCase{"samples beyond the limit", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nsimulation: {duration: 1000, sample_rate_hz: 10000}",
+                "s.yaml:3:46: simulation: 1000 s at 10000 Hz is 1e+07 samples, above the limit of 1000000 (a rate or a "
+                "duration in the wrong unit?)"},
         BadCase{"free joint beyond a half turn", "    hold: free", "    hold: free\n    angle_deg: 270",
                 "s.yaml:14:16: joints[1].angle_deg: 270 deg is beyond the joint's +-180 deg"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
