@@ -1,14 +1,18 @@
 // mmvlab render --history RUN_DIR: frames of a `simulate` run (a slew, a table
-// excitation) redrawn from its recorded coordinates (RUN_DIR/states.csv) on the model
-// of the run's own scene copy and segments (RUN_DIR/scene.yaml, run.json), with an
-// optional inset of chosen history.csv columns (sensor signals, torques, tips).
+// excitation; HAM-SAS ground shaking) redrawn from its recorded coordinates
+// (RUN_DIR/states.csv) on the model of the run's own scene copy and segments
+// (RUN_DIR/scene.yaml, run.json), with an optional panel of chosen history.csv columns
+// (sensor signals, torques, tips) beside it.
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 
 #include "sim/cli/commands.hpp"
 #include "sim/cli/render_common.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/article_drawing.hpp"
+#include "sim/io/hamsas_drawing.hpp"
 #include "sim/io/run_dir.hpp"
 #include "sim/model/article_builder.hpp"
 
@@ -43,6 +47,48 @@ std::vector<render::Trace> tracesFor(const RunDir& run, const std::vector<std::s
   return out;
 }
 
+/// The drawing of a run at time t, whatever kind of scene it is.
+using DrawAt = std::function<DrawList(double t)>;
+
+/// An article run: its model rebuilt, its coordinates set at each time.
+DrawAt articleFrames(const RunDir& run, std::shared_ptr<Model>& model) {
+  model = buildArticleModel(run.scene);
+  checkRunModel(run, *model);
+  auto state = std::make_shared<SimTK::State>(model->getReferenceState());
+  return [&run, model, state](double t) {
+    setRunCoordinates(run.states, t, *model, *state);
+    DrawList d = drawArticle(run.scene, *model, *state);
+    d.title += strf("  t = %.3f s", t);
+    return d;
+  };
+}
+
+/// A HAM-SAS run: each body moved by its recorded motion, magnified so the largest
+/// translation over the run is 10 % of the isolator's extent (its motions are microns).
+DrawAt isolatorFrames(const RunDir& run, std::shared_ptr<HamsasModes>& h) {
+  h = std::make_shared<HamsasModes>(analyseHamsas(run.isolator->isolator));
+  const std::size_t bodies = h->model.bodies.size();
+  std::vector<std::string> want{"time_s"};
+  for (const auto& body : h->model.bodies)
+    for (const char* q : {"_x_m", "_y_m", "_z_m", "_rx_rad", "_ry_rad", "_rz_rad"}) want.push_back(body.name + q);
+  if (want != run.states.columns)
+    throw SceneError(run.dir + "/states.csv: the run's columns are not the bodies of " + run.isolator->source +
+                     ": render a run with the scene it was made with");
+  double peak = 0;
+  for (const auto& row : run.states.rows)
+    for (std::size_t b = 0; b < bodies; ++b)
+      peak = std::max(peak, Eigen::Vector3d(row[1 + 6 * b], row[2 + 6 * b], row[3 + 6 * b]).norm());
+  Eigen::AlignedBox3d extent;
+  for (const auto& b : h->model.bodies) extent.extend(b.com);
+  const double scale = peak > 0 ? 0.1 * std::max(extent.diagonal().norm(), 0.5) / peak : 1.0;
+  return [&run, h, bodies, scale](double t) {
+    const std::vector<double> row = rowAt(run.states, t);
+    std::vector<BodyMotion> motion(bodies);
+    for (std::size_t b = 0; b < bodies; ++b) motion[b] = Eigen::Map<const BodyMotion>(row.data() + 1 + 6 * b);
+    return drawHamsasMoved(*run.isolator, *h, motion, scale, strf("t = %.3f s (motion x %.3g)", t, scale));
+  };
+}
+
 }  // namespace
 
 void renderHistory(const RenderArgs& args, const std::string& ext) {
@@ -50,24 +96,18 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
     throw UsageError("render --history: the run's own segments, gravity and overrides are used (run.json); drop --segments, --no-gravity and --set");
   render::FrameOptions size, frame;
   parseSize(args.size, size);
-  frame = size;  // with traces, the article takes the left 60 % and the traces the rest
+  frame = size;  // with traces, the drawing takes the left 60 % and the traces the rest
   if (!args.traces.empty()) frame.width = std::max(16, size.width * 3 / 5);
   const RunDir run = readRunDir(args.history, args.scene_path);
-  const auto model = buildArticleModel(run.scene);
-  checkRunModel(run, *model);
+  std::shared_ptr<Model> model;
+  std::shared_ptr<HamsasModes> isolator;
+  const DrawAt drawAt = run.isolator ? isolatorFrames(run, isolator) : articleFrames(run, model);
   const std::vector<render::Trace> traces = tracesFor(run, args.traces);
   const double t0 = run.states.rows.front()[0], t1 = run.states.rows.back()[0];
-  SimTK::State s = model->getReferenceState();
-  auto drawAt = [&](double t) {
-    setRunCoordinates(run.states, t, *model, s);
-    DrawList d = drawArticle(run.scene, *model, s);
-    d.title += strf("  t = %.3f s", t);
-    return d;
-  };
   // One camera for the whole run: the presets frame where the article goes over it.
   Eigen::AlignedBox3d reach;
   for (int k = 0; k <= 24; ++k) reach.extend(drawAt(t0 + (t1 - t0) * k / 24).bounds());
-  const Camera camera = chooseCamera(args.view, drawAt(t0), run.scene.views, reach);
+  const Camera camera = chooseCamera(args.view, drawAt(t0), run.isolator ? std::vector<CameraView>{} : run.scene.views, reach);
   auto image = [&](double t) {
     const cv::Mat article = render::renderFrame(drawAt(t), camera, frame);
     if (traces.empty()) return article;

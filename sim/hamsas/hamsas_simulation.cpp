@@ -112,6 +112,33 @@ class SpatialElements : public SimTK::Force::Custom::Implementation {
   std::vector<SimTK::Vec3> rest_, station_a_, station_b_, rest_angle_;
 };
 
+/// states.csv of an isolator run: every body's motion from the design (the base's is
+/// the ground's), to redraw the run.
+std::vector<std::string> bodyMotionColumns(const SpatialSpec& model) {
+  std::vector<std::string> cols{"time_s"};
+  for (const auto& body : model.bodies)
+    for (const char* q : {"_x_m", "_y_m", "_z_m", "_rx_rad", "_ry_rad", "_rz_rad"}) cols.push_back(body.name + q);
+  return cols;
+}
+
+std::vector<double> bodyMotionRow(const SimTK::SimbodyMatterSubsystem& matter, const std::vector<SimTK::MobilizedBodyIndex>& mobods,
+                                  const SpatialSpec& model, int ground_axis, double ground, double t, const SimTK::State& st) {
+  std::vector<double> q{t};
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    SimTK::Vec3 x(0), w(0);
+    if (b == 0) {
+      x[ground_axis] = ground;
+    } else {
+      const auto& mb = matter.getMobilizedBody(mobods[b]);
+      x = mb.getBodyOriginLocation(st) - vec(model.bodies[b].com);
+      const SimTK::Vec4 aa = mb.getBodyRotation(st).convertRotationToAngleAxis();
+      w = aa[0] * SimTK::Vec3(aa[1], aa[2], aa[3]);
+    }
+    q.insert(q.end(), {x[0], x[1], x[2], w[0], w[1], w[2]});
+  }
+  return q;
+}
+
 }  // namespace
 
 SimulationResult simulate(const HamsasScene& scene, const std::function<void(double)>& progress) {
@@ -169,6 +196,7 @@ SimulationResult simulate(const HamsasScene& scene, const std::function<void(dou
     for (const char* a : axes) cols.push_back(name + "_" + a + "_m");
   }
   for (const auto& sensor : model.sensors) cols.push_back("sensor_" + sensor.name + "_m");
+  r.states.columns = bodyMotionColumns(model);
 
   recordRun(sys, integrator, spec, r, progress, {}, [&](const SimTK::State& st) { return elements->dissipation(st); },
             [&](double t, const SimTK::State& st) {
@@ -185,6 +213,7 @@ SimulationResult simulate(const HamsasScene& scene, const std::function<void(dou
                             a.findStationLocationInGround(st, vec(sensor.point - oa));
       row.push_back(~d * vec(sensor.direction));
     }
+    r.states.rows.push_back(bodyMotionRow(matter, mobods, model, scene.ground_axis, program->position(t), t, st));
     return row;
   });
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv {
 namespace {
@@ -46,25 +47,11 @@ void addSensors(DrawList& d, const SpatialSpec& s) {
 
 }  // namespace
 
-DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, double phase, double scale, bool short_title) {
-  const SpatialSpec& s = h.model;
-  DrawList d;
-  d.up = Eigen::Vector3d::UnitZ();
-  Eigen::VectorXd phi;
-  double k = 0, peak = 0;
-  Eigen::AlignedBox3d extent;
-  for (const auto& b : s.bodies) extent.extend(b.com);
-  if (mode >= 0) {
-    MMV_DEMAND(mode < h.solution.shapes.cols());
-    phi = h.solution.shapes.col(mode);
-    // The largest displacement of a body's corner: its translation plus its rotation
-    // times its half-diagonal.
-    for (std::size_t b = 1; b < s.bodies.size(); ++b) {
-      const int r = SpatialLinearization::row(static_cast<int>(b));
-      peak = std::max(peak, phi.segment<3>(r).norm() + phi.segment<3>(r + 3).norm() * 0.5 * equivalentBox(s.bodies[b]).norm());
-    }
-    k = scale > 0 ? scale : (peak > 0 ? 0.1 * std::max(extent.diagonal().norm(), 0.5) / peak : 1.0);
-  }
+namespace {
+
+/// The bodies, each moved by motion[b] (translation, small rotation; m, rad, world) over
+/// a translucent ghost when `motion` is given, coloured by the drawn translation.
+void addBodies(DrawList& d, const SpatialSpec& s, const Eigen::AlignedBox3d& extent, const std::vector<BodyMotion>* motion) {
   std::map<std::string, bool> seen;
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const SpatialBody& body = s.bodies[b];
@@ -73,15 +60,16 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
     if (body.group == "ot") it.rgba[3] = 0.55f;  // the table would hide the spring box and the legs
     it.size = b == 0 ? Eigen::Vector3d(1.6, 1.6, 0.05) : equivalentBox(body);
     it.pose.translation() = b == 0 ? Eigen::Vector3d(body.com.x(), body.com.y(), extent.min().z() - 0.1) : body.com;
-    if (mode >= 0 && b > 0) {
-      const int r = SpatialLinearization::row(static_cast<int>(b));
-      DrawItem ghost = it;
-      ghost.rgba = {0.6f, 0.6f, 0.6f, 0.25f};
-      d.items.push_back(ghost);
-      const Eigen::Vector3d t = phase * k * phi.segment<3>(r), w = phase * k * phi.segment<3>(r + 3);
+    if (motion) {
+      if (b > 0) {
+        DrawItem ghost = it;
+        ghost.rgba = {0.6f, 0.6f, 0.6f, 0.25f};
+        d.items.push_back(ghost);
+      }
+      const Eigen::Vector3d t = (*motion)[b].head<3>(), w = (*motion)[b].tail<3>();
       it.pose.translation() += t;
       if (w.norm() > 0) it.pose.linear() = Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix();
-      it.value = t.norm();
+      if (b > 0) it.value = t.norm();
     }
     d.items.push_back(it);
     if (!seen[body.group]) {
@@ -89,6 +77,10 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
       seen[body.group] = true;
     }
   }
+}
+
+/// The springs' and joints' points, and the sensors.
+void addPoints(DrawList& d, const SpatialSpec& s) {
   for (const auto& sp : s.springs) {
     DrawItem it;
     it.shape = DrawItem::Shape::Sphere;
@@ -101,6 +93,35 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
   d.legend.push_back({"effective spherical joints", {0.3f, 0.3f, 0.3f, 1}});
   addSensors(d, s);
   if (!s.sensors.empty()) d.legend.push_back({"sensors (rod: measuring axis)", {0.8f, 0.1f, 0.1f, 1}});
+}
+
+}  // namespace
+
+DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, double phase, double scale, bool short_title) {
+  const SpatialSpec& s = h.model;
+  DrawList d;
+  d.up = Eigen::Vector3d::UnitZ();
+  Eigen::VectorXd phi;
+  double k = 0, peak = 0;
+  Eigen::AlignedBox3d extent;
+  for (const auto& b : s.bodies) extent.extend(b.com);
+  std::vector<BodyMotion> motion;
+  if (mode >= 0) {
+    MMV_DEMAND(mode < h.solution.shapes.cols());
+    phi = h.solution.shapes.col(mode);
+    // The largest displacement of a body's corner: its translation plus its rotation
+    // times its half-diagonal.
+    for (std::size_t b = 1; b < s.bodies.size(); ++b) {
+      const int r = SpatialLinearization::row(static_cast<int>(b));
+      peak = std::max(peak, phi.segment<3>(r).norm() + phi.segment<3>(r + 3).norm() * 0.5 * equivalentBox(s.bodies[b]).norm());
+    }
+    k = scale > 0 ? scale : (peak > 0 ? 0.1 * std::max(extent.diagonal().norm(), 0.5) / peak : 1.0);
+    motion.assign(s.bodies.size(), BodyMotion::Zero());
+    for (std::size_t b = 1; b < s.bodies.size(); ++b)
+      motion[b] = phase * k * phi.segment<6>(SpatialLinearization::row(static_cast<int>(b)));
+  }
+  addBodies(d, s, extent, mode >= 0 ? &motion : nullptr);
+  addPoints(d, s);
   char title[256];
   if (mode < 0) {
     std::snprintf(title, sizeof title, "%s: %zu bodies at the design configuration", scene.name.c_str(), s.bodies.size());
@@ -115,6 +136,29 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
                     h.modes[mode].frequency_hz, h.modes[mode].label.c_str(), k);
   }
   d.title = title;
+  return d;
+}
+
+DrawList drawHamsasMoved(const HamsasScene& scene, const HamsasModes& h, const std::vector<BodyMotion>& motion, double scale,
+                         const std::string& title) {
+  const SpatialSpec& s = h.model;
+  MMV_DEMAND(motion.size() == s.bodies.size());
+  DrawList d;
+  d.up = Eigen::Vector3d::UnitZ();
+  Eigen::AlignedBox3d extent;
+  for (const auto& b : s.bodies) extent.extend(b.com);
+  std::vector<BodyMotion> drawn(motion.size());
+  double peak = 0;
+  for (std::size_t b = 0; b < motion.size(); ++b) {
+    drawn[b] = scale * motion[b];
+    if (b > 0) peak = std::max(peak, motion[b].head<3>().norm());
+  }
+  addBodies(d, s, extent, &drawn);
+  addPoints(d, s);
+  d.has_color_bar = true;
+  d.color_bar = {strf("|u| (m, drawn: motion x %.3g)", scale), 0.0, std::max(scale * peak, 1e-12)};
+  d.legend.push_back({"design configuration (ghost)", {0.6f, 0.6f, 0.6f, 1}});
+  d.title = scene.name + ": " + title;
   return d;
 }
 

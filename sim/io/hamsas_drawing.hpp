@@ -15,6 +15,15 @@
 
 namespace mmv {
 
+/// A body's motion: translation (m) and small rotation vector (rad), world axes.
+using BodyMotion = Eigen::Matrix<double, 6, 1>;
+
+/// The isolator with every body (the base included) moved by `motion` x `scale` (a
+/// time run's motion is micrometres: `scale` magnifies it, and the colour bar says by
+/// how much), over a ghost of the design configuration; `title` follows the scene name.
+DrawList drawHamsasMoved(const HamsasScene& scene, const HamsasModes& h, const std::vector<BodyMotion>& motion, double scale,
+                         const std::string& title);
+
 /// The isolator at rest (mode < 0) or mode `mode` (0-based) at `phase` (-1..1).
 /// `scale` > 0: metres of drawing per unit modal coordinate; 0: automatic.
 DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode = -1, double phase = 1.0, double scale = 0,

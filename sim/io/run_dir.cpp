@@ -87,13 +87,19 @@ void checkRunModel(const RunDir& run, const Model& model) {
                         run.dir.c_str(), run.states.columns.size() - 1, run.scene.source.c_str(), want.size() - 1));
 }
 
-void setRunCoordinates(const CsvTable& states, double t, const Model& model, SimTK::State& s) {
-  const auto& rows = states.rows;
+std::vector<double> rowAt(const CsvTable& table, double t) {
+  const auto& rows = table.rows;
   auto it = std::upper_bound(rows.begin(), rows.end(), t, [](double v, const std::vector<double>& r) { return v < r[0]; });
   const std::size_t hi = std::clamp<std::size_t>(static_cast<std::size_t>(it - rows.begin()), 1, rows.size() - 1), lo = hi - 1;
   const double w = std::clamp((t - rows[lo][0]) / (rows[hi][0] - rows[lo][0]), 0.0, 1.0);
-  for (int i = 0; i < model.getNumCoordinates(); ++i)
-    s.updQ()[model.getQIndex(i)] = (1 - w) * rows[lo][i + 1] + w * rows[hi][i + 1];
+  std::vector<double> out(rows[lo].size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = (1 - w) * rows[lo][i] + w * rows[hi][i];
+  return out;
+}
+
+void setRunCoordinates(const CsvTable& states, double t, const Model& model, SimTK::State& s) {
+  const std::vector<double> row = rowAt(states, t);
+  for (int i = 0; i < model.getNumCoordinates(); ++i) s.updQ()[model.getQIndex(i)] = row[static_cast<std::size_t>(i) + 1];
   s.setTime(t);
   model.getSystem().realize(s, SimTK::Stage::Position);
 }
@@ -114,10 +120,12 @@ RunDir readRunDir(const std::string& dir, const std::string& scene_path) {
   }
   const std::string scene_file = scene_path.empty() ? dir + "/scene.yaml" : scene_path;
   Scene scene = scene_path.empty() ? parseScene(readText(scene_file), scene_file, r.overrides) : loadSceneFile(scene_file, r.overrides);
-  auto* a = std::get_if<ArticleScene>(&scene);
-  if (!a) throw SceneError(scene_file + ": a HAM-SAS run; render --history draws article runs only");
-  r.scene = std::move(*a);
-  if (r.segments_override > 0) overrideSegments(r.scene, r.segments_override);
+  if (auto* a = std::get_if<ArticleScene>(&scene)) {
+    r.scene = std::move(*a);
+    if (r.segments_override > 0) overrideSegments(r.scene, r.segments_override);
+  } else {
+    r.isolator = std::get<HamsasScene>(std::move(scene));
+  }
   r.history = parseNumericCsv(readText(dir + "/history.csv"), dir + "/history.csv");
   r.states = parseNumericCsv(readText(dir + "/states.csv"), dir + "/states.csv");
   if (r.history.rows.size() != r.states.rows.size())

@@ -5,6 +5,7 @@
 /// file is SceneFileError (exit 66); a malformed one SceneError (65) naming the file,
 /// line and column.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ CsvTable parseNumericCsv(const std::string& text, const std::string& source);
 
 struct RunDir {
   std::string dir;
-  ArticleScene scene;        ///< the scene copy, with the run's overrides applied.
+  ArticleScene scene;        ///< the scene copy, with the run's overrides applied (an article's run).
+  std::optional<HamsasScene> isolator;  ///< a HAM-SAS run's scene instead.
   int segments_override = 0; ///< the run's --segments (0: the scene's own).
   std::vector<std::string> overrides;  ///< the run's --set KEY=VALUE, applied to its scene.
   CsvTable history, states;
@@ -40,6 +42,9 @@ RunDir readRunDir(const std::string& dir, const std::string& scene_path = "");
 /// SceneError unless the run's states.csv columns are `model`'s coordinates, in order
 /// (the model is the one the run was made with).
 void checkRunModel(const RunDir& run, const Model& model);
+
+/// The row of `table` at time t: linear between the samples around it, held at the ends.
+std::vector<double> rowAt(const CsvTable& table, double t);
 
 /// The run's coordinates at time t (linear between the samples around it; held at the
 /// ends) into `s`, realized to Position.

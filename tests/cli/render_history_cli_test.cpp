@@ -80,13 +80,17 @@ TEST_F(Cli, RenderHistoryRefusesWhatItCannotDraw) {
   EXPECT_EQ(run("render --history " + run_dir.string() + " --mode 1 --out " + out.string()).code, 64);
   EXPECT_EQ(run("render --history " + run_dir.string() + " --segments 4 --out " + out.string()).code, 64);
   EXPECT_EQ(run("render --traces enc1 --out " + out.string()).code, 64);
-  // A HAM-SAS run is not redrawn (its runs record no body coordinates yet): it says so.
-  const fs::path isolator_run = dir_ / "isolator";
+  // A HAM-SAS run is redrawn too, each body moved by its recorded motion; another
+  // isolator's bodies are refused.
+  const fs::path isolator_run = dir_ / "isolator", isolator_png = dir_ / "isolator.png";
   ASSERT_EQ(run("simulate " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() +
-                " --duration 0.05 --sample-rate 100 --out " + isolator_run.string()).code, 0);
-  const Result isolator = run("render --history " + isolator_run.string() + " --out " + out.string());
-  EXPECT_EQ(isolator.code, 65);
-  EXPECT_NE(isolator.err.find("a HAM-SAS run; render --history draws article runs only"), std::string::npos) << isolator.err;
+                " --duration 0.1 --sample-rate 100 --out " + isolator_run.string()).code, 0);
+  const Result isolator = run("render --history " + isolator_run.string() + " --traces optical_table_x_m --size 320x240 --out " +
+                              isolator_png.string());
+  EXPECT_EQ(isolator.code, 0) << isolator.err;
+  EXPECT_TRUE(isPng(isolator_png));
+  const Result mixed = run("render " + slew + " --history " + isolator_run.string() + " --out " + out.string());
+  EXPECT_EQ(mixed.code, 65) << mixed.err;
   // A damaged states.csv is named at its line.
   std::ofstream(run_dir / "states.csv", std::ios::app) << "0.1,oops\n";
   const Result bad = run("render --history " + run_dir.string() + " --out " + out.string());

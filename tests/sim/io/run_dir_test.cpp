@@ -4,6 +4,7 @@
 
 #include "sim/io/run_dir.hpp"
 #include "sim/io/simulation_report.hpp"
+#include "sim/hamsas/hamsas_simulation.hpp"
 #include "sim/model/article_builder.hpp"
 
 namespace mmv {
@@ -45,6 +46,30 @@ TEST(RunDir, RecordedCoordinatesPutTheTipsWhereTheRunHadThem) {
   ArticleScene finer = scene;
   overrideSegments(finer, 3);
   EXPECT_THROW(checkRunModel(run, *buildArticleModel(finer)), SceneError);
+}
+
+// HAM-SAS runs record every body's motion: the optical table's and the base's columns
+// are the history's table and ground columns, sample by sample.
+TEST(RunDir, IsolatorRunsRecordEveryBody) {
+  HamsasScene scene = loadHamsasSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/hamsas.yaml");
+  scene.simulation.duration = 0.1;
+  scene.simulation.sample_rate_hz = 100;
+  const SimulationResult r = simulate(scene);
+  const CsvTable history = parseNumericCsv(simulationHistoryCsv(r.record), "history.csv");
+  const CsvTable states = parseNumericCsv(simulationHistoryCsv(r.states), "states.csv");
+  ASSERT_EQ(history.rows.size(), states.rows.size());
+  EXPECT_EQ(states.columns.size(), 1 + 6 * 11u);
+  const int ot = states.column("optical_table_x_m"), ot_h = history.column("optical_table_x_m");
+  const int base = states.column("base_x_m"), ground = history.column("ground_x_m");
+  ASSERT_GT(ot, 0);
+  ASSERT_GT(base, 0);
+  double moved = 0;
+  for (std::size_t k = 0; k < states.rows.size(); ++k) {
+    EXPECT_EQ(states.rows[k][static_cast<std::size_t>(ot)], history.rows[k][static_cast<std::size_t>(ot_h)]);
+    EXPECT_EQ(states.rows[k][static_cast<std::size_t>(base)], history.rows[k][static_cast<std::size_t>(ground)]);
+    moved = std::max(moved, std::abs(states.rows[k][static_cast<std::size_t>(base)]));
+  }
+  EXPECT_GT(moved, 0.0);
 }
 
 TEST(RunDir, MalformedCsvIsNamedAtItsLineAndColumn) {
