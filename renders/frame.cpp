@@ -155,7 +155,8 @@ const std::array<std::array<float, 3>, 256>& viridis() {
 
 /// The colour of a value on the colour bar.
 std::array<float, 4> barColor(const ColorBar& bar, double value, float alpha) {
-  const double t = bar.max > bar.min ? std::clamp((value - bar.min) / (bar.max - bar.min), 0.0, 1.0) : 0.0;
+  double t = bar.max > bar.min ? std::clamp((value - bar.min) / (bar.max - bar.min), 0.0, 1.0) : 0.0;
+  if (!std::isfinite(t)) t = 0;  // an infinite bar: the table index must stay in range
   const auto& c = viridis()[static_cast<std::size_t>(std::lround(255 * t))];
   return {c[0], c[1], c[2], alpha};
 }

@@ -3,6 +3,7 @@
 // heat map and the review renders (the chosen sensors on the article and on each
 // target mode) by renders/.
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <iostream>
 #include <sstream>
@@ -37,43 +38,11 @@ std::vector<int> parseModeList(const std::string& text) {
   return out;
 }
 
-/// The review renders: the article with the chosen sensors coloured by their score,
-/// and a contact sheet of the target modes with the sensors on them.
-void writeReviewRenders(OutputDir& out, const ArticleScene& scene, const PlacementStudy& s) {
-  const SolvedScene solved = solveScene(scene);
-  SimTK::State st = solved.equilibrium.state;
-  solved.model->getSystem().realize(st, SimTK::Stage::Position);
-  std::vector<Eigen::Vector3d> at;
-  std::vector<std::string> names;
-  std::vector<double> scores;
-  for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
-    const PlacementCandidate& c = s.candidates[s.result.kept_blocks[i]];
-    at.push_back({c.world_x, c.world_y, 0});
-    names.push_back(c.station + " " + c.axis);
-    scores.push_back(s.result.block_score[i]);
-  }
-  DrawList d = drawArticle(scene, *solved.model, st);
-  addSensorMarks(d, at, names, scores);
-  d.has_color_bar = true;
-  d.color_bar = {s.method == "effective independence" ? "EfI" : "score", 0.0, s.result.block_score.maxCoeff()};
-  d.title = strf("%s: %zu sensors by %s", scene.name.c_str(), at.size(), s.method.c_str());
-  Camera camera;
-  presetCamera("front", d.bounds(), camera, d.up);
-  render::writePng(out.stage("review_sensors.png"), render::renderFrame(d, camera, {1280, 720, 3}));
-  std::vector<cv::Mat> tiles;
-  for (int m : s.target_modes) {
-    DrawList md = ModeFrames(scene, solved, m - 1, 0.0).frame(1.0, true);
-    std::vector<std::string> bare(at.size());
-    addSensorMarks(md, at, bare);
-    Camera c;
-    presetCamera("front", md.bounds(), c, md.up);
-    tiles.push_back(render::renderFrame(md, c, {480, 320, 2}));
-  }
-  render::writePng(out.stage("review_modes.png"), render::contactSheet(tiles, std::min<int>(4, tiles.size())));
-}
-
-/// The same for the isolator: the chosen points on its bodies, and on each target mode.
-void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const HamsasModes& h, const PlacementStudy& s) {
+/// The review renders, for either kind of scene: the still drawing (`still`) with the
+/// chosen sensors coloured by their score, and a contact sheet of the target modes
+/// (`mode(m)`, 1-based) with the sensors on them, seen from preset `view`.
+void writeReviewRenders(OutputDir& out, const PlacementStudy& s, const std::string& scene_name, DrawList d,
+                        const std::function<DrawList(int)>& mode, const std::string& view) {
   std::vector<Eigen::Vector3d> at;
   std::vector<std::string> names;
   std::vector<double> scores;
@@ -83,25 +52,39 @@ void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const Ha
     names.push_back(c.station + " " + c.axis);
     scores.push_back(s.result.block_score[i]);
   }
-  DrawList d = drawHamsas(scene, h);
-  d.labels.clear();  // the scene's own sensors would crowd the chosen ones
   addSensorMarks(d, at, names, scores);
   d.has_color_bar = true;
   d.color_bar = {s.method == "effective independence" ? "EfI" : "score", 0.0, s.result.block_score.maxCoeff()};
-  d.title = strf("%s: %zu sensors by %s", scene.name.c_str(), at.size(), s.method.c_str());
+  d.title = strf("%s: %zu sensors by %s", scene_name.c_str(), at.size(), s.method.c_str());
   Camera camera;
-  presetCamera("iso", d.bounds(), camera, d.up);
+  presetCamera(view, d.bounds(), camera, d.up);
   render::writePng(out.stage("review_sensors.png"), render::renderFrame(d, camera, {1280, 720, 3}));
   std::vector<cv::Mat> tiles;
   for (int m : s.target_modes) {
-    DrawList md = drawHamsas(scene, h, m - 1, 1.0, 0.0, true);
-    md.labels.clear();
+    DrawList md = mode(m);
     addSensorMarks(md, at, std::vector<std::string>(at.size()));
     Camera c;
-    presetCamera("iso", md.bounds(), c, md.up);
+    presetCamera(view, md.bounds(), c, md.up);
     tiles.push_back(render::renderFrame(md, c, {480, 320, 2}));
   }
   render::writePng(out.stage("review_modes.png"), render::contactSheet(tiles, std::min<int>(4, tiles.size())));
+}
+
+void writeArticleReviewRenders(OutputDir& out, const ArticleScene& scene, const PlacementStudy& s) {
+  const SolvedScene solved = solveScene(scene);
+  SimTK::State st = solved.equilibrium.state;
+  solved.model->getSystem().realize(st, SimTK::Stage::Position);
+  writeReviewRenders(out, s, scene.name, drawArticle(scene, *solved.model, st),
+                     [&](int m) { return ModeFrames(scene, solved, m - 1, 0.0).frame(1.0, true); }, "front");
+}
+
+void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const HamsasModes& h, const PlacementStudy& s) {
+  auto bare = [](DrawList d) {
+    d.labels.clear();  // the scene's own sensors would crowd the chosen ones
+    return d;
+  };
+  writeReviewRenders(out, s, scene.name, bare(drawHamsas(scene, h)),
+                     [&](int m) { return bare(drawHamsas(scene, h, m - 1, 1.0, 0.0, true)); }, "iso");
 }
 
 }  // namespace
@@ -137,7 +120,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
         render::writeHeatmapPng(out->stage("automac.png"), s.result.automac, rows, cols,
                                 strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()),
                                 "mode", "mode");
-        if (article) writeReviewRenders(*out, *article, s);
+        if (article) writeArticleReviewRenders(*out, *article, s);
         else writeHamsasReviewRenders(*out, *isolator, *h, s);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());

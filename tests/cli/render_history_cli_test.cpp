@@ -77,6 +77,12 @@ TEST_F(Cli, RenderHistoryRefusesWhatItCannotDraw) {
   EXPECT_EQ(trace.code, 64);
   EXPECT_NE(trace.err.find("no sensor or column 'acc9'"), std::string::npos) << trace.err;
   EXPECT_EQ(run("render --history " + run_dir.string() + " --at 5 --out " + out.string()).code, 64);
+  // 0.2 s at 240 frames/s slowed 1000 times is 48,001 frames: above the 20,000 a video may have.
+  const Result long_video = run("render --history " + run_dir.string() + " --fps 240 --speed 0.001 --out " +
+                                (dir_ / "long.mp4").string());
+  EXPECT_EQ(long_video.code, 64);
+  EXPECT_NE(long_video.err.find("(limit 20000)"), std::string::npos) << long_video.err;
+  EXPECT_FALSE(fs::exists(dir_ / "long.mp4"));
   EXPECT_EQ(run("render --history " + run_dir.string() + " --mode 1 --out " + out.string()).code, 64);
   EXPECT_EQ(run("render --history " + run_dir.string() + " --segments 4 --out " + out.string()).code, 64);
   EXPECT_EQ(run("render --traces enc1 --out " + out.string()).code, 64);
