@@ -42,6 +42,14 @@ double Biquad::step(double x) {
   return y;
 }
 
+double Biquad::prime(double x) {
+  // The DC gain: (b0 + b1 + b2) / (1 + a1 + a2), 1 for a low-pass, 0 for a high-pass.
+  const double y = (b0_ + b1_ + b2_) / (1.0 + a1_ + a2_) * x;
+  x1_ = x2_ = x;
+  y1_ = y2_ = y;
+  return y;
+}
+
 double Biquad::magnitude(double f) const {
   const std::complex<double> z1 = std::exp(std::complex<double>(0, -2 * M_PI * f / fs_)), z2 = z1 * z1;
   return std::abs((b0_ + b1_ * z1 + b2_ * z2) / (1.0 + a1_ * z1 + a2_ * z2));
@@ -64,7 +72,11 @@ Sensor::Sensor(const SensorSpec& s, double fs) : spec_(s), rng_(s.seed) {
 }
 
 double Sensor::sample(double truth) {
-  ++count_;
+  if (count_++ == 0) {  // on long before the run: its filters rest at the first value
+    double dc = truth;
+    if (has_high_) dc = high_.prime(dc);
+    if (has_low_) low_.prime(dc);
+  }
   double y = truth;
   if (has_high_) y = high_.step(y);
   if (has_low_) y = low_.step(y);

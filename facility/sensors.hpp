@@ -6,6 +6,8 @@
 ///
 ///   band limits  ->  + noise (seeded, Gaussian)  ->  range saturation  ->  quantization
 ///
+/// A sensor is on long before the run: its filters start at rest under the first
+/// sample's value (an accelerometer's high-pass sees gravity as steady, not as a step).
 /// Band limits are second-order Butterworth sections (bilinear transform with
 /// prewarping at the corner): a low-pass at the upper band edge and, where the sensor
 /// has one (accelerometers: 0.1 Hz), a high-pass at the lower edge. Saturation clips
@@ -44,6 +46,9 @@ class Biquad {
   Biquad() = default;
   Biquad(bool high_pass, double corner_hz, double sample_hz);
   double step(double x);
+  /// Sets the section at rest under a constant input x (as if it had seen x forever);
+  /// returns its output then (x times the DC gain).
+  double prime(double x);
   /// |H(e^{i w T})| at frequency f (Hz).
   double magnitude(double f_hz) const;
 
