@@ -32,12 +32,13 @@ const std::map<std::string, std::set<std::string>>& allowedIncludes() {
   static const std::set<std::string> linear = with(modes, {"sim/modes"});
   static const std::set<std::string> time = with(statics, {"sim/statics"});
   static const std::set<std::string> hamsas = with(with(linear, time), {"sim/linear", "sim/time"});
-  static const std::set<std::string> io = with(hamsas, {"sim/hamsas"});
+  static const std::set<std::string> plan = with(hamsas, {"sim/hamsas"});
+  static const std::set<std::string> io = with(plan, {"sim/plan"});
   static const std::set<std::string> cli = with(io, {"sim/io", "renders"});
   static const std::map<std::string, std::set<std::string>> rules{
       {"article", {}},           {"facility", {}},          {"sim/core", core},   {"sim/scene", scene},
       {"sim/model", model},      {"sim/statics", statics},  {"sim/modes", modes}, {"sim/linear", linear},
-      {"sim/time", time},        {"sim/hamsas", hamsas},    {"sim/io", io},       {"renders", {"sim/core"}},
+      {"sim/time", time},        {"sim/hamsas", hamsas},    {"sim/plan", plan},       {"sim/io", io},       {"renders", {"sim/core"}},
       {"sim/cli", cli},
   };
   return rules;

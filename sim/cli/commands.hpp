@@ -130,10 +130,19 @@ struct RenderArgs : SceneArgs {
   std::vector<std::string> traces;  ///< history: history.csv columns (or sensor names) shown in an inset.
 };
 
+struct CheckArgs : SceneArgs {
+  bool json = false;
+  double margin = 20;      ///< %: a margin below it is a warning.
+  std::string band = "0.1:50";  ///< Hz: the modes of interest.
+  std::string out;         ///< check.md and check.json here.
+  bool force = false;
+};
+
 /// `render --history`: frames of a time run (sim/cli/render_history.cpp).
 void renderHistory(const RenderArgs& args, const std::string& ext);
 
 int runModesCommand(const ModesArgs& args);
+int runCheckCommand(const CheckArgs& args);
 int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);
@@ -163,6 +172,8 @@ std::vector<std::string> checkedPoints(const std::vector<std::string>& names, co
                                        const std::string& option);
 /// --bc and --tip-mass into `o`; throws UsageError naming the known values.
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o);
+/// --band F_MIN_HZ:F_MAX_HZ as (min, max); UsageError unless 0 <= min < max.
+std::pair<double, double> parseBand(const std::string& band);
 /// Runs `body`, turning the error classes into messages on stderr and exit codes.
 int guarded(const std::function<int()>& body);
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <fstream>
 #include <iostream>
+#include <tuple>
 #include <sstream>
 
 #include "renders/plot.hpp"
@@ -100,12 +101,7 @@ ReductionOptions reductionOptions(const LinearArgs& args) {
   ReductionOptions o;
   o.modes = args.rom_modes;
   if (!args.band.empty()) {
-    const auto b = split(args.band, ':');
-    char *e1 = nullptr, *e2 = nullptr;
-    if (b.size() != 2) throw UsageError("--band: expected F_MIN_HZ:F_MAX_HZ");
-    o.band_min_hz = std::strtod(b[0].c_str(), &e1);
-    o.band_max_hz = std::strtod(b[1].c_str(), &e2);
-    if (*e1 || *e2 || !(o.band_max_hz > o.band_min_hz) || o.band_min_hz < 0) throw UsageError("--band: expected 0 <= F_MIN_HZ < F_MAX_HZ");
+    std::tie(o.band_min_hz, o.band_max_hz) = parseBand(args.band);
     o.modes = 0;
   }
   o.residualize = !args.no_residualize;

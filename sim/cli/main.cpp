@@ -215,6 +215,18 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& r) {
   return c;
 }
 
+/// `mmvlab check` and its options.
+CLI::App* addCheckCommand(CLI::App& app, CheckArgs& ck) {
+  CLI::App* c = app.add_subcommand("check", "Feasibility: torquers, gimbal, table, modes, sensors, lab; demand, capacity, margin, verdict");
+  addSceneOptions(c, ck);
+  c->add_flag("--json", ck.json, "Print JSON instead of the table");
+  c->add_option("--margin", ck.margin, "Required margin, %: a smaller one is a warning")->capture_default_str()->check(CLI::Range(0.0, 99.0));
+  c->add_option("--band", ck.band, "The modes of interest, F_MIN_HZ:F_MAX_HZ (report: 0.1-50 Hz)")->capture_default_str();
+  c->add_option("--out", ck.out, "Also write check.md (Markdown) and check.json here");
+  c->add_flag("--force", ck.force, "Replace files of the same names in --out");
+  return c;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -242,6 +254,9 @@ int main(int argc, char** argv) {
   RenderArgs rd;
   CLI::App* rn = addRenderCommand(app, rd);
 
+  CheckArgs ck;
+  CLI::App* ch = addCheckCommand(app, ck);
+
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
   try {
@@ -252,6 +267,7 @@ int main(int argc, char** argv) {
   }
   if (m->parsed()) return runModesCommand(modes);
   if (c->parsed()) return runConvergeCommand(conv);
+  if (ch->parsed()) return runCheckCommand(ck);
   if (cp->parsed()) return runCompareCommand(cmp);
   if (sp->parsed()) return runSweepCommand(sw);
   lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;

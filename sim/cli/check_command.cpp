@@ -1,0 +1,30 @@
+// mmvlab check: the feasibility report (sim/plan/check.hpp), written by sim/io/check_report.hpp.
+#include <fstream>
+#include <iostream>
+
+#include "sim/cli/commands.hpp"
+#include "sim/io/check_report.hpp"
+#include "sim/io/output_dir.hpp"
+
+namespace mmv::cli {
+
+int runCheckCommand(const CheckArgs& args) {
+  return guarded([&] {
+    const ArticleScene scene = loadArticleScene(args, "check");
+    CheckOptions opt;
+    opt.required_margin_pct = args.margin;
+    std::tie(opt.band_min_hz, opt.band_max_hz) = parseBand(args.band);
+    std::unique_ptr<OutputDir> out;
+    if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
+    const CheckReport rep = runCheck(scene, opt);
+    if (out) {
+      std::ofstream(out->stage("check.md"), std::ios::binary) << checkMarkdown(rep);
+      std::ofstream(out->stage("check.json"), std::ios::binary) << checkJson(rep).dump(2) << '\n';
+      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+    }
+    std::cout << (args.json ? checkJson(rep).dump(2) + "\n" : checkText(rep)) << std::flush;
+    return kOk;
+  });
+}
+
+}  // namespace mmv::cli

@@ -1,0 +1,80 @@
+#pragma once
+/// `mmvlab check`: can this article be tested in this facility with these torquers,
+/// table, gimbal and sensors? One line per requirement: what the test demands, what the
+/// equipment gives, the margin and a verdict (docs/planning.md).
+///
+/// What each group computes (all in SI; angles in rad):
+///  - torquers: the holding torque of each locked joint and each gimbal axis, worst over
+///    the configuration range. A rigid-link model of the article is searched over every
+///    held angle within its range (a grid, then a pattern search from the worst grid
+///    point to 1e-4 rad); the worst configuration is then solved with the scene's
+///    flexible model (deflected shape with gravity) and that torque is the demand.
+///    Closed trees and scenes with free or servo joints are checked at the scene's
+///    configuration only (the closure or the free joints fix the others), and say so.
+///    Slews: the peak torque of a time run of the rigid-link article through the
+///    scene's programs (gravity and the slews' inertial torque; flexible dynamic
+///    amplification needs `mmvlab simulate`).
+///  - table (scene on the table): payload weight (article, torquers, gimbal) against
+///    the table's load capacity; the program's peak displacement against the stroke;
+///    its highest frequency against the servo bandwidth; the modes in the band above
+///    the bandwidth, which the table cannot excite.
+///  - modes: the system modes in the band (report: 0.1-50 Hz), their closest pair
+///    against the half-power bandwidth 2 zeta f (zeta the scene's modal damping, else
+///    1 %): closer than that, one response peak hides the other.
+///  - sensors: each sensor's peak signal against its range, with its
+///    signal-to-resolution ratio in dB: during the rigid-link run (slews and table,
+///    through the sensor model) and, for accelerometers on the table, the steady-state
+///    response of the flexible linear model to the table's program (sine: at its
+///    frequency; sweep: the worst over its band; random: 3 sigma).
+///  - lab (scene with `lab:`): the envelope of the article's points at rest and during
+///    the rigid-link run against the floor, the ceiling and the platform's hole.
+///  - plausibility: masses, lengths, moduli, deflections and frequencies outside what a
+///    lab article can have, each naming the likely unit mistake.
+
+#include <string>
+#include <vector>
+
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+enum class Verdict { Pass, Warn, Fail, NotChecked, Info };
+const char* verdictName(Verdict v);  ///< "pass", "warn", "FAIL", "n/a", "info".
+
+struct CheckLine {
+  std::string group;        ///< torquers, gimbal, table, modes, sensors, lab, plausibility.
+  std::string requirement;  ///< what is checked, e.g. "joint1 holding torque over +-45 deg".
+  double demand = 0;        ///< what the test needs (unit below).
+  double capacity = 0;      ///< what the equipment gives; 0 with has_capacity false: unknown.
+  bool has_capacity = false;
+  std::string unit;
+  /// (capacity - demand) / capacity * 100; meaningful when has_capacity.
+  double margin_pct = 0;
+  Verdict verdict = Verdict::Info;
+  std::string note;  ///< where the worst case is, what is assumed, what to do.
+};
+
+struct CheckOptions {
+  double required_margin_pct = 20;  ///< below it (but >= 0): warn.
+  double band_min_hz = 0.1, band_max_hz = 50;  ///< the modes of interest (report).
+  int grid_points = 0;  ///< per held angle in the torque search; 0: 5 (3 beyond 5 angles).
+};
+
+struct CheckReport {
+  std::string scene_name, scene_source;
+  std::vector<std::string> overrides;
+  int segments = 0;  ///< the largest segment count of a flexible link.
+  std::vector<CheckLine> lines;
+  Verdict overall = Verdict::Pass;
+  int not_checked = 0;  ///< lines without a capacity to check against.
+  double seconds = 0;
+};
+
+/// Runs every check that applies to the scene. Throws NumericalError when the
+/// equilibrium or the modes cannot be found (nothing to check against).
+CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options = {});
+
+/// margin and verdict of a line from demand and capacity (exposed for the tests).
+void judge(CheckLine& line, double required_margin_pct);
+
+}  // namespace mmv

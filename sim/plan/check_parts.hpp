@@ -1,0 +1,44 @@
+#pragma once
+/// The pieces of `mmvlab check` (sim/plan/check.hpp), one file per group of lines.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/modes/system_modes.hpp"
+#include "sim/plan/check.hpp"
+#include "sim/time/simulation.hpp"
+
+namespace mmv::plan {
+
+/// What every group reads: the scene, its modes about the held equilibrium, and the
+/// time run of its rigid-link copy (open trees with something that moves or senses).
+struct CheckInputs {
+  const ArticleScene& scene;
+  const CheckOptions& options;
+  ModesReport modes;
+  ArticleScene rigid;  ///< the scene with every link rigid.
+  std::optional<SimulationResult> rigid_run;
+  std::string rigid_run_skipped;  ///< why there is no rigid run (empty: there is one, or nothing to run).
+};
+
+/// The scene with every link rigid (one body per link; joints, masses and programs kept).
+ArticleScene rigidCopy(const ArticleScene& scene);
+
+/// Holding torques of locked joints and gimbal axes, worst over their ranges; the
+/// peaks of the rigid-link run (slews); gimbal angles against their ranges.
+void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// Each sensor's peak signal against its range, with its signal-to-resolution ratio.
+void addSensorLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// Payload, stroke, bandwidth (table scenes); modal content in the band.
+void addTableAndModeLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// The article's envelope against the lab (scenes with `lab:`).
+void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// Values no lab article has, each with the likely unit mistake.
+void addPlausibilityLines(const CheckInputs& in, std::vector<CheckLine>& out);
+
+/// A line with its margin judged.
+CheckLine makeLine(const std::string& group, const std::string& requirement, double demand, double capacity,
+                   const std::string& unit, const std::string& note, double required_margin_pct);
+
+}  // namespace mmv::plan

@@ -1,0 +1,170 @@
+// mmvlab check (sim/plan/check.hpp): each kind of line against a hand-computed case.
+#include "sim/plan/check.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "facility/sensors.hpp"
+#include "sim/core/text.hpp"
+#include "sim/scene/scene.hpp"
+#include "tests/support/scenes.hpp"
+
+namespace mmv {
+namespace {
+
+const CheckLine* find(const CheckReport& r, const std::string& starts) {
+  for (const auto& l : r.lines)
+    if (l.requirement.rfind(starts, 0) == 0) return &l;
+  return nullptr;
+}
+
+constexpr double kG = 9.80665;
+
+testing::Beam rigidBeam() {
+  testing::Beam b;
+  b.length = 1.2;
+  b.area = 2e-4;  // 7800 * 2e-4 * 1.2 = 1.872 kg
+  return b;
+}
+
+TEST(Check, RigidLinkHoldingTorqueIsWorstWhereTheLinkIsLevelInsideTheRange) {
+  // Base direction 20 deg: the link is level at joint angle -20 deg, between grid points.
+  const auto b = rigidBeam();
+  ArticleScene s = testing::cantileverScene(b, 1, kG, 20.0, 0.5, /*rigid=*/true);
+  const double m = b.massPerLength() * b.length, tau = (m * b.length / 2 + 0.5 * b.length) * kG;
+  s.article.joints[0].torque_capacity = 2 * tau;
+  const CheckReport r = runCheck(s);
+  const CheckLine* l = find(r, "joint1 holding torque, worst over +-45 deg");
+  ASSERT_NE(l, nullptr);
+  EXPECT_NEAR(l->demand, tau, 1e-6 * tau);
+  EXPECT_NEAR(l->margin_pct, 50.0, 1e-4);
+  EXPECT_EQ(l->verdict, Verdict::Pass);
+  EXPECT_NE(l->note.find("joint1 -20.0 deg"), std::string::npos) << l->note;
+  // A smaller capacity fails; one within the required margin warns.
+  s.article.joints[0].torque_capacity = 0.9 * tau;
+  EXPECT_EQ(find(runCheck(s), "joint1 holding")->verdict, Verdict::Fail);
+  s.article.joints[0].torque_capacity = 1.1 * tau;
+  EXPECT_EQ(find(runCheck(s), "joint1 holding")->verdict, Verdict::Warn);
+}
+
+TEST(Check, FlexibleLinkHoldsLessThanRigidWhereItSags) {
+  // A soft horizontal cantilever sags, pulling its mass towards the joint: the
+  // flexible holding torque is below m g L / 2 and the rigid one is given in the note.
+  testing::Beam b = rigidBeam();
+  b.second_moment = 2e-10;
+  ArticleScene s = testing::cantileverScene(b, 16, kG, 0.0);
+  s.article.joints[0].torquer = LumpedMass{2.0, 0};  // on the ground: no torque of its own
+  const double tau = b.massPerLength() * b.length * b.length / 2 * kG;
+  const CheckReport r = runCheck(s);
+  const CheckLine* l = find(r, "joint1 holding");
+  ASSERT_NE(l, nullptr);
+  EXPECT_LT(l->demand, tau);
+  EXPECT_GT(l->demand, 0.9 * tau);
+  EXPECT_EQ(l->verdict, Verdict::NotChecked);  // no capacity in the scene
+  EXPECT_NE(l->note.find(strf("needs %.3g N*m per kg of its 2 kg torquer", l->demand / 2)), std::string::npos) << l->note;
+  EXPECT_NE(l->note.find(strf("rigid links: %.4g N*m", tau)), std::string::npos) << l->note;
+}
+
+ArticleScene tableScene(double amplitude, double f_hz) {
+  testing::Beam b = rigidBeam();
+  b.second_moment = 1e-6;  // first mode far above the 2 Hz sine: quasi-static
+  ArticleScene s = testing::cantileverScene(b, 4, kG, -90.0);
+  s.article.joints[0].torquer = LumpedMass{3.0, 0};
+  s.article.base.type = BaseType::Table;
+  s.article.base.motion = TableMotion::sine(amplitude, f_hz);
+  s.article.base.gimbal = GimbalSpec{};
+  s.simulation.duration = 2;
+  s.sensors.push_back({"acc", "accelerometer", "link1.tip", 1, 0, 1, "<test>"});
+  return s;
+}
+
+TEST(Check, TablePayloadStrokeAndAccelerometerPeakUnderASine) {
+  const ArticleScene s = tableScene(0.01, 2.0);
+  const CheckReport r = runCheck(s);
+  const double m_link = rigidBeam().massPerLength() * rigidBeam().length;
+  const CheckLine* payload = find(r, "payload weight");
+  ASSERT_NE(payload, nullptr);
+  EXPECT_NEAR(payload->demand, (m_link + 3.0 + 3 * 10.0) * kG, 1e-9 * payload->demand);  // link, torquer, three gimbal rings
+  EXPECT_EQ(payload->capacity, 2300);
+  const CheckLine* stroke = find(r, "stroke of the program");
+  ASSERT_NE(stroke, nullptr);
+  EXPECT_DOUBLE_EQ(stroke->demand, 0.01);
+  EXPECT_NEAR(stroke->margin_pct, (0.15 - 0.01) / 0.15 * 100, 1e-9);
+  EXPECT_NE(stroke->note.find("peak acceleration 1.58 m/s^2"), std::string::npos) << stroke->note;  // 0.01 (4 pi)^2
+  // The hanging link's transverse axis is world x: the accelerometer reads the table's
+  // acceleration (2 pi f)^2 A through its band limits.
+  const CheckLine* acc = find(r, "acc (accelerometer at link1.tip) under the table's program");
+  ASSERT_NE(acc, nullptr);
+  const facility::Sensor sensor(facility::accelerometerSpec(), s.simulation.sample_rate_hz);
+  const double expected = std::pow(2 * M_PI * 2.0, 2) * 0.01 * sensor.bandGain(2.0);
+  EXPECT_NEAR(acc->demand, expected, 2e-3 * expected);
+  EXPECT_EQ(acc->verdict, Verdict::Pass);
+  // The same accelerometer in the rigid-link run: the table's own acceleration once the ramp-free sine runs.
+  const CheckLine* run = find(r, "acc (accelerometer at link1.tip) during the scene's run");
+  ASSERT_NE(run, nullptr);
+  EXPECT_NEAR(run->demand, std::pow(2 * M_PI * 2.0, 2) * 0.01, 0.1 * expected);
+}
+
+TEST(Check, ASineBeyondTheAccelerometersRangeFails) {
+  const CheckReport r = runCheck(tableScene(0.14, 3.0));  // (6 pi)^2 0.14 = 49.7 m/s^2 > 5 g
+  const CheckLine* acc = find(r, "acc (accelerometer at link1.tip) under the table's program");
+  ASSERT_NE(acc, nullptr);
+  EXPECT_EQ(acc->verdict, Verdict::Fail);
+  EXPECT_EQ(r.overall, Verdict::Fail);
+}
+
+TEST(Check, LengthInMillimetresIsNamed) {
+  testing::Beam b = rigidBeam();
+  b.length = 2440;
+  const CheckReport r = runCheck(testing::cantileverScene(b, 2, kG, -90.0, 0, true));
+  bool named = false;
+  for (const auto& l : r.lines) named = named || (l.group == "plausibility" && l.requirement.find("given in mm") != std::string::npos);
+  EXPECT_TRUE(named);
+  EXPECT_EQ(r.overall, Verdict::Warn);
+}
+
+TEST(Check, HangingArticleDepthAgainstTheLab) {
+  ArticleScene s = testing::cantileverScene(rigidBeam(), 1, kG, -90.0, 0, true);
+  s.lab = facility::LabSpec{};
+  const CheckReport r = runCheck(s);
+  const CheckLine* depth = find(r, "depth below the platform's top");
+  ASSERT_NE(depth, nullptr);
+  EXPECT_NEAR(depth->demand, s.lab->base_below_platform + rigidBeam().length, 1e-9);
+  EXPECT_DOUBLE_EQ(depth->capacity, s.lab->platform_height);
+  // Longer than the platform is high: it would hit the floor.
+  testing::Beam tall = rigidBeam();
+  tall.length = 14;
+  s = testing::cantileverScene(tall, 1, kG, -90.0, 0, true);
+  s.lab = facility::LabSpec{};
+  EXPECT_EQ(find(runCheck(s), "depth below the platform's top")->verdict, Verdict::Fail);
+}
+
+TEST(Check, ClosedTreeIsCheckedAtItsConfigurationAndSaysSo) {
+  const ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-closed.yaml");
+  const CheckReport r = runCheck(s);
+  const CheckLine* l = find(r, "joint1 holding torque at the scene's angles");
+  ASSERT_NE(l, nullptr);
+  EXPECT_NE(l->note.find("closed tree"), std::string::npos);
+}
+
+TEST(Check, JudgeMargins) {
+  CheckLine l;
+  l.demand = 80;
+  l.capacity = 100;
+  judge(l, 20);
+  EXPECT_DOUBLE_EQ(l.margin_pct, 20);
+  EXPECT_EQ(l.verdict, Verdict::Pass);
+  l.demand = 81;
+  judge(l, 20);
+  EXPECT_EQ(l.verdict, Verdict::Warn);
+  l.demand = 101;
+  judge(l, 20);
+  EXPECT_EQ(l.verdict, Verdict::Fail);
+  l.capacity = 0;
+  judge(l, 20);
+  EXPECT_EQ(l.verdict, Verdict::NotChecked);
+}
+
+}  // namespace
+}  // namespace mmv
