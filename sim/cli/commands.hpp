@@ -138,11 +138,28 @@ struct CheckArgs : SceneArgs {
   bool force = false;
 };
 
+struct DesignSweepArgs {
+  std::string spec;    ///< the sweep spec (YAML).
+  std::string out;     ///< the results directory (resumed when it holds this sweep).
+  int jobs = 0;        ///< threads; 0: every core.
+  std::string shard;   ///< "I/N"; empty: SLURM_ARRAY_TASK_ID/COUNT if set, else the whole sweep.
+  bool force = false;  ///< start over in a directory that holds another sweep.
+  bool json = false;
+};
+
+struct SweepMergeArgs {
+  std::vector<std::string> shards;
+  std::string out;
+  bool force = false;
+};
+
 /// `render --history`: frames of a time run (sim/cli/render_history.cpp).
 void renderHistory(const RenderArgs& args, const std::string& ext);
 
 int runModesCommand(const ModesArgs& args);
 int runCheckCommand(const CheckArgs& args);
+int runDesignSweepCommand(const DesignSweepArgs& args);
+int runSweepMergeCommand(const SweepMergeArgs& args);
 int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);

@@ -227,6 +227,22 @@ CLI::App* addCheckCommand(CLI::App& app, CheckArgs& ck) {
   return c;
 }
 
+/// `mmvlab sweep` and `mmvlab sweep-merge`.
+std::pair<CLI::App*, CLI::App*> addDesignSweepCommands(CLI::App& app, DesignSweepArgs& ds, SweepMergeArgs& sm) {
+  CLI::App* s = app.add_subcommand("sweep", "Design sweep from a spec: parameters x outputs (modes tracked, check margins), in parallel, resumable, sharded");
+  s->add_option("spec", ds.spec, "The sweep spec (YAML, docs/planning.md)")->required();
+  s->add_option("--out", ds.out, "Results directory: sweep.csv, sweep.json, journal.csv (a rerun resumes it)")->required();
+  s->add_option("--jobs", ds.jobs, "Threads (default: every core)")->check(CLI::Range(1, 1024));
+  s->add_option("--shard", ds.shard, "I/N: run the I-th of N deterministic slices into OUT/shard-I-of-N (default: SLURM_ARRAY_TASK_ID/COUNT when set)");
+  s->add_flag("--force", ds.force, "Start over in a directory that holds another sweep's results");
+  s->add_flag("--json", ds.json, "Print the summary as JSON");
+  CLI::App* m = app.add_subcommand("sweep-merge", "Join the shard directories of one sweep into the CSV an unsharded run writes");
+  m->add_option("shards", sm.shards, "Shard directories (OUT/shard-I-of-N)")->required();
+  m->add_option("--out", sm.out, "Directory for the merged sweep.csv")->required();
+  m->add_flag("--force", sm.force, "Replace an existing merged sweep.csv");
+  return {s, m};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -257,6 +273,10 @@ int main(int argc, char** argv) {
   CheckArgs ck;
   CLI::App* ch = addCheckCommand(app, ck);
 
+  DesignSweepArgs ds;
+  SweepMergeArgs sm;
+  const auto [dsw, smg] = addDesignSweepCommands(app, ds, sm);
+
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
   try {
@@ -268,6 +288,8 @@ int main(int argc, char** argv) {
   if (m->parsed()) return runModesCommand(modes);
   if (c->parsed()) return runConvergeCommand(conv);
   if (ch->parsed()) return runCheckCommand(ck);
+  if (dsw->parsed()) return runDesignSweepCommand(ds);
+  if (smg->parsed()) return runSweepMergeCommand(sm);
   if (cp->parsed()) return runCompareCommand(cmp);
   if (sp->parsed()) return runSweepCommand(sw);
   lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;

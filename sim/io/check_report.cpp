@@ -56,6 +56,7 @@ nlohmann::ordered_json checkJson(const CheckReport& r) {
   auto& lines = j["lines"] = nlohmann::ordered_json::array();
   for (const auto& l : r.lines) {
     nlohmann::ordered_json o;
+    o["id"] = l.id;
     o["group"] = l.group;
     o["requirement"] = l.requirement;
     o["demand"] = l.unit.empty() || !std::isfinite(l.demand) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.demand);

@@ -35,10 +35,11 @@ void judge(CheckLine& l, double required_margin_pct) {
 
 namespace plan {
 
-CheckLine makeLine(const std::string& group, const std::string& requirement, double demand, double capacity,
+CheckLine makeLine(const std::string& group, const std::string& id, const std::string& requirement, double demand, double capacity,
                    const std::string& unit, const std::string& note, double required_margin_pct) {
   CheckLine l;
   l.group = group;
+  l.id = id;
   l.requirement = requirement;
   l.demand = demand;
   l.capacity = capacity;
@@ -82,12 +83,16 @@ void runRigid(CheckInputs& in) {
 
 }  // namespace plan
 
-CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options) {
+CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, const ModesReport* modes) {
   const auto t0 = std::chrono::steady_clock::now();
   plan::CheckInputs in{scene, options, {}, plan::rigidCopy(scene), {}, {}};
-  ModesOptions mo;
-  mo.with_shapes = false;
-  in.modes = runModes(scene, mo);
+  if (modes) {
+    in.modes = *modes;
+  } else {
+    ModesOptions mo;
+    mo.with_shapes = false;
+    in.modes = runModes(scene, mo);
+  }
   plan::runRigid(in);
 
   CheckReport rep;

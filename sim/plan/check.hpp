@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/modes/system_modes.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv {
@@ -42,6 +43,7 @@ enum class Verdict { Pass, Warn, Fail, NotChecked, Info };
 const char* verdictName(Verdict v);  ///< "pass", "warn", "FAIL", "n/a", "info".
 
 struct CheckLine {
+  std::string id;           ///< stable across runs of one scene, e.g. "torque.joint1.hold", "table.stroke" (sweep columns).
   std::string group;        ///< torquers, gimbal, table, modes, sensors, lab, plausibility.
   std::string requirement;  ///< what is checked, e.g. "joint1 holding torque over +-45 deg".
   double demand = 0;        ///< what the test needs (unit below).
@@ -72,7 +74,8 @@ struct CheckReport {
 
 /// Runs every check that applies to the scene. Throws NumericalError when the
 /// equilibrium or the modes cannot be found (nothing to check against).
-CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options = {});
+/// `modes`, if given, is the scene's ModesReport already computed (a sweep reuses it).
+CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options = {}, const ModesReport* modes = nullptr);
 
 /// margin and verdict of a line from demand and capacity (exposed for the tests).
 void judge(CheckLine& line, double required_margin_pct);

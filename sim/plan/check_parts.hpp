@@ -38,7 +38,7 @@ void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out);
 void addPlausibilityLines(const CheckInputs& in, std::vector<CheckLine>& out);
 
 /// A line with its margin judged.
-CheckLine makeLine(const std::string& group, const std::string& requirement, double demand, double capacity,
+CheckLine makeLine(const std::string& group, const std::string& id, const std::string& requirement, double demand, double capacity,
                    const std::string& unit, const std::string& note, double required_margin_pct);
 
 }  // namespace mmv::plan

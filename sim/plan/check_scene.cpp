@@ -26,14 +26,14 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const facility::TableSpec table;
   const double g = std::sqrt(scene.gravity[0] * scene.gravity[0] + scene.gravity[1] * scene.gravity[1] + scene.gravity[2] * scene.gravity[2]);
   const double carried = in.modes.model.total_mass_kg - scene.article.base.table_mass;
-  out.push_back(makeLine("table", "payload weight (article, torquers, gimbal)", carried * g, table.payload_n, "N",
+  out.push_back(makeLine("table", "table.payload", "payload weight (article, torquers, gimbal)", carried * g, table.payload_n, "N",
                          strf("%.4g kg; sensors and cables are not in the model: add them as tip masses", carried),
                          in.options.required_margin_pct));
   const double margin = in.options.required_margin_pct;
   const auto& o = in.options;
   const auto f = bandFrequencies(in.modes, o.band_min_hz, o.band_max_hz);
   const long above = std::count_if(f.begin(), f.end(), [&](double x) { return x > table.bandwidth_hz; });
-  CheckLine modes = makeLine("table", strf("modes in %.3g-%.3g Hz within the table's bandwidth", o.band_min_hz, o.band_max_hz),
+  CheckLine modes = makeLine("table", "table.modes_in_bandwidth", strf("modes in %.3g-%.3g Hz within the table's bandwidth", o.band_min_hz, o.band_max_hz),
                              f.empty() ? 0 : f.back(), table.bandwidth_hz, "Hz",
                              strf("%ld of %zu modes lie above %.3g Hz: the table cannot excite them (the 30 lb shaker can)", above,
                                   f.size(), table.bandwidth_hz), 0);
@@ -42,9 +42,9 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   if (!scene.article.base.motion) return;
   const auto program = makeTableProgram(*scene.article.base.motion);
   const facility::ProgramCheck pc = facility::checkProgram(*program, table, scene.simulation.duration);
-  out.push_back(makeLine("table", "stroke of the program", pc.peak_displacement, table.stroke, "m",
+  out.push_back(makeLine("table", "table.stroke", "stroke of the program", pc.peak_displacement, table.stroke, "m",
                          program->describe() + strf(", peak acceleration %.3g m/s^2", pc.peak_acceleration), margin));
-  CheckLine bw = makeLine("table", "program's highest frequency within the bandwidth", program->maxFrequencyHz(), table.bandwidth_hz,
+  CheckLine bw = makeLine("table", "table.program_bandwidth", "program's highest frequency within the bandwidth", program->maxFrequencyHz(), table.bandwidth_hz,
                           "Hz", "above it the servo loop attenuates the motion", 0);
   if (bw.verdict == Verdict::Fail) bw.verdict = Verdict::Warn;
   out.push_back(bw);
@@ -59,13 +59,13 @@ void addModeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     else if (m.frequency_hz > o.band_max_hz) ++above;
   }
   if (unstable > 0) {
-    CheckLine l = makeLine("modes", "stability of the held configuration", unstable, 0, "modes",
+    CheckLine l = makeLine("modes", "modes.unstable", "stability of the held configuration", unstable, 0, "modes",
                            "negative stiffness: the article buckles or tips over here", 0);
     l.verdict = Verdict::Fail;
     out.push_back(l);
   }
   const auto f = bandFrequencies(in.modes, o.band_min_hz, o.band_max_hz);
-  CheckLine count = makeLine("modes", strf("modes in %.3g-%.3g Hz", o.band_min_hz, o.band_max_hz), static_cast<double>(f.size()), 0,
+  CheckLine count = makeLine("modes", "modes.in_band", strf("modes in %.3g-%.3g Hz", o.band_min_hz, o.band_max_hz), static_cast<double>(f.size()), 0,
                              "modes", "", 0);
   count.note = f.empty() ? "none: the article shows nothing a test in this band sees"
                          : strf("%.4g to %.4g Hz; %d below the band and %d above it, of the model's %zu", f.front(), f.back(), below,
@@ -78,7 +78,7 @@ void addModeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   for (std::size_t i = 1; i < f.size(); ++i)
     if ((f[i] - f[i - 1]) / f[i] < (f[k] - f[k - 1]) / f[k]) k = i;
   const double spacing = f[k] - f[k - 1], half_power = 2 * zeta * f[k];
-  CheckLine pair = makeLine("modes", "closest pair apart by more than its half-power bandwidth", half_power, spacing, "Hz",
+  CheckLine pair = makeLine("modes", "modes.closest_pair", "closest pair apart by more than its half-power bandwidth", half_power, spacing, "Hz",
                             strf("%.4g and %.4g Hz (%.2f %% apart); half-power bandwidth 2 zeta f at zeta = %.3g %%%s", f[k - 1], f[k],
                                  100 * spacing / f[k], 100 * zeta,
                                  in.scene.damping && in.scene.damping->kind == DampingSpec::Kind::Modal ? "" : " (assumed)"),
@@ -126,12 +126,12 @@ void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     if (p[1] > underside) in_hole = std::max(in_hole, std::abs(p[0] - base[0]));
   }
   const std::string when = during_run ? "at rest and during the scene's run (rigid links)" : "at rest";
-  out.push_back(makeLine("lab", "depth below the platform's top within its height above the floor", y.platform_top - lowest,
+  out.push_back(makeLine("lab", "lab.depth", "depth below the platform's top within its height above the floor", y.platform_top - lowest,
                          lab.platform_height, "m", strf("lowest point %.3g m above the floor, ", lowest - y.floor) + when, 0));
-  out.push_back(makeLine("lab", "height within the ceiling", highest - y.floor, lab.ceiling_height, "m", when, 0));
-  out.push_back(makeLine("lab", "points above the platform's underside within the hole", in_hole, 0.5 * lab.hole_side, "m",
+  out.push_back(makeLine("lab", "lab.ceiling", "height within the ceiling", highest - y.floor, lab.ceiling_height, "m", when, 0));
+  out.push_back(makeLine("lab", "lab.hole", "points above the platform's underside within the hole", in_hole, 0.5 * lab.hole_side, "m",
                          "largest horizontal offset from the hole's centre of a point that rises into the platform, " + when, 0));
-  out.push_back(makeLine("lab", "horizontal reach within the floor", reach, 0.5 * lab.floor_length, "m",
+  out.push_back(makeLine("lab", "lab.reach", "horizontal reach within the floor", reach, 0.5 * lab.floor_length, "m",
                          "from the base, along the floor's length, " + when, 0));
 }
 
@@ -164,12 +164,12 @@ void addPlausibilityLines(const CheckInputs& in, std::vector<CheckLine>& out) {
       break;
     }
   for (const auto& w : warnings) {
-    CheckLine l = makeLine("plausibility", w, 0, 0, "", "likely a unit mistake", 0);
+    CheckLine l = makeLine("plausibility", "plausibility.warning", w, 0, 0, "", "likely a unit mistake", 0);
     l.verdict = Verdict::Warn;
     out.push_back(l);
   }
   if (warnings.empty()) {
-    CheckLine l = makeLine("plausibility", "masses, lengths, sections, moduli, deflection and frequencies", 0, 0, "",
+    CheckLine l = makeLine("plausibility", "plausibility", "masses, lengths, sections, moduli, deflection and frequencies", 0, 0, "",
                            strf("in a lab article's range (largest static deflection %.3g m)", deflection), 0);
     l.verdict = Verdict::Pass;
     out.push_back(l);

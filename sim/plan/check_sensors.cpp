@@ -29,10 +29,10 @@ std::pair<double, std::string> displayUnit(const std::string& type) {
 }
 
 /// A sensor's line: peak (measured unit) against its range, its ratio to the resolution.
-CheckLine sensorLine(const SensorSceneSpec& s, const std::string& during, double peak, int saturated, const std::string& how) {
+CheckLine sensorLine(const SensorSceneSpec& s, const std::string& id, const std::string& during, double peak, int saturated, const std::string& how) {
   const facility::SensorSpec spec = specOf(s);
   const auto [scale, unit] = displayUnit(s.type);
-  CheckLine l = makeLine("sensors", s.name + " (" + s.type + " at " + s.target + ") " + during, peak * scale, spec.range * scale, unit, "", 0);
+  CheckLine l = makeLine("sensors", "sensor." + s.name + "." + id, s.name + " (" + s.type + " at " + s.target + ") " + during, peak * scale, spec.range * scale, unit, "", 0);
   const double ratio_db = peak > 0 ? 20 * std::log10(peak / spec.resolution) : -INFINITY;
   l.note = how + (peak > 0 ? strf("; %.1f dB above its resolution of %.3g %s", ratio_db, spec.resolution * scale, unit.c_str())
                            : "; no signal");
@@ -60,7 +60,7 @@ void addRunLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const auto col = std::find(cols.begin(), cols.end(), s.name + "_" + summary->unit) - cols.begin();
     double peak = 0;
     for (const auto& row : r.record.rows) peak = std::max(peak, std::abs(row[col]));
-    out.push_back(sensorLine(s, "during the scene's run", peak, summary->saturated_samples,
+    out.push_back(sensorLine(s, "run", "during the scene's run", peak, summary->saturated_samples,
                              strf("rigid links, %.3g s as recorded (band limits, noise, quantization)", in.scene.simulation.duration)));
   }
 }
@@ -104,7 +104,7 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   if (accels.empty() || !motion || scene.article.base.type != BaseType::Table) return;
   if (motion->type == TableMotion::Type::Profile) {
     for (const auto* s : accels) {
-      CheckLine l = sensorLine(*s, "under the table's profile", 0, 0, "a CSV profile: run `mmvlab simulate`");
+      CheckLine l = sensorLine(*s, "table", "under the table's profile", 0, 0, "a CSV profile: run `mmvlab simulate`");
       l.verdict = Verdict::NotChecked;
       out.push_back(l);
     }
@@ -126,7 +126,7 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
       return (axis[0] * H(2 * k, 0) + axis[1] * H(2 * k + 1, 0)) * sensor.bandGain(f);
     };
     const ProgramPeak p = programPeak(*motion, h);
-    out.push_back(sensorLine(*accels[k], "under the table's program", p.value, 0, "flexible linear model, " + p.how));
+    out.push_back(sensorLine(*accels[k], "table", "under the table's program", p.value, 0, "flexible linear model, " + p.how));
   }
 }
 

@@ -162,7 +162,7 @@ void addHoldingLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     for (const auto& h : held) {
       const double tau = std::abs(t.at(h.name));
       const double cap = scene.article.torqueCapacity(h.name);
-      out.push_back(makeLine(h.name.rfind("gimbal.", 0) == 0 ? "gimbal" : "torquers", h.name + " holding torque at the scene's angles",
+      out.push_back(makeLine(h.name.rfind("gimbal.", 0) == 0 ? "gimbal" : "torquers", "torque." + h.name + ".hold", h.name + " holding torque at the scene's angles",
                              tau, cap, "N*m", fixed_by + "; checked at the scene's configuration only" +
                              perKilogram(scene.article, h.name, tau), margin));
     }
@@ -176,7 +176,7 @@ void addHoldingLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const double rigid = roundOff(std::abs(search.torques(worst[k])[k]));
     const double tau = roundOff(std::abs(heldTorques(withAngles(scene, held, worst[k])).at(held[k].name)));
     const double cap = scene.article.torqueCapacity(held[k].name);
-    out.push_back(makeLine(held[k].name.rfind("gimbal.", 0) == 0 ? "gimbal" : "torquers",
+    out.push_back(makeLine(held[k].name.rfind("gimbal.", 0) == 0 ? "gimbal" : "torquers", "torque." + held[k].name + ".hold",
                            held[k].name + strf(" holding torque, worst over +-%.0f deg", held[k].range * kRadToDeg), tau, cap,
                            "N*m", tau == 0 ? std::string("gravity exerts no torque about this axis anywhere in the range")
                                            : "at " + anglesText(held, worst[k]) + strf(" (rigid links: %.4g N*m)", rigid) +
@@ -194,13 +194,13 @@ bool hasSlews(const ArticleSpec& a) {
 void addSlewLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   if (!hasSlews(in.scene.article)) return;
   if (!in.rigid_run) {
-    CheckLine l = makeLine("torquers", "slew torques", 0, 0, "N*m", in.rigid_run_skipped + ": run `mmvlab simulate`", 0);
+    CheckLine l = makeLine("torquers", "torque.run", "slew torques", 0, 0, "N*m", in.rigid_run_skipped + ": run `mmvlab simulate`", 0);
     l.verdict = Verdict::NotChecked;
     out.push_back(l);
     return;
   }
   for (const auto& t : in.rigid_run->torques)
-    out.push_back(makeLine(t.joint.rfind("gimbal.", 0) == 0 ? "gimbal" : "torquers", t.joint + " peak torque during the scene's run",
+    out.push_back(makeLine(t.joint.rfind("gimbal.", 0) == 0 ? "gimbal" : "torquers", "torque." + t.joint + ".run", t.joint + " peak torque during the scene's run",
                            roundOff(t.peak_torque_nm), t.capacity_nm, "N*m",
                            strf("rigid links through %.3g s of slews and table motion (gravity + inertia; run `mmvlab simulate` for the flexible peaks)",
                                 in.scene.simulation.duration) + perKilogram(in.scene.article, t.joint, t.peak_torque_nm),
@@ -214,7 +214,7 @@ void addGimbalRangeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const std::pair<const char*, const GimbalAxisSpec*> axes[] = {{"yaw", &g->yaw}, {"pitch", &g->pitch}, {"roll", &g->roll}};
   for (const auto& [name, axis] : axes) {
     const double reach = std::max(std::abs(axis->angle), axis->slew ? std::abs(axis->slew->to) : 0.0);
-    out.push_back(makeLine("gimbal", std::string("gimbal ") + name + " angle", reach * kRadToDeg, axis->range * kRadToDeg, "deg",
+    out.push_back(makeLine("gimbal", std::string("gimbal.") + name + ".angle", std::string("gimbal ") + name + " angle", reach * kRadToDeg, axis->range * kRadToDeg, "deg",
                            axis->slew ? "largest of the held angle and the slew's end" : "held angle", in.options.required_margin_pct));
     if (out.back().verdict == Verdict::Warn) out.back().verdict = Verdict::Pass;  // an angle inside its range is fine
   }

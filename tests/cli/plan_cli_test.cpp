@@ -1,6 +1,9 @@
 // mmvlab check (and, below it, sweep) as a user runs them.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdlib>
+
 #include "support/cli.hpp"
 
 namespace mmv::cli_testing {
@@ -42,6 +45,63 @@ TEST_F(Cli, CheckRefusesABadBandAndAnIsolatorAndWritesNothing) {
   r = run("check " + std::string(MMVLAB_SOURCE_DIR) + "/scenes/hamsas.yaml");
   EXPECT_EQ(r.code, 64);
   EXPECT_NE(r.err.find("HAM-SAS"), std::string::npos) << r.err;
+}
+
+/// A sweep of 120 points of the default article (modes and check): about 2 s on 2 cores.
+std::string killableSpec() {
+  return std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\n"
+         "parameters:\n"
+         "  - {key: sections.link3_rod.radius, range: {from: 0.001, to: 0.003, samples: 2}}\n"
+         "  - {key: links.link2.length, range: {from: 1.2, to: 1.8, samples: 2}}\n"
+         "design: {type: latin_hypercube, samples: 120, seed: 9}\n"
+         "outputs: [frequencies, mass, check]\n";
+}
+
+TEST_F(Cli, SweepKilledAtRandomMomentsResumesToTheSameFile) {
+  const fs::path spec = write("spec.yaml", killableSpec());
+  Result r = run("sweep " + spec.string() + " --out " + (dir_ / "whole").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string whole = slurp(dir_ / "whole" / "sweep.csv");
+  EXPECT_EQ(std::count(whole.begin(), whole.end(), '\n'), 121);
+  bool resumed_mid_way = false;  // some kill fell inside the sweep (else the test saw nothing)
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const fs::path out = dir_ / ("killed" + std::to_string(seed));
+    unsigned state = seed;
+    for (int kill = 0; kill < 3; ++kill) {  // SIGKILL after 0.1-0.9 s, three times, then finish
+      state = state * 1103515245u + 12345u;
+      const double after = 0.1 + (state >> 16) % 800 / 1000.0;
+      std::system(("timeout -s KILL " + std::to_string(after) + " " + MMVLAB_BINARY + " sweep " + spec.string() + " --out " +
+                   out.string() + " >/dev/null 2>&1").c_str());
+    }
+    r = run("sweep " + spec.string() + " --out " + out.string() + " --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["computed"].get<long>() + j["reused"].get<long>(), 120);
+    resumed_mid_way = resumed_mid_way || (j["reused"].get<long>() > 0 && j["computed"].get<long>() > 0);
+    EXPECT_EQ(slurp(out / "sweep.csv"), whole) << "seed " << seed;
+  }
+  EXPECT_TRUE(resumed_mid_way);
+}
+
+TEST_F(Cli, BadSweepSpecsExit65AndWriteNothing) {
+  const std::string scene = std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {"parameters:\n  - {key: links.link7.length, values: [1]}\noutputs: [mass]\n", "no item 'link7'"},
+      {"parameters:\n  - {key: links.link1.length, range: {from: 3, to: 2, samples: 4}}\noutputs: [mass]\n", "above"},
+      {"parameters:\n  - {key: links.link1.length, range: {from: 2, to: 2, samples: 4}}\noutputs: [mass]\n", "empty"},
+      {"parameters:\n  - {key: links.link1.length, range: {from: 2, to: 3, samples: 0}}\noutputs: [mass]\n", "samples"},
+      {"parameters:\n  - {key: links.link1.length, values: [2]}\noutputs: [frequency]\n", "unknown output"},
+  };
+  for (const auto& [body, what] : cases) {
+    const fs::path spec = write("bad.yaml", scene + body);
+    const Result r = run("sweep " + spec.string() + " --out " + (dir_ / "out").string());
+    EXPECT_EQ(r.code, 65) << body << r.err;
+    EXPECT_NE(r.err.find(spec.string() + ":"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << body;
+  }
+  EXPECT_EQ(run("sweep " + write("ok.yaml", scene + "parameters:\n  - {key: links.link1.length, values: [2]}\noutputs: [mass]\n").string() +
+                " --out " + (dir_ / "out").string() + " --shard 4/3").code, 64);
 }
 
 }  // namespace

@@ -1,0 +1,117 @@
+// mmvlab sweep and sweep-merge: design sweeps (sim/scene/sweep_spec.hpp) evaluated by
+// sim/io/sweep_points.hpp and run by sim/plan/sweep_runner.hpp.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/cli/commands.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/sweep_points.hpp"
+#include "sim/plan/sweep_runner.hpp"
+
+namespace mmv::cli {
+namespace {
+
+/// --shard I/N, else Slurm's array variables, else the whole sweep.
+Shard chooseShard(const std::string& text) {
+  Shard s;
+  if (!text.empty()) {
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%d/%d%c", &s.index, &s.count, &extra) != 2 || s.count < 1 || s.index < 1 || s.index > s.count)
+      throw UsageError("--shard: expected I/N with 1 <= I <= N (got '" + text + "')");
+    return s;
+  }
+  const char* id = std::getenv("SLURM_ARRAY_TASK_ID");
+  const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
+  if (!id || !count) return s;
+  const char* min = std::getenv("SLURM_ARRAY_TASK_MIN");
+  s.index = std::atoi(id) - (min ? std::atoi(min) : 0) + 1;
+  s.count = std::atoi(count);
+  if (s.count < 1 || s.index < 1 || s.index > s.count)
+    throw UsageError(strf("SLURM_ARRAY_TASK_ID=%s, SLURM_ARRAY_TASK_COUNT=%s do not make a shard", id, count));
+  return s;
+}
+
+/// Points done, with the time left, on a terminal.
+std::function<void(long, long)> sweepProgress() {
+  const bool tty = ::isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  auto first = std::make_shared<long>(-1);
+  return [tty, start, first](long done, long total) {
+    if (!tty || total <= 0) return;
+    if (*first < 0) *first = done;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double f = static_cast<double>(done) / total;
+    const long fresh = done - *first;
+    const double left = fresh > 0 ? elapsed / fresh * (total - done) : 0;
+    std::fprintf(stderr, "\r[%-40s] %3d %% %ld/%ld points, %.0f s left ", std::string(static_cast<std::size_t>(40 * f), '#').c_str(),
+                 static_cast<int>(100 * f), done, total, left);
+    if (done == total) std::fprintf(stderr, "\n");
+  };
+}
+
+nlohmann::ordered_json summary(const SweepContext& c, const SweepRun& run, const SweepRunResult& r) {
+  nlohmann::ordered_json j;
+  j["spec"] = c.spec.source;
+  j["scene"] = c.scene_source;
+  j["fingerprint"] = c.fingerprint;
+  j["design"] = c.spec.design == SweepSpec::Design::Grid ? "grid" : "latin_hypercube";
+  j["points"] = c.points.size();
+  j["shard"] = run.shard.text();
+  j["jobs"] = run.jobs;
+  j["computed"] = r.computed;
+  j["reused"] = r.reused;
+  j["seconds"] = r.seconds;
+  j["columns"] = c.header;
+  j["csv"] = r.csv;
+  return j;
+}
+
+}  // namespace
+
+int runDesignSweepCommand(const DesignSweepArgs& args) {
+  return guarded([&] {
+    const SweepSpec spec = loadSweepSpec(args.spec);
+    const Shard shard = chooseShard(args.shard);
+    const SweepContext context = prepareSweep(spec);  // every key and output checked before anything is written
+    SweepRun run;
+    run.dir = shard.count > 1 ? (std::filesystem::path(args.out) / strf("shard-%d-of-%d", shard.index, shard.count)).string() : args.out;
+    run.fingerprint = context.fingerprint;
+    run.header = context.header;
+    run.total_points = static_cast<long>(context.points.size());
+    run.shard = shard;
+    run.jobs = args.jobs > 0 ? args.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    run.evaluate = [&context](long i) { return evaluateSweepPoint(context, i); };
+    run.progress = sweepProgress();
+    const SweepRunResult r = runSweep(run, args.force);
+    const nlohmann::ordered_json j = summary(context, run, r);
+    std::ofstream(std::filesystem::path(run.dir) / "sweep.json", std::ios::binary) << j.dump(2) << '\n';
+    if (args.json) {
+      std::cout << j.dump(2) << '\n';
+    } else {
+      std::cout << strf("sweep %s: %zu points (%s), shard %s: %ld computed, %ld already done, %.2f s on %d threads\n",
+                        spec.source.c_str(), context.points.size(), j["design"].get<std::string>().c_str(), shard.text().c_str(),
+                        r.computed, r.reused, r.seconds, run.jobs)
+                << "wrote " << r.csv << '\n';
+    }
+    return kOk;
+  });
+}
+
+int runSweepMergeCommand(const SweepMergeArgs& args) {
+  return guarded([&] {
+    const std::string csv = mergeSweepShards(args.shards, args.out, args.force);
+    std::cout << "merged " << args.shards.size() << " shards into " << csv << '\n';
+    return kOk;
+  });
+}
+
+}  // namespace mmv::cli

@@ -1,0 +1,220 @@
+// The rows of `mmvlab sweep` (sim/io/sweep_points.hpp).
+#include "sim/io/sweep_points.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "sim/core/text.hpp"
+#include "sim/io/check_report.hpp"
+#include "sim/io/report.hpp"
+#include "sim/modes/tracking.hpp"
+#include "sim/plan/check.hpp"
+
+namespace mmv {
+
+namespace {
+
+bool wants(const SweepSpec& s, const std::string& o) { return std::find(s.outputs.begin(), s.outputs.end(), o) != s.outputs.end(); }
+
+std::string cell(double v) { return std::isfinite(v) ? strf("%.17g", v) : ""; }
+
+/// A cell cannot hold the CSV's separators.
+std::string clean(std::string s) {
+  for (char& c : s)
+    if (c == ',' || c == '\n' || c == '\r') c = c == ',' ? ';' : ' ';
+  return s;
+}
+
+ArticleScene sceneAt(const SweepContext& c, const std::vector<std::string>& extra) {
+  std::vector<std::string> sets = c.spec.sets;
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  Scene s = parseScene(c.scene_text, c.scene_source, sets);
+  auto* a = std::get_if<ArticleScene>(&s);
+  if (!a) throw SceneError(c.spec.source + ": scene " + c.scene_source + " is a HAM-SAS isolator; sweeps take article scenes");
+  if (c.spec.segments > 0) overrideSegments(*a, c.spec.segments);
+  return std::move(*a);
+}
+
+/// The stable vibration modes' shapes at the named points (2 rows per point), first `count`.
+Eigen::MatrixXd pointShapes(const ModesReport& r, int count, std::vector<double>* hz) {
+  std::vector<const ModeInfo*> modes;
+  for (const auto& m : r.modes)
+    if (m.stable && !m.rigid_body && static_cast<int>(modes.size()) < count) modes.push_back(&m);
+  const Eigen::Index rows = modes.empty() ? 0 : 2 * static_cast<Eigen::Index>(modes.front()->shape.size());
+  Eigen::MatrixXd s(rows, static_cast<Eigen::Index>(modes.size()));
+  for (std::size_t k = 0; k < modes.size(); ++k) {
+    for (std::size_t p = 0; p < modes[k]->shape.size(); ++p) {
+      s(2 * p, k) = modes[k]->shape[p].ux;
+      s(2 * p + 1, k) = modes[k]->shape[p].uy;
+    }
+    if (hz) hz->push_back(modes[k]->frequency_hz);
+  }
+  return s;
+}
+
+std::string jsonCell(const nlohmann::ordered_json& j, const std::string& pointer) {
+  const nlohmann::ordered_json::json_pointer p(pointer);
+  if (!j.contains(p)) return "";
+  const auto& v = j.at(p);
+  if (v.is_number()) return cell(v.get<double>());
+  if (v.is_string()) return clean(v.get<std::string>());
+  return clean(v.dump());
+}
+
+struct PointResult {
+  ModesReport modes;
+  CheckReport check;
+};
+
+PointResult analyse(const SweepContext& c, const ArticleScene& scene) {
+  PointResult r;
+  ModesOptions mo;
+  mo.with_shapes = true;
+  r.modes = runModes(scene, mo);
+  if (wants(c.spec, "check")) r.check = runCheck(scene, {}, &r.modes);
+  return r;
+}
+
+void appendOutputs(const SweepContext& c, const PointResult* r, std::vector<std::string>& cells) {
+  const SweepSpec& s = c.spec;
+  for (const auto& o : s.outputs) {
+    if (o == "frequencies") {
+      const int k = static_cast<int>(c.reference_shapes.cols());
+      std::vector<std::string> f(k), mac(k);
+      if (r) {
+        std::vector<double> hz;
+        const Eigen::MatrixXd now = pointShapes(r->modes, s.modes + 6, &hz);
+        if (now.rows() == c.reference_shapes.rows() && now.cols() > 0) {
+          Eigen::MatrixXd padded = Eigen::MatrixXd::Zero(now.rows(), std::max(now.cols(), c.reference_shapes.cols()));
+          padded.leftCols(now.cols()) = now;
+          const ModeMatch m = matchModes(c.reference_shapes, padded);
+          for (int t = 0; t < k; ++t)
+            if (m.index[t] < now.cols()) f[t] = cell(hz[m.index[t]]), mac[t] = strf("%.4f", m.mac[t]);
+        }
+      }
+      for (int t = 0; t < k; ++t) cells.push_back(f[t]), cells.push_back(mac[t]);
+    } else if (o == "mass") {
+      cells.push_back(r ? cell(r->modes.model.total_mass_kg) : "");
+    } else if (o == "deflection") {
+      double d = 0;
+      if (r)
+        for (const auto& p : r->modes.points) d = std::max(d, std::hypot(p.dx, p.dy));
+      cells.push_back(r ? cell(d) : "");
+    } else if (o == "check") {
+      cells.push_back(r ? verdictName(r->check.overall) : "");
+      for (const auto& id : c.check_ids) {
+        const CheckLine* line = nullptr;
+        if (r)
+          for (const auto& l : r->check.lines)
+            if (l.id == id) line = &l;
+        cells.push_back(line && !line->unit.empty() ? cell(line->demand) : "");
+        cells.push_back(line && line->has_capacity ? cell(line->margin_pct) : "");
+      }
+      int warnings = 0;
+      if (r)
+        for (const auto& l : r->check.lines) warnings += l.id == "plausibility.warning";
+      cells.push_back(r ? std::to_string(warnings) : "");
+    } else if (o.rfind("json:modes/", 0) == 0) {
+      cells.push_back(r ? jsonCell(modesToJson(r->modes), o.substr(10)) : "");
+    } else {
+      cells.push_back(r ? jsonCell(checkJson(r->check), o.substr(10)) : "");
+    }
+  }
+}
+
+std::string fnv1a(const std::string& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char ch : s) h = (h ^ ch) * 1099511628211ull;
+  return strf("%016llx", static_cast<unsigned long long>(h));
+}
+
+void layOut(SweepContext& c, const PointResult& nominal) {
+  c.header = {"point"};
+  for (const auto& p : c.spec.parameters) c.header.push_back(p.key);
+  c.header.push_back("status");
+  for (std::size_t i = 0; i < c.spec.outputs.size(); ++i) {
+    const std::string& o = c.spec.outputs[i];
+    if (o == "frequencies") {
+      c.reference_shapes = pointShapes(nominal.modes, c.spec.modes, nullptr);
+      for (Eigen::Index k = 1; k <= c.reference_shapes.cols(); ++k)
+        c.header.push_back(strf("mode%ld_hz", static_cast<long>(k))), c.header.push_back(strf("mode%ld_mac", static_cast<long>(k)));
+    } else if (o == "mass") {
+      c.header.push_back("mass_kg");
+    } else if (o == "deflection") {
+      c.header.push_back("max_deflection_m");
+    } else if (o == "check") {
+      c.header.push_back("check_overall");
+      for (const auto& l : nominal.check.lines)
+        if (l.group != "plausibility") {
+          c.check_ids.push_back(l.id);
+          c.header.push_back(l.id + "_demand"), c.header.push_back(l.id + "_margin_pct");
+        }
+      c.header.push_back("plausibility_warnings");
+    } else {
+      const nlohmann::ordered_json j = o.rfind("json:modes/", 0) == 0 ? modesToJson(nominal.modes) : checkJson(nominal.check);
+      try {
+        if (!j.contains(nlohmann::ordered_json::json_pointer(o.substr(10))))
+          throw SceneError(c.spec.output_where[i] + ": output '" + o + "': the nominal scene's JSON has no such field");
+      } catch (const nlohmann::json::exception& e) {
+        throw SceneError(c.spec.output_where[i] + ": output '" + o + "' is not a JSON pointer (/key/0/key): " + e.what());
+      }
+      c.header.push_back(o.substr(5));
+    }
+  }
+}
+
+}  // namespace
+
+SweepContext prepareSweep(const SweepSpec& spec) {
+  SweepContext c;
+  c.spec = spec;
+  if (spec.scene_path.empty()) {
+    c.scene_text = defaultSceneYaml();
+    c.scene_source = "<default scene>";
+  } else {
+    std::ifstream in(spec.scene_path, std::ios::binary);
+    if (!in) throw SceneFileError(spec.source + ": scene " + spec.scene_path + ": cannot open scene file");
+    std::ostringstream os;
+    os << in.rdbuf();
+    c.scene_text = os.str();
+    c.scene_source = spec.scene_path;
+  }
+  if (spec.outputs.empty()) throw SceneError(spec.source + ": outputs: name at least one");
+  (void)sceneAt(c, {});
+  for (std::size_t k = 0; k < spec.parameters.size(); ++k) {  // each key, alone, as in a file
+    const SweepParameter& p = spec.parameters[k];
+    try {
+      (void)sceneAt(c, {p.key + "=" + strf("%.17g", p.gridValues().empty() ? p.at(0) : p.gridValues().front())});
+    } catch (const std::exception& e) {
+      throw SceneError(p.where + ": parameters[" + std::to_string(k) + "] '" + p.key + "': " + e.what());
+    }
+  }
+  const PointResult nominal = analyse(c, sceneAt(c, {}));
+  layOut(c, nominal);
+  c.points = sweepPoints(spec);
+  std::string id = std::string(mmvlabVersion()) + "\n" + spec.text + "\n" + c.scene_text + "\n" + std::to_string(spec.segments) + "\n";
+  for (const auto& h : c.header) id += h + ",";
+  c.fingerprint = fnv1a(id + std::to_string(c.points.size()));
+  return c;
+}
+
+std::vector<std::string> evaluateSweepPoint(const SweepContext& c, long index) {
+  const std::vector<double>& x = c.points.at(static_cast<std::size_t>(index));
+  std::vector<std::string> cells;
+  for (double v : x) cells.push_back(cell(v));
+  std::string status = "ok";
+  PointResult r;
+  bool ok = true;
+  try {
+    r = analyse(c, sceneAt(c, pointOverrides(c.spec, x)));
+  } catch (const SceneError& e) {
+    status = "scene error: " + std::string(e.what()), ok = false;
+  } catch (const NumericalError& e) {
+    status = "numerical failure: " + std::string(e.what()), ok = false;
+  }
+  cells.push_back(clean(status));
+  appendOutputs(c, ok ? &r : nullptr, cells);
+  return cells;
+}
+
+}  // namespace mmv

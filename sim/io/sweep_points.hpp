@@ -1,0 +1,42 @@
+#pragma once
+/// The rows of `mmvlab sweep` (sim/scene/sweep_spec.hpp): what each point computes and
+/// how it is written. A point's row depends on its index only (never on the order or
+/// the thread it runs in), so parallel, sharded and resumed sweeps write the same rows.
+///
+/// Columns: point, each parameter, status ("ok", or what went wrong at that point:
+/// the scene refused a value, the equilibrium failed), then per output:
+///  - frequencies: mode<k>_hz and mode<k>_mac for the spec's `modes` modes of the
+///    nominal scene, tracked to each point by an optimal MAC assignment on the shapes at
+///    the named points (sim/modes/tracking.hpp); a MAC below 0.5 means the mode changed
+///    character there; an empty cell, that no mode matched;
+///  - mass: mass_kg; deflection: max_deflection_m (largest static deflection of a point);
+///  - check: check_overall, then <id>_demand and <id>_margin_pct for every line of the
+///    nominal check (sim/plan/check.hpp), and plausibility_warnings;
+///  - json:modes/POINTER, json:check/POINTER: that field of `modes --json` or
+///    `check --json` (RFC 6901 pointer), e.g. json:modes/modes/0/effective_mass_x_kg.
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "sim/scene/sweep_spec.hpp"
+
+namespace mmv {
+
+struct SweepContext {
+  SweepSpec spec;
+  std::string scene_text, scene_source;  ///< the base scene.
+  std::vector<std::vector<double>> points;
+  std::vector<std::string> header;
+  std::string fingerprint;  ///< of the spec, the scene, the header and the program's version.
+  Eigen::MatrixXd reference_shapes;  ///< nominal modes tracked (columns), at the named points.
+  std::vector<std::string> check_ids;
+};
+
+/// Reads the base scene, checks every parameter key and output on it (SceneError at
+/// the spec's line:col), runs the nominal point, and lays out the columns.
+SweepContext prepareSweep(const SweepSpec& spec);
+/// The cells of point `index` after its index column. Thread-safe.
+std::vector<std::string> evaluateSweepPoint(const SweepContext& context, long index);
+
+}  // namespace mmv

@@ -1,0 +1,244 @@
+// Parallel, resumable, sharded sweeps (sim/plan/sweep_runner.hpp).
+#include "sim/plan/sweep_runner.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
+
+namespace mmv {
+
+namespace fs = std::filesystem;
+
+std::string Shard::text() const { return strf("%d/%d", index, count); }
+
+namespace {
+
+constexpr const char* kJournal = "journal.csv";
+constexpr const char* kMagic = "# mmvlab sweep journal v1";
+
+std::string headerLine(const std::vector<std::string>& header) {
+  std::string s;
+  for (std::size_t i = 0; i < header.size(); ++i) s += (i ? "," : "") + header[i];
+  return s;
+}
+
+std::size_t fieldCount(const std::string& line) { return static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1; }
+
+/// The journal's identity line: fingerprint, points, shard.
+std::string identity(const std::string& fingerprint, long total, const Shard& shard) {
+  return std::string(kMagic) + " fingerprint=" + fingerprint + " points=" + std::to_string(total) + " shard=" + shard.text();
+}
+
+struct ParsedJournal {
+  SweepJournal journal;
+  std::uintmax_t valid_bytes = 0;  ///< where the well-formed part ends.
+};
+
+ParsedJournal parseJournal(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw OutputError(path.string() + ": cannot read the sweep journal");
+  std::ostringstream os;
+  os << in.rdbuf();
+  const std::string text = os.str();
+  ParsedJournal p;
+  std::size_t pos = 0;
+  auto nextLine = [&](std::string& line) {
+    const std::size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) return false;  // a torn last line has no newline
+    line = text.substr(pos, nl - pos);
+    pos = nl + 1;
+    return true;
+  };
+  std::string id, header;
+  if (!nextLine(id) || id.rfind(kMagic, 0) != 0 || !nextLine(header))
+    throw OutputError(path.string() + ": not an mmvlab sweep journal");
+  std::istringstream is(id.substr(std::string(kMagic).size()));
+  std::string field;
+  while (is >> field) {
+    const auto eq = field.find('=');
+    const std::string k = field.substr(0, eq), v = eq == std::string::npos ? "" : field.substr(eq + 1);
+    if (k == "fingerprint") p.journal.fingerprint = v;
+    if (k == "points") p.journal.total_points = std::atol(v.c_str());
+    if (k == "shard" && std::sscanf(v.c_str(), "%d/%d", &p.journal.shard.index, &p.journal.shard.count) != 2)
+      throw OutputError(path.string() + ": malformed shard '" + v + "'");
+  }
+  std::istringstream hs(header);
+  while (std::getline(hs, field, ',')) p.journal.header.push_back(field);
+  p.valid_bytes = pos;
+  std::string line;
+  while (nextLine(line)) {
+    char* end = nullptr;
+    const long point = std::strtol(line.c_str(), &end, 10);
+    const bool ok = end != line.c_str() && *end == ',' && point >= 0 && point < p.journal.total_points &&
+                    p.journal.shard.contains(point) && fieldCount(line) == p.journal.header.size() && !p.journal.rows.count(point);
+    if (!ok) break;  // everything from here on is recomputed
+    p.journal.rows.emplace(point, line);
+    p.valid_bytes = pos;
+  }
+  return p;
+}
+
+/// Writes `text` to `path` through a temporary file and a rename: never half a file.
+void writeAtomically(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp");
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw OutputError(tmp.string() + ": cannot write");
+  }
+  fs::rename(tmp, path);
+}
+
+std::string tableText(const std::vector<std::string>& header, const std::map<long, std::string>& rows) {
+  std::string s = headerLine(header) + "\n";
+  for (const auto& [point, line] : rows) s += line + "\n";
+  return s;
+}
+
+/// Appends rows to the journal, one write() per row, from any thread.
+class JournalWriter {
+ public:
+  explicit JournalWriter(const fs::path& path) : fd_(::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC)) {
+    if (fd_ < 0) throw OutputError(path.string() + ": cannot append to the sweep journal");
+  }
+  ~JournalWriter() { ::close(fd_); }
+  void append(const std::string& line) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::string text = line + "\n";
+    std::size_t done = 0;
+    while (done < text.size()) {
+      const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
+      if (n < 0) throw OutputError("cannot append to the sweep journal");
+      done += static_cast<std::size_t>(n);
+    }
+  }
+
+ private:
+  int fd_;
+  std::mutex mutex_;
+};
+
+/// The journal in `dir` for this run: read (resume) or created.
+SweepJournal openJournal(const SweepRun& run, bool restart) {
+  const fs::path path = fs::path(run.dir) / kJournal;
+  if (fs::exists(path) && restart) fs::remove(path);
+  if (!fs::exists(path)) {
+    writeAtomically(path, identity(run.fingerprint, run.total_points, run.shard) + "\n" + headerLine(run.header) + "\n");
+    SweepJournal j;
+    j.fingerprint = run.fingerprint;
+    j.total_points = run.total_points;
+    j.shard = run.shard;
+    j.header = run.header;
+    return j;
+  }
+  ParsedJournal p = parseJournal(path);
+  if (p.journal.fingerprint != run.fingerprint || p.journal.header != run.header || p.journal.total_points != run.total_points)
+    throw OutputError(run.dir + " holds another sweep (its spec, scene or outputs differ): use another --out, or --force to start over");
+  if (p.journal.shard.index != run.shard.index || p.journal.shard.count != run.shard.count)
+    throw OutputError(run.dir + " holds shard " + p.journal.shard.text() + " of this sweep, not " + run.shard.text());
+  if (fs::file_size(path) != p.valid_bytes) fs::resize_file(path, p.valid_bytes);  // drop a torn or malformed tail
+  return p.journal;
+}
+
+}  // namespace
+
+SweepRunResult runSweep(const SweepRun& run, bool restart) {
+  const auto t0 = std::chrono::steady_clock::now();
+  MMV_DEMAND(!run.header.empty() && run.header.front() == "point" && run.shard.count >= 1 && run.jobs >= 1);
+  std::error_code ec;
+  fs::create_directories(run.dir, ec);
+  if (!fs::is_directory(run.dir)) throw OutputError(run.dir + ": cannot create the output directory");
+  SweepJournal journal = openJournal(run, restart);
+  std::vector<long> todo;
+  long in_shard = 0;
+  for (long p = 0; p < run.total_points; ++p)
+    if (run.shard.contains(p)) {
+      ++in_shard;
+      if (!journal.rows.count(p)) todo.push_back(p);
+    }
+  SweepRunResult result;
+  result.reused = in_shard - static_cast<long>(todo.size());
+  std::atomic<long> done{result.reused};
+  if (run.progress) run.progress(done, in_shard);
+  std::mutex rows_mutex;
+  {
+    JournalWriter writer(fs::path(run.dir) / kJournal);
+    tbb::task_arena arena(run.jobs);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const std::vector<std::string> cells = run.evaluate(todo[i]);
+          MMV_DEMAND(cells.size() + 1 == run.header.size());
+          std::string line = std::to_string(todo[i]);
+          for (const auto& c : cells) line += "," + c;
+          writer.append(line);
+          {
+            std::lock_guard<std::mutex> lock(rows_mutex);
+            journal.rows.emplace(todo[i], line);
+          }
+          const long d = ++done;
+          if (run.progress) run.progress(d, in_shard);
+        }
+      });
+    });
+  }
+  result.computed = static_cast<long>(todo.size());
+  result.csv = (fs::path(run.dir) / "sweep.csv").string();
+  writeAtomically(result.csv, tableText(run.header, journal.rows));
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+SweepJournal readSweepJournal(const std::string& dir) {
+  const fs::path path = fs::path(dir) / kJournal;
+  if (!fs::exists(path)) throw OutputError(dir + ": no sweep journal here (not a `mmvlab sweep --out` directory)");
+  return parseJournal(path).journal;
+}
+
+std::string mergeSweepShards(const std::vector<std::string>& dirs, const std::string& out_dir, bool force) {
+  if (dirs.empty()) throw UsageError("sweep-merge: name the shard directories");
+  std::vector<SweepJournal> parts;
+  for (const auto& d : dirs) parts.push_back(readSweepJournal(d));
+  std::map<long, std::string> rows;
+  std::map<long, std::string> owner;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const SweepJournal& p = parts[i];
+    if (p.fingerprint != parts[0].fingerprint || p.header != parts[0].header || p.total_points != parts[0].total_points)
+      throw OutputError(dirs[i] + " is a shard of another sweep than " + dirs[0] + " (spec, scene or outputs differ)");
+    for (const auto& [point, line] : p.rows) {
+      if (owner.count(point)) throw OutputError(strf("point %ld is in both %s and %s", point, owner[point].c_str(), dirs[i].c_str()));
+      owner[point] = dirs[i];
+      rows[point] = line;
+    }
+  }
+  std::vector<long> missing;
+  for (long p = 0; p < parts[0].total_points; ++p)
+    if (!rows.count(p)) missing.push_back(p);
+  if (!missing.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < std::min<std::size_t>(missing.size(), 10); ++i) list += (i ? ", " : "") + std::to_string(missing[i]);
+    throw OutputError(strf("%zu of %ld points are missing (%s%s): run the shards that hold them (or resume them) first", missing.size(),
+                           parts[0].total_points, list.c_str(), missing.size() > 10 ? ", ..." : ""));
+  }
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  const fs::path csv = fs::path(out_dir) / "sweep.csv";
+  if (fs::exists(csv) && !force) throw OutputError(csv.string() + " exists: use --force to replace it");
+  writeAtomically(csv, tableText(parts[0].header, rows));
+  return csv.string();
+}
+
+}  // namespace mmv

@@ -1,0 +1,109 @@
+// Sweep specs (sim/scene/sweep_spec.hpp) and their points; bad specs are refused at
+// their line and column before anything runs (sim/io/sweep_points.hpp checks keys and
+// outputs against the scene).
+#include "sim/scene/sweep_spec.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "sim/core/errors.hpp"
+#include <regex>
+#include "sim/io/sweep_points.hpp"
+
+namespace mmv {
+namespace {
+
+const std::string kScene = std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\nsegments: 2\n";
+
+SweepSpec parse(const std::string& body) { return parseSweepSpec(kScene + body, "spec.yaml", "."); }
+
+std::string errorOf(const std::string& body) {
+  try {
+    (void)prepareSweep(parse(body));
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SweepSpec, GridVariesTheLastParameterFastest) {
+  const SweepSpec s = parse(
+      "parameters:\n  - {key: links.link1.length, values: [2, 3]}\n"
+      "  - {key: links.link2.length, range: {from: 1, to: 2, samples: 3}}\noutputs: [mass]\n");
+  const auto p = sweepPoints(s);
+  ASSERT_EQ(p.size(), 6u);
+  EXPECT_EQ(p[0], (std::vector<double>{2, 1}));
+  EXPECT_EQ(p[1], (std::vector<double>{2, 1.5}));
+  EXPECT_EQ(p[3], (std::vector<double>{3, 1}));
+  EXPECT_EQ(pointOverrides(s, p[5]), (std::vector<std::string>{"links.link1.length=3", "links.link2.length=2"}));
+}
+
+TEST(SweepSpec, LatinHypercubePutsOnePointInEachStratumAndIsSeeded) {
+  const std::string body =
+      "parameters:\n  - {key: links.link1.length, range: {from: 1, to: 2, samples: 2}}\n"
+      "  - {key: links.link2.length, range: {from: 0.1, to: 10, samples: 2, log: true}}\n"
+      "design: {type: latin_hypercube, samples: 20, seed: SEED}\noutputs: [mass]\n";
+  auto with = [&](const std::string& seed) { return sweepPoints(parse(std::regex_replace(body, std::regex("SEED"), seed))); };
+  const auto a = with("4"), b = with("4"), c = with("5");
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  std::set<int> lin, log;
+  for (const auto& x : a) {
+    lin.insert(static_cast<int>((x[0] - 1) * 20));
+    log.insert(static_cast<int>(std::log(x[1] / 0.1) / std::log(100.0) * 20));
+  }
+  EXPECT_EQ(lin.size(), 20u);  // every stratum once
+  EXPECT_EQ(log.size(), 20u);
+}
+
+TEST(SweepSpec, BadSpecsNameTheirPosition) {
+  const std::string tail = "outputs: [mass]\n";
+  EXPECT_NE(errorOf("parameters:\n  - {key: links.link9.length, values: [1]}\n" + tail).find("spec.yaml:4:5: parameters[0] 'links.link9.length'"),
+            std::string::npos)
+      << errorOf("parameters:\n  - {key: links.link9.length, values: [1]}\n" + tail);
+  auto refused = [&](const std::string& body, const std::string& what) {
+    std::string e;
+    try {
+      (void)parse(body);
+    } catch (const SceneError& x) {
+      e = x.what();
+    }
+    EXPECT_NE(e.find(what), std::string::npos) << "got: " << e;
+  };
+  refused("parameters:\n  - {key: links.link1.length, range: {from: 2, to: 1, samples: 3}}\n" + tail, "spec.yaml:4:");
+  refused("parameters:\n  - {key: links.link1.length, range: {from: 2, to: 1, samples: 3}}\n" + tail, "from 2 is above to 1");
+  refused("parameters:\n  - {key: links.link1.length, range: {from: 1, to: 1, samples: 3}}\n" + tail, "is empty");
+  refused("parameters:\n  - {key: links.link1.length, range: {from: 1, to: 2, samples: 0}}\n" + tail, "samples must be >= 2");
+  refused("parameters:\n  - {key: links.link1.length, values: []}\n" + tail, "must be a non-empty list");
+  refused("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [masss]\n", "unknown output 'masss'");
+  refused("parameters: []\n" + tail, "parameters must be a non-empty list");
+  refused("parameters:\n  - {key: a, values: [1]}\ndesign: {type: latin_hypercube, samples: 0}\n" + tail, "design.samples must be 1 to");
+  EXPECT_NE(errorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n")
+                .find("spec.yaml:5:11: output 'json:modes/modes/0/no_such_field': the nominal scene's JSON has no such field"),
+            std::string::npos)
+      << errorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n");
+}
+
+TEST(SweepSpec, PointsAreRowsOfTheirOwn) {
+  // The same point evaluated twice (and out of order) gives the same cells.
+  const SweepContext c = prepareSweep(parse(
+      "parameters:\n  - {key: links.link3.length, values: [0.6, 0.9]}\noutputs: [frequencies, mass, check, \"json:modes/modes/0/effective_mass_x_kg\"]\nmodes: 3\n"));
+  const auto b1 = evaluateSweepPoint(c, 1), a = evaluateSweepPoint(c, 0), b2 = evaluateSweepPoint(c, 1);
+  EXPECT_EQ(b1, b2);
+  EXPECT_NE(a, b1);
+  ASSERT_EQ(a.size() + 1, c.header.size());
+  EXPECT_EQ(a[1], "ok");
+  EXPECT_EQ(c.header[3], "mode1_hz");
+  EXPECT_EQ(c.header.back(), "modes/modes/0/effective_mass_x_kg");
+}
+
+TEST(SweepSpec, APointTheSceneRefusesIsARowWithItsReason) {
+  const SweepContext c = prepareSweep(parse("parameters:\n  - {key: links.link1.length, values: [2.44, -1]}\noutputs: [mass]\n"));
+  const auto row = evaluateSweepPoint(c, 1);
+  EXPECT_NE(row[1].find("scene error"), std::string::npos) << row[1];
+  EXPECT_EQ(row[2], "");  // no mass where there is no scene
+}
+
+}  // namespace
+}  // namespace mmv
