@@ -102,8 +102,8 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
   const int bx = left + cols * cell + 30, bh = std::max(rows * cell, 100);
   for (int y = 0; y < bh; ++y) cv::line(img, {bx, top + y}, {bx + 20, top + y}, colourFor(1.0 - double(y) / bh));
   cv::rectangle(img, cv::Rect(bx, top, 20, bh), kBlack, 1);
-  text(img, fmt(vmax, "%.1f"), {bx + 26, top + 10}, 0.42);
-  text(img, fmt(vmin, "%.1f"), {bx + 26, top + bh}, 0.42);
+  text(img, fmt(vmax, "%.3g"), {bx + 26, top + 10}, 0.42);
+  text(img, fmt(vmin, "%.3g"), {bx + 26, top + bh}, 0.42);
   save(path, img);
 }
 

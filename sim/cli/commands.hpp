@@ -160,6 +160,8 @@ int runModesCommand(const ModesArgs& args);
 int runCheckCommand(const CheckArgs& args);
 int runDesignSweepCommand(const DesignSweepArgs& args);
 int runSweepMergeCommand(const SweepMergeArgs& args);
+/// The figures of a sweep directory's sweep.csv (sim/cli/sweep_plots.cpp); their paths.
+std::vector<std::string> writeSweepPlots(const std::string& dir);
 int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);

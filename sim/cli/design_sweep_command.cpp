@@ -94,6 +94,7 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
     const SweepRunResult r = runSweep(run, args.force);
     const nlohmann::ordered_json j = summary(context, run, r);
     std::ofstream(std::filesystem::path(run.dir) / "sweep.json", std::ios::binary) << j.dump(2) << '\n';
+    if (shard.count == 1) writeSweepPlots(run.dir);
     if (args.json) {
       std::cout << j.dump(2) << '\n';
     } else {
@@ -109,6 +110,7 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
 int runSweepMergeCommand(const SweepMergeArgs& args) {
   return guarded([&] {
     const std::string csv = mergeSweepShards(args.shards, args.out, args.force);
+    writeSweepPlots(args.out);
     std::cout << "merged " << args.shards.size() << " shards into " << csv << '\n';
     return kOk;
   });

@@ -1,4 +1,6 @@
 #include "sim/core/text.hpp"
+
+#include <charconv>
 #include <cctype>
 
 #include <cstdarg>
@@ -55,6 +57,12 @@ std::string Table::markdown() const {
     os << '\n';
   }
   return os.str();
+}
+
+std::string shortest(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 }  // namespace mmv

@@ -21,6 +21,10 @@ class Table {
   std::vector<std::vector<std::string>> rows_;
 };
 
+/// The shortest decimal text that reads back as exactly `v` (std::to_chars):
+/// 0.0025, not 0.0025000000000000001.
+std::string shortest(double v);
+
 /// printf into a std::string.
 std::string strf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 

@@ -16,7 +16,13 @@ namespace {
 
 bool wants(const SweepSpec& s, const std::string& o) { return std::find(s.outputs.begin(), s.outputs.end(), o) != s.outputs.end(); }
 
-std::string cell(double v) { return std::isfinite(v) ? strf("%.17g", v) : ""; }
+/// `name` is `link` or one of its branches (link3 -> link3a, link3b): a symmetric
+/// pair's modes put equal strain in both branches, so either may come out on top.
+bool isLinkOrBranch(const std::string& name, const std::string& link) {
+  return name == link || (name.size() == link.size() + 1 && name.rfind(link, 0) == 0 && std::islower(static_cast<unsigned char>(name.back())));
+}
+
+std::string cell(double v) { return std::isfinite(v) ? shortest(v) : ""; }
 
 /// A cell cannot hold the CSV's separators.
 std::string clean(std::string s) {
@@ -114,6 +120,15 @@ void appendOutputs(const SweepContext& c, const PointResult* r, std::vector<std:
       if (r)
         for (const auto& l : r->check.lines) warnings += l.id == "plausibility.warning";
       cells.push_back(r ? std::to_string(warnings) : "");
+    } else if (o.rfind("first_mode:", 0) == 0) {
+      std::string f;
+      if (r)
+        for (const auto& m : r->modes.modes)
+          if (m.stable && !m.rigid_body && isLinkOrBranch(m.dominant_link_strain, o.substr(11))) {
+            f = cell(m.frequency_hz);
+            break;
+          }
+      cells.push_back(f);
     } else if (o.rfind("json:modes/", 0) == 0) {
       cells.push_back(r ? jsonCell(modesToJson(r->modes), o.substr(10)) : "");
     } else {
@@ -142,6 +157,14 @@ void layOut(SweepContext& c, const PointResult& nominal) {
       c.header.push_back("mass_kg");
     } else if (o == "deflection") {
       c.header.push_back("max_deflection_m");
+    } else if (o.rfind("first_mode:", 0) == 0) {
+      const std::string link = o.substr(11);
+      bool known = false;
+      std::string names;
+      for (const auto& l : sceneAt(c, {}).article.links)
+        known = known || isLinkOrBranch(l.name, link), names += (names.empty() ? "" : ", ") + l.name;
+      if (!known) throw SceneError(c.spec.output_where[i] + ": output '" + o + "': no link '" + link + "' (known: " + names + ")");
+      c.header.push_back("first_mode_" + link + "_hz");
     } else if (o == "check") {
       c.header.push_back("check_overall");
       for (const auto& l : nominal.check.lines)
@@ -184,7 +207,7 @@ SweepContext prepareSweep(const SweepSpec& spec) {
   for (std::size_t k = 0; k < spec.parameters.size(); ++k) {  // each key, alone, as in a file
     const SweepParameter& p = spec.parameters[k];
     try {
-      (void)sceneAt(c, {p.key + "=" + strf("%.17g", p.gridValues().empty() ? p.at(0) : p.gridValues().front())});
+      (void)sceneAt(c, {p.key + "=" + shortest(p.gridValues().empty() ? p.at(0) : p.gridValues().front())});
     } catch (const std::exception& e) {
       throw SceneError(p.where + ": parameters[" + std::to_string(k) + "] '" + p.key + "': " + e.what());
     }

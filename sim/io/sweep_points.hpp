@@ -9,6 +9,8 @@
 ///    nominal scene, tracked to each point by an optimal MAC assignment on the shapes at
 ///    the named points (sim/modes/tracking.hpp); a MAC below 0.5 means the mode changed
 ///    character there; an empty cell, that no mode matched;
+///  - first_mode:LINK: first_mode_LINK_hz, the lowest vibration mode whose strain
+///    energy is mostly in LINK or one of its branches (link3: link3a or link3b);
 ///  - mass: mass_kg; deflection: max_deflection_m (largest static deflection of a point);
 ///  - check: check_overall, then <id>_demand and <id>_margin_pct for every line of the
 ///    nominal check (sim/plan/check.hpp), and plausibility_warnings;

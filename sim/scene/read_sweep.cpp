@@ -17,8 +17,10 @@ std::vector<double> SweepParameter::gridValues() const {
   std::vector<double> v(samples);
   for (int i = 0; i < samples; ++i) {
     const double s = static_cast<double>(i) / (samples - 1);
-    v[i] = log ? from * std::pow(to / from, s) : from + (to - from) * s;
+    // Rounded to 12 digits: 0.0025, not 0.0025000000000000001, in the table and the --set.
+    v[i] = std::strtod(strf("%.12g", log ? from * std::pow(to / from, s) : from + (to - from) * s).c_str(), nullptr);
   }
+  v.front() = from;
   v.back() = to;
   return v;
 }
@@ -87,9 +89,9 @@ void readOutputs(const YamlReader& r, const YAML::Node& n, SweepSpec& s) {
   r.sequence(n, "outputs");
   for (std::size_t i = 0; i < n.size(); ++i) {
     const std::string o = r.text(n[i], strf("outputs[%zu]", i));
-    const bool json = o.rfind("json:modes/", 0) == 0 || o.rfind("json:check/", 0) == 0;
+    const bool json = o.rfind("json:modes/", 0) == 0 || o.rfind("json:check/", 0) == 0 || (o.rfind("first_mode:", 0) == 0 && o.size() > 11);
     if (!json && std::find(kOutputs.begin(), kOutputs.end(), o) == kOutputs.end())
-      r.fail(n[i].Mark(), strf("outputs[%zu]: unknown output '%s' (known: %s, json:modes/POINTER, json:check/POINTER)", i, o.c_str(),
+      r.fail(n[i].Mark(), strf("outputs[%zu]: unknown output '%s' (known: %s, first_mode:LINK, json:modes/POINTER, json:check/POINTER)", i, o.c_str(),
                                scene_detail::joinNames(kOutputs).c_str()));
     if (std::find(s.outputs.begin(), s.outputs.end(), o) != s.outputs.end()) r.fail(n[i].Mark(), "outputs: '" + o + "' is listed twice");
     s.outputs.push_back(o);
@@ -184,7 +186,7 @@ std::vector<std::vector<double>> sweepPoints(const SweepSpec& spec) {
 
 std::vector<std::string> pointOverrides(const SweepSpec& spec, const std::vector<double>& point) {
   std::vector<std::string> sets;
-  for (std::size_t k = 0; k < point.size(); ++k) sets.push_back(spec.parameters[k].key + "=" + strf("%.17g", point[k]));
+  for (std::size_t k = 0; k < point.size(); ++k) sets.push_back(spec.parameters[k].key + "=" + shortest(point[k]));
   return sets;
 }
 

@@ -47,7 +47,8 @@ struct SweepSpec {
   enum class Design { Grid, LatinHypercube } design = Design::Grid;
   int lhs_samples = 0;
   std::uint64_t seed = 1;
-  std::vector<std::string> outputs;  ///< frequencies, mass, deflection, check, json:modes/<pointer>, json:check/<pointer>.
+  /// frequencies, mass, deflection, check, first_mode:LINK, json:modes/<pointer>, json:check/<pointer>.
+  std::vector<std::string> outputs;
   std::vector<std::string> output_where;  ///< file:line:col of each output.
   int modes = 6;
 };
@@ -63,7 +64,7 @@ SweepSpec parseSweepSpec(const std::string& text, const std::string& source, con
 /// parameter's range cut into that many strata, one point in each, strata paired by a
 /// seeded shuffle (std::mt19937_64). Deterministic.
 std::vector<std::vector<double>> sweepPoints(const SweepSpec& spec);
-/// "KEY=VALUE" for each parameter at a point (values to 17 significant digits).
+/// "KEY=VALUE" for each parameter at a point (the shortest text that reads back exactly).
 std::vector<std::string> pointOverrides(const SweepSpec& spec, const std::vector<double>& point);
 
 }  // namespace mmv
