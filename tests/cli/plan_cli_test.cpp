@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <sstream>
 
 #include "support/cli.hpp"
 
@@ -81,6 +82,53 @@ TEST_F(Cli, SweepKilledAtRandomMomentsResumesToTheSameFile) {
     EXPECT_EQ(slurp(out / "sweep.csv"), whole) << "seed " << seed;
   }
   EXPECT_TRUE(resumed_mid_way);
+}
+
+TEST_F(Cli, SweepFiguresAndTheParetoFrontComeFromTheCsvAlsoWhenMerged) {
+  const fs::path spec = write("spec.yaml", std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\nsegments: 4\n"
+      "set: [joints.joint1.torque_capacity=150, joints.joint2.torque_capacity=12, joints.joint3.torque_capacity=0.3]\n"
+      "parameters:\n  - {key: sections.link3_rod.radius, range: {from: 0.001, to: 0.003, samples: 3}}\n"
+      "  - {key: links.link3.length, values: [0.5, 0.75, 1.0]}\noutputs: [frequencies, mass, check]\nmodes: 3\n");
+  ASSERT_EQ(run("sweep " + spec.string() + " --out " + (dir_ / "whole").string()).code, 0);
+  for (const char* f : {"frequencies_vs_links_link3_length.png", "margins_vs_sections_link3_rod_radius.png", "pareto.png", "mode1_map.png"})
+    EXPECT_TRUE(isPng(dir_ / "whole" / f)) << f;
+  // No point of the sweep dominates a point of the front (higher f1, lower mass, higher worst margin).
+  const auto rows = [](const std::string& text) {
+    std::vector<std::vector<std::string>> out;
+    std::istringstream is(text);
+    std::string line;
+    std::getline(is, line);
+    while (std::getline(is, line)) {
+      std::vector<std::string> cells;
+      std::istringstream ls(line);
+      std::string c;
+      while (std::getline(ls, c, ',')) cells.push_back(c);
+      out.push_back(cells);
+    }
+    return out;
+  };
+  const auto front = rows(slurp(dir_ / "whole" / "pareto.csv"));
+  ASSERT_FALSE(front.empty());
+  const std::string csv = slurp(dir_ / "whole" / "sweep.csv");
+  const auto all = rows(csv);
+  const std::string header = csv.substr(0, csv.find('\n')) + ",";
+  const auto col = [&](const std::string& name) { return static_cast<int>(std::count(header.begin(), header.begin() + header.find(name + ","), ',')); };
+  ASSERT_EQ(col("mass_kg"), 10);
+  for (const auto& p : front) {
+    const double f = std::stod(p[1]), m = std::stod(p[2]), g = std::stod(p[3]);
+    for (const auto& q : all) {
+      double worst = 1e300;
+      for (const char* c : {"torque.joint1.hold_margin_pct", "torque.joint2.hold_margin_pct", "torque.joint3.hold_margin_pct"})
+        worst = std::min(worst, std::stod(q[col(c)]));
+      const double qf = std::stod(q[col("mode1_hz")]), qm = std::stod(q[col("mass_kg")]);
+      EXPECT_FALSE(qf >= f && qm <= m && worst >= g && (qf > f || qm < m || worst > g)) << "point " << q[0] << " dominates " << p[0];
+    }
+  }
+  for (int i = 1; i <= 2; ++i) ASSERT_EQ(run("sweep " + spec.string() + " --out " + (dir_ / "sh").string() + " --shard " + std::to_string(i) + "/2").code, 0);
+  ASSERT_EQ(run("sweep-merge --out " + (dir_ / "merged").string() + " " + (dir_ / "sh" / "shard-1-of-2").string() + " " +
+                (dir_ / "sh" / "shard-2-of-2").string()).code, 0);
+  EXPECT_EQ(slurp(dir_ / "merged" / "sweep.csv"), slurp(dir_ / "whole" / "sweep.csv"));
+  EXPECT_EQ(slurp(dir_ / "merged" / "pareto.csv"), slurp(dir_ / "whole" / "pareto.csv"));
 }
 
 TEST_F(Cli, BadSweepSpecsExit65AndWriteNothing) {
