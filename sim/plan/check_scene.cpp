@@ -156,7 +156,7 @@ void addPlausibilityLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   for (const auto& p : in.modes.points) deflection = std::max(deflection, std::hypot(p.dx, p.dy));
   for (const auto& l : a.links) size += l.length;
   if (size > 0 && deflection > 0.1 * size)
-    warnings.push_back(strf("the static deflection %.3g m is %.0f %% of the article's length: a section or modulus in the wrong unit?", deflection, 100 * deflection / size));
+    warnings.push_back(strf("the static deflection %.3g m is %.0f %% of the article's length: far from small (check the units of sections and moduli if unexpected)", deflection, 100 * deflection / size));
   for (const auto& mode : in.modes.modes)
     if (mode.stable && !mode.rigid_body && mode.frequency_hz > 0) {
       if (mode.frequency_hz < 0.01 || mode.frequency_hz > 1e4)
