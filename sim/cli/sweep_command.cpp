@@ -57,6 +57,8 @@ void plots(OutputDir& out, const SweepResult& r) {
             continue;
           }
           const auto& t = p.tracks[k];
+          if (t.state.rfind("lost", 0) == 0 || t.state.rfind("restarted", 0) == 0)  // another mode from here: break the line
+            for (auto* series : {&f, &s, &e}) series->x.push_back(p.angles_deg[0]), series->y.push_back(NAN);
           f.x.push_back(p.angles_deg[0]);
           f.y.push_back(t.stable ? t.frequency_hz : NAN);
           s.x.push_back(p.angles_deg[0]);
@@ -75,6 +77,7 @@ void plots(OutputDir& out, const SweepResult& r) {
       const auto a0 = r.axes[0].values(), a1 = r.axes[1].values();
       Eigen::MatrixXd worst = Eigen::MatrixXd::Zero(a1.size(), a0.size());
       for (const auto& p : r.points) {
+        if (p.refined) continue;  // the map shows the grid
         int i = 0, j = 0;
         for (std::size_t x = 0; x < a0.size(); ++x)
           if (std::abs(a0[x] - p.angles_deg[0]) < 1e-9) i = static_cast<int>(x);

@@ -11,19 +11,19 @@ namespace mmv {
 std::string sweepCsv(const SweepResult& r) {
   std::ostringstream os;
   for (const auto& ax : r.axes) os << ax.joint << "_deg,";
-  os << "track,sorted_mode,frequency_hz,mac_to_previous,synthesized_frequency_hz,synthesis_relative_error,"
-        "synthesis_mac,verdict,strain_link\n";
+  os << "point_kind,track,sorted_mode,frequency_hz,mac_to_previous,synthesized_frequency_hz,synthesis_relative_error,"
+        "synthesis_mac,verdict,strain_link,track_state\n";
   for (const auto& p : r.points) {
     if (!p.solved) {  // one row saying why there is nothing
       for (double a : p.angles_deg) os << strf("%g,", a);
-      os << ",,,,,,,\"no equilibrium: " << p.failure << "\",\n";
+      os << (p.refined ? "refined" : "grid") << ",,,,,,,,\"no equilibrium: " << p.failure << "\",,\n";
     }
     for (std::size_t k = 0; k < p.tracks.size(); ++k) {
       const TrackPoint& t = p.tracks[k];
       for (double a : p.angles_deg) os << strf("%g,", a);
-      os << k + 1 << ',' << t.sorted_mode << ',' << (t.stable ? strf("%.8g", t.frequency_hz) : "") << ','
+      os << (p.refined ? "refined," : "grid,") << k + 1 << ',' << t.sorted_mode << ',' << (t.stable ? strf("%.8g", t.frequency_hz) : "") << ','
          << strf("%.6f,%.8g,%.6g,%.6f", t.mac_to_previous, t.synth_hz, t.synth_error, t.synth_mac) << ',' << t.verdict
-         << ',' << t.strain_link << '\n';
+         << ',' << t.strain_link << ",\"" << t.state << "\"\n";
     }
   }
   return os.str();
@@ -32,7 +32,9 @@ std::string sweepCsv(const SweepResult& r) {
 std::string sweepText(const SweepResult& r) {
   std::ostringstream os;
   os << "Configuration map: system modes tracked by shape (MAC); in parentheses the synthesis error\n"
-     << "of " << r.synthesis_method << " (%; * = not 'predicted': MAC < 0.9 or |err| > 1 %)\n\n";
+     << "of " << r.synthesis_method << " (%; * = not 'predicted': MAC < 0.9 or |err| > 1 %)\n"
+     << strf("r: a point inserted where a track's MAC fell below %.1f; LOST: still below %.1f at the finest step\n"
+             "(the track continues as another mode); RESTART: after a point without an equilibrium\n\n", kRefineMac, kLostMac);
   std::vector<std::string> head;
   for (const auto& ax : r.axes) head.push_back(ax.joint + "_deg");
   std::size_t tracks = 0;
@@ -41,11 +43,12 @@ std::string sweepText(const SweepResult& r) {
   Table t(head);
   for (const auto& p : r.points) {
     std::vector<std::string> row;
-    for (double a : p.angles_deg) row.push_back(strf("%g", a));
+    for (double a : p.angles_deg) row.push_back(strf("%g", a) + (p.refined ? " r" : ""));
     if (!p.solved) row.push_back("no equilibrium (see below)");
     for (const auto& tp : p.tracks)
-      row.push_back(tp.stable ? strf("%.4f (%+.2f)%s", tp.frequency_hz, 100 * tp.synth_error, tp.verdict == "predicted" ? " " : "*")
-                              : std::string("UNSTABLE"));
+      row.push_back((tp.stable ? strf("%.4f (%+.2f)%s", tp.frequency_hz, 100 * tp.synth_error, tp.verdict == "predicted" ? " " : "*")
+                               : std::string("UNSTABLE")) +
+                    (tp.state.rfind("lost", 0) == 0 ? " LOST" : tp.state.rfind("restarted", 0) == 0 ? " RESTART" : ""));
     t.add(row);
   }
   os << t.text();
@@ -79,8 +82,11 @@ std::string sweepText(const SweepResult& r) {
       os << ": " << p.failure << '\n';
     }
   }
-  os << strf("\nTracking: worst MAC between consecutive points %.3f%s\n", r.min_tracking_mac,
-             r.min_tracking_mac < 0.8 ? " (low: refine the grid step to follow the shapes)" : "");
+  os << strf("\nTracking: %d points inserted to follow the shapes; worst MAC of a followed track %.3f; %d track%s lost\n",
+             r.refined_points, r.min_tracking_mac, r.lost_tracks, r.lost_tracks == 1 ? "" : "s");
+  for (const auto& p : r.points)
+    for (std::size_t k = 0; k < p.tracks.size(); ++k)
+      if (!p.tracks[k].state.empty()) os << strf("  track %zu at %g deg: ", k + 1, p.angles_deg[0]) << p.tracks[k].state << '\n';
   return os.str();
 }
 
@@ -95,6 +101,8 @@ nlohmann::ordered_json sweepJson(const SweepResult& r) {
   j["synthesis_method"] = r.synthesis_method;
   j["min_tracking_mac"] = r.min_tracking_mac;
   j["failed_points"] = r.failed_points;
+  j["refined_points"] = r.refined_points;
+  j["lost_tracks"] = r.lost_tracks;
   auto pts = nlohmann::ordered_json::array();
   for (const auto& p : r.points) {
     auto tr = nlohmann::ordered_json::array();
@@ -106,8 +114,9 @@ nlohmann::ordered_json sweepJson(const SweepResult& r) {
                     {"synthesis_relative_error", t.synth_error},
                     {"synthesis_mac", t.synth_mac},
                     {"verdict", t.verdict},
-                    {"strain_link", t.strain_link}});
-    nlohmann::ordered_json pj = {{"angles_deg", p.angles_deg}, {"solved", p.solved}, {"tracks", tr}};
+                    {"strain_link", t.strain_link},
+                    {"state", t.state}});
+    nlohmann::ordered_json pj = {{"angles_deg", p.angles_deg}, {"refined", p.refined}, {"solved", p.solved}, {"tracks", tr}};
     if (!p.solved) pj["failure"] = p.failure;
     pts.push_back(pj);
   }

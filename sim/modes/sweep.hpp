@@ -7,6 +7,16 @@
 /// the named points (sim/modes/tracking.hpp), so a track follows one shape through
 /// crossings and veerings; a 2-D grid is walked back and forth (boustrophedon) so
 /// that consecutive points are neighbours.
+///
+/// Tracking holds across the range: modes are paired by an optimal assignment on the
+/// MAC matrix, and where a track's MAC between consecutive points falls below
+/// kRefineMac the step is halved (up to kMaxRefinements times: a 15 deg step down to
+/// 0.94 deg), the points in between solved and reported as refined points. A track
+/// whose MAC is still below kLostMac at the finest step is marked lost at that point
+/// (its shape changed beyond recognition: a veering or crossing finer than the finest
+/// step), and one that follows a point without an equilibrium (a limit point of the
+/// equilibrium path) restarts by frequency rank, marked so: neither is drawn as a
+/// continuation. Unstable modes (negative stiffness) are kept and marked.
 
 #include <string>
 #include <vector>
@@ -28,6 +38,10 @@ struct SweepOptions {
   SynthesisOptions synthesis;  ///< compare_modes is set to modes + 4 (the tracking window).
 };
 
+constexpr double kRefineMac = 0.8;
+constexpr double kLostMac = 0.5;
+constexpr int kMaxRefinements = 4;
+
 struct TrackPoint {
   int sorted_mode = 0;  ///< rank of the tracked mode at this point (1-based).
   double frequency_hz = 0;
@@ -35,6 +49,9 @@ struct TrackPoint {
   double mac_to_previous = 1;  ///< with the same track at the previous point.
   double synth_hz = 0, synth_error = 0, synth_mac = 0;
   std::string verdict, strain_link;
+  /// "" (followed), "lost: why" (MAC below kLostMac at the finest step), or
+  /// "restarted: why" (after a point without an equilibrium: by rank, not by shape).
+  std::string state;
 };
 
 struct SweepPoint {
@@ -42,14 +59,16 @@ struct SweepPoint {
   bool solved = true;
   std::string failure;             ///< why there is no result (e.g. a limit point of the equilibrium path).
   std::vector<TrackPoint> tracks;  ///< empty when !solved.
+  bool refined = false;            ///< inserted between grid points to follow the shapes.
 };
 
 struct SweepResult {
   std::vector<GridAxis> axes;
   std::string synthesis_method;
   std::vector<SweepPoint> points;  ///< in walk order.
-  double min_tracking_mac = 1;     ///< worst MAC between consecutive points of any track.
+  double min_tracking_mac = 1;     ///< worst MAC between consecutive points of any track not lost.
   int failed_points = 0;
+  int refined_points = 0, lost_tracks = 0;
 };
 
 /// Throws SceneError for an unknown joint. A grid point without an equilibrium (or

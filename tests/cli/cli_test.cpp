@@ -315,7 +315,8 @@ TEST_F(Cli, SweepConfigWritesCsvAndPlots) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Per track"), std::string::npos);
   const std::string csv = slurp(out / "sweep.csv");
-  EXPECT_EQ(csv.rfind("joint2_deg,track,sorted_mode,frequency_hz", 0), 0u);
+  EXPECT_EQ(csv.rfind("joint2_deg,point_kind,track,sorted_mode,frequency_hz", 0), 0u);
+  EXPECT_EQ(csv.find(",refined,"), std::string::npos);  // the open tree is followed at the grid's step
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 5 * 4);  // header + 5 angles x 4 tracks
   EXPECT_TRUE(isPng(out / "frequencies.png"));
   EXPECT_TRUE(isPng(out / "synthesis_error.png"));
