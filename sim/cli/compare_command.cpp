@@ -2,7 +2,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "renders/plot.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/report_compare.hpp"
@@ -22,7 +22,7 @@ void macPng(const std::string& path, const SynthesisResult& s, const std::string
   for (Eigen::Index i = 0; i < s.mac.rows(); ++i) rows.push_back(strf("%ld: %.2f Hz", static_cast<long>(i + 1), s.synth_hz[i]));
   for (Eigen::Index j = 0; j < s.mac.cols(); ++j) cols.push_back(strf("%ld", static_cast<long>(j + 1)));
   try {
-    render::writeHeatmapPng(path, s.mac, rows, cols, title, "synthesized mode", "full model's mode");
+    figures::heatmap(path, s.mac, rows, cols, title, "synthesized mode", "full model's mode");
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }

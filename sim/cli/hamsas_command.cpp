@@ -4,7 +4,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "renders/plot.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_modes.hpp"
@@ -42,13 +42,13 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
     return s;
   };
   try {
-    render::writeLinePlotPng(out.stage("transmissibility_horizontal.png"), {series(0, 0), series(1, 1), series(0, 4), series(1, 3)},
+    figures::linePlot(out.stage("transmissibility_horizontal.png"), {series(0, 0), series(1, 1), series(0, 4), series(1, 3)},
                              name + ": horizontal transmissibility (table / ground)", "frequency (Hz)",
                              "magnitude (dB; m/m, m/rad)", false, true);
-    render::writeLinePlotPng(out.stage("transmissibility_vertical.png"), {series(2, 2)},
+    figures::linePlot(out.stage("transmissibility_vertical.png"), {series(2, 2)},
                              name + ": vertical transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB)", false,
                              true);
-    render::writeLinePlotPng(out.stage("transmissibility_angular.png"), {series(3, 3), series(4, 4), series(5, 5)},
+    figures::linePlot(out.stage("transmissibility_angular.png"), {series(3, 3), series(4, 4), series(5, 5)},
                              name + ": angular transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB)", false,
                              true);
     Eigen::MatrixXd heat(6, 6);
@@ -56,12 +56,12 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
       for (int j = 0; j < 6; ++j) heat(i, j) = std::max(decibels(T10(i, j)), -250.0);  // zero by symmetry: the floor
     std::vector<std::string> names;
     for (int k = 0; k < 6; ++k) names.push_back(hamsasDofName(k));
-    render::writeHeatmapPng(out.stage("transmissibility_10hz.png"), heat, names, names,
+    figures::heatmap(out.stage("transmissibility_10hz.png"), heat, names, names,
                             name + ": |T| at 10 Hz (dB, floor -250)", "optical table", "ground", -250, 0);
     if (!varied.empty()) {
       std::vector<render::Series> curves;
       for (const auto& p : varied) curves.push_back({strf("%g", p.value) + vary_unit, f, p.x_db});
-      render::writeLinePlotPng(out.stage("transmissibility_vary.png"), curves, name + ": x transmissibility vs " + vary_key,
+      figures::linePlot(out.stage("transmissibility_vary.png"), curves, name + ": x transmissibility vs " + vary_key,
                                "frequency (Hz)", "magnitude (dB)", false, true);
     }
   } catch (const std::runtime_error& e) {

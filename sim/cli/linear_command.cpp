@@ -8,7 +8,7 @@
 #include <tuple>
 #include <sstream>
 
-#include "renders/plot.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/mat_file.hpp"
@@ -159,7 +159,7 @@ int runFrfCommand(const LinearArgs& args) {
           }
           std::ofstream(out->stage("frf_" + base + ".csv"), std::ios::binary) << frfCsv(s, o, i, f, hf, hr);
           try {
-            render::writeBodePng(out->stage("bode_" + base + ".png"), {full, rom},
+            figures::bode(out->stage("bode_" + base + ".png"), {full, rom},
                                  s.output_names[o] + " / " + s.input_names[i] + " (" + s.output_units[o] + " per " +
                                      s.input_units[i] + ")",
                                  args.rad ? "frequency (rad/s)" : "frequency (Hz)");

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "sim/cli/commands.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/core/integrators.hpp"
 #include "sim/io/report.hpp"
 
@@ -296,7 +297,7 @@ int main(int argc, char** argv) {
   if (si->parsed()) return runSimulateCommand(sim);
   if (tp->parsed()) return runTradeCommand(tr);
   if (pl->parsed()) return runPlaceSensorsCommand(ps);
-  if (rn->parsed()) return runRenderCommand(rd);
+  if (rn->parsed()) return mmv::figures::renderCommand(rd);
   if (fr->parsed()) return runFrfCommand(lin);
   if (ro->parsed()) return runRomCommand(lin);
   return runSceneCommand();

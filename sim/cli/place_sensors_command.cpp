@@ -8,8 +8,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "renders/frame.hpp"
-#include "renders/plot.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_placement.hpp"
@@ -58,16 +57,18 @@ void writeReviewRenders(OutputDir& out, const PlacementStudy& s, const std::stri
   d.title = strf("%s: %zu sensors by %s", scene_name.c_str(), at.size(), s.method.c_str());
   Camera camera;
   presetCamera(view, d.bounds(), camera, d.up);
-  render::writePng(out.stage("review_sensors.png"), render::renderFrame(d, camera, {1280, 720, 3}));
-  std::vector<cv::Mat> tiles;
+  figures::framePng(out.stage("review_sensors.png"), d, camera, {1280, 720, 3});
+  std::vector<DrawList> tiles;
+  std::vector<Camera> cameras;
   for (int m : s.target_modes) {
     DrawList md = mode(m);
     addSensorMarks(md, at, std::vector<std::string>(at.size()));
     Camera c;
     presetCamera(view, md.bounds(), c, md.up);
-    tiles.push_back(render::renderFrame(md, c, {480, 320, 2}));
+    tiles.push_back(std::move(md));
+    cameras.push_back(c);
   }
-  render::writePng(out.stage("review_modes.png"), render::contactSheet(tiles, std::min<int>(4, tiles.size())));
+  figures::contactSheetPng(out.stage("review_modes.png"), tiles, cameras, {480, 320, 2}, std::min<int>(4, tiles.size()));
 }
 
 void writeArticleReviewRenders(OutputDir& out, const ArticleScene& scene, const PlacementStudy& s) {
@@ -117,7 +118,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
         cols.push_back(std::to_string(s.target_modes[j]));
       }
       try {
-        render::writeHeatmapPng(out->stage("automac.png"), s.result.automac, rows, cols,
+        figures::heatmap(out->stage("automac.png"), s.result.automac, rows, cols,
                                 strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()),
                                 "mode", "mode");
         if (article) writeArticleReviewRenders(*out, *article, s);

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "renders/plot.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/sweep_report.hpp"
@@ -69,9 +69,9 @@ void plots(OutputDir& out, const SweepResult& r) {
         freq.push_back(f);
         err.push_back(e);
       }
-      render::writeLinePlotPng(out.stage("frequencies.png"), freq, "System modes tracked by shape",
+      figures::linePlot(out.stage("frequencies.png"), freq, "System modes tracked by shape",
                                r.axes[0].joint + " angle (deg)", "frequency (Hz)", true);
-      render::writeLinePlotPng(out.stage("synthesis_error.png"), err, "Synthesis error: " + r.synthesis_method,
+      figures::linePlot(out.stage("synthesis_error.png"), err, "Synthesis error: " + r.synthesis_method,
                                r.axes[0].joint + " angle (deg)", "|synthesized / full - 1| (%)", false);
     } else {
       const auto a0 = r.axes[0].values(), a1 = r.axes[1].values();
@@ -88,7 +88,7 @@ void plots(OutputDir& out, const SweepResult& r) {
       std::vector<std::string> rows, cols;
       for (double v : a1) rows.push_back(strf("%g", v));
       for (double v : a0) cols.push_back(strf("%g", v));
-      render::writeHeatmapPng(out.stage("synthesis_error.png"), worst, rows, cols,
+      figures::heatmap(out.stage("synthesis_error.png"), worst, rows, cols,
                               "Worst synthesis error over the tracked modes (%)", r.axes[1].joint + " (deg)",
                               r.axes[0].joint + " (deg)", 0.0, std::max(worst.maxCoeff(), 1e-3));
     }

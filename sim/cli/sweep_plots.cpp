@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "renders/plot.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
 
@@ -87,7 +87,7 @@ void againstParameter(const SweepTable& t, const fs::path& path, int p, const st
     }
     series.push_back(s);
   }
-  render::writeLinePlotPng(path.string(), series, title, t.header[p], y_label);
+  figures::linePlot(path.string(), series, title, t.header[p], y_label);
 }
 
 /// Points not dominated in (higher first frequency, lower mass, higher worst torque margin).
@@ -127,7 +127,7 @@ void pareto(const SweepTable& t, const fs::path& dir) {
     best.x.push_back(v[i][1]), best.y.push_back(v[i][0]);
     csv << t.rows[i][0] << strf(",%.10g,%.10g,%.6g\n", v[i][0], v[i][1], v[i][2]);
   }
-  render::writeLinePlotPng((dir / "pareto.png").string(), {all, feasible, best}, "Lowest frequency against mass (worst torque margin the third objective)",
+  figures::linePlot((dir / "pareto.png").string(), {all, feasible, best}, "Lowest frequency against mass (worst torque margin the third objective)",
                            "mass (kg)", "mode 1 (Hz)");
 }
 
@@ -146,7 +146,7 @@ void gridMap(const SweepTable& t, const fs::path& dir) {
   for (double x : av) al.push_back(strf("%.4g", x));
   for (double x : bv) bl.push_back(strf("%.4g", x));
   const double lo = m.minCoeff(), hi = m.maxCoeff();
-  render::writeHeatmapPng((dir / "mode1_map.png").string(), m, al, bl, "Mode 1 (Hz) over the grid", t.header[1], t.header[2], lo,
+  figures::heatmap((dir / "mode1_map.png").string(), m, al, bl, "Mode 1 (Hz) over the grid", t.header[1], t.header[2], lo,
                           hi > lo ? hi : lo + 1);
 }
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <type_traits>
 
-#include "renders/plot.hpp"
+#include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/core/integrators.hpp"
@@ -61,7 +61,7 @@ int runTradeCommand(const TradeArgs& args) {
       for (auto& [name, series] : by) all.push_back(series);
       all.push_back(front);
       try {
-        render::writeLinePlotPng(out->stage("trade.png"), all, "Error against cost: " + s.scene_name, "CPU time (s)",
+        figures::linePlot(out->stage("trade.png"), all, "Error against cost: " + s.scene_name, "CPU time (s)",
                                  "tip position error (m)", true, true);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());

@@ -10,6 +10,26 @@
 namespace mmv::cli_testing {
 namespace {
 
+// LD_DEBUG=files makes the dynamic loader name every object it opens, dlopen included:
+// the sanity line (Simbody) shows the check sees loads at all.
+TEST_F(Cli, CommandsWithoutImagesDoNotLoadTheImageStack) {
+  const auto loaded = [&](const std::string& args) {
+    const fs::path err = dir_ / "ld.txt";
+    std::system(("LD_DEBUG=files " + std::string(MMVLAB_BINARY) + " " + args + " >/dev/null 2>" + err.string()).c_str());
+    return slurp(err);
+  };
+  for (const std::string args : {"modes --segments 2", "check", "frf --segments 2"}) {
+    const std::string l = loaded(args);
+    EXPECT_NE(l.find("libSimTKsimbody"), std::string::npos) << args;
+    for (const char* lib : {"libopencv", "libOSMesa", "libgdal", "libmmvlab_figures"})
+      EXPECT_EQ(l.find(lib), std::string::npos) << args << " loaded " << lib;
+  }
+  const std::string l = loaded("render --size 160x120 --out " + (dir_ / "a.png").string());
+  EXPECT_NE(l.find("libmmvlab_figures.so"), std::string::npos);
+  EXPECT_NE(l.find("libopencv_core"), std::string::npos);
+  EXPECT_TRUE(isPng(dir_ / "a.png"));
+}
+
 TEST_F(Cli, CheckDefaultSceneNamesTheTorquersWorstCase) {
   const Result r = run("check");
   ASSERT_EQ(r.code, 0) << r.err;

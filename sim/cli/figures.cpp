@@ -1,0 +1,85 @@
+// The renders plugin, loaded on the first figure (sim/cli/figures.hpp).
+#include "sim/cli/figures.hpp"
+
+#include <dlfcn.h>
+#include <limits.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <mutex>
+
+#include "sim/core/errors.hpp"
+
+namespace mmv::figures {
+
+namespace {
+
+const Api& api() {
+  static const Api* table = nullptr;
+  static std::string failure;
+  static std::once_flag once;
+  std::call_once(once, [] {
+    std::vector<std::string> candidates;  // next to the executable first, then where the build put it
+    char exe[PATH_MAX];
+    const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0) {
+      exe[n] = '\0';
+      candidates.push_back((std::filesystem::path(exe).parent_path() / "libmmvlab_figures.so").string());
+    }
+#ifdef MMVLAB_FIGURES_PLUGIN
+    candidates.push_back(MMVLAB_FIGURES_PLUGIN);
+#endif
+    for (const auto& path : candidates) {
+      // Kept for the process's life. Not RTLD_DEEPBIND: the plugin would then bind
+      // libstdc++'s own std::cerr rather than the executable's (copy-relocated,
+      // initialised) one and crash on the first message; its copies of mmvlab's code
+      // are local symbols (--exclude-libs, hidden visibility) and bind to themselves.
+      void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!handle) {
+        failure += (failure.empty() ? "" : "; ") + path + " (" + ::dlerror() + ")";
+        continue;
+      }
+      using Get = const Api* (*)();
+      const auto get = reinterpret_cast<Get>(::dlsym(handle, "mmvlab_figures_api"));
+      const Api* t = get ? get() : nullptr;
+      if (!t || t->version != kApiVersion) {
+        failure += (failure.empty() ? "" : "; ") + path + " (not this version's figures plugin)";
+        continue;
+      }
+      table = t;
+      return;
+    }
+  });
+  if (!table) throw UnavailableError("figures need libmmvlab_figures.so (OpenCV, OSMesa): tried " + failure);
+  return *table;
+}
+
+}  // namespace
+
+void linePlot(const std::string& path, const std::vector<render::Series>& series, const std::string& title,
+              const std::string& x_label, const std::string& y_label, bool log_y, bool log_x) {
+  api().line_plot(path, series, title, x_label, y_label, log_y, log_x);
+}
+
+void heatmap(const std::string& path, const Eigen::MatrixXd& values, const std::vector<std::string>& row_labels,
+             const std::vector<std::string>& col_labels, const std::string& title, const std::string& row_axis,
+             const std::string& col_axis, double vmin, double vmax) {
+  api().heatmap(path, values, row_labels, col_labels, title, row_axis, col_axis, vmin, vmax);
+}
+
+void bode(const std::string& path, const std::vector<render::BodeTrace>& traces, const std::string& title, const std::string& x_label) {
+  api().bode(path, traces, title, x_label);
+}
+
+void framePng(const std::string& path, const DrawList& list, const Camera& camera, const FrameSize& size) {
+  api().frame_png(path, list, camera, size);
+}
+
+void contactSheetPng(const std::string& path, const std::vector<DrawList>& lists, const std::vector<Camera>& cameras,
+                     const FrameSize& size, int columns) {
+  api().contact_sheet_png(path, lists, cameras, size, columns);
+}
+
+int renderCommand(const cli::RenderArgs& args) { return api().render_command(args); }
+
+}  // namespace mmv::figures
