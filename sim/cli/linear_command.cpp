@@ -132,7 +132,7 @@ int runFrfCommand(const LinearArgs& args) {
     const ReducedModel red = reduce(args, lm.full);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
-    const ModelError err = compareResponses(lm.full, red.model, w);
+    const ModelError err = compareResponses(lm.second_order, red.model, w);
     if (out) {
       const StateSpace& s = lm.full;
       std::vector<Eigen::MatrixXcd> hf, hr;
@@ -187,7 +187,7 @@ int runRomCommand(const LinearArgs& args) {
     const ReducedModel red = reduce(args, lm.full);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
-    const ModelError err = compareResponses(lm.full, red.model, w);
+    const ModelError err = compareResponses(lm.second_order, red.model, w);
     try {
       writeStateSpaceMat(out.stage("rom.mat"), red.model);
       writeStateSpaceMat(out.stage("full.mat"), lm.full);

@@ -173,6 +173,7 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   so.C = lm.Cz;
   so.K = lm.Kz;
   so.Bq = lm.Bq;
+  so.prepare();
   lm.full = secondOrderModel(lm.Mz, lm.Cz, lm.Kz, lm.Bq, so.Cd, so.Cv, so.Ca, so.D);
   nameSignals(model, lin, inputs, outputs, lm.full);
   return lm;

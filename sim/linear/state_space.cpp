@@ -59,14 +59,46 @@ StateSpace secondOrderModel(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, 
   return ss;
 }
 
+void SecondOrderResponse::prepare() {
+  modal_ = false;
+  const Eigen::Index n = K.rows();
+  if (n == 0) return;
+  const double scale = K.cwiseAbs().maxCoeff();
+  if (!((K - K.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || !((C - C.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * std::max(C.cwiseAbs().maxCoeff(), 1e-300)))
+    return;
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
+  if (es.info() != Eigen::Success) return;
+  const Eigen::MatrixXd& phi = es.eigenvectors();
+  const Eigen::MatrixXd cm = phi.transpose() * C * phi;
+  const Eigen::VectorXd diag = cm.diagonal();
+  const double off = (cm - Eigen::MatrixXd(diag.asDiagonal())).cwiseAbs().maxCoeff();
+  if (!(off <= 1e-10 * std::max(diag.cwiseAbs().maxCoeff(), 1e-300)) && C.cwiseAbs().maxCoeff() > 0) return;
+  w2_ = es.eigenvalues();
+  c_ = diag;
+  P_ = phi.transpose() * Bq;
+  const auto times = [&](const Eigen::MatrixXd& o) { return o.size() ? Eigen::MatrixXd(o * phi) : Eigen::MatrixXd::Zero(D.rows(), n); };
+  Od_ = times(Cd), Ov_ = times(Cv), Oa_ = times(Ca);
+  modal_ = true;
+}
+
 Eigen::MatrixXcd SecondOrderResponse::response(double w) const {
+  if (modal_) {
+    Eigen::VectorXcd g(w2_.size());
+    for (Eigen::Index k = 0; k < g.size(); ++k) g[k] = 1.0 / cd(w2_[k] - w * w, w * c_[k]);
+    const Eigen::MatrixXcd O = Od_.cast<cd>() + cd(0, w) * Ov_.cast<cd>() - w * w * Oa_.cast<cd>();
+    return O * g.asDiagonal() * P_.cast<cd>() + D.cast<cd>();
+  }
   const Eigen::MatrixXcd dyn = K.cast<cd>() - w * w * M.cast<cd>() + cd(0, w) * C.cast<cd>();
   const Eigen::MatrixXcd q = dyn.partialPivLu().solve(Bq.cast<cd>());  // per unit input
   return Cd.cast<cd>() * q + cd(0, w) * Cv.cast<cd>() * q - w * w * Ca.cast<cd>() * q + D.cast<cd>();
 }
 
-ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std::vector<double>& omegas) {
-  const Eigen::Index no = a.C.rows(), ni = a.B.cols();
+namespace {
+
+/// Largest |a - b| over the frequencies, relative to the peak of |a|, per pair.
+template <class Full>
+ModelError compareWith(const Full& a, const StateSpace& b, const std::vector<double>& omegas) {
+  const Eigen::Index no = b.C.rows(), ni = b.B.cols();
   Eigen::MatrixXd diff = Eigen::MatrixXd::Zero(no, ni), peak = Eigen::MatrixXd::Zero(no, ni);
   for (double w : omegas) {
     const Eigen::MatrixXcd ha = a.response(w), hb = b.response(w);
@@ -80,6 +112,16 @@ ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std:
   e.relative = diff.cwiseQuotient(peak.cwiseMax(std::max(floor, 1e-300)));
   e.max_relative = e.relative.size() ? e.relative.maxCoeff() : 0.0;
   return e;
+}
+
+}  // namespace
+
+ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std::vector<double>& omegas) {
+  return compareWith(a, b, omegas);
+}
+
+ModelError compareResponses(const SecondOrderResponse& a, const StateSpace& b, const std::vector<double>& omegas) {
+  return compareWith(a, b, omegas);
 }
 
 Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double c) {

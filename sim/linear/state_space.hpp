@@ -71,10 +71,23 @@ StateSpace secondOrderModel(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, 
                             const Eigen::MatrixXd& Ca, const Eigen::MatrixXd& Dextra);
 
 /// The same response evaluated in second-order form, (K - w^2 M + i w C)^-1, for the
-/// full model: n x n instead of 2n x 2n solves.
+/// full model: n x n instead of 2n x 2n solves. After prepare(), when the damping is
+/// proportional (the real modes Phi of K and M, Phi^T M Phi = I, also diagonalise C to
+/// 1e-10: modal and Rayleigh damping), each response is a sum over the modes,
+///     H(w) = (Cd + i w Cv - w^2 Ca) Phi diag(1 / (w_k^2 - w^2 + i w c_k)) Phi^T Bq + D,
+/// O(n) per input-output pair instead of an n x n LU; otherwise (the hinge dampers
+/// under gravity's geometric stiffness are not proportional) the LU is kept.
 struct SecondOrderResponse {
   Eigen::MatrixXd M, C, K, Bq, Cd, Cv, Ca, D;
   Eigen::MatrixXcd response(double omega) const;
+  /// Decides the modal path once (one symmetric eigen solution); call after filling.
+  void prepare();
+  bool modal() const { return modal_; }
+
+ private:
+  bool modal_ = false;
+  Eigen::VectorXd w2_, c_;                   ///< per mode: omega_k^2, Phi^T C Phi diagonal.
+  Eigen::MatrixXd P_, Od_, Ov_, Oa_;         ///< Phi^T Bq; Cd Phi, Cv Phi, Ca Phi.
 };
 
 /// A solved scene with its linear model.
@@ -131,6 +144,8 @@ struct ModelError {
   double max_relative = 0;
 };
 ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std::vector<double>& omegas);
+/// The same with the full model in second-order form (the reduced one, b, in first order).
+ModelError compareResponses(const SecondOrderResponse& a, const StateSpace& b, const std::vector<double>& omegas);
 
 /// The HAM-SAS authors' cross-check (docs/sources.md section 3): eigenvalues of an implicit integrator's Jacobian
 /// J(c) = E - c A (F = E y' - A y, dCoef = c) from the pencil J(-c) v = Lambda J(c) v,

@@ -30,15 +30,20 @@ TEST(StateSpace, OneDofFrfMatchesTheFormula) {
   Cv << 0, 1, 0;
   Ca << 0, 0, 1;
   const StateSpace ss = secondOrderModel(M, C, K, B, Cd, Cv, Ca, MatrixXd());
-  const SecondOrderResponse so{M, C, K, B, Cd, Cv, Ca, MatrixXd::Zero(3, 1)};
+  SecondOrderResponse so, modal;
+  so.M = M, so.C = C, so.K = K, so.Bq = B, so.Cd = Cd, so.Cv = Cv, so.Ca = Ca, so.D = MatrixXd::Zero(3, 1);
+  modal = so;
+  modal.prepare();  // one DOF: any damping is proportional
+  EXPECT_TRUE(modal.modal());
   for (double f : logFrequencies(0.01, 100, 57)) {
     const double w = 2 * M_PI * f;
     const cd x = 1.0 / cd(k - w * w * m, w * c);
     const cd expect[3] = {x, cd(0, w) * x, -w * w * x};
-    const Eigen::MatrixXcd h1 = ss.response(w), h2 = so.response(w);
+    const Eigen::MatrixXcd h1 = ss.response(w), h2 = so.response(w), h3 = modal.response(w);
     for (int r = 0; r < 3; ++r) {
       EXPECT_LT(std::abs(h1(r, 0) - expect[r]), 1e-12 * std::abs(expect[r])) << f << " " << r;
       EXPECT_LT(std::abs(h2(r, 0) - expect[r]), 1e-12 * std::abs(expect[r])) << f << " " << r;
+      EXPECT_LT(std::abs(h3(r, 0) - expect[r]), 1e-12 * std::abs(expect[r])) << f << " " << r;
     }
   }
 }
@@ -167,6 +172,46 @@ TEST(StateSpace, BadSpecsAreNamed) {
                SceneError);
   EXPECT_THROW(buildLinearModel(s, defaultInputs(), {{"y", OutputKind::Displacement, "link1.tip", 0, true}}, d),
                SceneError);
+}
+
+}  // namespace
+}  // namespace mmv
+
+namespace mmv {
+namespace {
+
+/// Largest |a - b| over 0.05-100 Hz, relative to the largest |a| of each pair.
+double secondVsFirstOrder(const LinearModel& lm) {
+  double worst = 0;
+  Eigen::MatrixXd peak = Eigen::MatrixXd::Zero(lm.full.C.rows(), lm.full.B.cols()), diff = peak;
+  for (double f : logFrequencies(0.05, 100, 200)) {
+    const Eigen::MatrixXcd a = lm.full.response(2 * M_PI * f), b = lm.second_order.response(2 * M_PI * f);
+    peak = peak.cwiseMax(a.cwiseAbs());
+    diff = diff.cwiseMax((a - b).cwiseAbs());
+  }
+  for (Eigen::Index i = 0; i < peak.size(); ++i) worst = std::max(worst, diff(i) / std::max(peak(i), 1e-300));
+  return worst;
+}
+
+TEST(StateSpace, SecondOrderAndModalResponsesEqualTheFirstOrderOnes) {
+  ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-table.yaml");
+  overrideSegments(s, 6);
+  // The scene's hinge dampers under gravity's geometric stiffness: not proportional, the LU path.
+  const LinearModel hinge = buildLinearModel(s, defaultInputs(), defaultOutputs(s), *s.damping);
+  EXPECT_FALSE(hinge.second_order.modal());
+  EXPECT_LT(secondVsFirstOrder(hinge), 1e-9);
+  // Modal and Rayleigh damping: the real modes diagonalise C, the modal path.
+  DampingSpec modal;
+  modal.modal_ratio = 0.02;
+  const LinearModel m = buildLinearModel(s, defaultInputs(), defaultOutputs(s), modal);
+  EXPECT_TRUE(m.second_order.modal());
+  EXPECT_LT(secondVsFirstOrder(m), 1e-9);
+  DampingSpec rayleigh;
+  rayleigh.kind = DampingSpec::Kind::Rayleigh;
+  rayleigh.alpha = 0.05, rayleigh.beta = 1e-4;
+  const LinearModel r = buildLinearModel(s, defaultInputs(), defaultOutputs(s), rayleigh);
+  EXPECT_TRUE(r.second_order.modal());
+  EXPECT_LT(secondVsFirstOrder(r), 1e-9);
 }
 
 }  // namespace
