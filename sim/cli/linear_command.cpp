@@ -112,6 +112,14 @@ namespace {
 
 ReducedModel reduce(const LinearArgs& args, const StateSpace& full) { return reduceModal(full, reductionOptions(args)); }
 
+/// Where the state-modal responses are checked against the LU before they are used:
+/// the grid's ends and three points between.
+std::vector<double> checkOmegas(const std::vector<double>& w) {
+  std::vector<double> c;
+  for (int k = 0; k < 5; ++k) c.push_back(w[(w.size() - 1) * k / 4]);
+  return c;
+}
+
 std::vector<double> frequencies(const LinearArgs& a) {
   if (!(a.f_min > 0) || !(a.f_max > a.f_min)) throw UsageError("--from/--to: need 0 < FROM < TO (Hz)");
   return logFrequencies(a.f_min, a.f_max, a.points);
@@ -128,10 +136,11 @@ int runFrfCommand(const LinearArgs& args) {
     if (!args.vary.empty()) throw UsageError("--vary applies to HAM-SAS scenes only");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const LinearModel lm = build(args, scene);
+    LinearModel lm = build(args, scene);
     const ReducedModel red = reduce(args, lm.full);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
+    lm.second_order.adoptStateModes(red.full_modes, checkOmegas(w));
     const ModelError err = compareResponses(lm.second_order, red.model, w);
     if (out) {
       const StateSpace& s = lm.full;
@@ -183,10 +192,11 @@ int runRomCommand(const LinearArgs& args) {
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h, f);
     const ArticleScene& scene = std::get<ArticleScene>(loaded);
     OutputDir out(args.out, args.force);
-    const LinearModel lm = build(args, scene);
+    LinearModel lm = build(args, scene);
     const ReducedModel red = reduce(args, lm.full);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
+    lm.second_order.adoptStateModes(red.full_modes, checkOmegas(w));
     const ModelError err = compareResponses(lm.second_order, red.model, w);
     try {
       writeStateSpaceMat(out.stage("rom.mat"), red.model);

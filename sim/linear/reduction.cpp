@@ -22,7 +22,7 @@ struct ModeRef {
 };
 
 /// The eigen solution of E^-1 A with its left eigenvectors.
-struct StateModes {
+struct StateEigen {
   Eigen::MatrixXd At, Bt;  ///< E^-1 A, E^-1 B.
   Eigen::VectorXcd lambda;
   Eigen::MatrixXcd V, W;   ///< right (columns), left (rows), W V = I.
@@ -30,8 +30,8 @@ struct StateModes {
   Eigen::MatrixXd pair_max;  ///< the largest modal residue of each output-input pair.
 };
 
-StateModes stateModes(const StateSpace& full) {
-  StateModes sm;
+StateEigen stateModes(const StateSpace& full) {
+  StateEigen sm;
   const Eigen::PartialPivLU<Eigen::MatrixXd> Elu(full.E);
   sm.At = Elu.solve(full.A);
   sm.Bt = Elu.solve(full.B);
@@ -54,7 +54,7 @@ StateModes stateModes(const StateSpace& full) {
 }
 
 /// Drops the modes no pair sees; returns how many.
-int dropUnseen(StateModes& sm) {
+int dropUnseen(StateEigen& sm) {
   if (!sm.pair_max.size()) return 0;
   // A mode is seen when some pair gets at least 1e-9 of that pair's largest modal
   // contribution (pairs that are zero by symmetry are measured against 1e-12 of the
@@ -94,7 +94,7 @@ std::vector<ModeRef> selectModes(const std::vector<ModeRef>& modes, const Reduct
 }
 
 /// The reduced model on the real and imaginary parts of the kept modes.
-StateSpace project(const StateSpace& full, const StateModes& sm, const std::vector<ModeRef>& kept) {
+StateSpace project(const StateSpace& full, const StateEigen& sm, const std::vector<ModeRef>& kept) {
   std::vector<Eigen::VectorXd> right, left;
   for (const auto& m : kept) {
     right.push_back(sm.V.col(m.index).real());
@@ -142,7 +142,7 @@ void residualize(const StateSpace& full, StateSpace& r) {
 }  // namespace
 
 ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
-  StateModes sm = stateModes(full);
+  StateEigen sm = stateModes(full);
   const int unseen = o.drop_unseen ? dropUnseen(sm) : 0;
   std::stable_sort(sm.modes.begin(), sm.modes.end(),
                    [](const ModeRef& a, const ModeRef& b) { return a.magnitude < b.magnitude; });
@@ -153,6 +153,7 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
   red.discarded_modes = static_cast<int>(sm.modes.size() - kept.size()) + unseen;
   red.unseen_modes = unseen;
   for (const auto& m : kept) red.kept_frequencies_hz.push_back(m.magnitude / (2 * M_PI));
+  red.full_modes = {sm.lambda, sm.V, sm.W};
   if (o.residualize && red.discarded_modes > 0) {
     residualize(full, red.model);
     red.residualized = true;

@@ -81,7 +81,36 @@ void SecondOrderResponse::prepare() {
   modal_ = true;
 }
 
+bool SecondOrderResponse::adoptStateModes(const StateModes& sm, const std::vector<double>& check_omegas) {
+  const Eigen::Index n = K.rows();
+  if (modal_ || n == 0 || sm.V.rows() != 2 * n) return false;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> mlu(M);
+  const Eigen::MatrixXcd Minv = mlu.inverse().cast<cd>();
+  SecondOrderResponse trial = *this;
+  trial.lambda_ = sm.lambda;
+  trial.Vq_ = sm.V.topRows(n);
+  trial.Wv_ = sm.W.rightCols(n) * Minv;
+  trial.WB_ = trial.Wv_ * Bq.cast<cd>();
+  trial.state_modal_ = true;
+  for (double w : check_omegas) {
+    const Eigen::MatrixXcd direct = response(w), modal = trial.response(w);
+    const double scale = std::max(direct.cwiseAbs().maxCoeff(), 1e-300);
+    if (!((direct - modal).cwiseAbs().maxCoeff() <= 1e-10 * scale)) return false;
+  }
+  *this = std::move(trial);
+  return true;
+}
+
 Eigen::MatrixXcd SecondOrderResponse::response(double w) const {
+  if (state_modal_) {
+    Eigen::VectorXcd g(lambda_.size());
+    for (Eigen::Index k = 0; k < g.size(); ++k) g[k] = 1.0 / (cd(0, w) - lambda_[k]);
+    Eigen::MatrixXcd q = Vq_ * (g.asDiagonal() * WB_);
+    const Eigen::MatrixXcd dyn = K.cast<cd>() - w * w * M.cast<cd>() + cd(0, w) * C.cast<cd>();
+    const Eigen::MatrixXcd r = Bq.cast<cd>() - dyn * q;
+    q += Vq_ * (g.asDiagonal() * (Wv_ * r));
+    return Cd.cast<cd>() * q + cd(0, w) * Cv.cast<cd>() * q - w * w * Ca.cast<cd>() * q + D.cast<cd>();
+  }
   if (modal_) {
     Eigen::VectorXcd g(w2_.size());
     for (Eigen::Index k = 0; k < g.size(); ++k) g[k] = 1.0 / cd(w2_[k] - w * w, w * c_[k]);

@@ -77,15 +77,32 @@ StateSpace secondOrderModel(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, 
 ///     H(w) = (Cd + i w Cv - w^2 Ca) Phi diag(1 / (w_k^2 - w^2 + i w c_k)) Phi^T Bq + D,
 /// O(n) per input-output pair instead of an n x n LU; otherwise (the hinge dampers
 /// under gravity's geometric stiffness are not proportional) the LU is kept.
+/// The state modes of a first-order model from its modal reduction: eigenvalues, right
+/// eigenvectors V (columns) and left W = V^-1 of E^-1 A.
+struct StateModes {
+  Eigen::VectorXcd lambda;
+  Eigen::MatrixXcd V, W;
+};
+
 struct SecondOrderResponse {
   Eigen::MatrixXd M, C, K, Bq, Cd, Cv, Ca, D;
   Eigen::MatrixXcd response(double omega) const;
   /// Decides the modal path once (one symmetric eigen solution); call after filling.
   void prepare();
   bool modal() const { return modal_; }
+  /// Any damping: answers through the first-order model's state modes from then on,
+  ///     q = V_q diag(1 / (i w - lambda)) W [0; M^-1 f]   for a force f,
+  /// refined once on the second-order residual f - (K - w^2 M + i w C) q, if that
+  /// reproduces the LU's responses to 1e-10 of each response's largest entry at
+  /// `check_omegas` (an ill-conditioned eigenvector basis keeps the LU). O(n N) per
+  /// frequency instead of O(n^3). Returns whether it switched.
+  bool adoptStateModes(const StateModes& modes, const std::vector<double>& check_omegas);
+  bool stateModal() const { return state_modal_; }
 
  private:
-  bool modal_ = false;
+  bool modal_ = false, state_modal_ = false;
+  Eigen::VectorXcd lambda_;
+  Eigen::MatrixXcd Vq_, Wv_, WB_;  ///< V's q rows; W's q' columns times M^-1; Wv_ Bq.
   Eigen::VectorXd w2_, c_;                   ///< per mode: omega_k^2, Phi^T C Phi diagonal.
   Eigen::MatrixXd P_, Od_, Ov_, Oa_;         ///< Phi^T Bq; Cd Phi, Cv Phi, Ca Phi.
 };
@@ -127,6 +144,7 @@ struct ReducedModel {
   int unseen_modes = 0;  ///< of the discarded, those no input-output pair sees (drop_unseen).
   bool residualized = false;
   std::vector<double> kept_frequencies_hz;
+  StateModes full_modes;  ///< of the full model (SecondOrderResponse::adoptStateModes).
 };
 
 /// Modal reduction of a first-order model (the HAM-SAS authors' method, docs/sources.md section 3): right and left

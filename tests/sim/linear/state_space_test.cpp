@@ -200,6 +200,15 @@ TEST(StateSpace, SecondOrderAndModalResponsesEqualTheFirstOrderOnes) {
   const LinearModel hinge = buildLinearModel(s, defaultInputs(), defaultOutputs(s), *s.damping);
   EXPECT_FALSE(hinge.second_order.modal());
   EXPECT_LT(secondVsFirstOrder(hinge.full, hinge.second_order), 1e-9);
+  // The same through the first-order model's state modes from its reduction, refined once.
+  SecondOrderResponse via_modes = hinge.second_order;
+  ReductionOptions ro;
+  ro.modes = 4;
+  std::vector<double> check;
+  for (double f : {0.05, 1.0, 100.0}) check.push_back(2 * M_PI * f);
+  ASSERT_TRUE(via_modes.adoptStateModes(reduceModal(hinge.full, ro).full_modes, check));
+  EXPECT_TRUE(via_modes.stateModal());
+  EXPECT_LT(secondVsFirstOrder(hinge.full, via_modes), 1e-9);
   // Modal and Rayleigh damping: the real modes diagonalise C, the modal path.
   DampingSpec modal;
   modal.modal_ratio = 0.02;
