@@ -103,12 +103,24 @@ bool SecondOrderResponse::adoptStateModes(const StateModes& sm, const std::vecto
 
 Eigen::MatrixXcd SecondOrderResponse::response(double w) const {
   if (state_modal_) {
+    // Column by column (matrix-vector products: no packing of the large factors for
+    // a few inputs), the real matrices applied to real and imaginary parts apart.
+    const Eigen::Index n = K.rows();
     Eigen::VectorXcd g(lambda_.size());
     for (Eigen::Index k = 0; k < g.size(); ++k) g[k] = 1.0 / (cd(0, w) - lambda_[k]);
-    Eigen::MatrixXcd q = Vq_ * (g.asDiagonal() * WB_);
-    const Eigen::MatrixXcd dyn = K.cast<cd>() - w * w * M.cast<cd>() + cd(0, w) * C.cast<cd>();
-    const Eigen::MatrixXcd r = Bq.cast<cd>() - dyn * q;
-    q += Vq_ * (g.asDiagonal() * (Wv_ * r));
+    const auto real = [](const Eigen::MatrixXd& A, const Eigen::VectorXcd& x) {
+      Eigen::VectorXcd y(A.rows());
+      y.real() = A * x.real();
+      y.imag() = A * x.imag();
+      return y;
+    };
+    Eigen::MatrixXcd q(n, Bq.cols());
+    for (Eigen::Index j = 0; j < Bq.cols(); ++j) {
+      Eigen::VectorXcd qj = Vq_ * g.cwiseProduct(WB_.col(j));
+      const Eigen::VectorXcd r = Bq.col(j).cast<cd>() - real(K, qj) + w * w * real(M, qj) - cd(0, w) * real(C, qj);
+      qj += Vq_ * g.cwiseProduct(Wv_ * r);
+      q.col(j) = qj;
+    }
     return Cd.cast<cd>() * q + cd(0, w) * Cv.cast<cd>() * q - w * w * Ca.cast<cd>() * q + D.cast<cd>();
   }
   if (modal_) {
