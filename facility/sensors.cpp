@@ -42,6 +42,10 @@ double Biquad::step(double x) {
   return y;
 }
 
+SensorSpec sensorSpecFor(const std::string& type) {
+  return type == "encoder" ? encoderSpec() : type == "rate_gyro" ? rateGyroSpec() : accelerometerSpec();
+}
+
 double Biquad::prime(double x) {
   // The DC gain: (b0 + b1 + b2) / (1 + a1 + a2), 1 for a low-pass, 0 for a high-pass.
   const double y = (b0_ + b1_ + b2_) / (1.0 + a1_ + a2_) * x;

@@ -40,6 +40,9 @@ SensorSpec rateGyroSpec();
 /// Accelerometer: 0.001 g resolution, +-5 g range, 0.1-50 Hz band.
 SensorSpec accelerometerSpec();
 
+/// The spec of a sensor type: "encoder", "rate_gyro", else the accelerometer's.
+SensorSpec sensorSpecFor(const std::string& type);
+
 /// A second-order Butterworth section, low- or high-pass, at sample rate fs.
 class Biquad {
  public:

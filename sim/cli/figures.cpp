@@ -2,13 +2,10 @@
 #include "sim/cli/figures.hpp"
 
 #include <dlfcn.h>
-#include <limits.h>
-#include <unistd.h>
-
-#include <filesystem>
 #include <mutex>
 
 #include "sim/core/errors.hpp"
+#include "sim/core/plugins.hpp"
 
 namespace mmv::figures {
 
@@ -19,15 +16,10 @@ const Api& api() {
   static std::string failure;
   static std::once_flag once;
   std::call_once(once, [] {
-    std::vector<std::string> candidates;  // next to the executable first, then where the build put it
-    char exe[PATH_MAX];
-    const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n > 0) {
-      exe[n] = '\0';
-      candidates.push_back((std::filesystem::path(exe).parent_path() / "libmmvlab_figures.so").string());
-    }
 #ifdef MMVLAB_FIGURES_PLUGIN
-    candidates.push_back(MMVLAB_FIGURES_PLUGIN);
+    const std::vector<std::string> candidates = pluginCandidates("libmmvlab_figures.so", MMVLAB_FIGURES_PLUGIN);
+#else
+    const std::vector<std::string> candidates = pluginCandidates("libmmvlab_figures.so", "");
 #endif
     for (const auto& path : candidates) {
       // Kept for the process's life. Not RTLD_DEEPBIND: the plugin would then bind

@@ -2,6 +2,7 @@
 #include "sim/io/sweep_points.hpp"
 
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "sim/core/text.hpp"
@@ -83,6 +84,7 @@ PointResult analyse(const SweepContext& c, const ArticleScene& scene) {
 
 void appendOutputs(const SweepContext& c, const PointResult* r, std::vector<std::string>& cells) {
   const SweepSpec& s = c.spec;
+  std::optional<nlohmann::ordered_json> modes_json, check_json;  // written once per point, only when asked for
   for (const auto& o : s.outputs) {
     if (o == "frequencies") {
       const int k = static_cast<int>(c.reference_shapes.cols());
@@ -130,9 +132,11 @@ void appendOutputs(const SweepContext& c, const PointResult* r, std::vector<std:
           }
       cells.push_back(f);
     } else if (o.rfind("json:modes/", 0) == 0) {
-      cells.push_back(r ? jsonCell(modesToJson(r->modes), o.substr(10)) : "");
+      if (r && !modes_json) modes_json = modesToJson(r->modes);
+      cells.push_back(r ? jsonCell(*modes_json, o.substr(10)) : "");
     } else {
-      cells.push_back(r ? jsonCell(checkJson(r->check), o.substr(10)) : "");
+      if (r && !check_json) check_json = checkJson(r->check);
+      cells.push_back(r ? jsonCell(*check_json, o.substr(10)) : "");
     }
   }
 }

@@ -17,9 +17,7 @@ constexpr double kRadToDeg = 180 / M_PI;
 constexpr double kMinRatioDb = 20;
 constexpr double kEdge = 0.98;  ///< a peak within 2 % of the range is at its edge.  ///< below: fewer than 10 counts of resolution in the peak.
 
-facility::SensorSpec specOf(const SensorSceneSpec& s) {
-  return s.type == "encoder" ? facility::encoderSpec() : s.type == "rate_gyro" ? facility::rateGyroSpec() : facility::accelerometerSpec();
-}
+facility::SensorSpec specOf(const SensorSceneSpec& s) { return facility::sensorSpecFor(s.type); }
 
 /// Display scale and unit: angles in deg, rates in deg/s, accelerations in m/s^2.
 std::pair<double, std::string> displayUnit(const std::string& type) {

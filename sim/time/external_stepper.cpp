@@ -7,21 +7,16 @@
 #include <filesystem>
 
 #include "sim/core/errors.hpp"
+#include "sim/core/plugins.hpp"
 
 namespace mmv {
 
 std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
                                                      double rtol, double atol) {
-  // Next to the executable first, then where the build put it.
-  std::vector<std::string> candidates;
-  char exe[PATH_MAX];
-  const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
-  if (n > 0) {
-    exe[n] = '\0';
-    candidates.push_back((std::filesystem::path(exe).parent_path() / "libmmvlab_sundials.so").string());
-  }
 #ifdef MMVLAB_SUNDIALS_PLUGIN
-  candidates.push_back(MMVLAB_SUNDIALS_PLUGIN);
+  const std::vector<std::string> candidates = pluginCandidates("libmmvlab_sundials.so", MMVLAB_SUNDIALS_PLUGIN);
+#else
+  const std::vector<std::string> candidates = pluginCandidates("libmmvlab_sundials.so", "");
 #endif
   std::string tried;
   for (const auto& path : candidates) {

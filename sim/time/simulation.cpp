@@ -136,9 +136,7 @@ void ArticleRecorder::addTipColumns(const ArticleScene& scene) {
 void ArticleRecorder::addSensors(const ArticleScene& scene) {
   const SimulationSpec& spec = scene.simulation;
   for (const auto& ss : scene.sensors) {
-    facility::SensorSpec fs = ss.type == "encoder"     ? facility::encoderSpec()
-                              : ss.type == "rate_gyro" ? facility::rateGyroSpec()
-                                                       : facility::accelerometerSpec();
+    facility::SensorSpec fs = facility::sensorSpecFor(ss.type);
     fs.noise_sigma = ss.noise_sigma;
     fs.seed = ss.seed;
     if (std::max(fs.high_cut_hz, fs.low_cut_hz) >= 0.5 * spec.sample_rate_hz)

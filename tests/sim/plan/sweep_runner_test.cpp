@@ -11,18 +11,14 @@
 #include <sstream>
 
 #include "sim/core/errors.hpp"
+#include "support/cli.hpp"
 
 namespace mmv {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
+using cli_testing::slurp;
 
 class SweepRunner : public ::testing::Test {
  protected:

@@ -78,6 +78,8 @@ TEST(SweepSpec, BadSpecsNameTheirPosition) {
   refused("parameters:\n  - {key: links.link1.length, values: []}\n" + tail, "must be a non-empty list");
   refused("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [masss]\n", "unknown output 'masss'");
   refused("parameters: []\n" + tail, "parameters must be a non-empty list");
+  refused("parameters:\n  - {key: a, range: {from: 1, to: 2, samples: 1001}}\n  - {key: b, range: {from: 1, to: 2, samples: 1000}}\n" + tail,
+          "the grid has 1.001e+06 points, above the limit of 1000000");
   refused("parameters:\n  - {key: a, values: [1]}\ndesign: {type: latin_hypercube, samples: 0}\n" + tail, "design.samples must be 1 to");
   EXPECT_NE(errorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n")
                 .find("spec.yaml:5:11: output 'json:modes/modes/0/no_such_field': the nominal scene's JSON has no such field"),
