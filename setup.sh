@@ -10,7 +10,7 @@ build_pkgs=(
   build-essential cmake pkg-config
   libsimbody-dev libeigen3-dev libsundials-dev
   libopencv-dev libosmesa6-dev libgl-dev
-  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev libspectra-dev
   libgtest-dev googletest libbenchmark-dev
   octave octave-control          # the test suite loads our .mat files into Octave's ss()
 )

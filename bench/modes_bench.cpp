@@ -56,7 +56,28 @@ void BM_ModesPipeline(benchmark::State& st) {
   const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
   for (auto _ : st) benchmark::DoNotOptimize(mmv::solveSceneModes(s));
 }
-BENCHMARK(BM_ModesPipeline)->Apply(segmentArgs);
+BENCHMARK(BM_ModesPipeline)->Apply(segmentArgs)->Arg(128);
+
+// What `mmvlab modes` (12 modes reported) and `converge` solve on fine meshes: the
+// lowest 12 modes only (shift-invert Lanczos from 96 DOF on, modal.hpp).
+void fineArgs(benchmark::internal::Benchmark* b) {
+  for (int n : {16, 32, 64, 128, 256}) b->Arg(n);
+  b->Unit(benchmark::kMillisecond);
+}
+
+void BM_EigenFirst12(benchmark::State& st) {
+  const auto model = mmv::buildArticleModel(sceneWith(static_cast<int>(st.range(0))));
+  const mmv::EquilibriumResult eq = mmv::solveEquilibrium(*model);
+  const mmv::LinearizedModel lin = mmv::linearize(*model, eq.state);
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::solveModes(lin.M, lin.K, 12));
+}
+BENCHMARK(BM_EigenFirst12)->Apply(fineArgs);
+
+void BM_ModesPipelineFirst12(benchmark::State& st) {
+  const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::solveSceneModes(s, {}, 12));
+}
+BENCHMARK(BM_ModesPipelineFirst12)->Apply(fineArgs);
 
 }  // namespace
 

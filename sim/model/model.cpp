@@ -221,6 +221,27 @@ Eigen::MatrixXd Model::calcFrameJacobians(const SimTK::State& s,
   return out;
 }
 
+Eigen::VectorXd Model::calcFrameVelocities(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
+                                           const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols,
+                                           const Eigen::VectorXd& rates) const {
+  MMV_DEMAND(bodies.size() == stations.size() && rates.size() == static_cast<Eigen::Index>(cols.size()));
+  SimTK::Vector u(s.getNU(), 0.0);
+  for (std::size_t j = 0; j < cols.size(); ++j) u[uindex_[cols[j]]] = rates[static_cast<Eigen::Index>(j)];
+  SimTK::Vector_<SimTK::SpatialVec> V;  // per mobilized body: (w, v of its origin), world frame
+  matter_.multiplyBySystemJacobian(s, u, V);
+  Eigen::VectorXd out(6 * bodies.size());
+  for (std::size_t t = 0; t < bodies.size(); ++t) {
+    const SimTK::SpatialVec& Vb = V[bodies[t]];
+    const SimTK::Vec3 r = matter_.getMobilizedBody(bodies[t]).getBodyRotation(s) * stations[t];
+    const SimTK::Vec3 v = Vb[1] + Vb[0] % r;
+    for (int k = 0; k < 3; ++k) {
+      out[6 * t + k] = Vb[0][k];
+      out[6 * t + 3 + k] = v[k];
+    }
+  }
+  return out;
+}
+
 SimTK::Vec3 Model::findPointLocation(const SimTK::State& s, const NamedPoint& p) const {
   return matter_.getMobilizedBody(p.mobod).findStationLocationInGround(s, p.station_B);
 }

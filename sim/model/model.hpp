@@ -194,6 +194,11 @@ class Model {
   /// coordinate rate), rows 6t+3..6t+5 the station's linear velocity (m/s), world frame.
   Eigen::MatrixXd calcFrameJacobians(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
                                      const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols) const;
+  /// calcFrameJacobians(s, bodies, stations, cols) * rates, without the Jacobian: one
+  /// O(bodies) pass for rates over `cols` (what a mode shape moves), same row layout.
+  Eigen::VectorXd calcFrameVelocities(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
+                                      const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols,
+                                      const Eigen::VectorXd& rates) const;
 
   /// Scales gravity in state `s` (1 = the scene's g): for load continuation.
   void setGravityScale(SimTK::State& s, double scale) const;

@@ -15,7 +15,7 @@ ConvergenceStudy runConvergence(const ArticleScene& scene, int max_segments, int
     ArticleScene s = scene;
     overrideSegments(s, n);
     const auto t0 = std::chrono::steady_clock::now();
-    const ModesSolve sol = solveSceneModes(s);
+    const ModesSolve sol = solveSceneModes(s, {}, num_modes);
     ConvergenceRun run;
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.segments = n;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "sim/core/errors.hpp"
@@ -59,20 +60,14 @@ void refineLowestModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, Modal
 
 }  // namespace
 
-ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
+namespace {
+
+/// All modes by the dense solver, balanced first: with D = diag(M)^(-1/2), solve
+/// (D K D) psi = w^2 (D M D) psi and phi = D psi. The scaled mass matrix has a unit
+/// diagonal, which keeps the Cholesky factor well conditioned when heavy torquers sit
+/// next to gram-scale rods.
+ModalSolution solveAllModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   const Eigen::Index n = M.rows();
-  MMV_DEMAND(M.cols() == n && K.rows() == n && K.cols() == n);
-  if (!M.allFinite() || !K.allFinite()) throw NumericalError("mass or stiffness matrix has non-finite entries");
-  ModalSolution sol;
-  if (n == 0) return sol;
-  // Balance first: with D = diag(M)^(-1/2), solve (D K D) psi = w^2 (D M D) psi and
-  // phi = D psi. The scaled mass matrix has a unit diagonal, which keeps the Cholesky
-  // factor well conditioned when heavy torquers sit next to gram-scale rods.
-  for (Eigen::Index i = 0; i < n; ++i)
-    if (!(M(i, i) > 0)) {
-      throw NumericalError("mass matrix is not positive definite (degree of freedom " + std::to_string(i) +
-                           " has no inertia)");
-    }
   const Eigen::VectorXd d = M.diagonal().cwiseSqrt().cwiseInverse();
   const Eigen::MatrixXd Ms = d.asDiagonal() * M * d.asDiagonal();
   const Eigen::MatrixXd Ks = d.asDiagonal() * K * d.asDiagonal();
@@ -82,32 +77,59 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Ks, Ms, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
   if (es.info() != Eigen::Success) throw NumericalError("generalized eigen solver did not converge");
+  ModalSolution sol;
   sol.omega2 = es.eigenvalues();
   sol.shapes = d.asDiagonal() * es.eigenvectors();
+  MMV_DEMAND(sol.shapes.cols() == n);
   refineLowestModes(M, K, sol);
-  // Fix the sign of each shape: largest component positive (reproducible output).
-  for (Eigen::Index i = 0; i < n; ++i) {
+  return sol;
+}
+
+/// Signs (largest component positive, for reproducible output) and the checks of the
+/// modes returned.
+void finishModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, ModalSolution& sol) {
+  const Eigen::Index k = sol.omega2.size();
+  for (Eigen::Index i = 0; i < k; ++i) {
     Eigen::Index imax;
     sol.shapes.col(i).cwiseAbs().maxCoeff(&imax);
     if (sol.shapes(imax, i) < 0) sol.shapes.col(i) *= -1.0;
   }
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::VectorXd kv = K * sol.shapes.col(i), mv = M * sol.shapes.col(i);
-    const double denom = kv.norm() + std::abs(sol.omega2[i]) * mv.norm();
-    const double r = denom > 0 ? (kv - sol.omega2[i] * mv).norm() / denom : 0.0;
+  const Eigen::MatrixXd KV = K * sol.shapes, MV = M * sol.shapes;
+  for (Eigen::Index i = 0; i < k; ++i) {
+    const double denom = KV.col(i).norm() + std::abs(sol.omega2[i]) * MV.col(i).norm();
+    const double r = denom > 0 ? (KV.col(i) - sol.omega2[i] * MV.col(i)).norm() / denom : 0.0;
     sol.residuals.push_back(r);
     sol.max_residual = std::max(sol.max_residual, r);
   }
-  const Eigen::MatrixXd ortho = sol.shapes.transpose() * M * sol.shapes - Eigen::MatrixXd::Identity(n, n);
-  sol.orthogonality_error = ortho.cwiseAbs().maxCoeff();
+  const Eigen::MatrixXd ortho = sol.shapes.transpose() * MV - Eigen::MatrixXd::Identity(k, k);
+  sol.orthogonality_error = k ? ortho.cwiseAbs().maxCoeff() : 0.0;
   if (!sol.omega2.allFinite() || !sol.shapes.allFinite()) throw NumericalError("eigen solution has non-finite values");
-  return sol;
 }
 
-ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z) {
+}  // namespace
+
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count) {
+  const Eigen::Index n = M.rows();
+  MMV_DEMAND(M.cols() == n && K.rows() == n && K.cols() == n && count >= 0);
+  if (!M.allFinite() || !K.allFinite()) throw NumericalError("mass or stiffness matrix has non-finite entries");
+  if (n == 0) return {};
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!(M(i, i) > 0)) {
+      throw NumericalError("mass matrix is not positive definite (degree of freedom " + std::to_string(i) +
+                           " has no inertia)");
+    }
+  std::optional<ModalSolution> sol;
+  if (count > 0 && n >= kPartialModesMinDofs && 3 * count <= n) sol = solveLowestModes(M, K, count);
+  if (!sol) sol = solveAllModes(M, K);
+  finishModes(M, K, *sol);
+  return std::move(*sol);
+}
+
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z, int count) {
   MMV_DEMAND(Z.rows() == M.rows());
+  if (Z.cols() == Z.rows() && Z.isIdentity(0.0)) return solveModes(M, K, count);  // an open tree: no products
   const Eigen::MatrixXd Mz = Z.transpose() * M * Z, Kz = Z.transpose() * K * Z;
-  ModalSolution sol = solveModes(0.5 * (Mz + Mz.transpose()), 0.5 * (Kz + Kz.transpose()));
+  ModalSolution sol = solveModes(0.5 * (Mz + Mz.transpose()), 0.5 * (Kz + Kz.transpose()), count);
   sol.shapes = Z * sol.shapes;
   return sol;
 }
@@ -120,6 +142,13 @@ Eigen::MatrixXd unstrainedMotions(const Eigen::MatrixXd& Z, const std::vector<bo
     if (strained[i]) rows.push_back(static_cast<Eigen::Index>(i));
   const Eigen::Index nz = Z.cols();
   if (rows.empty()) return Z;
+  if (Z.cols() == Z.rows() && Z.isIdentity(0.0)) {  // an open tree: the unstrained coordinates themselves
+    Eigen::MatrixXd U = Eigen::MatrixXd::Zero(Z.rows(), Z.rows() - static_cast<Eigen::Index>(rows.size()));
+    Eigen::Index c = 0;
+    for (std::size_t i = 0; i < strained.size(); ++i)
+      if (!strained[i]) U(static_cast<Eigen::Index>(i), c++) = 1.0;
+    return U;
+  }
   Eigen::MatrixXd H(rows.size(), nz);
   for (std::size_t k = 0; k < rows.size(); ++k) H.row(k) = Z.row(rows[k]);
   // Null space of H by a complete orthogonal decomposition of H^T's column space.

@@ -16,6 +16,7 @@
 /// the smallest |omega^2|. Without it no mode is rigid.
 #include <Eigen/Dense>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 
@@ -39,14 +40,37 @@ struct ModalSolution {
   bool isStable(int i) const { return omega2[i] >= 0 || isRigidBody(i); }
 };
 
+/// count = 0: every mode, by the dense solver. count > 0: at least the `count` lowest
+/// modes (omega^2 ascending, unstable ones first); from kPartialModesMinDofs DOF on
+/// (and count <= n / 3) only those, by shift-invert Lanczos (solveLowestModes), which
+/// falls back to the dense solver whenever it cannot prove its answer complete.
+/// Residuals and orthogonality are computed for the modes returned.
 /// Throws NumericalError (sim/statics/statics.hpp) if M is not positive definite or the
 /// eigen solver fails.
-ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count = 0);
+
+/// Below this many DOF the dense solver is cheap enough (a few ms) to return every mode.
+inline constexpr int kPartialModesMinDofs = 96;
+
+/// The `count` lowest modes (0 < count < n) by shift-invert Lanczos in M's inner
+/// product (Spectra's SymGEigsShiftSolver): K - sigma M is factored once by Cholesky
+/// with a shift sigma below every eigenvalue (the factor proves that, so the modes
+/// nearest sigma are the lowest ones, unstable and rigid-body modes included), then
+/// each Lanczos step costs two triangular solves and a product with M. A Sturm-sequence
+/// check (the inertia of K - tau M, tau between the last mode returned and the next)
+/// proves that none was missed, e.g. one of a repeated pair. Shapes are mass-normalised,
+/// unsigned and unchecked (solveModes does that). nullopt when the shift, the iteration
+/// or the check fails: the caller then solves densely. `start`: Lanczos' first vector
+/// (in the balanced, factored coordinates; default Spectra's random one), for tests
+/// that make it miss a mode on purpose.
+std::optional<ModalSolution> solveLowestModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count,
+                                              const Eigen::VectorXd* start = nullptr);
 
 /// Modes constrained to the columns of Z (a closed loop's admissible motions):
 /// (Z^T K Z) psi = omega^2 (Z^T M Z) psi, phi = Z psi. Residuals and orthogonality are
 /// those of the reduced problem; shapes stay mass-normalised (phi^T M phi = 1).
-ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z);
+/// An identity Z (an open tree) costs nothing.
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& Z, int count = 0);
 
 /// The admissible motions q = Z eta that leave every coordinate with `strained[i]`
 /// unchanged (columns over q, orthonormal): the candidates for rigid-body modes.

@@ -52,7 +52,7 @@ std::map<std::string, double> byCarrier(const std::map<std::string, double>& ene
 
 }  // namespace
 
-SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_opts) {
+SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_opts, int num_modes) {
   SolvedScene s;
   auto t0 = Clock::now();
   s.model = buildArticleModel(scene);
@@ -65,7 +65,7 @@ SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_o
   s.linearized = linearize(*s.model, s.equilibrium.state, s.equilibrium.closure_multipliers);
   s.seconds_linearize = secondsSince(t0);
   t0 = Clock::now();
-  s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z);
+  s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z, num_modes);
   markRigidBodyModes(s.modes, s.linearized, scene);
   s.seconds_eigen = secondsSince(t0);
   return s;
@@ -104,8 +104,8 @@ std::string dominantStrainLink(const Model& model, const std::vector<int>& dofs,
   return shares.empty() ? std::string() : shares.front().part;
 }
 
-ModesSolve solveSceneModes(const ArticleScene& scene, const EquilibriumOptions& eq) {
-  const SolvedScene s = solveScene(scene, eq);
+ModesSolve solveSceneModes(const ArticleScene& scene, const EquilibriumOptions& eq, int num_modes) {
+  const SolvedScene s = solveScene(scene, eq, num_modes);
   ModesSolve out;
   out.num_dofs = static_cast<int>(s.linearized.dofs.size());
   out.frequencies_hz.resize(s.modes.omega2.size());
@@ -182,30 +182,38 @@ std::vector<PointReport> pointReports(const Model& model, const SimTK::State& eq
   return out;
 }
 
-/// Jacobians at the equilibrium of every body's mass centre and every named point,
-/// with the bodies' masses and spins: what a mode's energies and shapes need.
+/// Every body's mass centre and every named point at the equilibrium, with the bodies'
+/// masses and spins: what a mode's energies and shapes need. Their velocities in a
+/// shape cost one O(bodies) pass per mode (no Jacobian is formed).
 struct ModeKinematics {
-  Eigen::MatrixXd Jb, Jp;  ///< 6 rows (w; v) per body / point, columns over the DOFs.
+  const Model* model = nullptr;
+  const SimTK::State* state = nullptr;
+  const std::vector<int>* dofs = nullptr;
+  std::vector<SimTK::MobilizedBodyIndex> body_ix, point_ix;
+  std::vector<SimTK::Vec3> body_com, point_st;
   std::vector<double> body_mass, body_izz;
+  /// 6 rows (w; v) per body mass centre / named point for the shape phi over the DOFs.
+  Eigen::VectorXd bodies(const Eigen::VectorXd& phi) const {
+    return model->calcFrameVelocities(*state, body_ix, body_com, *dofs, phi);
+  }
+  Eigen::VectorXd points(const Eigen::VectorXd& phi) const {
+    return model->calcFrameVelocities(*state, point_ix, point_st, *dofs, phi);
+  }
 };
 
 ModeKinematics modeKinematics(const Model& model, const SimTK::State& eqs, const std::vector<int>& dofs) {
-  ModeKinematics k;
-  std::vector<SimTK::MobilizedBodyIndex> body_ix, point_ix;
-  std::vector<SimTK::Vec3> body_com, point_st;
+  ModeKinematics k{&model, &eqs, &dofs, {}, {}, {}, {}, {}, {}};
   for (const auto& b : model.getBodies()) {
     const SimTK::MassProperties mp = model.getMatter().getMobilizedBody(b.mobod).getBodyMassProperties(eqs);
-    body_ix.push_back(b.mobod);
-    body_com.push_back(mp.getMassCenter());
+    k.body_ix.push_back(b.mobod);
+    k.body_com.push_back(mp.getMassCenter());
     k.body_mass.push_back(mp.getMass());
     k.body_izz.push_back(mp.calcCentralInertia().getMoments()[2]);
   }
   for (const auto& p : model.getPoints()) {
-    point_ix.push_back(p.mobod);
-    point_st.push_back(p.station_B);
+    k.point_ix.push_back(p.mobod);
+    k.point_st.push_back(p.station_B);
   }
-  k.Jb = model.calcFrameJacobians(eqs, body_ix, body_com, dofs);
-  k.Jp = model.calcFrameJacobians(eqs, point_ix, point_st, dofs);
   return k;
 }
 
@@ -214,8 +222,9 @@ void describeEnergies(const Model& model, const std::vector<int>& dofs, const Mo
                       ModeInfo& m) {
   std::map<std::string, double> kinetic, strain;
   double Lx = 0, Ly = 0;
+  const Eigen::VectorXd vb = k.bodies(phi);
   for (std::size_t b = 0; b < k.body_mass.size(); ++b) {
-    const Eigen::VectorXd v = k.Jb.middleRows(6 * b, 6) * phi;  // (w; v_com)
+    const Eigen::Matrix<double, 6, 1> v = vb.segment<6>(6 * b);  // (w; v_com)
     const double ke = 0.5 * (k.body_mass[b] * v.tail<3>().squaredNorm() + k.body_izz[b] * v[2] * v[2]);
     kinetic[model.getParts()[model.getBodies()[b].part].name] += ke;
     Lx += k.body_mass[b] * v[3];
@@ -238,7 +247,7 @@ void describeEnergies(const Model& model, const std::vector<int>& dofs, const Mo
 
 /// The shape at the named points, the point that moves most and the modal mass there.
 void describeShape(const Model& model, const ModeKinematics& k, const Eigen::VectorXd& phi, bool with_shapes, ModeInfo& m) {
-  const Eigen::VectorXd u = k.Jp * phi;
+  const Eigen::VectorXd u = k.points(phi);
   double peak = 0;
   for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
     const NamedPoint& np = model.getPoints()[p];
@@ -278,7 +287,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.scene_name = scene.name;
   rep.scene_source = scene.source;
   rep.gravity = scene.gravity;
-  const SolvedScene s = solveScene(scene, options.equilibrium);
+  const SolvedScene s = solveScene(scene, options.equilibrium, options.max_modes);
   rep.seconds_build = s.seconds_build;
   rep.seconds_equilibrium = s.seconds_equilibrium;
   rep.seconds_linearize = s.seconds_linearize;

@@ -125,8 +125,10 @@ struct SolvedScene {
   ModalSolution modes;
   double seconds_build = 0, seconds_equilibrium = 0, seconds_linearize = 0, seconds_eigen = 0;
 };
+/// num_modes = 0: every mode; > 0: at least the lowest num_modes (solveModes: on large
+/// models only those, by shift-invert Lanczos).
 /// Throws NumericalError if the equilibrium fails or the eigenproblem is ill-posed.
-SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq = {});
+SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq = {}, int num_modes = 0);
 
 /// Flags the rigid-body modes of `sol` (shapes over lin.dofs) from the model's
 /// structure: the admissible motions that bend no hinge and stretch no servo spring
@@ -147,6 +149,7 @@ struct ModesSolve {
   Eigen::VectorXd frequencies_hz;
   int num_dofs = 0;
 };
-ModesSolve solveSceneModes(const ArticleScene& scene, const EquilibriumOptions& eq = {});
+/// num_modes as in solveScene: at least that many frequencies (0: all).
+ModesSolve solveSceneModes(const ArticleScene& scene, const EquilibriumOptions& eq = {}, int num_modes = 0);
 
 }  // namespace mmv

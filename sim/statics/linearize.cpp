@@ -17,15 +17,19 @@ namespace {
 /// G_k of the closed form: sum over point forces outboard of rotation k of F.(p - o_k).
 class GeometricTerms {
  public:
-  GeometricTerms(const Model& model, const SimTK::State& s) : model_(model), s_(s), g_(model.getNumCoordinates(), 0.0) {}
+  GeometricTerms(const Model& model, const SimTK::State& s)
+      : model_(model), s_(s), g_(model.getNumCoordinates(), 0.0), axis_(model.getNumCoordinates()),
+        rotation_(model.getNumCoordinates(), false) {
+    const auto& coords = model_.getCoordinates();
+    for (std::size_t k = 0; k < coords.size(); ++k) {  // each axis once, not once per body outboard of it
+      rotation_[k] = coords[k].motion == CoordinateMotion::Rotation;
+      if (rotation_[k]) axis_[k] = model_.getMatter().getMobilizedBody(coords[k].mobod).getBodyOriginLocation(s_);
+    }
+  }
 
   void add(int body, const SimTK::Vec3& p_W, const SimTK::Vec3& F_W) {
-    const auto& coords = model_.getCoordinates();
-    for (int k : model_.getAncestorCoordinates(body)) {
-      if (coords[k].motion != CoordinateMotion::Rotation) continue;
-      const SimTK::Vec3 o = model_.getMatter().getMobilizedBody(coords[k].mobod).getBodyOriginLocation(s_);
-      g_[k] += ~F_W * (p_W - o);
-    }
+    for (int k : model_.getAncestorCoordinates(body))
+      if (rotation_[k]) g_[k] += ~F_W * (p_W - axis_[k]);
   }
   void addStation(int body, const SimTK::Vec3& station_B, const SimTK::Vec3& F_W) {
     const SimTK::MobilizedBody& mb = model_.getMatter().getMobilizedBody(model_.getBodies()[body].mobod);
@@ -58,6 +62,8 @@ class GeometricTerms {
   const Model& model_;
   const SimTK::State& s_;
   std::vector<double> g_;
+  std::vector<SimTK::Vec3> axis_;  ///< o_k, world frame (rotations only).
+  std::vector<bool> rotation_;
 };
 
 }  // namespace

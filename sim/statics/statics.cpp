@@ -119,6 +119,12 @@ std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
   model_.setQ(s_, q_);
   model_.getSystem().realize(s_, SimTK::Stage::Position);
   const Eigen::MatrixXd K = calcStiffness(model_, s_, dofs_);
+  if (m_ == 0 && model_.hasClosedFormForces()) {
+    // An open tree near a stable equilibrium: K (symmetric in closed form) is positive
+    // definite, and its Cholesky factor costs half an LU; anything else goes to the LU.
+    const Eigen::LLT<Eigen::MatrixXd> llt(K);
+    if (llt.info() == Eigen::Success && llt.rcond() >= 1e-12) return Eigen::VectorXd(llt.solve(res.force));
+  }
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n_ + m_, n_ + m_);
   A.topLeftCorner(n_, n_) = -K;
   if (m_ > 0) {
