@@ -31,11 +31,13 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
   os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n\n", f.front(),
              f.back(), 100 * err.max_relative);
   Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%"});
+  const PeakTable peaks = refinedPeaks(lm.second_order, f);
+  const Eigen::MatrixXcd h10 = lm.second_order.response(2 * M_PI * 10.0);
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
     for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
-      const auto [fpeak, peak_mag] = refinedPeak(lm.second_order, o, i, f);
-      const double peak = 20 * std::log10(peak_mag + 1e-300);
-      const double at10 = 20 * std::log10(std::abs(lm.second_order.response(2 * M_PI * 10.0)(o, i)) + 1e-300);
+      const double fpeak = peaks.hz(o, i);
+      const double peak = 20 * std::log10(peaks.magnitude(o, i) + 1e-300);
+      const double at10 = 20 * std::log10(std::abs(h10(o, i)) + 1e-300);
       t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], strf("%.4g", fpeak),
              strf("%.2f", peak), strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i))});
     }

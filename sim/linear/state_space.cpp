@@ -179,26 +179,37 @@ Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double c) {
   return lambda;
 }
 
-std::pair<double, double> refinedPeak(const SecondOrderResponse& h, Eigen::Index o, Eigen::Index i, const std::vector<double>& f) {
-  auto mag = [&](double hz) { return std::abs(h.response(2 * M_PI * hz)(o, i)); };
-  std::size_t best = 0;
-  std::vector<double> m(f.size());
-  for (std::size_t k = 0; k < f.size(); ++k) {
-    m[k] = mag(f[k]);
-    if (m[k] > m[best]) best = k;
-  }
-  // Refine the grid's maximum between its neighbours (golden section on |H|), so a
-  // coarse grid does not misplace a lightly damped peak.
-  double lo = f[best > 0 ? best - 1 : 0], hi = f[std::min(best + 1, f.size() - 1)];
+PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f) {
+  MMV_DEMAND(!f.empty());
+  auto magnitudes = [&](double hz) { return Eigen::MatrixXd(h.response(2 * M_PI * hz).cwiseAbs()); };
+  std::vector<Eigen::MatrixXd> grid;
+  grid.reserve(f.size());
+  for (double hz : f) grid.push_back(magnitudes(hz));
+  const Eigen::Index no = grid.front().rows(), ni = grid.front().cols();
+  PeakTable t{Eigen::MatrixXd(no, ni), Eigen::MatrixXd(no, ni)};
   const double g = 0.5 * (std::sqrt(5.0) - 1);
-  for (int it = 0; it < 60 && hi - lo > 1e-9 * hi; ++it) {
-    const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-    (mag(a) > mag(b) ? hi : lo) = mag(a) > mag(b) ? b : a;
-  }
-  double fpeak = 0.5 * (lo + hi);
-  double peak_mag = mag(fpeak);
-  if (m[best] > peak_mag) fpeak = f[best], peak_mag = m[best];
-  return {fpeak, peak_mag};
+  for (Eigen::Index o = 0; o < no; ++o)
+    for (Eigen::Index i = 0; i < ni; ++i) {
+      auto mag = [&](double hz) { return std::abs(h.response(2 * M_PI * hz)(o, i)); };
+      std::size_t best = 0;
+      for (std::size_t k = 0; k < f.size(); ++k)
+        if (grid[k](o, i) > grid[best](o, i)) best = k;
+      // Golden section between the grid neighbours, one new point per step.
+      double lo = f[best > 0 ? best - 1 : 0], hi = f[std::min(best + 1, f.size() - 1)];
+      double a = hi - g * (hi - lo), b = lo + g * (hi - lo), ma = mag(a), mb = mag(b);
+      for (int it = 0; it < 80 && hi - lo > 1e-9 * hi; ++it) {
+        if (ma > mb) {
+          hi = b, b = a, mb = ma, a = hi - g * (hi - lo), ma = mag(a);
+        } else {
+          lo = a, a = b, ma = mb, b = lo + g * (hi - lo), mb = mag(b);
+        }
+      }
+      double fpeak = 0.5 * (lo + hi), peak = mag(fpeak);
+      if (grid[best](o, i) > peak) fpeak = f[best], peak = grid[best](o, i);
+      t.hz(o, i) = fpeak;
+      t.magnitude(o, i) = peak;
+    }
+  return t;
 }
 
 }  // namespace mmv

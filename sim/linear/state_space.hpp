@@ -174,10 +174,13 @@ Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double dcoef);
 /// Log-spaced frequencies (Hz) from f0 to f1, n points.
 std::vector<double> logFrequencies(double f0_hz, double f1_hz, int n);
 
-/// The peak of |H(o, i)| (frequency in Hz, magnitude): the largest grid point of f,
-/// refined between its neighbours by golden-section search so a coarse grid does not
-/// misplace a lightly damped peak.
-std::pair<double, double> refinedPeak(const SecondOrderResponse& h, Eigen::Index o, Eigen::Index i,
-                                      const std::vector<double>& f);
+/// The peak of every |H(o, i)| (frequency in Hz, magnitude, outputs x inputs): the
+/// largest grid point of f, refined between its neighbours by golden-section search so
+/// a coarse grid does not misplace a lightly damped peak. One response per grid point
+/// serves every pair, and the search costs one response per step.
+struct PeakTable {
+  Eigen::MatrixXd hz, magnitude;
+};
+PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f);
 
 }  // namespace mmv
