@@ -112,14 +112,6 @@ namespace {
 
 ReducedModel reduce(const LinearArgs& args, const StateSpace& full) { return reduceModal(full, reductionOptions(args)); }
 
-/// Where the state-modal responses are checked against the LU before they are used:
-/// the grid's ends and three points between.
-std::vector<double> checkOmegas(const std::vector<double>& w) {
-  std::vector<double> c;
-  for (int k = 0; k < 5; ++k) c.push_back(w[(w.size() - 1) * k / 4]);
-  return c;
-}
-
 std::vector<double> frequencies(const LinearArgs& a) {
   if (!(a.f_min > 0) || !(a.f_max > a.f_min)) throw UsageError("--from/--to: need 0 < FROM < TO (Hz)");
   return logFrequencies(a.f_min, a.f_max, a.points);
@@ -140,15 +132,12 @@ int runFrfCommand(const LinearArgs& args) {
     const ReducedModel red = reduce(args, lm.full);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
-    lm.second_order.adoptStateModes(red.full_modes, checkOmegas(w));
-    const ModelError err = compareResponses(lm.second_order, red.model, w);
+    const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
+    const ModelError err = compareResponses(hf, red.model, w);
     if (out) {
       const StateSpace& s = lm.full;
-      std::vector<Eigen::MatrixXcd> hf, hr;
-      for (double x : w) {
-        hf.push_back(lm.second_order.response(x));
-        hr.push_back(red.model.response(x));
-      }
+      std::vector<Eigen::MatrixXcd> hr;
+      for (double x : w) hr.push_back(red.model.response(x));
       for (Eigen::Index o = 0; o < s.C.rows(); ++o)
         for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
           const std::string base = safeFileName(s.output_names[o]) + "__" + safeFileName(s.input_names[i]);
@@ -179,7 +168,7 @@ int runFrfCommand(const LinearArgs& args) {
       std::ofstream(out->stage("frf.uff"), std::ios::binary) << frfUff(lm, scene, f, hf);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << linearSummaryText(lm, red, err, f) << std::flush;
+    std::cout << linearSummaryText(lm, red, err, f, hf) << std::flush;
     return kOk;
   });
 }
@@ -196,8 +185,8 @@ int runRomCommand(const LinearArgs& args) {
     const ReducedModel red = reduce(args, lm.full);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
-    lm.second_order.adoptStateModes(red.full_modes, checkOmegas(w));
-    const ModelError err = compareResponses(lm.second_order, red.model, w);
+    const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
+    const ModelError err = compareResponses(hf, red.model, w);
     try {
       writeStateSpaceMat(out.stage("rom.mat"), red.model);
       writeStateSpaceMat(out.stage("full.mat"), lm.full);
@@ -206,7 +195,7 @@ int runRomCommand(const LinearArgs& args) {
     }
     std::ofstream(out.stage("rom.json"), std::ios::binary) << romJson(lm, red, err, f).dump(2) << '\n';
     for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-    std::cout << linearSummaryText(lm, red, err, f) << std::flush;
+    std::cout << linearSummaryText(lm, red, err, f, hf) << std::flush;
     return kOk;
   });
 }

@@ -20,7 +20,8 @@ std::string safeFileName(std::string s) {
   return s;
 }
 
-std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err, const std::vector<double>& f) {
+std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err, const std::vector<double>& f,
+                              const std::vector<Eigen::MatrixXcd>& hf) {
   std::ostringstream os;
   const StateSpace& s = lm.full;
   os << "Linear model about the equilibrium: " << s.numStates() << " states, " << s.B.cols() << " inputs, " << s.C.rows()
@@ -31,7 +32,7 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
   os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n\n", f.front(),
              f.back(), 100 * err.max_relative);
   Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%"});
-  const PeakTable peaks = refinedPeaks(lm.second_order, f);
+  const PeakTable peaks = refinedPeaks(lm.second_order, f, hf);
   const Eigen::MatrixXcd h10 = lm.second_order.response(2 * M_PI * 10.0);
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
     for (Eigen::Index i = 0; i < s.B.cols(); ++i) {

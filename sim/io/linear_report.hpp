@@ -14,8 +14,9 @@ namespace mmv {
 
 /// `s` with every character other than letters, digits, '.', '_' and '-' replaced by '_'.
 std::string safeFileName(std::string s);
+/// `hf`: the full model's responses at f (fullResponses), reused for the peaks.
 std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
-                              const std::vector<double>& f);
+                              const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& hf);
 /// The UFF file: nodes at the equilibrium's named points, a trace line per link, the
 /// first 12 mode shapes, and every FRF (or transmissibility) pair of `h` at f (Hz).
 std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,

@@ -153,7 +153,6 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
   red.discarded_modes = static_cast<int>(sm.modes.size() - kept.size()) + unseen;
   red.unseen_modes = unseen;
   for (const auto& m : kept) red.kept_frequencies_hz.push_back(m.magnitude / (2 * M_PI));
-  red.full_modes = {sm.lambda, sm.V, sm.W};
   if (o.residualize && red.discarded_modes > 0) {
     residualize(full, red.model);
     red.residualized = true;

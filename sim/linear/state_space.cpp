@@ -59,20 +59,150 @@ StateSpace secondOrderModel(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, 
   return ss;
 }
 
+namespace {
+
+/// Parlett-Reinsch balancing (as LAPACK's dgebal, without permutations): A := D^-1 A D
+/// with D a diagonal of powers of two (exact), each row and column brought to a similar
+/// norm; returns D's diagonal.
+Eigen::VectorXd balance(Eigen::MatrixXd& A) {
+  const Eigen::Index N = A.rows();
+  Eigen::VectorXd d = Eigen::VectorXd::Ones(N);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (Eigen::Index i = 0; i < N; ++i) {
+      double c = A.col(i).cwiseAbs().sum() - std::abs(A(i, i)), r = A.row(i).cwiseAbs().sum() - std::abs(A(i, i));
+      if (c == 0 || r == 0) continue;
+      const double s0 = c + r;
+      double f = 1;
+      while (c < r / 2) c *= 2, r /= 2, f *= 2;
+      while (c >= r * 2) c /= 2, r *= 2, f /= 2;
+      if (c + r < 0.95 * s0) {
+        changed = true;
+        d[i] *= f;
+        A.row(i) /= f;
+        A.col(i) *= f;
+      }
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+void SecondOrderResponse::prepareHessenberg() {
+  const Eigen::Index n = K.rows(), N = 2 * n;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> mlu(M);
+  Eigen::MatrixXd A1 = Eigen::MatrixXd::Zero(N, N);
+  A1.topRightCorner(n, n).setIdentity();
+  A1.bottomLeftCorner(n, n) = -mlu.solve(K);
+  A1.bottomRightCorner(n, n) = -mlu.solve(C);
+  // Balanced first (stiff hinges put omega_max^2 ~ 1e8 beside the identity block, and
+  // the reduction's backward error is eps times the matrix's norm): A1 := D^-1 A1 D.
+  const Eigen::VectorXd d = balance(A1);
+  const Eigen::HessenbergDecomposition<Eigen::MatrixXd> hd(A1);
+  H_ = hd.matrixH();
+  const Eigen::MatrixXd Q = hd.matrixQ();
+  Bh_ = Q.bottomRows(n).transpose() * d.tail(n).cwiseInverse().asDiagonal() * mlu.solve(Bq);
+  // Outputs on the whole state, accelerations eliminated as secondOrderModel does
+  // (y = C1 x + D1): -w^2 Ca q would cancel against Ca M^-1 Bq at high frequency.
+  const Eigen::Index no = D.rows();
+  auto rows = [&](const Eigen::MatrixXd& X) { return X.size() ? X : Eigen::MatrixXd::Zero(no, n); };
+  const Eigen::MatrixXd PMi = mlu.solve(rows(Ca).transpose()).transpose();  // (M symmetric)
+  Eigen::MatrixXd C1(no, N);
+  C1 << rows(Cd) - PMi * K, rows(Cv) - PMi * C;
+  Od_ = C1 * d.asDiagonal() * Q;
+  DQ_ = d.asDiagonal() * Q;
+  QtDinv_ = Q.transpose() * d.cwiseInverse().asDiagonal();
+  Minv_ = mlu.inverse();
+  P_ = PMi * Bq + D;  // D1
+  hessenberg_ = H_.allFinite() && Bh_.allFinite() && Od_.allFinite();
+}
+
+namespace {
+
+using RowMajorXcd = Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+/// i w I - H (H upper Hessenberg) eliminated to upper triangular U by adjacent-row
+/// partial pivoting: step k swaps rows k, k+1 if swap[k], then row k+1 -= l[k] row k.
+struct HessenbergLu {
+  RowMajorXcd U;
+  std::vector<char> swap;
+  std::vector<cd> l;
+
+  HessenbergLu(const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& H, double w)
+      : U(-H.cast<cd>()), swap(H.rows(), 0), l(H.rows(), 0.0) {
+    const Eigen::Index N = U.rows();
+    U.diagonal().array() += cd(0, w);
+    for (Eigen::Index k = 0; k + 1 < N; ++k) {
+      const Eigen::Index len = N - k;
+      if (std::abs(U(k + 1, k)) > std::abs(U(k, k))) {
+        U.row(k).tail(len).swap(U.row(k + 1).tail(len));
+        swap[k] = 1;
+      }
+      if (U(k + 1, k) == 0.0) continue;
+      l[k] = U(k + 1, k) / U(k, k);
+      U.row(k + 1).tail(len - 1) -= l[k] * U.row(k).tail(len - 1);
+      U(k + 1, k) = 0.0;
+    }
+  }
+
+  /// Solves in place (rows of X over the N states).
+  void solve(RowMajorXcd& X) const {
+    const Eigen::Index N = U.rows();
+    for (Eigen::Index k = 0; k + 1 < N; ++k) {
+      if (swap[k]) X.row(k).swap(X.row(k + 1));
+      X.row(k + 1) -= l[k] * X.row(k);
+    }
+    for (Eigen::Index k = N - 1; k >= 0; --k) {
+      if (k + 1 < N) X.row(k) -= U.row(k).tail(N - k - 1) * X.bottomRows(N - k - 1);
+      X.row(k) /= U(k, k);
+    }
+  }
+};
+
+}  // namespace
+
+Eigen::MatrixXcd SecondOrderResponse::hessenbergResponse(double w) const {
+  const Eigen::Index n = K.rows(), N = 2 * n;
+  const HessenbergLu lu(H_, w);
+  RowMajorXcd Z = Bh_.cast<cd>();
+  lu.solve(Z);
+  // x = D Q z; one refinement on the residual of the original descriptor form,
+  // r = [0; Bq] - (i w E - A) x with E = diag(I, M), A = [0 I; -K -C] (the explicit
+  // M^-1 K of the Hessenberg matrix costs digits when M is ill-conditioned).
+  const auto real = [](const Eigen::MatrixXd& A, const Eigen::MatrixXcd& v) {  // real A, complex v
+    Eigen::MatrixXcd y(A.rows(), v.cols());
+    y.real() = A * v.real();
+    y.imag() = A * v.imag();
+    return y;
+  };
+  const Eigen::MatrixXcd x = real(DQ_, Z);
+  const Eigen::MatrixXcd q = x.topRows(n), v = x.bottomRows(n);
+  Eigen::MatrixXcd rhs(N, x.cols());
+  rhs.topRows(n) = v - cd(0, w) * q;
+  rhs.bottomRows(n) = real(Minv_, Bq.cast<cd>() - cd(0, w) * real(M, v) - real(K, q) - real(C, v));
+  // The correction solves (i w I - A1) dx = E^-1 r in the balanced Hessenberg basis.
+  RowMajorXcd dz = real(QtDinv_, rhs);
+  lu.solve(dz);
+  return real(Od_, Z + dz) + P_.cast<cd>();
+}
+
 void SecondOrderResponse::prepare() {
-  modal_ = false;
+  modal_ = hessenberg_ = false;
   const Eigen::Index n = K.rows();
   if (n == 0) return;
   const double scale = K.cwiseAbs().maxCoeff();
-  if (!((K - K.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale) || !((C - C.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * std::max(C.cwiseAbs().maxCoeff(), 1e-300)))
-    return;
+  const bool symmetric = (K - K.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale &&
+                         (C - C.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * std::max(C.cwiseAbs().maxCoeff(), 1e-300);
+  if (!symmetric) return prepareHessenberg();
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
-  if (es.info() != Eigen::Success) return;
+  if (es.info() != Eigen::Success) return prepareHessenberg();
   const Eigen::MatrixXd& phi = es.eigenvectors();
   const Eigen::MatrixXd cm = phi.transpose() * C * phi;
   const Eigen::VectorXd diag = cm.diagonal();
   const double off = (cm - Eigen::MatrixXd(diag.asDiagonal())).cwiseAbs().maxCoeff();
-  if (!(off <= 1e-10 * std::max(diag.cwiseAbs().maxCoeff(), 1e-300)) && C.cwiseAbs().maxCoeff() > 0) return;
+  if (!(off <= 1e-10 * std::max(diag.cwiseAbs().maxCoeff(), 1e-300)) && C.cwiseAbs().maxCoeff() > 0)
+    return prepareHessenberg();
   w2_ = es.eigenvalues();
   c_ = diag;
   P_ = phi.transpose() * Bq;
@@ -81,48 +211,8 @@ void SecondOrderResponse::prepare() {
   modal_ = true;
 }
 
-bool SecondOrderResponse::adoptStateModes(const StateModes& sm, const std::vector<double>& check_omegas) {
-  const Eigen::Index n = K.rows();
-  if (modal_ || n == 0 || sm.V.rows() != 2 * n) return false;
-  const Eigen::PartialPivLU<Eigen::MatrixXd> mlu(M);
-  const Eigen::MatrixXcd Minv = mlu.inverse().cast<cd>();
-  SecondOrderResponse trial = *this;
-  trial.lambda_ = sm.lambda;
-  trial.Vq_ = sm.V.topRows(n);
-  trial.Wv_ = sm.W.rightCols(n) * Minv;
-  trial.WB_ = trial.Wv_ * Bq.cast<cd>();
-  trial.state_modal_ = true;
-  for (double w : check_omegas) {
-    const Eigen::MatrixXcd direct = response(w), modal = trial.response(w);
-    const double scale = std::max(direct.cwiseAbs().maxCoeff(), 1e-300);
-    if (!((direct - modal).cwiseAbs().maxCoeff() <= 1e-10 * scale)) return false;
-  }
-  *this = std::move(trial);
-  return true;
-}
-
 Eigen::MatrixXcd SecondOrderResponse::response(double w) const {
-  if (state_modal_) {
-    // Column by column (matrix-vector products: no packing of the large factors for
-    // a few inputs), the real matrices applied to real and imaginary parts apart.
-    const Eigen::Index n = K.rows();
-    Eigen::VectorXcd g(lambda_.size());
-    for (Eigen::Index k = 0; k < g.size(); ++k) g[k] = 1.0 / (cd(0, w) - lambda_[k]);
-    const auto real = [](const Eigen::MatrixXd& A, const Eigen::VectorXcd& x) {
-      Eigen::VectorXcd y(A.rows());
-      y.real() = A * x.real();
-      y.imag() = A * x.imag();
-      return y;
-    };
-    Eigen::MatrixXcd q(n, Bq.cols());
-    for (Eigen::Index j = 0; j < Bq.cols(); ++j) {
-      Eigen::VectorXcd qj = Vq_ * g.cwiseProduct(WB_.col(j));
-      const Eigen::VectorXcd r = Bq.col(j).cast<cd>() - real(K, qj) + w * w * real(M, qj) - cd(0, w) * real(C, qj);
-      qj += Vq_ * g.cwiseProduct(Wv_ * r);
-      q.col(j) = qj;
-    }
-    return Cd.cast<cd>() * q + cd(0, w) * Cv.cast<cd>() * q - w * w * Ca.cast<cd>() * q + D.cast<cd>();
-  }
+  if (hessenberg_) return hessenbergResponse(w);
   if (modal_) {
     Eigen::VectorXcd g(w2_.size());
     for (Eigen::Index k = 0; k < g.size(); ++k) g[k] = 1.0 / cd(w2_[k] - w * w, w * c_[k]);
@@ -165,6 +255,31 @@ ModelError compareResponses(const SecondOrderResponse& a, const StateSpace& b, c
   return compareWith(a, b, omegas);
 }
 
+namespace {
+/// Responses already computed, served in the order of the frequencies asked.
+struct Precomputed {
+  const std::vector<Eigen::MatrixXcd>& h;
+  const std::vector<double>& omegas;
+  Eigen::MatrixXcd response(double w) const {
+    const auto it = std::find(omegas.begin(), omegas.end(), w);
+    MMV_DEMAND(it != omegas.end());
+    return h[static_cast<std::size_t>(it - omegas.begin())];
+  }
+};
+}  // namespace
+
+ModelError compareResponses(const std::vector<Eigen::MatrixXcd>& a, const StateSpace& b, const std::vector<double>& omegas) {
+  MMV_DEMAND(a.size() == omegas.size());
+  return compareWith(Precomputed{a, omegas}, b, omegas);
+}
+
+std::vector<Eigen::MatrixXcd> fullResponses(const SecondOrderResponse& h, const std::vector<double>& omegas) {
+  std::vector<Eigen::MatrixXcd> out;
+  out.reserve(omegas.size());
+  for (double w : omegas) out.push_back(h.response(w));
+  return out;
+}
+
 Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double c) {
   const Eigen::MatrixXd Jp = m.E - c * m.A, Jm = m.E + c * m.A;  // J(c), J(-c)
   // J(-c) v = Lambda J(c) v. J(c) is invertible unless a pole sits at 1/c, so the
@@ -179,12 +294,13 @@ Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double c) {
   return lambda;
 }
 
-PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f) {
-  MMV_DEMAND(!f.empty());
-  auto magnitudes = [&](double hz) { return Eigen::MatrixXd(h.response(2 * M_PI * hz).cwiseAbs()); };
+PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f,
+                       const std::vector<Eigen::MatrixXcd>& responses) {
+  MMV_DEMAND(!f.empty() && (responses.empty() || responses.size() == f.size()));
   std::vector<Eigen::MatrixXd> grid;
   grid.reserve(f.size());
-  for (double hz : f) grid.push_back(magnitudes(hz));
+  for (std::size_t k = 0; k < f.size(); ++k)
+    grid.push_back((responses.empty() ? h.response(2 * M_PI * f[k]) : responses[k]).cwiseAbs());
   const Eigen::Index no = grid.front().rows(), ni = grid.front().cols();
   PeakTable t{Eigen::MatrixXd(no, ni), Eigen::MatrixXd(no, ni)};
   const double g = 0.5 * (std::sqrt(5.0) - 1);

@@ -70,41 +70,37 @@ StateSpace secondOrderModel(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, 
                             const Eigen::MatrixXd& Bq, const Eigen::MatrixXd& Cd, const Eigen::MatrixXd& Cv,
                             const Eigen::MatrixXd& Ca, const Eigen::MatrixXd& Dextra);
 
-/// The same response evaluated in second-order form, (K - w^2 M + i w C)^-1, for the
-/// full model: n x n instead of 2n x 2n solves. After prepare(), when the damping is
-/// proportional (the real modes Phi of K and M, Phi^T M Phi = I, also diagonalise C to
-/// 1e-10: modal and Rayleigh damping), each response is a sum over the modes,
-///     H(w) = (Cd + i w Cv - w^2 Ca) Phi diag(1 / (w_k^2 - w^2 + i w c_k)) Phi^T Bq + D,
-/// O(n) per input-output pair instead of an n x n LU; otherwise (the hinge dampers
-/// under gravity's geometric stiffness are not proportional) the LU is kept.
-/// The state modes of a first-order model from its modal reduction: eigenvalues, right
-/// eigenvectors V (columns) and left W = V^-1 of E^-1 A.
-struct StateModes {
-  Eigen::VectorXcd lambda;
-  Eigen::MatrixXcd V, W;
-};
-
+/// The full model's frequency response, at a cost per frequency that grows as the
+/// square of its size, not the cube. After prepare():
+///  - proportional damping (the real modes Phi of K and M, Phi^T M Phi = I, also
+///    diagonalise C to 1e-10: modal and Rayleigh damping): a sum over the modes,
+///        H(w) = (Cd + i w Cv - w^2 Ca) Phi diag(1 / (w_k^2 - w^2 + i w c_k)) Phi^T Bq + D,
+///    O(n) per input-output pair;
+///  - any other damping (the hinge dampers under gravity's geometric stiffness are not
+///    proportional): the first-order matrix A1 = [0 I; -M^-1 K  -M^-1 C] (N = 2n) is
+///    reduced once to Hessenberg form, A1 = Q H Q^T (Householder, backward stable;
+///    Laub, IEEE TAC 26(2), 1981), and each response solves (i w I - H) z = Q^T [0; M^-1 Bq]
+///    by Gaussian elimination with partial pivoting between adjacent rows, O(N^2), then
+///    q = Q_q z. No eigenvectors, so no ill-conditioned basis to check.
+/// Before prepare() (or for an empty model) each response is an n x n complex LU.
 struct SecondOrderResponse {
   Eigen::MatrixXd M, C, K, Bq, Cd, Cv, Ca, D;
   Eigen::MatrixXcd response(double omega) const;
-  /// Decides the modal path once (one symmetric eigen solution); call after filling.
+  /// Chooses the path once (one symmetric eigen solution, or one Hessenberg
+  /// reduction); call after filling.
   void prepare();
   bool modal() const { return modal_; }
-  /// Any damping: answers through the first-order model's state modes from then on,
-  ///     q = V_q diag(1 / (i w - lambda)) W [0; M^-1 f]   for a force f,
-  /// refined once on the second-order residual f - (K - w^2 M + i w C) q, if that
-  /// reproduces the LU's responses to 1e-10 of each response's largest entry at
-  /// `check_omegas` (an ill-conditioned eigenvector basis keeps the LU). O(n N) per
-  /// frequency instead of O(n^3). Returns whether it switched.
-  bool adoptStateModes(const StateModes& modes, const std::vector<double>& check_omegas);
-  bool stateModal() const { return state_modal_; }
+  bool hessenberg() const { return hessenberg_; }
 
  private:
-  bool modal_ = false, state_modal_ = false;
-  Eigen::VectorXcd lambda_;
-  Eigen::MatrixXcd Vq_, Wv_, WB_;  ///< V's q rows; W's q' columns times M^-1; Wv_ Bq.
+  void prepareHessenberg();
+  Eigen::MatrixXcd hessenbergResponse(double w) const;
+  bool modal_ = false, hessenberg_ = false;
   Eigen::VectorXd w2_, c_;                   ///< per mode: omega_k^2, Phi^T C Phi diagonal.
-  Eigen::MatrixXd P_, Od_, Ov_, Oa_;         ///< Phi^T Bq; Cd Phi, Cv Phi, Ca Phi.
+  Eigen::MatrixXd P_, Od_, Ov_, Oa_;         ///< Phi^T Bq; Cd Phi, Cv Phi, Ca Phi (Hessenberg: D1; C1 D Q).
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;  ///< Hessenberg, rows contiguous.
+  Eigen::MatrixXd Bh_;                       ///< Q^T D^-1 [0; M^-1 Bq].
+  Eigen::MatrixXd DQ_, QtDinv_, Minv_;       ///< D Q, Q^T D^-1, M^-1 (the refinement step).
 };
 
 /// A solved scene with its linear model.
@@ -144,7 +140,6 @@ struct ReducedModel {
   int unseen_modes = 0;  ///< of the discarded, those no input-output pair sees (drop_unseen).
   bool residualized = false;
   std::vector<double> kept_frequencies_hz;
-  StateModes full_modes;  ///< of the full model (SecondOrderResponse::adoptStateModes).
 };
 
 /// Modal reduction of a first-order model (the HAM-SAS authors' method, docs/sources.md section 3): right and left
@@ -164,6 +159,10 @@ struct ModelError {
 ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std::vector<double>& omegas);
 /// The same with the full model in second-order form (the reduced one, b, in first order).
 ModelError compareResponses(const SecondOrderResponse& a, const StateSpace& b, const std::vector<double>& omegas);
+/// The same with the full model's responses at `omegas` already computed (fullResponses).
+ModelError compareResponses(const std::vector<Eigen::MatrixXcd>& a, const StateSpace& b, const std::vector<double>& omegas);
+/// The full model's response at each frequency (rad/s), computed once for every use.
+std::vector<Eigen::MatrixXcd> fullResponses(const SecondOrderResponse& h, const std::vector<double>& omegas);
 
 /// The HAM-SAS authors' cross-check (docs/sources.md section 3): eigenvalues of an implicit integrator's Jacobian
 /// J(c) = E - c A (F = E y' - A y, dCoef = c) from the pencil J(-c) v = Lambda J(c) v,
@@ -181,6 +180,8 @@ std::vector<double> logFrequencies(double f0_hz, double f1_hz, int n);
 struct PeakTable {
   Eigen::MatrixXd hz, magnitude;
 };
-PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f);
+/// `grid`: h's responses at f (fullResponses of 2 pi f), or empty to compute them.
+PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f,
+                       const std::vector<Eigen::MatrixXcd>& grid = {});
 
 }  // namespace mmv
