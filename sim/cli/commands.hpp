@@ -25,6 +25,7 @@ enum ExitCode : int {
   kUnavailable = 69,      ///< a part of the installation is missing (the SUNDIALS plugin).
   kInternal = 70,         ///< a bug: please report it.
   kCannotCreate = 73,     ///< the output cannot be written (or would replace files).
+  kIoError = 74,          ///< standard output cannot be written (a full disk, a closed pipe).
 };
 
 struct SceneArgs {

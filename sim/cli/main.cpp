@@ -1,9 +1,15 @@
 // mmvlab: ground-test planning for flexible multibody test articles.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
 #include "sim/cli/commands.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
 
 namespace {
@@ -29,8 +35,25 @@ CLI::Validator integratorName() {
       "INTEGRATOR");
 }
 
+/// A finite number above 0 (or at least 0), named in the message without CLI11's
+/// 309-digit upper bound.
+CLI::Validator positive(bool zero_allowed = false) {
+  return CLI::Validator(
+      [zero_allowed](std::string& v) {
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        const bool ok = end != v.c_str() && *end == '\0' && std::isfinite(x) && (zero_allowed ? x >= 0 : x > 0);
+        if (ok) return std::string();
+        return "must be a finite number " + std::string(zero_allowed ? "of at least 0" : "above 0") + ", got '" + v + "'";
+      },
+      zero_allowed ? "NONNEGATIVE" : "POSITIVE");
+}
+
 void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
-  cmd->add_option("scene", a.scene_path, "Scene file (YAML); default: the embedded MMV article scene");
+  cmd->add_option("scene", a.scene_path, "Scene file (YAML); default: the embedded MMV article scene")
+      ->check(CLI::Validator(
+          [](std::string& v) { return v.empty() ? std::string("empty scene path (omit it for the embedded default scene)") : ""; },
+          "PATH"));
   cmd->add_option("--segments", a.segments, "Segments per flexible link, overriding the scene")
       ->check(CLI::Range(1, mmv::limits::kMaxSegments));
   cmd->add_flag("--no-gravity", a.no_gravity, "Set gravity to zero (the report's TREETOPS run had none)");
@@ -45,7 +68,7 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
   CLI::App* m = app.add_subcommand("modes", "Static equilibrium with the torquers holding, then the system modes");
   addSceneOptions(m, modes);
   m->add_flag("--json", modes.json, "Print JSON (docs/outputs.md) instead of tables");
-  m->add_option("--modes", modes.modes, "Number of modes to report (0: all)")->capture_default_str()->check(CLI::NonNegativeNumber);
+  m->add_option("--modes", modes.modes, "Number of modes to report (0: all)")->capture_default_str()->check(positive(true));
   m->add_option("--points", modes.points,
                 "Comma-separated points or stations whose mode shapes are tabulated, e.g. link1@0.5,link3a@0.762m,link2.tip")
       ->delimiter(',');
@@ -145,9 +168,9 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateArgs& sim) {
           "(0,1)"));
   si->add_option("--absolute-tolerance", sim.absolute_tolerance,
                  "SUNDIALS integrators: absolute tolerance (m, rad, m/s, rad/s; default: the scene's, else the accuracy)")
-      ->check(CLI::PositiveNumber);
-  si->add_option("--duration", sim.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);
-  si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(CLI::PositiveNumber);
+      ->check(positive());
+  si->add_option("--duration", sim.duration, "Seconds (default: the scene's)")->check(positive());
+  si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(positive());
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");
   si->add_flag("--force", sim.force, "Replace files of the same names in --out");
   return si;
@@ -163,12 +186,12 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
       ->check(integratorName());
   tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
   tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
-  tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(CLI::PositiveNumber);
+  tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(positive());
   tp->add_option("--points", tr.points, "Comma-separated link tips or stations the error is scored at, e.g. link3a.tip,link1@0.5 (default: every tip)")
       ->delimiter(',');
   tp->add_option("--target-error", tr.target_error, "Error to meet, m (the cheapest run within it is named)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   tp->add_option("--out", tr.out, "Write trade.csv, trade.json and trade.png here");
   tp->add_flag("--force", tr.force, "Replace files of the same names in --out");
   return tp;
@@ -183,7 +206,7 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   p->add_option("--modes", ps.modes, "Target modes, e.g. 1-8 or 1,3,5-7 (default: every mode below --below-hz)");
   p->add_option("--below-hz", ps.below_hz, "Target every vibration mode below this frequency, Hz")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   p->add_option("--count", ps.count, "Sensors to place (triaxial: blocks)")->capture_default_str()->check(CLI::Range(1, 100000));
   p->add_option("--spacing", ps.spacing, "Distance between candidate stations along each link, m")
       ->capture_default_str()
@@ -203,13 +226,13 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& r) {
   c->add_option("--view", r.view, "front, side, top, iso (framing the article), lab (the whole room of a scene with lab:), sensor:NAME (close up on a scene sensor), or a view the scene names (views:)")->capture_default_str();
   c->add_option("--mode", r.mode, "A mode (K) or a range (K1-K2: a contact sheet); none: the static equilibrium");
   c->add_option("--scale", r.scale, "Drawing metres per unit modal coordinate (default: the largest translation 10 % of the article)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive());
   c->add_option("--size", r.size, "WIDTHxHEIGHT in pixels")->capture_default_str();
   c->add_option("--history", r.history, "A `mmvlab simulate --out` directory: draw the run (video, or a still --at a time)");
   c->add_option("--fps", r.fps, "History videos: frames per second")->check(CLI::Range(1.0, 240.0))->capture_default_str();
   c->add_option("--speed", r.speed, "History videos: run seconds per video second (0.25: slow motion)")
       ->check(CLI::Range(1e-3, 1e3))->capture_default_str();
-  c->add_option("--at", r.at, "History stills (.png): the run time in s (default: the run's end)")->check(CLI::NonNegativeNumber);
+  c->add_option("--at", r.at, "History stills (.png): the run time in s (default: the run's end)")->check(positive(true));
   c->add_option("--traces", r.traces, "History: comma-separated sensors or history.csv columns drawn in an inset")->delimiter(',');
   c->add_option("--out", r.out, "The file: .png (a frame or a contact sheet), .mp4 or .avi (a mode's cycle or a run)")->required();
   c->add_flag("--force", r.force, "Replace the file if it exists");
@@ -280,25 +303,46 @@ int main(int argc, char** argv) {
 
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
 
+  if (argc > 1 && argv[1][0] != '-') {  // a misspelt command: CLI11 would only say one is required
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      std::cerr << "mmvlab: unknown command '" << mmv::printable(argv[1]) << "'" << mmv::didYouMean(argv[1], names)
+                << "; commands: " << list << " (mmvlab --help)\n";
+      return kUsage;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? kOk : kUsage;
   }
-  if (m->parsed()) return runModesCommand(modes);
-  if (c->parsed()) return runConvergeCommand(conv);
-  if (ch->parsed()) return runCheckCommand(ck);
-  if (dsw->parsed()) return runDesignSweepCommand(ds);
-  if (smg->parsed()) return runSweepMergeCommand(sm);
-  if (cp->parsed()) return runCompareCommand(cmp);
-  if (sp->parsed()) return runSweepCommand(sw);
-  lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
-  if (si->parsed()) return runSimulateCommand(sim);
-  if (tp->parsed()) return runTradeCommand(tr);
-  if (pl->parsed()) return runPlaceSensorsCommand(ps);
-  if (rn->parsed()) return mmv::figures::renderCommand(rd);
-  if (fr->parsed()) return runFrfCommand(lin);
-  if (ro->parsed()) return runRomCommand(lin);
-  return runSceneCommand();
+  const auto run = [&]() -> int {
+    if (m->parsed()) return runModesCommand(modes);
+    if (c->parsed()) return runConvergeCommand(conv);
+    if (ch->parsed()) return runCheckCommand(ck);
+    if (dsw->parsed()) return runDesignSweepCommand(ds);
+    if (smg->parsed()) return runSweepMergeCommand(sm);
+    if (cp->parsed()) return runCompareCommand(cmp);
+    if (sp->parsed()) return runSweepCommand(sw);
+    lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
+    if (si->parsed()) return runSimulateCommand(sim);
+    if (tp->parsed()) return runTradeCommand(tr);
+    if (pl->parsed()) return runPlaceSensorsCommand(ps);
+    if (rn->parsed()) return mmv::figures::renderCommand(rd);
+    if (fr->parsed()) return runFrfCommand(lin);
+    if (ro->parsed()) return runRomCommand(lin);
+    return runSceneCommand();
+  };
+  const int code = run();
+  // A full disk or a closed pipe behind stdout is a failure, not a success.
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "mmvlab: cannot write to standard output (disk full or pipe closed?)\n";
+    return code == kOk ? kIoError : code;
+  }
+  return code;
 }

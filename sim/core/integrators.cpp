@@ -1,5 +1,7 @@
 #include "sim/core/integrators.hpp"
 
+#include "sim/core/text.hpp"
+
 #include <algorithm>
 
 namespace mmv {
@@ -41,31 +43,10 @@ std::string integratorNames() {
   return out;
 }
 
-namespace {
-std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-}  // namespace
-
 std::string integratorSuggestion(const std::string& name) {
-  const IntegratorInfo* best = nullptr;
-  std::size_t best_d = 3;  // at most two edits away
-  for (const auto& i : integratorTable()) {
-    const std::size_t d = editDistance(name, i.name);
-    if (d < best_d) best_d = d, best = &i;
-  }
-  return best ? std::string(" (did you mean '") + best->name + "'?)" : std::string();
+  std::vector<std::string> names;
+  for (const auto& i : integratorTable()) names.push_back(i.name);
+  return didYouMean(name, names);
 }
 
 }  // namespace mmv

@@ -38,6 +38,8 @@ constexpr int kMaxSegments = 4096;         ///< segments per flexible link.
 /// in ms), not a plan.
 constexpr double kMaxSamples = 1e6;
 constexpr double kMinAccuracy = 1e-14;     ///< integrator relative accuracy, exclusive of 0 and 1.
+/// A scene file: the shipped ones are a few kB; 16 MB is a mistake (a CSV or a binary).
+constexpr long kMaxSceneBytes = 16L << 20;
 }  // namespace limits
 
 }  // namespace mmv

@@ -1,5 +1,6 @@
 #include "sim/core/text.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cctype>
 
@@ -63,6 +64,56 @@ std::string shortest(double v) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
+}
+
+namespace {
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+}  // namespace
+
+std::string printable(const std::string& s) {
+  std::string out;
+  const auto hex = [&](unsigned char c) { out += strf("\\x%02X", c); };
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7f) {
+      hex(c), ++i;
+      continue;
+    }
+    // UTF-8: the sequence's length from its lead byte, then continuation bytes 10xxxxxx.
+    const std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    bool ok = len > 0 && i + len <= s.size();
+    for (std::size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
+    if (!ok) {
+      hex(c), ++i;
+      continue;
+    }
+    out.append(s, i, len);
+    i += len;
+  }
+  return out;
+}
+
+std::string didYouMean(const std::string& name, const std::vector<std::string>& known) {
+  const std::string* best = nullptr;
+  std::size_t best_d = 3;  // at most two edits away
+  for (const auto& k : known) {
+    const std::size_t d = editDistance(name, k);
+    if (d < best_d) best_d = d, best = &k;
+  }
+  return best ? " (did you mean '" + *best + "'?)" : std::string();
 }
 
 }  // namespace mmv

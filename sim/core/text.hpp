@@ -25,6 +25,14 @@ class Table {
 /// 0.0025, not 0.0025000000000000001.
 std::string shortest(double v);
 
+/// " (did you mean 'x'?)" for the entry of `known` closest to `name` (at most two
+/// edits away, Levenshtein), or "" when none is that close.
+std::string didYouMean(const std::string& name, const std::vector<std::string>& known);
+
+/// `s` safe to print on a terminal: control bytes and bytes that are not valid UTF-8
+/// become \xNN (a user's file name or value is echoed, never raw bytes).
+std::string printable(const std::string& s);
+
 /// printf into a std::string.
 std::string strf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 

@@ -1,11 +1,17 @@
 // Scene files: loading (bounded, regular files only), parsing into the kind of scene
 // the top-level keys say, the embedded default. Sections are read in read_*.cpp.
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
 #include "sim/scene/reader_util.hpp"
 
 namespace mmv {
@@ -125,13 +131,23 @@ std::string overrideSuffix(const std::vector<std::string>& sets) {
 }
 
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw SceneFileError(path + ": is a directory, not a scene file");
+  const std::string shown = printable(path);
+  if (path.empty()) throw SceneFileError("empty scene path");
+  // Only a regular file: a directory, a device (/dev/zero never ends) or a FIFO (blocks
+  // until a writer comes) is refused before it is opened.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw SceneFileError(shown + ": cannot open scene file: " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw SceneFileError(shown + ": is a directory, not a scene file");
+  if (!S_ISREG(st.st_mode)) throw SceneFileError(shown + ": is not a regular file (a device, FIFO or socket), not a scene file");
+  if (st.st_size > limits::kMaxSceneBytes) {
+    throw SceneFileError(shown + ": " + std::to_string(st.st_size) + " bytes; a scene file is at most " +
+                         std::to_string(limits::kMaxSceneBytes) + " bytes");
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneFileError(path + ": cannot open scene file");
+  if (!in) throw SceneFileError(shown + ": cannot open scene file: " + std::strerror(errno));
   std::ostringstream os;
   os << in.rdbuf();
-  if (in.bad()) throw SceneFileError(path + ": cannot read scene file");
+  if (in.bad()) throw SceneFileError(shown + ": cannot read scene file");
   return parseScene(os.str(), path, sets);
 }
 
