@@ -21,7 +21,7 @@ std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySyste
   std::string tried;
   for (const auto& path : candidates) {
     // Loaded once per process and kept: the steppers it creates run its code.
-    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
       tried += (tried.empty() ? "" : "; ") + path + " (" + ::dlerror() + ")";
       continue;

@@ -1,10 +1,12 @@
 #pragma once
 /// An integrator that lives outside the main program: SUNDIALS (CVODE, ARKODE, IDA) is loaded from a
-/// plugin (libmmvlab_sundials.so) with dlopen(RTLD_LOCAL | RTLD_DEEPBIND), because
-/// Debian's libSimTKmath exports its own, older copy of SUNDIALS' N_Vector and CVODE
-/// symbols (for Simbody's CPodes): linked into one program the two interpose on each
-/// other and crash. Deep binding makes the plugin and SUNDIALS 6 resolve their symbols
-/// among themselves first. Errors cross the boundary as strings, not exceptions.
+/// plugin (libmmvlab_sundials.so) with dlopen(RTLD_LOCAL), because Debian's libSimTKmath
+/// exports its own, older copy of SUNDIALS' N_Vector and CVODE symbols (for Simbody's
+/// CPodes): linked into one program the two interpose on each other and crash. The
+/// plugin carries SUNDIALS 6 from its static archives with every symbol hidden
+/// (--exclude-libs, -Bsymbolic), so its calls bind inside it; it exports only its
+/// factory. (It used RTLD_DEEPBIND before, which AddressSanitizer's runtime refuses.)
+/// Errors cross the boundary as strings, not exceptions.
 
 #include <Simbody.h>
 

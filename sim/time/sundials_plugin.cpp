@@ -330,7 +330,7 @@ class CvodeStepper : public ExternalStepper {
 }  // namespace
 }  // namespace mmv
 
-extern "C" mmv::ExternalStepper* mmv_create_sundials_stepper(const SimTK::MultibodySystem* system, int method, double rtol,
+extern "C" __attribute__((visibility("default"))) mmv::ExternalStepper* mmv_create_sundials_stepper(const SimTK::MultibodySystem* system, int method, double rtol,
                                                             double atol) {
   if (method < 0 || method > 4) return nullptr;
   return new mmv::CvodeStepper(*system, static_cast<mmv::SundialsIntegrator::Method>(method), rtol, atol);

@@ -90,3 +90,26 @@ TEST_F(Cli, FullStandardOutputIsAFailure) {
 }
 
 }  // namespace
+
+namespace {
+
+// The SUNDIALS plugin carries its own SUNDIALS 6 with every symbol hidden, so it cannot
+// interpose on (or be interposed by) the older copy inside Debian's libSimTKmath, and
+// needs no RTLD_DEEPBIND (which sanitizers refuse): its dynamic symbol table defines the
+// factory and no SUNDIALS name, and it needs no SUNDIALS shared library. (Running
+// Simbody's CPodes and the plugin's integrators in one process is
+// Simulation.FlexibleSlewIntegratorsAgree.)
+TEST_F(Cli, SundialsPluginExportsOnlyItsFactory) {
+  const fs::path plugin = fs::path(MMVLAB_BINARY).parent_path() / "libmmvlab_sundials.so";
+  ASSERT_TRUE(fs::exists(plugin));
+  const fs::path syms = dir_ / "syms", libs = dir_ / "libs";
+  ASSERT_EQ(std::system(("nm -D --defined-only " + plugin.string() + " >" + syms.string()).c_str()), 0);
+  ASSERT_EQ(std::system(("ldd " + plugin.string() + " >" + libs.string()).c_str()), 0);
+  const std::string defined = slurp(syms);
+  EXPECT_NE(defined.find(" T mmv_create_sundials_stepper"), std::string::npos) << defined;
+  for (const char* name : {"CVode", "ARKStep", "IDA", "N_V", "SUN"})
+    EXPECT_EQ(defined.find(std::string(" ") + name), std::string::npos) << name << " exported:\n" << defined;
+  EXPECT_EQ(slurp(libs).find("libsundials"), std::string::npos) << slurp(libs);
+}
+
+}  // namespace
