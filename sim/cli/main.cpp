@@ -302,6 +302,9 @@ int main(int argc, char** argv) {
   const auto [dsw, smg] = addDesignSweepCommands(app, ds, sm);
 
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
+  for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (CLI::Option* o = sub->get_option_no_throw("--out"))
+      o->check(CLI::Validator([](std::string& v) { return v.empty() ? std::string("empty path") : std::string(); }, "PATH"));
 
   if (argc > 1 && argv[1][0] != '-') {  // a misspelt command: CLI11 would only say one is required
     std::vector<std::string> names;

@@ -8,9 +8,16 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "support/cli.hpp"
 
@@ -110,6 +117,124 @@ TEST_F(Cli, SundialsPluginExportsOnlyItsFactory) {
   for (const char* name : {"CVode", "ARKStep", "IDA", "N_V", "SUN"})
     EXPECT_EQ(defined.find(std::string(" ") + name), std::string::npos) << name << " exported:\n" << defined;
   EXPECT_EQ(slurp(libs).find("libsundials"), std::string::npos) << slurp(libs);
+}
+
+}  // namespace
+
+namespace {
+
+/// Starts `args` (split on spaces) as a child with stdout and stderr discarded.
+pid_t spawn(const std::vector<std::string>& args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::FILE* null = std::freopen("/dev/null", "w", stdout);
+    null = std::freopen("/dev/null", "w", stderr);
+    (void)null;
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream is(s);
+  for (std::string w; is >> w;) out.push_back(w);
+  return out;
+}
+
+/// A CSV without its wall-time-dependent columns (trade's cpu_s and pareto), for
+/// comparing two runs' files.
+std::string withoutTimedColumns(const std::string& csv) {
+  std::istringstream in(csv);
+  std::vector<bool> keep;
+  std::string line, out;
+  for (bool header = true; std::getline(in, line); header = false) {
+    std::vector<std::string> cells;
+    std::istringstream ls(line);
+    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+    if (header)
+      for (const auto& c : cells) keep.push_back(c != "cpu_s" && c != "pareto");
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (i >= keep.size() || keep[i]) out += cells[i] + ",";
+    out += "\n";
+  }
+  return out;
+}
+
+/// Entries of `dir` whose names start with the staging prefix.
+int stagingLeft(const fs::path& dir) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().rfind(".mmvlab-staging-", 0) == 0;
+  return n;
+}
+
+// SIGKILL (which no handler sees) and SIGINT at seeded random moments of a simulate and
+// a trade run with --out: the directory is either absent or holds every file of a
+// complete run, the data files equal to an undisturbed run's; a SIGINT leaves
+// no staging directory, and the next run sweeps away those a SIGKILL left.
+TEST_F(Cli, KilledRunsLeaveNoPartialFile) {
+  struct Case {
+    std::string args;      // after the binary; OUT is appended
+    std::string data;      // a data file to compare with the undisturbed run's (timed columns aside)
+  };
+  const std::vector<Case> cases{
+      {"simulate " MMVLAB_SOURCE_DIR "/scenes/mmv-slew.yaml --segments 2 --duration 2 --sample-rate 2000 --out", "history.csv"},
+      {"trade " MMVLAB_SOURCE_DIR "/scenes/mmv-slew.yaml --integrators rk_merson,cvode_bdf --accuracies 1e-3,1e-5 "
+       "--segment-ladder 2,4 --duration 0.5 --out",
+       "trade.csv"}};
+  std::mt19937 rng(20261123);
+  for (const Case& c : cases) {
+    const fs::path ref = dir_ / "ref";
+    fs::remove_all(ref);
+    const auto t0 = std::chrono::steady_clock::now();
+    ASSERT_EQ(run(c.args + " " + ref.string()).code, 0) << c.args;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::set<std::string> names;
+    for (const auto& e : fs::directory_iterator(ref)) names.insert(e.path().filename().string());
+    const std::string data = withoutTimedColumns(slurp(ref / c.data));
+    for (int k = 0; k < 6; ++k) {
+      const int sig = k % 3 == 2 ? SIGINT : SIGKILL;
+      const fs::path out = dir_ / (c.data + "-run" + std::to_string(k));
+      const pid_t pid = spawn(split(std::string(MMVLAB_BINARY) + " " + c.args + " " + out.string()));
+      ASSERT_GT(pid, 0);
+      std::this_thread::sleep_for(std::chrono::duration<double>(std::uniform_real_distribution<double>(0, 1.2 * seconds)(rng)));
+      ::kill(pid, sig);
+      int status = 0;
+      ::waitpid(pid, &status, 0);
+      if (fs::exists(out)) {
+        std::set<std::string> got;
+        for (const auto& e : fs::directory_iterator(out))
+          if (e.path().filename().string().rfind(".mmvlab-staging-", 0) != 0) got.insert(e.path().filename().string());
+        EXPECT_EQ(got, names) << c.args << ", signal " << sig << " after the run had made " << out;
+        EXPECT_EQ(withoutTimedColumns(slurp(out / c.data)), data) << c.args << ", signal " << sig;
+      }
+      if (sig == SIGINT) EXPECT_EQ(stagingLeft(dir_), 0) << "SIGINT left a staging directory";
+    }
+  }
+  // The next run in the same place removes what the SIGKILLs left.
+  ASSERT_EQ(run("modes --segments 2 --json >/dev/null; " + std::string(MMVLAB_BINARY) + " compare --segments 2 --out " +
+                (dir_ / "after").string()).code, 0);
+  EXPECT_EQ(stagingLeft(dir_), 0);
+}
+
+TEST_F(Cli, EmptyOutIsAUsageError) {
+  const Result r = run("modes --segments 2 --out \"\" ");
+  EXPECT_NE(r.code, 0);
+  const Result c = run("compare --segments 2 --out \"\"");
+  EXPECT_EQ(c.code, 64);
+  EXPECT_NE(c.err.find("empty path"), std::string::npos) << c.err;
+}
+
+// Nothing is created for a run that fails: --out under missing parents stays absent.
+TEST_F(Cli, FailedRunCreatesNoDirectory) {
+  const fs::path out = dir_ / "a" / "b" / "c";
+  const Result r = run("compare " + (dir_ / "missing.yaml").string() + " --out " + out.string());
+  EXPECT_EQ(r.code, 66);
+  EXPECT_FALSE(fs::exists(dir_ / "a"));
 }
 
 }  // namespace
