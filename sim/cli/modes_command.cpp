@@ -7,6 +7,7 @@
 #include "sim/io/report.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/modes/system_modes.hpp"
+#include "sim/plan/check.hpp"
 
 namespace mmv::cli {
 
@@ -19,7 +20,8 @@ int runModesCommand(const ModesArgs& args) {
     opt.max_modes = args.modes;
     opt.with_shapes = args.json;
     opt.points = checkedPoints(args.points, scene.article, "--points");
-    const ModesReport rep = runModes(scene, opt);
+    ModesReport rep = runModes(scene, opt);
+    for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
     const std::string out = args.json ? modesToJson(rep).dump(2) + "\n" : formatModesText(rep);
     std::cout << out << std::flush;
     return kOk;

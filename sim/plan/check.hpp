@@ -80,4 +80,9 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options = {}
 /// margin and verdict of a line from demand and capacity (exposed for the tests).
 void judge(CheckLine& line, double required_margin_pct);
 
+/// Warnings that name a likely unit mistake (a density in g/cm^3, a length in mm, a
+/// 500 kg link, a deflection of a tenth of the article, a first mode outside 0.01 Hz to
+/// 10 kHz): the plausibility lines of `check`, also printed by `modes`.
+std::vector<std::string> plausibilityWarnings(const ArticleScene& scene, const ModesReport& modes);
+
 }  // namespace mmv

@@ -135,8 +135,10 @@ void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out) {
                          "from the base, along the floor's length, " + when, 0));
 }
 
-void addPlausibilityLines(const CheckInputs& in, std::vector<CheckLine>& out) {
-  const ArticleSpec& a = in.scene.article;
+}  // namespace mmv::plan
+
+std::vector<std::string> mmv::plausibilityWarnings(const ArticleScene& scene, const ModesReport& modes) {
+  const ArticleSpec& a = scene.article;
   std::vector<std::string> warnings;
   for (const auto& m : a.materials) {
     if (m.density > 25000) warnings.push_back(strf("materials.%s.density %.4g kg/m^3 is above any metal's: g/cm^3 times 1000 twice, or lb/ft^3?", m.name.c_str(), m.density));
@@ -153,16 +155,25 @@ void addPlausibilityLines(const CheckInputs& in, std::vector<CheckLine>& out) {
       warnings.push_back(strf("link %s weighs %.4g kg: check the units of its length, section and density", l.name.c_str(), m->density * sectionArea(*s) * l.length));
   }
   double deflection = 0, size = 0;
-  for (const auto& p : in.modes.points) deflection = std::max(deflection, std::hypot(p.dx, p.dy));
+  for (const auto& p : modes.points) deflection = std::max(deflection, std::hypot(p.dx, p.dy));
   for (const auto& l : a.links) size += l.length;
   if (size > 0 && deflection > 0.1 * size)
     warnings.push_back(strf("the static deflection %.3g m is %.0f %% of the article's length: far from small (check the units of sections and moduli if unexpected)", deflection, 100 * deflection / size));
-  for (const auto& mode : in.modes.modes)
+  for (const auto& mode : modes.modes)
     if (mode.stable && !mode.rigid_body && mode.frequency_hz > 0) {
       if (mode.frequency_hz < 0.01 || mode.frequency_hz > 1e4)
         warnings.push_back(strf("the first flexible mode at %.4g Hz is outside any lab article's range: check the units", mode.frequency_hz));
       break;
     }
+  return warnings;
+}
+
+namespace mmv::plan {
+
+void addPlausibilityLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+  const std::vector<std::string> warnings = plausibilityWarnings(in.scene, in.modes);
+  double deflection = 0;
+  for (const auto& p : in.modes.points) deflection = std::max(deflection, std::hypot(p.dx, p.dy));
   for (const auto& w : warnings) {
     CheckLine l = makeLine("plausibility", "plausibility.warning", w, 0, 0, "", "likely a unit mistake", 0);
     l.verdict = Verdict::Warn;

@@ -238,3 +238,20 @@ TEST_F(Cli, FailedRunCreatesNoDirectory) {
 }
 
 }  // namespace
+
+namespace {
+
+// A length meant in mm (the 2,660 kg article with a kilometre of sag) is named
+// as a likely unit mistake by `modes` too, not only by `check`; the shipped scene is not.
+TEST_F(Cli, ModesNamesALikelyUnitMistake) {
+  const Result bad = run("modes --segments 2 --set links.link1.length=2440");
+  EXPECT_EQ(bad.code, 0) << bad.err;
+  EXPECT_NE(bad.out.find("warning: likely a unit mistake: links.link1.length 2440 m"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("given in mm"), std::string::npos);
+  const Result json = run("modes --segments 2 --json --set links.link1.length=2440");
+  EXPECT_NE(json.out.find("\"warnings\""), std::string::npos);
+  const Result good = run("modes --segments 2");
+  EXPECT_EQ(good.out.find("likely a unit mistake"), std::string::npos) << good.out;
+}
+
+}  // namespace
