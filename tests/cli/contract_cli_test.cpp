@@ -255,3 +255,19 @@ TEST_F(Cli, ModesNamesALikelyUnitMistake) {
 }
 
 }  // namespace
+
+namespace {
+
+// Segments per link are bounded where dense matrices still fit (1024: 4096 DOF, 1.3 GB;
+// 4096 would need about 20 GB): above it the option is a usage error and the scene key
+// a scene error with its position, before any model is built.
+TEST_F(Cli, SegmentCountIsBounded) {
+  const Result opt = run("modes --segments 1025");
+  EXPECT_EQ(opt.code, 64);
+  EXPECT_NE(opt.err.find("1025"), std::string::npos) << opt.err;
+  const Result key = run("modes " MMVLAB_SOURCE_DIR "/scenes/two-link-demo.yaml --set links.upper.segments=4096");
+  EXPECT_EQ(key.code, 65) << key.err;
+  EXPECT_NE(key.err.find("segments must be an integer from 1 to 1024"), std::string::npos) << key.err;
+}
+
+}  // namespace
