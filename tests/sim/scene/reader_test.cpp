@@ -122,7 +122,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"I <= 0", "bar: {shape: rectangle, b: 0.02, h: 0.01}", "bar: {shape: explicit, area: 1e-4, second_moment: -1e-9}",
                 "s.yaml:6:53: sections.bar.second_moment must be > 0 m^4 (got -1e-9)"},
         BadCase{"segments < 1", "    segments: 4", "    segments: 0",
-                "s.yaml:20:15: links[0].segments must be an integer from 1 to 4096 or 'rigid' (got 0)"},
+                "s.yaml:20:15: links[0].segments must be an integer from 1 to 1024 or 'rigid' (got 0)"},
         BadCase{"unknown material", "    material: steel\n    section: bar\n    length: 1.0",
                 "    material: steal\n    section: bar\n    length: 1.0",
                 "s.yaml:17:15: links[0].material: unknown material 'steal' (known: steel)"},
