@@ -1,5 +1,7 @@
 #include "sim/cli/commands.hpp"
 
+#include "sim/core/text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -38,8 +40,8 @@ std::vector<std::string> checkedPoints(const std::vector<std::string>& names, co
     if (isStationName(n)) {
       if (!parseStation(n, article, error)) throw UsageError(option + ": " + error);
     } else if (std::find(points.begin(), points.end(), n) == points.end()) {
-      throw UsageError(option + ": unknown point '" + n +
-                       "' (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
+      throw UsageError(option + ": unknown point '" + n + "'" + didYouMean(n, points) +
+                       " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
                        "<link>@<m>m or <link>@<fraction>)");
     }
   }

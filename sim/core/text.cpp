@@ -107,13 +107,19 @@ std::string printable(const std::string& s) {
 }
 
 std::string didYouMean(const std::string& name, const std::vector<std::string>& known) {
-  const std::string* best = nullptr;
   std::size_t best_d = 3;  // at most two edits away
+  std::vector<const std::string*> best;
   for (const auto& k : known) {
     const std::size_t d = editDistance(name, k);
-    if (d < best_d) best_d = d, best = &k;
+    if (d >= 3) continue;
+    if (d < best_d) best_d = d, best.clear();
+    if (d == best_d && best.size() < 4) best.push_back(&k);
   }
-  return best ? " (did you mean '" + *best + "'?)" : std::string();
+  if (best.empty()) return std::string();
+  std::string out = " (did you mean ";
+  for (std::size_t i = 0; i < best.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == best.size() ? " or " : ", ") + ("'" + *best[i] + "'");
+  return out + "?)";
 }
 
 }  // namespace mmv

@@ -26,7 +26,8 @@ class Table {
 std::string shortest(double v);
 
 /// " (did you mean 'x'?)" for the entry of `known` closest to `name` (at most two
-/// edits away, Levenshtein), or "" when none is that close.
+/// edits away, Levenshtein; all entries at that distance, up to four: " (did you mean
+/// 'a', 'b' or 'c'?)"), or "" when none is that close.
 std::string didYouMean(const std::string& name, const std::vector<std::string>& known);
 
 /// `s` safe to print on a terminal: control bytes and bytes that are not valid UTF-8

@@ -123,7 +123,7 @@ class YamlReader {
       bool ok = false;
       for (const auto& a : allowed) ok = ok || a == k;
       if (!ok)
-        fail(key.Mark(), "unknown key '" + where + "' (allowed: " + joinNames(allowed) + ")");
+        fail(key.Mark(), "unknown key '" + where + "'" + didYouMean(k, allowed) + " (allowed: " + joinNames(allowed) + ")");
       out.emplace(k, it->second);
     }
     return out;
@@ -144,7 +144,7 @@ class YamlReader {
       if (x.name == name) return;
       names.push_back(x.name);
     }
-    fail(value.Mark(), path + ": unknown " + what + " '" + name + "' (known: " + joinNames(names) + ")");
+    fail(value.Mark(), path + ": unknown " + what + " '" + name + "'" + didYouMean(name, names) + " (known: " + joinNames(names) + ")");
   }
 
   const YAML::Node& require(const std::map<std::string, YAML::Node>& m, const YAML::Node& parent,

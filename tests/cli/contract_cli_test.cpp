@@ -271,3 +271,22 @@ TEST_F(Cli, SegmentCountIsBounded) {
 }
 
 }  // namespace
+
+namespace {
+
+// Misspelt scene keys and point names get the closest valid ones (every one at the
+// smallest edit distance), before the full list.
+TEST_F(Cli, MisspeltKeysAndPointsGetSuggestions) {
+  const fs::path scene = write("typo.yaml", "name: x\nlinks: []\ngravty: 1\n");
+  const Result key = run("modes " + scene.string());
+  EXPECT_EQ(key.code, 65);
+  EXPECT_NE(key.err.find(":3:1: unknown key 'gravty' (did you mean 'gravity'?) (allowed:"), std::string::npos) << key.err;
+  const Result point = run("modes --points link3.tip");
+  EXPECT_EQ(point.code, 64);
+  EXPECT_NE(point.err.find("(did you mean 'link1.tip', 'link2.tip', 'link3a.tip' or 'link3b.tip'?)"), std::string::npos)
+      << point.err;
+  const Result far = run("modes --points zzzzzz");
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;  // nothing close: no guess
+}
+
+}  // namespace
