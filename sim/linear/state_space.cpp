@@ -110,12 +110,12 @@ void SecondOrderResponse::prepareHessenberg() {
   const Eigen::MatrixXd PMi = mlu.solve(rows(Ca).transpose()).transpose();  // (M symmetric)
   Eigen::MatrixXd C1(no, N);
   C1 << rows(Cd) - PMi * K, rows(Cv) - PMi * C;
-  Od_ = C1 * d.asDiagonal() * Q;
   DQ_ = d.asDiagonal() * Q;
+  C1DQ_ = C1 * DQ_;
   QtDinv_ = Q.transpose() * d.cwiseInverse().asDiagonal();
   Minv_ = mlu.inverse();
-  P_ = PMi * Bq + D;  // D1
-  hessenberg_ = H_.allFinite() && Bh_.allFinite() && Od_.allFinite();
+  D1_ = PMi * Bq + D;
+  hessenberg_ = H_.allFinite() && Bh_.allFinite() && C1DQ_.allFinite();
 }
 
 namespace {
@@ -184,7 +184,7 @@ Eigen::MatrixXcd SecondOrderResponse::hessenbergResponse(double w) const {
   // The correction solves (i w I - A1) dx = E^-1 r in the balanced Hessenberg basis.
   RowMajorXcd dz = real(QtDinv_, rhs);
   lu.solve(dz);
-  return real(Od_, Z + dz) + P_.cast<cd>();
+  return real(C1DQ_, Z + dz) + D1_.cast<cd>();
 }
 
 void SecondOrderResponse::prepare() {
@@ -226,13 +226,14 @@ Eigen::MatrixXcd SecondOrderResponse::response(double w) const {
 
 namespace {
 
-/// Largest |a - b| over the frequencies, relative to the peak of |a|, per pair.
-template <class Full>
-ModelError compareWith(const Full& a, const StateSpace& b, const std::vector<double>& omegas) {
+/// Largest |a - b| over the frequencies, relative to the peak of |a|, per pair;
+/// `full(k, w)` is a's response at omegas[k] = w.
+template <class FullAt>
+ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vector<double>& omegas) {
   const Eigen::Index no = b.C.rows(), ni = b.B.cols();
   Eigen::MatrixXd diff = Eigen::MatrixXd::Zero(no, ni), peak = Eigen::MatrixXd::Zero(no, ni);
-  for (double w : omegas) {
-    const Eigen::MatrixXcd ha = a.response(w), hb = b.response(w);
+  for (std::size_t k = 0; k < omegas.size(); ++k) {
+    const Eigen::MatrixXcd ha = full(k, omegas[k]), hb = b.response(omegas[k]);
     diff = diff.cwiseMax((ha - hb).cwiseAbs());
     peak = peak.cwiseMax(ha.cwiseAbs());
   }
@@ -248,29 +249,16 @@ ModelError compareWith(const Full& a, const StateSpace& b, const std::vector<dou
 }  // namespace
 
 ModelError compareResponses(const StateSpace& a, const StateSpace& b, const std::vector<double>& omegas) {
-  return compareWith(a, b, omegas);
+  return compareWith([&](std::size_t, double w) { return a.response(w); }, b, omegas);
 }
 
 ModelError compareResponses(const SecondOrderResponse& a, const StateSpace& b, const std::vector<double>& omegas) {
-  return compareWith(a, b, omegas);
+  return compareWith([&](std::size_t, double w) { return a.response(w); }, b, omegas);
 }
-
-namespace {
-/// Responses already computed, served in the order of the frequencies asked.
-struct Precomputed {
-  const std::vector<Eigen::MatrixXcd>& h;
-  const std::vector<double>& omegas;
-  Eigen::MatrixXcd response(double w) const {
-    const auto it = std::find(omegas.begin(), omegas.end(), w);
-    MMV_DEMAND(it != omegas.end());
-    return h[static_cast<std::size_t>(it - omegas.begin())];
-  }
-};
-}  // namespace
 
 ModelError compareResponses(const std::vector<Eigen::MatrixXcd>& a, const StateSpace& b, const std::vector<double>& omegas) {
   MMV_DEMAND(a.size() == omegas.size());
-  return compareWith(Precomputed{a, omegas}, b, omegas);
+  return compareWith([&](std::size_t k, double) { return a[k]; }, b, omegas);
 }
 
 std::vector<Eigen::MatrixXcd> fullResponses(const SecondOrderResponse& h, const std::vector<double>& omegas) {

@@ -97,10 +97,11 @@ struct SecondOrderResponse {
   Eigen::MatrixXcd hessenbergResponse(double w) const;
   bool modal_ = false, hessenberg_ = false;
   Eigen::VectorXd w2_, c_;                   ///< per mode: omega_k^2, Phi^T C Phi diagonal.
-  Eigen::MatrixXd P_, Od_, Ov_, Oa_;         ///< Phi^T Bq; Cd Phi, Cv Phi, Ca Phi (Hessenberg: D1; C1 D Q).
+  Eigen::MatrixXd P_, Od_, Ov_, Oa_;         ///< Phi^T Bq; Cd Phi, Cv Phi, Ca Phi.
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;  ///< Hessenberg, rows contiguous.
   Eigen::MatrixXd Bh_;                       ///< Q^T D^-1 [0; M^-1 Bq].
   Eigen::MatrixXd DQ_, QtDinv_, Minv_;       ///< D Q, Q^T D^-1, M^-1 (the refinement step).
+  Eigen::MatrixXd C1DQ_, D1_;                ///< outputs on the state (y = C1 x + D1), times D Q.
 };
 
 /// A solved scene with its linear model.

@@ -23,6 +23,16 @@ inline std::string slurp(const fs::path& p) {
   return os.str();
 }
 
+/// A fresh, empty directory under the system's temporary one, private to this process
+/// and the running test: `prefix`PID_TESTNAME.
+inline fs::path freshTestDir(const std::string& prefix) {
+  const fs::path d = fs::temp_directory_path() / (prefix + std::to_string(::getpid()) + "_" +
+                                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
 inline bool isPng(const fs::path& p) {
   const std::string head = slurp(p).substr(0, 8);
   return head == std::string("\x89PNG\r\n\x1a\n", 8);
@@ -35,11 +45,7 @@ struct Result {
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mmvlab_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = freshTestDir("mmvlab_cli_"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   Result run(const std::string& args) {

@@ -10,26 +10,17 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/cli.hpp"
+
 namespace mmv {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
+using cli_testing::slurp;
 
 class OutputDirTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    root_ = fs::temp_directory_path() / ("mmvlab_outdir_" + std::to_string(::getpid()) + "_" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-  }
+  void SetUp() override { root_ = cli_testing::freshTestDir("mmvlab_outdir_"); }
   void TearDown() override { fs::remove_all(root_); }
   fs::path root_;
 };
@@ -52,7 +43,7 @@ TEST_F(OutputDirTest, StagesInsideAnExistingDirectory) {
   for (const auto& e : fs::directory_iterator(root_)) staging += e.is_directory();
   EXPECT_EQ(staging, 1);  // DIR/.mmvlab-staging-PID-NAME: a mount point or a read-only parent works
   EXPECT_EQ(out.commit().size(), 1u);
-  EXPECT_EQ(read(root_ / "x.csv"), "1\n");
+  EXPECT_EQ(slurp(root_ / "x.csv"), "1\n");
 }
 
 // The second new file cannot be placed (its staged copy is gone): the commit fails and
@@ -66,8 +57,8 @@ TEST_F(OutputDirTest, ForcedCommitThatFailsRestoresTheOldFiles) {
   std::ofstream(b) << "new b\n";
   fs::remove(b);
   EXPECT_THROW(out.commit(), OutputError);
-  EXPECT_EQ(read(root_ / "a.csv"), "old a\n");
-  EXPECT_EQ(read(root_ / "b.csv"), "old b\n");
+  EXPECT_EQ(slurp(root_ / "a.csv"), "old a\n");
+  EXPECT_EQ(slurp(root_ / "b.csv"), "old b\n");
 }
 
 TEST_F(OutputDirTest, CommitWithoutForceRefusesToReplace) {
@@ -75,7 +66,7 @@ TEST_F(OutputDirTest, CommitWithoutForceRefusesToReplace) {
   OutputDir out(root_.string(), false);
   std::ofstream(out.stage("a.csv")) << "new a\n";
   EXPECT_THROW(out.commit(), OutputError);
-  EXPECT_EQ(read(root_ / "a.csv"), "old a\n");
+  EXPECT_EQ(slurp(root_ / "a.csv"), "old a\n");
 }
 
 TEST_F(OutputDirTest, AFileOrAnEmptyNameIsRefused) {

@@ -22,11 +22,7 @@ using cli_testing::slurp;
 
 class SweepRunner : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mmvlab_runner_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-  }
+  void SetUp() override { dir_ = cli_testing::freshTestDir("mmvlab_runner_"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   SweepRun run(const std::string& sub, int jobs, Shard shard = {}) {
