@@ -42,6 +42,8 @@ constexpr double kMaxSamples = 1e6;
 constexpr double kMinAccuracy = 1e-14;     ///< integrator relative accuracy, exclusive of 0 and 1.
 /// A scene file: the shipped ones are a few kB; 16 MB is a mistake (a CSV or a binary).
 constexpr long kMaxSceneBytes = 16L << 20;
+/// A table profile (CSV): 10^6 samples at 60 bytes a row.
+constexpr long kMaxProfileBytes = 64L << 20;
 }  // namespace limits
 
 }  // namespace mmv

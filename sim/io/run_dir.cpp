@@ -1,5 +1,9 @@
 #include "sim/io/run_dir.hpp"
 
+#include "sim/core/files.hpp"
+#include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -17,14 +21,10 @@ namespace mmv {
 namespace {
 
 std::string readText(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw SceneFileError(path + ": not found (is the directory a `mmvlab simulate --out` run of an article?)");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  if (!in) throw SceneFileError(path + ": cannot read");
-  return os.str();
+  std::string text, why;
+  if (!readInputFile(path, limits::kMaxProfileBytes, text, why))
+    throw SceneFileError(printable(path) + ": " + why + " (is the directory a `mmvlab simulate --out` run of an article?)");
+  return text;
 }
 
 std::vector<std::string> splitCommas(const std::string& line) {

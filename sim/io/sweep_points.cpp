@@ -1,6 +1,10 @@
 // The rows of `mmvlab sweep` (sim/io/sweep_points.hpp).
 #include "sim/io/sweep_points.hpp"
 
+#include "sim/core/files.hpp"
+#include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
+
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -199,11 +203,9 @@ SweepContext prepareSweep(const SweepSpec& spec) {
     c.scene_text = defaultSceneYaml();
     c.scene_source = "<default scene>";
   } else {
-    std::ifstream in(spec.scene_path, std::ios::binary);
-    if (!in) throw SceneFileError(spec.source + ": scene " + spec.scene_path + ": cannot open scene file");
-    std::ostringstream os;
-    os << in.rdbuf();
-    c.scene_text = os.str();
+    std::string why;
+    if (!readInputFile(spec.scene_path, limits::kMaxSceneBytes, c.scene_text, why))
+      throw SceneFileError(spec.source + ": scene " + printable(spec.scene_path) + ": cannot read scene file: " + why);
     c.scene_source = spec.scene_path;
   }
   if (spec.outputs.empty()) throw SceneError(spec.source + ": outputs: name at least one");

@@ -2,6 +2,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "sim/core/files.hpp"
+#include "sim/core/integrators.hpp"
 #include "sim/scene/programs.hpp"
 #include "sim/scene/reader_util.hpp"
 
@@ -56,11 +58,9 @@ TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std
     const YAML::Node& fn = need("file");
     std::filesystem::path file = r.text(fn, path + ".file");
     if (file.is_relative()) file = std::filesystem::path(r.file()).parent_path() / file;
-    std::ifstream in(file);
-    if (!in) r.fail(fn.Mark(), path + ".file: cannot read profile '" + file.string() + "'");
-    std::ostringstream os;
-    os << in.rdbuf();
-    tm.profile_csv = os.str();
+    std::string why;
+    if (!readInputFile(file.string(), limits::kMaxProfileBytes, tm.profile_csv, why))
+      r.fail(fn.Mark(), path + ".file: cannot read profile '" + file.string() + "': " + why);
     tm.profile_source = file.string();
   } else {
     r.fail(tn.Mark(), path + ".type: unknown program '" + t + "' (known: sine, sweep, random, csv)");

@@ -4,6 +4,9 @@
 #include <fstream>
 #include <random>
 
+#include "sim/core/files.hpp"
+#include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
 #include "sim/core/integrators.hpp"
 #include "sim/scene/reader_util.hpp"
 #include "sim/scene/sweep_spec.hpp"
@@ -145,13 +148,10 @@ SweepSpec parseSweepSpec(const std::string& text, const std::string& source, con
 }
 
 SweepSpec loadSweepSpec(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw SceneFileError(path + ": is a directory, not a sweep spec");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneFileError(path + ": cannot open sweep spec");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return parseSweepSpec(os.str(), path, std::filesystem::path(path).parent_path().string());
+  std::string text, why;
+  if (!readInputFile(path, limits::kMaxSceneBytes, text, why))
+    throw SceneFileError(printable(path) + ": cannot read sweep spec: " + why);
+  return parseSweepSpec(text, path, std::filesystem::path(path).parent_path().string());
 }
 
 std::vector<std::vector<double>> sweepPoints(const SweepSpec& spec) {

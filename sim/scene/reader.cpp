@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "sim/core/integrators.hpp"
+#include "sim/core/files.hpp"
 #include "sim/core/text.hpp"
 #include "sim/scene/reader_util.hpp"
 
@@ -114,12 +115,14 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name, c
     HamsasScene h = scene_detail::readHamsasScene(reader, root, source_name);
     h.text = yaml_text;
     h.overrides = sets;
+    h.positions = reader.sourceMap();
     if (!sets.empty()) h.source += overrideSuffix(sets);
     return h;
   }
   ArticleScene a = scene_detail::readArticleScene(reader, root, source_name);
   a.text = yaml_text;
   a.overrides = sets;
+  a.positions = reader.sourceMap();
   if (!sets.empty()) a.source += overrideSuffix(sets);
   return a;
 }
@@ -133,22 +136,15 @@ std::string overrideSuffix(const std::vector<std::string>& sets) {
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets) {
   const std::string shown = printable(path);
   if (path.empty()) throw SceneFileError("empty scene path");
-  // Only a regular file: a directory, a device (/dev/zero never ends) or a FIFO (blocks
-  // until a writer comes) is refused before it is opened.
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw SceneFileError(shown + ": cannot open scene file: " + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) throw SceneFileError(shown + ": is a directory, not a scene file");
-  if (!S_ISREG(st.st_mode)) throw SceneFileError(shown + ": is not a regular file (a device, FIFO or socket), not a scene file");
-  if (st.st_size > limits::kMaxSceneBytes) {
-    throw SceneFileError(shown + ": " + std::to_string(st.st_size) + " bytes; a scene file is at most " +
-                         std::to_string(limits::kMaxSceneBytes) + " bytes");
+  std::string text, why;
+  InputFileProblem problem = InputFileProblem::None;
+  if (!readInputFile(path, limits::kMaxSceneBytes, text, why, &problem)) {
+    if (problem == InputFileProblem::CannotOpen) throw SceneFileError(shown + ": cannot open scene file: " + why);
+    if (problem == InputFileProblem::TooLarge)
+      throw SceneFileError(shown + ": " + why + "; a scene file is at most " + std::to_string(limits::kMaxSceneBytes) + " bytes");
+    throw SceneFileError(shown + ": " + why + ", not a scene file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneFileError(shown + ": cannot open scene file: " + std::strerror(errno));
-  std::ostringstream os;
-  os << in.rdbuf();
-  if (in.bad()) throw SceneFileError(shown + ": cannot read scene file");
-  return parseScene(os.str(), path, sets);
+  return parseScene(text, path, sets);
 }
 
 ArticleScene loadArticleSceneFile(const std::string& path) {
