@@ -83,27 +83,37 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
 }
 }  // namespace
 
+namespace {
+/// The length of the UTF-8 sequence at s[i] (its lead byte, then continuation bytes
+/// 10xxxxxx), or 0 when the bytes there are not one.
+std::size_t utf8Length(const std::string& s, std::size_t i) {
+  const auto c = static_cast<unsigned char>(s[i]);
+  const std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+  bool ok = len > 0 && i + len <= s.size();
+  for (std::size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
+  return ok ? len : 0;
+}
+}  // namespace
+
 std::string printable(const std::string& s) {
   std::string out;
-  const auto hex = [&](unsigned char c) { out += strf("\\x%02X", c); };
   for (std::size_t i = 0; i < s.size();) {
     const auto c = static_cast<unsigned char>(s[i]);
-    if (c < 0x20 || c == 0x7f) {
-      hex(c), ++i;
-      continue;
-    }
-    // UTF-8: the sequence's length from its lead byte, then continuation bytes 10xxxxxx.
-    const std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
-    bool ok = len > 0 && i + len <= s.size();
-    for (std::size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
-    if (!ok) {
-      hex(c), ++i;
+    const std::size_t len = c < 0x20 || c == 0x7f ? 0 : utf8Length(s, i);
+    if (len == 0) {
+      out += strf("\\x%02X", c), ++i;
       continue;
     }
     out.append(s, i, len);
     i += len;
   }
   return out;
+}
+
+bool isValidUtf8(const std::string& s) {
+  for (std::size_t i = 0, len = 0; i < s.size(); i += len)
+    if ((len = utf8Length(s, i)) == 0) return false;
+  return true;
 }
 
 std::string didYouMean(const std::string& name, const std::vector<std::string>& known) {

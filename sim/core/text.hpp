@@ -34,6 +34,9 @@ std::string didYouMean(const std::string& name, const std::vector<std::string>& 
 /// become \xNN (a user's file name or value is echoed, never raw bytes).
 std::string printable(const std::string& s);
 
+/// Whether `s` is valid UTF-8 (what JSON and every text output need).
+bool isValidUtf8(const std::string& s);
+
 /// printf into a std::string.
 std::string strf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 

@@ -144,9 +144,9 @@ std::vector<double> bodyMotionRow(const SimTK::SimbodyMatterSubsystem& matter, c
 SimulationResult simulate(const HamsasScene& scene, const std::function<void(double)>& progress) {
   const HamsasSpec& hs = scene.isolator;
   if (!scene.ground_motion)
-    throw SceneError(scene.source + ": a HAM-SAS time run needs `ground_motion:` (a program and its axis; docs/hamsas.md)");
+    throw SceneError(scene.positions.where("ground_motion") + ": a HAM-SAS time run needs `ground_motion:` (a program and its axis; docs/hamsas.md)");
   if (hs.ideal_joints)
-    throw SceneError(scene.source + ": HAM-SAS time runs use the stiff effective joints (spherical_joints: stiff)");
+    throw SceneError(scene.positions.where("hamsas.spherical_joints") + ": HAM-SAS time runs use the stiff effective joints (spherical_joints: stiff)");
   const SimulationSpec& spec = scene.simulation;
   const auto t0 = std::chrono::steady_clock::now();
   const SpatialSpec model = buildHamsas(hs);

@@ -174,7 +174,9 @@ class SceneParser {
   GimbalSpec readGimbal(const YAML::Node& n) {
     auto m = r_.mapping(n, "base.gimbal", {"yaw", "pitch", "roll", "ring_mass", "ring_inertia"});
     GimbalSpec g;
-    for (auto [name, axis] : {std::pair<const char*, GimbalAxisSpec*>{"yaw", &g.yaw}, {"pitch", &g.pitch}, {"roll", &g.roll}}) {
+    for (const auto& entry : {std::pair<const char*, GimbalAxisSpec*>{"yaw", &g.yaw}, {"pitch", &g.pitch}, {"roll", &g.roll}}) {
+      const char* name = entry.first;  // not a structured binding: clang 14 cannot capture those
+      GimbalAxisSpec* axis = entry.second;
       if (!m.count(name)) continue;
       const std::string path = std::string("base.gimbal.") + name;
       const YAML::Node& an = m.at(name);

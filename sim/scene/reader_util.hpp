@@ -50,6 +50,9 @@ class YamlReader {
     return os.str();
   }
 
+  /// Every key read so far, with its position (SourceMap).
+  SourceMap sourceMap() const { return SourceMap{file_, positions_}; }
+
   [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
     throw SceneError(position(mark) + ": " + what);
   }
@@ -60,6 +63,8 @@ class YamlReader {
     if (n.IsMap()) return "a mapping";
     return "nothing";
   }
+
+  static constexpr double kMinMagnitude = 1e-20, kMaxMagnitude = 1e20;  ///< of any scene number (SI)
 
   double number(const YAML::Node& n, const std::string& path) const {
     if (!n.IsScalar()) fail(n.Mark(), path + " must be a number (got " + show(n) + ")");
@@ -73,6 +78,12 @@ class YamlReader {
     if (s.empty() || end == s.c_str() || *end != '\0')
       fail(n.Mark(), path + " must be a number (got " + s + ")");
     if (!std::isfinite(v)) fail(n.Mark(), path + " must be a finite number (got " + s + ")");
+    // Every quantity of a lab article lies well inside 1e-20 .. 1e20 in SI units (the
+    // stiffest extreme tested, E = 1e20 Pa, included). Beyond it, the products the model
+    // forms (m*L^2, rho*A, E*I/h, and their squares in norms) overflow or underflow to
+    // inf, NaN or 0 deep inside a solver instead of failing here.
+    if (v != 0 && !(std::abs(v) >= kMinMagnitude && std::abs(v) <= kMaxMagnitude))
+      fail(n.Mark(), path + " must be 0 or between 1e-20 and 1e20 in magnitude (got " + s + ")");
     return v;
   }
 
@@ -98,6 +109,7 @@ class YamlReader {
   std::string text(const YAML::Node& n, const std::string& path) const {
     if (!n.IsScalar() || n.Scalar().empty())
       fail(n.Mark(), path + " must be a text value (got " + show(n) + ")");
+    if (!isValidUtf8(n.Scalar())) fail(n.Mark(), path + " must be UTF-8 text (got " + printable(n.Scalar()) + ")");
     return n.Scalar();
   }
 
@@ -118,6 +130,7 @@ class YamlReader {
       const YAML::Node key = it->first;
       if (!key.IsScalar()) fail(key.Mark(), path + ": keys must be text");
       const std::string k = key.Scalar();
+      if (!isValidUtf8(k)) fail(key.Mark(), path + ": keys must be UTF-8 text (got " + printable(k) + ")");
       const std::string where = path.empty() ? k : path + "." + k;
       if (out.count(k)) fail(key.Mark(), "duplicate key '" + where + "'");
       bool ok = false;
@@ -125,7 +138,9 @@ class YamlReader {
       if (!ok)
         fail(key.Mark(), "unknown key '" + where + "'" + didYouMean(k, allowed) + " (allowed: " + joinNames(allowed) + ")");
       out.emplace(k, it->second);
+      positions_.emplace(where, position(key.Mark()));
     }
+    if (!path.empty()) positions_.emplace(path, position(n.Mark()));
     return out;
   }
 
@@ -162,6 +177,7 @@ class YamlReader {
   std::string file_;
   int override_line_ = -1;
   std::vector<std::string> override_labels_;
+  mutable std::map<std::string, std::string> positions_;  // filled by mapping(): what the reader has seen
 };
 
 struct Located {

@@ -4,6 +4,15 @@
 
 namespace mmv {
 
+std::string SourceMap::where(const std::string& key) const {
+  for (std::string k = key; !k.empty();) {
+    if (auto it = at.find(k); it != at.end()) return it->second;
+    const auto cut = k.find_last_of(".[");
+    k = cut == std::string::npos ? std::string() : k.substr(0, cut);
+  }
+  return file + ":1:1";
+}
+
 const std::string& sceneName(const Scene& scene) {
   return std::visit([](const auto& s) -> const std::string& { return s.name; }, scene);
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -67,6 +68,17 @@ struct CameraView {
 };
 
 /// The MMV article (or any planar article of links, joints and closures).
+/// Where each key of a scene was read: "file:line:col" (or "--set KEY=VALUE") by key
+/// path, as the reader's messages name keys ("base.motion", "joints[0].slew",
+/// "hamsas.spherical_joints"). A check made after reading (a facility's stroke, a time
+/// run's precondition) points at its key with `where` like the reader does.
+struct SourceMap {
+  std::string file;                          ///< the scene's source name.
+  std::map<std::string, std::string> at;     ///< key path -> position.
+  /// The key's position, else its nearest enclosing key's, else the file's start.
+  std::string where(const std::string& key) const;
+};
+
 struct ArticleScene {
   std::string name;
   std::string source;  ///< file the scene came from, or "<default scene>".
@@ -79,6 +91,7 @@ struct ArticleScene {
   std::vector<SensorSceneSpec> sensors;
   std::vector<CameraView> views;  ///< named camera poses for `mmvlab render --view NAME`.
   std::optional<facility::LabSpec> lab;  ///< `lab:`: the room, drawn by renders (none: the article alone).
+  SourceMap positions;  ///< where each key was read.
 };
 
 /// The HAM-SAS seismic isolator (article/hamsas.hpp), gravity along -z.
@@ -92,6 +105,7 @@ struct HamsasScene {
   /// Time runs: the ground's (base's) motion program along world x, y or z.
   std::optional<TableMotion> ground_motion;
   int ground_axis = 0;  ///< 0 x, 1 y, 2 z.
+  SourceMap positions;  ///< where each key was read.
 };
 
 using Scene = std::variant<ArticleScene, HamsasScene>;
