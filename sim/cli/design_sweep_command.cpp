@@ -1,8 +1,6 @@
 // mmvlab sweep and sweep-merge: design sweeps (sim/scene/sweep_spec.hpp) evaluated by
 // sim/io/sweep_points.hpp and run by sim/plan/sweep_runner.hpp.
-#include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/cli/commands.hpp"
+#include "sim/cli/progress.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/sweep_points.hpp"
 #include "sim/plan/sweep_runner.hpp"
@@ -38,24 +37,6 @@ Shard chooseShard(const std::string& text) {
   if (s.count < 1 || s.index < 1 || s.index > s.count)
     throw UsageError(strf("SLURM_ARRAY_TASK_ID=%s, SLURM_ARRAY_TASK_COUNT=%s do not make a shard", id, count));
   return s;
-}
-
-/// Points done, with the time left, on a terminal.
-std::function<void(long, long)> sweepProgress() {
-  const bool tty = ::isatty(STDERR_FILENO);
-  const auto start = std::chrono::steady_clock::now();
-  auto first = std::make_shared<long>(-1);
-  return [tty, start, first](long done, long total) {
-    if (!tty || total <= 0) return;
-    if (*first < 0) *first = done;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double f = static_cast<double>(done) / total;
-    const long fresh = done - *first;
-    const double left = fresh > 0 ? elapsed / fresh * (total - done) : 0;
-    std::fprintf(stderr, "\r[%-40s] %3d %% %ld/%ld points, %.0f s left ", std::string(static_cast<std::size_t>(40 * f), '#').c_str(),
-                 static_cast<int>(100 * f), done, total, left);
-    if (done == total) std::fprintf(stderr, "\n");
-  };
 }
 
 nlohmann::ordered_json summary(const SweepContext& c, const SweepRun& run, const SweepRunResult& r) {
@@ -90,8 +71,11 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
     run.shard = shard;
     run.jobs = args.jobs > 0 ? args.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     run.evaluate = [&context](long i) { return evaluateSweepPoint(context, i); };
-    run.progress = sweepProgress();
-    const SweepRunResult r = runSweep(run, args.force);
+    const SweepRunResult r = [&] {
+      Progress progress("sweep, points done");
+      run.progress = [&progress](long done, long total) { progress.report(double(done), double(total)); };
+      return runSweep(run, args.force);
+    }();
     const nlohmann::ordered_json j = summary(context, run, r);
     std::ofstream(std::filesystem::path(run.dir) / "sweep.json", std::ios::binary) << j.dump(2) << '\n';
     if (shard.count == 1) writeSweepPlots(run.dir);

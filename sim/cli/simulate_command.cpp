@@ -1,14 +1,13 @@
 // mmvlab simulate: a time run of the scene (sim/time/simulation.hpp; the isolator's:
 // sim/hamsas/hamsas_simulation.hpp), written by sim/io/simulation_report.hpp.
-#include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 
 #include "facility/table_programs.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/cli/progress.hpp"
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
@@ -43,25 +42,18 @@ std::vector<std::string> checkTableProgram(const ArticleScene& scene) {
     throw SceneError(e.what());
   }
   const facility::ProgramCheck check = facility::checkProgram(*program, {}, scene.simulation.duration);
-  if (!check.within_stroke) throw SceneError(scene.source + ": base.motion: " + check.messages.front());
+  if (!check.within_stroke) throw SceneError(scene.positions.where("base.motion") + ": base.motion: " + check.messages.front());
   for (const auto& m : check.messages) warnings.push_back(m);
   return warnings;
 }
 
-/// A progress bar on a terminal, after the first second.
-std::function<void(double)> progressBar() {
-  const bool tty = ::isatty(STDERR_FILENO);
-  const auto start = std::chrono::steady_clock::now();
-  auto shown = std::make_shared<int>(-1);
-  return [tty, start, shown](double f) {
-    if (!tty) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int pct = static_cast<int>(100 * f);
-    if (elapsed < 1.0 || pct == *shown) return;
-    *shown = pct;
-    std::fprintf(stderr, "\r[%-40s] %3d %%", std::string(static_cast<std::size_t>(40 * f), '#').c_str(), pct);
-    if (pct == 100) std::fprintf(stderr, "\n");
-  };
+/// A time run with its progress on standard error (seconds simulated); the progress
+/// line ends before the run's report is written.
+template <class SceneT>
+SimulationResult simulateWithProgress(const SceneT& scene) {
+  Progress progress("time run, seconds simulated");
+  const double duration = scene.simulation.duration;
+  return simulate(scene, [&progress, duration](double f) { progress.report(f * duration, duration); });
 }
 
 /// run.json: what a run was made from, so that `render --history` can rebuild its model.
@@ -83,16 +75,17 @@ int report(const SimulateArgs& args, const std::string& name, const std::string&
            std::vector<std::string> warnings, double size_m, OutputDir* out, const std::string& scene_text,
            const SimulationSpec& spec) {
   for (const auto& w : simulationWarnings(r, size_m)) warnings.push_back(w);
+  const nlohmann::ordered_json summary = simulationJson(r, warnings);
+  checkResultFinite(summary);  // before anything is committed: no NaN reaches a file either
   if (out) {
     std::ofstream(out->stage("history.csv"), std::ios::binary) << simulationHistoryCsv(r.record);
-    std::ofstream(out->stage("summary.json"), std::ios::binary) << simulationJson(r, warnings).dump(2) << '\n';
+    std::ofstream(out->stage("summary.json"), std::ios::binary) << summary.dump(2) << '\n';
     std::ofstream(out->stage("scene.yaml"), std::ios::binary) << scene_text;
     std::ofstream(out->stage("run.json"), std::ios::binary) << runRecord(args, source, spec).dump(2) << '\n';
     if (!r.states.rows.empty()) std::ofstream(out->stage("states.csv"), std::ios::binary) << simulationHistoryCsv(r.states);
     for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
-  std::cout << (args.json ? simulationJson(r, warnings).dump(2) + "\n" : simulationText(name, source, r, warnings))
-            << std::flush;
+  args.json ? emitResult(summary) : emitResult(simulationText(name, source, r, warnings));
   return kOk;
 }
 
@@ -105,7 +98,7 @@ int runSimulateCommand(const SimulateArgs& args) {
     if (auto* h = std::get_if<HamsasScene>(&loaded)) {
       applyOverrides(args, h->simulation);
       if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-      const SimulationResult r = simulate(*h, progressBar());
+      const SimulationResult r = simulateWithProgress(*h);
       return report(args, h->name, h->source, r, {}, 0.0, out.get(), h->text, h->simulation);
     }
     ArticleScene& scene = std::get<ArticleScene>(loaded);
@@ -115,10 +108,12 @@ int runSimulateCommand(const SimulateArgs& args) {
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     SimulationResult r;
     try {
-      r = simulate(scene, progressBar());
+      r = simulateWithProgress(scene);
     } catch (const std::invalid_argument& e) {  // a facility model refused its command
-      throw SceneError(scene.source + ": " + e.what());
+      throw SceneError(scene.positions.where("base") + ": " + e.what());
     }
+    warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
+    for (const auto& w : r.warnings) std::cerr << "mmvlab: warning: " << w << '\n';
     double size = 0;
     for (const auto& l : scene.article.links) size += l.length;
     return report(args, scene.name, scene.source, r, warnings, size, out.get(), scene.text, scene.simulation);

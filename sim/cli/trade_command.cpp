@@ -3,16 +3,40 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <type_traits>
 
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/cli/progress.hpp"
+#include "sim/core/text.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/core/integrators.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
 #include "sim/io/trade_report.hpp"
 
 namespace mmv::cli {
+namespace {
+
+/// Runs done of the trade's total (two references, the integrator grid, the segment
+/// ladder), reported to `progress` as each run starts and ends.
+void reportProgress(TradeProblem& problem, const TradeOptions& o, Progress& progress) {
+  const double total =
+      2.0 + double(o.integrators.size() * o.accuracies.size()) + (problem.has_segments ? double(o.segments.size()) : 0.0);
+  auto done = std::make_shared<int>(0);
+  problem.run = [inner = problem.run, &progress, total, done](const SimulationSpec& spec, int segments) {
+    progress.report(*done, total,
+                    strf("%s at %g", spec.integrator.c_str(), spec.accuracy) +
+                        (segments > 0 ? strf(", %d segments", segments) : std::string()));
+    struct Count {  // a failed run (a trade records it) counts as done too
+      int& n;
+      ~Count() { ++n; }
+    } count{*done};
+    return inner(spec, segments);
+  };
+}
+
+}  // namespace
 
 int runTradeCommand(const TradeArgs& args) {
   return guarded([&] {
@@ -29,13 +53,17 @@ int runTradeCommand(const TradeArgs& args) {
                          integratorNames() + ")");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const TradeProblem problem = std::visit(
+    TradeProblem problem = std::visit(
         [&](const auto& sc) {
           if constexpr (std::is_same_v<std::decay_t<decltype(sc)>, HamsasScene>) return hamsasTradeProblem(sc, o.duration);
           else return articleTradeProblem(sc, o.duration);
         },
         scene);
-    const TradeStudy s = runTrade(problem, o);
+    const TradeStudy s = [&] {
+      Progress progress("trade, runs done");
+      reportProgress(problem, o, progress);
+      return runTrade(problem, o);
+    }();
     if (out) {
       std::ofstream(out->stage("trade.csv"), std::ios::binary) << tradeCsv(s);
       std::ofstream(out->stage("trade.json"), std::ios::binary) << tradeJson(s, args.target_error).dump(2) << '\n';
@@ -68,7 +96,7 @@ int runTradeCommand(const TradeArgs& args) {
       }
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << (args.json ? tradeJson(s, args.target_error).dump(2) + "\n" : tradeText(s, args.target_error)) << std::flush;
+    args.json ? emitResult(tradeJson(s, args.target_error)) : emitResult(tradeText(s, args.target_error));
     return kOk;
   });
 }

@@ -6,12 +6,12 @@
 #include <optional>
 #include <sstream>
 
+#include "sim/core/text.hpp"
 #include "sim/statics/closures.hpp"
 #include "sim/statics/linearize.hpp"
 
 namespace mmv {
 namespace {
-
 
 /// The largest moment gravity could exert about any pin in this configuration,
 /// max_k sum_{i outboard of k} m_i |g| |p_i - o_k|: a load scale that does not vanish
@@ -119,11 +119,20 @@ std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
   model_.setQ(s_, q_);
   model_.getSystem().realize(s_, SimTK::Stage::Position);
   const Eigen::MatrixXd K = calcStiffness(model_, s_, dofs_);
-  if (m_ == 0 && model_.hasClosedFormForces()) {
+  // Singular relative to the problem's loads, not to K's own largest entry: a 1x1 K of
+  // 1e-17 N*m/rad is singular next to a 100 N*m load although it is its own largest
+  // pivot, while hinges of 4e13 and 2.6 N*m/rad in one chain (a link of E = 1e20 Pa
+  // beside a slender rod) are a well-posed problem whose raw pivots span 13 decades.
+  // So each row is first scaled to unit size (equilibration), and a row whose
+  // stiffness is below 1e-12 of the load scale per radian has nothing to hold it.
+  const double k_min = 1e-12 * r_.force_scale;
+  if (m_ == 0 && model_.hasClosedFormForces() && K.diagonal().minCoeff() > k_min) {
     // An open tree near a stable equilibrium: K (symmetric in closed form) is positive
-    // definite, and its Cholesky factor costs half an LU; anything else goes to the LU.
-    const Eigen::LLT<Eigen::MatrixXd> llt(K);
-    if (llt.info() == Eigen::Success && llt.rcond() >= 1e-12) return Eigen::VectorXd(llt.solve(res.force));
+    // definite; its Jacobi-scaled Cholesky factor costs half an LU. Anything else goes to the LU.
+    const Eigen::VectorXd d = K.diagonal().cwiseSqrt().cwiseInverse();
+    const Eigen::LLT<Eigen::MatrixXd> llt(d.asDiagonal() * K * d.asDiagonal());
+    if (llt.info() == Eigen::Success && llt.rcond() >= 1e-12)
+      return Eigen::VectorXd(d.asDiagonal() * llt.solve(d.asDiagonal() * res.force));
   }
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n_ + m_, n_ + m_);
   A.topLeftCorner(n_, n_) = -K;
@@ -135,13 +144,13 @@ std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
   }
   Eigen::VectorXd rhs(n_ + m_);
   rhs << -res.force, -res.closure;
-  // Singular relative to the problem, not only to A itself: a 1x1 K of 1e-17 N*m/rad
-  // is singular next to a 100 N*m load even though it is its own largest pivot.
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-  const double k_ref = std::max(K.diagonal().cwiseAbs().maxCoeff(), r_.force_scale);
+  const Eigen::VectorXd row_max = A.cwiseAbs().rowwise().maxCoeff();
+  if (!(row_max.head(n_).minCoeff() > k_min) || !(row_max.tail(m_).minCoeff() > 0)) return std::nullopt;
+  const Eigen::VectorXd r = row_max.cwiseInverse();
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(r.asDiagonal() * A);
   const double pivot = lu.matrixLU().diagonal().head(n_).cwiseAbs().minCoeff();
-  if (!(pivot >= 1e-12 * k_ref) || !(lu.rcond() >= 1e-15)) return std::nullopt;
-  return Eigen::VectorXd(lu.solve(rhs));
+  if (!(pivot >= 1e-12) || !(lu.rcond() >= 1e-15)) return std::nullopt;
+  return Eigen::VectorXd(lu.solve(r.asDiagonal() * rhs));
 }
 
 bool Newton::lineSearch(const Eigen::VectorXd& dx, Residual& res) {
@@ -198,6 +207,72 @@ EquilibriumResult newton(const Model& model, SimTK::State s, Eigen::VectorXd q, 
 
 }  // namespace
 
+namespace {
+
+/// Why gravity's ramp stalled, in the terms of this model: a free joint that gravity
+/// turns with nothing to hold it (no equilibrium near its scene angle), else a limit or
+/// bifurcation point of the path (buckling or snap-through; with closures, typically a
+/// closure compressing a slender link).
+std::string stalledContinuationCause(const Model& model, SimTK::State s, const Eigen::VectorXd& q0) {
+  model.setGravityScale(s, 1.0);
+  model.setQ(s, q0);
+  model.getSystem().realize(s, SimTK::Stage::Position);
+  const Eigen::VectorXd f = model.calcAppliedForces(s);
+  const auto& coords = model.getCoordinates();
+  double scale = 0;
+  for (int i = 0; i < static_cast<int>(coords.size()); ++i) scale = std::max(scale, std::abs(f[i]));
+  std::string free;
+  for (int i = 0; i < static_cast<int>(coords.size()); ++i) {
+    const Coordinate& c = coords[i];
+    if (c.kind != CoordinateKind::Joint || c.held || c.stiffness > 0 || !(std::abs(f[i]) > 1e-6 * scale)) continue;
+    free += (free.empty() ? "" : ", ") + strf("'%s' (%.3g N*m at its scene angle %.1f deg)", c.name.c_str(), f[i],
+                                              c.reference * 180 / M_PI);
+  }
+  if (!free.empty())
+    return "gravity turns the free joint(s) " + free +
+           " and nothing holds them: a free joint rests only where gravity's torque on it vanishes (hanging, or "
+           "inverted and unstable). Give it that angle, hold it (hold: locked or servo), or let it swing from rest "
+           "(simulation.start: rest)";
+  if (!model.getClosures().empty())
+    return "the equilibrium path turns back or branches there (the article buckles or snaps through, e.g. a closure "
+           "compresses a slender link beyond its buckling load)";
+  return "the equilibrium path turns back or branches there (the article buckles or snaps through under its own "
+         "weight: a link loaded in compression beyond its buckling load)";
+}
+
+}  // namespace
+
+EquilibriumAssessment assessEquilibrium(const Model& model, const EquilibriumResult& eq) {
+  EquilibriumAssessment a;
+  const std::vector<int>& dofs = model.getDofs();
+  const Eigen::VectorXd q = model.getQ(eq.state);
+  const auto& coords = model.getCoordinates();
+  for (int i = 0; i < static_cast<int>(coords.size()); ++i) {
+    const Coordinate& c = coords[i];
+    const double moved = (q[i] - c.reference) * 180 / M_PI;
+    if (c.kind == CoordinateKind::Joint && !c.held && c.motion == CoordinateMotion::Rotation && std::abs(moved) > 0.5)
+      a.moved_joints.push_back(strf("joint '%s' settled at %.1f deg, %.1f deg from its scene angle %.1f deg", c.name.c_str(),
+                                    q[i] * 180 / M_PI, moved, c.reference * 180 / M_PI));
+  }
+  if (dofs.empty()) return a;
+  Eigen::MatrixXd K = calcStiffness(model, eq.state, dofs);
+  if (model.getNumClosureRows() > 0) {
+    K += calcPointForceStiffness(model, eq.state, dofs, closureForces(model, eq.closure_multipliers));
+    const Eigen::MatrixXd Z = nullSpace(calcClosureJacobian(model, eq.state, dofs), static_cast<int>(dofs.size()));
+    K = Z.transpose() * K * Z;
+  }
+  if (K.rows() == 0) return a;
+  K = 0.5 * (K + K.transpose());
+  // The inertia of K (Sylvester): negative pivots of its LDL^T are negative eigenvalues.
+  // Pivots within round-off of K's scale are a neutral direction (a mechanism), not an
+  // instability.
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(K);
+  const double tiny = 1e-9 * K.diagonal().cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < K.rows(); ++i)
+    if (ldlt.vectorD()[i] < -tiny) ++a.unstable_directions;
+  return a;
+}
+
 EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions& options) {
   const std::vector<int>& dofs = model.getDofs();
   SimTK::State s = model.getReferenceState();
@@ -233,8 +308,7 @@ EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions&
     } else if ((step *= 0.5) < 1.0 / 1024) {
       std::ostringstream os;
       os << direct.failure << "; continuation in gravity stopped at " << std::fixed << std::setprecision(1)
-         << 100 * done << " % of g: the equilibrium path turns back or branches there (the article buckles or snaps, "
-         << "e.g. a closure compresses a slender link beyond its buckling load)";
+         << 100 * done << " % of g: " << stalledContinuationCause(model, s, q0);
       r.failure = os.str();
       r.iterations = iterations;
       r.continuation_steps = steps;

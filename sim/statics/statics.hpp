@@ -28,6 +28,7 @@
 /// counter-clockwise positive).
 
 #include <string>
+#include <vector>
 
 #include "sim/core/errors.hpp"
 #include "sim/model/model.hpp"
@@ -55,5 +56,17 @@ struct EquilibriumResult {
 };
 
 EquilibriumResult solveEquilibrium(const Model& model, const EquilibriumOptions& options = {});
+
+/// What a converged equilibrium means for a start at rest there: the number of
+/// directions of negative tangent stiffness (on the closures' tangent space; 0: stable,
+/// > 0: the article rests there only until round-off grows, e.g. an inverted
+/// pendulum), and every free or servo joint that settled more than 0.5 deg away from
+/// its scene angle ("joint 'elbow' settled at 90.0 deg, 10.0 deg from its scene angle
+/// 80.0 deg"). Empty notes and 0: the start is the stable equilibrium the scene asked for.
+struct EquilibriumAssessment {
+  int unstable_directions = 0;
+  std::vector<std::string> moved_joints;
+};
+EquilibriumAssessment assessEquilibrium(const Model& model, const EquilibriumResult& equilibrium);
 
 }  // namespace mmv

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "sim/core/text.hpp"
 #include "sim/model/article_builder.hpp"
 #include "facility/sensors.hpp"
 #include "sim/model/stations.hpp"
@@ -211,12 +212,19 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
 
 /// The run's start: the static equilibrium (or the scene's angles) at rest, with the
 /// closures as constraints from here on.
-SimTK::State initialState(Model& model, const SimulationSpec& spec) {
+SimTK::State initialState(Model& model, const SimulationSpec& spec, std::vector<std::string>& warnings) {
   SimTK::State s = model.getReferenceState();
   if (spec.from_equilibrium) {
     const EquilibriumResult eq = solveEquilibrium(model);
     if (!eq.converged) throw NumericalError("static equilibrium failed: " + eq.failure);
     s = eq.state;
+    const EquilibriumAssessment a = assessEquilibrium(model, eq);
+    for (const auto& m : a.moved_joints) warnings.push_back("the start is the static equilibrium nearest the scene's angles: " + m);
+    if (a.unstable_directions > 0)
+      warnings.push_back(strf("the start is an unstable equilibrium (%d direction(s) of negative stiffness, e.g. an inverted "
+                              "pendulum): the article stays there, at rest, only until round-off grows; to see it fall, "
+                              "start at rest (simulation.start: rest) or from a disturbed angle",
+                              a.unstable_directions));
   }
   s.updU() = 0;
   s.setTime(0);
@@ -230,9 +238,9 @@ SimulationResult simulate(const ArticleScene& scene, const std::function<void(do
   const SimulationSpec& spec = scene.simulation;
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
-  const SimTK::State s = initialState(*model, spec);
-  RunIntegrator integrator(model->getSystem(), spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance);
   SimulationResult r;
+  const SimTK::State s = initialState(*model, spec, r.warnings);
+  RunIntegrator integrator(model->getSystem(), spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance);
   r.integrator = spec.integrator;
   r.accuracy = spec.accuracy;
   ArticleRecorder recorder(*model, scene, r);

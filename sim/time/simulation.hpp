@@ -80,6 +80,10 @@ struct SimulationResult {
   double accuracy = 0;
   int steps = 0, realizations = 0;
   double wall_seconds = 0;
+  /// What the user should know about the run's start: an equilibrium that is unstable
+  /// (the run stays there only until round-off grows) or that moved a free joint away
+  /// from its scene angle (assessEquilibrium, sim/statics/statics.hpp).
+  std::vector<std::string> warnings;
 };
 
 /// Runs the scene's time run with its `simulation:` settings. `progress`, if given,

@@ -1,0 +1,65 @@
+#include "sim/cli/progress.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "sim/core/text.hpp"
+
+namespace mmv::cli {
+
+Progress::Progress(std::string what)
+    : what_(std::move(what)), tty_(::isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()),
+      thread_([this] { watch(); }) {}
+
+Progress::~Progress() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+  if (bar_shown_) {  // the bar's last state, then its line ends
+    print(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+    std::fprintf(stderr, "\n");
+  }
+}
+
+void Progress::report(double done, double total, const std::string& detail) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  done_ = done, total_ = total, detail_ = detail;
+}
+
+void Progress::watch() {
+  const auto tick = tty_ ? std::chrono::milliseconds(250) : std::chrono::milliseconds(1000);
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!wake_.wait_for(lock, tick, [this] { return stop_; })) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (!(total_ > 0)) continue;
+    if (tty_ && elapsed >= 1.0) {
+      bar_shown_ = true;
+      print(elapsed);
+    } else if (!tty_ && elapsed >= 15.0 && elapsed - last_line_ >= 15.0) {
+      last_line_ = elapsed;
+      print(elapsed);
+    }
+  }
+}
+
+// Called with the mutex held (or after the watchdog has stopped).
+void Progress::print(double elapsed) {
+  const double f = std::clamp(done_ / total_, 0.0, 1.0);
+  const std::string left = f > 0 ? strf("about %.0f s left", elapsed * (1 - f) / f) : std::string("time left unknown");
+  const std::string detail = detail_.empty() ? "" : ": " + printable(detail_);
+  if (tty_) {
+    std::fprintf(stderr, "\r[%-30s] %5.1f %% %s, %s%s\x1b[K", std::string(static_cast<std::size_t>(30 * f), '#').c_str(),
+                 100 * f, what_.c_str(), left.c_str(), detail.c_str());
+  } else {
+    std::fprintf(stderr, "mmvlab: %s: %g of %g (%.0f %%), %.0f s elapsed, %s%s\n", what_.c_str(), done_, total_, 100 * f,
+                 elapsed, left.c_str(), detail.c_str());
+  }
+  std::fflush(stderr);
+}
+
+}  // namespace mmv::cli
