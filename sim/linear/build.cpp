@@ -155,6 +155,10 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   const LinearizedModel& lin = lm.solved.linearized;
   const std::vector<int>& dofs = lin.dofs;
   lm.Z = lin.Z;
+  if (lm.Z.cols() == 0)  // nothing moves: every link rigid and every joint held (or closed)
+    throw SceneError(scene.positions.where("links") +
+                     ": the article has no degrees of freedom (every link rigid, every joint held or closed), so it has "
+                     "no response to compute: give a link segments or a joint `hold: free` or `servo`");
   const Eigen::MatrixXd& Z = lm.Z;
   lm.Mz = Z.transpose() * lin.M * Z;
   lm.Kz = Z.transpose() * lin.K * Z;

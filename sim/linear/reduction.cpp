@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/linalg.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/linear/state_space.hpp"
 
@@ -126,13 +127,13 @@ StateSpace project(const StateSpace& full, const StateEigen& sm, const std::vect
 
 /// D += H_full(0) - H_kept(0): the discarded modes' static contribution.
 void residualize(const StateSpace& full, StateSpace& r) {
-  const Eigen::FullPivLU<Eigen::MatrixXd> a_full(full.A);
+  const EquilibratedLu a_full(full.A);
   if (!a_full.isInvertible())
     throw NumericalError("static residualization needs a model without rigid-body modes (the state matrix is singular)");
   const Eigen::MatrixXd h_full = -full.C * a_full.solve(full.B) + full.D;
   Eigen::MatrixXd h_kept = r.D;
   if (r.numStates() > 0) {
-    const Eigen::FullPivLU<Eigen::MatrixXd> a_red(r.A);
+    const EquilibratedLu a_red(r.A);
     if (!a_red.isInvertible()) throw NumericalError("static residualization: a kept mode has a zero eigenvalue");
     h_kept = -r.C * a_red.solve(r.B) + r.D;
   }

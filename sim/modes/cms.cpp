@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sim/core/linalg.hpp"
 #include "sim/model/article_builder.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/statics/closures.hpp"
@@ -33,7 +34,7 @@ Eigen::MatrixXd craigBamptonBasis(const Eigen::MatrixXd& M, const Eigen::MatrixX
   kkt.bottomLeftCorner(nb, n) = C;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n + nb, nb);
   rhs.bottomRows(nb) = Eigen::MatrixXd::Identity(nb, nb);
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(kkt);
+  const EquilibratedLu lu(kkt);
   if (!lu.isInvertible()) throw NumericalError("Craig-Bampton: the component is not restrained once its interface is fixed");
   const Eigen::MatrixXd psi = lu.solve(rhs).topRows(n);
   // Fixed-interface modes: (K, M) on the null space of C.
