@@ -1,5 +1,6 @@
 #include "sim/modes/compare.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mmv {
@@ -15,7 +16,7 @@ namespace {
 ArticleScene withTopology(const ArticleScene& scene, const std::string& topology) {
   if (topology == "open") return openTopology(scene);
   if (topology == "closed" && scene.article.closures.empty())
-    throw SceneError(scene.source + ": topology 'closed' asked for, but the scene has no closures (add them under 'closures:')");
+    throw UsageError("--topology closed: " + scene.source + " has no closures (add them under 'closures:')");
   return scene;
 }
 
@@ -64,8 +65,13 @@ CompareReport runCompare(const ArticleScene& scene, const CompareOptions& o) {
   CompareReport rep;
   rep.scene_name = scene.name;
   rep.scene_source = scene.source;
-  rep.topology = o.topologies.empty() ? (scene.article.closures.empty() ? "open" : "closed") : o.topologies.front();
-  const ArticleScene main = o.topologies.empty() ? scene : withTopology(scene, o.topologies.front());
+  // The main tables are the scene's own topology when it is among those asked for
+  // (`--topology open,closed` on a closed scene: closed), else the first asked for.
+  const std::string own = scene.article.closures.empty() ? "open" : "closed";
+  rep.topology = o.topologies.empty() || std::find(o.topologies.begin(), o.topologies.end(), own) != o.topologies.end()
+                     ? own
+                     : o.topologies.front();
+  const ArticleScene main = withTopology(scene, rep.topology);
   for (const auto& j : main.article.joints) rep.joint_angles_deg.push_back({j.name, j.angle * 180.0 / M_PI});
   rep.gravity = std::hypot(main.gravity[0], main.gravity[1]);
   rep.component = o.component;

@@ -137,7 +137,11 @@ ComponentResult calcComponentModes(const ArticleScene& scene, const std::string&
   ComponentResult r;
   r.link = link;
   r.bc = options.bc;
-  r.tip = options.explicit_tip ? *options.explicit_tip : tipMassFor(scene.article, link, options.rule);
+  r.tip = tipMassFor(scene.article, link, options.explicit_tip ? TipMassRule::None : options.rule);
+  if (options.explicit_tip) {  // added to the link's own tip mass, as the rules are
+    r.tip.mass += options.explicit_tip->mass;
+    r.tip.rotary_inertia += options.explicit_tip->rotary_inertia;
+  }
   r.tip_rule = options.explicit_tip ? "explicit" : tipMassRuleName(options.rule);
   r.link_mass_kg = linkMass(scene.article, *spec);
   r.mass_ratio = r.tip.mass / r.link_mass_kg;

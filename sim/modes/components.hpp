@@ -39,7 +39,9 @@ bool parseTipMassRule(const std::string& text, TipMassRule& rule);
 struct ComponentOptions {
   ComponentBC bc = ComponentBC::ClampedFree;
   TipMassRule rule = TipMassRule::Torquer;
-  std::optional<LumpedMass> explicit_tip;  ///< replaces the rule when set.
+  /// Replaces the rule when set: what stands in for the rest of the article, added (like
+  /// every rule) to the link's own `tip_mass`, which is part of the link.
+  std::optional<LumpedMass> explicit_tip;
   int num_modes = 4;
 };
 

@@ -154,6 +154,9 @@ std::vector<std::string> mmv::plausibilityWarnings(const ArticleScene& scene, co
     if (s && m && m->density * sectionArea(*s) * l.length > 500)
       warnings.push_back(strf("link %s weighs %.4g kg: check the units of its length, section and density", l.name.c_str(), m->density * sectionArea(*s) * l.length));
   }
+  const double g = std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]);
+  if (g > 0 && (g < 9.7 || g > 9.9))
+    warnings.push_back(strf("gravity %.4g m/s^2 is not a laboratory's (9.78-9.83 m/s^2): given in ft/s^2 or cm/s^2?", g));
   double deflection = 0, size = 0;
   for (const auto& p : modes.points) deflection = std::max(deflection, std::hypot(p.dx, p.dy));
   for (const auto& l : a.links) size += l.length;
