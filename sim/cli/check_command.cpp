@@ -22,7 +22,7 @@ int runCheckCommand(const CheckArgs& args) {
       std::ofstream(out->stage("check.json"), std::ios::binary) << checkJson(rep).dump(2) << '\n';
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << (args.json ? checkJson(rep).dump(2) + "\n" : checkText(rep)) << std::flush;
+    args.json ? emitResult(checkJson(rep)) : emitResult(checkText(rep));
     return kOk;
   });
 }

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "sim/io/finite_check.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/scene/stations.hpp"
@@ -65,30 +66,51 @@ void parseComponentArgs(const std::string& bc, const std::string& tip_mass, Comp
 }
 
 int guarded(const std::function<int()>& body) {
+  // Messages may quote the user's bytes (a scene value, a key, a path): escaped, so
+  // control bytes and invalid UTF-8 never reach the terminal raw.
+  const auto say = [](const char* prefix, const std::exception& e, int code) {
+    std::cerr << prefix << printable(e.what()) << '\n';
+    return code;
+  };
   try {
     return body();
   } catch (const UsageError& e) {
-    std::cerr << "mmvlab: " << e.what() << '\n';
-    return kUsage;
+    return say("mmvlab: ", e, kUsage);
   } catch (const OutputError& e) {
-    std::cerr << "mmvlab: " << e.what() << '\n';
-    return kCannotCreate;
+    return say("mmvlab: ", e, kCannotCreate);
   } catch (const SceneFileError& e) {
-    std::cerr << "mmvlab: " << e.what() << '\n';
-    return kNoInput;
+    return say("mmvlab: ", e, kNoInput);
   } catch (const SceneError& e) {
-    std::cerr << e.what() << '\n';
-    return kDataError;
+    return say("", e, kDataError);
   } catch (const NumericalError& e) {
-    std::cerr << "mmvlab: numerical failure: " << e.what() << '\n';
-    return kNumericalFailure;
+    return say("mmvlab: numerical failure: ", e, kNumericalFailure);
   } catch (const UnavailableError& e) {
-    std::cerr << "mmvlab: not available in this installation: " << e.what() << '\n';
-    return kUnavailable;
+    return say("mmvlab: not available in this installation: ", e, kUnavailable);
   } catch (const std::exception& e) {
-    std::cerr << "mmvlab: internal error: " << e.what() << '\n';
-    return kInternal;
+    return say("mmvlab: internal error: ", e, kInternal);
   }
+}
+
+void checkResultFinite(const std::string& text) {
+  if (const std::string at = firstNonFiniteLine(text); !at.empty())
+    throw NumericalError("a result is not finite (" + at + " of the report); nothing was printed. This is a bug or an "
+                         "input beyond what the model resolves: please report it with the scene");
+}
+
+void checkResultFinite(const nlohmann::ordered_json& json) {
+  if (const std::string at = firstNonFiniteJson(json); !at.empty())
+    throw NumericalError("a result is not finite (JSON " + at + "); nothing was printed. This is a bug or an input "
+                         "beyond what the model resolves: please report it with the scene");
+}
+
+void emitResult(const std::string& text) {
+  checkResultFinite(text);
+  std::cout << text << std::flush;
+}
+
+void emitResult(const nlohmann::ordered_json& json) {
+  checkResultFinite(json);
+  std::cout << json.dump(2) << '\n' << std::flush;
 }
 
 std::pair<double, double> parseBand(const std::string& band) {

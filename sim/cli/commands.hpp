@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "sim/core/errors.hpp"
 #include "sim/modes/components.hpp"
 #include "sim/scene/scene.hpp"
@@ -196,5 +198,14 @@ void parseComponentArgs(const std::string& bc, const std::string& tip_mass, Comp
 std::pair<double, double> parseBand(const std::string& band);
 /// Runs `body`, turning the error classes into messages on stderr and exit codes.
 int guarded(const std::function<int()>& body);
+
+/// Prints a command's result (text, or JSON with two-space indent) on standard output,
+/// after the last check that no NaN or inf reaches an output: one found throws a
+/// NumericalError that names where (the line, or the JSON path), and nothing is printed.
+void emitResult(const std::string& text);
+void emitResult(const nlohmann::ordered_json& json);
+/// The same check alone, for a command that must refuse before it commits its --out files.
+void checkResultFinite(const std::string& text);
+void checkResultFinite(const nlohmann::ordered_json& json);
 
 }  // namespace mmv::cli

@@ -52,7 +52,7 @@ int runCompareCommand(const CompareArgs& args) {
       macPng(out->stage("mac_craig_bampton.png"), rep.craig_bampton, "MAC: " + rep.craig_bampton.method);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << (args.json ? compareToJson(rep).dump(2) + "\n" : formatCompareText(rep)) << std::flush;
+    args.json ? emitResult(compareToJson(rep)) : emitResult(formatCompareText(rep));
     return kOk;
   });
 }

@@ -73,9 +73,7 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
 
 int runHamsasModes(const ModesArgs& args, const HamsasScene& scene) {
   const HamsasModes h = analyseHamsas(scene.isolator);
-  const std::string out =
-      args.json ? hamsasModesJson(scene, h, args.modes).dump(2) + "\n" : hamsasModesText(scene, h, args.modes);
-  std::cout << out << std::flush;
+  args.json ? emitResult(hamsasModesJson(scene, h, args.modes)) : emitResult(hamsasModesText(scene, h, args.modes));
   return kOk;
 }
 
@@ -109,7 +107,7 @@ int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::ve
     writeTransmissibilityPlots(*out, scene.name, f, T, T10, vary_key, varied, vary_unit);
     for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
-  std::cout << text << std::flush;
+  emitResult(text);
   return kOk;
 }
 
@@ -134,7 +132,7 @@ int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::ve
   }
   std::ofstream(out.stage("rom.json"), std::ios::binary) << hamsasRomJson(full, red, err, f).dump(2) << '\n';
   for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-  std::cout << hamsasRomText(scene, h, full, red, err, f) << std::flush;
+  emitResult(hamsasRomText(scene, h, full, red, err, f));
   return kOk;
 }
 

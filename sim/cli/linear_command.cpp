@@ -168,7 +168,7 @@ int runFrfCommand(const LinearArgs& args) {
       std::ofstream(out->stage("frf.uff"), std::ios::binary) << frfUff(lm, scene, f, hf);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << linearSummaryText(lm, red, err, f, hf) << std::flush;
+    emitResult(linearSummaryText(lm, red, err, f, hf));
     return kOk;
   });
 }
@@ -195,7 +195,7 @@ int runRomCommand(const LinearArgs& args) {
     }
     std::ofstream(out.stage("rom.json"), std::ios::binary) << romJson(lm, red, err, f).dump(2) << '\n';
     for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-    std::cout << linearSummaryText(lm, red, err, f, hf) << std::flush;
+    emitResult(linearSummaryText(lm, red, err, f, hf));
     return kOk;
   });
 }

@@ -185,7 +185,7 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
       ->delimiter(',')
       ->check(integratorName());
   tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
-  tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
+  tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',')->check(CLI::Range(1, mmv::limits::kMaxSegments));
   tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(positive());
   tp->add_option("--points", tr.points, "Comma-separated link tips or stations the error is scored at, e.g. link3a.tip,link1@0.5 (default: every tip)")
       ->delimiter(',');
@@ -320,8 +320,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kUsage;
+    if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kUsage;  // --help
+    // CLI11 quotes the argument as given: escaped, like every other message.
+    std::cerr << "mmvlab: " << mmv::printable(e.what()) << "\nRun with --help for more information.\n";
+    return kUsage;
   }
   const auto run = [&]() -> int {
     if (m->parsed()) return runModesCommand(modes);

@@ -22,8 +22,7 @@ int runModesCommand(const ModesArgs& args) {
     opt.points = checkedPoints(args.points, scene.article, "--points");
     ModesReport rep = runModes(scene, opt);
     for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
-    const std::string out = args.json ? modesToJson(rep).dump(2) + "\n" : formatModesText(rep);
-    std::cout << out << std::flush;
+    args.json ? emitResult(modesToJson(rep)) : emitResult(formatModesText(rep));
     return kOk;
   });
 }
@@ -32,8 +31,7 @@ int runConvergeCommand(const ConvergeArgs& args) {
   return guarded([&] {
     const ArticleScene scene = loadArticleScene(args, "converge");
     const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);
-    const std::string out = args.json ? convergenceToJson(c).dump(2) + "\n" : formatConvergenceText(c);
-    std::cout << out << std::flush;
+    args.json ? emitResult(convergenceToJson(c)) : emitResult(formatConvergenceText(c));
     return kOk;
   });
 }

@@ -128,7 +128,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       }
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << (args.json ? placementJson(s).dump(2) + "\n" : placementText(s)) << std::flush;
+    args.json ? emitResult(placementJson(s)) : emitResult(placementText(s));
     return kOk;
   });
 }

@@ -121,7 +121,7 @@ int runSweepCommand(const SweepArgs& args) {
       plots(*out, r);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    std::cout << (args.json ? sweepJson(r).dump(2) + "\n" : sweepText(r)) << std::flush;
+    args.json ? emitResult(sweepJson(r)) : emitResult(sweepText(r));
     return kOk;
   });
 }
