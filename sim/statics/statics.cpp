@@ -255,10 +255,12 @@ EquilibriumAssessment assessEquilibrium(const Model& model, const EquilibriumRes
                                     q[i] * 180 / M_PI, moved, c.reference * 180 / M_PI));
   }
   if (dofs.empty()) return a;
-  Eigen::MatrixXd K = calcStiffness(model, eq.state, dofs);
+  SimTK::State st = eq.state;
+  model.getSystem().realize(st, SimTK::Stage::Position);  // a copied State must be realized again
+  Eigen::MatrixXd K = calcStiffness(model, st, dofs);
   if (model.getNumClosureRows() > 0) {
-    K += calcPointForceStiffness(model, eq.state, dofs, closureForces(model, eq.closure_multipliers));
-    const Eigen::MatrixXd Z = nullSpace(calcClosureJacobian(model, eq.state, dofs), static_cast<int>(dofs.size()));
+    K += calcPointForceStiffness(model, st, dofs, closureForces(model, eq.closure_multipliers));
+    const Eigen::MatrixXd Z = nullSpace(calcClosureJacobian(model, st, dofs), static_cast<int>(dofs.size()));
     K = Z.transpose() * K * Z;
   }
   if (K.rows() == 0) return a;

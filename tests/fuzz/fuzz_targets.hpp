@@ -1,0 +1,30 @@
+#pragma once
+// The fuzz targets (tests/fuzz/README.md): what one input does to the scene reader and to
+// `modes`, judged against the README's contract. Shared by the libFuzzer harnesses
+// (scene_fuzzer.cpp, built by tests/fuzz/build.sh with clang) and by the suite's replay
+// of the regression corpus (replay_test.cpp), so the corpus is judged the same way in
+// both.
+#include <exception>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace mmv::fuzz {
+
+/// The scene reader on `text` as a file named fuzz.yaml. nullopt: the contract held (a
+/// scene, or a SceneError that points at fuzz.yaml:line:col); else what broke it.
+std::optional<std::string> readerTarget(const std::string& text);
+
+/// `modes` (text and JSON) on what the reader accepts, at 2 segments per flexible link.
+/// nullopt: the contract held (a result with every number finite, or a named error:
+/// scene, numerical); else what broke it (another exception, a NaN or inf printed).
+std::optional<std::string> modesTarget(const std::string& text);
+
+/// The judgement, exposed for its own tests. An exception: nullopt for a NumericalError
+/// or a SceneError that starts with fuzz.yaml:LINE:COL:, else the breach.
+std::optional<std::string> judgeException(std::exception_ptr error);
+/// An output: the breach when the text prints a NaN or inf, or the JSON holds one.
+std::optional<std::string> judgeOutput(const std::string& text, const nlohmann::ordered_json& json);
+
+}  // namespace mmv::fuzz
