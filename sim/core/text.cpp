@@ -84,14 +84,22 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
 }  // namespace
 
 namespace {
-/// The length of the UTF-8 sequence at s[i] (its lead byte, then continuation bytes
-/// 10xxxxxx), or 0 when the bytes there are not one.
+/// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629, table 3-7 of the
+/// Unicode standard: no overlong forms such as C0 8E, no surrogates, nothing above
+/// U+10FFFF -- what JSON writers accept), or 0 when the bytes there are not one.
 std::size_t utf8Length(const std::string& s, std::size_t i) {
-  const auto c = static_cast<unsigned char>(s[i]);
-  const std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
-  bool ok = len > 0 && i + len <= s.size();
-  for (std::size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
-  return ok ? len : 0;
+  const auto at = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
+  const unsigned char c = at(0);
+  if (c < 0x80) return 1;
+  std::size_t len = 0;
+  unsigned char lo = 0x80, hi = 0xBF;  // the allowed range of the second byte
+  if (c >= 0xC2 && c <= 0xDF) len = 2;
+  else if (c >= 0xE0 && c <= 0xEF) len = 3, lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+  else if (c >= 0xF0 && c <= 0xF4) len = 4, lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+  if (len == 0 || i + len > s.size() || at(1) < lo || at(1) > hi) return 0;
+  for (std::size_t k = 2; k < len; ++k)
+    if (at(k) < 0x80 || at(k) > 0xBF) return 0;
+  return len;
 }
 }  // namespace
 

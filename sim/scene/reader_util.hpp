@@ -130,7 +130,8 @@ class YamlReader {
       const YAML::Node key = it->first;
       if (!key.IsScalar()) fail(key.Mark(), path + ": keys must be text");
       const std::string k = key.Scalar();
-      if (!isValidUtf8(k)) fail(key.Mark(), path + ": keys must be UTF-8 text (got " + printable(k) + ")");
+      if (!isValidUtf8(k))
+        fail(key.Mark(), (path.empty() ? std::string("scene") : path) + ": keys must be UTF-8 text (got " + printable(k) + ")");
       const std::string where = path.empty() ? k : path + "." + k;
       if (out.count(k)) fail(key.Mark(), "duplicate key '" + where + "'");
       bool ok = false;
