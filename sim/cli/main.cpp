@@ -267,6 +267,19 @@ std::pair<CLI::App*, CLI::App*> addDesignSweepCommands(CLI::App& app, DesignSwee
   return {s, m};
 }
 
+/// Whether `name` is a command; if not, says so with the closest ones and the list
+/// (CLI11 alone would only say that a subcommand is required).
+bool knownCommand(CLI::App& app, const std::string& name) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  if (std::find(names.begin(), names.end(), name) != names.end()) return true;
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  std::cerr << "mmvlab: unknown command '" << mmv::printable(name) << "'" << mmv::didYouMean(name, names)
+            << "; commands: " << list << " (mmvlab --help)\n";
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -306,17 +319,7 @@ int main(int argc, char** argv) {
     if (CLI::Option* o = sub->get_option_no_throw("--out"))
       o->check(CLI::Validator([](std::string& v) { return v.empty() ? std::string("empty path") : std::string(); }, "PATH"));
 
-  if (argc > 1 && argv[1][0] != '-') {  // a misspelt command: CLI11 would only say one is required
-    std::vector<std::string> names;
-    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
-    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
-      std::string list;
-      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-      std::cerr << "mmvlab: unknown command '" << mmv::printable(argv[1]) << "'" << mmv::didYouMean(argv[1], names)
-                << "; commands: " << list << " (mmvlab --help)\n";
-      return kUsage;
-    }
-  }
+  if (argc > 1 && argv[1][0] != '-' && !knownCommand(app, argv[1])) return kUsage;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

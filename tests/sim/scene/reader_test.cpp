@@ -150,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:5:11: base.motion: sine dwell 0.2 m at 1 Hz: peak displacement 0.2 m exceeds the table's +-0.15 m stroke"},
         BadCase{"unreadable profile", "gravity: [0, -9.81, 0]",
                 "gravity: [0, -9.81, 0]\nbase:\n  type: table\n  motion: {type: csv, file: /dev/null}",
-                "s.yaml:5:11: base.motion: /dev/null:0: empty profile (expected the header time_s,x_m)"},
+                "s.yaml:5:29: base.motion.file: cannot read profile '/dev/null': is not a regular file (a device, FIFO or socket)"},
         BadCase{"view looking along up", "gravity: [0, -9.81, 0]",
                 "gravity: [0, -9.81, 0]\nviews:\n  down: {eye: [0, 5, 0], target: [0, 0, 0], up: [0, 1, 0]}",
                 "s.yaml:4:9: views.down.up must not be parallel to the line of sight (or zero)"},
