@@ -145,7 +145,7 @@ std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
   Eigen::VectorXd rhs(n_ + m_);
   rhs << -res.force, -res.closure;
   const Eigen::VectorXd row_max = A.cwiseAbs().rowwise().maxCoeff();
-  if (!(row_max.head(n_).minCoeff() > k_min) || !(row_max.tail(m_).minCoeff() > 0)) return std::nullopt;
+  if (!(row_max.head(n_).minCoeff() > k_min) || (m_ > 0 && !(row_max.tail(m_).minCoeff() > 0))) return std::nullopt;
   const Eigen::VectorXd r = row_max.cwiseInverse();
   Eigen::PartialPivLU<Eigen::MatrixXd> lu(r.asDiagonal() * A);
   const double pivot = lu.matrixLU().diagonal().head(n_).cwiseAbs().minCoeff();
