@@ -44,6 +44,7 @@ int runCompareCommand(const CompareArgs& args) {
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);  // fail early, before the work
     const CompareReport rep = runCompare(scene, o);
+    checkResultFinite(compareToJson(rep));  // before any file is committed
     if (out) {
       writeText(out->stage("compare.md"), formatCompareMarkdown(rep));
       for (const auto& [name, text] : compareCsvFiles(rep)) writeText(out->stage(name), text);

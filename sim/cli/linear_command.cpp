@@ -166,6 +166,7 @@ int runFrfCommand(const LinearArgs& args) {
           }
         }
       std::ofstream(out->stage("frf.uff"), std::ios::binary) << frfUff(lm, scene, f, hf);
+      checkResultFinite(linearSummaryText(lm, red, err, f, hf));  // before any file is committed
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
     emitResult(linearSummaryText(lm, red, err, f, hf));
@@ -193,7 +194,9 @@ int runRomCommand(const LinearArgs& args) {
     } catch (const std::runtime_error& e) {
       throw OutputError(e.what());
     }
-    std::ofstream(out.stage("rom.json"), std::ios::binary) << romJson(lm, red, err, f).dump(2) << '\n';
+    const nlohmann::ordered_json rom_json = romJson(lm, red, err, f);
+    checkResultFinite(rom_json);  // before any file is committed
+    std::ofstream(out.stage("rom.json"), std::ios::binary) << rom_json.dump(2) << '\n';
     for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     emitResult(linearSummaryText(lm, red, err, f, hf));
     return kOk;

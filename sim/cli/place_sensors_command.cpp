@@ -108,6 +108,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     std::optional<HamsasModes> h;
     if (isolator) h = analyseHamsas(isolator->isolator);
     const PlacementStudy s = article ? runPlacement(*article, o) : runHamsasPlacement(*isolator, *h, o);
+    checkResultFinite(placementJson(s));  // before any file is committed
     if (out) {
       std::ofstream(out->stage("placement.json"), std::ios::binary) << placementJson(s).dump(2) << '\n';
       std::ofstream(out->stage("candidates.csv"), std::ios::binary) << placementCandidatesCsv(s);

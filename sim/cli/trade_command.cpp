@@ -64,6 +64,7 @@ int runTradeCommand(const TradeArgs& args) {
       reportProgress(problem, o, progress);
       return runTrade(problem, o);
     }();
+    checkResultFinite(tradeJson(s, args.target_error));  // before any file is committed
     if (out) {
       std::ofstream(out->stage("trade.csv"), std::ios::binary) << tradeCsv(s);
       std::ofstream(out->stage("trade.json"), std::ios::binary) << tradeJson(s, args.target_error).dump(2) << '\n';
