@@ -8,6 +8,8 @@
 #include <tuple>
 #include <sstream>
 
+#include <tbb/parallel_invoke.h>
+
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
@@ -81,7 +83,7 @@ void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, con
     if (!problem(o.point).empty()) throw UsageError("--output " + o.name + ": " + problem(o.point));
 }
 
-LinearModel build(const LinearArgs& args, const ArticleScene& scene) {
+LinearModel build(const LinearArgs& args, const ArticleScene& scene, bool prepare_responses) {
   std::vector<InputSpec> in;
   std::vector<OutputSpec> out;
   for (const auto& t : args.inputs) in.push_back(parseInput(t));
@@ -92,7 +94,7 @@ LinearModel build(const LinearArgs& args, const ArticleScene& scene) {
   DampingSpec d;
   d.modal_ratio = args.damping_ratio;
   if (scene.damping && !args.damping_given) d = *scene.damping;
-  return buildLinearModel(scene, in, out, d);
+  return buildLinearModel(scene, in, out, d, prepare_responses);
 }
 
 }  // namespace
@@ -112,6 +114,19 @@ namespace {
 
 ReducedModel reduce(const LinearArgs& args, const StateSpace& full) { return reduceModal(full, reductionOptions(args)); }
 
+struct Linear {
+  LinearModel lm;
+  ReducedModel red;
+};
+
+/// The linear model and its reduction; the full model's responses are prepared (one
+/// Hessenberg reduction of the first-order matrix) on another core meanwhile.
+Linear buildAndReduce(const LinearArgs& args, const ArticleScene& scene) {
+  Linear r{build(args, scene, false), {}};
+  tbb::parallel_invoke([&] { r.lm.second_order.prepare(); }, [&] { r.red = reduce(args, r.lm.full); });
+  return r;
+}
+
 std::vector<double> frequencies(const LinearArgs& a) {
   if (!(a.f_min > 0) || !(a.f_max > a.f_min)) throw UsageError("--from/--to: need 0 < FROM < TO (Hz)");
   return logFrequencies(a.f_min, a.f_max, a.points);
@@ -128,8 +143,7 @@ int runFrfCommand(const LinearArgs& args) {
     if (!args.vary.empty()) throw UsageError("--vary applies to HAM-SAS scenes only");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    LinearModel lm = build(args, scene);
-    const ReducedModel red = reduce(args, lm.full);
+    const auto [lm, red] = buildAndReduce(args, scene);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
     const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
@@ -182,8 +196,7 @@ int runRomCommand(const LinearArgs& args) {
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h, f);
     const ArticleScene& scene = std::get<ArticleScene>(loaded);
     OutputDir out(args.out, args.force);
-    LinearModel lm = build(args, scene);
-    const ReducedModel red = reduce(args, lm.full);
+    const auto [lm, red] = buildAndReduce(args, scene);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
     const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);

@@ -141,7 +141,7 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
   }
   const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
   const ModalSolution& modes = lm.solved.modes;
-  for (int k = 0; k < std::min<int>(12, static_cast<int>(modes.omega2.size())); ++k) {
+  for (int k = 0; k < std::min<int>(kLinearModelModes, static_cast<int>(modes.omega2.size())); ++k) {
     uff::ModeShape m;
     m.mode = k + 1;
     m.frequency_hz = modes.frequencyHz(k);

@@ -146,9 +146,12 @@ std::vector<OutputSpec> defaultOutputs(const ArticleScene& scene) {
 }
 
 LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputSpec>& inputs,
-                             const std::vector<OutputSpec>& outputs, const DampingSpec& damping) {
+                             const std::vector<OutputSpec>& outputs, const DampingSpec& damping,
+                             bool prepare_responses) {
   LinearModel lm;
-  lm.solved = solveScene(scene);
+  // The undamped modes serve only the UFF file's first 12 shapes (linear_report.cpp):
+  // on large models only those are solved for (shift-invert Lanczos).
+  lm.solved = solveScene(scene, {}, kLinearModelModes);
   lm.inputs = inputs;
   lm.outputs = outputs;
   const Model& model = *lm.solved.model;
@@ -177,7 +180,7 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   so.C = lm.Cz;
   so.K = lm.Kz;
   so.Bq = lm.Bq;
-  so.prepare();
+  if (prepare_responses) so.prepare();
   lm.full = secondOrderModel(lm.Mz, lm.Cz, lm.Kz, lm.Bq, so.Cd, so.Cv, so.Ca, so.D);
   nameSignals(model, lin, inputs, outputs, lm.full);
   return lm;

@@ -1,58 +1,20 @@
 // Modal reduction of a state-space model (sim/linear/state_space.hpp): modes of the
 // state matrix, those no input-output pair sees dropped, a count or a band kept,
 // the rest statically residualized.
-#include <Eigen/Eigenvalues>
+#include <optional>
 #include <algorithm>
 #include <cmath>
 
 #include "sim/core/linalg.hpp"
 #include "sim/core/errors.hpp"
+#include "sim/linear/state_modes.hpp"
 #include "sim/linear/state_space.hpp"
 
 namespace mmv {
 namespace {
 
-using cd = std::complex<double>;
-
-/// One mode of the state matrix: a real eigenvalue or a complex pair (the member with Im > 0).
-struct ModeRef {
-  int index;
-  bool pair;
-  double magnitude;
-  Eigen::MatrixXd residue;  ///< |C_o v| |w B_i| / |lambda| per output-input pair.
-};
-
-/// The eigen solution of E^-1 A with its left eigenvectors.
-struct StateEigen {
-  Eigen::MatrixXd At, Bt;  ///< E^-1 A, E^-1 B.
-  Eigen::VectorXcd lambda;
-  Eigen::MatrixXcd V, W;   ///< right (columns), left (rows), W V = I.
-  std::vector<ModeRef> modes;
-  Eigen::MatrixXd pair_max;  ///< the largest modal residue of each output-input pair.
-};
-
-StateEigen stateModes(const StateSpace& full) {
-  StateEigen sm;
-  const Eigen::PartialPivLU<Eigen::MatrixXd> Elu(full.E);
-  sm.At = Elu.solve(full.A);
-  sm.Bt = Elu.solve(full.B);
-  Eigen::EigenSolver<Eigen::MatrixXd> es(sm.At);
-  if (es.info() != Eigen::Success) throw NumericalError("modal reduction: eigen solution of the state matrix failed");
-  sm.lambda = es.eigenvalues();
-  sm.V = es.eigenvectors();
-  sm.W = sm.V.inverse();
-  sm.pair_max = Eigen::MatrixXd::Zero(full.C.rows(), full.B.cols());
-  for (int i = 0; i < full.numStates(); ++i) {
-    const cd l = sm.lambda[i];
-    if (l.imag() < -1e-12 * std::abs(l)) continue;
-    const Eigen::VectorXd cv = (full.C.cast<cd>() * sm.V.col(i)).cwiseAbs();
-    const Eigen::RowVectorXd wb = (sm.W.row(i) * sm.Bt.cast<cd>()).cwiseAbs();
-    const Eigen::MatrixXd res = cv * wb / std::max(std::abs(l), 1e-300);
-    sm.pair_max = sm.pair_max.cwiseMax(res);
-    sm.modes.push_back({i, l.imag() > 1e-12 * std::abs(l), std::abs(l), res});
-  }
-  return sm;
-}
+using detail::ModeRef;
+using detail::StateEigen;
 
 /// Drops the modes no pair sees; returns how many.
 int dropUnseen(StateEigen& sm) {
@@ -113,7 +75,7 @@ StateSpace project(const StateSpace& full, const StateEigen& sm, const std::vect
   }
   StateSpace r;
   r.E = L * T;
-  r.A = L * sm.At * T;
+  r.A = L * sm.times_state_matrix(T);
   r.B = L * sm.Bt;
   r.C = full.C * T;
   r.D = full.D;
@@ -126,11 +88,11 @@ StateSpace project(const StateSpace& full, const StateEigen& sm, const std::vect
 }
 
 /// D += H_full(0) - H_kept(0): the discarded modes' static contribution.
-void residualize(const StateSpace& full, StateSpace& r) {
-  const EquilibratedLu a_full(full.A);
-  if (!a_full.isInvertible())
+void residualize(const StateSpace& full, const StateEigen& sm, StateSpace& r) {
+  const std::optional<Eigen::MatrixXd> x = sm.static_solution();
+  if (!x)
     throw NumericalError("static residualization needs a model without rigid-body modes (the state matrix is singular)");
-  const Eigen::MatrixXd h_full = -full.C * a_full.solve(full.B) + full.D;
+  const Eigen::MatrixXd h_full = -full.C * *x + full.D;
   Eigen::MatrixXd h_kept = r.D;
   if (r.numStates() > 0) {
     const EquilibratedLu a_red(r.A);
@@ -140,10 +102,23 @@ void residualize(const StateSpace& full, StateSpace& r) {
   r.D += h_full - h_kept;
 }
 
+/// The modes the options need: only the lowest when a count is kept and no unseen mode
+/// is dropped (which needs every mode's residue), else all.
+StateEigen stateModes(const StateSpace& full, const ReductionOptions& o) {
+  using S = ReductionOptions::Solver;
+  const bool lowest_possible = o.modes > 0 && !o.drop_unseen;
+  if (o.solver == S::Lowest && !lowest_possible)
+    throw NumericalError("modal reduction: the lowest-modes solver needs a mode count and no dropping of unseen modes");
+  if (o.solver != S::Dense && lowest_possible)
+    if (std::optional<StateEigen> sm = detail::lowestStateModes(full, o.modes)) return std::move(*sm);
+  if (o.solver == S::Lowest) throw NumericalError("modal reduction: the lowest-modes solver does not apply to this model");
+  return detail::allStateModes(full);
+}
+
 }  // namespace
 
 ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
-  StateEigen sm = stateModes(full);
+  StateEigen sm = stateModes(full, o);
   const int unseen = o.drop_unseen ? dropUnseen(sm) : 0;
   std::stable_sort(sm.modes.begin(), sm.modes.end(),
                    [](const ModeRef& a, const ModeRef& b) { return a.magnitude < b.magnitude; });
@@ -151,11 +126,11 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
   ReducedModel red;
   red.model = project(full, sm, kept);
   red.kept_modes = static_cast<int>(kept.size());
-  red.discarded_modes = static_cast<int>(sm.modes.size() - kept.size()) + unseen;
   red.unseen_modes = unseen;
   for (const auto& m : kept) red.kept_frequencies_hz.push_back(m.magnitude / (2 * M_PI));
-  if (o.residualize && red.discarded_modes > 0) {
-    residualize(full, red.model);
+  red.every_mode_computed = sm.every_mode;
+  if (o.residualize && red.model.numStates() < full.numStates()) {
+    residualize(full, sm, red.model);
     red.residualized = true;
   }
   return red;

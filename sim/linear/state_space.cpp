@@ -1,6 +1,8 @@
 #include "sim/linear/state_space.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <algorithm>
 #include <cmath>
 
@@ -110,12 +112,15 @@ void SecondOrderResponse::prepareHessenberg() {
   const Eigen::MatrixXd PMi = mlu.solve(rows(Ca).transpose()).transpose();  // (M symmetric)
   Eigen::MatrixXd C1(no, N);
   C1 << rows(Cd) - PMi * K, rows(Cv) - PMi * C;
-  DQ_ = d.asDiagonal() * Q;
-  C1DQ_ = C1 * DQ_;
-  QtDinv_ = Q.transpose() * d.cwiseInverse().asDiagonal();
-  Minv_ = mlu.inverse();
+  // The refinement (hessenbergResponse) works on q alone: q = (D Q)_q z, and a
+  // residual r on the second-order form is carried back as z += (Q^T D^-1)_v M^-1 r.
+  Qq_ = d.head(n).asDiagonal() * Q.topRows(n);
+  Rv_ = mlu.solve(d.tail(n).cwiseInverse().asDiagonal() * Q.bottomRows(n)).transpose();  // (M symmetric)
+  C1q_ = C1.leftCols(n);
+  C1v_ = C1.rightCols(n);
   D1_ = PMi * Bq + D;
-  hessenberg_ = H_.allFinite() && Bh_.allFinite() && C1DQ_.allFinite();
+  c_diagonal_ = C.isDiagonal(0);
+  hessenberg_ = H_.allFinite() && Bh_.allFinite() && Qq_.allFinite() && Rv_.allFinite();
 }
 
 namespace {
@@ -124,67 +129,111 @@ using RowMajorXcd = Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::Row
 
 /// i w I - H (H upper Hessenberg) eliminated to upper triangular U by adjacent-row
 /// partial pivoting: step k swaps rows k, k+1 if swap[k], then row k+1 -= l[k] row k.
-struct HessenbergLu {
-  RowMajorXcd U;
-  std::vector<char> swap;
-  std::vector<cd> l;
-
+/// U's rows are packed (row k holds columns k..N-1) with real and imaginary parts apart
+/// (real vector arithmetic, twice as wide as complex), in buffers each thread keeps, so
+/// a frequency neither copies H nor touches fresh pages.
+class HessenbergLu {
+ public:
   HessenbergLu(const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& H, double w)
-      : U(-H.cast<cd>()), swap(H.rows(), 0), l(H.rows(), 0.0) {
-    const Eigen::Index N = U.rows();
-    U.diagonal().array() += cd(0, w);
-    for (Eigen::Index k = 0; k + 1 < N; ++k) {
-      const Eigen::Index len = N - k;
-      if (std::abs(U(k + 1, k)) > std::abs(U(k, k))) {
-        U.row(k).tail(len).swap(U.row(k + 1).tail(len));
-        swap[k] = 1;
+      : N_(H.rows()), swap_(N_, 0), l_(N_, 0.0) {
+    thread_local std::vector<double> packed_re, packed_im, carry_re, carry_im;
+    for (auto* v : {&packed_re, &packed_im}) v->resize(N_ * (N_ + 1) / 2);
+    for (auto* v : {&carry_re, &carry_im}) v->resize(N_);
+    re_ = packed_re.data(), im_ = packed_im.data();
+    using Vec = Eigen::Map<Eigen::ArrayXd>;
+    Vec rr(carry_re.data(), N_), ri(carry_im.data(), N_);  // the row carried down, columns k..N-1
+    rr = -H.row(0).transpose().array();
+    ri.setZero();
+    ri[0] = w;
+    for (Eigen::Index k = 0; k + 1 < N_; ++k) {
+      const Eigen::Index len = N_ - k, m = len - 1;
+      Vec ur(re_ + offset(k), len), ui(im_ + offset(k), len);
+      const auto t = -H.row(k + 1).segment(k, len).transpose().array();  // row k + 1 of -H from column k
+      const double tk = t[0];
+      if (std::abs(tk) > std::hypot(rr[k], ri[k])) {  // the next row is the pivot
+        swap_[k] = 1;
+        ur = t;
+        ui.setZero();
+        ui[1] = w;
+        const cd l = cd(rr[k], ri[k]) / tk;
+        l_[k] = l;
+        rr.segment(k + 1, m) -= l.real() * ur.tail(m) - l.imag() * ui.tail(m);
+        ri.segment(k + 1, m) -= l.real() * ui.tail(m) + l.imag() * ur.tail(m);
+      } else {
+        ur = rr.segment(k, len);
+        ui = ri.segment(k, len);
+        const cd l = tk != 0.0 ? tk / cd(ur[0], ui[0]) : cd(0.0);
+        l_[k] = l;
+        rr.segment(k + 1, m) = t.tail(m) - (l.real() * ur.tail(m) - l.imag() * ui.tail(m));
+        ri.segment(k + 1, m) = -(l.real() * ui.tail(m) + l.imag() * ur.tail(m));
+        ri[k + 1] += w;
       }
-      if (U(k + 1, k) == 0.0) continue;
-      l[k] = U(k + 1, k) / U(k, k);
-      U.row(k + 1).tail(len - 1) -= l[k] * U.row(k).tail(len - 1);
-      U(k + 1, k) = 0.0;
     }
+    re_[offset(N_ - 1)] = rr[N_ - 1];
+    im_[offset(N_ - 1)] = ri[N_ - 1];
   }
 
   /// Solves in place (rows of X over the N states).
   void solve(RowMajorXcd& X) const {
-    const Eigen::Index N = U.rows();
-    for (Eigen::Index k = 0; k + 1 < N; ++k) {
-      if (swap[k]) X.row(k).swap(X.row(k + 1));
-      X.row(k + 1) -= l[k] * X.row(k);
+    for (Eigen::Index k = 0; k + 1 < N_; ++k) {
+      if (swap_[k]) X.row(k).swap(X.row(k + 1));
+      X.row(k + 1) -= l_[k] * X.row(k);
     }
-    for (Eigen::Index k = N - 1; k >= 0; --k) {
-      if (k + 1 < N) X.row(k) -= U.row(k).tail(N - k - 1) * X.bottomRows(N - k - 1);
-      X.row(k) /= U(k, k);
+    Eigen::VectorXd xr(N_), xi(N_);
+    for (Eigen::Index c = 0; c < X.cols(); ++c) {
+      xr = X.col(c).real();
+      xi = X.col(c).imag();
+      for (Eigen::Index k = N_ - 1; k >= 0; --k) {
+        const Eigen::Index len = N_ - k, m = len - 1;
+        const Eigen::Map<const Eigen::VectorXd> ur(re_ + offset(k), len), ui(im_ + offset(k), len);
+        cd x(xr[k], xi[k]);
+        if (m > 0) {
+          const auto br = xr.tail(m), bi = xi.tail(m);
+          x -= cd(ur.tail(m).dot(br) - ui.tail(m).dot(bi), ur.tail(m).dot(bi) + ui.tail(m).dot(br));
+        }
+        x /= cd(ur[0], ui[0]);
+        xr[k] = x.real(), xi[k] = x.imag();
+      }
+      X.col(c).real() = xr;
+      X.col(c).imag() = xi;
     }
   }
+
+ private:
+  Eigen::Index offset(Eigen::Index k) const { return k * N_ - k * (k - 1) / 2; }
+  Eigen::Index N_;
+  std::vector<char> swap_;
+  std::vector<cd> l_;
+  double *re_, *im_;
 };
 
 }  // namespace
 
 Eigen::MatrixXcd SecondOrderResponse::hessenbergResponse(double w) const {
-  const Eigen::Index n = K.rows(), N = 2 * n;
   const HessenbergLu lu(H_, w);
   RowMajorXcd Z = Bh_.cast<cd>();
   lu.solve(Z);
-  // x = D Q z; one refinement on the residual of the original descriptor form,
-  // r = [0; Bq] - (i w E - A) x with E = diag(I, M), A = [0 I; -K -C] (the explicit
-  // M^-1 K of the Hessenberg matrix costs digits when M is ill-conditioned).
-  const auto real = [](const Eigen::MatrixXd& A, const Eigen::MatrixXcd& v) {  // real A, complex v
+  // q = (D Q)_q z, refined once on the residual of the second-order form,
+  // r = Bq - (K - w^2 M + i w C) q (the explicit M^-1 K of the Hessenberg matrix costs
+  // digits when M is ill-conditioned): with v = i w q the first-order residual is
+  // [0; r], so the correction solves (i w I - A1) dx = [0; M^-1 r] in the balanced
+  // Hessenberg basis, and q += (D Q)_q dz.
+  const auto real = [](const Eigen::MatrixXd& A, const auto& v) {  // real A, complex v
     Eigen::MatrixXcd y(A.rows(), v.cols());
-    y.real() = A * v.real();
-    y.imag() = A * v.imag();
+    y.real().noalias() = A * v.real();
+    y.imag().noalias() = A * v.imag();
     return y;
   };
-  const Eigen::MatrixXcd x = real(DQ_, Z);
-  const Eigen::MatrixXcd q = x.topRows(n), v = x.bottomRows(n);
-  Eigen::MatrixXcd rhs(N, x.cols());
-  rhs.topRows(n) = v - cd(0, w) * q;
-  rhs.bottomRows(n) = real(Minv_, Bq.cast<cd>() - cd(0, w) * real(M, v) - real(K, q) - real(C, v));
-  // The correction solves (i w I - A1) dx = E^-1 r in the balanced Hessenberg basis.
-  RowMajorXcd dz = real(QtDinv_, rhs);
+  Eigen::MatrixXcd q = real(Qq_, Z);
+  Eigen::MatrixXcd r = Bq.cast<cd>() - real(K, q) + (w * w) * real(M, q);
+  if (c_diagonal_)
+    r -= cd(0, w) * (C.diagonal().cast<cd>().asDiagonal() * q);
+  else
+    r -= cd(0, w) * real(C, q);
+  RowMajorXcd dz = real(Rv_, r);
   lu.solve(dz);
-  return real(C1DQ_, Z + dz) + D1_.cast<cd>();
+  q += real(Qq_, dz);
+  return real(C1q_, q) + cd(0, w) * real(C1v_, q) + D1_.cast<cd>();
 }
 
 void SecondOrderResponse::prepare() {
@@ -262,9 +311,12 @@ ModelError compareResponses(const std::vector<Eigen::MatrixXcd>& a, const StateS
 }
 
 std::vector<Eigen::MatrixXcd> fullResponses(const SecondOrderResponse& h, const std::vector<double>& omegas) {
-  std::vector<Eigen::MatrixXcd> out;
-  out.reserve(omegas.size());
-  for (double w : omegas) out.push_back(h.response(w));
+  // Frequencies are independent: spread over the cores (each response is computed the
+  // same way on any thread, so the result does not depend on how many there are).
+  std::vector<Eigen::MatrixXcd> out(omegas.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, omegas.size(), 8), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t k = r.begin(); k != r.end(); ++k) out[k] = h.response(omegas[k]);
+  });
   return out;
 }
 

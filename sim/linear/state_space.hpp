@@ -100,9 +100,14 @@ struct SecondOrderResponse {
   Eigen::MatrixXd P_, Od_, Ov_, Oa_;         ///< Phi^T Bq; Cd Phi, Cv Phi, Ca Phi.
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;  ///< Hessenberg, rows contiguous.
   Eigen::MatrixXd Bh_;                       ///< Q^T D^-1 [0; M^-1 Bq].
-  Eigen::MatrixXd DQ_, QtDinv_, Minv_;       ///< D Q, Q^T D^-1, M^-1 (the refinement step).
-  Eigen::MatrixXd C1DQ_, D1_;                ///< outputs on the state (y = C1 x + D1), times D Q.
+  Eigen::MatrixXd Qq_, Rv_;                  ///< (D Q)_q; (Q^T D^-1)_v M^-1 (the refinement step).
+  Eigen::MatrixXd C1q_, C1v_, D1_;           ///< outputs on the state (y = C1 [q; v] + D1).
+  bool c_diagonal_ = false;
 };
+
+/// How many undamped modes a linear model carries (LinearModel::solved.modes): the
+/// shapes written with its responses.
+inline constexpr int kLinearModelModes = 12;
 
 /// A solved scene with its linear model.
 struct LinearModel {
@@ -116,9 +121,11 @@ struct LinearModel {
 };
 
 /// Builds the linear model. Throws SceneError for an input or output naming an
-/// unknown point or joint, or a torque on a locked joint (it has no DOF).
+/// unknown point or joint, or a torque on a locked joint (it has no DOF). Without
+/// `prepare_responses` the caller runs second_order.prepare() (e.g. beside other work).
 LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputSpec>& inputs,
-                             const std::vector<OutputSpec>& outputs, const DampingSpec& damping);
+                             const std::vector<OutputSpec>& outputs, const DampingSpec& damping,
+                             bool prepare_responses = true);
 
 /// Defaults when a command names none: base acceleration in x and y; absolute
 /// acceleration in x and y of every link tip.
@@ -133,13 +140,19 @@ struct ReductionOptions {
   /// Skip modes no input-output pair sees (residue ||C v|| ||w B|| / |lambda| below 1e-9
   /// of the largest): symmetric structures have many (an isolator's leg torsion).
   bool drop_unseen = false;
+  /// Automatic: only the lowest modes (shift-invert Arnoldi, O(n^2) per step) when a
+  /// count is kept and nothing is dropped, falling back to every mode (the dense
+  /// solver, O(n^3)) when that does not apply or a check fails. Dense and Lowest force
+  /// one (Lowest throws NumericalError where it does not apply): for tests.
+  enum class Solver { Automatic, Dense, Lowest } solver = Solver::Automatic;
 };
 
 struct ReducedModel {
   StateSpace model;
-  int kept_modes = 0, discarded_modes = 0;
+  int kept_modes = 0;
   int unseen_modes = 0;  ///< of the discarded, those no input-output pair sees (drop_unseen).
   bool residualized = false;
+  bool every_mode_computed = true;  ///< false: only the lowest modes were (ReductionOptions::Solver).
   std::vector<double> kept_frequencies_hz;
 };
 

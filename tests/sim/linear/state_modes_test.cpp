@@ -1,0 +1,211 @@
+// The modal reduction's two eigen solvers (sim/linear/state_modes.hpp): the partial
+// (shift-invert Arnoldi on the second-order structure) against the dense one.
+#include "sim/linear/state_modes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "sim/core/errors.hpp"
+#include "support/scenes.hpp"
+
+namespace mmv {
+namespace {
+
+using Eigen::MatrixXd;
+using Solver = ReductionOptions::Solver;
+
+std::vector<double> omegas(double f0, double f1, int n) {
+  std::vector<double> w = logFrequencies(f0, f1, n);
+  for (double& x : w) x *= 2 * M_PI;
+  return w;
+}
+
+ReducedModel reduceWith(const StateSpace& full, int modes, Solver solver) {
+  ReductionOptions o;
+  o.modes = modes;
+  o.solver = solver;
+  return reduceModal(full, o);
+}
+
+/// Backward error of each computed mode on the quadratic problem (lambda^2 M + lambda C + K) phi = 0.
+double worstResidual(const StateSpace& full, const detail::StateEigen& sm) {
+  const Eigen::Index n = full.numStates() / 2;
+  const MatrixXd M = full.E.bottomRightCorner(n, n), C = -full.A.bottomRightCorner(n, n), K = -full.A.bottomLeftCorner(n, n);
+  double worst = 0;
+  for (const auto& m : sm.modes) {
+    const std::complex<double> l = sm.lambda[m.index];
+    const Eigen::VectorXcd phi = sm.V.col(m.index).head(n);
+    const Eigen::VectorXcd r = l * l * (M * phi) + l * (C * phi) + K * phi;
+    worst = std::max(worst, r.norm() / ((std::norm(l) * M.norm() + std::abs(l) * C.norm() + K.norm()) * phi.norm()));
+  }
+  return worst;
+}
+
+/// The two reductions are the same model to the dense solver's accuracy, and the
+/// partial one is the more accurate: its modes solve the quadratic problem to round-off
+/// (the dense solver works on the explicit M^-1 K, whose norm, the stiffest hinge's
+/// omega^2, costs the low modes digits: 1e-9 backward error, 1e-8 in frequency), and its
+/// reduced model is no farther from the full model.
+/// `truth`: the full model's responses at w.
+void expectSameReduction(const StateSpace& full, int modes, const std::vector<double>& w,
+                         const std::vector<Eigen::MatrixXcd>& truth) {
+  const ReducedModel dense = reduceWith(full, modes, Solver::Dense);
+  const ReducedModel lowest = reduceWith(full, modes, Solver::Lowest);
+  EXPECT_TRUE(dense.every_mode_computed);
+  EXPECT_FALSE(lowest.every_mode_computed);
+  const std::optional<detail::StateEigen> sm = detail::lowestStateModes(full, modes);
+  ASSERT_TRUE(sm.has_value());
+  ASSERT_FALSE(sm->every_mode);
+  EXPECT_LT(worstResidual(full, *sm), 1e-11);
+  ASSERT_EQ(dense.kept_frequencies_hz.size(), lowest.kept_frequencies_hz.size());
+  for (std::size_t k = 0; k < dense.kept_frequencies_hz.size(); ++k)
+    EXPECT_NEAR(lowest.kept_frequencies_hz[k], dense.kept_frequencies_hz[k], 1e-7 * dense.kept_frequencies_hz[k]) << k;
+  EXPECT_LT(compareResponses(dense.model, lowest.model, w).max_relative, 1e-7);
+  ASSERT_EQ(dense.model.numStates(), lowest.model.numStates());
+  const double e_dense = compareResponses(truth, dense.model, w).max_relative;
+  const double e_lowest = compareResponses(truth, lowest.model, w).max_relative;
+  EXPECT_LE(e_lowest, e_dense + 1e-9);
+}
+
+// The table scene's hinge dampers under gravity: non-proportional damping, and past the
+// tenth pair the overdamped roots crowd at -1/beta (hundreds within 1e-5 of each other).
+TEST(StateModes, LowestAndDenseReductionsAgreeOnTheTableScene) {
+  ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-table.yaml");
+  overrideSegments(s, 32);
+  const LinearModel lm = buildLinearModel(s, defaultInputs(), defaultOutputs(s), *s.damping);
+  // (12: the twelfth pair lies just below the cluster, which the completeness check must
+  // then converge on.)
+  const std::vector<double> w = omegas(0.01, 100, 300);
+  const std::vector<Eigen::MatrixXcd> truth = fullResponses(lm.second_order, w);
+  for (int modes : {1, 4, 10, 12}) {
+    SCOPED_TRACE(modes);
+    expectSameReduction(lm.full, modes, w, truth);
+  }
+}
+
+TEST(StateModes, LowestAndDenseReductionsAgreeOnAClosedTree) {
+  ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-closed.yaml");
+  overrideSegments(s, 16);
+  DampingSpec d;
+  d.kind = DampingSpec::Kind::HingeViscous;
+  d.hinge_beta = 0.002;
+  const LinearModel lm = buildLinearModel(s, defaultInputs(), defaultOutputs(s), d);
+  ASSERT_GT(lm.Z.cols(), 0);
+  ASSERT_LT(lm.Z.cols(), lm.Z.rows());  // the closure removes coordinates
+  const std::vector<double> w = omegas(0.01, 100, 300);
+  expectSameReduction(lm.full, 8, w, fullResponses(lm.second_order, w));
+}
+
+/// M q'' + C q' + K q = B u over a chain of n unit masses with springs k between them
+/// and to ground, damping c_i on each mass, force on the last, displacement of the first.
+StateSpace chain(int n, const Eigen::VectorXd& c, double k = 1e4) {
+  MatrixXd M = MatrixXd::Identity(n, n), K = MatrixXd::Zero(n, n), B = MatrixXd::Zero(n, 1), Cd = MatrixXd::Zero(1, n);
+  for (int i = 0; i < n; ++i) {
+    K(i, i) += 2 * k;
+    if (i + 1 < n) K(i, i + 1) = K(i + 1, i) = -k;
+  }
+  B(n - 1, 0) = 1;
+  Cd(0, 0) = 1;
+  return secondOrderModel(M, MatrixXd(c.asDiagonal()), K, B, Cd, MatrixXd(), MatrixXd(), MatrixXd());
+}
+
+// An overdamped mass gives two real roots below the second pair: they are kept, and the
+// Arnoldi run must reach past them to find the pairs.
+TEST(StateModes, RealRootsBelowTheKeptPairsAreFoundAndKept) {
+  Eigen::VectorXd c = Eigen::VectorXd::Constant(30, 0.5);
+  c[0] = 2000;
+  const StateSpace full = chain(30, c);
+  const Eigen::VectorXcd poles = full.poles();
+  int real_below = 0;
+  for (Eigen::Index i = 0; i < poles.size(); ++i) real_below += std::abs(poles[i].imag()) < 1e-9 && std::abs(poles[i]) < 100;
+  ASSERT_GE(real_below, 1);
+  const std::vector<double> w = omegas(0.01, 30, 200);
+  std::vector<Eigen::MatrixXcd> truth;
+  for (double x : w) truth.push_back(full.response(x));
+  expectSameReduction(full, 3, w, truth);
+}
+
+/// Two identical, uncoupled oscillators (2 rad/s, slightly damped) below a stiff chain
+/// of n - 2 masses; the input drives and the output sees each.
+StateSpace twinOscillators(int n) {
+  MatrixXd M = MatrixXd::Identity(n, n), K = MatrixXd::Zero(n, n), C = MatrixXd::Zero(n, n), B = MatrixXd::Zero(n, 2),
+           Cd = MatrixXd::Zero(2, n);
+  for (int i = 0; i < 2; ++i) K(i, i) = 4.0, C(i, i) = 0.02, B(i, i) = 1, Cd(i, i) = 1;
+  for (int i = 2; i < n; ++i) K(i, i) = 1e4 * (i + 1), C(i, i) = 0.5;
+  return secondOrderModel(M, C, K, B, Cd, MatrixXd(), MatrixXd(), MatrixXd());
+}
+
+// A repeated eigenvalue: Arnoldi from a random start finds both copies (round-off
+// brings the second in) and the reduction keeps them, as the dense one does.
+TEST(StateModes, BothCopiesOfARepeatedEigenvalueAreKept) {
+  const StateSpace full = twinOscillators(30);
+  const ReducedModel lowest = reduceWith(full, 2, Solver::Lowest);
+  ASSERT_EQ(lowest.kept_frequencies_hz.size(), 2u);
+  for (double f : lowest.kept_frequencies_hz) EXPECT_NEAR(f * 2 * M_PI, 2.0, 1e-9);
+  // The dense solver's eigenvectors keep the oscillators apart, Arnoldi's mix them, so
+  // the pairs that are zero by symmetry hold round-off (1e-13 of the peak) in one and
+  // exact zeros in the other: compared against the largest response.
+  const ReducedModel dense = reduceWith(full, 2, Solver::Dense);
+  double diff = 0, peak = 0;
+  for (double x : omegas(0.01, 1, 100)) {
+    diff = std::max(diff, (dense.model.response(x) - lowest.model.response(x)).cwiseAbs().maxCoeff());
+    peak = std::max(peak, dense.model.response(x).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(diff, 1e-11 * peak);
+}
+
+// From a start vector with equal components on the two oscillators the Krylov space
+// holds only their symmetric motion, so the first run misses the antisymmetric copy and
+// keeps the chain's lowest pair instead: the deflation check must see the missed copy,
+// and the automatic choice then keeps both copies by the dense solver.
+TEST(StateModes, TheDeflationCheckCatchesAModeArnoldiMissed) {
+  const StateSpace full = twinOscillators(30);
+  Eigen::VectorXd start = Eigen::VectorXd::LinSpaced(60, 1.0, 2.0);
+  start[1] = start[0];    // q
+  start[31] = start[30];  // q'
+  std::string why;
+  EXPECT_FALSE(detail::lowestStateModes(full, 2, &why, &start).has_value());
+  EXPECT_EQ(why, "the deflated operator has a mode as low as the kept ones");
+  const ReducedModel automatic = reduceWith(full, 2, Solver::Automatic);
+  ASSERT_EQ(automatic.kept_frequencies_hz.size(), 2u);
+  for (double f : automatic.kept_frequencies_hz) EXPECT_NEAR(f * 2 * M_PI, 2.0, 1e-6);
+}
+
+// A circulatory (non-symmetric) stiffness: the left eigenvectors are not the right
+// ones, so the partial solver does not apply; Automatic uses the dense one.
+TEST(StateModes, NonSymmetricStiffnessUsesTheDenseSolver) {
+  StateSpace full = chain(20, Eigen::VectorXd::Constant(20, 0.3));
+  full.A(20 + 0, 1) -= 50.0;  // -K(0, 1) without -K(1, 0)
+  std::string why;
+  EXPECT_FALSE(detail::lowestStateModes(full, 3, &why).has_value());
+  EXPECT_EQ(why, "not the first-order form of a second-order model with symmetric M, C, K");
+  EXPECT_TRUE(reduceWith(full, 3, Solver::Automatic).every_mode_computed);
+  EXPECT_THROW(reduceWith(full, 3, Solver::Lowest), NumericalError);
+}
+
+// A rigid-body mode (K singular): no shift-invert at zero; the dense path names the
+// singularity when residualization is asked.
+TEST(StateModes, ASingularStiffnessFallsBackToTheDenseSolver) {
+  StateSpace full = chain(20, Eigen::VectorXd::Constant(20, 0.3));
+  full.A.bottomLeftCorner(20, 20).setZero();
+  std::string why;
+  EXPECT_FALSE(detail::lowestStateModes(full, 3, &why).has_value());
+  EXPECT_EQ(why, "K is singular (a rigid-body mode)");
+  EXPECT_THROW(reduceWith(full, 3, Solver::Automatic), NumericalError);
+}
+
+TEST(StateModes, CanonicalScalingIsTheSameForAnyPhase) {
+  Eigen::MatrixXcd V = Eigen::MatrixXcd::Random(12, 3);
+  Eigen::MatrixXcd U = V;
+  U.col(0) *= std::complex<double>(0.3, -2.0);
+  U.col(2) *= -7.0;
+  detail::normalizeEigenvectors(V);
+  detail::normalizeEigenvectors(U);
+  EXPECT_LT((U - V).cwiseAbs().maxCoeff(), 1e-14);
+}
+
+}  // namespace
+}  // namespace mmv
