@@ -334,6 +334,55 @@ Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double c) {
   return lambda;
 }
 
+namespace {
+
+/// The maximum of a unimodal f on [a, b] by Brent's method (golden section with
+/// parabolic interpolation; Brent, Algorithms for Minimization without Derivatives,
+/// 1973, ch. 5), to a bracket of 1e-9 of the abscissa: about a third of the
+/// evaluations of golden section alone on a resonance peak.
+template <class F>
+std::pair<double, double> brentMaximum(const F& f, double a, double b) {
+  const double c = 0.5 * (3.0 - std::sqrt(5.0));
+  double x = a + c * (b - a), w = x, v = x, fx = -f(x), fw = fx, fv = fx, d = 0, e = 0;
+  for (int it = 0; it < 100; ++it) {
+    const double m = 0.5 * (a + b), tol = 2.5e-10 * std::abs(x) + 1e-300, t2 = 2 * tol;
+    if (std::abs(x - m) <= t2 - 0.5 * (b - a)) break;
+    bool golden = true;
+    if (std::abs(e) > tol) {  // a parabola through x, w, v
+      double r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * r;
+      q = 2 * (q - r);
+      if (q > 0) p = -p;
+      q = std::abs(q);
+      const double e_old = e;
+      e = d;
+      if (std::abs(p) < std::abs(0.5 * q * e_old) && p > q * (a - x) && p < q * (b - x)) {
+        d = p / q;
+        golden = false;
+        if (x + d - a < t2 || b - (x + d) < t2) d = x < m ? tol : -tol;
+      }
+    }
+    if (golden) {
+      e = (x < m ? b : a) - x;
+      d = c * e;
+    }
+    const double u = x + (std::abs(d) >= tol ? d : (d > 0 ? tol : -tol)), fu = -f(u);
+    if (fu <= fx) {
+      (u < x ? b : a) = x;
+      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+    } else {
+      (u < x ? a : b) = u;
+      if (fu <= fw || w == x) {
+        v = w, fv = fw, w = u, fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u, fv = fu;
+      }
+    }
+  }
+  return {x, -fx};
+}
+
+}  // namespace
+
 PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f,
                        const std::vector<Eigen::MatrixXcd>& responses) {
   MMV_DEMAND(!f.empty() && (responses.empty() || responses.size() == f.size()));
@@ -343,28 +392,21 @@ PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& 
     grid.push_back((responses.empty() ? h.response(2 * M_PI * f[k]) : responses[k]).cwiseAbs());
   const Eigen::Index no = grid.front().rows(), ni = grid.front().cols();
   PeakTable t{Eigen::MatrixXd(no, ni), Eigen::MatrixXd(no, ni)};
-  const double g = 0.5 * (std::sqrt(5.0) - 1);
-  for (Eigen::Index o = 0; o < no; ++o)
-    for (Eigen::Index i = 0; i < ni; ++i) {
-      auto mag = [&](double hz) { return std::abs(h.response(2 * M_PI * hz)(o, i)); };
-      std::size_t best = 0;
-      for (std::size_t k = 0; k < f.size(); ++k)
-        if (grid[k](o, i) > grid[best](o, i)) best = k;
-      // Golden section between the grid neighbours, one new point per step.
-      double lo = f[best > 0 ? best - 1 : 0], hi = f[std::min(best + 1, f.size() - 1)];
-      double a = hi - g * (hi - lo), b = lo + g * (hi - lo), ma = mag(a), mb = mag(b);
-      for (int it = 0; it < 80 && hi - lo > 1e-9 * hi; ++it) {
-        if (ma > mb) {
-          hi = b, b = a, mb = ma, a = hi - g * (hi - lo), ma = mag(a);
-        } else {
-          lo = a, a = b, ma = mb, b = lo + g * (hi - lo), mb = mag(b);
-        }
-      }
-      double fpeak = 0.5 * (lo + hi), peak = mag(fpeak);
-      if (grid[best](o, i) > peak) fpeak = f[best], peak = grid[best](o, i);
-      t.hz(o, i) = fpeak;
-      t.magnitude(o, i) = peak;
-    }
+  // Each pair's search is sequential; the pairs are spread over the cores.
+  tbb::parallel_for(Eigen::Index(0), no * ni, [&](Eigen::Index pair) {
+    const Eigen::Index o = pair % no, i = pair / no;
+    auto mag = [&](double hz) { return std::abs(h.response(2 * M_PI * hz)(o, i)); };
+    std::size_t best = 0;
+    for (std::size_t k = 0; k < f.size(); ++k)
+      if (grid[k](o, i) > grid[best](o, i)) best = k;
+    // Brent's search between the grid neighbours: parabolic steps near the (smooth)
+    // peak, golden-section ones otherwise, to 1e-9 of the frequency.
+    const auto [fpeak0, peak0] = brentMaximum(mag, f[best > 0 ? best - 1 : 0], f[std::min(best + 1, f.size() - 1)]);
+    double fpeak = fpeak0, peak = peak0;
+    if (grid[best](o, i) > peak) fpeak = f[best], peak = grid[best](o, i);
+    t.hz(o, i) = fpeak;
+    t.magnitude(o, i) = peak;
+  });
   return t;
 }
 

@@ -188,9 +188,10 @@ Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double dcoef);
 std::vector<double> logFrequencies(double f0_hz, double f1_hz, int n);
 
 /// The peak of every |H(o, i)| (frequency in Hz, magnitude, outputs x inputs): the
-/// largest grid point of f, refined between its neighbours by golden-section search so
-/// a coarse grid does not misplace a lightly damped peak. One response per grid point
-/// serves every pair, and the search costs one response per step.
+/// largest grid point of f, refined between its neighbours by Brent's search (parabolic
+/// and golden-section steps, to 1e-9 of the frequency) so a coarse grid does not
+/// misplace a lightly damped peak. One response per grid point serves every pair; the
+/// search costs one response per step (about 12 on a resonance), the pairs in parallel.
 struct PeakTable {
   Eigen::MatrixXd hz, magnitude;
 };
