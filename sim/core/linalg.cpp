@@ -2,6 +2,11 @@
 
 namespace mmv {
 
+void symmetrize(Eigen::MatrixXd& A) {
+  for (Eigen::Index j = 0; j < A.cols(); ++j)
+    for (Eigen::Index i = 0; i < j; ++i) A(i, j) = A(j, i) = 0.5 * (A(i, j) + A(j, i));
+}
+
 EquilibratedLu::EquilibratedLu(const Eigen::MatrixXd& A) {
   const Eigen::Index n = A.rows();
   r_ = A.cwiseAbs().rowwise().maxCoeff();

@@ -8,6 +8,11 @@
 
 namespace mmv {
 
+/// A := (A + A^T) / 2 exactly (each pair averaged once). Written out because
+/// `A = 0.5 * (A + A.transpose())` aliases in Eigen: entries are overwritten before
+/// their mirror is read, and the result is not symmetric.
+void symmetrize(Eigen::MatrixXd& A);
+
 class EquilibratedLu {
  public:
   explicit EquilibratedLu(const Eigen::MatrixXd& A);

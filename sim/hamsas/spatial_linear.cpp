@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "sim/core/linalg.hpp"
 #include "sim/core/errors.hpp"
 
 namespace mmv {
@@ -156,7 +157,7 @@ void finishMatrices(const SpatialSpec& s, const Assembly& a, const Eigen::Matrix
     lin.M.block<3, 3>(6 * (b - 1) + 3, 6 * (b - 1) + 3) = s.bodies[b].inertia;
   }
   lin.K = K.bottomRightCorner(n, n);
-  lin.K = 0.5 * (lin.K + lin.K.transpose());
+  symmetrize(lin.K);
   lin.C = a.C.bottomRightCorner(n, n);
   lin.Kb = K.bottomLeftCorner(n, 6);
   lin.Cb = a.C.bottomLeftCorner(n, 6);
@@ -179,8 +180,8 @@ void finishMatrices(const SpatialSpec& s, const Assembly& a, const Eigen::Matrix
   lin.Mz = lin.Z.transpose() * lin.M * lin.Z;
   lin.Kz = lin.Z.transpose() * lin.K * lin.Z;
   lin.Cz = lin.Z.transpose() * lin.C * lin.Z;
-  lin.Mz = 0.5 * (lin.Mz + lin.Mz.transpose());
-  lin.Kz = 0.5 * (lin.Kz + lin.Kz.transpose());
+  symmetrize(lin.Mz);
+  symmetrize(lin.Kz);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "sim/statics/linearize.hpp"
 
+#include "sim/core/linalg.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/statics/closures.hpp"
 
@@ -141,7 +142,7 @@ LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
   lin.dofs = model.getDofs();
   const int n = static_cast<int>(lin.dofs.size());
   lin.M = calcMass(model, equilibrium, lin.dofs);
-  lin.M = 0.5 * (lin.M + lin.M.transpose());
+  symmetrize(lin.M);
   Eigen::MatrixXd K_raw = calcStiffness(model, equilibrium, lin.dofs);
   const int m = model.getNumClosureRows();
   if (m > 0) {

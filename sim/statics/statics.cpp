@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "sim/core/linalg.hpp"
 #include "sim/core/text.hpp"
 #include "sim/statics/closures.hpp"
 #include "sim/statics/linearize.hpp"
@@ -264,7 +265,7 @@ EquilibriumAssessment assessEquilibrium(const Model& model, const EquilibriumRes
     K = Z.transpose() * K * Z;
   }
   if (K.rows() == 0) return a;
-  K = 0.5 * (K + K.transpose());
+  symmetrize(K);
   // The inertia of K (Sylvester): negative pivots of its LDL^T are negative eigenvalues.
   // Pivots within round-off of K's scale are a neutral direction (a mechanism), not an
   // instability.
