@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <algorithm>
 #include <cmath>
 
@@ -118,6 +119,8 @@ void SecondOrderResponse::prepareHessenberg() {
   Rv_ = mlu.solve(d.tail(n).cwiseInverse().asDiagonal() * Q.bottomRows(n)).transpose();  // (M symmetric)
   C1q_ = C1.leftCols(n);
   C1v_ = C1.rightCols(n);
+  C1qQq_ = C1q_ * Qq_;
+  C1vQq_ = C1v_ * Qq_;
   D1_ = PMi * Bq + D;
   c_diagonal_ = C.isDiagonal(0);
   hessenberg_ = H_.allFinite() && Bh_.allFinite() && Qq_.allFinite() && Rv_.allFinite();
@@ -232,8 +235,8 @@ Eigen::MatrixXcd SecondOrderResponse::hessenbergResponse(double w) const {
     r -= cd(0, w) * real(C, q);
   RowMajorXcd dz = real(Rv_, r);
   lu.solve(dz);
-  q += real(Qq_, dz);
-  return real(C1q_, q) + cd(0, w) * real(C1v_, q) + D1_.cast<cd>();
+  // y = C1 [q; i w q] + D1 with q + (D Q)_q dz, the correction taken to the outputs directly.
+  return real(C1q_, q) + cd(0, w) * real(C1v_, q) + real(C1qQq_, dz) + cd(0, w) * real(C1vQq_, dz) + D1_.cast<cd>();
 }
 
 void SecondOrderResponse::prepare() {
@@ -244,14 +247,20 @@ void SecondOrderResponse::prepare() {
   const bool symmetric = (K - K.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale &&
                          (C - C.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * std::max(C.cwiseAbs().maxCoeff(), 1e-300);
   if (!symmetric) return prepareHessenberg();
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
-  if (es.info() != Eigen::Success) return prepareHessenberg();
+  // Whether the real modes diagonalise C (proportional damping) is known only after a
+  // symmetric eigen solution; the Hessenberg form the other case needs is prepared beside
+  // it and dropped if unused (the wall time of the two is that of the longer).
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es;
+  SecondOrderResponse general = *this;
+  tbb::parallel_invoke([&] { es.compute(K, M); }, [&] { general.prepareHessenberg(); });
+  const auto useGeneral = [&] { *this = std::move(general); };
+  if (es.info() != Eigen::Success) return useGeneral();
   const Eigen::MatrixXd& phi = es.eigenvectors();
   const Eigen::MatrixXd cm = phi.transpose() * C * phi;
   const Eigen::VectorXd diag = cm.diagonal();
   const double off = (cm - Eigen::MatrixXd(diag.asDiagonal())).cwiseAbs().maxCoeff();
   if (!(off <= 1e-10 * std::max(diag.cwiseAbs().maxCoeff(), 1e-300)) && C.cwiseAbs().maxCoeff() > 0)
-    return prepareHessenberg();
+    return useGeneral();
   w2_ = es.eigenvalues();
   c_ = diag;
   P_ = phi.transpose() * Bq;

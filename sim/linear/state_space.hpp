@@ -102,6 +102,7 @@ struct SecondOrderResponse {
   Eigen::MatrixXd Bh_;                       ///< Q^T D^-1 [0; M^-1 Bq].
   Eigen::MatrixXd Qq_, Rv_;                  ///< (D Q)_q; (Q^T D^-1)_v M^-1 (the refinement step).
   Eigen::MatrixXd C1q_, C1v_, D1_;           ///< outputs on the state (y = C1 [q; v] + D1).
+  Eigen::MatrixXd C1qQq_, C1vQq_;            ///< C1_q (D Q)_q, C1_v (D Q)_q (the correction's outputs).
   bool c_diagonal_ = false;
 };
 
