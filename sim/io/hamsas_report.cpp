@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sim/core/text.hpp"
+#include "sim/io/linear_report.hpp"
 #include "sim/io/report.hpp"
 
 namespace mmv {
@@ -190,6 +191,7 @@ nlohmann::ordered_json hamsasRomJson(const StateSpace& full, const ReducedModel&
   j["unseen_modes_dropped"] = red.unseen_modes;
   j["band_hz"] = {f.front(), f.back()};
   j["max_relative_frf_error"] = err.max_relative;
+  addLocalError(j, err, full.output_names, full.input_names);
   j["inputs"] = full.input_names;
   j["input_units"] = full.input_units;
   j["outputs"] = full.output_names;
@@ -207,12 +209,14 @@ std::string hamsasRomText(const HamsasScene& scene, const HamsasModes& h, const 
   os << strf("Modes no actuator-sensor pair sees (dropped first): %d\n", red.unseen_modes);
   os << "Kept modes (Hz):";
   for (double x : red.kept_frequencies_hz) os << strf(" %.4g", x);
-  os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n\n", f.front(),
+  os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n", f.front(),
              f.back(), 100 * err.max_relative);
-  Table t({"sensor", "actuator", "DC_compliance_m_per_N", "rom_error_%"});
+  os << localErrorLine(err, full.output_names, full.input_names) << "\n";
+  Table t({"sensor", "actuator", "DC_compliance_m_per_N", "rom_error_%", "rom_local_%", "local_at_Hz"});
   const Eigen::MatrixXcd h0 = full.response(0.0);
   for (Eigen::Index i = 0; i < full.C.rows(); ++i)
-    t.add({full.output_names[i], full.input_names[i], strf("%.4g", h0(i, i).real()), strf("%.3g", 100 * err.relative(i, i))});
+    t.add({full.output_names[i], full.input_names[i], strf("%.4g", h0(i, i).real()), strf("%.3g", 100 * err.relative(i, i)),
+           strf("%.3g", 100 * err.local(i, i)), strf("%.4g", err.local_hz(i, i))});
   os << t.text();
   return os.str();
 }

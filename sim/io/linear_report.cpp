@@ -20,6 +20,23 @@ std::string safeFileName(std::string s) {
   return s;
 }
 
+std::string localErrorLine(const ModelError& err, const std::vector<std::string>& outputs,
+                           const std::vector<std::string>& inputs) {
+  const auto [o, i] = err.max_local_pair;
+  if (err.local.size() == 0) return "";
+  return strf("Largest local FRF error, relative to the full response at the same frequency: %.3g %% at %.4g Hz (%s / %s)\n",
+              100 * err.max_local, err.max_local_hz, outputs[o].c_str(), inputs[i].c_str());
+}
+
+void addLocalError(nlohmann::ordered_json& j, const ModelError& err, const std::vector<std::string>& outputs,
+                   const std::vector<std::string>& inputs) {
+  if (err.local.size() == 0) return;
+  const auto [o, i] = err.max_local_pair;
+  j["max_local_relative_frf_error"] = err.max_local;
+  j["max_local_error_hz"] = err.max_local_hz;
+  j["max_local_error_pair"] = {outputs[o], inputs[i]};
+}
+
 std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err, const std::vector<double>& f,
                               const std::vector<Eigen::MatrixXcd>& hf) {
   std::ostringstream os;
@@ -29,9 +46,10 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
   os << "Reduced model: " << red.kept_modes << " modes (" << red.model.numStates() << " states), "
      << (red.residualized ? "statically residualized (every DC gain exact)" : "truncated") << "; kept modes (Hz):";
   for (double x : red.kept_frequencies_hz) os << strf(" %.3g", x);
-  os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n\n", f.front(),
+  os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n", f.front(),
              f.back(), 100 * err.max_relative);
-  Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%"});
+  os << localErrorLine(err, s.output_names, s.input_names) << "\n";
+  Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%", "rom_local_%", "local_at_Hz"});
   const PeakTable peaks = refinedPeaks(lm.second_order, f, hf);
   const Eigen::MatrixXcd h10 = lm.second_order.response(2 * M_PI * 10.0);
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
@@ -40,7 +58,8 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
       const double peak = 20 * std::log10(peaks.magnitude(o, i) + 1e-300);
       const double at10 = 20 * std::log10(std::abs(h10(o, i)) + 1e-300);
       t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], strf("%.4g", fpeak),
-             strf("%.2f", peak), strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i))});
+             strf("%.2f", peak), strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i)),
+             strf("%.3g", 100 * err.local(o, i)), strf("%.4g", err.local_hz(o, i))});
     }
   os << t.text();
   return os.str();
@@ -183,6 +202,7 @@ nlohmann::ordered_json romJson(const LinearModel& lm, const ReducedModel& red, c
   j["residualized"] = red.residualized;
   j["band_hz"] = {f.front(), f.back()};
   j["max_relative_frf_error"] = err.max_relative;
+  addLocalError(j, err, lm.full.output_names, lm.full.input_names);
   j["inputs"] = lm.full.input_names;
   j["input_units"] = lm.full.input_units;
   j["outputs"] = lm.full.output_names;

@@ -15,6 +15,14 @@ namespace mmv {
 /// `s` with every character other than letters, digits, '.', '_' and '-' replaced by '_'.
 std::string safeFileName(std::string s);
 /// `hf`: the full model's responses at f (fullResponses), reused for the peaks.
+/// One line: the largest local FRF error of a reduced model, where and for which pair
+/// (empty without pairs); and the same in JSON (max_local_relative_frf_error,
+/// max_local_error_hz, max_local_error_pair).
+std::string localErrorLine(const ModelError& err, const std::vector<std::string>& outputs,
+                           const std::vector<std::string>& inputs);
+void addLocalError(nlohmann::ordered_json& j, const ModelError& err, const std::vector<std::string>& outputs,
+                   const std::vector<std::string>& inputs);
+
 std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
                               const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& hf);
 /// The UFF file: nodes at the equilibrium's named points, a trace line per link, the

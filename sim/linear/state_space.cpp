@@ -290,17 +290,36 @@ template <class FullAt>
 ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vector<double>& omegas) {
   const Eigen::Index no = b.C.rows(), ni = b.B.cols();
   Eigen::MatrixXd diff = Eigen::MatrixXd::Zero(no, ni), peak = Eigen::MatrixXd::Zero(no, ni);
+  std::vector<Eigen::MatrixXd> gap(omegas.size()), size(omegas.size());  // |a - b|, |a| per frequency
   for (std::size_t k = 0; k < omegas.size(); ++k) {
     const Eigen::MatrixXcd ha = full(k, omegas[k]), hb = b.response(omegas[k]);
-    diff = diff.cwiseMax((ha - hb).cwiseAbs());
-    peak = peak.cwiseMax(ha.cwiseAbs());
+    gap[k] = (ha - hb).cwiseAbs();
+    size[k] = ha.cwiseAbs();
+    diff = diff.cwiseMax(gap[k]);
+    peak = peak.cwiseMax(size[k]);
   }
   // A pair that is zero up to round-off (a pinned point's response) is measured against
   // the model's largest response instead, so its noise is not reported as an error.
   ModelError e;
-  const double floor = 1e-9 * (peak.size() ? peak.maxCoeff() : 0.0);
-  e.relative = diff.cwiseQuotient(peak.cwiseMax(std::max(floor, 1e-300)));
+  const double floor = std::max(1e-9 * (peak.size() ? peak.maxCoeff() : 0.0), 1e-300);
+  e.relative = diff.cwiseQuotient(peak.cwiseMax(floor));
   e.max_relative = e.relative.size() ? e.relative.maxCoeff() : 0.0;
+  // Local: against the full response at the same frequency (the same floor), which a
+  // peak-normalized error hides near an antiresonance or far down a roll-off.
+  e.local = Eigen::MatrixXd::Zero(no, ni);
+  e.local_hz = Eigen::MatrixXd::Zero(no, ni);
+  for (std::size_t k = 0; k < omegas.size(); ++k)
+    for (Eigen::Index o = 0; o < no; ++o)
+      for (Eigen::Index i = 0; i < ni; ++i) {
+        const double r = gap[k](o, i) / std::max(size[k](o, i), floor);
+        if (r > e.local(o, i)) e.local(o, i) = r, e.local_hz(o, i) = omegas[k] / (2 * M_PI);
+      }
+  if (e.local.size()) {
+    Eigen::Index o = 0, i = 0;
+    e.max_local = e.local.maxCoeff(&o, &i);
+    e.max_local_hz = e.local_hz(o, i);
+    e.max_local_pair = {o, i};
+  }
   return e;
 }
 

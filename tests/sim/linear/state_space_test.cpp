@@ -101,6 +101,43 @@ TEST(StateSpace, RefinedPeaksFindTheResonanceBetweenGridPoints) {
   }
 }
 
+// A low-pass 1 / (s + 1) against itself plus 1e-3 straight through: relative to the
+// peak (1) the error is 1e-3, but at 100 rad/s the response is 1e-2, so the local error
+// there is 10 %.
+TEST(StateSpace, LocalErrorIsRelativeToTheResponseAtThatFrequency) {
+  StateSpace a;
+  a.E = MatrixXd::Identity(1, 1);
+  a.A = -MatrixXd::Identity(1, 1);
+  a.B = MatrixXd::Identity(1, 1);
+  a.C = MatrixXd::Identity(1, 1);
+  a.D = MatrixXd::Zero(1, 1);
+  StateSpace b = a;
+  b.D(0, 0) = 1e-3;
+  const std::vector<double> w = {0.01, 1.0, 10.0, 100.0};
+  const ModelError e = compareResponses(a, b, w);
+  EXPECT_NEAR(e.max_relative, 1e-3 * std::sqrt(1 + 0.01 * 0.01), 1e-12);  // the peak on the grid: at 0.01 rad/s
+  EXPECT_NEAR(e.max_local, 1e-3 * std::sqrt(1 + 100.0 * 100.0), 1e-9);
+  EXPECT_NEAR(e.max_local_hz, 100.0 / (2 * M_PI), 1e-12);
+}
+
+// The table scene with 10 modes kept: 0.25 % of the peak overall hides a reduced model
+// that is off by more than the response itself near 66 Hz (an antiresonance of the full
+// model the reduced one misplaces).
+TEST(StateSpace, LocalErrorShowsWhatThePeakNormalizedOneHides) {
+  const ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-table.yaml");
+  const LinearModel lm = buildLinearModel(s, {{"table_x", InputKind::BaseAcceleration, "", 0}},
+                                          {{"link3a.tip:x", OutputKind::Acceleration, "link3a.tip", 0, true}}, *s.damping);
+  ReductionOptions o;
+  o.modes = 10;
+  const ReducedModel red = reduceModal(lm.full, o);
+  std::vector<double> w = logFrequencies(0.01, 100, 400);
+  for (double& x : w) x *= 2 * M_PI;
+  const ModelError e = compareResponses(fullResponses(lm.second_order, w), red.model, w);
+  EXPECT_LT(e.max_relative, 0.005);
+  EXPECT_GT(e.max_local, 1.0);
+  EXPECT_NEAR(e.max_local_hz, 66, 3);
+}
+
 TEST(StateSpace, PendulumOnTheTableTransmissibility) {
   const double l = 0.8, g = 9.81, zeta = 0.05;
   const ArticleScene s = testing::chainScene(1, l, 1e-9, g, 0.0, 2.0);
