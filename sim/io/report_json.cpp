@@ -120,6 +120,7 @@ json convergenceToJson(const ConvergenceStudy& c) {
     mj["richardson_hz"] = m.has_estimate ? json(m.extrapolated_hz) : json(nullptr);
     mj["estimated_relative_error"] = m.has_estimate ? json(m.estimated_relative_error) : json(nullptr);
     mj["observed_order"] = m.has_observed_order ? json(m.observed_order) : json(nullptr);
+    mj["check"] = m.check.empty() ? json(nullptr) : json(m.check);
     json e = json::array();
     for (double x : m.frequency_hz)
       e.push_back(m.has_estimate ? number((x - m.extrapolated_hz) / m.extrapolated_hz) : json(nullptr));

@@ -97,7 +97,7 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
   for (const auto& run : c.runs) os << strf("  %8d %6d %12.2f\n", run.segments, run.num_dofs, 1e3 * run.seconds);
   os << "\nFrequency (Hz) of each mode against segments per link\n  mode";
   for (const auto& run : c.runs) os << strf(" %11s", ("N=" + std::to_string(run.segments)).c_str());
-  os << strf(" %12s %8s %12s\n", "richardson", "order", "est_err_%");
+  os << strf(" %12s %8s %12s  %s\n", "richardson", "order", "est_err_%", "check");
   for (const auto& m : c.modes) {
     os << strf("  %4d", m.number);
     for (std::size_t k = 0; k < c.runs.size(); ++k) {
@@ -109,9 +109,9 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
       os << strf(" %12.5f", m.extrapolated_hz);
       if (m.has_observed_order) os << strf(" %8.2f", m.observed_order);
       else os << strf(" %8s", "-");
-      os << strf(" %12.4f\n", 100 * m.estimated_relative_error);
+      os << strf(" %12.4f  %s\n", 100 * m.estimated_relative_error, m.check.empty() ? "-" : m.check.c_str());
     } else {
-      os << strf(" %12s %8s %12s\n", "-", "-", "-");
+      os << strf(" %12s %8s %12s  %s\n", "-", "-", "-", "-");
     }
   }
   os << "\nEstimated error (%) of each run against the Richardson value: what N segments cost in accuracy\n  mode";
@@ -129,7 +129,11 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
   }
   os << "\nrichardson: f_N + (f_N - f_N/2)/(2^2 - 1), assuming the discretization's O(1/N^2) error;\n"
         "order: observed log2((f_N/4 - f_N/2)/(f_N/2 - f_N)) from the three finest runs;\n"
-        "est_err_%: |f_N - richardson| / richardson at the finest N, in percent.\n";
+        "est_err_%: |f_N - richardson| / richardson at the finest N, in percent;\n"
+        "check: ok = observed order within 0.5 of 2, so richardson and est_err_% hold; order = converging\n"
+        "at another order p > 0.5, est_err_% = |f_N - f_N/2| / (2^p - 1) / f_N; unconverged = order below\n"
+        "0.5 or non-monotone (modes swapping between runs, or N far from the asymptotic range):\n"
+        "est_err_% = |f_N - f_N/2| / f_N, a lower bound, and richardson is not to be trusted.\n";
   return os.str();
 }
 

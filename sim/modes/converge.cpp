@@ -37,10 +37,19 @@ ConvergenceStudy runConvergence(const ArticleScene& scene, int max_segments, int
       if (nr >= 3 && std::isfinite(m.frequency_hz[nr - 3])) {
         const double f3 = m.frequency_hz[nr - 3];
         const double ratio = (f3 - f2) / (f2 - f1);
+        m.check = "unconverged";
         if (std::isfinite(ratio) && ratio > 0) {
           m.has_observed_order = true;
           m.observed_order = std::log2(ratio);
+          if (std::abs(m.observed_order - 2.0) <= 0.5)
+            m.check = "ok";
+          else if (m.observed_order > 0.5)
+            m.check = "order";
         }
+        if (m.check == "order")
+          m.estimated_relative_error = std::abs(f1 - f2) / (std::pow(2.0, m.observed_order) - 1) / std::abs(f1);
+        else if (m.check == "unconverged")
+          m.estimated_relative_error = std::abs(f1 - f2) / std::abs(f1);
       }
     }
     study.modes.push_back(std::move(m));

@@ -28,7 +28,16 @@ struct ConvergenceMode {
   bool has_estimate = false, has_observed_order = false;
   double extrapolated_hz = 0;
   double observed_order = 0;
-  double estimated_relative_error = 0;  ///< at the finest run.
+  /// At the finest run: |f_N - richardson| / richardson when the observed order is
+  /// within 0.5 of 2; with an observed order p further off but above 0.5, the same with
+  /// p (|f_N - f_N/2| / (2^p - 1)); otherwise |f_N - f_N/2| / f_N, a lower bound.
+  double estimated_relative_error = 0;
+  /// "ok": the observed order is within 0.5 of 2, so the O(1/N^2) Richardson value and
+  /// estimate hold; "order": converging at another order (the estimate uses it);
+  /// "unconverged": order below 0.5 or non-monotone (the modes may swap between runs,
+  /// or the mesh is far from the asymptotic range): the estimate is a lower bound;
+  /// "": fewer than three runs, not checked.
+  std::string check;
 };
 
 struct ConvergenceStudy {
