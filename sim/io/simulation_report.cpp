@@ -54,6 +54,8 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
                  {"motion_work_j", r.motion_work_j},
                  {"dissipated_j", r.dissipated_j},
                  {"balance_error_j", r.energy_balance_error_j},
+                 {"max_balance_error_j", r.max_energy_balance_error_j},
+                 {"max_balance_error_at_s", r.max_energy_balance_error_at_s},
                  {"peak_kinetic_j", r.peak_kinetic_energy_j}};
   if (r.carried_weight_n > 0)
     j["table"] = {{"peak_force_n", r.peak_table_force_n}, {"carried_weight_n", r.carried_weight_n},
@@ -91,8 +93,9 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
     os << "\nSensors\n" << st.text();
   }
   os << strf("\nEnergy: E(0) %.6g J, E(end) %.6g J, work of the commanded motions %.6g J, dissipated %.6g J;\n"
-             "balance error %.3g J (E(end) - E(0) - work + dissipated)\n",
-             r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j);
+             "balance error %.3g J at the end (E(end) - E(0) - work + dissipated), largest %.3g J at t = %.4g s\n",
+             r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j,
+             r.max_energy_balance_error_j, r.max_energy_balance_error_at_s);
   if (r.constraint_drift_m > 0) os << strf("Closures: largest drift %.3g m over the run\n", r.constraint_drift_m);
   for (const auto& w : warnings) os << "warning: " << w << '\n';
   return os.str();

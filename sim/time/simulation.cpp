@@ -284,6 +284,9 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
     last_dissipation = diss;
     r.final_energy_j = sys.calcEnergy(st);
     r.peak_kinetic_energy_j = std::max(r.peak_kinetic_energy_j, matter.calcKineticEnergy(st));
+    const double balance = (r.final_energy_j - r.initial_energy_j) - (r.motion_work_j - r.dissipated_j);
+    if (std::abs(balance) > std::abs(r.max_energy_balance_error_j))
+      r.max_energy_balance_error_j = balance, r.max_energy_balance_error_at_s = t;
     r.record.rows.push_back(std::move(row));
     if (progress) progress(double(k) / n);
   }
@@ -309,13 +312,13 @@ double energyScale(const SimulationResult& r) {
 }
 
 std::string energyBalanceWarning(const SimulationResult& r) {
-  const double scale = energyScale(r), err = std::abs(r.energy_balance_error_j);
+  const double scale = energyScale(r), err = std::abs(r.max_energy_balance_error_j);
   if (err <= 0.01 * scale) return {};
-  char buf[320];
+  char buf[360];
   std::snprintf(buf, sizeof buf,
-                "energy balance error %.3g J is %.3g %% of the run's energy scale %.3g J: the run is not accurate "
-                "(tighten the accuracy, %.1e; for a trapezoidal slew also raise the sample rate)",
-                err, scale > 0 ? 100 * err / scale : 100.0, scale, r.accuracy);
+                "energy balance error %.3g J at t = %.4g s is %.3g %% of the run's energy scale %.3g J: the run is not "
+                "accurate (tighten the accuracy, %.1e; for a trapezoidal slew also raise the sample rate)",
+                err, r.max_energy_balance_error_at_s, scale > 0 ? 100 * err / scale : 100.0, scale, r.accuracy);
   return buf;
 }
 
