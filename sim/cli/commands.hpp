@@ -103,7 +103,7 @@ struct TradeArgs : SceneArgs {
   std::vector<int> segments_ladder;
   std::vector<std::string> points;
   double duration = 0;
-  double target_error = 1e-4;  ///< m
+  double target_error = 0;  ///< m; 0: defaultTradeTarget (1 % of the scored motion)
   std::string out;
   bool force = false;
 };

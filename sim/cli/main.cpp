@@ -189,8 +189,9 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
   tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(positive());
   tp->add_option("--points", tr.points, "Comma-separated link tips or stations the error is scored at, e.g. link3a.tip,link1@0.5 (default: every tip)")
       ->delimiter(',');
-  tp->add_option("--target-error", tr.target_error, "Error to meet, m (the cheapest run within it is named)")
-      ->capture_default_str()
+  tp->add_option("--target-error", tr.target_error,
+                 "Error to meet, m (the cheapest run within it is named; default 1 % of the scored points' largest "
+                 "motion in the reference run)")
       ->check(positive());
   tp->add_option("--out", tr.out, "Write trade.csv, trade.json and trade.png here");
   tp->add_flag("--force", tr.force, "Replace files of the same names in --out");

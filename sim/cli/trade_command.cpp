@@ -64,10 +64,11 @@ int runTradeCommand(const TradeArgs& args) {
       reportProgress(problem, o, progress);
       return runTrade(problem, o);
     }();
-    checkResultFinite(tradeJson(s, args.target_error));  // before any file is committed
+    const double target = args.target_error > 0 ? args.target_error : defaultTradeTarget(s);
+    checkResultFinite(tradeJson(s, target));  // before any file is committed
     if (out) {
       std::ofstream(out->stage("trade.csv"), std::ios::binary) << tradeCsv(s);
-      std::ofstream(out->stage("trade.json"), std::ios::binary) << tradeJson(s, args.target_error).dump(2) << '\n';
+      std::ofstream(out->stage("trade.json"), std::ios::binary) << tradeJson(s, target).dump(2) << '\n';
       std::map<std::string, render::Series> by;
       render::Series front{"Pareto front"};
       front.dashed = true;
@@ -97,7 +98,7 @@ int runTradeCommand(const TradeArgs& args) {
       }
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    args.json ? emitResult(tradeJson(s, args.target_error)) : emitResult(tradeText(s, args.target_error));
+    args.json ? emitResult(tradeJson(s, target)) : emitResult(tradeText(s, target));
     return kOk;
   });
 }

@@ -23,6 +23,8 @@ std::string tradeText(const TradeStudy& s, double target) {
   os << strf("Reference: %s at 1e-10 (%.2f s); its difference from %s at 1e-10 is %.2g m, below which errors "
              "cannot be told apart\n\n",
              s.reference_integrator.c_str(), s.reference_seconds, s.check_integrator.c_str(), s.reference_uncertainty_m);
+  os << strf("The scored points move up to %.3g m in the reference run; the target is %.3g m (%.3g %% of that)\n\n",
+             s.reference_amplitude_m, target, s.reference_amplitude_m > 0 ? 100 * target / s.reference_amplitude_m : 0.0);
   if (!s.points.empty()) {
     os << "Error scored at:";
     for (const auto& p : s.points) os << ' ' << p;
@@ -73,6 +75,7 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
   j["runs"] = runs;
   const TradeRun* best = cheapestWithin(s, target);
   j["target_error_m"] = target;
+  j["reference_amplitude_m"] = s.reference_amplitude_m;
   j["cheapest_within_target"] = best ? nlohmann::ordered_json{{"integrator", best->integrator}, {"accuracy", best->accuracy}}
                                      : nlohmann::ordered_json(nullptr);
   return j;

@@ -48,9 +48,17 @@ struct TradeStudy {
   std::vector<std::string> points;  ///< as TradeOptions::points.
   std::string reference_integrator = "cpodes", check_integrator = "cvode_bdf";  ///< both at 1e-10.
   double reference_uncertainty_m = 0;
+  /// The scored points' largest distance from where they start, in the reference run
+  /// (m): the scale a default target is taken from.
+  double reference_amplitude_m = 0;
   double reference_seconds = 0;
   std::vector<TradeRun> runs;
 };
+
+/// The target a trade names the cheapest run for when the user gives none: 1 % of the
+/// reference's largest scored motion (a fixed length would be met by every run of a
+/// micrometre isolator and by none of a metre slew); 1e-4 m if nothing moved.
+double defaultTradeTarget(const TradeStudy& s);
 
 /// What a trade runs: one kind of scene's time run as a function of the integrator
 /// settings and the segments per link. Made by articleTradeProblem (below) or, for

@@ -50,6 +50,27 @@ TEST(Trade, ErrorsFallWithAccuracyAndTheFrontIsNonDominated) {
   EXPECT_GT(t.runs.back().error_m, t.runs[1].error_m);
 }
 
+// The default target follows the motion: 1 % of the reference's largest scored
+// distance from the start. Link 1's tip, on a held joint, only bends under the slew's
+// reaction (1.6 cm measured); the tips beyond the slewing joint 2 swing (0.37 m).
+TEST(Trade, TheDefaultTargetIsOnePercentOfTheScoredMotion) {
+  const ArticleScene s = shortSlew(0.4);
+  TradeOptions o;
+  o.integrators = {"rk_merson"};
+  o.accuracies = {1e-4};
+  o.segments = {};
+  const TradeStudy all = runTrade(articleTradeProblem(s), o);
+  EXPECT_GT(all.reference_amplitude_m, 0.01);  // metres of slew, not micrometres
+  EXPECT_DOUBLE_EQ(defaultTradeTarget(all), 0.01 * all.reference_amplitude_m);
+  TradeStudy still = all;
+  still.reference_amplitude_m = 0;
+  EXPECT_DOUBLE_EQ(defaultTradeTarget(still), 1e-4);
+  o.points = {"link1.tip"};
+  const TradeStudy link1 = runTrade(articleTradeProblem(s), o);
+  EXPECT_GT(link1.reference_amplitude_m, 0.0);
+  EXPECT_LT(link1.reference_amplitude_m, 0.1 * all.reference_amplitude_m);
+}
+
 // Scored at link 1's tip only, each run's error is at most its error over every tip
 // (a maximum over fewer points) and strictly less for at least one run (link 1 is the
 // stiffest, shortest lever; measured several times smaller). A name that is not a tip
