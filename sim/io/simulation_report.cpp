@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "facility/table_programs.hpp"
+#include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
 
@@ -63,7 +64,11 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
   if (r.constraint_drift_m > 0) j["constraint_drift_m"] = r.constraint_drift_m;
   j["steps"] = r.steps;
   j["realizations"] = r.realizations;
+  j["rejected_steps"] = r.rejected_steps;
+  if (r.jacobians >= 0) j["jacobians"] = r.jacobians;
   j["wall_time_s"] = r.wall_seconds;
+  j["stepping_time_s"] = r.stepping_seconds;
+  j["output_time_s"] = r.output_seconds;
   j["warnings"] = warnings;
   return j;
 }
@@ -72,9 +77,13 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
                            const std::vector<std::string>& warnings) {
   std::ostringstream os;
   os << scene_name << "  (scene: " << scene_source << ")\n";
-  os << strf("Time run: %.4g s with %s (accuracy %.1e), %zu samples; %d steps, %d realizations, %.2f s wall time\n\n",
+  os << strf("Time run: %.4g s with %s (accuracy %.1e), %zu samples; %.2f s wall time\n",
              r.record.rows.empty() ? 0.0 : r.record.rows.back()[0], r.integrator.c_str(), r.accuracy, r.record.rows.size(),
-             r.steps, r.realizations, r.wall_seconds);
+             r.wall_seconds);
+  os << strf("Cost: %d steps (%ld rejected), %d %s, %s; stepping %.3g s, sampling %.3g s\n\n", r.steps, r.rejected_steps,
+             r.realizations, isSundialsIntegrator(r.integrator) ? "right-hand sides" : "realizations",
+             r.jacobians < 0 ? "Jacobians not reported" : strf("%ld Jacobians", r.jacobians).c_str(), r.stepping_seconds,
+             r.output_seconds);
   Table t({"joint", "peak_torque_N*m", "capacity_N*m", "within"});
   for (const auto& q : r.torques)
     t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",

@@ -15,6 +15,15 @@
 
 namespace mmv {
 
+/// What a run cost its integrator.
+struct IntegratorStats {
+  long steps = 0;        ///< accepted steps
+  long rejected = 0;     ///< steps retried: error test or (implicit methods) Newton failures
+  long evaluations = 0;  ///< right-hand sides (SUNDIALS, with difference-quotient Jacobians'), realizations (Simbody)
+  double seconds = 0;    ///< wall time inside the integrator's steps (not the interpolation and realization at samples)
+  long jacobians = 0;    ///< iteration-matrix evaluations (implicit methods; 0 for explicit ones; -1: not reported, CPodes)
+};
+
 class ExternalStepper {
  public:
   virtual ~ExternalStepper() = default;
@@ -22,8 +31,9 @@ class ExternalStepper {
   /// Advances to t; the state is then realized to Acceleration.
   virtual bool stepTo(double t, std::string& error) = 0;
   virtual const SimTK::State& state() const = 0;
-  virtual long steps() const = 0;
-  virtual long evaluations() const = 0;  ///< right-hand-side evaluations
+  /// The run's end (sizes the first step; call before the first stepTo).
+  virtual void setEndTime(double t) = 0;
+  virtual IntegratorStats stats() const = 0;
 };
 
 /// The plugin's factory (extern "C").

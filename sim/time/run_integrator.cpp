@@ -1,5 +1,6 @@
 #include "sim/time/run_integrator.hpp"
 
+#include <chrono>
 #include <map>
 
 #include "sim/core/errors.hpp"
@@ -25,7 +26,7 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const
 
 RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::string& name, double accuracy,
                              const SimTK::State& initial, const std::string& source, double atol)
-    : name_(name), accuracy_(accuracy) {
+    : system_(sys), name_(name), accuracy_(accuracy) {
   // Simbody asserts (and aborts) outside (0, 1); say so instead.
   if (!(accuracy > 0 && accuracy < 1))
     throw SceneError(source + ": simulation accuracy must be in (0, 1) (got " + std::to_string(accuracy) + ")");
@@ -47,9 +48,17 @@ RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::strin
   integ_ = makeIntegrator(name, sys, source);
   integ_->setAccuracy(accuracy);
   integ_->setInternalStepLimit(1000000);
-  integ_->setReturnEveryInternalStep(false);
-  stepper_ = std::make_unique<SimTK::TimeStepper>(sys, *integ_);
-  stepper_->initialize(initial);
+  // One internal step per call, never shortened to hit a sample: the samples are
+  // interpolated here (interpolateTo), into one work state, where Simbody's own
+  // interpolation copies the whole state (cache included) at every sample.
+  integ_->setReturnEveryInternalStep(true);
+  integ_->setAllowInterpolation(false);
+  integ_->initialize(initial);
+  work_ = integ_->getState();
+  system_.realize(work_, SimTK::Stage::Acceleration);
+  t1_ = work_.getTime();
+  y1_ = work_.getY();
+  yd1_ = work_.getYDot();
 }
 
 RunIntegrator::~RunIntegrator() = default;
@@ -60,26 +69,75 @@ void RunIntegrator::stepTo(double t) {
     if (!sundials_->stepTo(t, error)) throw NumericalError(error);
     return;
   }
+  const double tol = 1e-12 * std::max(1.0, std::abs(t));
   try {
-    stepper_->stepTo(t);
+    // Internal steps until one ends at or past t (the end of the run limits the last).
+    // The first call after initialize() returns the start of the interval.
+    while (t1_ < t - tol) {
+      const auto start = std::chrono::steady_clock::now();
+      const auto status = integ_->stepTo(std::max(end_time_, t), SimTK::Infinity);
+      seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (status == SimTK::Integrator::EndOfSimulation) break;
+      if (status == SimTK::Integrator::StartOfContinuousInterval) continue;
+      t0_ = t1_, y0_ = y1_, yd0_ = yd1_;
+      const SimTK::State& a = integ_->getState();
+      system_.realize(a, SimTK::Stage::Acceleration);
+      t1_ = a.getTime(), y1_ = a.getY(), yd1_ = a.getYDot();
+    }
   } catch (const NumericalError&) {
     throw;
   } catch (const std::exception& e) {
     throw NumericalError("integration failed at t = " + std::to_string(integ_->getTime()) + " s: " + e.what());
   }
-  if (integ_->isSimulationOver() && integ_->getTime() < t - 1e-9 * std::max(1.0, std::abs(t)))
-    throw NumericalError("the " + name_ + " integrator stopped at t = " + std::to_string(integ_->getTime()) +
+  if (t1_ < t - 1e-9 * std::max(1.0, std::abs(t)))
+    throw NumericalError("the " + name_ + " integrator stopped at t = " + std::to_string(t1_) +
                          " s: " + SimTK::Integrator::getTerminationReasonString(integ_->getTerminationReason()));
+  interpolateTo(std::min(t, t1_));
 }
 
-const SimTK::State& RunIntegrator::state() const { return sundials_ ? sundials_->state() : integ_->getState(); }
-
-int RunIntegrator::steps() const {
-  return sundials_ ? static_cast<int>(sundials_->steps()) : integ_->getNumStepsTaken();
+void RunIntegrator::setEndTime(double t) {
+  end_time_ = t;
+  if (sundials_) sundials_->setEndTime(t);
 }
 
-int RunIntegrator::evaluations() const {
-  return sundials_ ? static_cast<int>(sundials_->evaluations()) : integ_->getNumRealizations();
+void RunIntegrator::interpolateTo(double t) {
+  // Cubic Hermite on the last step, from its end values and derivatives (as Simbody's own
+  // interpolation), then the prescribed motions and, with closures, the projection onto
+  // them to the integrator's accuracy.
+  SimTK::Vector& y = work_.updY();
+  const double h = t1_ - t0_;
+  if (!(h > 0) || t >= t1_) {
+    y = y1_;
+  } else {
+    const double s = (t - t0_) / h, s2 = s * s, s3 = s2 * s;
+    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+    for (int i = 0; i < y.size(); ++i) y[i] = h00 * y0_[i] + h10 * h * yd0_[i] + h01 * y1_[i] + h11 * h * yd1_[i];
+  }
+  work_.setTime(t);
+  if (work_.getNQErr() > 0 || work_.getNUErr() > 0) {
+    system_.project(work_, accuracy_);
+  } else {
+    system_.realize(work_, SimTK::Stage::Time);
+    system_.prescribeQ(work_);
+    system_.realize(work_, SimTK::Stage::Position);
+    system_.prescribeU(work_);
+  }
+  system_.realize(work_, SimTK::Stage::Acceleration);
+}
+
+const SimTK::State& RunIntegrator::state() const { return sundials_ ? sundials_->state() : work_; }
+
+IntegratorStats RunIntegrator::stats() const {
+  if (sundials_) return sundials_->stats();
+  IntegratorStats st;
+  st.steps = integ_->getNumStepsTaken();
+  st.seconds = seconds_;
+  st.rejected = integ_->getNumErrorTestFailures() + integ_->getNumConvergenceTestFailures();
+  st.evaluations = integ_->getNumRealizations();
+  // The explicit methods form no Jacobian; CPodes (Newton) does but Simbody does not
+  // report how often: -1, printed as such.
+  if (name_ == "cpodes") st.jacobians = -1;
+  return st;
 }
 
 }  // namespace mmv

@@ -259,7 +259,9 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
                const std::function<std::vector<double>(double, const SimTK::State&)>& sample) {
   const SimTK::SimbodyMatterSubsystem& matter = sys.getMatterSubsystem();
   const int n = std::max(1, static_cast<int>(std::ceil(spec.duration * spec.sample_rate_hz)));
+  integrator.setEndTime(spec.duration);
   double last_motion_power = 0, last_dissipation = 0;
+  const auto start = std::chrono::steady_clock::now();
   for (int k = 0; k <= n; ++k) {
     const double t = spec.duration * k / n;
     if (k > 0) integrator.stepTo(t);
@@ -291,8 +293,13 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
     if (progress) progress(double(k) / n);
   }
   r.energy_balance_error_j = (r.final_energy_j - r.initial_energy_j) - (r.motion_work_j - r.dissipated_j);
-  r.steps = integrator.steps();
-  r.realizations = integrator.evaluations();
+  const IntegratorStats cost = integrator.stats();
+  r.steps = static_cast<int>(cost.steps);
+  r.realizations = static_cast<int>(cost.evaluations);
+  r.rejected_steps = cost.rejected;
+  r.jacobians = cost.jacobians;
+  r.stepping_seconds = cost.seconds;
+  r.output_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - cost.seconds;
 }
 
 std::string constraintDriftWarning(const SimulationResult& r, double size_m) {

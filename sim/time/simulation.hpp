@@ -24,7 +24,9 @@
 /// Integrators: every name in sim/core/integrators.hpp (Simbody's, and SUNDIALS'
 /// CVODE, ARKODE and IDA through the plugin, sim/time/sundials_plugin.hpp); IDA holds a
 /// closed tree's closures as algebraic equations.
-/// For SUNDIALS "realizations" counts right-hand-side evaluations.
+/// For SUNDIALS "realizations" counts right-hand-side evaluations. The integrators take
+/// their own steps and interpolate the state at the samples, so the step count does not
+/// depend on the sample rate (sim/time/run_integrator.hpp).
 
 #include <functional>
 #include <string>
@@ -82,7 +84,13 @@ struct SimulationResult {
   std::string integrator;
   double accuracy = 0;
   int steps = 0, realizations = 0;
+  long rejected_steps = 0;  ///< error-test and Newton failures, retried with a smaller step
+  long jacobians = 0;       ///< iteration matrices formed (implicit methods); -1: not reported (CPodes)
   double wall_seconds = 0;
+  /// The wall time inside the integrator's steps and in sampling (the state interpolated
+  /// to each sample and realized, outputs and energy computed); the rest of wall_seconds
+  /// is building the model and the start.
+  double stepping_seconds = 0, output_seconds = 0;
   /// What the user should know about the run's start: an equilibrium that is unstable
   /// (the run stays there only until round-off grows) or that moved a free joint away
   /// from its scene angle (assessEquilibrium, sim/statics/statics.hpp).

@@ -11,6 +11,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -95,6 +96,9 @@ struct SundialsIntegrator::Impl {
   Handle<SUNNonlinearSolver, freeNonlinearSolver> nls;
   Memory mem;
   SimTK::State work;
+  double seconds = 0;  // inside the solver's calls
+  double end_time = 0;  // the run's end (sizes the first step)
+  double reached = 0;   // the solver's internal time
   Impl(const SimTK::MultibodySystem& s, Method m, double r, double a) : system(s), method(m), rtol(r), atol(a) {}
 
   /// Copies y into `work`, applies the prescribed motions and realizes to Acceleration.
@@ -164,6 +168,7 @@ void SundialsIntegrator::initialize(const SimTK::State& s) {
   Impl& m = *impl_;
   const Method me = m.method;
   m.work = s;
+  m.reached = s.getTime();
   if (me == Method::Ida) {
     initializeIda(s);
     return;
@@ -212,7 +217,6 @@ void SundialsIntegrator::initialize(const SimTK::State& s) {
     check(me, CVodeSetNonlinearSolver(m.mem.p, m.nls.p), "CVodeSetNonlinearSolver");
   }
   m.load(s.getTime(), m.y.p);
-  state_ = m.work;
 }
 
 void SundialsIntegrator::initializeIda(const SimTK::State& s) {
@@ -252,50 +256,83 @@ void SundialsIntegrator::initializeIda(const SimTK::State& s) {
   if (!m.A.p || !m.ls.p) throw PluginFailure("SUNDIALS: cannot create IDA's dense linear solver for " + std::to_string(n) + " unknowns");
   check(me, IDASetLinearSolver(m.mem.p, m.ls.p, m.A.p), "IDASetLinearSolver");
   m.load(s.getTime(), m.y.p);
-  state_ = m.work;
 }
 
 void SundialsIntegrator::stepTo(double t) {
   Impl& m = *impl_;
-  double reached = 0;
-  const int flag = m.method == Method::ArkErk    ? ERKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
-                   : m.method == Method::ArkDirk ? ARKStepEvolve(m.mem.p, t, m.y.p, &reached, ARK_NORMAL)
-                   : m.method == Method::Ida     ? IDASolve(m.mem.p, t, &reached, m.y.p, m.yp.p, IDA_NORMAL)
-                                                 : CVode(m.mem.p, t, m.y.p, &reached, CV_NORMAL);
-  if (flag < 0)
-    throw PluginFailure(std::string(packageName(m.method)) + " stopped at t = " + std::to_string(reached) +
-                         " s: " + flagName(m.method, flag));
-  m.load(reached, m.y.p);
-  state_ = m.work;
-  m.system.realize(state_, SimTK::Stage::Acceleration);
+  const Method me = m.method;
+  void* mem = m.mem.p;
+  const auto start = std::chrono::steady_clock::now();
+  // One internal step at a time until the integrator has passed t, then its dense output
+  // at t: the steps do not depend on the sample times (CV_NORMAL's first step would
+  // follow the first sample's distance). tout, the run's end, only sizes the first step.
+  const double tout = std::max(m.end_time, t);
+  double reached = m.reached;
+  while (reached < t) {
+    const int flag = me == Method::ArkErk    ? ERKStepEvolve(mem, tout, m.y.p, &reached, ARK_ONE_STEP)
+                     : me == Method::ArkDirk ? ARKStepEvolve(mem, tout, m.y.p, &reached, ARK_ONE_STEP)
+                     : me == Method::Ida     ? IDASolve(mem, tout, &reached, m.y.p, m.yp.p, IDA_ONE_STEP)
+                                             : CVode(mem, tout, m.y.p, &reached, CV_ONE_STEP);
+    if (flag < 0)
+      throw PluginFailure(std::string(packageName(me)) + " stopped at t = " + std::to_string(reached) +
+                          " s: " + flagName(me, flag));
+  }
+  m.reached = reached;
+  const int flag = me == Method::ArkErk    ? ERKStepGetDky(mem, t, 0, m.y.p)
+                   : me == Method::ArkDirk ? ARKStepGetDky(mem, t, 0, m.y.p)
+                   : me == Method::Ida     ? IDAGetDky(mem, t, 0, m.y.p)
+                                           : CVodeGetDky(mem, t, 0, m.y.p);
+  check(me, flag, "GetDky");
+  m.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.load(t, m.y.p);
 }
 
-long SundialsIntegrator::steps() const {
-  long n = 0;
-  if (impl_->method == Method::ArkErk) ERKStepGetNumSteps(impl_->mem.p, &n);
-  else if (impl_->method == Method::ArkDirk) ARKStepGetNumSteps(impl_->mem.p, &n);
-  else if (impl_->method == Method::Ida) IDAGetNumSteps(impl_->mem.p, &n);
-  else CVodeGetNumSteps(impl_->mem.p, &n);
-  return n;
-}
+void SundialsIntegrator::setEndTime(double t) { impl_->end_time = t; }
 
-long SundialsIntegrator::rhsEvaluations() const {
-  long n = 0, jac = 0, explicit_evals = 0;
+const SimTK::State& SundialsIntegrator::getState() const { return impl_->work; }
+
+IntegratorStats SundialsIntegrator::stats() const {
+  void* mem = impl_->mem.p;
+  IntegratorStats st;
+  long err = 0, conv = 0, fe = 0, fi = 0, lin = 0;
   // The dense Newton solvers' difference-quotient Jacobians cost evaluations too.
   switch (impl_->method) {
-    case Method::ArkErk: ERKStepGetNumRhsEvals(impl_->mem.p, &n); break;
+    case Method::ArkErk:
+      ERKStepGetNumSteps(mem, &st.steps);
+      ERKStepGetNumErrTestFails(mem, &err);
+      ERKStepGetNumRhsEvals(mem, &fe);
+      break;
     case Method::ArkDirk:
-      ARKStepGetNumRhsEvals(impl_->mem.p, &explicit_evals, &n);
-      ARKStepGetNumLinRhsEvals(impl_->mem.p, &jac);
+      ARKStepGetNumSteps(mem, &st.steps);
+      ARKStepGetNumErrTestFails(mem, &err);
+      ARKStepGetNumNonlinSolvConvFails(mem, &conv);
+      ARKStepGetNumRhsEvals(mem, &fe, &fi);
+      ARKStepGetNumLinRhsEvals(mem, &lin);
+      ARKStepGetNumJacEvals(mem, &st.jacobians);
       break;
     case Method::Ida:
-      IDAGetNumResEvals(impl_->mem.p, &n);
-      IDAGetNumLinResEvals(impl_->mem.p, &jac);
+      IDAGetNumSteps(mem, &st.steps);
+      IDAGetNumErrTestFails(mem, &err);
+      IDAGetNumNonlinSolvConvFails(mem, &conv);
+      IDAGetNumResEvals(mem, &fi);
+      IDAGetNumLinResEvals(mem, &lin);
+      IDAGetNumJacEvals(mem, &st.jacobians);
       break;
-    case Method::Bdf: CVodeGetNumLinRhsEvals(impl_->mem.p, &jac); [[fallthrough]];
-    case Method::Adams: CVodeGetNumRhsEvals(impl_->mem.p, &n); break;
+    case Method::Bdf:
+      CVodeGetNumLinRhsEvals(mem, &lin);
+      CVodeGetNumJacEvals(mem, &st.jacobians);
+      [[fallthrough]];
+    case Method::Adams:
+      CVodeGetNumSteps(mem, &st.steps);
+      CVodeGetNumErrTestFails(mem, &err);
+      CVodeGetNumNonlinSolvConvFails(mem, &conv);
+      CVodeGetNumRhsEvals(mem, &fi);
+      break;
   }
-  return n + jac + explicit_evals;
+  st.seconds = impl_->seconds;
+  st.rejected = err + conv;
+  st.evaluations = fe + fi + lin;
+  return st;
 }
 
 }  // namespace mmv
@@ -309,9 +346,9 @@ class CvodeStepper : public ExternalStepper {
       : integ_(sys, method, rtol, atol) {}
   bool initialize(const SimTK::State& s, std::string& error) override { return guard([&] { integ_.initialize(s); }, error); }
   bool stepTo(double t, std::string& error) override { return guard([&] { integ_.stepTo(t); }, error); }
+  void setEndTime(double t) override { integ_.setEndTime(t); }
   const SimTK::State& state() const override { return integ_.getState(); }
-  long steps() const override { return integ_.steps(); }
-  long evaluations() const override { return integ_.rhsEvaluations(); }
+  IntegratorStats stats() const override { return integ_.stats(); }
 
  private:
   template <class F>

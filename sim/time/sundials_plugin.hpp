@@ -14,6 +14,8 @@
 
 #include <Simbody.h>
 
+#include "sim/time/external_stepper.hpp"
+
 namespace mmv {
 
 class SundialsIntegrator {
@@ -31,17 +33,20 @@ class SundialsIntegrator {
   SundialsIntegrator& operator=(const SundialsIntegrator&) = delete;
 
   void initialize(const SimTK::State& s);
-  /// Advances to time t (> the current time); the state is then realized to Acceleration.
+  /// Advances to time t (> the current time) by the integrator's own steps and its dense
+  /// output; the state is then realized to Acceleration.
   void stepTo(double t);
-  const SimTK::State& getState() const { return state_; }
-  long steps() const;
-  long rhsEvaluations() const;  ///< including the Jacobians' difference quotients (BDF)
+  /// The state at the last stepTo (or the start): the integrator's work state, valid
+  /// until the next stepTo (copying it at every sample cost more than realizing it).
+  const SimTK::State& getState() const;
+  /// The run's end: sizes the first step (call before the first stepTo).
+  void setEndTime(double t);
+  IntegratorStats stats() const;
 
  private:
   void initializeIda(const SimTK::State& s);
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  SimTK::State state_;
 };
 
 }  // namespace mmv

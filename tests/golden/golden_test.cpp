@@ -52,7 +52,7 @@ std::vector<GoldenCase> readCases() {
 /// Masks what legitimately changes from run to run: wall times and the like.
 std::string mask(std::string s) {
   static const std::regex json_time(R"re(("[^"]*(wall|seconds|elapsed|_time_s|time_ms)[^"]*"\s*:\s*)[-0-9.eE+]+)re");
-  static const std::regex text_time(R"re(((wall|took|in)\s*[:=]?\s*)[0-9.]+(e[-+]?[0-9]+)?\s*(s|ms)\b)re");
+  static const std::regex text_time(R"re(((wall|took|in|stepping|sampling)\s*[:=]?\s*)[0-9.]+(e[-+]?[0-9]+)?\s*(s|ms)\b)re");
   static const std::regex json_block(R"re("time_s"\s*:\s*\{[^}]*\})re");
   static const std::regex time_line(R"re((^|\n)Time: [^\n]*)re");
   static const std::regex wall(R"re([0-9.]+(e[-+]?[0-9]+)? s wall)re");
