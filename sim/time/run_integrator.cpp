@@ -70,13 +70,12 @@ void RunIntegrator::stepTo(double t) {
     return;
   }
   const double tol = 1e-12 * std::max(1.0, std::abs(t));
+  const auto start = std::chrono::steady_clock::now();
   try {
     // Internal steps until one ends at or past t (the end of the run limits the last).
     // The first call after initialize() returns the start of the interval.
     while (t1_ < t - tol) {
-      const auto start = std::chrono::steady_clock::now();
       const auto status = integ_->stepTo(std::max(end_time_, t), SimTK::Infinity);
-      seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (status == SimTK::Integrator::EndOfSimulation) break;
       if (status == SimTK::Integrator::StartOfContinuousInterval) continue;
       t0_ = t1_, y0_ = y1_, yd0_ = yd1_;
@@ -89,6 +88,7 @@ void RunIntegrator::stepTo(double t) {
   } catch (const std::exception& e) {
     throw NumericalError("integration failed at t = " + std::to_string(integ_->getTime()) + " s: " + e.what());
   }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (t1_ < t - 1e-9 * std::max(1.0, std::abs(t)))
     throw NumericalError("the " + name_ + " integrator stopped at t = " + std::to_string(t1_) +
                          " s: " + SimTK::Integrator::getTerminationReasonString(integ_->getTerminationReason()));
