@@ -92,6 +92,8 @@ struct SimulateArgs : SceneArgs {
   std::string integrator;  ///< empty: the scene's.
   double accuracy = 0, duration = 0, sample_rate = 0;  ///< 0: the scene's.
   double absolute_tolerance = 0;                       ///< SUNDIALS only; 0: the scene's.
+  bool verify = false;        ///< a companion run at tolerance / 10 (sim/time/verify.hpp)
+  double verify_target = 0;   ///< m; > 0 implies verify; 0: 1 % of the scored motion
   std::string out;
   bool force = false;
 };

@@ -171,6 +171,12 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateArgs& sim) {
       ->check(positive());
   si->add_option("--duration", sim.duration, "Seconds (default: the scene's)")->check(positive());
   si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(positive());
+  si->add_flag("--verify", sim.verify,
+              "Run the same run again at a 10x tighter tolerance and report the difference on the scored points as the "
+              "run's estimated error (doubles the cost at least)");
+  si->add_option("--verify-target", sim.verify_target,
+                 "Error the verification is held to, m (default 1 % of the scored points' largest motion); implies --verify")
+      ->check(positive());
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");
   si->add_flag("--force", sim.force, "Replace files of the same names in --out");
   return si;

@@ -11,6 +11,7 @@
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
+#include "sim/time/verify.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/simulation_report.hpp"
 #include "sim/model/motions.hpp"
@@ -56,6 +57,19 @@ SimulationResult simulateWithProgress(const SceneT& scene) {
   return simulate(scene, [&progress, duration](double f) { progress.report(f * duration, duration); });
 }
 
+/// `--verify`: the companion run (with its own progress line) and the estimate.
+template <class SceneT>
+void verify(const SimulateArgs& args, const SceneT& scene, SimulationResult& r) {
+  if (!args.verify && !(args.verify_target > 0)) return;
+  r.verification = verifyRun(r, scene.simulation, [&](const SimulationSpec& spec) {
+    SceneT tight = scene;
+    tight.simulation = spec;
+    Progress progress("verification run at a 10x tighter tolerance, seconds simulated");
+    const double duration = spec.duration;
+    return simulate(tight, [&progress, duration](double f) { progress.report(f * duration, duration); });
+  }, args.verify_target);
+}
+
 /// run.json: what a run was made from, so that `render --history` can rebuild its model.
 nlohmann::ordered_json runRecord(const SimulateArgs& args, const std::string& source, const SimulationSpec& spec) {
   nlohmann::ordered_json j;
@@ -98,7 +112,8 @@ int runSimulateCommand(const SimulateArgs& args) {
     if (auto* h = std::get_if<HamsasScene>(&loaded)) {
       applyOverrides(args, h->simulation);
       if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-      const SimulationResult r = simulateWithProgress(*h);
+      SimulationResult r = simulateWithProgress(*h);
+      verify(args, *h, r);
       return report(args, h->name, h->source, r, {}, 0.0, out.get(), h->text, h->simulation);
     }
     ArticleScene& scene = std::get<ArticleScene>(loaded);
@@ -114,6 +129,7 @@ int runSimulateCommand(const SimulateArgs& args) {
     }
     warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
     for (const auto& w : r.warnings) std::cerr << "mmvlab: warning: " << w << '\n';
+    verify(args, scene, r);
     double size = 0;
     for (const auto& l : scene.article.links) size += l.length;
     return report(args, scene.name, scene.source, r, warnings, size, out.get(), scene.text, scene.simulation);

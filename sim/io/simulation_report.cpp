@@ -7,6 +7,7 @@
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
+#include "sim/time/verify.hpp"
 
 namespace mmv {
 namespace {
@@ -69,6 +70,16 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
   j["wall_time_s"] = r.wall_seconds;
   j["stepping_time_s"] = r.stepping_seconds;
   j["output_time_s"] = r.output_seconds;
+  if (const RunVerification& v = r.verification; v.done)
+    j["verification"] = {{"companion_accuracy", v.companion_accuracy},
+                         {"estimated_error_m", v.estimated_error_m},
+                         {"at_s", v.at_s},
+                         {"point", v.point},
+                         {"scored_amplitude_m", v.amplitude_m},
+                         {"target_m", v.target_m},
+                         {"target", v.target_is_default ? "1 % of the scored amplitude" : "given"},
+                         {"met", v.estimated_error_m <= v.target_m},
+                         {"companion_wall_time_s", v.companion_seconds}};
   j["warnings"] = warnings;
   return j;
 }
@@ -106,6 +117,10 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
              r.initial_energy_j, r.final_energy_j, r.motion_work_j, r.dissipated_j, r.energy_balance_error_j,
              r.max_energy_balance_error_j, r.max_energy_balance_error_at_s);
   if (r.constraint_drift_m > 0) os << strf("Closures: largest drift %.3g m over the run\n", r.constraint_drift_m);
+  if (const RunVerification& v = r.verification; v.done)
+    os << strf("Verification: estimated error %.3g m (%s at t = %.4g s, against accuracy %.1e, %.2f s); target %.3g m%s: %s\n",
+               v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy, v.companion_seconds, v.target_m,
+               v.target_is_default ? " (1 % of the scored motion)" : "", v.estimated_error_m <= v.target_m ? "met" : "NOT MET");
   for (const auto& w : warnings) os << "warning: " << w << '\n';
   return os.str();
 }
@@ -133,6 +148,7 @@ std::vector<std::string> simulationWarnings(const SimulationResult& r, double ar
                          strf("%.4g", t.capacity_nm) + " N*m");
   if (const std::string w = energyBalanceWarning(r); !w.empty()) warnings.push_back(w);
   if (const std::string w = constraintDriftWarning(r, article_size_m); !w.empty()) warnings.push_back(w);
+  if (const std::string w = verificationWarning(r.verification); !w.empty()) warnings.push_back(w);
   if (const double payload = facility::TableSpec{}.payload_n; r.carried_weight_n > payload)
     warnings.push_back("the table carries " + strf("%.4g", r.carried_weight_n) + " N, above its " + strf("%.4g", payload) +
                        " N payload");

@@ -58,6 +58,19 @@ struct SensorSummary {
   int saturated_samples = 0, samples = 0;
 };
 
+/// A run's error estimated by a companion at a 10x tighter tolerance (sim/time/verify.hpp).
+struct RunVerification {
+  bool done = false;
+  double companion_accuracy = 0;
+  double companion_seconds = 0;
+  double estimated_error_m = 0;  ///< largest distance of a scored point from the companion's
+  double at_s = 0;               ///< where
+  std::string point;             ///< which point
+  double amplitude_m = 0;        ///< the scored points' largest motion (companion run)
+  double target_m = 0;           ///< what the estimate is held to
+  bool target_is_default = true; ///< 1 % of amplitude_m (1e-4 m if nothing moved)
+};
+
 struct SimulationResult {
   SimulationRecord record;
   /// Article runs: the time and every coordinate of the model at each sample (column
@@ -95,6 +108,7 @@ struct SimulationResult {
   /// (the run stays there only until round-off grows) or that moved a free joint away
   /// from its scene angle (assessEquilibrium, sim/statics/statics.hpp).
   std::vector<std::string> warnings;
+  RunVerification verification;  ///< filled by verifyRun on request
 };
 
 /// Runs the scene's time run with its `simulation:` settings. `progress`, if given,

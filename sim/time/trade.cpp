@@ -7,46 +7,11 @@
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/scene/stations.hpp"
+#include "sim/time/verify.hpp"
 
 namespace mmv {
-namespace {
 
-/// The largest distance between the two runs' scored points (every one when `points`
-/// is empty) over their common samples.
-double distance(const SimulationRecord& a, const SimulationRecord& b, const std::vector<std::string>& points) {
-  double worst = 0;
-  const std::size_t rows = std::min(a.rows.size(), b.rows.size());
-  for (const auto& [name, ca] : a.scored) {
-    if (!points.empty() && std::find(points.begin(), points.end(), name) == points.end()) continue;
-    for (const auto& [other, cb] : b.scored) {
-      if (other != name) continue;
-      for (std::size_t k = 0; k < rows; ++k) {
-        double d2 = 0;
-        for (std::size_t c = 0; c < ca.size(); ++c) d2 += std::pow(a.rows[k][ca[c]] - b.rows[k][cb[c]], 2);
-        worst = std::max(worst, std::sqrt(d2));
-      }
-    }
-  }
-  return worst;
-}
-
-/// The largest distance of the scored points from their first sample.
-double amplitude(const SimulationRecord& a, const std::vector<std::string>& points) {
-  double worst = 0;
-  for (const auto& [name, ca] : a.scored) {
-    if (!points.empty() && std::find(points.begin(), points.end(), name) == points.end()) continue;
-    for (std::size_t k = 1; k < a.rows.size(); ++k) {
-      double d2 = 0;
-      for (std::size_t c = 0; c < ca.size(); ++c) d2 += std::pow(a.rows[k][ca[c]] - a.rows[0][ca[c]], 2);
-      worst = std::max(worst, std::sqrt(d2));
-    }
-  }
-  return worst;
-}
-
-}  // namespace
-
-double defaultTradeTarget(const TradeStudy& s) { return s.reference_amplitude_m > 0 ? 0.01 * s.reference_amplitude_m : 1e-4; }
+double defaultTradeTarget(const TradeStudy& s) { return defaultErrorTarget(s.reference_amplitude_m); }
 
 TradeProblem tradeProblemBase(const std::string& scene_name, SimulationSpec simulation, double duration) {
   TradeProblem p;
@@ -115,8 +80,8 @@ TradeStudy runTrade(const TradeProblem& problem, const TradeOptions& options) {
   };
   const SimulationResult ref = run(0, study.reference_integrator, 1e-10);
   const SimulationResult check = run(0, study.check_integrator, 1e-10);
-  study.reference_uncertainty_m = distance(ref.record, check.record, o.points);
-  study.reference_amplitude_m = amplitude(ref.record, o.points);
+  study.reference_uncertainty_m = scoredDistance(ref.record, check.record, o.points).distance_m;
+  study.reference_amplitude_m = scoredAmplitude(ref.record, o.points);
   study.reference_seconds = ref.wall_seconds;
   // One scored run: its error against the reference and its cost, or its diagnostic.
   auto measure = [&](int segments, const std::string& integrator, double accuracy) {
@@ -126,7 +91,7 @@ TradeStudy runTrade(const TradeProblem& problem, const TradeOptions& options) {
     r.segments = segments;
     try {
       const SimulationResult res = run(segments, integrator, accuracy);
-      r.error_m = distance(res.record, ref.record, o.points);
+      r.error_m = scoredDistance(res.record, ref.record, o.points).distance_m;
       r.seconds = res.wall_seconds;
       r.evaluations = res.realizations;
     } catch (const NumericalError& e) {

@@ -409,6 +409,27 @@ TEST_F(Cli, SimulateSlewScene) {
   EXPECT_GT(j["realizations"].get<int>(), 0);
 }
 
+// --verify: the slew scene's run at its own accuracy against one 10x tighter, with the
+// estimate, where, and whether it meets the default target (1 % of the tips' motion).
+TEST_F(Cli, SimulateVerifyReportsAnErrorEstimate) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const Result r = run("simulate " + scene + " --segments 2 --duration 1 --verify --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& v = j.at("verification");
+  EXPECT_EQ(v["companion_accuracy"].get<double>(), 1e-7);
+  EXPECT_GT(v["estimated_error_m"].get<double>(), 0.0);
+  EXPECT_NEAR(v["target_m"].get<double>(), 0.01 * v["scored_amplitude_m"].get<double>(), 1e-15);
+  EXPECT_TRUE(v["met"].get<bool>());
+  EXPECT_NE(v["point"].get<std::string>().find(".tip"), std::string::npos);
+  // An unreachable target is reported as not met, with a warning, and the run still exits 0.
+  const Result strict = run("simulate " + scene + " --segments 2 --duration 1 --verify-target 1e-15");
+  ASSERT_EQ(strict.code, 0) << strict.err;
+  EXPECT_NE(strict.out.find("NOT MET"), std::string::npos) << strict.out;
+  EXPECT_NE(strict.out.find("warning: the run's estimated error"), std::string::npos);
+  EXPECT_NE(run("simulate " + scene + " --verify-target -1").code, 0);
+}
+
 TEST_F(Cli, SimulateBadInput) {
   // A sine beyond the table's +-15 cm stroke is refused before anything runs.
   std::string text = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml");

@@ -1,0 +1,79 @@
+#include "sim/time/verify.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "sim/core/text.hpp"
+
+namespace mmv {
+namespace {
+
+bool scored(const std::vector<std::string>& points, const std::string& name) {
+  return points.empty() || std::find(points.begin(), points.end(), name) != points.end();
+}
+
+}  // namespace
+
+ScoredDistance scoredDistance(const SimulationRecord& a, const SimulationRecord& b, const std::vector<std::string>& points) {
+  ScoredDistance worst;
+  const std::size_t rows = std::min(a.rows.size(), b.rows.size());
+  for (const auto& [name, ca] : a.scored) {
+    if (!scored(points, name)) continue;
+    for (const auto& [other, cb] : b.scored) {
+      if (other != name) continue;
+      for (std::size_t k = 0; k < rows; ++k) {
+        double d2 = 0;
+        for (std::size_t c = 0; c < ca.size(); ++c) d2 += std::pow(a.rows[k][ca[c]] - b.rows[k][cb[c]], 2);
+        if (std::sqrt(d2) > worst.distance_m) worst = {std::sqrt(d2), a.rows[k][0], name};
+      }
+    }
+  }
+  return worst;
+}
+
+double scoredAmplitude(const SimulationRecord& a, const std::vector<std::string>& points) {
+  double worst = 0;
+  for (const auto& [name, ca] : a.scored) {
+    if (!scored(points, name)) continue;
+    for (std::size_t k = 1; k < a.rows.size(); ++k) {
+      double d2 = 0;
+      for (std::size_t c = 0; c < ca.size(); ++c) d2 += std::pow(a.rows[k][ca[c]] - a.rows[0][ca[c]], 2);
+      worst = std::max(worst, std::sqrt(d2));
+    }
+  }
+  return worst;
+}
+
+double defaultErrorTarget(double amplitude_m) { return amplitude_m > 0 ? 0.01 * amplitude_m : 1e-4; }
+
+RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spec,
+                          const std::function<SimulationResult(const SimulationSpec&)>& rerun, double target_m) {
+  SimulationSpec tight = spec;
+  tight.accuracy = spec.accuracy / 10;
+  tight.absolute_tolerance = spec.absolute_tolerance / 10;
+  const auto start = std::chrono::steady_clock::now();
+  const SimulationResult companion = rerun(tight);
+  RunVerification v;
+  v.done = true;
+  v.companion_accuracy = tight.accuracy;
+  v.companion_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const ScoredDistance d = scoredDistance(run.record, companion.record, spec.score_points);
+  v.estimated_error_m = d.distance_m;
+  v.at_s = d.at_s;
+  v.point = d.point;
+  v.amplitude_m = scoredAmplitude(companion.record, spec.score_points);
+  v.target_m = target_m > 0 ? target_m : defaultErrorTarget(v.amplitude_m);
+  v.target_is_default = !(target_m > 0);
+  return v;
+}
+
+std::string verificationWarning(const RunVerification& v) {
+  if (!v.done || v.estimated_error_m <= v.target_m) return {};
+  return strf("the run's estimated error %.3g m (at %s, t = %.4g s, against the same run at accuracy %.1e) exceeds the %s "
+              "%.3g m: tighten the accuracy",
+              v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy,
+              v.target_is_default ? "target (1 % of the scored motion)" : "target", v.target_m);
+}
+
+}  // namespace mmv

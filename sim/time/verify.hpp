@@ -1,0 +1,46 @@
+#pragma once
+/// A time run's error estimate by a companion run (`simulate --verify`): the same run
+/// at a 10x tighter tolerance (relative, and absolute where one is set), compared at
+/// every sample on the scored points (every link tip and the scene's score_points; the
+/// isolator's optical table and spring box). For an integrator of order p the
+/// companion's own error is about 10^-p of the run's, so the difference estimates the
+/// run's error; it does not see the discretization (segments), which `converge` and
+/// `trade`'s segment ladder measure.
+///
+/// The comparison functions are the ones `trade` scores its runs with.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/time/simulation.hpp"
+
+namespace mmv {
+
+/// Where two runs' scored points are farthest apart.
+struct ScoredDistance {
+  double distance_m = 0;
+  double at_s = 0;
+  std::string point;
+};
+
+/// The largest distance between the two runs' scored points (every one when `points`
+/// is empty) over their common samples.
+ScoredDistance scoredDistance(const SimulationRecord& a, const SimulationRecord& b, const std::vector<std::string>& points);
+
+/// The largest distance of the scored points from their first sample.
+double scoredAmplitude(const SimulationRecord& a, const std::vector<std::string>& points);
+
+/// The target an error is held to when the user gives none: 1 % of the scored points'
+/// largest motion; 1e-4 m if nothing moved.
+double defaultErrorTarget(double amplitude_m);
+
+/// Runs `rerun` at the run's tolerances / 10 and fills the estimate. `target_m` <= 0:
+/// defaultErrorTarget of the companion's amplitude. Throws what `rerun` throws.
+RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spec,
+                          const std::function<SimulationResult(const SimulationSpec&)>& rerun, double target_m);
+
+/// A warning when the estimate exceeds its target; empty otherwise.
+std::string verificationWarning(const RunVerification& v);
+
+}  // namespace mmv
