@@ -137,13 +137,15 @@ std::vector<double> frequencies(const LinearArgs& a) {
 int runFrfCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
     const Scene loaded = loadScene(args);
-    const std::vector<double> f = frequencies(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasFrf(args, *h, f);
+    const std::vector<double> grid = frequencies(args);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasFrf(args, *h, grid);
     const ArticleScene& scene = std::get<ArticleScene>(loaded);
     if (!args.vary.empty()) throw UsageError("--vary applies to HAM-SAS scenes only");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const auto [lm, red] = buildAndReduce(args, scene);
+    // The log grid with every kept mode's half-power band resolved.
+    const std::vector<double> f = resolveResonances(grid, red.kept_frequencies_hz, red.kept_damping);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
     const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
@@ -192,11 +194,13 @@ int runRomCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
     if (args.out.empty()) throw UsageError("rom: --out DIR is required (it writes rom.mat and full.mat)");
     const Scene loaded = loadScene(args);
-    const std::vector<double> f = frequencies(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h, f);
+    const std::vector<double> grid = frequencies(args);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h, grid);
     const ArticleScene& scene = std::get<ArticleScene>(loaded);
     OutputDir out(args.out, args.force);
     const auto [lm, red] = buildAndReduce(args, scene);
+    // The log grid with every kept mode's half-power band resolved.
+    const std::vector<double> f = resolveResonances(grid, red.kept_frequencies_hz, red.kept_damping);
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
     const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);

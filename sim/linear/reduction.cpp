@@ -127,7 +127,12 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
   red.model = project(full, sm, kept);
   red.kept_modes = static_cast<int>(kept.size());
   red.unseen_modes = unseen;
-  for (const auto& m : kept) red.kept_frequencies_hz.push_back(m.magnitude / (2 * M_PI));
+  for (const auto& m : kept) {
+    red.kept_frequencies_hz.push_back(m.magnitude / (2 * M_PI));
+    // A real root is no resonance (damping ratio 1 and above: reported as 1).
+    const std::complex<double> l = sm.lambda[m.index];
+    red.kept_damping.push_back(m.pair && std::abs(l) > 0 ? std::min(1.0, -l.real() / std::abs(l)) : 1.0);
+  }
   red.every_mode_computed = sm.every_mode;
   if (o.residualize && red.model.numStates() < full.numStates()) {
     residualize(full, sm, red.model);

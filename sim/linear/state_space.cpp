@@ -39,6 +39,27 @@ std::vector<double> logFrequencies(double f0, double f1, int n) {
   return f;
 }
 
+std::vector<double> resolveResonances(const std::vector<double>& grid, const std::vector<double>& fn_hz,
+                                      const std::vector<double>& zeta, int per_half_band) {
+  if (grid.empty()) return grid;
+  std::vector<double> f = grid;
+  const double lo = *std::min_element(grid.begin(), grid.end()), hi = *std::max_element(grid.begin(), grid.end());
+  for (std::size_t m = 0; m < fn_hz.size() && m < zeta.size(); ++m) {
+    const double fn = fn_hz[m], z = zeta[m];
+    if (!(z > 0 && z < 0.5) || !(fn > lo && fn < hi)) continue;
+    auto add = [&](double x) {
+      if (x >= lo && x <= hi) f.push_back(x);
+    };
+    for (int k = -2 * per_half_band; k <= 2 * per_half_band; ++k) add(fn * (1 + z * k / per_half_band));
+    add(fn * std::sqrt(1 - 2 * z * z));
+  }
+  std::sort(f.begin(), f.end());
+  std::vector<double> out;
+  for (double x : f)
+    if (out.empty() || x > out.back() * (1 + 1e-9)) out.push_back(x);
+  return out;
+}
+
 StateSpace secondOrderModel(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, const Eigen::MatrixXd& K,
                             const Eigen::MatrixXd& Bq, const Eigen::MatrixXd& Cd, const Eigen::MatrixXd& Cv,
                             const Eigen::MatrixXd& Ca, const Eigen::MatrixXd& Dextra) {

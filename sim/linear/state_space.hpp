@@ -155,6 +155,7 @@ struct ReducedModel {
   bool residualized = false;
   bool every_mode_computed = true;  ///< false: only the lowest modes were (ReductionOptions::Solver).
   std::vector<double> kept_frequencies_hz;
+  std::vector<double> kept_damping;  ///< damping ratio of each kept mode (-Re lambda / |lambda|; 1 for a real root)
 };
 
 /// Modal reduction of a first-order model (the HAM-SAS authors' method, docs/sources.md section 3): right and left
@@ -193,6 +194,15 @@ Eigen::VectorXcd polesFromIntegratorJacobian(const StateSpace& m, double dcoef);
 
 /// Log-spaced frequencies (Hz) from f0 to f1, n points.
 std::vector<double> logFrequencies(double f0_hz, double f1_hz, int n);
+
+/// `grid` with points added around every lightly damped mode inside it (0 < zeta < 0.5),
+/// so the grid resolves each resonance's half-power band f_n (1 +- zeta): 2 k + 1
+/// points evenly over f_n (1 +- 2 zeta) (k = `per_half_band`), and the peak
+/// f_n sqrt(1 - 2 zeta^2). A log grid of 400 points over 0.1-100 Hz is 1.7 % apart, wider
+/// than the 1.6 % band of a mode at 0.8 % damping. Sorted, without near-duplicates
+/// (1e-9 relative). An undamped mode (zeta = 0) gets no points: its response there is infinite.
+std::vector<double> resolveResonances(const std::vector<double>& grid, const std::vector<double>& fn_hz,
+                                      const std::vector<double>& zeta, int per_half_band = 4);
 
 /// The peak of every |H(o, i)| (frequency in Hz, magnitude, outputs x inputs): the
 /// largest grid point of f, refined between its neighbours by Brent's search (parabolic
