@@ -41,6 +41,7 @@ struct ModesArgs : SceneArgs {
   bool json = false;
   int modes = 12;  ///< modes to report; 0 = all.
   std::vector<std::string> points;  ///< named points or stations whose shapes are tabulated.
+  bool no_error_estimate = false;   ///< skip the coarser solutions (estimateDiscretization)
 };
 
 struct ConvergeArgs : SceneArgs {

@@ -72,6 +72,8 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
   m->add_option("--points", modes.points,
                 "Comma-separated points or stations whose mode shapes are tabulated, e.g. link1@0.5,link3a@0.762m,link2.tip")
       ->delimiter(',');
+  m->add_flag("--no-error-estimate", modes.no_error_estimate,
+              "Skip each mode's discretization error estimate (the scene solved again with segments / 2 and / 4)");
   return m;
 }
 

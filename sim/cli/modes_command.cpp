@@ -21,6 +21,7 @@ int runModesCommand(const ModesArgs& args) {
     opt.with_shapes = args.json;
     opt.points = checkedPoints(args.points, scene.article, "--points");
     ModesReport rep = runModes(scene, opt);
+    if (!args.no_error_estimate) rep.discretization = estimateDiscretization(scene, reportFrequencies(rep));
     for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
     args.json ? emitResult(modesToJson(rep)) : emitResult(formatModesText(rep));
     return kOk;

@@ -14,6 +14,10 @@ struct ConvergenceStudy;  // sim/modes/converge.hpp
 std::string formatModesText(const ModesReport& r);
 nlohmann::ordered_json modesToJson(const ModesReport& r);
 
+/// The discretization error block of `modes` (empty when not asked for).
+std::string discretizationText(const DiscretizationEstimate& d);
+nlohmann::ordered_json discretizationJson(const DiscretizationEstimate& d);
+
 std::string formatConvergenceText(const ConvergenceStudy& c);
 nlohmann::ordered_json convergenceToJson(const ConvergenceStudy& c);
 

@@ -92,12 +92,29 @@ json modesToJson(const ModesReport& r) {
   j["checks"] = {{"eigen_residual", r.eigen_residual},
                  {"orthogonality_error", r.orthogonality_error},
                  {"stiffness_asymmetry", r.stiffness_asymmetry}};
+  if (const auto& d = r.discretization; d.available || !d.reason.empty()) j["discretization_error"] = discretizationJson(d);
   if (!r.warnings.empty()) j["warnings"] = r.warnings;
   j["time_s"] = {{"build", r.seconds_build},
                  {"equilibrium", r.seconds_equilibrium},
                  {"linearize", r.seconds_linearize},
                  {"eigen", r.seconds_eigen}};
   return j;
+}
+
+json discretizationJson(const DiscretizationEstimate& d) {
+  if (!d.available) return {{"available", false}, {"reason", d.reason}};
+  json modes = json::array();
+  for (const auto& m : d.modes) {
+    json f = json::array();
+    for (double x : m.frequency_hz) f.push_back(number(x));
+    modes.push_back({{"number", m.number},
+                     {"frequency_hz_by_run", f},
+                     {"richardson_hz", m.has_estimate ? json(m.extrapolated_hz) : json(nullptr)},
+                     {"estimated_relative_error", m.has_estimate ? json(m.estimated_relative_error) : json(nullptr)},
+                     {"observed_order", m.has_observed_order ? json(m.observed_order) : json(nullptr)},
+                     {"check", m.check.empty() ? json("unchecked") : json(m.check)}});
+  }
+  return {{"available", true}, {"segment_divisors", d.divisors}, {"wall_time_s", d.seconds}, {"modes", modes}};
 }
 
 json convergenceToJson(const ConvergenceStudy& c) {

@@ -74,6 +74,7 @@ std::string formatModesText(const ModesReport& r) {
   }
   if (static_cast<int>(r.modes.size()) < r.model.num_dofs)
     os << "  (" << r.modes.size() << " of " << r.model.num_dofs << " modes shown; --modes 0 shows all)\n";
+  os << discretizationText(r.discretization);
   if (!r.modes.empty() && !r.modes.front().at_points.empty()) {
     os << "\nMode shapes at the points asked for (translation per unit modal coordinate, mass-normalised shapes)\n";
     Table t({"mode", "point", "ux_m", "uy_m"});
@@ -87,6 +88,25 @@ std::string formatModesText(const ModesReport& r) {
   os << strf("Time: build %.1f ms, equilibrium %.1f ms, linearize %.1f ms, eigen %.1f ms\n", 1e3 * r.seconds_build,
             1e3 * r.seconds_equilibrium, 1e3 * r.seconds_linearize, 1e3 * r.seconds_eigen);
   return os.str();
+}
+
+std::string discretizationText(const DiscretizationEstimate& d) {
+  if (!d.available) return d.reason.empty() ? "" : "\nDiscretization error: not estimated (" + d.reason + ")\n";
+  std::string ladder;
+  for (int k : d.divisors) ladder += "/" + std::to_string(k) + ", ";
+  std::ostringstream os;
+  os << "\nDiscretization error of each frequency: the scene solved again with every flexible link's segments "
+     << ladder.substr(0, ladder.size() - 2) << ", in " << strf("%.0f", 1e3 * d.seconds) << " ms\n"
+     << "  richardson: the O(1/N^2) extrapolation; check: ok (observed order within 0.5 of 2), order (another order,\n"
+     << "  used for the estimate), unconverged (the estimate is a lower bound); without a quartered run, unchecked\n";
+  Table t({"mode", "frequency_Hz", "richardson_Hz", "est_err_%", "order", "check"});
+  for (const auto& m : d.modes) {
+    const double f = m.frequency_hz.back();
+    t.add({std::to_string(m.number), strf("%.4f", f), m.has_estimate ? strf("%.4f", m.extrapolated_hz) : "-",
+           m.has_estimate ? strf("%.3g", 100 * m.estimated_relative_error) : "-",
+           m.has_observed_order ? strf("%.2f", m.observed_order) : "-", m.check.empty() ? "unchecked" : m.check});
+  }
+  return os.str() + t.text();
 }
 
 std::string formatConvergenceText(const ConvergenceStudy& c) {

@@ -46,6 +46,25 @@ struct ConvergenceStudy {
   std::vector<ConvergenceMode> modes;
 };
 
+/// One mode's frequencies over a ladder of meshes, each with twice the segments of the
+/// one before (NaN where a run lacks the mode): the Richardson value and estimate from
+/// the two finest, the observed order and its check from the three finest.
+ConvergenceMode assessLadder(int number, const std::vector<double>& frequency_hz);
+
+/// The discretization error of a `modes` run: the scene again with every flexible
+/// link's segments halved and, when they divide by 4, quartered; each mode matched by
+/// index. Not available (`reason` says why) without flexible links or when a link's
+/// segments are odd.
+struct DiscretizationEstimate {
+  bool available = false;
+  std::string reason;
+  std::vector<int> divisors;  ///< the coarser runs, e.g. {4, 2}: segments / 4 and / 2
+  std::vector<ConvergenceMode> modes;  ///< one per finest frequency; check "rigid" for a zero-frequency mode
+  double seconds = 0;
+};
+/// `finest_hz`: the scene's own modes (negative: unstable, 0: rigid).
+DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const std::vector<double>& finest_hz);
+
 /// Runs N = 1, 2, 4, ..., up to max_segments (>= 1), reporting `num_modes` modes.
 /// Throws NumericalError if a run fails.
 ConvergenceStudy runConvergence(const ArticleScene& scene, int max_segments, int num_modes);

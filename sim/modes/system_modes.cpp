@@ -338,4 +338,11 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   return rep;
 }
 
+std::vector<double> reportFrequencies(const ModesReport& r) {
+  std::vector<double> f;
+  for (const auto& m : r.modes)
+    f.push_back(m.rigid_body ? 0.0 : (m.omega2 >= 0 ? std::sqrt(m.omega2) : -std::sqrt(-m.omega2)) / (2 * M_PI));
+  return f;
+}
+
 }  // namespace mmv

@@ -24,6 +24,7 @@
 #include "sim/model/model.hpp"
 #include "sim/modes/modal.hpp"
 #include "sim/statics/linearize.hpp"
+#include "sim/modes/converge.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/statics/statics.hpp"
 
@@ -101,7 +102,13 @@ struct ModesReport {
   /// Checks that failed (an eigen residual above 1e-6 of a reported mode), for the user.
   std::vector<std::string> warnings;
   double seconds_build = 0, seconds_equilibrium = 0, seconds_linearize = 0, seconds_eigen = 0;
+  /// Each mode's discretization error (estimateDiscretization, sim/modes/converge.hpp),
+  /// when asked for; `modes` by default.
+  DiscretizationEstimate discretization;
 };
+
+/// The frequencies of a report's modes as solveSceneModes gives them (negative: unstable).
+std::vector<double> reportFrequencies(const ModesReport& r);
 
 struct ModesOptions {
   int max_modes = 0;        ///< 0: all.

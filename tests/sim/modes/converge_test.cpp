@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "article/beam_theory.hpp"
+#include "sim/modes/system_modes.hpp"
 #include "support/scenes.hpp"
 
 namespace mmv {
@@ -57,6 +58,39 @@ TEST(Converge, ModesFarFromSecondOrderAreFlaggedAndNotUnderestimated) {
     }
   }
   EXPECT_GE(flagged, 2);
+}
+
+}  // namespace
+}  // namespace mmv
+
+namespace mmv {
+namespace {
+
+// `modes`' own error estimate: the default article (16 segments per link) solved again
+// at 4 and 8; the Richardson value is checked against the scene at 64 segments: for the
+// first 8 modes the estimate is within a factor of 3 of the 16-segment run's actual
+// error, and the extrapolation is closer than the 16-segment frequency.
+TEST(Discretization, EstimateMatchesAFinerRun) {
+  const ArticleScene s = loadDefaultScene();
+  const ModesSolve own = solveSceneModes(s, {}, 8);
+  const std::vector<double> f16(own.frequencies_hz.data(), own.frequencies_hz.data() + 8);
+  const DiscretizationEstimate e = estimateDiscretization(s, f16);
+  ASSERT_TRUE(e.available);
+  EXPECT_EQ(e.divisors, (std::vector<int>{4, 2}));
+  ArticleScene fine = s;
+  overrideSegments(fine, 64);
+  const ModesSolve f64 = solveSceneModes(fine, {}, 8);
+  for (int i = 0; i < 8; ++i) {
+    const ConvergenceMode& m = e.modes[i];
+    EXPECT_EQ(m.check, "ok") << i;
+    const double actual = std::abs(f16[i] - f64.frequencies_hz[i]) / f64.frequencies_hz[i];
+    EXPECT_GT(m.estimated_relative_error, actual / 3) << i;
+    EXPECT_LT(m.estimated_relative_error, actual * 3) << i;
+    EXPECT_LT(std::abs(m.extrapolated_hz - f64.frequencies_hz[i]), std::abs(f16[i] - f64.frequencies_hz[i])) << i;
+  }
+  ArticleScene odd = s;
+  overrideSegments(odd, 5);
+  EXPECT_FALSE(estimateDiscretization(odd, f16).available);
 }
 
 }  // namespace
