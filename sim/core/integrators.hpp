@@ -44,6 +44,10 @@ constexpr double kMinAccuracy = 1e-14;     ///< integrator relative accuracy, ex
 constexpr long kMaxSceneBytes = 16L << 20;
 /// A table profile (CSV): 10^6 samples at 60 bytes a row.
 constexpr long kMaxProfileBytes = 64L << 20;
+/// A measured UFF file (`correlate --measured`): 1000 FRFs of 4000 lines of 53 bytes.
+constexpr long kMaxMeasuredBytes = 256L << 20;
+/// Measured nodes paired with the article by position (each costs a search along every link).
+constexpr int kMaxMeasuredNodes = 2000;
 }  // namespace limits
 
 }  // namespace mmv

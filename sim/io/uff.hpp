@@ -3,7 +3,7 @@
 /// fixed-width FORTRAN fields): 151 header, 164 units (SI), 15 nodes, 82 trace lines,
 /// 55 mode shapes (normal modes, 3 translations per node), 58 functions (FRF, function
 /// type 4, or transmissibility, type 5; complex double ordinate over an uneven
-/// frequency abscissa). (The tests read them back with tests/support/uff_reader.hpp.)
+/// frequency abscissa). (sim/io/uff_read.hpp reads them, and what acquisition software writes.)
 
 #include <array>
 #include <complex>
@@ -28,6 +28,10 @@ struct ModeShape {
   double frequency_hz = 0, modal_mass = 0, damping_ratio = 0;
   std::vector<int> nodes;
   std::vector<std::array<double, 3>> translations;  ///< per node, m per unit modal coordinate.
+  /// Complex modes (read from analysis type 3 or complex data): the imaginary parts,
+  /// per node; empty for a real (normal) mode.
+  std::vector<std::array<double, 3>> translations_imag;
+  int line = 0;  ///< read: the dataset's first line in its file (for messages).
 };
 
 struct Function {
@@ -43,6 +47,7 @@ struct Function {
   std::string denominator_label, denominator_units;
   std::vector<double> frequency_hz;
   std::vector<std::complex<double>> values;
+  int line = 0;  ///< read: the dataset's first line in its file (for messages).
 };
 
 struct File {
@@ -52,6 +57,10 @@ struct File {
   std::vector<TraceLine> trace_lines;
   std::vector<ModeShape> modes;
   std::vector<Function> functions;
+  /// Read: dataset 164's factors from the file's units to SI (SI value = file value /
+  /// factor); 1 when the file has none. Values returned by read() are already in SI.
+  double length_factor = 1, force_factor = 1;
+  std::string units_description;
 };
 
 std::string write(const File& f);

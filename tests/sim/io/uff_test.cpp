@@ -1,5 +1,7 @@
 #include "sim/io/uff.hpp"
-#include "support/uff_reader.hpp"
+#include "sim/io/uff_read.hpp"
+#include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -141,8 +143,11 @@ TEST(Uff, MalformedRecordIsNamed) {
   try {
     uff::read(text);
     FAIL() << "expected an error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("UFF line"), std::string::npos) << e.what();
+  } catch (const SceneError& e) {
+    // file:line:col, the dataset, the field and the value
+    EXPECT_NE(std::string(e.what()).find("<uff>:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("dataset 15: node label must be an integer"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(got 'garbage"), std::string::npos) << e.what();
   }
 }
 
