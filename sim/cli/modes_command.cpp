@@ -20,6 +20,7 @@ int runModesCommand(const ModesArgs& args) {
     opt.max_modes = args.modes;
     opt.with_shapes = args.json;
     opt.points = checkedPoints(args.points, scene.article, "--points");
+    opt.damping = scene.damping;
     ModesReport rep = runModes(scene, opt);
     if (!args.no_error_estimate) rep.discretization = estimateDiscretization(scene, reportFrequencies(rep));
     for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);

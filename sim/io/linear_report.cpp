@@ -11,8 +11,11 @@
 #include "sim/model/stations.hpp"
 #include "sim/io/report.hpp"
 #include "sim/io/uff.hpp"
+#include "sim/modes/damping.hpp"
 
 namespace mmv {
+
+const char* const kBaseNode = "base";
 
 std::string safeFileName(std::string s) {
   for (char& c : s)
@@ -46,10 +49,14 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
   os << "Reduced model: " << red.kept_modes << " modes (" << red.model.numStates() << " states), "
      << (red.residualized ? "statically residualized (every DC gain exact)" : "truncated") << "; kept modes (Hz):";
   for (double x : red.kept_frequencies_hz) os << strf(" %.3g", x);
+  os << "\nDamping: " << describeDamping(lm.damping) << "; kept modes' ratios (%):";
+  for (double z : red.kept_damping) os << strf(" %.3g", 100 * z);
   os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n", f.front(),
              f.back(), 100 * err.max_relative);
   os << localErrorLine(err, s.output_names, s.input_names) << "\n";
-  Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "at_10_Hz_dB", "rom_error_%", "rom_local_%", "local_at_Hz"});
+  os << "peak_zeta_%: the largest peak's half-power damping, (f2 - f1) / (2 f_peak) ('-': its half-power points are not both in the band)\n";
+  Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "peak_zeta_%", "at_10_Hz_dB", "rom_error_%", "rom_local_%",
+           "local_at_Hz"});
   const PeakTable peaks = refinedPeaks(lm.second_order, f, hf);
   const Eigen::MatrixXcd h10 = lm.second_order.response(2 * M_PI * 10.0);
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
@@ -57,8 +64,9 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
       const double fpeak = peaks.hz(o, i);
       const double peak = 20 * std::log10(peaks.magnitude(o, i) + 1e-300);
       const double at10 = 20 * std::log10(std::abs(h10(o, i)) + 1e-300);
+      const double zeta = peaks.half_power_damping(o, i);
       t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], strf("%.4g", fpeak),
-             strf("%.2f", peak), strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i)),
+             strf("%.2f", peak), zeta > 0 ? strf("%.3g", 100 * zeta) : "-", strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i)),
              strf("%.3g", 100 * err.local(o, i)), strf("%.4g", err.local_hz(o, i))});
     }
   os << t.text();
@@ -96,7 +104,8 @@ void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::v
       fn.id2 = scene.name;
       fn.response_node = label[out.point];
       fn.response_direction = out.axis + 1;
-      fn.reference_node = in.kind == InputKind::PointForce ? label[in.target] : in.kind == InputKind::JointTorque ? label[in.target] : 0;
+      // The table's acceleration is referred to the base node, which the file defines.
+      fn.reference_node = in.kind == InputKind::BaseAcceleration ? label.at(kBaseNode) : label.at(in.target);
       fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis + 1;
       fn.ordinate_type = spec_out[static_cast<int>(out.kind)];
       fn.ordinate_length_exp = 1;
@@ -150,6 +159,12 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
     label[name] = id;
     file.nodes.push_back({id, {x[0], x[1], x[2]}});
   }
+  {  // the base (the table's top, where a base input is measured): the reference of table inputs
+    const int id = static_cast<int>(file.nodes.size()) + 1;
+    label[kBaseNode] = id;
+    const auto& b = scene.article.base.position;
+    file.nodes.push_back({id, {b[0], b[1], b[2]}});
+  }
   int trace = 1;
   for (const auto& l : scene.article.links) {
     uff::TraceLine t{trace++, l.name, {}};
@@ -160,11 +175,14 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
   }
   const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
   const ModalSolution& modes = lm.solved.modes;
-  for (int k = 0; k < std::min<int>(kLinearModelModes, static_cast<int>(modes.omega2.size())); ++k) {
+  const int count = std::min<int>(kLinearModelModes, static_cast<int>(modes.omega2.size()));
+  const ModalDamping damping = modalDamping(model, lm.solved.linearized, modes, lm.damping, count);
+  for (int k = 0; k < count; ++k) {
     uff::ModeShape m;
     m.mode = k + 1;
     m.frequency_hz = modes.frequencyHz(k);
     m.modal_mass = 1.0;
+    m.damping_ratio = damping.ratio[k];
     const Eigen::VectorXd u = P * modes.shapes.col(k);
     for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
       m.nodes.push_back(static_cast<int>(p) + 1);
@@ -199,6 +217,9 @@ nlohmann::ordered_json romJson(const LinearModel& lm, const ReducedModel& red, c
   j["reduced_states"] = red.model.numStates();
   j["kept_modes"] = red.kept_modes;
   j["kept_frequencies_hz"] = red.kept_frequencies_hz;
+  j["kept_damping_ratios"] = red.kept_damping;
+  j["damping_model"] = describeDamping(lm.damping);
+  j["state_names"] = red.model.state_names;
   j["residualized"] = red.residualized;
   j["band_hz"] = {f.front(), f.back()};
   j["max_relative_frf_error"] = err.max_relative;

@@ -25,8 +25,13 @@ void addLocalError(nlohmann::ordered_json& j, const ModelError& err, const std::
 
 std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
                               const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& hf);
-/// The UFF file: nodes at the equilibrium's named points, a trace line per link, the
-/// first 12 mode shapes, and every FRF (or transmissibility) pair of `h` at f (Hz).
+/// The name of the UFF node at the article's base (scene base.position): the reference
+/// node of every function whose input is the table's acceleration.
+extern const char* const kBaseNode;
+/// The UFF file: nodes at the equilibrium's named points and the base, a trace line per
+/// link, the first 12 mode shapes with their damping ratios under the model's damping
+/// (sim/modes/damping.hpp), and every FRF (or transmissibility) pair of `h` at f (Hz),
+/// each referred to a node the file defines.
 std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
                    const std::vector<Eigen::MatrixXcd>& h);
 /// frf_<output>__<input>.csv: magnitude (dB and in units), phase, and the reduced model's.

@@ -18,6 +18,44 @@ json shares(const std::vector<PartShare>& v) {
 /// JSON has no NaN: a missing number is null.
 json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
+/// One mode of `r` in the modes JSON.
+json modeJson(const ModesReport& r, const ModeInfo& m) {
+  json mj = {{"number", m.number},
+             {"stable", m.stable},
+             {"rigid_body", m.rigid_body},
+             {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
+             {"omega_squared_rad2_per_s2", m.omega2},
+             {"modal_mass_kg", m.modal_mass_kg},
+             {"peak_point", m.peak_point},
+             {"effective_mass_x_kg", m.effective_mass_x_kg},
+             {"effective_mass_y_kg", m.effective_mass_y_kg},
+             {"geometric_stiffness_share", m.geometric_stiffness_share},
+             {"dominant_link_kinetic", m.dominant_link_kinetic},
+             {"dominant_link_strain", m.dominant_link_strain},
+             {"kinetic_energy_share", shares(m.kinetic)},
+             {"strain_energy_share", shares(m.strain)},
+             {"kinetic_energy_share_by_link", shares(m.kinetic_by_link)},
+             {"strain_energy_share_by_link", shares(m.strain_by_link)}};
+  if (!m.stable) mj["growth_rate_per_s"] = std::sqrt(-m.omega2);
+  if (r.damped && m.stable && !m.rigid_body) {
+    mj["damping_ratio"] = m.damping_ratio;
+    mj["damped_natural_frequency_hz"] = m.damped_natural_hz;
+  }
+  json shape = json::array();
+  for (const auto& p : m.shape) {
+    json pj = {{"point", p.point}, {"ux", p.ux}, {"uy", p.uy}};
+    if (p.has_rotation) pj["rz"] = p.rz;
+    shape.push_back(pj);
+  }
+  mj["shape"] = shape;
+  if (!m.at_points.empty()) {
+    json at = json::array();
+    for (const auto& p : m.at_points) at.push_back({{"point", p.point}, {"ux_m", p.ux}, {"uy_m", p.uy}});
+    mj["at_points"] = at;
+  }
+  return mj;
+}
+
 }  // namespace
 
 json modesToJson(const ModesReport& r) {
@@ -56,38 +94,9 @@ json modesToJson(const ModesReport& r) {
                       {"closures", closures},
                       {"points", points}};
   json modes = json::array();
-  for (const auto& m : r.modes) {
-    json mj = {{"number", m.number},
-               {"stable", m.stable},
-               {"rigid_body", m.rigid_body},
-               {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
-               {"omega_squared_rad2_per_s2", m.omega2},
-               {"modal_mass_kg", m.modal_mass_kg},
-               {"peak_point", m.peak_point},
-               {"effective_mass_x_kg", m.effective_mass_x_kg},
-               {"effective_mass_y_kg", m.effective_mass_y_kg},
-               {"geometric_stiffness_share", m.geometric_stiffness_share},
-               {"dominant_link_kinetic", m.dominant_link_kinetic},
-               {"dominant_link_strain", m.dominant_link_strain},
-               {"kinetic_energy_share", shares(m.kinetic)},
-               {"strain_energy_share", shares(m.strain)},
-               {"kinetic_energy_share_by_link", shares(m.kinetic_by_link)},
-               {"strain_energy_share_by_link", shares(m.strain_by_link)}};
-    if (!m.stable) mj["growth_rate_per_s"] = std::sqrt(-m.omega2);
-    json shape = json::array();
-    for (const auto& p : m.shape) {
-      json pj = {{"point", p.point}, {"ux", p.ux}, {"uy", p.uy}};
-      if (p.has_rotation) pj["rz"] = p.rz;
-      shape.push_back(pj);
-    }
-    mj["shape"] = shape;
-    if (!m.at_points.empty()) {
-      json at = json::array();
-      for (const auto& p : m.at_points) at.push_back({{"point", p.point}, {"ux_m", p.ux}, {"uy_m", p.uy}});
-      mj["at_points"] = at;
-    }
-    modes.push_back(mj);
-  }
+  for (const auto& m : r.modes) modes.push_back(modeJson(r, m));
+  j["damping"] = r.damped ? json{{"model", r.damping_model}, {"basis_modes", r.damping_basis_modes}, {"exact", r.damping_exact}}
+                          : json{{"model", "none"}};
   j["modes"] = modes;
   j["checks"] = {{"eigen_residual", r.eigen_residual},
                  {"orthogonality_error", r.orthogonality_error},

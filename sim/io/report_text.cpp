@@ -57,8 +57,14 @@ std::string formatModesText(const ModesReport& r) {
         "  geometric_%: share of the modal stiffness from preload (gravity, loads, closure forces)\n"
         "  m_eff: effective mass for base translation (what a shaker at the base sees)\n"
         "  peak: the named point that moves most\n";
-  os << strf("  %4s %13s  %-20s %-20s %9s %10s %10s  %s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
-            "geometric_%", "m_eff_x_kg", "m_eff_y_kg", "peak");
+  if (r.damped)
+    os << "  zeta_%: damping ratio under the scene's damping (" << r.damping_model << "), from the damped\n"
+       << strf("          eigenproblem over %d real modes%s\n", r.damping_basis_modes,
+               r.damping_exact ? " (every mode: exact)" : " (the lowest: a projection)");
+  else
+    os << "  damping: none in the scene (give it `damping:` to see each mode's ratio; frf and rom assume 1 % modal)\n";
+  os << strf("  %4s %13s  %-20s %-20s %9s %10s %10s  %s%s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
+            "geometric_%", "m_eff_x_kg", "m_eff_y_kg", r.damped ? strf("%8s  ", "zeta_%").c_str() : "", "peak");
   for (const auto& m : r.modes) {
     const std::string f = m.rigid_body ? strf("%13s", "0 (rigid)")
                           : m.stable   ? strf("%13.4f", m.frequency_hz)
@@ -67,8 +73,10 @@ std::string formatModesText(const ModesReport& r) {
     const std::string s = m.dominant_link_strain.empty()
                               ? std::string("-")
                               : strf("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain_by_link, m.dominant_link_strain));
-    os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
-              100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, m.peak_point.c_str());
+    const std::string zeta = !r.damped ? "" : m.rigid_body || !m.stable ? strf("%8s  ", "-") : strf("%8.3f  ", 100 * m.damping_ratio);
+    os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s%s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
+              100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, zeta.c_str(),
+              m.peak_point.c_str());
     if (!m.stable)
       os << strf("       unstable: omega^2 = %.4g rad^2/s^2, growth rate %.4g 1/s\n", m.omega2, std::sqrt(-m.omega2));
   }

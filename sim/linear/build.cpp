@@ -7,6 +7,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/model/stations.hpp"
+#include "sim/modes/damping.hpp"
 
 namespace mmv {
 namespace {
@@ -16,14 +17,8 @@ Eigen::MatrixXd dampingMatrix(const LinearModel& lm, const Model& model, const s
                               const DampingSpec& damping) {
   const Eigen::MatrixXd& Z = lm.Z;
   if (damping.kind == DampingSpec::Kind::Rayleigh) return damping.alpha * lm.Mz + damping.beta * lm.Kz;
-  if (damping.kind == DampingSpec::Kind::HingeViscous) {
-    Eigen::VectorXd c(dofs.size());
-    for (std::size_t a = 0; a < dofs.size(); ++a) {
-      const Coordinate& co = model.getCoordinates()[dofs[a]];
-      c[a] = co.kind == CoordinateKind::Hinge ? damping.hinge_beta * co.stiffness : 0.0;
-    }
-    return Z.transpose() * c.asDiagonal() * Z;
-  }
+  if (damping.kind == DampingSpec::Kind::HingeViscous)
+    return Z.transpose() * hingeDampers(model, dofs, damping.hinge_beta).asDiagonal() * Z;
   const ModalSolution modes = solveModes(lm.Mz, lm.Kz);
   const Eigen::Index nz = Z.cols();
   Eigen::VectorXd c(nz);
@@ -155,6 +150,7 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   lm.solved = solveScene(scene, {}, kLinearModelModes);
   lm.inputs = inputs;
   lm.outputs = outputs;
+  lm.damping = damping;
   const Model& model = *lm.solved.model;
   const LinearizedModel& lin = lm.solved.linearized;
   const std::vector<int>& dofs = lin.dofs;

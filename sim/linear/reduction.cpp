@@ -8,6 +8,7 @@
 #include "sim/core/linalg.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/linear/state_modes.hpp"
+#include "sim/core/text.hpp"
 #include "sim/linear/state_space.hpp"
 
 namespace mmv {
@@ -83,7 +84,17 @@ StateSpace project(const StateSpace& full, const StateEigen& sm, const std::vect
   r.input_units = full.input_units;
   r.output_names = full.output_names;
   r.output_units = full.output_units;
-  for (int k = 0; k < nr; ++k) r.state_names.push_back("modal" + std::to_string(k + 1));
+  // Each state names its mode and the mode's |lambda| / 2 pi: a pair's real and
+  // imaginary parts, a real (overdamped) root alone.
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const std::string hz = strf("%.4gHz", kept[k].magnitude / (2 * M_PI));
+    if (kept[k].pair) {
+      r.state_names.push_back(strf("mode%zu_", k + 1) + hz + "_re");
+      r.state_names.push_back(strf("mode%zu_", k + 1) + hz + "_im");
+    } else {
+      r.state_names.push_back(strf("root%zu_", k + 1) + hz);
+    }
+  }
   return r;
 }
 

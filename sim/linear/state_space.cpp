@@ -440,7 +440,7 @@ PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& 
   for (std::size_t k = 0; k < f.size(); ++k)
     grid.push_back((responses.empty() ? h.response(2 * M_PI * f[k]) : responses[k]).cwiseAbs());
   const Eigen::Index no = grid.front().rows(), ni = grid.front().cols();
-  PeakTable t{Eigen::MatrixXd(no, ni), Eigen::MatrixXd(no, ni)};
+  PeakTable t{Eigen::MatrixXd(no, ni), Eigen::MatrixXd(no, ni), Eigen::MatrixXd(no, ni)};
   // Each pair's search is sequential; the pairs are spread over the cores.
   tbb::parallel_for(Eigen::Index(0), no * ni, [&](Eigen::Index pair) {
     const Eigen::Index o = pair % no, i = pair / no;
@@ -455,6 +455,26 @@ PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& 
     if (grid[best](o, i) > peak) fpeak = f[best], peak = grid[best](o, i);
     t.hz(o, i) = fpeak;
     t.magnitude(o, i) = peak;
+    // Half-power points: the first grid point on each side below peak / sqrt(2), then
+    // bisection between it and its neighbour towards the peak, to 1e-9 of the frequency.
+    const double half = peak / std::sqrt(2.0);
+    auto crossing = [&](int dir) -> double {
+      const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(f.size());
+      // The grid point next to the refined peak on this side, then outwards to half power.
+      std::ptrdiff_t k = std::upper_bound(f.begin(), f.end(), fpeak) - f.begin();
+      if (dir < 0) k = std::lower_bound(f.begin(), f.end(), fpeak) - f.begin() - 1;
+      const std::ptrdiff_t first = k;
+      while (k >= 0 && k < n && grid[k](o, i) >= half) k += dir;
+      if (k < 0 || k >= n) return -1.0;  // not inside the grid
+      double below = f[k], above = k == first ? fpeak : f[k - dir];
+      for (int it = 0; it < 200 && std::abs(above - below) > 1e-9 * above; ++it) {
+        const double mid = 0.5 * (above + below);
+        (mag(mid) >= half ? above : below) = mid;
+      }
+      return 0.5 * (above + below);
+    };
+    const double f1 = crossing(-1), f2 = crossing(+1);
+    t.half_power_damping(o, i) = f1 > 0 && f2 > 0 && fpeak > 0 ? (f2 - f1) / (2 * fpeak) : -1.0;
   });
   return t;
 }

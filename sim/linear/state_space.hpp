@@ -119,6 +119,7 @@ struct LinearModel {
   SecondOrderResponse second_order;  ///< the same model, for fast full-model FRFs.
   std::vector<InputSpec> inputs;
   std::vector<OutputSpec> outputs;
+  DampingSpec damping;  ///< what Cz was built from.
 };
 
 /// Builds the linear model. Throws SceneError for an input or output naming an
@@ -211,6 +212,12 @@ std::vector<double> resolveResonances(const std::vector<double>& grid, const std
 /// search costs one response per step (about 12 on a resonance), the pairs in parallel.
 struct PeakTable {
   Eigen::MatrixXd hz, magnitude;
+  /// The peak's half-power damping (f2 - f1) / (2 f_peak), f1 and f2 where |H| falls to
+  /// peak / sqrt(2) on either side (found on the grid, then by bisection on the
+  /// response); zeta to O(zeta^3) for a lightly damped, well-separated mode. -1 when
+  /// either point is outside the grid (a peak at its edge, or a mode too heavily
+  /// damped or too close to another to fall to half power between them).
+  Eigen::MatrixXd half_power_damping;
 };
 /// `grid`: h's responses at f (fullResponses of 2 pi f), or empty to compute them.
 PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f,

@@ -1,4 +1,5 @@
 #include "sim/modes/system_modes.hpp"
+#include "sim/modes/damping.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -287,7 +288,9 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.scene_name = scene.name;
   rep.scene_source = scene.source;
   rep.gravity = scene.gravity;
-  const SolvedScene s = solveScene(scene, options.equilibrium, options.max_modes);
+  const int solved_modes =
+      options.damping && options.max_modes > 0 ? std::max(2 * options.max_modes, options.max_modes + 20) : options.max_modes;
+  const SolvedScene s = solveScene(scene, options.equilibrium, solved_modes);
   rep.seconds_build = s.seconds_build;
   rep.seconds_equilibrium = s.seconds_equilibrium;
   rep.seconds_linearize = s.seconds_linearize;
@@ -318,6 +321,14 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   const int n = static_cast<int>(s.modes.omega2.size());
   const int count = options.max_modes > 0 ? std::min(options.max_modes, n) : n;
   checkReportedModes(s, count, rep);
+  ModalDamping damping;
+  if (options.damping) {
+    damping = modalDamping(model, s.linearized, s.modes, *options.damping, count);
+    rep.damped = true;
+    rep.damping_model = describeDamping(*options.damping);
+    rep.damping_basis_modes = damping.basis_modes;
+    rep.damping_exact = damping.exact;
+  }
   for (int i = 0; i < count; ++i) {
     const Eigen::VectorXd phi = s.modes.shapes.col(i);
     ModeInfo m;
@@ -327,6 +338,10 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     m.rigid_body = s.modes.isRigidBody(i);
     m.frequency_hz = s.modes.frequencyHz(i);
     m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.linearized.K_geometric * phi) / m.omega2;
+    if (rep.damped) {
+      m.damping_ratio = damping.ratio[i];
+      m.damped_natural_hz = damping.natural_hz[i];
+    }
     describeEnergies(model, dofs, kin, phi, m);
     describeShape(model, kin, phi, options.with_shapes, m);
     for (std::size_t p = 0; p < at_points.size(); ++p) {

@@ -18,6 +18,7 @@
 ///  - the shape at named points (translations, and rotations where meaningful).
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,9 @@ struct ModeInfo {
   std::string peak_point;
   double effective_mass_x_kg = 0, effective_mass_y_kg = 0;
   double geometric_stiffness_share = 0;
+  /// Under the scene's damping (ModesReport::damped): the ratio to critical (1:
+  /// overdamped) and |lambda| / 2 pi of the damped mode (sim/modes/damping.hpp).
+  double damping_ratio = 0, damped_natural_hz = 0;
   std::vector<PartShare> kinetic, strain;  ///< per part, sorted, largest first.
   std::vector<PartShare> kinetic_by_link, strain_by_link;  ///< per carrying link, sorted.
   std::string dominant_link_kinetic, dominant_link_strain;  ///< first of the *_by_link lists.
@@ -96,6 +100,12 @@ struct ModesReport {
   std::vector<ClosureReport> closures;
   std::vector<PointReport> points;
   std::vector<ModeInfo> modes;
+  /// The scene's damping (ModesOptions::damping): its description, and the real modes
+  /// the damped eigenproblem was solved over (all of them: exact).
+  bool damped = false;
+  std::string damping_model = "none";
+  int damping_basis_modes = 0;
+  bool damping_exact = false;
   /// Over the modes reported: max relative residual ||K v - w^2 M v|| / (||K v|| + w^2 ||M v||)
   /// and max |V^T M V - I|.
   double eigen_residual = 0, orthogonality_error = 0, stiffness_asymmetry = 0;
@@ -118,6 +128,10 @@ struct ModesOptions {
   /// checks them first; here an unknown one is a SceneError).
   std::vector<std::string> points;
   EquilibriumOptions equilibrium;
+  /// The damping each mode's ratio is computed under (none: undamped, no ratios). On a
+  /// model large enough for the partial eigen solver, twice the modes reported (at
+  /// least 20 more) are solved for, the basis of the damped eigenproblem.
+  std::optional<DampingSpec> damping;
 };
 
 /// Runs the analysis. Throws NumericalError if the equilibrium does not converge or

@@ -1,0 +1,96 @@
+#include "sim/modes/damping.hpp"
+
+#include <cmath>
+#include <complex>
+
+#include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
+
+namespace mmv {
+
+Eigen::VectorXd hingeDampers(const Model& model, const std::vector<int>& dofs, double hinge_beta_s) {
+  Eigen::VectorXd c(dofs.size());
+  for (std::size_t a = 0; a < dofs.size(); ++a) {
+    const Coordinate& co = model.getCoordinates()[dofs[a]];
+    c[a] = co.kind == CoordinateKind::Hinge ? hinge_beta_s * co.stiffness : 0.0;
+  }
+  return c;
+}
+
+std::string describeDamping(const DampingSpec& d) {
+  switch (d.kind) {
+    case DampingSpec::Kind::Modal: return strf("modal, %.3g %% of critical in every mode", 100 * d.modal_ratio);
+    case DampingSpec::Kind::Rayleigh: return strf("Rayleigh, C = %.4g/s * M + %.4g s * K", d.alpha, d.beta);
+    case DampingSpec::Kind::HingeViscous: return strf("hinge dampers c = %.4g s * k on every bending hinge", d.hinge_beta);
+  }
+  return "";
+}
+
+namespace {
+
+/// Phi^T C Phi over the modes held, for the damping model.
+Eigen::MatrixXd projectedDamping(const Model& model, const LinearizedModel& lin, const ModalSolution& modes,
+                                 const DampingSpec& d) {
+  const Eigen::MatrixXd& P = modes.shapes;
+  const Eigen::Index m = P.cols();
+  switch (d.kind) {
+    case DampingSpec::Kind::Modal: {
+      Eigen::VectorXd c(m);
+      for (Eigen::Index k = 0; k < m; ++k) c[k] = 2 * d.modal_ratio * std::sqrt(std::max(modes.omega2[k], 0.0));
+      return c.asDiagonal();
+    }
+    case DampingSpec::Kind::Rayleigh: {
+      Eigen::MatrixXd c = Eigen::MatrixXd::Identity(m, m) * d.alpha;
+      c.diagonal() += d.beta * modes.omega2;
+      return c;
+    }
+    case DampingSpec::Kind::HingeViscous:
+      return P.transpose() * hingeDampers(model, lin.dofs, d.hinge_beta).asDiagonal() * P;
+  }
+  return Eigen::MatrixXd::Zero(m, m);
+}
+
+}  // namespace
+
+ModalDamping modalDamping(const Model& model, const LinearizedModel& lin, const ModalSolution& modes,
+                          const DampingSpec& damping, int count) {
+  const Eigen::Index m = modes.shapes.cols();
+  MMV_DEMAND(count >= 0 && count <= m);
+  ModalDamping out;
+  out.basis_modes = static_cast<int>(m);
+  out.exact = m == static_cast<Eigen::Index>(lin.Z.cols() > 0 ? lin.Z.cols() : lin.dofs.size());
+  if (m == 0) return out;
+  // First-order form of lambda^2 y + lambda Ct y + Omega^2 y = 0.
+  const Eigen::MatrixXd Ct = projectedDamping(model, lin, modes, damping);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * m, 2 * m);
+  A.topRightCorner(m, m).setIdentity();
+  A.bottomLeftCorner(m, m) = -modes.omega2.asDiagonal().toDenseMatrix();
+  A.bottomRightCorner(m, m) = -Ct;
+  Eigen::EigenSolver<Eigen::MatrixXd> es(A, true);
+  if (es.info() != Eigen::Success) throw NumericalError("damped modes: the eigen solution of the damped model failed");
+  const Eigen::VectorXcd lambda = es.eigenvalues();
+  const Eigen::MatrixXcd V = es.eigenvectors();
+  for (int k = 0; k < count; ++k) {
+    if (modes.isRigidBody(k) || !modes.isStable(k)) {
+      out.ratio.push_back(0.0);
+      out.natural_hz.push_back(modes.frequencyHz(k));
+      continue;
+    }
+    Eigen::Index best = -1;
+    double best_share = -1;
+    for (Eigen::Index j = 0; j < lambda.size(); ++j) {
+      if (lambda[j].imag() < 0) continue;  // one of each pair
+      const Eigen::VectorXcd y = V.col(j).head(m);
+      const double share = std::norm(y[k]) / std::max(y.squaredNorm(), 1e-300);
+      if (share > best_share) best_share = share, best = j;
+    }
+    MMV_DEMAND(best >= 0);
+    const std::complex<double> l = lambda[best];
+    const double mag = std::abs(l);
+    out.natural_hz.push_back(mag / (2 * M_PI));
+    out.ratio.push_back(l.imag() > 0 && mag > 0 ? std::min(1.0, -l.real() / mag) : 1.0);
+  }
+  return out;
+}
+
+}  // namespace mmv
