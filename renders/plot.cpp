@@ -22,6 +22,16 @@ void text(cv::Mat& img, const std::string& s, cv::Point at, double scale = 0.45,
   cv::putText(img, s, at, kFont, scale, colour, thickness, cv::LINE_AA);
 }
 
+/// Centred text, its scale reduced until it fits `max_width` pixels (a long title is
+/// smaller, never cut at the image's edge), and kept inside the image.
+void fittedText(cv::Mat& img, const std::string& s, cv::Point at, double scale, int max_width) {
+  int base = 0;
+  while (scale > 0.3 && cv::getTextSize(s, kFont, scale, 1, &base).width > max_width) scale *= 0.93;
+  const int w = cv::getTextSize(s, kFont, scale, 1, &base).width;
+  at.x = std::clamp(at.x, 5 + w / 2, std::max(5 + w / 2, img.cols - 5 - w / 2));
+  text(img, s, at, scale, kBlack, true);
+}
+
 /// Viridis-like colour for t in [0, 1] (BGR), from five anchors.
 cv::Scalar colourFor(double t) {
   static const double anchors[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
@@ -43,8 +53,10 @@ void save(const std::string& path, const cv::Mat& img) {
   if (!ok) throw std::runtime_error(path + ": cannot write PNG");
 }
 
-std::string fmt(double v, const char* f = "%.3g") {
-  if (std::abs(v) < 1e-12) v = 0.0;  // no "-0" tick labels
+/// `v` formatted; |v| below `zero_below` prints as 0 (a linear axis' tick that is zero
+/// up to round-off, never "-0" or "1e-17"; pass a fraction of the tick step).
+std::string fmt(double v, const char* f = "%.3g", double zero_below = 0.0) {
+  if (std::abs(v) < zero_below || v == 0.0) v = 0.0;
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
@@ -70,9 +82,9 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
     label_w = std::max(label_w, cv::getTextSize(l, kFont, 0.42, 1, &base).width);
   }
   const int cell = 56, left = 50 + label_w, top = 70, bar = 90;
-  const int width = left + cols * cell + bar + 30, height = top + rows * cell + 80;
+  const int width = left + cols * cell + bar + 30, height = top + rows * cell + 95;
   cv::Mat img(height, width, CV_8UC3, kWhite);
-  text(img, title, {width / 2, 30}, 0.6, kBlack, true, 1);
+  fittedText(img, title, {width / 2, 30}, 0.6, width - 10);
   for (int i = 0; i < rows; ++i)
     for (int j = 0; j < cols; ++j) {
       const double v = values(i, j), t = (v - vmin) / (vmax - vmin);
@@ -86,9 +98,14 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
     const int w = cv::getTextSize(row_labels[i], kFont, 0.42, 1, &base).width;
     text(img, row_labels[i], {left - 8 - w, top + i * cell + cell / 2 + 5}, 0.42);
   }
-  for (int j = 0; j < cols && j < static_cast<int>(col_labels.size()); ++j)
-    text(img, col_labels[j], {left + j * cell + cell / 2, top + rows * cell + 20}, 0.42, kBlack, true);
-  text(img, col_axis, {left + cols * cell / 2, top + rows * cell + 48}, 0.5, kBlack, true);
+  // A column label "M3 4.12 Hz" on two lines ("M3" over "4.12 Hz") to fit its cell.
+  for (int j = 0; j < cols && j < static_cast<int>(col_labels.size()); ++j) {
+    const std::string& l = col_labels[j];
+    const auto sp = l.find(' ');
+    text(img, l.substr(0, sp), {left + j * cell + cell / 2, top + rows * cell + 20}, 0.42, kBlack, true);
+    if (sp != std::string::npos) text(img, l.substr(sp + 1), {left + j * cell + cell / 2, top + rows * cell + 38}, 0.36, kBlack, true);
+  }
+  text(img, col_axis, {left + cols * cell / 2, top + rows * cell + 62}, 0.5, kBlack, true);
   // The row axis label, written vertically by rotating a strip.
   {
     cv::Mat strip(30, std::max(rows * cell, 40), CV_8UC3, kWhite);
@@ -111,7 +128,8 @@ namespace {
 
 /// One x-y panel inside `img` (plot area `area`, labels outside it).
 void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& series, const std::string& title,
-               const std::string& x_label, const std::string& y_label, bool log_x, bool log_y, bool legend) {
+               const std::string& x_label, const std::string& y_label, bool log_x, bool log_y, bool legend,
+               const std::vector<double>& markers = {}, bool marker_labels = false) {
   const int left = area.x, top = area.y, pw = area.width, ph = area.height;
   auto tx = [&](double x) { return log_x ? std::log10(x) : x; };
   auto ty = [&](double y) { return log_y ? std::log10(y) : y; };
@@ -133,9 +151,15 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
   const double pad = 0.05 * (y1 - y0);
   y0 -= pad;
   y1 += pad;
+  // Points drawn as markers would be cut by the frame at the ends of the x range.
+  if (std::any_of(series.begin(), series.end(), [](const Series& s) { return s.markers_only || s.x.size() < 80; })) {
+    const double xpad = 0.03 * (x1 - x0);
+    x0 -= xpad;
+    x1 += xpad;
+  }
   auto px = [&](double x) { return left + static_cast<int>((tx(x) - x0) / (x1 - x0) * pw); };
   auto py = [&](double y) { return top + ph - static_cast<int>((ty(y) - y0) / (y1 - y0) * ph); };
-  text(img, title, {left + pw / 2, top - 15}, 0.6, kBlack, true);
+  fittedText(img, title, {left + pw / 2, top - 15}, 0.6, img.cols - 10);
   auto yTick = [&](const std::string& label, int y) {  // right-aligned against the axis
     int base = 0;
     const int w = cv::getTextSize(label, kFont, 0.42, 1, &base).width;
@@ -162,7 +186,7 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
     for (double x = std::ceil(x0 / sx) * sx; x <= x1 + 1e-9 * sx; x += sx) {
       const int xx = left + static_cast<int>((x - x0) / (x1 - x0) * pw);
       cv::line(img, {xx, top}, {xx, top + ph}, kGrey);
-      text(img, fmt(x, "%g"), {xx, top + ph + 20}, 0.42, kBlack, true);
+      text(img, fmt(x, "%g", 1e-6 * sx), {xx, top + ph + 20}, 0.42, kBlack, true);
     }
   }
   if (log_y) {
@@ -176,8 +200,24 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
     for (double y = std::ceil(y0 / sy) * sy; y <= y1 + 1e-9 * sy; y += sy) {
       const int yy = top + ph - static_cast<int>((y - y0) / (y1 - y0) * ph);
       cv::line(img, {left, yy}, {left + pw, yy}, kGrey);
-      yTick(fmt(y, "%g"), yy);
+      yTick(fmt(y, "%g", 1e-6 * sy), yy);
     }
+  }
+  // Mode markers: a thin dotted line at each frequency inside the range, numbered above.
+  int last_label_x[3] = {-1000, -1000, -1000};
+  for (std::size_t k = 0; k < markers.size(); ++k) {
+    const double m = markers[k];
+    if (!(m > 0 || !log_x) || tx(m) < x0 || tx(m) > x1) continue;
+    const int x = px(m);
+    for (int y = top; y < top + ph; y += 6) cv::line(img, {x, y}, {x, std::min(y + 3, top + ph)}, cv::Scalar(160, 110, 60), 1);
+    if (!marker_labels) continue;
+    // Three rows of numbers; a number that would touch its row's last one moves down.
+    for (int row = 0; row < 3; ++row)
+      if (x - last_label_x[row] >= 16) {
+        text(img, std::to_string(k + 1), {x, top + 12 + 12 * row}, 0.36, cv::Scalar(160, 110, 60), true);
+        last_label_x[row] = x;
+        break;
+      }
   }
   cv::rectangle(img, area, kBlack, 1);
   if (!x_label.empty()) text(img, x_label, {left + pw / 2, top + ph + 45}, 0.5, kBlack, true);
@@ -194,23 +234,31 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
     // neighbouring series stay distinguishable; more: the sequential map.
     static const cv::Scalar kQualitative[8] = {{0, 0, 0},       {0, 159, 230}, {233, 180, 86}, {115, 158, 0},
                                                {66, 228, 240},  {178, 114, 0}, {0, 94, 213},   {167, 121, 204}};
-    const cv::Scalar colour = series.size() <= 8 ? kQualitative[k]
-                              : colourFor(0.85 * double(k) / (series.size() - 1));
+    // A series with a colour index keeps its colour from figure to figure (an
+    // integrator is the same colour in every trade plot).
+    const cv::Scalar colour = s.colour_index >= 0  ? kQualitative[s.colour_index % 8]
+                              : series.size() <= 8 ? kQualitative[k]
+                                                   : colourFor(0.85 * double(k) / (series.size() - 1));
+    // Dashes of 8 px with 6 px gaps along the whole polyline (a pattern restarted per
+    // segment would draw a dense curve solid): `phase` is the distance into the pattern.
+    double phase = 0;
     for (std::size_t i = 1; i < s.x.size() && !s.markers_only; ++i) {
       if (!usable(s.x[i - 1], s.y[i - 1]) || !usable(s.x[i], s.y[i])) continue;
-      const cv::Point a(px(s.x[i - 1]), py(s.y[i - 1])), b(px(s.x[i]), py(s.y[i]));
+      const cv::Point2d a(px(s.x[i - 1]), py(s.y[i - 1])), b(px(s.x[i]), py(s.y[i]));
       if (!s.dashed) {
         cv::line(img, a, b, colour, 2, cv::LINE_AA);
         continue;
       }
-      // Dashes of 8 px with 6 px gaps along the segment.
       const double len = std::hypot(b.x - a.x, b.y - a.y);
-      for (double d = 0; d < len; d += 14) {
-        const double e = std::min(len, d + 8);
-        const cv::Point p0(a.x + (b.x - a.x) * d / len, a.y + (b.y - a.y) * d / len);
-        const cv::Point p1(a.x + (b.x - a.x) * e / len, a.y + (b.y - a.y) * e / len);
-        cv::line(img, p0, p1, colour, 2, cv::LINE_AA);
+      for (double d = 0; d < len;) {
+        const double in = std::fmod(phase + d, 14.0), step = std::min(len - d, in < 8 ? 8 - in : 14 - in);
+        if (in < 8) {
+          const cv::Point2d p0 = a + (b - a) * (d / len), p1 = a + (b - a) * ((d + step) / len);
+          cv::line(img, p0, p1, colour, 2, cv::LINE_AA);
+        }
+        d += std::max(step, 1e-9);
       }
+      phase = std::fmod(phase + len, 14.0);
     }
     if (s.x.size() < 80 || s.markers_only)
       for (std::size_t i = 0; i < s.x.size(); ++i)
@@ -232,17 +280,31 @@ void writeLinePlotPng(const std::string& path, const std::vector<Series>& series
   save(path, img);
 }
 
+std::vector<double> unwrapPhaseDeg(std::vector<double> phase) {
+  double shift = 0;
+  for (std::size_t k = 1; k < phase.size(); ++k) {
+    const double raw = phase[k] + shift, step = raw - phase[k - 1];
+    shift -= 360.0 * std::round(step / 360.0);
+    phase[k] += shift;
+  }
+  // The unwrapped curve starts in (-180, 180]: its first point as measured.
+  return phase;
+}
+
 void writeBodePng(const std::string& path, const std::vector<BodeTrace>& traces, const std::string& title,
-                  const std::string& x_label) {
+                  const std::string& x_label, const std::vector<double>& markers) {
   std::vector<Series> mag, phase;
   for (const auto& t : traces) {
     mag.push_back({t.label, t.frequency, t.magnitude_db, t.dashed});
-    phase.push_back({t.label, t.frequency, t.phase_deg, t.dashed});
+    phase.push_back({t.label, t.frequency, unwrapPhaseDeg(t.phase_deg), t.dashed});
   }
   const int width = 1000, height = 800, left = 90, right = 260;
   cv::Mat img(height, width, CV_8UC3, kWhite);
-  drawPanel(img, cv::Rect(left, 50, width - left - right, 400), mag, title, "", "magnitude (dB)", true, false, true);
-  drawPanel(img, cv::Rect(left, 490, width - left - right, 230), phase, "", x_label, "phase (deg)", true, false, false);
+  drawPanel(img, cv::Rect(left, 50, width - left - right, 400), mag, title, "", "magnitude (dB)", true, false, true,
+            markers, true);
+  drawPanel(img, cv::Rect(left, 490, width - left - right, 230), phase, "", x_label, "phase (deg, unwrapped)", true, false,
+            false, markers, false);
+  if (!markers.empty()) text(img, "dotted: model modes 1, 2, ...", {width - right + 15, 50 + 22 * static_cast<int>(traces.size()) + 20}, 0.4);
   save(path, img);
 }
 

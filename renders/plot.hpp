@@ -21,6 +21,7 @@ struct Series {
   std::vector<double> x, y;  ///< equal lengths; non-finite points break the line.
   bool dashed = false;
   bool markers_only = false;  ///< points without connecting lines.
+  int colour_index = -1;      ///< >= 0: a fixed colour of the palette (the same series the same colour in every figure).
 };
 
 /// Line plot of several series with axes, ticks, labels and a legend.
@@ -35,9 +36,13 @@ struct BodeTrace {
   bool dashed = false;
 };
 
-/// Bode plot: magnitude (dB) above phase (deg), both over log frequency, with a
-/// legend.
+/// Bode plot: magnitude (dB) above phase (deg, unwrapped as MATLAB's bode draws it:
+/// no +-360 deg jumps), both over log frequency, with a legend; `markers` (same unit as
+/// the frequencies): the model's modes, dotted lines numbered from 1.
 void writeBodePng(const std::string& path, const std::vector<BodeTrace>& traces, const std::string& title,
-                  const std::string& x_label);
+                  const std::string& x_label, const std::vector<double>& markers = {});
+
+/// `phase` (deg) with the +-360 deg jumps between neighbouring points removed.
+std::vector<double> unwrapPhaseDeg(std::vector<double> phase);
 
 }  // namespace mmv::render

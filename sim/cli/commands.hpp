@@ -144,6 +144,19 @@ struct CheckArgs : SceneArgs {
   bool force = false;
 };
 
+struct CorrelateArgs : SceneArgs {
+  std::string measured;            ///< the measured UFF file.
+  bool json = false;
+  double pair_distance = 0.05;     ///< m: farther nodes are not paired.
+  std::vector<std::string> pairs;  ///< NODE=POINT, by the user.
+  int modes = 20;                  ///< model modes compared.
+  double mac_threshold = 0.7;
+  double damping_ratio = 0.01;
+  bool damping_given = false;      ///< --damping overrides the scene's damping.
+  std::string out;
+  bool force = false;
+};
+
 struct DesignSweepArgs {
   std::string spec;    ///< the sweep spec (YAML).
   std::string out;     ///< the results directory (resumed when it holds this sweep).
@@ -164,6 +177,7 @@ void renderHistory(const RenderArgs& args, const std::string& ext);
 
 int runModesCommand(const ModesArgs& args);
 int runCheckCommand(const CheckArgs& args);
+int runCorrelateCommand(const CorrelateArgs& args);
 int runDesignSweepCommand(const DesignSweepArgs& args);
 int runSweepMergeCommand(const SweepMergeArgs& args);
 /// The figures of a sweep directory's sweep.csv (sim/cli/sweep_plots.cpp); their paths.

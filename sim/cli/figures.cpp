@@ -59,8 +59,9 @@ void heatmap(const std::string& path, const Eigen::MatrixXd& values, const std::
   api().heatmap(path, values, row_labels, col_labels, title, row_axis, col_axis, vmin, vmax);
 }
 
-void bode(const std::string& path, const std::vector<render::BodeTrace>& traces, const std::string& title, const std::string& x_label) {
-  api().bode(path, traces, title, x_label);
+void bode(const std::string& path, const std::vector<render::BodeTrace>& traces, const std::string& title, const std::string& x_label,
+          const std::vector<double>& markers) {
+  api().bode(path, traces, title, x_label, markers);
 }
 
 void framePng(const std::string& path, const DrawList& list, const Camera& camera, const FrameSize& size) {

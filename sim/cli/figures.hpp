@@ -26,7 +26,8 @@ void linePlot(const std::string& path, const std::vector<render::Series>& series
 void heatmap(const std::string& path, const Eigen::MatrixXd& values, const std::vector<std::string>& row_labels,
              const std::vector<std::string>& col_labels, const std::string& title, const std::string& row_axis,
              const std::string& col_axis, double vmin = 0.0, double vmax = 1.0);
-void bode(const std::string& path, const std::vector<render::BodeTrace>& traces, const std::string& title, const std::string& x_label);
+void bode(const std::string& path, const std::vector<render::BodeTrace>& traces, const std::string& title, const std::string& x_label,
+          const std::vector<double>& markers = {});
 
 struct FrameSize {
   int width = 1280, height = 720, supersample = 3;
@@ -47,11 +48,12 @@ struct Api {
                     const std::string&, bool, bool);
   void (*heatmap)(const std::string&, const Eigen::MatrixXd&, const std::vector<std::string>&, const std::vector<std::string>&,
                   const std::string&, const std::string&, const std::string&, double, double);
-  void (*bode)(const std::string&, const std::vector<render::BodeTrace>&, const std::string&, const std::string&);
+  void (*bode)(const std::string&, const std::vector<render::BodeTrace>&, const std::string&, const std::string&,
+               const std::vector<double>&);
   void (*frame_png)(const std::string&, const DrawList&, const Camera&, const FrameSize&);
   void (*contact_sheet_png)(const std::string&, const std::vector<DrawList>&, const std::vector<Camera>&, const FrameSize&, int);
   int (*render_command)(const cli::RenderArgs&);
 };
-constexpr int kApiVersion = 1;
+constexpr int kApiVersion = 2;
 
 }  // namespace mmv::figures

@@ -260,6 +260,30 @@ CLI::App* addCheckCommand(CLI::App& app, CheckArgs& ck) {
   return c;
 }
 
+/// `mmvlab correlate` and its options.
+CLI::App* addCorrelateCommand(CLI::App& app, CorrelateArgs& co) {
+  CLI::App* c = app.add_subcommand(
+      "correlate", "A measured modal test (UFF FRFs and mode shapes) against the model: pairing, MAC, FRAC, frequency errors");
+  addSceneOptions(c, co);
+  c->add_option("--measured", co.measured, "The measured UFF file (datasets 15/2411 nodes, 55 modes, 58 functions, 164 units)")
+      ->required();
+  c->add_flag("--json", co.json, "Print JSON instead of tables");
+  c->add_option("--pair-distance", co.pair_distance, "A measured node farther than this from the article is not paired, m")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6, 100.0));
+  c->add_option("--pair", co.pairs, "NODE=POINT: pair a node with a point or station by name (repeatable)");
+  c->add_option("--modes", co.modes, "Model modes compared")->capture_default_str()->check(CLI::Range(1, 500));
+  c->add_option("--mac-threshold", co.mac_threshold, "A test and a model mode pair only at or above this MAC")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  c->add_option("--damping", co.damping_ratio, "Modal damping ratio of every mode (default: the scene's damping, else 0.01)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  c->add_option("--out", co.out, "Also write correlation.json, mac.csv, mac.png and a Bode overlay per function here");
+  c->add_flag("--force", co.force, "Replace files of the same names in --out");
+  return c;
+}
+
 /// `mmvlab sweep` and `mmvlab sweep-merge`.
 std::pair<CLI::App*, CLI::App*> addDesignSweepCommands(CLI::App& app, DesignSweepArgs& ds, SweepMergeArgs& sm) {
   CLI::App* s = app.add_subcommand("sweep", "Design sweep from a spec: parameters x outputs (modes tracked, check margins), in parallel, resumable, sharded");
@@ -318,6 +342,8 @@ int main(int argc, char** argv) {
 
   CheckArgs ck;
   CLI::App* ch = addCheckCommand(app, ck);
+  CorrelateArgs co;
+  CLI::App* cr = addCorrelateCommand(app, co);
 
   DesignSweepArgs ds;
   SweepMergeArgs sm;
@@ -341,6 +367,8 @@ int main(int argc, char** argv) {
     if (m->parsed()) return runModesCommand(modes);
     if (c->parsed()) return runConvergeCommand(conv);
     if (ch->parsed()) return runCheckCommand(ck);
+    co.damping_given = cr->count("--damping") > 0;
+    if (cr->parsed()) return runCorrelateCommand(co);
     if (dsw->parsed()) return runDesignSweepCommand(ds);
     if (smg->parsed()) return runSweepMergeCommand(sm);
     if (cp->parsed()) return runCompareCommand(cmp);

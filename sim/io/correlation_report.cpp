@@ -1,0 +1,161 @@
+#include "sim/io/correlation_report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "sim/core/text.hpp"
+#include "sim/io/report.hpp"
+
+namespace mmv {
+
+MeasuredSet measuredSet(const uff::File& file, const std::string& source) {
+  MeasuredSet m;
+  m.source = source;
+  for (const auto& n : file.nodes) m.nodes.push_back({n.label, n.xyz});
+  for (const auto& s : file.modes) {
+    MeasuredMode t{s.mode, s.frequency_hz, s.damping_ratio, s.nodes, {}};
+    for (std::size_t k = 0; k < s.translations.size(); ++k) {
+      std::array<std::complex<double>, 3> v;
+      for (int d = 0; d < 3; ++d) v[d] = {s.translations[k][d], s.translations_imag.empty() ? 0.0 : s.translations_imag[k][d]};
+      t.shape.push_back(v);
+    }
+    m.modes.push_back(t);
+  }
+  for (const auto& f : file.functions)
+    m.frfs.push_back({f.id1, f.line, f.function_type, f.response_node, f.response_direction, f.reference_node,
+                      f.reference_direction, f.ordinate_type, f.denominator_type, f.frequency_hz, f.values});
+  return m;
+}
+
+std::string modeLabel(char prefix, int number, double frequency_hz) {
+  return strf("%c%d %.4g Hz", prefix, number, frequency_hz);
+}
+
+namespace {
+
+std::string percent(double x) { return strf("%.3g", 100 * x); }
+
+}  // namespace
+
+std::string correlationText(const ArticleScene& scene, const CorrelationResult& r) {
+  std::ostringstream os;
+  os << "Test-analysis correlation: " << scene.name << " against the measured set\n";
+  int paired = 0;
+  for (const auto& n : r.nodes) paired += !n.station.empty();
+  os << strf("Points: %d of %zu measured nodes on the article\n", paired, r.nodes.size());
+  Table nodes({"node", "x_m", "y_m", "z_m", "station", "distance_mm", "by"});
+  for (const auto& n : r.nodes)
+    nodes.add({std::to_string(n.node), strf("%.4f", n.xyz[0]), strf("%.4f", n.xyz[1]), strf("%.4f", n.xyz[2]),
+               n.station.empty() ? "-" : n.station, strf("%.2f", 1e3 * n.distance_m), n.by_name ? "name" : "position"});
+  os << nodes.text();
+  os << strf("\nModes: %zu measured, %zu of the model (damping: %s); test band %.4g-%.4g Hz; MAC over %d translations\n",
+             r.test_modes.size(), r.model_modes.size(), r.model_damped ? r.damping_model.c_str() : "none in the scene",
+             r.band_min_hz, r.band_max_hz, r.shape_dofs);
+  Table pairs({"test", "test_Hz", "test_zeta_%", "model", "model_Hz", "model_zeta_%", "freq_error_%", "MAC"});
+  for (const auto& p : r.pairs) {
+    const MeasuredMode& t = r.test_modes[p.test];
+    const ModeInfo& m = r.model_modes[p.model];
+    pairs.add({strf("T%d", p.test + 1), strf("%.4f", t.frequency_hz), percent(t.damping_ratio), strf("M%d", m.number),
+               strf("%.4f", m.frequency_hz), r.model_damped ? percent(m.damping_ratio) : "-",
+               strf("%+.2f", 100 * (m.frequency_hz - t.frequency_hz) / t.frequency_hz), strf("%.3f", p.mac)});
+  }
+  if (!pairs.empty()) os << pairs.text();
+  else os << "  no test mode pairs with a model mode at the MAC threshold\n";
+  for (int j : r.model_not_seen)
+    os << strf("  model mode M%d (%.4f Hz) is in the test band but no test mode pairs with it: not seen by the test\n",
+               r.model_modes[j].number, r.model_modes[j].frequency_hz);
+  for (int i : r.test_not_predicted)
+    os << strf("  test mode T%d (%.4f Hz) pairs with no model mode: not predicted by the model\n", i + 1,
+               r.test_modes[i].frequency_hz);
+  if (!r.frfs.empty()) {
+    os << "\nFrequency responses: FRAC of the model's against each measured one (1: the same response)\n";
+    Table t({"function", "id", "output", "input", "FRAC", "test_peak_Hz", "model_peak_Hz"});
+    for (const auto& f : r.frfs)
+      if (f.skipped.empty())
+        t.add({std::to_string(f.index + 1), f.id.empty() ? "-" : f.id, f.output, f.input, strf("%.4f", f.frac),
+               strf("%.4g", f.test_peak_hz), strf("%.4g", f.model_peak_hz)});
+    os << t.text();
+    for (const auto& f : r.frfs)
+      if (!f.skipped.empty()) os << strf("  function %d (%s) not modelled: %s\n", f.index + 1, f.id.c_str(), f.skipped.c_str());
+  }
+  for (const auto& w : r.warnings) os << "warning: " << w << '\n';
+  return os.str();
+}
+
+nlohmann::ordered_json correlationJson(const ArticleScene& scene, const CorrelationResult& r) {
+  using json = nlohmann::ordered_json;
+  json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "correlate";
+  j["scene"] = {{"name", scene.name}, {"source", scene.source}};
+  json nodes = json::array();
+  for (const auto& n : r.nodes) {
+    json nj = {{"node", n.node}, {"xyz_m", n.xyz}, {"distance_m", n.distance_m}, {"by_name", n.by_name}};
+    nj["station"] = n.station.empty() ? json(nullptr) : json(n.station);
+    nodes.push_back(nj);
+  }
+  j["nodes"] = nodes;
+  j["band_hz"] = {r.band_min_hz, r.band_max_hz};
+  j["damping_model"] = r.model_damped ? r.damping_model : "none";
+  json tm = json::array(), mm = json::array();
+  for (std::size_t i = 0; i < r.test_modes.size(); ++i)
+    tm.push_back({{"label", strf("T%zu", i + 1)}, {"file_mode_number", r.test_modes[i].number},
+                  {"frequency_hz", r.test_modes[i].frequency_hz}, {"damping_ratio", r.test_modes[i].damping_ratio}});
+  for (const auto& m : r.model_modes) {
+    json x = {{"label", strf("M%d", m.number)}, {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
+              {"rigid_body", m.rigid_body}};
+    if (r.model_damped && m.stable && !m.rigid_body) x["damping_ratio"] = m.damping_ratio;
+    mm.push_back(x);
+  }
+  j["test_modes"] = tm;
+  j["model_modes"] = mm;
+  json mac = json::array();
+  for (Eigen::Index i = 0; i < r.mac.rows(); ++i) {
+    std::vector<double> row;
+    for (Eigen::Index k = 0; k < r.mac.cols(); ++k) row.push_back(r.mac(i, k));
+    mac.push_back(row);
+  }
+  j["mac"] = mac;
+  j["mac_translations"] = r.shape_dofs;
+  json pairs = json::array();
+  for (const auto& p : r.pairs) {
+    const double ft = r.test_modes[p.test].frequency_hz, fm = r.model_modes[p.model].frequency_hz;
+    pairs.push_back({{"test", strf("T%d", p.test + 1)}, {"model", strf("M%d", r.model_modes[p.model].number)},
+                     {"test_hz", ft}, {"model_hz", fm}, {"frequency_error", (fm - ft) / ft}, {"mac", p.mac}});
+  }
+  j["pairs"] = pairs;
+  json seen = json::array(), unpredicted = json::array();
+  for (int k : r.model_not_seen) seen.push_back(strf("M%d", r.model_modes[k].number));
+  for (int k : r.test_not_predicted) unpredicted.push_back(strf("T%d", k + 1));
+  j["model_modes_not_seen"] = seen;
+  j["test_modes_not_predicted"] = unpredicted;
+  json frfs = json::array();
+  for (const auto& f : r.frfs) {
+    json x = {{"function", f.index + 1}, {"id", f.id}};
+    if (f.skipped.empty()) {
+      x["output"] = f.output;
+      x["input"] = f.input;
+      x["frac"] = f.frac;
+      x["test_peak_hz"] = f.test_peak_hz;
+      x["model_peak_hz"] = f.model_peak_hz;
+    } else {
+      x["skipped"] = f.skipped;
+    }
+    frfs.push_back(x);
+  }
+  j["frfs"] = frfs;
+  j["warnings"] = r.warnings;
+  return j;
+}
+
+std::string macCsv(const CorrelationResult& r) {
+  std::ostringstream os;
+  os << "test_mode,test_frequency_hz,model_mode,model_frequency_hz,mac\n";
+  for (Eigen::Index i = 0; i < r.mac.rows(); ++i)
+    for (Eigen::Index k = 0; k < r.mac.cols(); ++k)
+      os << "T" << i + 1 << ',' << strf("%.8g", r.test_modes[i].frequency_hz) << ",M" << r.model_modes[k].number << ','
+         << strf("%.8g", r.model_modes[k].frequency_hz) << ',' << strf("%.6f", r.mac(i, k)) << '\n';
+  return os.str();
+}
+
+}  // namespace mmv

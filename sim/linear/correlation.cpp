@@ -1,0 +1,330 @@
+#include "sim/linear/correlation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
+#include "sim/model/stations.hpp"
+#include "sim/scene/stations.hpp"
+
+namespace mmv {
+
+double modalAssurance(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
+  MMV_DEMAND(a.size() == b.size());
+  const double na = a.squaredNorm(), nb = b.squaredNorm();
+  if (!(na > 0) || !(nb > 0)) return 0.0;
+  return std::norm(a.dot(b)) / (na * nb);  // dot() conjugates its first argument
+}
+
+double frequencyResponseAssurance(const std::vector<std::complex<double>>& a, const std::vector<std::complex<double>>& b) {
+  MMV_DEMAND(a.size() == b.size());
+  std::complex<double> cross = 0;
+  double na = 0, nb = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    cross += std::conj(a[k]) * b[k];
+    na += std::norm(a[k]);
+    nb += std::norm(b[k]);
+  }
+  if (!(na > 0) || !(nb > 0)) return 0.0;
+  return std::norm(cross) / (na * nb);
+}
+
+std::vector<ModePair> pairByMac(const Eigen::MatrixXd& mac, double threshold) {
+  std::vector<ModePair> all, out;
+  for (Eigen::Index i = 0; i < mac.rows(); ++i)
+    for (Eigen::Index j = 0; j < mac.cols(); ++j)
+      if (mac(i, j) >= threshold) all.push_back({static_cast<int>(i), static_cast<int>(j), mac(i, j)});
+  std::stable_sort(all.begin(), all.end(), [](const ModePair& a, const ModePair& b) { return a.mac > b.mac; });
+  std::set<int> rows, cols;
+  for (const auto& p : all)
+    if (!rows.count(p.test) && !cols.count(p.model)) {
+      rows.insert(p.test);
+      cols.insert(p.model);
+      out.push_back(p);
+    }
+  std::sort(out.begin(), out.end(), [](const ModePair& a, const ModePair& b) { return a.test < b.test; });
+  return out;
+}
+
+namespace {
+
+double distance(const SimTK::Vec3& p, const std::array<double, 3>& x) {
+  return std::sqrt(std::pow(p[0] - x[0], 2) + std::pow(p[1] - x[1], 2) + std::pow(p[2] - x[2], 2));
+}
+
+/// The station of the article nearest to x at the equilibrium: sampled along every
+/// link, then refined by golden-section search around the nearest sample.
+std::pair<std::string, double> nearestStation(const Model& model, const SimTK::State& st, const ArticleSpec& article,
+                                              const std::array<double, 3>& x) {
+  auto at = [&](const LinkSpec& l, double s) {
+    std::string error;
+    const std::optional<PointRef> p = PointRef::resolve(model, article, strf("%s@%.9fm", l.name.c_str(), s), error);
+    MMV_DEMAND(p.has_value());
+    return distance(p->position(st), x);
+  };
+  std::string best_link;
+  double best_s = 0, best_d = INFINITY;
+  constexpr int kSamples = 100;
+  for (const auto& l : article.links) {
+    const double h = l.length / kSamples;
+    int k_best = 0;
+    double d_best = INFINITY;
+    for (int k = 0; k <= kSamples; ++k)
+      if (const double d = at(l, std::min(l.length, k * h)); d < d_best) d_best = d, k_best = k;
+    double a = std::max(0.0, (k_best - 1) * h), b = std::min(l.length, (k_best + 1) * h);
+    const double g = 0.5 * (std::sqrt(5.0) - 1);
+    for (int it = 0; it < 40; ++it) {
+      const double c = b - g * (b - a), d = a + g * (b - a);
+      if (at(l, c) < at(l, d)) b = d;
+      else a = c;
+    }
+    const double s = std::floor(0.5 * (a + b) * 1e6) / 1e6;  // to 1 um, never past the tip
+    if (const double d = at(l, s); d < best_d) best_d = d, best_link = l.name, best_s = s;
+  }
+  return {strf("%s@%.6fm", best_link.c_str(), best_s), best_d};
+}
+
+std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet& test, const CorrelateOptions& o) {
+  const SolvedScene s = solveScene(scene, {}, 1);
+  SimTK::State st = s.equilibrium.state;
+  s.model->getSystem().realize(st, SimTK::Stage::Position);
+  std::map<int, std::string> named;
+  for (const auto& [node, point] : o.named_pairs) {
+    const bool known = std::any_of(test.nodes.begin(), test.nodes.end(), [&](const MeasuredNode& n) { return n.label == node; });
+    if (!known) throw SceneError(test.source + ": --pair " + std::to_string(node) + "=" + point + ": the file defines no node " + std::to_string(node));
+    std::string error;
+    if (!PointRef::resolve(*s.model, scene.article, point, error))
+      throw SceneError(test.source + ": --pair " + std::to_string(node) + "=" + point + ": " + error);
+    named[node] = point;
+  }
+  std::vector<NodePairing> out;
+  for (const auto& n : test.nodes) {
+    NodePairing p{n.label, n.xyz, "", 0, false};
+    if (const auto it = named.find(n.label); it != named.end()) {
+      std::string error;
+      p.station = it->second;
+      p.by_name = true;
+      p.distance_m = distance(PointRef::resolve(*s.model, scene.article, it->second, error)->position(st), n.xyz);
+    } else {
+      const auto [station, d] = nearestStation(*s.model, st, scene.article, n.xyz);
+      p.distance_m = d;
+      if (d <= o.pair_distance_m) p.station = station;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+const NodePairing* findNode(const std::vector<NodePairing>& nodes, int label) {
+  for (const auto& n : nodes)
+    if (n.node == label) return &n;
+  return nullptr;
+}
+
+void correlateModes(const ArticleScene& scene, const CorrelateOptions& o, CorrelationResult& r) {
+  std::vector<std::string> stations;
+  for (const auto& n : r.nodes)
+    if (!n.station.empty() && std::find(stations.begin(), stations.end(), n.station) == stations.end())
+      stations.push_back(n.station);
+  ModesOptions mo;
+  mo.max_modes = o.model_modes;
+  mo.with_shapes = false;
+  mo.points = stations;
+  mo.damping = o.damping;
+  ModesReport rep = runModes(scene, mo);
+  r.model_modes = rep.modes;
+  r.model_damped = rep.damped;
+  r.damping_model = rep.damping_model;
+  r.mac = Eigen::MatrixXd::Zero(r.test_modes.size(), r.model_modes.size());
+  for (std::size_t i = 0; i < r.test_modes.size(); ++i) {
+    const MeasuredMode& t = r.test_modes[i];
+    std::vector<std::complex<double>> tv;
+    std::vector<int> at;
+    for (std::size_t k = 0; k < t.nodes.size(); ++k) {
+      const NodePairing* n = findNode(r.nodes, t.nodes[k]);
+      if (!n || n->station.empty()) continue;
+      at.push_back(static_cast<int>(std::find(stations.begin(), stations.end(), n->station) - stations.begin()));
+      for (int d = 0; d < 3; ++d) tv.push_back(t.shape[k][d]);
+    }
+    r.shape_dofs = std::max(r.shape_dofs, static_cast<int>(tv.size()));
+    const Eigen::VectorXcd a = Eigen::Map<const Eigen::VectorXcd>(tv.data(), static_cast<Eigen::Index>(tv.size()));
+    for (std::size_t j = 0; j < r.model_modes.size(); ++j) {
+      const ModeInfo& m = r.model_modes[j];
+      Eigen::VectorXcd b = Eigen::VectorXcd::Zero(a.size());
+      for (std::size_t k = 0; k < at.size(); ++k) {
+        b[3 * k] = m.at_points[at[k]].ux;
+        b[3 * k + 1] = m.at_points[at[k]].uy;
+      }
+      r.mac(i, j) = m.rigid_body || !m.stable ? 0.0 : modalAssurance(a, b);
+    }
+  }
+  r.pairs = pairByMac(r.mac, o.mac_threshold);
+  std::set<int> paired_test, paired_model;
+  for (const auto& p : r.pairs) paired_test.insert(p.test), paired_model.insert(p.model);
+  for (std::size_t j = 0; j < r.model_modes.size(); ++j) {
+    const ModeInfo& m = r.model_modes[j];
+    if (m.stable && !m.rigid_body && m.frequency_hz >= r.band_min_hz && m.frequency_hz <= r.band_max_hz &&
+        !paired_model.count(static_cast<int>(j)))
+      r.model_not_seen.push_back(static_cast<int>(j));
+  }
+  for (std::size_t i = 0; i < r.test_modes.size(); ++i)
+    if (!paired_test.count(static_cast<int>(i))) r.test_not_predicted.push_back(static_cast<int>(i));
+  if (!r.model_modes.empty() && r.model_modes.back().frequency_hz < r.band_max_hz &&
+      static_cast<int>(r.model_modes.size()) < rep.model.num_dofs)
+    r.warnings.push_back(strf("the model's %zu modes compared reach %.4g Hz, below the test band's top %.4g Hz: raise --modes",
+                              r.model_modes.size(), r.model_modes.back().frequency_hz, r.band_max_hz));
+}
+
+/// The model's output and input for a measured function, or why it has none.
+struct FrfMapping {
+  std::optional<OutputSpec> output;
+  std::optional<InputSpec> input;
+  double sign = 1;
+  std::string skipped;
+};
+
+FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes) {
+  FrfMapping m;
+  const char* axes = "xy";
+  auto station = [&](int node, const char* what) -> std::string {
+    const NodePairing* n = findNode(nodes, node);
+    if (!n) m.skipped = strf("its %s node %d is not defined in the file", what, node);
+    else if (n->station.empty())
+      m.skipped = strf("its %s node %d is not on the article (nearest station %.3g m away)", what, node, n->distance_m);
+    return n ? n->station : "";
+  };
+  if (f.function_type != 4 && f.function_type != 5) {
+    m.skipped = strf("function type %d is not a frequency response (4) or a transmissibility (5)", f.function_type);
+    return m;
+  }
+  const int rd = std::abs(f.response_direction), fd = std::abs(f.reference_direction);
+  if (rd < 1 || rd > 2 || fd < 1 || fd > 2) {
+    m.skipped = strf("direction %d/%d: z and rotations are outside the planar model", f.response_direction, f.reference_direction);
+    return m;
+  }
+  m.sign = (f.response_direction < 0 ? -1 : 1) * (f.reference_direction < 0 ? -1 : 1);
+  const bool base = f.denominator_type == 12;
+  if (!base && f.denominator_type != 13) {
+    m.skipped = strf("denominator type %d: only acceleration (12, of the table) and force (13) are modelled", f.denominator_type);
+    return m;
+  }
+  OutputKind kind;
+  const char* kind_name;
+  if (f.ordinate_type == 8) kind = OutputKind::Displacement, kind_name = "disp";
+  else if (f.ordinate_type == 11) kind = OutputKind::Velocity, kind_name = "vel";
+  else if (f.ordinate_type == 12) kind = OutputKind::Acceleration, kind_name = base ? "acc_abs" : "acc";
+  else {
+    m.skipped = strf("ordinate type %d: only displacement (8), velocity (11) and acceleration (12) are modelled", f.ordinate_type);
+    return m;
+  }
+  const std::string out_point = station(f.response_node, "response");
+  if (!m.skipped.empty()) return m;
+  const bool absolute = base && kind == OutputKind::Acceleration;
+  m.output = OutputSpec{strf("%s:%c:%s", out_point.c_str(), axes[rd - 1], kind_name), kind, out_point, rd - 1, absolute};
+  if (base) {
+    m.input = InputSpec{fd == 1 ? "table_x" : "table_y", InputKind::BaseAcceleration, "", fd - 1};
+  } else {
+    const std::string in_point = station(f.reference_node, "reference");
+    if (!m.skipped.empty()) return {std::nullopt, std::nullopt, 1, m.skipped};
+    m.input = InputSpec{strf("force:%s:%c", in_point.c_str(), axes[fd - 1]), InputKind::PointForce, in_point, fd - 1};
+  }
+  return m;
+}
+
+void correlateFrfs(const ArticleScene& scene, const MeasuredSet& test, const CorrelateOptions& o, CorrelationResult& r) {
+  std::vector<FrfMapping> maps;
+  std::vector<InputSpec> inputs;
+  std::vector<OutputSpec> outputs;
+  for (const auto& f : test.frfs) {
+    maps.push_back(mapFrf(f, r.nodes));
+    const FrfMapping& m = maps.back();
+    if (!m.skipped.empty()) continue;
+    if (std::none_of(inputs.begin(), inputs.end(), [&](const InputSpec& i) { return i.name == m.input->name; }))
+      inputs.push_back(*m.input);
+    if (std::none_of(outputs.begin(), outputs.end(), [&](const OutputSpec& x) { return x.name == m.output->name; }))
+      outputs.push_back(*m.output);
+  }
+  std::optional<LinearModel> lm;
+  if (!inputs.empty()) lm = buildLinearModel(scene, inputs, outputs, o.damping);
+  auto indexOf = [](const auto& list, const std::string& name) {
+    return static_cast<Eigen::Index>(std::find_if(list.begin(), list.end(), [&](const auto& x) { return x.name == name; }) -
+                                     list.begin());
+  };
+  std::map<std::vector<double>, std::vector<Eigen::MatrixXcd>> responses;  // per distinct abscissa
+  for (std::size_t k = 0; k < test.frfs.size(); ++k) {
+    const MeasuredFrf& f = test.frfs[k];
+    FrfCorrelation c;
+    c.index = static_cast<int>(k);
+    c.id = f.id;
+    c.skipped = maps[k].skipped;
+    if (c.skipped.empty()) {
+      c.output = maps[k].output->name;
+      c.input = maps[k].input->name;
+      std::vector<double> fz;  // the model's response at 0 Hz is its static one, infinite with a free joint: skipped
+      for (std::size_t i = 0; i < f.frequency_hz.size(); ++i)
+        if (f.frequency_hz[i] > 0) {
+          fz.push_back(f.frequency_hz[i]);
+          c.test.push_back(f.values[i]);
+        }
+      auto& h = responses[fz];
+      if (h.empty()) {
+        std::vector<double> w(fz);
+        for (double& x : w) x *= 2 * M_PI;
+        h = fullResponses(lm->second_order, w);
+      }
+      const Eigen::Index o_i = indexOf(lm->outputs, c.output), i_i = indexOf(lm->inputs, c.input);
+      for (const auto& hk : h) c.model.push_back(maps[k].sign * hk(o_i, i_i));
+      c.frequency_hz = fz;
+      c.frac = frequencyResponseAssurance(c.test, c.model);
+      auto peak = [&](const std::vector<std::complex<double>>& v) {
+        std::size_t b = 0;
+        for (std::size_t i = 0; i < v.size(); ++i)
+          if (std::abs(v[i]) > std::abs(v[b])) b = i;
+        return v.empty() ? 0.0 : fz[b];
+      };
+      c.test_peak_hz = peak(c.test);
+      c.model_peak_hz = peak(c.model);
+    }
+    r.frfs.push_back(std::move(c));
+  }
+}
+
+}  // namespace
+
+CorrelationResult correlate(const ArticleScene& scene, const MeasuredSet& test, const CorrelateOptions& o) {
+  if (test.modes.empty() && test.frfs.empty())
+    throw SceneError(test.source + ": the file holds no mode shapes (dataset 55) and no functions (58) to correlate");
+  if (test.nodes.empty())
+    throw SceneError(test.source + ": the file defines no nodes (dataset 15 or 2411), so its points cannot be placed on the article");
+  CorrelationResult r;
+  r.nodes = pairNodes(scene, test, o);
+  if (std::all_of(r.nodes.begin(), r.nodes.end(), [](const NodePairing& n) { return n.station.empty(); })) {
+    double nearest = INFINITY;
+    for (const auto& n : r.nodes) nearest = std::min(nearest, n.distance_m);
+    throw SceneError(strf("%s: no measured node is within %.3g m of the article (the nearest is %.3g m away): is the "
+                          "geometry in the scene's frame and in metres (dataset 164)? --pair-distance widens the search",
+                          test.source.c_str(), o.pair_distance_m, nearest));
+  }
+  r.test_modes = test.modes;
+  std::sort(r.test_modes.begin(), r.test_modes.end(),
+            [](const MeasuredMode& a, const MeasuredMode& b) { return a.frequency_hz < b.frequency_hz; });
+  if (!test.frfs.empty()) {
+    r.band_min_hz = INFINITY;
+    for (const auto& f : test.frfs) {
+      r.band_min_hz = std::min(r.band_min_hz, f.frequency_hz.front());
+      r.band_max_hz = std::max(r.band_max_hz, f.frequency_hz.back());
+    }
+  } else {
+    r.band_max_hz = 1.1 * r.test_modes.back().frequency_hz;
+  }
+  correlateModes(scene, o, r);
+  correlateFrfs(scene, test, o, r);
+  for (const auto& n : r.nodes)
+    if (n.station.empty()) r.warnings.push_back(strf("node %d is %.3g m from the article: not paired", n.node, n.distance_m));
+  return r;
+}
+
+}  // namespace mmv
