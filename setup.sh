@@ -13,6 +13,7 @@ build_pkgs=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev libspectra-dev
   libgtest-dev googletest libbenchmark-dev
   octave octave-control          # the test suite loads our .mat files into Octave's ss()
+  python3 python3-numpy          # ... and reads every CSV back with Python's csv module and numpy
 )
 want=("${build_pkgs[@]}")
 

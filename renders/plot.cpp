@@ -12,6 +12,9 @@ namespace mmv::render {
 namespace {
 
 const cv::Scalar kBlack(0, 0, 0), kGrey(200, 200, 200), kWhite(255, 255, 255);
+/// The qualitative palette: black, Okabe-Ito's colour-blind-safe colours (less the yellow,
+/// unreadable on white), then Tol's muted ones and a grey.
+constexpr int kPaletteSize = 14;
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 
 void text(cv::Mat& img, const std::string& s, cv::Point at, double scale = 0.45, cv::Scalar colour = kBlack,
@@ -91,7 +94,11 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
       const cv::Rect r(left + j * cell, top + i * cell, cell, cell);
       cv::rectangle(img, r, colourFor(t), cv::FILLED);
       cv::rectangle(img, r, kWhite, 1);
-      text(img, fmt(v, "%.2f"), {r.x + cell / 2, r.y + cell / 2 + 5}, 0.42, t > 0.6 ? kBlack : kWhite, true);
+      // Three significant figures at most, the text shrunk to fit its cell (-123.4 dB fits).
+      const std::string label = std::abs(v) >= 100 ? fmt(v, "%.0f") : std::abs(v) >= 10 ? fmt(v, "%.1f") : fmt(v, "%.2f");
+      double scale = 0.42;
+      for (int base = 0; scale > 0.25 && cv::getTextSize(label, kFont, scale, 1, &base).width > cell - 6;) scale *= 0.9;
+      text(img, label, {r.x + cell / 2, r.y + cell / 2 + 5}, scale, t > 0.6 ? kBlack : kWhite, true);
     }
   for (int i = 0; i < rows && i < static_cast<int>(row_labels.size()); ++i) {
     int base = 0;
@@ -228,15 +235,17 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
     cv::rotate(strip, rotated, cv::ROTATE_90_COUNTERCLOCKWISE);
     rotated.copyTo(img(cv::Rect(5, top, rotated.cols, rotated.rows)));
   }
+  int legend_row = 0;
   for (std::size_t k = 0; k < series.size(); ++k) {
     const auto& s = series[k];
     // Up to 8 series: the Okabe-Ito colour-blind-safe qualitative palette (BGR), so
     // neighbouring series stay distinguishable; more: the sequential map.
-    static const cv::Scalar kQualitative[8] = {{0, 0, 0},       {0, 159, 230}, {233, 180, 86}, {115, 158, 0},
-                                               {66, 228, 240},  {178, 114, 0}, {0, 94, 213},   {167, 121, 204}};
+    static const cv::Scalar kQualitative[kPaletteSize] = {  // BGR
+        {0, 0, 0},       {0, 159, 230},  {233, 180, 86}, {115, 158, 0},  {178, 114, 0},  {0, 94, 213},  {167, 121, 204},
+        {136, 34, 51},   {238, 204, 136}, {153, 170, 68}, {51, 153, 153}, {85, 34, 136},  {153, 68, 170}, {119, 119, 119}};
     // A series with a colour index keeps its colour from figure to figure (an
     // integrator is the same colour in every trade plot).
-    const cv::Scalar colour = s.colour_index >= 0  ? kQualitative[s.colour_index % 8]
+    const cv::Scalar colour = s.colour_index >= 0  ? kQualitative[s.colour_index % kPaletteSize]
                               : series.size() <= 8 ? kQualitative[k]
                                                    : colourFor(0.85 * double(k) / (series.size() - 1));
     // Dashes of 8 px with 6 px gaps along the whole polyline (a pattern restarted per
@@ -260,12 +269,24 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
       }
       phase = std::fmod(phase + len, 14.0);
     }
-    if (s.x.size() < 80 || s.markers_only)
+    if ((s.x.size() < 80 && !s.dashed) || s.markers_only)  // a dashed line (a limit) has no markers
       for (std::size_t i = 0; i < s.x.size(); ++i)
-        if (usable(s.x[i], s.y[i])) cv::circle(img, {px(s.x[i]), py(s.y[i])}, s.markers_only ? 5 : 3, colour, cv::FILLED, cv::LINE_AA);
-    const int ly = top + 10 + 22 * static_cast<int>(k);
+        if (usable(s.x[i], s.y[i])) {
+          const cv::Point at(px(s.x[i]), py(s.y[i]));
+          if (s.hollow) cv::circle(img, at, 6, colour, 2, cv::LINE_AA);
+          else cv::circle(img, at, s.markers_only ? 5 : 3, colour, cv::FILLED, cv::LINE_AA);
+          if (i < s.point_labels.size() && !s.point_labels[i].empty())
+            text(img, s.point_labels[i], {at.x + 7, at.y - 5}, 0.32, colour);
+        }
+    // The legend: one entry per labelled series (a capacity's mirror line has none),
+    // its line dashed or a marker as the series is drawn.
+    if (s.label.empty()) continue;
+    const int ly = top + 10 + 22 * legend_row++;
     if (legend && ly < top + ph) {
-      cv::line(img, {left + pw + 15, ly - 4}, {left + pw + 40, ly - 4}, colour, 2);
+      if (s.markers_only) cv::circle(img, {left + pw + 27, ly - 4}, s.hollow ? 5 : 4, colour, s.hollow ? 2 : cv::FILLED, cv::LINE_AA);
+      else if (s.dashed)
+        for (int x = left + pw + 15; x < left + pw + 40; x += 10) cv::line(img, {x, ly - 4}, {std::min(x + 6, left + pw + 40), ly - 4}, colour, 2);
+      else cv::line(img, {left + pw + 15, ly - 4}, {left + pw + 40, ly - 4}, colour, 2);
       text(img, s.label, {left + pw + 46, ly}, 0.42);
     }
   }
@@ -275,8 +296,15 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
 
 void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,
                       const std::string& x_label, const std::string& y_label, bool log_y, bool log_x) {
-  cv::Mat img(600, 900, CV_8UC3, kWhite);
-  drawPanel(img, cv::Rect(90, 50, 900 - 90 - 200, 600 - 50 - 70), series, title, x_label, y_label, log_x, log_y, true);
+  // The legend's column is as wide as its longest label (up to 600 px); the plot keeps its size.
+  int legend_w = 0;
+  for (const auto& s : series) {
+    int base = 0;
+    legend_w = std::max(legend_w, cv::getTextSize(s.label, kFont, 0.42, 1, &base).width);
+  }
+  const int right = std::clamp(legend_w + 70, 200, 600), width = 90 + 610 + right;
+  cv::Mat img(600, width, CV_8UC3, kWhite);
+  drawPanel(img, cv::Rect(90, 50, 610, 600 - 50 - 70), series, title, x_label, y_label, log_x, log_y, true);
   save(path, img);
 }
 

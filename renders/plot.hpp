@@ -22,6 +22,8 @@ struct Series {
   bool dashed = false;
   bool markers_only = false;  ///< points without connecting lines.
   int colour_index = -1;      ///< >= 0: a fixed colour of the palette (the same series the same colour in every figure).
+  bool hollow = false;        ///< markers as rings (e.g. points that failed a check), drawn over filled ones.
+  std::vector<std::string> point_labels;  ///< optional, one per point: a small label beside its marker.
 };
 
 /// Line plot of several series with axes, ticks, labels and a legend.

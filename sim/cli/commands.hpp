@@ -15,6 +15,11 @@
 #include "sim/scene/scene.hpp"
 #include "sim/linear/state_space.hpp"
 
+namespace mmv {
+class OutputDir;
+struct SimulationResult;
+}  // namespace mmv
+
 namespace mmv::cli {
 
 /// Exit codes (sysexits.h where one fits).
@@ -42,12 +47,16 @@ struct ModesArgs : SceneArgs {
   int modes = 12;  ///< modes to report; 0 = all.
   std::vector<std::string> points;  ///< named points or stations whose shapes are tabulated.
   bool no_error_estimate = false;   ///< skip the coarser solutions (estimateDiscretization)
+  std::string out;                  ///< modes.txt, modes.json, modes.csv here.
+  bool force = false;
 };
 
 struct ConvergeArgs : SceneArgs {
   bool json = false;
   int max_segments = 64;
   int modes = 6;
+  std::string out;  ///< converge.txt, converge.json, converge.csv, convergence.png here.
+  bool force = false;
 };
 
 struct CompareArgs : SceneArgs {
@@ -84,6 +93,7 @@ struct LinearArgs : SceneArgs {
   bool damping_given = false;  ///< --damping overrides the scene's damping.
   bool rad = false;
   std::vector<std::string> vary;  ///< HAM-SAS frf: one "KEY=V1,V2,...".
+  bool json = false;  ///< the summary as JSON (frf), rom.json on stdout (rom).
   std::string out;
   bool force = false;
 };
@@ -186,6 +196,11 @@ int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);
 int runSimulateCommand(const SimulateArgs& args);
+/// simulate --out's figures (sim/cli/simulate_plots.cpp): torques.png (each torquer
+/// against its capacity), table.png (the actuator's force, the weight carried and the
+/// payload rating), tips.png (tip displacements, mm), sensors.png (each sensor in % of
+/// its range); each only when the run has what it shows.
+void writeSimulationPlots(OutputDir& out, const SimulationResult& r, const std::string& title);
 int runFrfCommand(const LinearArgs& args);
 int runRomCommand(const LinearArgs& args);
 int runSweepCommand(const SweepArgs& args);

@@ -20,7 +20,9 @@ void writeText(const std::string& path, const std::string& text) {
 void macPng(const std::string& path, const SynthesisResult& s, const std::string& title) {
   std::vector<std::string> rows, cols;
   for (Eigen::Index i = 0; i < s.mac.rows(); ++i) rows.push_back(strf("%ld: %.2f Hz", static_cast<long>(i + 1), s.synth_hz[i]));
-  for (Eigen::Index j = 0; j < s.mac.cols(); ++j) cols.push_back(strf("%ld", static_cast<long>(j + 1)));
+  // Each full-model mode with its frequency ("3 4.41 Hz", drawn on two lines).
+  for (Eigen::Index j = 0; j < s.mac.cols(); ++j)
+    cols.push_back(j < s.full_hz.size() ? strf("%ld %.3g Hz", static_cast<long>(j + 1), s.full_hz[j]) : strf("%ld", static_cast<long>(j + 1)));
   try {
     figures::heatmap(path, s.mac, rows, cols, title, "synthesized mode", "full model's mode");
   } catch (const std::runtime_error& e) {
@@ -49,8 +51,8 @@ int runCompareCommand(const CompareArgs& args) {
       writeText(out->stage("compare.md"), formatCompareMarkdown(rep));
       for (const auto& [name, text] : compareCsvFiles(rep)) writeText(out->stage(name), text);
       writeText(out->stage("compare.json"), compareToJson(rep).dump(2) + "\n");
-      macPng(out->stage("mac_assumed_modes.png"), rep.assumed, "MAC: " + rep.assumed.method);
-      macPng(out->stage("mac_craig_bampton.png"), rep.craig_bampton, "MAC: " + rep.craig_bampton.method);
+      macPng(out->stage("mac_assumed_modes.png"), rep.assumed, "MAC: " + rep.assumed.method + ": " + scene.name);
+      macPng(out->stage("mac_craig_bampton.png"), rep.craig_bampton, "MAC: " + rep.craig_bampton.method + ": " + scene.name);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
     args.json ? emitResult(compareToJson(rep)) : emitResult(formatCompareText(rep));

@@ -36,28 +36,38 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
                                 const std::vector<Eigen::MatrixXcd>& T, const Eigen::MatrixXcd& T10,
                                 const std::string& vary_key, const std::vector<HamsasVaryPoint>& varied,
                                 const std::string& vary_unit) {
-  auto series = [&](int i, int j) {
-    render::Series s{std::string(hamsasDofName(i)) + " <- ground " + hamsasDofName(j), f, {}};
+  // Each curve in its unit (m/m between translations, m/rad from a ground rotation to a
+  // translation, rad/rad between rotations); one unit per figure. A DOF keeps its colour
+  // and the second curve of a pair is dashed, so neither hides the other.
+  auto series = [&](int i, int j, const char* unit, bool dashed) {
+    render::Series s{std::string(hamsasDofName(i)) + " <- ground " + hamsasDofName(j) + " (" + unit + ")", f, {}};
     for (const auto& Tk : T) s.y.push_back(decibels(Tk(i, j)));
+    s.dashed = dashed;
+    s.colour_index = i + 1;
     return s;
   };
   try {
-    figures::linePlot(out.stage("transmissibility_horizontal.png"), {series(0, 0), series(1, 1), series(0, 4), series(1, 3)},
-                             name + ": horizontal transmissibility (table / ground)", "frequency (Hz)",
-                             "magnitude (dB; m/m, m/rad)", false, true);
-    figures::linePlot(out.stage("transmissibility_vertical.png"), {series(2, 2)},
-                             name + ": vertical transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB)", false,
-                             true);
-    figures::linePlot(out.stage("transmissibility_angular.png"), {series(3, 3), series(4, 4), series(5, 5)},
-                             name + ": angular transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB)", false,
-                             true);
+    figures::linePlot(out.stage("transmissibility_horizontal.png"), {series(0, 0, "m/m", false), series(1, 1, "m/m", true)},
+                      name + ": horizontal transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB of m/m)",
+                      false, true);
+    figures::linePlot(out.stage("transmissibility_tilt_to_horizontal.png"),
+                      {series(0, 4, "m/rad", false), series(1, 3, "m/rad", true)},
+                      name + ": ground tilt to table translation", "frequency (Hz)", "magnitude (dB of m/rad)", false, true);
+    figures::linePlot(out.stage("transmissibility_vertical.png"), {series(2, 2, "m/m", false)},
+                      name + ": vertical transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB of m/m)",
+                      false, true);
+    figures::linePlot(out.stage("transmissibility_angular.png"),
+                      {series(3, 3, "rad/rad", false), series(4, 4, "rad/rad", true), series(5, 5, "rad/rad", false)},
+                      name + ": angular transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB of rad/rad)",
+                      false, true);
     Eigen::MatrixXd heat(6, 6);
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j) heat(i, j) = std::max(decibels(T10(i, j)), -250.0);  // zero by symmetry: the floor
     std::vector<std::string> names;
     for (int k = 0; k < 6; ++k) names.push_back(hamsasDofName(k));
     figures::heatmap(out.stage("transmissibility_10hz.png"), heat, names, names,
-                            name + ": |T| at 10 Hz (dB, floor -250)", "optical table", "ground", -250, 0);
+                     name + ": |T| at 10 Hz (dB of m/m, m/rad, rad/m or rad/rad; floor -250)", "optical table",
+                     "ground", -250, 0);
     if (!varied.empty()) {
       std::vector<render::Series> curves;
       for (const auto& p : varied) curves.push_back({strf("%g", p.value) + vary_unit, f, p.x_db});
@@ -107,7 +117,17 @@ int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::ve
     writeTransmissibilityPlots(*out, scene.name, f, T, T10, vary_key, varied, vary_unit);
     for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
-  emitResult(text);
+  if (args.json) {
+    nlohmann::ordered_json j = hamsasTransmissibilityJson(scene, f, T, T10);
+    if (!varied.empty()) {
+      nlohmann::ordered_json v = nlohmann::ordered_json::array();
+      for (const auto& p : varied) v.push_back({{"value", p.value}, {"x_at_10_hz_db", p.x_at_10hz_db}, {"z_at_10_hz_db", p.z_at_10hz_db}});
+      j["varied"] = {{"key", vary_key}, {"unit", vary_unit}, {"points", v}};
+    }
+    emitResult(j);
+  } else {
+    emitResult(text);
+  }
   return kOk;
 }
 
@@ -130,9 +150,10 @@ int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::ve
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }
-  std::ofstream(out.stage("rom.json"), std::ios::binary) << hamsasRomJson(full, red, err, f).dump(2) << '\n';
+  const nlohmann::ordered_json rom_json = hamsasRomJson(full, red, err, f);
+  std::ofstream(out.stage("rom.json"), std::ios::binary) << rom_json.dump(2) << '\n';
   for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-  emitResult(hamsasRomText(scene, h, full, red, err, f));
+  args.json ? emitResult(rom_json) : emitResult(hamsasRomText(scene, h, full, red, err, f));
   return kOk;
 }
 

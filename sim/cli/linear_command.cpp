@@ -154,6 +154,8 @@ int runFrfCommand(const LinearArgs& args) {
       const StateSpace& s = lm.full;
       std::vector<Eigen::MatrixXcd> hr;
       for (double x : w) hr.push_back(red.model.response(x));
+      std::vector<double> markers;  // the kept modes, on the plot's frequency axis
+      for (double fk : red.kept_frequencies_hz) markers.push_back(args.rad ? 2 * M_PI * fk : fk);
       for (Eigen::Index o = 0; o < s.C.rows(); ++o)
         for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
           const std::string base = safeFileName(s.output_names[o]) + "__" + safeFileName(s.input_names[i]);
@@ -174,18 +176,22 @@ int runFrfCommand(const LinearArgs& args) {
           std::ofstream(out->stage("frf_" + base + ".csv"), std::ios::binary) << frfCsv(s, o, i, f, hf, hr);
           try {
             figures::bode(out->stage("bode_" + base + ".png"), {full, rom},
-                                 s.output_names[o] + " / " + s.input_names[i] + " (" + s.output_units[o] + " per " +
-                                     s.input_units[i] + ")",
-                                 args.rad ? "frequency (rad/s)" : "frequency (Hz)");
+                          s.output_names[o] + " / " + s.input_names[i] + " (" + s.output_units[o] + " per " +
+                              s.input_units[i] + "): " + scene.name,
+                          args.rad ? "frequency (rad/s)" : "frequency (Hz)", markers);
           } catch (const std::runtime_error& e) {
             throw OutputError(e.what());
           }
         }
       std::ofstream(out->stage("frf.uff"), std::ios::binary) << frfUff(lm, scene, f, hf);
-      checkResultFinite(linearSummaryText(lm, red, err, f, hf));  // before any file is committed
+    }
+    const std::string text = args.json ? "" : linearSummaryText(lm, red, err, f, hf);
+    const nlohmann::ordered_json json = args.json ? linearSummaryJson(lm, red, err, f, hf, scene.name) : nlohmann::ordered_json();
+    if (out) {
+      args.json ? checkResultFinite(json) : checkResultFinite(text);  // before any file is committed
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
-    emitResult(linearSummaryText(lm, red, err, f, hf));
+    args.json ? emitResult(json) : emitResult(text);
     return kOk;
   });
 }
@@ -215,7 +221,7 @@ int runRomCommand(const LinearArgs& args) {
     checkResultFinite(rom_json);  // before any file is committed
     std::ofstream(out.stage("rom.json"), std::ios::binary) << rom_json.dump(2) << '\n';
     for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-    emitResult(linearSummaryText(lm, red, err, f, hf));
+    args.json ? emitResult(rom_json) : emitResult(linearSummaryText(lm, red, err, f, hf));
     return kOk;
   });
 }

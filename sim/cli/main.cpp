@@ -74,6 +74,8 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
       ->delimiter(',');
   m->add_flag("--no-error-estimate", modes.no_error_estimate,
               "Skip each mode's discretization error estimate (the scene solved again with segments / 2 and / 4)");
+  m->add_option("--out", modes.out, "Also write modes.txt, modes.json and modes.csv (one row per mode) here");
+  m->add_flag("--force", modes.force, "Replace files of the same names in --out");
   return m;
 }
 
@@ -86,6 +88,8 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeArgs& conv) {
       ->capture_default_str()
       ->check(CLI::Range(1, mmv::limits::kMaxSegments));
   c->add_option("--modes", conv.modes, "Number of modes to tabulate")->capture_default_str()->check(CLI::Range(1, 1000));
+  c->add_option("--out", conv.out, "Also write converge.txt, converge.json, converge.csv and convergence.png here");
+  c->add_flag("--force", conv.force, "Replace files of the same names in --out");
   return c;
 }
 
@@ -142,6 +146,7 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
     cmd->add_option("--band", lin.band, "Keep the modes in F_MIN_HZ:F_MAX_HZ instead of --rom-modes");
     cmd->add_flag("--no-residualize", lin.no_residualize, "Truncate without static residualization");
     cmd->add_option("--damping", lin.damping_ratio, "Modal damping ratio of every mode (default: the scene's damping, else 0.01)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    cmd->add_flag("--json", lin.json, "Print the summary as JSON (docs/outputs.md)");
     cmd->add_option("--out", lin.out, "Output directory");
     cmd->add_flag("--force", lin.force, "Replace files of the same names in --out");
   };

@@ -1,15 +1,47 @@
 // mmvlab modes and converge: the system modes about the held equilibrium
 // (sim/modes/system_modes.hpp; the isolator's: sim/cli/hamsas_command.cpp) and their
 // convergence with segments per link (sim/modes/converge.hpp).
+#include <cmath>
+#include <fstream>
 #include <iostream>
+#include <memory>
 
 #include "sim/cli/commands.hpp"
+#include "sim/cli/figures.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/output_dir.hpp"
 #include "sim/io/report.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/plan/check.hpp"
 
 namespace mmv::cli {
+namespace {
+
+/// convergence.png: each mode's |f_N / Richardson - 1| against segments per link, log-log
+/// (a straight line of slope -2 where the observed order is 2).
+void convergencePlot(OutputDir& out, const ConvergenceStudy& c) {
+  std::vector<render::Series> all;
+  for (const auto& m : c.modes) {
+    if (!m.has_estimate) continue;
+    render::Series s{strf("mode %d (%.4g Hz, %s)", m.number, m.extrapolated_hz, m.check.c_str()), {}, {}};
+    s.colour_index = (m.number - 1) % 13 + 1;
+    for (std::size_t k = 0; k < c.runs.size() && k < m.frequency_hz.size(); ++k) {
+      const double e = std::abs(m.frequency_hz[k] / m.extrapolated_hz - 1);
+      if (std::isfinite(e) && e > 0) s.x.push_back(c.runs[k].segments), s.y.push_back(e);
+    }
+    all.push_back(s);
+  }
+  if (all.empty()) return;
+  try {
+    figures::linePlot(out.stage("convergence.png"), all, "Frequency error against segments per link: " + c.scene_name,
+                      "segments per flexible link", "|f / Richardson - 1|", true, true);
+  } catch (const std::runtime_error& e) {
+    throw OutputError(e.what());
+  }
+}
+
+}  // namespace
 
 int runModesCommand(const ModesArgs& args) {
   return guarded([&]() -> int {
@@ -24,7 +56,18 @@ int runModesCommand(const ModesArgs& args) {
     ModesReport rep = runModes(scene, opt);
     if (!args.no_error_estimate) rep.discretization = estimateDiscretization(scene, reportFrequencies(rep));
     for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
-    args.json ? emitResult(modesToJson(rep)) : emitResult(formatModesText(rep));
+    const nlohmann::ordered_json json = modesToJson(rep);
+    const std::string text = formatModesText(rep);
+    if (!args.out.empty()) {
+      OutputDir out(args.out, args.force);
+      checkResultFinite(json);  // before any file is committed
+      checkResultFinite(text);
+      std::ofstream(out.stage("modes.txt"), std::ios::binary) << text;
+      std::ofstream(out.stage("modes.json"), std::ios::binary) << json.dump(2) << '\n';
+      std::ofstream(out.stage("modes.csv"), std::ios::binary) << modesCsv(rep);
+      for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+    }
+    args.json ? emitResult(json) : emitResult(text);
     return kOk;
   });
 }
@@ -32,8 +75,21 @@ int runModesCommand(const ModesArgs& args) {
 int runConvergeCommand(const ConvergeArgs& args) {
   return guarded([&] {
     const ArticleScene scene = loadArticleScene(args, "converge");
+    std::unique_ptr<OutputDir> out;
+    if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);
-    args.json ? emitResult(convergenceToJson(c)) : emitResult(formatConvergenceText(c));
+    const nlohmann::ordered_json json = convergenceToJson(c);
+    const std::string text = formatConvergenceText(c);
+    if (out) {
+      checkResultFinite(json);  // before any file is committed
+      checkResultFinite(text);
+      std::ofstream(out->stage("converge.txt"), std::ios::binary) << text;
+      std::ofstream(out->stage("converge.json"), std::ios::binary) << json.dump(2) << '\n';
+      std::ofstream(out->stage("converge.csv"), std::ios::binary) << convergenceCsv(c);
+      convergencePlot(*out, c);
+      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+    }
+    args.json ? emitResult(json) : emitResult(text);
     return kOk;
   });
 }

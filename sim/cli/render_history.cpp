@@ -25,11 +25,11 @@ constexpr int kMaxFrames = 20000;  ///< about 11 minutes at 30 frames/s.
 std::vector<render::Trace> tracesFor(const RunDir& run, const std::vector<std::string>& names) {
   std::vector<render::Trace> out;
   for (const auto& name : names) {
-    int col = run.history.column(name);
+    int col = run.history.column(csvColumnName(name));  // the CSV's names (sim/core/text.hpp)
     for (const auto& s : run.scene.sensors)
       if (col < 0 && s.name == name)
         for (std::size_t c = 0; c < run.history.columns.size(); ++c)
-          if (run.history.columns[c].rfind(name + "_", 0) == 0) col = static_cast<int>(c);
+          if (run.history.columns[c].rfind(csvColumnName(name) + "_", 0) == 0) col = static_cast<int>(c);
     if (col <= 0) {
       std::string known;
       for (const auto& s : run.scene.sensors) known += s.name + ", ";
@@ -70,7 +70,7 @@ DrawAt isolatorFrames(const RunDir& run, std::shared_ptr<HamsasModes>& h) {
   const std::size_t bodies = h->model.bodies.size();
   std::vector<std::string> want{"time_s"};
   for (const auto& body : h->model.bodies)
-    for (const char* q : {"_x_m", "_y_m", "_z_m", "_rx_rad", "_ry_rad", "_rz_rad"}) want.push_back(body.name + q);
+    for (const char* q : {"_x_m", "_y_m", "_z_m", "_rx_rad", "_ry_rad", "_rz_rad"}) want.push_back(csvColumnName(body.name + q));
   if (want != run.states.columns)
     throw SceneError(run.dir + "/states.csv: the run's columns are not the bodies of " + run.isolator->source +
                      ": render a run with the scene it was made with");

@@ -97,6 +97,7 @@ int report(const SimulateArgs& args, const std::string& name, const std::string&
     std::ofstream(out->stage("scene.yaml"), std::ios::binary) << scene_text;
     std::ofstream(out->stage("run.json"), std::ios::binary) << runRecord(args, source, spec).dump(2) << '\n';
     if (!r.states.rows.empty()) std::ofstream(out->stage("states.csv"), std::ios::binary) << simulationHistoryCsv(r.states);
+    writeSimulationPlots(*out, r, name + strf(" (%s at %g)", r.integrator.c_str(), r.accuracy));
     for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
   args.json ? emitResult(summary) : emitResult(simulationText(name, source, r, warnings));

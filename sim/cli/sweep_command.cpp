@@ -39,40 +39,62 @@ GridAxis parseGrid(const std::string& text, const ArticleScene& scene) {
   return ax;
 }
 
-void plots(OutputDir& out, const SweepResult& r) {
+/// A 1-D sweep's figures: the tracked modes' frequencies (log: they span decades), each
+/// mode's change from its first value (linear, so a few per cent show), and the
+/// synthesis error. Unstable shapes are rings at |f| (the growth rate / 2 pi).
+void lineSweepPlots(OutputDir& out, const SweepResult& r, std::size_t tracks, const std::string& scene_name) {
+  std::vector<render::Series> freq, change, err;
+  render::Series unstable{"unstable (ring at growth rate / 2 pi)", {}, {}};
+  unstable.markers_only = true;
+  unstable.hollow = true;
+  unstable.colour_index = 0;
+  for (std::size_t k = 0; k < tracks; ++k) {
+    std::string link;
+    double f0 = NAN;
+    for (const auto& p : r.points)
+      if (k < p.tracks.size() && p.tracks[k].stable && std::isnan(f0)) f0 = p.tracks[k].frequency_hz, link = p.tracks[k].strain_link;
+    const std::string label = strf("mode %zu (%s, %.3g Hz at %g deg)", k + 1, link.empty() ? "-" : link.c_str(), f0,
+                                   r.points.front().angles_deg[0]);
+    render::Series f{label, {}, {}}, c{label, {}, {}}, e{label, {}, {}};
+    for (auto* series : {&f, &c, &e}) series->colour_index = static_cast<int>(k % 13) + 1;  // a mode keeps its colour
+    for (const auto& p : r.points) {
+      const double x = p.angles_deg[0];
+      if (k >= p.tracks.size()) {  // a gap in the line
+        for (auto* series : {&f, &c, &e}) series->x.push_back(x), series->y.push_back(NAN);
+        continue;
+      }
+      const auto& t = p.tracks[k];
+      if (t.state.rfind("lost", 0) == 0 || t.state.rfind("restarted", 0) == 0)  // another mode from here: break the line
+        for (auto* series : {&f, &c, &e}) series->x.push_back(x), series->y.push_back(NAN);
+      if (!t.stable) unstable.x.push_back(x), unstable.y.push_back(std::abs(t.frequency_hz));
+      f.x.push_back(x);
+      f.y.push_back(t.stable ? t.frequency_hz : NAN);
+      c.x.push_back(x);
+      c.y.push_back(t.stable ? 100 * (t.frequency_hz / f0 - 1) : NAN);
+      e.x.push_back(x);
+      e.y.push_back(t.stable ? 100 * std::abs(t.synth_error) : NAN);
+    }
+    freq.push_back(f);
+    change.push_back(c);
+    err.push_back(e);
+  }
+  if (!unstable.x.empty()) freq.push_back(unstable);
+  const std::string axis = r.axes[0].joint + " angle (deg)";
+  figures::linePlot(out.stage("frequencies.png"), freq, "System modes tracked by shape: " + scene_name, axis,
+                    "frequency (Hz)", true);
+  figures::linePlot(out.stage("frequency_change.png"), change,
+                    "Each mode's frequency against its value at the first angle: " + scene_name, axis,
+                    "change from the first angle (%)", false);
+  figures::linePlot(out.stage("synthesis_error.png"), err, "Synthesis error (" + r.synthesis_method + "): " + scene_name,
+                    axis, "|synthesized / full - 1| (%)", false);
+}
+
+void plots(OutputDir& out, const SweepResult& r, const std::string& scene_name) {
   std::size_t tracks = 0;
   for (const auto& p : r.points) tracks = std::max(tracks, p.tracks.size());
   try {
     if (r.axes.size() == 1) {
-      std::vector<render::Series> freq, err;
-      for (std::size_t k = 0; k < tracks; ++k) {
-        render::Series f{strf("track %zu", k + 1)}, s{strf("track %zu synth.", k + 1)}, e{strf("track %zu", k + 1)};
-        s.dashed = true;
-        for (const auto& p : r.points) {
-          if (k >= p.tracks.size()) {  // a gap in the line
-            for (auto* series : {&f, &s, &e}) {
-              series->x.push_back(p.angles_deg[0]);
-              series->y.push_back(NAN);
-            }
-            continue;
-          }
-          const auto& t = p.tracks[k];
-          if (t.state.rfind("lost", 0) == 0 || t.state.rfind("restarted", 0) == 0)  // another mode from here: break the line
-            for (auto* series : {&f, &s, &e}) series->x.push_back(p.angles_deg[0]), series->y.push_back(NAN);
-          f.x.push_back(p.angles_deg[0]);
-          f.y.push_back(t.stable ? t.frequency_hz : NAN);
-          s.x.push_back(p.angles_deg[0]);
-          s.y.push_back(t.stable ? t.synth_hz : NAN);
-          e.x.push_back(p.angles_deg[0]);
-          e.y.push_back(t.stable ? 100 * std::abs(t.synth_error) : NAN);
-        }
-        freq.push_back(f);
-        err.push_back(e);
-      }
-      figures::linePlot(out.stage("frequencies.png"), freq, "System modes tracked by shape",
-                               r.axes[0].joint + " angle (deg)", "frequency (Hz)", true);
-      figures::linePlot(out.stage("synthesis_error.png"), err, "Synthesis error: " + r.synthesis_method,
-                               r.axes[0].joint + " angle (deg)", "|synthesized / full - 1| (%)", false);
+      lineSweepPlots(out, r, tracks, scene_name);
     } else {
       const auto a0 = r.axes[0].values(), a1 = r.axes[1].values();
       Eigen::MatrixXd worst = Eigen::MatrixXd::Zero(a1.size(), a0.size());
@@ -89,7 +111,7 @@ void plots(OutputDir& out, const SweepResult& r) {
       for (double v : a1) rows.push_back(strf("%g", v));
       for (double v : a0) cols.push_back(strf("%g", v));
       figures::heatmap(out.stage("synthesis_error.png"), worst, rows, cols,
-                              "Worst synthesis error over the tracked modes (%)", r.axes[1].joint + " (deg)",
+                              "Worst synthesis error over the tracked modes (%): " + scene_name, r.axes[1].joint + " (deg)",
                               r.axes[0].joint + " (deg)", 0.0, std::max(worst.maxCoeff(), 1e-3));
     }
   } catch (const std::runtime_error& e) {
@@ -118,7 +140,7 @@ int runSweepCommand(const SweepArgs& args) {
     if (out) {
       std::ofstream(out->stage("sweep.csv"), std::ios::binary) << sweepCsv(r);
       std::ofstream(out->stage("sweep.json"), std::ios::binary) << sweepJson(r).dump(2) << '\n';
-      plots(*out, r);
+      plots(*out, r, scene.name);
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
     }
     args.json ? emitResult(sweepJson(r)) : emitResult(sweepText(r));

@@ -60,7 +60,7 @@ std::string fileSafe(std::string s) {
   return s;
 }
 
-/// The columns ending in `suffix` (mode<k>_hz; torque.*_margin_pct).
+/// The columns ending in `suffix` (mode<k>_hz; torque_*_margin_pct).
 std::vector<int> columnsLike(const SweepTable& t, const std::string& prefix, const std::string& suffix) {
   std::vector<int> out;
   for (std::size_t c = 0; c < t.header.size(); ++c) {
@@ -106,7 +106,7 @@ std::vector<std::size_t> paretoFront(const std::vector<std::array<double, 3>>& v
 
 void pareto(const SweepTable& t, const fs::path& dir) {
   const int f1 = t.column("mode1_hz"), mass = t.column("mass_kg");
-  const std::vector<int> margins = columnsLike(t, "torque.", "_margin_pct");
+  const std::vector<int> margins = columnsLike(t, "torque_", "_margin_pct");  // check line ids as CSV names
   if (f1 < 0 || mass < 0 || margins.empty()) return;
   std::vector<std::array<double, 3>> v;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {

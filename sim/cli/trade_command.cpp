@@ -70,16 +70,26 @@ int runTradeCommand(const TradeArgs& args) {
       std::ofstream(out->stage("trade.csv"), std::ios::binary) << tradeCsv(s);
       std::ofstream(out->stage("trade.json"), std::ios::binary) << tradeJson(s, target).dump(2) << '\n';
       std::map<std::string, render::Series> by;
-      render::Series front{"Pareto front"};
+      render::Series front{"Pareto front", {}, {}};
       front.dashed = true;
+      front.colour_index = 0;  // black: never an integrator's colour
+      // Each integrator's colour is its place in the integrator table (from 1), in every trade plot.
+      auto colourOf = [](const std::string& name) {
+        const auto& t = integratorTable();
+        for (std::size_t k = 0; k < t.size(); ++k)
+          if (name == t[k].name) return static_cast<int>(k) + 1;
+        return -1;
+      };
       std::vector<const TradeRun*> pareto;
       for (const auto& r : s.runs) {
         if (!r.ok || r.segments) continue;
         auto& series = by[r.integrator];
         series.label = r.integrator;
         series.markers_only = true;
+        series.colour_index = colourOf(r.integrator);
         series.x.push_back(r.seconds);
         series.y.push_back(std::max(r.error_m, 1e-15));
+        series.point_labels.push_back(strf("%.0e", r.accuracy));  // each point's tolerance
         if (r.pareto) pareto.push_back(&r);
       }
       std::sort(pareto.begin(), pareto.end(), [](const TradeRun* a, const TradeRun* b) { return a->seconds < b->seconds; });
@@ -91,8 +101,9 @@ int runTradeCommand(const TradeArgs& args) {
       for (auto& [name, series] : by) all.push_back(series);
       all.push_back(front);
       try {
-        figures::linePlot(out->stage("trade.png"), all, "Error against cost: " + s.scene_name, "CPU time (s)",
-                                 "tip position error (m)", true, true);
+        figures::linePlot(out->stage("trade.png"), all,
+                          "Error against cost: " + s.scene_name + strf(" (%g s run; labels: tolerance)", s.duration),
+                          "CPU time (s)", "largest tip position error (m)", true, true);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }

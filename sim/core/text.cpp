@@ -103,6 +103,26 @@ std::size_t utf8Length(const std::string& s, std::size_t i) {
 }
 }  // namespace
 
+std::string csvColumnName(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (std::isalnum(c) && c < 128) out += static_cast<char>(std::tolower(c));
+    else if (!out.empty() && out.back() != '_') out += '_';
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  if (out.empty() || std::isdigit(static_cast<unsigned char>(out.front()))) out = "c" + std::string(out.empty() ? "" : "_") + out;
+  return out;
+}
+
+std::string unitSlug(const std::string& unit) {
+  std::string u;
+  for (char c : unit) {
+    if (c == '^') continue;  // s^2 -> s2
+    u += c;
+  }
+  return csvColumnName(u);
+}
+
 std::string printable(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size();) {

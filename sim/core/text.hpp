@@ -37,6 +37,15 @@ std::string printable(const std::string& s);
 /// Whether `s` is valid UTF-8 (what JSON and every text output need).
 bool isValidUtf8(const std::string& s);
 
+/// A CSV column name that numpy's genfromtxt(names=True), pandas and MATLAB's readtable
+/// keep as it is: [a-z0-9_] only, every other run of characters one '_' (no '.', ':',
+/// '/', '^'), lower case, never starting with a digit or '_' ("link3a.tip:x" ->
+/// "link3a_tip_x", "gimbal.yaw_angle_deg" -> "gimbal_yaw_angle_deg").
+std::string csvColumnName(const std::string& s);
+
+/// A unit as a column-name suffix: "m/s^2" -> "m_s2", "N*m" -> "n_m", "rad/s" -> "rad_s".
+std::string unitSlug(const std::string& unit);
+
 /// printf into a std::string.
 std::string strf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 

@@ -162,11 +162,42 @@ std::string hamsasVaryText(const std::string& key, const std::vector<HamsasVaryP
   return os.str();
 }
 
+nlohmann::ordered_json hamsasTransmissibilityJson(const HamsasScene& scene, const std::vector<double>& f,
+                                                  const std::vector<Eigen::MatrixXcd>& T, const Eigen::MatrixXcd& T10) {
+  using json = nlohmann::ordered_json;
+  json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "frf";
+  j["scene"] = scene.name;
+  j["dofs"] = std::vector<std::string>(std::begin(kDof), std::end(kDof));
+  j["frequency_hz"] = f;
+  json at10 = json::array(), pairs = json::array();
+  for (int i = 0; i < 6; ++i) {
+    std::vector<double> row;
+    for (int k = 0; k < 6; ++k) row.push_back(decibels(T10(i, k)));
+    at10.push_back(row);
+    for (int k = 0; k < 6; ++k) {
+      std::vector<double> db, ph;
+      for (const auto& Tk : T) db.push_back(decibels(Tk(i, k))), ph.push_back(std::arg(Tk(i, k)) * 180 / M_PI);
+      pairs.push_back({{"table", kDof[i]}, {"ground", kDof[k]},
+                       {"unit", std::string(i < 3 ? "m" : "rad") + "/" + (k < 3 ? "m" : "rad")},
+                       {"magnitude_db", db}, {"phase_deg", ph}});
+    }
+  }
+  j["at_10_hz_db"] = at10;
+  j["pairs"] = pairs;
+  return j;
+}
+
 std::string hamsasTransmissibilityCsv(const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& T) {
   std::ostringstream csv;
   csv << "frequency_hz";
   for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j) csv << ",T_" << kDof[i] << "_from_" << kDof[j] << "_db,T_" << kDof[i] << "_from_" << kDof[j] << "_phase_deg";
+    for (int j = 0; j < 6; ++j) {
+      // The unit of each ratio in its name: table DOF i per ground DOF j, "x_from_rx_db_m_per_rad".
+      const std::string unit = std::string(i < 3 ? "m" : "rad") + "_per_" + (j < 3 ? "m" : "rad");
+      csv << "," << kDof[i] << "_from_" << kDof[j] << "_db_" << unit << "," << kDof[i] << "_from_" << kDof[j] << "_phase_deg";
+    }
   csv << '\n';
   for (std::size_t k = 0; k < f.size(); ++k) {
     csv << strf("%.8g", f[k]);

@@ -28,6 +28,10 @@ std::string hamsasTransmissibilityText(const HamsasScene& scene, const HamsasMod
                                        const std::vector<Eigen::MatrixXcd>& T, const Eigen::MatrixXcd& T10);
 std::string hamsasVaryText(const std::string& key, const std::vector<HamsasVaryPoint>& points);
 /// transmissibility.csv: frequency, then dB and phase of every pair.
+/// frf --json on an isolator: the 6 x 6 transmissibility at 10 Hz (dB of m/m, m/rad,
+/// rad/m, rad/rad) and every pair's curve (dB, deg) over the frequencies.
+nlohmann::ordered_json hamsasTransmissibilityJson(const HamsasScene& scene, const std::vector<double>& f,
+                                                  const std::vector<Eigen::MatrixXcd>& T, const Eigen::MatrixXcd& T10);
 std::string hamsasTransmissibilityCsv(const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& T);
 nlohmann::ordered_json hamsasRomJson(const StateSpace& full, const ReducedModel& red, const ModelError& err,
                                      const std::vector<double>& f);

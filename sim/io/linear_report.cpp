@@ -73,6 +73,45 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
   return os.str();
 }
 
+nlohmann::ordered_json linearSummaryJson(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
+                                         const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& hf,
+                                         const std::string& scene_name) {
+  using json = nlohmann::ordered_json;
+  const StateSpace& s = lm.full;
+  json j;
+  j["mmvlab_version"] = mmvlabVersion();
+  j["command"] = "frf";
+  j["scene"] = scene_name;
+  j["full_states"] = s.numStates();
+  j["reduced_states"] = red.model.numStates();
+  j["kept_frequencies_hz"] = red.kept_frequencies_hz;
+  j["kept_damping_ratios"] = red.kept_damping;
+  j["damping_model"] = describeDamping(lm.damping);
+  j["band_hz"] = {f.front(), f.back()};
+  j["max_relative_frf_error"] = err.max_relative;
+  addLocalError(j, err, s.output_names, s.input_names);
+  const PeakTable peaks = refinedPeaks(lm.second_order, f, hf);
+  const Eigen::MatrixXcd h10 = lm.second_order.response(2 * M_PI * 10.0);
+  json pairs = json::array();
+  for (Eigen::Index o = 0; o < s.C.rows(); ++o)
+    for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
+      const double zeta = peaks.half_power_damping(o, i);
+      pairs.push_back({{"output", s.output_names[o]},
+                       {"output_unit", s.output_units[o]},
+                       {"input", s.input_names[i]},
+                       {"input_unit", s.input_units[i]},
+                       {"peak_hz", peaks.hz(o, i)},
+                       {"peak_db", 20 * std::log10(peaks.magnitude(o, i) + 1e-300)},
+                       {"peak_half_power_damping", zeta > 0 ? json(zeta) : json(nullptr)},
+                       {"at_10_hz_db", 20 * std::log10(std::abs(h10(o, i)) + 1e-300)},
+                       {"rom_relative_error", err.relative(o, i)},
+                       {"rom_local_error", err.local(o, i)},
+                       {"rom_local_error_hz", err.local_hz(o, i)}});
+    }
+  j["pairs"] = pairs;
+  return j;
+}
+
 namespace {
 
 /// The file's date and time fields: now (UTC), as DD-MMM-YY and HH:MM:SS.
@@ -197,8 +236,12 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
 std::string frfCsv(const StateSpace& s, Eigen::Index o, Eigen::Index i, const std::vector<double>& f,
                    const std::vector<Eigen::MatrixXcd>& full, const std::vector<Eigen::MatrixXcd>& reduced) {
   std::ostringstream csv;
-  csv << "frequency_hz,magnitude_db,phase_deg,magnitude_" << safeFileName(s.output_units[o]) << "_per_"
-      << safeFileName(s.input_units[i]) << ",rom_magnitude_db,rom_phase_deg\n";
+  // The magnitude in the pair's units: "magnitude_ratio" for m/s^2 per m/s^2, else
+  // "magnitude_m_s2_per_n" (output unit per input unit).
+  const std::string unit = s.output_units[o] == s.input_units[i]
+                               ? "ratio"
+                               : unitSlug(s.output_units[o]) + "_per_" + unitSlug(s.input_units[i]);
+  csv << "frequency_hz,magnitude_db,phase_deg,magnitude_" << unit << ",rom_magnitude_db,rom_phase_deg\n";
   for (std::size_t k = 0; k < f.size(); ++k) {
     const std::complex<double> a = full[k](o, i), b = reduced[k](o, i);
     const double fa = 20 * std::log10(std::abs(a) + 1e-300), fb = 20 * std::log10(std::abs(b) + 1e-300);

@@ -25,6 +25,10 @@ void addLocalError(nlohmann::ordered_json& j, const ModelError& err, const std::
 
 std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
                               const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& hf);
+/// The same summary as JSON (docs/outputs.md, frf --json).
+nlohmann::ordered_json linearSummaryJson(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
+                                         const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& hf,
+                                         const std::string& scene_name);
 /// The name of the UFF node at the article's base (scene base.position): the reference
 /// node of every function whose input is the table's acceleration.
 extern const char* const kBaseNode;

@@ -21,6 +21,13 @@ nlohmann::ordered_json discretizationJson(const DiscretizationEstimate& d);
 std::string formatConvergenceText(const ConvergenceStudy& c);
 nlohmann::ordered_json convergenceToJson(const ConvergenceStudy& c);
 
+/// modes.csv: one row per mode (number, frequency_hz, stable, rigid_body, damping_ratio,
+/// effective masses, geometric share, dominant links, peak point).
+std::string modesCsv(const ModesReport& r);
+/// converge.csv: one row per mode and run (mode, segments, dofs, frequency_hz,
+/// relative_error against the Richardson value, richardson_hz, observed_order, check).
+std::string convergenceCsv(const ConvergenceStudy& c);
+
 /// The version stamped into every JSON document.
 const char* mmvlabVersion();
 

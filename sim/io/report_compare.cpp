@@ -143,11 +143,12 @@ std::string render(const CompareReport& r, bool md) {
   return os.str();
 }
 
+/// A text cell that every CSV reader splits right, quoted or not (numpy's genfromtxt and
+/// Octave's csvread do not honour quotes): ',' becomes ';' and '"' becomes '\''.
 std::string csvEscape(const std::string& s) {
-  if (s.find_first_of(",\"") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
+  std::string out = s;
+  for (char& c : out) c = c == ',' ? ';' : c == '"' ? '\'' : c;
+  return out;
 }
 
 std::string macCsv(const SynthesisResult& s) {

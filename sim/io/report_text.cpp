@@ -166,3 +166,34 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
 }
 
 }  // namespace mmv
+
+namespace mmv {
+
+std::string modesCsv(const ModesReport& r) {
+  std::ostringstream os;
+  os << "mode,frequency_hz,stable,rigid_body,damping_ratio,effective_mass_x_kg,effective_mass_y_kg,"
+        "geometric_stiffness_share,kinetic_link,strain_link,peak_point\n";
+  for (const auto& m : r.modes)
+    os << m.number << ',' << strf("%.10g", m.stable ? m.frequency_hz : 0.0) << ',' << (m.stable ? 1 : 0) << ','
+       << (m.rigid_body ? 1 : 0) << ',' << strf("%.6g", m.damping_ratio) << ',' << strf("%.8g", m.effective_mass_x_kg) << ','
+       << strf("%.8g", m.effective_mass_y_kg) << ',' << strf("%.6g", m.geometric_stiffness_share) << ','
+       << m.dominant_link_kinetic << ',' << m.dominant_link_strain << ',' << m.peak_point << '\n';
+  return os.str();
+}
+
+std::string convergenceCsv(const ConvergenceStudy& c) {
+  std::ostringstream os;
+  os << "mode,segments,dofs,frequency_hz,relative_error,richardson_hz,observed_order,check\n";
+  for (const auto& m : c.modes)
+    for (std::size_t k = 0; k < c.runs.size() && k < m.frequency_hz.size(); ++k) {
+      const double f = m.frequency_hz[k];
+      if (!std::isfinite(f)) continue;  // the run has no such mode
+      os << m.number << ',' << c.runs[k].segments << ',' << c.runs[k].num_dofs << ',' << strf("%.10g", f) << ','
+         << (m.has_estimate ? strf("%.6g", (f - m.extrapolated_hz) / m.extrapolated_hz) : "") << ','
+         << (m.has_estimate ? strf("%.10g", m.extrapolated_hz) : "") << ','
+         << (m.has_observed_order ? strf("%.4g", m.observed_order) : "") << ',' << m.check << '\n';
+    }
+  return os.str();
+}
+
+}  // namespace mmv

@@ -80,7 +80,8 @@ CsvTable parseNumericCsv(const std::string& text, const std::string& source) {
 
 void checkRunModel(const RunDir& run, const Model& model) {
   std::vector<std::string> want{"time_s"};
-  for (const auto& c : model.getCoordinates()) want.push_back(c.name + (c.motion == CoordinateMotion::Rotation ? "_rad" : "_m"));
+  for (const auto& c : model.getCoordinates())
+    want.push_back(csvColumnName(c.name + (c.motion == CoordinateMotion::Rotation ? "_rad" : "_m")));
   if (want == run.states.columns) return;
   throw SceneError(strf("%s/states.csv: the run has %zu coordinates, the model of %s has %zu (or other names): "
                         "render a run with the scene and segments it was made with (its scene.yaml and run.json)",

@@ -127,7 +127,7 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
 
 std::string simulationHistoryCsv(const SimulationRecord& rec) {
   std::ostringstream os;
-  for (std::size_t c = 0; c < rec.columns.size(); ++c) os << (c ? "," : "") << rec.columns[c];
+  for (std::size_t c = 0; c < rec.columns.size(); ++c) os << (c ? "," : "") << csvColumnName(rec.columns[c]);
   os << '\n';
   for (const auto& row : rec.rows) {
     for (std::size_t c = 0; c < row.size(); ++c) os << (c ? "," : "") << strf("%.10g", row[c]);

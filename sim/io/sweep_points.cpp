@@ -192,6 +192,8 @@ void layOut(SweepContext& c, const PointResult& nominal) {
       c.header.push_back(o.substr(5));
     }
   }
+  // Scene keys and JSON pointers as column names every CSV reader keeps (no '.', '/').
+  for (auto& h : c.header) h = csvColumnName(h);
 }
 
 }  // namespace

@@ -137,7 +137,8 @@ std::vector<OutputSpec> defaultOutputs(const ArticleScene& scene) {
   std::vector<OutputSpec> out;
   for (const auto& l : scene.article.links)
     for (int a = 0; a < 2; ++a)
-      out.push_back({l.name + ".tip_a" + (a ? "y" : "x"), OutputKind::Acceleration, l.name + ".tip", a, true});
+      // Named as --output names the same signal (POINT:AXIS, absolute acceleration by default).
+      out.push_back({l.name + ".tip:" + (a ? "y" : "x"), OutputKind::Acceleration, l.name + ".tip", a, true});
   return out;
 }
 

@@ -396,7 +396,7 @@ TEST_F(Cli, SimulateSlewScene) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Torques the torquers must give"), std::string::npos);
   const std::string csv = slurp(out / "history.csv");
-  EXPECT_EQ(csv.rfind("time_s,table_x_m,table_force_n,gimbal.yaw_angle_deg,gimbal.yaw_torque_n_m,gimbal.pitch_angle_deg,", 0), 0u);
+  EXPECT_EQ(csv.rfind("time_s,table_x_m,table_force_n,gimbal_yaw_angle_deg,gimbal_yaw_torque_n_m,gimbal_pitch_angle_deg,", 0), 0u);
   EXPECT_NE(csv.find(",joint1_angle_deg,joint1_torque_n_m,"), std::string::npos);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 1001);  // header + 2 s at 500 Hz + t = 0
   EXPECT_EQ(csv.find("nan"), std::string::npos);

@@ -2,6 +2,8 @@
 // run had it (the tips land on the history's tip columns), and bad files are named.
 #include <gtest/gtest.h>
 
+#include "sim/core/text.hpp"
+
 #include "sim/io/run_dir.hpp"
 #include "sim/io/simulation_report.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
@@ -29,7 +31,8 @@ TEST(RunDir, RecordedCoordinatesPutTheTipsWhereTheRunHadThem) {
     setRunCoordinates(run.states, run.history.rows[k][0], *model, s);
     for (const char* tip : {"link2.tip", "link3a.tip"}) {
       const SimTK::Vec3 x = model->findPointLocation(s, *model->findPoint(tip));
-      const int cx = run.history.column(std::string(tip) + "_x_m"), cy = run.history.column(std::string(tip) + "_y_m");
+      const int cx = run.history.column(csvColumnName(std::string(tip) + "_x_m")),
+                cy = run.history.column(csvColumnName(std::string(tip) + "_y_m"));
       ASSERT_GT(cx, 0);
       EXPECT_NEAR(x[0], run.history.rows[k][static_cast<std::size_t>(cx)], 1e-8) << tip << " at row " << k;
       EXPECT_NEAR(x[1], run.history.rows[k][static_cast<std::size_t>(cy)], 1e-8) << tip << " at row " << k;

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Every CSV that mmvlab writes, read back as users read it: Python's csv module and
+# numpy (tests/readback/read_csv.py), Octave's csvread and MATLAB's variable-name rule
+# (tests/readback/read_csv.m). The outputs come from the commands a review uses, run
+# small. ctest runs it; by hand: tests/readback/readback.sh build/mmvlab
+set -euo pipefail
+bin=$(realpath "${1:-build/mmvlab}")
+here=$(cd "$(dirname "$0")" && pwd)
+cd "$here/../.."
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+run() { local name=$1; shift; "$bin" "$@" --out "$tmp/$name" >/dev/null 2>"$tmp/$name.err" || { cat "$tmp/$name.err"; exit 1; }; }
+run modes modes
+run converge converge --max-segments 4
+run compare compare
+run sweep-config sweep-config --grid joint1:-30:30:30 --modes 3
+run frf frf scenes/mmv-table.yaml --input table_x --points 40
+run frf-hamsas frf scenes/hamsas.yaml --points 20
+run simulate simulate scenes/mmv-slew.yaml --segments 2 --duration 0.2 --sample-rate 250
+run trade trade scenes/mmv-slew.yaml --segments 2 --duration 0.1 --integrators cpodes --accuracies 1e-3 --segment-ladder 1
+run place-sensors place-sensors --count 8
+run correlate correlate scenes/mmv-table.yaml --measured "$tmp/frf/frf.uff" --modes 6
+printf 'scene: %s/scenes/mmv.yaml\nparameters:\n  - {key: links.link2.length, values: [1.4, 1.6]}\noutputs: [frequencies, mass, check, "json:modes/modes/0/effective_mass_x_kg"]\nmodes: 2\n' "$PWD" > "$tmp/spec.yaml"
+"$bin" sweep "$tmp/spec.yaml" --out "$tmp/sweep" >/dev/null 2>&1
+/usr/bin/python3 "$here/read_csv.py" "$tmp"
+mapfile -t files < <(find "$tmp" -name '*.csv' ! -name journal.csv | sort)
+octave --no-gui --quiet --norc "$here/read_csv.m" "${files[@]}"
