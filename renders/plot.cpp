@@ -160,7 +160,8 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
   y1 += pad;
   // Points drawn as markers would be cut by the frame at the ends of the x range.
   if (std::any_of(series.begin(), series.end(), [](const Series& s) { return s.markers_only || s.x.size() < 80; })) {
-    const double xpad = 0.03 * (x1 - x0);
+    const bool labelled = std::any_of(series.begin(), series.end(), [](const Series& s) { return !s.point_labels.empty(); });
+    const double xpad = (labelled ? 0.08 : 0.03) * (x1 - x0);  // room for a point's label at the right end
     x0 -= xpad;
     x1 += xpad;
   }

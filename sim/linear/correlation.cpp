@@ -81,10 +81,16 @@ std::pair<std::string, double> nearestStation(const Model& model, const SimTK::S
       if (at(l, c) < at(l, d)) b = d;
       else a = c;
     }
-    const double s = std::floor(0.5 * (a + b) * 1e6) / 1e6;  // to 1 um, never past the tip
-    if (const double d = at(l, s); d < best_d) best_d = d, best_link = l.name, best_s = s;
+    double s = std::floor(0.5 * (a + b) * 1e6) / 1e6;  // to 1 um, never past the tip
+    if (s < 1e-5) s = 0;                             // a node at a joint names the link's end exactly
+    if (l.length - s < 1e-5) s = l.length;
+    // A node at a joint is as near to the links on both sides (to a test's geometry
+    // tolerance): the first link in the scene keeps it unless another is nearer by 1 mm.
+    constexpr double kJointTie = 1e-3;
+    if (const double d = at(l, s); d < best_d - kJointTie || (best_link.empty() && d < best_d))
+      best_d = d, best_link = l.name, best_s = s;
   }
-  return {strf("%s@%.6fm", best_link.c_str(), best_s), best_d};
+  return {strf("%s@%sm", best_link.c_str(), shortest(best_s).c_str()), best_d};
 }
 
 std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet& test, const CorrelateOptions& o) {
