@@ -20,6 +20,14 @@ ArticleScene tableScene(int segments) {
   return s;
 }
 
+/// The table scene's damping: c = 2 ms * k in every bending hinge.
+DampingSpec hingeDamping() {
+  DampingSpec d;
+  d.kind = DampingSpec::Kind::HingeViscous;
+  d.hinge_beta = 0.002;
+  return d;
+}
+
 TEST(Damping, ModalAndRayleighGiveTheirClosedForms) {
   const ArticleScene scene = tableScene(8);
   const SolvedScene s = solveScene(scene);
@@ -44,9 +52,7 @@ TEST(Damping, ModalAndRayleighGiveTheirClosedForms) {
 TEST(Damping, HingeDampersMatchTheFullFirstOrderEigenvalues) {
   const ArticleScene scene = tableScene(8);
   const SolvedScene s = solveScene(scene);
-  DampingSpec d;
-  d.kind = DampingSpec::Kind::HingeViscous;
-  d.hinge_beta = 0.002;
+  const DampingSpec d = hingeDamping();
   const ModalDamping md = modalDamping(*s.model, s.linearized, s.modes, d, 8);
   // The same physics without the modal basis: A = [0 I; -M^-1 K, -M^-1 C] over the DOFs.
   const Eigen::MatrixXd& M = s.linearized.M;
@@ -79,9 +85,7 @@ TEST(Damping, ProjectionOnTheLowestModesIsWithinATenthOfAPercent) {
   // 32 segments per link: 128 DOF, where `modes` solves only the lowest (2 x 12) modes.
   const ArticleScene scene = tableScene(32);
   const SolvedScene s = solveScene(scene);
-  DampingSpec d;
-  d.kind = DampingSpec::Kind::HingeViscous;
-  d.hinge_beta = 0.002;
+  const DampingSpec d = hingeDamping();
   const ModalDamping exact = modalDamping(*s.model, s.linearized, s.modes, d, 12);
   ASSERT_TRUE(exact.exact);
   ModalSolution lowest = s.modes;
