@@ -180,6 +180,7 @@ struct SweepMergeArgs {
   std::vector<std::string> shards;
   std::string out;
   bool force = false;
+  bool json = false;
 };
 
 /// `render --history`: frames of a time run (sim/cli/render_history.cpp).

@@ -94,8 +94,17 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
 int runSweepMergeCommand(const SweepMergeArgs& args) {
   return guarded([&] {
     const std::string csv = mergeSweepShards(args.shards, args.out, args.force);
-    writeSweepPlots(args.out);
-    std::cout << "merged " << args.shards.size() << " shards into " << csv << '\n';
+    const std::vector<std::string> figures = writeSweepPlots(args.out);
+    if (args.json) {
+      nlohmann::ordered_json j;
+      j["command"] = "sweep-merge";
+      j["shards"] = args.shards;
+      j["csv"] = csv;
+      j["figures"] = figures;
+      emitResult(j);
+    } else {
+      emitResult("merged " + std::to_string(args.shards.size()) + " shards into " + csv + "\n");
+    }
     return kOk;
   });
 }

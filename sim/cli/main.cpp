@@ -302,6 +302,7 @@ std::pair<CLI::App*, CLI::App*> addDesignSweepCommands(CLI::App& app, DesignSwee
   m->add_option("shards", sm.shards, "Shard directories (OUT/shard-I-of-N)")->required();
   m->add_option("--out", sm.out, "Directory for the merged sweep.csv")->required();
   m->add_flag("--force", sm.force, "Replace an existing merged sweep.csv");
+  m->add_flag("--json", sm.json, "Print the summary as JSON (the merged CSV and the figures)");
   return {s, m};
 }
 

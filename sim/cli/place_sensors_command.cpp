@@ -116,7 +116,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       std::vector<std::string> rows, cols;
       for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
         rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j], s.target_frequencies_hz[j]));
-        cols.push_back(std::to_string(s.target_modes[j]));
+        cols.push_back(strf("%d %.3g Hz", s.target_modes[j], s.target_frequencies_hz[j]));  // two lines under the column
       }
       try {
         figures::heatmap(out->stage("automac.png"), s.result.automac, rows, cols,

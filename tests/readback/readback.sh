@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Every CSV that mmvlab writes, read back as users read it: Python's csv module and
-# numpy (tests/readback/read_csv.py), Octave's csvread and MATLAB's variable-name rule
-# (tests/readback/read_csv.m). The outputs come from the commands a review uses, run
+# Every CSV and JSON file that mmvlab writes, read back as users read them: Python's csv
+# module, numpy and json (tests/readback/read_outputs.py), Octave's csvread and MATLAB's
+# variable-name rule (tests/readback/read_csv.m). (The .mat files are loaded into
+# Octave's ss() by tests/sim/io/mat_file_test.cpp, the UFF files read back by
+# tests/sim/io/uff_test.cpp.) The outputs come from the commands a review uses, run
 # small. ctest runs it; by hand: tests/readback/readback.sh build/mmvlab
 set -euo pipefail
 bin=$(realpath "${1:-build/mmvlab}")
@@ -22,6 +24,11 @@ run place-sensors place-sensors --count 8
 run correlate correlate scenes/mmv-table.yaml --measured "$tmp/frf/frf.uff" --modes 6
 printf 'scene: %s/scenes/mmv.yaml\nparameters:\n  - {key: links.link2.length, values: [1.4, 1.6]}\noutputs: [frequencies, mass, check, "json:modes/modes/0/effective_mass_x_kg"]\nmodes: 2\n' "$PWD" > "$tmp/spec.yaml"
 "$bin" sweep "$tmp/spec.yaml" --out "$tmp/sweep" >/dev/null 2>&1
-/usr/bin/python3 "$here/read_csv.py" "$tmp"
+run modes-damped modes scenes/mmv-table.yaml --modes 6
+"$bin" sweep-merge "$tmp/sweep" --out "$tmp/merged" --json > "$tmp/merged.json"
+/usr/bin/python3 "$here/read_outputs.py" "$tmp"
 mapfile -t files < <(find "$tmp" -name '*.csv' ! -name journal.csv | sort)
-octave --no-gui --quiet --norc "$here/read_csv.m" "${files[@]}"
+# (Octave 7 prints "error: ignoring const execution_exception& while preparing to exit"
+# after any script run with arguments; it does not change the exit status.)
+octave --no-gui --no-window-system --quiet --norc "$here/read_csv.m" "${files[@]}" \
+  2> >(grep -v "ignoring const execution_exception" >&2)

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Reads every CSV file under the given directories the way users' tools do, and fails
-(exit 1, naming the file and the column) if any would mangle it or cannot read it:
+"""Reads every CSV and JSON file under the given directories the way users' tools do,
+and fails (exit 1, naming the file and the column) if any would mangle it or cannot
+read it. JSON: Python's json module, strictly (NaN and Infinity refused). CSV:
 
 - Python's csv module: a header, and every row as long as it;
 - numpy.genfromtxt(names=True): the field names it makes must be the header's own
@@ -10,6 +11,7 @@
 
 Prints 'N passed, N failed' (one test per file)."""
 import csv
+import json
 import keyword
 import re
 import sys
@@ -48,12 +50,24 @@ def problems(path):
     return out
 
 
+def json_problems(path):
+    def refuse(name):
+        raise ValueError(f"{name} is not JSON")
+    try:
+        with open(path) as f:
+            json.load(f, parse_constant=refuse)
+    except ValueError as e:
+        return [f"not strict JSON: {e}"]
+    return []
+
+
 def main():
     # journal.csv is a sweep's own resume record (a comment line, then rows), not a table.
     files = sorted(p for d in sys.argv[1:] for p in Path(d).rglob("*.csv") if p.name != "journal.csv")
+    files += sorted(p for d in sys.argv[1:] for p in Path(d).rglob("*.json"))
     passed = failed = 0
     for p in files:
-        bad = problems(p)
+        bad = json_problems(p) if p.suffix == ".json" else problems(p)
         if bad:
             failed += 1
             for b in bad:
@@ -61,7 +75,7 @@ def main():
         else:
             passed += 1
     if not files:
-        print("no CSV file found")
+        print("no CSV or JSON file found")
         failed += 1
     print(f"{passed} passed, {failed} failed")
     return 1 if failed else 0
