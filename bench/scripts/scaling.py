@@ -22,6 +22,9 @@ def commands(n, out):
                                          "link3a.tip:x", "--rom-modes", "10"] + seg),
         ("frf, default 2 x 8 pairs", ["frf", "scenes/mmv-table.yaml"] + seg),
         ("rom, default 2 x 8 pairs", ["rom", "scenes/mmv-table.yaml", "--out", out, "--force"] + seg),
+        ("modes, table scene (damped)", ["modes", "scenes/mmv-table.yaml"] + seg),
+        ("correlate, 16 FRFs + 12 modes", ["correlate", "scenes/mmv-table.yaml", "--measured",
+                                           "docs/figures/correlate/measured.uff", "--modes", "12"] + seg),
     ]
 
 

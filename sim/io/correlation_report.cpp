@@ -56,7 +56,7 @@ std::string correlationText(const ArticleScene& scene, const CorrelationResult& 
     const MeasuredMode& t = r.test_modes[p.test];
     const ModeInfo& m = r.model_modes[p.model];
     pairs.add({strf("T%d", p.test + 1), strf("%.4f", t.frequency_hz), percent(t.damping_ratio), strf("M%d", m.number),
-               strf("%.4f", m.frequency_hz), r.model_damped ? percent(m.damping_ratio) : "-",
+               strf("%.4f", m.frequency_hz), r.model_damped && m.has_damping ? percent(m.damping_ratio) : "-",
                strf("%+.2f", 100 * (m.frequency_hz - t.frequency_hz) / t.frequency_hz), strf("%.3f", p.mac)});
   }
   if (!pairs.empty()) os << pairs.text();
@@ -104,7 +104,7 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
   for (const auto& m : r.model_modes) {
     json x = {{"label", strf("M%d", m.number)}, {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
               {"rigid_body", m.rigid_body}};
-    if (r.model_damped && m.stable && !m.rigid_body) x["damping_ratio"] = m.damping_ratio;
+    if (r.model_damped && m.stable && !m.rigid_body && m.has_damping) x["damping_ratio"] = m.damping_ratio;
     mm.push_back(x);
   }
   j["test_modes"] = tm;

@@ -221,7 +221,7 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
     m.mode = k + 1;
     m.frequency_hz = modes.frequencyHz(k);
     m.modal_mass = 1.0;
-    m.damping_ratio = damping.ratio[k];
+    m.damping_ratio = k < static_cast<int>(damping.ratio.size()) ? damping.ratio[k] : 0.0;
     const Eigen::VectorXd u = P * modes.shapes.col(k);
     for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
       m.nodes.push_back(static_cast<int>(p) + 1);

@@ -37,7 +37,7 @@ json modeJson(const ModesReport& r, const ModeInfo& m) {
              {"kinetic_energy_share_by_link", shares(m.kinetic_by_link)},
              {"strain_energy_share_by_link", shares(m.strain_by_link)}};
   if (!m.stable) mj["growth_rate_per_s"] = std::sqrt(-m.omega2);
-  if (r.damped && m.stable && !m.rigid_body) {
+  if (r.damped && m.stable && !m.rigid_body && m.has_damping) {
     mj["damping_ratio"] = m.damping_ratio;
     mj["damped_natural_frequency_hz"] = m.damped_natural_hz;
   }

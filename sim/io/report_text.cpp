@@ -73,7 +73,9 @@ std::string formatModesText(const ModesReport& r) {
     const std::string s = m.dominant_link_strain.empty()
                               ? std::string("-")
                               : strf("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain_by_link, m.dominant_link_strain));
-    const std::string zeta = !r.damped ? "" : m.rigid_body || !m.stable ? strf("%8s  ", "-") : strf("%8.3f  ", 100 * m.damping_ratio);
+    const std::string zeta = !r.damped                                     ? ""
+                             : m.rigid_body || !m.stable || !m.has_damping ? strf("%8s  ", "-")
+                                                                           : strf("%8.3f  ", 100 * m.damping_ratio);
     os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s%s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
               100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, zeta.c_str(),
               m.peak_point.c_str());
@@ -175,7 +177,7 @@ std::string modesCsv(const ModesReport& r) {
         "geometric_stiffness_share,kinetic_link,strain_link,peak_point\n";
   for (const auto& m : r.modes)
     os << m.number << ',' << strf("%.10g", m.stable ? m.frequency_hz : 0.0) << ',' << (m.stable ? 1 : 0) << ','
-       << (m.rigid_body ? 1 : 0) << ',' << strf("%.6g", m.damping_ratio) << ',' << strf("%.8g", m.effective_mass_x_kg) << ','
+       << (m.rigid_body ? 1 : 0) << ',' << (m.has_damping ? strf("%.6g", m.damping_ratio) : "") << ',' << strf("%.8g", m.effective_mass_x_kg) << ','
        << strf("%.8g", m.effective_mass_y_kg) << ',' << strf("%.6g", m.geometric_stiffness_share) << ','
        << m.dominant_link_kinetic << ',' << m.dominant_link_strain << ',' << m.peak_point << '\n';
   return os.str();

@@ -1,5 +1,6 @@
 #include "sim/modes/damping.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -52,10 +53,18 @@ Eigen::MatrixXd projectedDamping(const Model& model, const LinearizedModel& lin,
 
 }  // namespace
 
-ModalDamping modalDamping(const Model& model, const LinearizedModel& lin, const ModalSolution& modes,
+ModalDamping modalDamping(const Model& model, const LinearizedModel& lin, const ModalSolution& all_modes,
                           const DampingSpec& damping, int count) {
+  MMV_DEMAND(count >= 0 && count <= all_modes.shapes.cols());
+  // The basis: every mode held, up to kMaxDampingBasis (a dense nonsymmetric eigenproblem
+  // of twice its size); past that the lowest kMaxDampingBasis, and ratios for the lower half.
+  ModalSolution modes = all_modes;
+  if (modes.shapes.cols() > kMaxDampingBasis) {
+    modes.shapes = all_modes.shapes.leftCols(kMaxDampingBasis);
+    modes.omega2 = all_modes.omega2.head(kMaxDampingBasis);
+    count = std::min(count, kMaxDampingBasis / 2);
+  }
   const Eigen::Index m = modes.shapes.cols();
-  MMV_DEMAND(count >= 0 && count <= m);
   ModalDamping out;
   out.basis_modes = static_cast<int>(m);
   out.exact = m == static_cast<Eigen::Index>(lin.Z.cols() > 0 ? lin.Z.cols() : lin.dofs.size());

@@ -35,15 +35,23 @@ Eigen::VectorXd hingeDampers(const Model& model, const std::vector<int>& dofs, d
 /// ("hinge dampers c = 0.002 s * k", "modal, 1 % of critical in every mode").
 std::string describeDamping(const DampingSpec& d);
 
+/// The most real modes the damped eigenproblem is solved over (2x as many states, a dense
+/// nonsymmetric eigen solution: under a second at 400 on this machine).
+inline constexpr int kMaxDampingBasis = 400;
+
 struct ModalDamping {
-  std::vector<double> ratio;             ///< per mode asked for: zeta (1: overdamped; 0 for rigid or unstable modes).
+  /// Per mode asked for, lowest first: zeta (1: overdamped; 0 for rigid or unstable
+  /// modes). Fewer than asked when the basis was capped at kMaxDampingBasis: then the
+  /// lowest kMaxDampingBasis / 2 only.
+  std::vector<double> ratio;
   std::vector<double> natural_hz;        ///< |lambda| / (2 pi) of the damped mode (the real mode's frequency when undamped).
   int basis_modes = 0;                   ///< real modes the damped eigenproblem was solved over.
   bool exact = false;                    ///< basis_modes is every mode of the model.
 };
 
 /// The damping ratio of the first `count` modes of `modes` (shapes over lin.dofs,
-/// mass-normalised) under `damping`, solved over every mode `modes` holds (see above).
+/// mass-normalised) under `damping`, solved over every mode `modes` holds, at most
+/// kMaxDampingBasis (see above).
 /// Throws NumericalError if the damped eigen solution fails.
 ModalDamping modalDamping(const Model& model, const LinearizedModel& lin, const ModalSolution& modes,
                           const DampingSpec& damping, int count);

@@ -288,8 +288,9 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.scene_name = scene.name;
   rep.scene_source = scene.source;
   rep.gravity = scene.gravity;
-  const int solved_modes =
-      options.damping && options.max_modes > 0 ? std::max(2 * options.max_modes, options.max_modes + 20) : options.max_modes;
+  const int solved_modes = options.damping && options.max_modes > 0
+                               ? std::min(std::max(2 * options.max_modes, options.max_modes + 20), kMaxDampingBasis)
+                               : options.max_modes;
   const SolvedScene s = solveScene(scene, options.equilibrium, solved_modes);
   rep.seconds_build = s.seconds_build;
   rep.seconds_equilibrium = s.seconds_equilibrium;
@@ -338,7 +339,8 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     m.rigid_body = s.modes.isRigidBody(i);
     m.frequency_hz = s.modes.frequencyHz(i);
     m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.linearized.K_geometric * phi) / m.omega2;
-    if (rep.damped) {
+    if (rep.damped && i < static_cast<int>(damping.ratio.size())) {
+      m.has_damping = true;
       m.damping_ratio = damping.ratio[i];
       m.damped_natural_hz = damping.natural_hz[i];
     }

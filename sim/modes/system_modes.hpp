@@ -56,6 +56,7 @@ struct ModeInfo {
   /// Under the scene's damping (ModesReport::damped): the ratio to critical (1:
   /// overdamped) and |lambda| / 2 pi of the damped mode (sim/modes/damping.hpp).
   double damping_ratio = 0, damped_natural_hz = 0;
+  bool has_damping = false;  ///< the ratio was computed (the lowest kMaxDampingBasis / 2 modes at most).
   std::vector<PartShare> kinetic, strain;  ///< per part, sorted, largest first.
   std::vector<PartShare> kinetic_by_link, strain_by_link;  ///< per carrying link, sorted.
   std::string dominant_link_kinetic, dominant_link_strain;  ///< first of the *_by_link lists.

@@ -106,5 +106,21 @@ TEST(Damping, ProjectionOnTheLowestModesIsWithinATenthOfAPercent) {
   for (int k = 0; k < 12; ++k) EXPECT_LT(std::abs(rep.modes[k].damping_ratio / exact.ratio[k] - 1), 1e-3) << "mode " << k + 1;
 }
 
+TEST(Damping, ABasisPastTheCapKeepsTheLowestModesAndSaysSo) {
+  // 101 segments per link: 404 DOF, every mode solved, more than kMaxDampingBasis.
+  const ArticleScene scene = tableScene(101);
+  const SolvedScene s = solveScene(scene);
+  ASSERT_GT(s.modes.shapes.cols(), kMaxDampingBasis);
+  const ModalDamping capped = modalDamping(*s.model, s.linearized, s.modes, hingeDamping(), 300);
+  EXPECT_EQ(capped.basis_modes, kMaxDampingBasis);
+  EXPECT_FALSE(capped.exact);
+  ASSERT_EQ(capped.ratio.size(), static_cast<std::size_t>(kMaxDampingBasis / 2));  // the lower half only
+  ModalSolution lowest = s.modes;
+  lowest.omega2 = s.modes.omega2.head(40);
+  lowest.shapes = s.modes.shapes.leftCols(40);
+  const ModalDamping small = modalDamping(*s.model, s.linearized, lowest, hingeDamping(), 12);
+  for (int k = 0; k < 12; ++k) EXPECT_LT(std::abs(capped.ratio[k] / small.ratio[k] - 1), 1e-3) << "mode " << k + 1;
+}
+
 }  // namespace
 }  // namespace mmv
