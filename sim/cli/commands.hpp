@@ -117,6 +117,9 @@ struct TradeArgs : SceneArgs {
   std::vector<std::string> points;
   double duration = 0;
   double target_error = 0;  ///< m; 0: defaultTradeTarget (1 % of the scored motion)
+  bool all = false;         ///< run every run: no skipping of dominated ones
+  double run_budget = 0;    ///< s; > 0: a run over it is cut
+  double time_budget = 0;   ///< s; > 0: no run starts past it
   std::string out;
   bool force = false;
 };

@@ -206,6 +206,13 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
                  "Error to meet, m (the cheapest run within it is named; default 1 % of the scored points' largest "
                  "motion in the reference run)")
       ->check(positive());
+  tp->add_option("--run-budget", tr.run_budget, "Wall seconds a run may take; a run over it is cut and listed (the reference runs excepted)")
+      ->check(positive());
+  tp->add_option("--time-budget", tr.time_budget, "Wall seconds for the whole trade: past it the run under way is cut and the rest are listed as not run")
+      ->check(positive());
+  tp->add_flag("--all", tr.all,
+               "Run every run; by default a tolerance is skipped when a looser one of its integrator already cost more than "
+               "the cheapest run within the target");
   tp->add_option("--out", tr.out, "Write trade.csv, trade.json and trade.png here");
   tp->add_flag("--force", tr.force, "Replace files of the same names in --out");
   return tp;

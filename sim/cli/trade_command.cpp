@@ -24,7 +24,8 @@ void reportProgress(TradeProblem& problem, const TradeOptions& o, Progress& prog
   const double total =
       2.0 + double(o.integrators.size() * o.accuracies.size()) + (problem.has_segments ? double(o.segments.size()) : 0.0);
   auto done = std::make_shared<int>(0);
-  problem.run = [inner = problem.run, &progress, total, done](const SimulationSpec& spec, int segments) {
+  problem.run = [inner = problem.run, &progress, total, done](const SimulationSpec& spec, int segments,
+                                                               const std::function<void(double)>& cut) {
     progress.report(*done, total,
                     strf("%s at %g", spec.integrator.c_str(), spec.accuracy) +
                         (segments > 0 ? strf(", %d segments", segments) : std::string()));
@@ -32,7 +33,7 @@ void reportProgress(TradeProblem& problem, const TradeOptions& o, Progress& prog
       int& n;
       ~Count() { ++n; }
     } count{*done};
-    return inner(spec, segments);
+    return inner(spec, segments, cut);
   };
 }
 
@@ -47,6 +48,10 @@ int runTradeCommand(const TradeArgs& args) {
     if (!args.segments_ladder.empty()) o.segments = args.segments_ladder;
     o.duration = args.duration;
     o.points = args.points;
+    o.target_m = args.target_error;
+    o.skip_costlier = !args.all;
+    o.run_budget_s = args.run_budget;
+    o.total_budget_s = args.time_budget;
     for (const auto& name : o.integrators)
       if (!findIntegrator(name))
         throw UsageError("--integrators: unknown integrator '" + name + "'" + integratorSuggestion(name) + " (known: " +
@@ -64,7 +69,7 @@ int runTradeCommand(const TradeArgs& args) {
       reportProgress(problem, o, progress);
       return runTrade(problem, o);
     }();
-    const double target = args.target_error > 0 ? args.target_error : defaultTradeTarget(s);
+    const double target = s.target_m;
     checkResultFinite(tradeJson(s, target));  // before any file is committed
     if (out) {
       std::ofstream(out->stage("trade.csv"), std::ios::binary) << tradeCsv(s);

@@ -230,10 +230,10 @@ TradeProblem hamsasTradeProblem(const HamsasScene& base, double duration) {
   p.reference_integrator = "rk_merson";
   p.check_integrator = "arkode_erk";
   p.has_segments = false;
-  p.run = [scene](const SimulationSpec& spec, int) {
+  p.run = [scene](const SimulationSpec& spec, int, const std::function<void(double)>& progress) {
     HamsasScene s = scene;
     s.simulation = spec;
-    return simulate(s);
+    return simulate(s, progress);
   };
   return p;
 }

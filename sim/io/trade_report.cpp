@@ -30,16 +30,26 @@ std::string tradeText(const TradeStudy& s, double target) {
     for (const auto& p : s.points) os << ' ' << p;
     os << "\n\n";
   }
-  Table t({"integrator", "accuracy", "segments", "tip_error_m", "cpu_s", "evaluations", "pareto"});
+  Table t({"integrator", "accuracy", "segments", "tip_error_m", "cpu_s", "evaluations", "pareto", "note"});
   for (const auto& r : s.runs) {
-    if (!r.ok) {
-      t.add({r.integrator, strf("%.0e", r.accuracy), r.segments ? strf("%d", r.segments) : "scene", "FAILED: " + r.failure});
+    const std::string segments = r.segments ? strf("%d", r.segments) : "scene";
+    if (!r.ok) {  // why it has no numbers: the diagnostic, the cut, the skip
+      t.add({r.integrator, strf("%.0e", r.accuracy), segments, "-", "-", "-", "",
+             r.status == "failed" ? "FAILED: " + r.failure : r.failure});
       continue;
     }
-    t.add({r.integrator, strf("%.0e", r.accuracy), r.segments ? strf("%d", r.segments) : "scene", strf("%.3g", r.error_m),
-           strf("%.3f", r.seconds), strf("%ld", r.evaluations), r.pareto ? "*" : ""});
+    t.add({r.integrator, strf("%.0e", r.accuracy), segments, strf("%.3g", r.error_m), strf("%.3f", r.seconds),
+           strf("%ld", r.evaluations), r.pareto ? "*" : "", ""});
   }
   os << t.text();
+  int costlier = 0, cut = 0, not_run = 0;
+  for (const auto& r : s.runs) costlier += r.status == "costlier", cut += r.status == "over_budget", not_run += r.status == "not_run";
+  os << strf("\nThe trade took %.3g s", s.total_seconds);
+  if (costlier + cut + not_run > 0)
+    os << strf(": %d runs skipped as costlier (a looser run of their integrator already cost more than the cheapest run "
+               "within the target; --all runs them), %d cut at the run budget, %d not run (budgets)",
+               costlier, cut, not_run);
+  os << '\n';
   const TradeRun* best = cheapestWithin(s, target);
   if (best)
     os << strf("\nCheapest run within %.3g m: %s at accuracy %.0e (%.3f s, error %.3g m)\n", target, best->integrator.c_str(),
@@ -61,7 +71,8 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
   j["points"] = s.points;  // empty: every link tip
   auto runs = nlohmann::ordered_json::array();
   for (const auto& r : s.runs) {
-    nlohmann::ordered_json x = {{"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments}, {"ok", r.ok}};
+    nlohmann::ordered_json x = {
+        {"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments}, {"ok", r.ok}, {"status", r.status}};
     if (r.ok) {
       x["tip_error_m"] = r.error_m;
       x["cpu_s"] = r.seconds;
@@ -73,6 +84,7 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
     runs.push_back(x);
   }
   j["runs"] = runs;
+  j["total_seconds"] = s.total_seconds;
   const TradeRun* best = cheapestWithin(s, target);
   j["target_error_m"] = target;
   j["reference_amplitude_m"] = s.reference_amplitude_m;
@@ -83,10 +95,11 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
 
 std::string tradeCsv(const TradeStudy& s) {
   std::ostringstream csv;
-  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto\n";
+  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto,status\n";
   for (const auto& r : s.runs)
     csv << r.integrator << ',' << strf("%.3g", r.accuracy) << ',' << r.segments << ',' << r.ok << ','
-        << (r.ok ? strf("%.6g,%.6g,%ld,%d", r.error_m, r.seconds, r.evaluations, r.pareto ? 1 : 0) : std::string(",,,")) << '\n';
+        << (r.ok ? strf("%.6g,%.6g,%ld,%d", r.error_m, r.seconds, r.evaluations, r.pareto ? 1 : 0) : std::string(",,,")) << ','
+        << r.status << '\n';
   return csv.str();
 }
 

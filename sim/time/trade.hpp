@@ -13,8 +13,19 @@
 /// right-hand-side evaluations (realizations). A run is on the Pareto front when no
 /// other run is both cheaper and more accurate. A run that fails is listed with its
 /// diagnostic instead of numbers.
+///
+/// On a budget: each integrator's tolerances run from the loosest to the tightest, and
+///  - a run is skipped as costlier when a looser run of the same integrator already
+///    cost more than the cheapest run within the target (a tighter tolerance never costs
+///    an integrator less, so it could only be dearer than a run that already meets the
+///    target: it cannot be the answer; `--all` runs it anyway, for the whole picture);
+///  - a run is cut when it exceeds the per-run budget (checked at every sample) and
+///    listed as over budget; once the total budget is spent the run under way is cut and
+///    the remaining ones are listed as not run, so the trade ends within the total budget
+///    plus a sample. The two reference runs are never cut: every error needs them.
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,11 +34,22 @@
 
 namespace mmv {
 
+/// Thrown from a run's progress callback when it exceeds the per-run budget.
+struct RunBudgetExceeded : std::runtime_error {
+  RunBudgetExceeded(double fraction_done, double after_s, bool total_budget)
+      : std::runtime_error("run budget exceeded"), fraction(fraction_done), seconds(after_s), total(total_budget) {}
+  double fraction, seconds;
+  bool total;  ///< the trade's total budget, not the run's own
+};
+
 struct TradeRun {
   std::string integrator;
   double accuracy = 0;
   int segments = 0;  ///< 0: the scene's.
   bool ok = true;
+  /// Why a run has no numbers: "failed" (the integrator's diagnostic in `failure`),
+  /// "over_budget" (cut), "costlier" or "not_run" (skipped; `failure` says why); "ok".
+  std::string status = "ok";
   std::string failure;
   double error_m = 0, seconds = 0;
   long evaluations = 0;
@@ -40,6 +62,10 @@ struct TradeOptions {
   std::vector<int> segments{2, 4, 8};  ///< with the reference integrator at 1e-8 (compared to the scene's segments).
   double duration = 0;  ///< 0: the scene's.
   std::vector<std::string> points;  ///< tips scored, e.g. "link3a.tip"; empty: every link tip.
+  double target_m = 0;        ///< the error to meet; 0: defaultTradeTarget of the reference run.
+  bool skip_costlier = true;  ///< skip the runs a looser run of their integrator shows cannot be the answer (above).
+  double run_budget_s = 0;     ///< > 0: a run's wall-time limit (the reference runs excepted).
+  double total_budget_s = 0;   ///< > 0: no run starts once the trade has taken this long.
 };
 
 struct TradeStudy {
@@ -52,6 +78,8 @@ struct TradeStudy {
   /// (m): the scale a default target is taken from.
   double reference_amplitude_m = 0;
   double reference_seconds = 0;
+  double target_m = 0;        ///< the target the skipping used (TradeOptions::target_m or the default).
+  double total_seconds = 0;   ///< the whole trade's wall time.
   std::vector<TradeRun> runs;
 };
 
@@ -74,8 +102,9 @@ struct TradeProblem {
   std::function<bool(const std::string& name, std::string& error)> also_scores;
   std::string reference_integrator = "cpodes", check_integrator = "cvode_bdf";
   bool has_segments = true;             ///< rigid bodies only: no segment ladder.
-  /// Runs with `spec` at `segments` per link (0: the scene's).
-  std::function<SimulationResult(const SimulationSpec& spec, int segments)> run;
+  /// Runs with `spec` at `segments` per link (0: the scene's), calling `progress` with
+  /// the fraction done at every sample (it may throw to cut the run short).
+  std::function<SimulationResult(const SimulationSpec& spec, int segments, const std::function<void(double)>& progress)> run;
 };
 
 /// A problem's common part: the scene's name and simulation settings, with `duration`

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace mmv {
 namespace {
@@ -28,6 +30,7 @@ TEST(Trade, ErrorsFallWithAccuracyAndTheFrontIsNonDominated) {
   o.integrators = {"rk_merson", "cpodes", "cvode_bdf"};
   o.accuracies = {1e-3, 1e-6};
   o.segments = {1};
+  o.skip_costlier = false;  // every run: the whole trade-off is measured here
   const TradeStudy t = runTrade(articleTradeProblem(s), o);
   ASSERT_EQ(t.runs.size(), 7u);
   EXPECT_LT(t.reference_uncertainty_m, 1e-6);
@@ -144,6 +147,93 @@ TEST(Trade, ScoresStations) {
     EXPECT_NE(std::string(e.what()).find("--points: 'link1@3m': "), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("outside link1"), std::string::npos) << e.what();
   }
+}
+
+
+// The trade's budget policy on a stub problem with known costs and errors, so what it
+// skips or cuts does not depend on this machine's speed: "cheap" costs 0.1 s at every
+// tolerance, "dear" 5 s (an explicit method at its stability limit); a run's error is
+// its accuracy in metres; the point moves 1 m, so the default target is 1 cm.
+TradeProblem stubProblem(double sleep_per_sample_s = 0) {
+  SimulationSpec spec;
+  spec.duration = 1;
+  spec.sample_rate_hz = 10;
+  TradeProblem p = tradeProblemBase("stub", spec, 0);
+  p.scorable = {"p"};
+  p.scorable_kind = "point";
+  p.has_segments = false;
+  p.run = [sleep_per_sample_s](const SimulationSpec& s, int, const std::function<void(double)>& progress) {
+    SimulationResult r;
+    r.record.columns = {"time_s", "p_x_m"};
+    r.record.scored = {{"p", {1}}};
+    const double offset = s.accuracy < 1e-9 ? 0.0 : s.accuracy;  // the references are exact
+    for (int k = 0; k <= 10; ++k) {
+      if (sleep_per_sample_s > 0) std::this_thread::sleep_for(std::chrono::duration<double>(sleep_per_sample_s));
+      r.record.rows.push_back({0.1 * k, 0.1 * k + offset});
+      if (progress) progress(k / 10.0);
+    }
+    r.wall_seconds = s.integrator == "rk_merson" ? 5.0 : 0.1;  // "dear" and "cheap"
+    r.realizations = 100;
+    return r;
+  };
+  return p;
+}
+
+TEST(Trade, SkipsTheRunsThatCannotBeTheCheapestWithinTheTarget) {
+  TradeOptions o;
+  o.integrators = {"cpodes", "rk_merson"};  // cheap first, then dear
+  o.accuracies = {1e-6, 1e-3, 1e-4};        // run loosest first whatever the order given
+  const TradeStudy t = runTrade(stubProblem(), o);
+  EXPECT_NEAR(t.target_m, 0.01, 1e-12);
+  ASSERT_EQ(t.runs.size(), 6u);
+  EXPECT_EQ(t.runs[0].accuracy, 1e-3);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(t.runs[k].status, "ok") << k;  // cheap: never dearer than the best
+  EXPECT_EQ(t.runs[3].status, "ok");     // dear at 1e-3: nothing of its own says it cannot win
+  EXPECT_EQ(t.runs[4].status, "costlier");  // dear at 1e-4 and 1e-6: 5 s already, against 0.1 s within 1 cm
+  EXPECT_EQ(t.runs[5].status, "costlier");
+  EXPECT_FALSE(t.runs[4].ok);
+  o.skip_costlier = false;  // --all
+  for (const auto& r : runTrade(stubProblem(), o).runs) EXPECT_EQ(r.status, "ok");
+}
+
+TEST(Trade, BudgetsCutARunAndStopTheTrade) {
+  TradeOptions o;
+  o.integrators = {"cpodes", "cvode_bdf"};
+  o.accuracies = {1e-3, 1e-4};
+  o.run_budget_s = 0.05;  // each stub run sleeps 11 x 20 ms = 0.22 s: cut at its 3rd or 4th sample
+  const TradeStudy cut = runTrade(stubProblem(0.02), o);
+  ASSERT_EQ(cut.runs.size(), 4u);
+  EXPECT_EQ(cut.runs[0].status, "over_budget");
+  EXPECT_NE(cut.runs[0].failure.find("over its 0.05 s budget"), std::string::npos) << cut.runs[0].failure;
+  EXPECT_EQ(cut.runs[1].status, "not_run");  // a tighter run of a cut integrator is not started
+  EXPECT_EQ(cut.runs[2].status, "over_budget");
+  o.run_budget_s = 0;
+  o.total_budget_s = 0.3;  // the two references (0.44 s) already spend it: nothing else starts
+  const TradeStudy stopped = runTrade(stubProblem(0.02), o);
+  for (const auto& r : stopped.runs) EXPECT_EQ(r.status, "not_run") << r.integrator << " " << r.accuracy;
+  EXPECT_GT(stopped.total_seconds, 0.3);
+}
+
+
+// A real run cut mid-way by the budget (Simbody's RK-Merson and CVODE in the SUNDIALS
+// plugin): the run is abandoned between samples and listed, and the next run is
+// unaffected (the sanitized suite checks that nothing leaks).
+TEST(Trade, ARealRunIsCutCleanly) {
+  const ArticleScene s = shortSlew(0.8);
+  TradeOptions o;
+  o.integrators = {"rk_merson", "cvode_bdf"};
+  o.accuracies = {1e-4};
+  o.segments = {};
+  o.run_budget_s = 1e-9;  // over at its first sample after the start
+  const TradeStudy t = runTrade(articleTradeProblem(s), o);
+  ASSERT_EQ(t.runs.size(), 2u);
+  for (const auto& r : t.runs) {
+    EXPECT_EQ(r.status, "over_budget") << r.integrator << ": " << r.failure;
+    EXPECT_FALSE(r.ok);
+  }
+  o.run_budget_s = 0;
+  const TradeStudy again = runTrade(articleTradeProblem(s), o);
+  for (const auto& r : again.runs) EXPECT_TRUE(r.ok) << r.integrator << ": " << r.failure;
 }
 
 }  // namespace
