@@ -94,6 +94,7 @@ struct LinearArgs : SceneArgs {
   bool rad = false;
   std::vector<std::string> vary;  ///< HAM-SAS frf: one "KEY=V1,V2,...".
   bool json = false;  ///< the summary as JSON (frf), rom.json on stdout (rom).
+  double rom_target = 0.01;  ///< peak-normalized error the modes-needed count is for (0: not computed).
   std::string out;
   bool force = false;
 };

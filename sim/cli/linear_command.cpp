@@ -149,7 +149,9 @@ int runFrfCommand(const LinearArgs& args) {
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
     const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
-    const ModelError err = compareResponses(hf, red.model, w);
+    ModelError err = compareResponses(hf, red.model, w);
+    if (args.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
+      modesForTarget(lm.full, reductionOptions(args), hf, w, args.rom_target, std::max(1, std::min(60, lm.full.numStates() / 2)), err);
     if (out) {
       const StateSpace& s = lm.full;
       std::vector<Eigen::MatrixXcd> hr;
@@ -210,7 +212,9 @@ int runRomCommand(const LinearArgs& args) {
     std::vector<double> w(f);
     for (double& x : w) x *= 2 * M_PI;
     const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
-    const ModelError err = compareResponses(hf, red.model, w);
+    ModelError err = compareResponses(hf, red.model, w);
+    if (args.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
+      modesForTarget(lm.full, reductionOptions(args), hf, w, args.rom_target, std::max(1, std::min(60, lm.full.numStates() / 2)), err);
     try {
       writeStateSpaceMat(out.stage("rom.mat"), red.model);
       writeStateSpaceMat(out.stage("full.mat"), lm.full);

@@ -147,6 +147,10 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
     cmd->add_flag("--no-residualize", lin.no_residualize, "Truncate without static residualization");
     cmd->add_option("--damping", lin.damping_ratio, "Modal damping ratio of every mode (default: the scene's damping, else 0.01)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
     cmd->add_flag("--json", lin.json, "Print the summary as JSON (docs/outputs.md)");
+    cmd->add_option("--rom-target", lin.rom_target,
+                    "Report how many modes a reduced model needs for this FRF error relative to each pair's peak (0: skip)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
     cmd->add_option("--out", lin.out, "Output directory");
     cmd->add_flag("--force", lin.force, "Replace files of the same names in --out");
   };

@@ -31,8 +31,25 @@ std::string localErrorLine(const ModelError& err, const std::vector<std::string>
               100 * err.max_local, err.max_local_hz, outputs[o].c_str(), inputs[i].c_str());
 }
 
+std::string modesNeededLine(const ModelError& err) {
+  const auto& n = err.needed;
+  if (!n.computed) return "";
+  if (!n.reached)
+    return strf("Modes a reduced model needs for %.3g %% of each pair's peak: more than %d (%.3g %% with %d)\n",
+                100 * n.target, n.modes, 100 * n.error, n.modes);
+  return strf("Modes a reduced model needs for %.3g %% of each pair's peak: %d (%.3g %%)\n", 100 * n.target, n.modes,
+              100 * n.error);
+}
+
+void addModesNeeded(nlohmann::ordered_json& j, const ModelError& err) {
+  const auto& n = err.needed;
+  if (!n.computed) return;
+  j["modes_for_target"] = {{"target", n.target}, {"reached", n.reached}, {"modes", n.modes}, {"error", n.error}};
+}
+
 void addLocalError(nlohmann::ordered_json& j, const ModelError& err, const std::vector<std::string>& outputs,
                    const std::vector<std::string>& inputs) {
+  addModesNeeded(j, err);
   if (err.local.size() == 0) return;
   const auto [o, i] = err.max_local_pair;
   j["max_local_relative_frf_error"] = err.max_local;
@@ -53,7 +70,7 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
   for (double z : red.kept_damping) os << strf(" %.3g", 100 * z);
   os << strf("\nLargest FRF error of the reduced model over %g-%g Hz, relative to each pair's peak: %.3g %%\n", f.front(),
              f.back(), 100 * err.max_relative);
-  os << localErrorLine(err, s.output_names, s.input_names) << "\n";
+  os << localErrorLine(err, s.output_names, s.input_names) << modesNeededLine(err) << "\n";
   os << "peak_zeta_%: the largest peak's half-power damping, (f2 - f1) / (2 f_peak) ('-': its half-power points are not both in the band)\n";
   Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "peak_zeta_%", "at_10_Hz_dB", "rom_error_%", "rom_local_%",
            "local_at_Hz"});

@@ -126,10 +126,8 @@ StateEigen stateModes(const StateSpace& full, const ReductionOptions& o) {
   return detail::allStateModes(full);
 }
 
-}  // namespace
-
-ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
-  StateEigen sm = stateModes(full, o);
+/// The reduction from the state matrix's modes (all of them, or at least those `o` keeps).
+ReducedModel reduceFrom(const StateSpace& full, StateEigen sm, const ReductionOptions& o) {
   const int unseen = o.drop_unseen ? dropUnseen(sm) : 0;
   std::stable_sort(sm.modes.begin(), sm.modes.end(),
                    [](const ModeRef& a, const ModeRef& b) { return a.magnitude < b.magnitude; });
@@ -150,6 +148,57 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) {
     red.residualized = true;
   }
   return red;
+}
+
+}  // namespace
+
+ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& o) { return reduceFrom(full, stateModes(full, o), o); }
+
+void modesForTarget(const StateSpace& full, const ReductionOptions& base, const std::vector<Eigen::MatrixXcd>& full_responses,
+                    const std::vector<double>& omegas, double target, int max_modes, ModelError& err) {
+  MMV_DEMAND(max_modes >= 1 && target > 0);
+  // Galloping from the count asked for (doubling while the error is above the target),
+  // then bisection: a few small reductions, each from one solution of the state
+  // matrix's lowest modes (the same modes a reduction of its own would compute), solved
+  // again for more only when the search needs more: the many-mode solutions and the
+  // large reduced models are the costly ones.
+  ReductionOptions o = base;
+  o.band_min_hz = o.band_max_hz = 0;
+  StateEigen sm;
+  int solved_for = 0;  // the modes sm holds: the count first tried, more only if the search goes there
+  auto errorWith = [&](int modes) {
+    if (modes > solved_for) {
+      o.modes = solved_for = modes;  // a few more cost much more where overdamped roots crowd past them
+      sm = stateModes(full, o);
+    }
+    o.modes = modes;
+    return compareResponses(full_responses, reduceFrom(full, sm, o).model, omegas).max_relative;
+  };
+  ModelError::ModesNeeded& n = err.needed;
+  n = {};
+  n.computed = true;
+  n.target = target;
+  int lo = 0, hi = std::clamp(base.modes > 0 ? base.modes : 8, 1, max_modes);  // lo fails (or is none)
+  double e_hi = errorWith(hi);
+  while (e_hi > target) {
+    if (hi == max_modes) {  // even the most modes tried do not meet it
+      n.modes = hi;
+      n.error = e_hi;
+      return;
+    }
+    lo = hi;
+    hi = std::min(2 * hi, max_modes);
+    e_hi = errorWith(hi);
+  }
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    const double e = errorWith(mid);
+    if (e <= target) hi = mid, e_hi = e;
+    else lo = mid;
+  }
+  n.reached = true;
+  n.modes = hi;
+  n.error = e_hi;
 }
 
 }  // namespace mmv

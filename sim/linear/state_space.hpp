@@ -175,6 +175,14 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& options
 struct ModelError {
   Eigen::MatrixXd relative;  ///< outputs x inputs.
   double max_relative = 0;
+  /// The fewest kept modes whose reduced model's max_relative meets `target`
+  /// (modesForTarget): `modes` and its error; reached = false when even `modes` (the
+  /// most tried) does not.
+  struct ModesNeeded {
+    bool computed = false, reached = false;
+    double target = 0, error = 0;
+    int modes = 0;
+  } needed;
   Eigen::MatrixXd local, local_hz;  ///< outputs x inputs: worst local error, and where (Hz).
   double max_local = 0, max_local_hz = 0;
   std::pair<Eigen::Index, Eigen::Index> max_local_pair{0, 0};  ///< (output, input).
@@ -186,6 +194,16 @@ ModelError compareResponses(const SecondOrderResponse& a, const StateSpace& b, c
 ModelError compareResponses(const std::vector<Eigen::MatrixXcd>& a, const StateSpace& b, const std::vector<double>& omegas);
 /// The full model's response at each frequency (rad/s), computed once for every use.
 std::vector<Eigen::MatrixXcd> fullResponses(const SecondOrderResponse& h, const std::vector<double>& omegas);
+
+/// The fewest modes a reduced model of `full` needs for its largest FRF error relative
+/// to each pair's peak (compareResponses' max_relative against `full_responses`, the
+/// full model at `omegas`) to be at most `target`: reductions with `base`'s options and
+/// 1..max_modes modes, searched from base.modes by doubling, then bisection (the error
+/// falls as modes are added; the test checks the answer against a scan). Fills err.needed.
+void modesForTarget(const StateSpace& full, const ReductionOptions& base,
+                    const std::vector<Eigen::MatrixXcd>& full_responses, const std::vector<double>& omegas,
+                    double target, int max_modes, ModelError& err);
+
 
 /// The HAM-SAS authors' cross-check (docs/sources.md section 3): eigenvalues of an implicit integrator's Jacobian
 /// J(c) = E - c A (F = E y' - A y, dCoef = c) from the pencil J(-c) v = Lambda J(c) v,

@@ -175,6 +175,46 @@ TEST(StateSpace, ResidualizationKeepsEveryDcGainAndTruncationDoesNot) {
   EXPECT_GT((trunc.model.response(0.0) - h0).cwiseAbs().maxCoeff(), 1e-3 * h0.cwiseAbs().maxCoeff());
 }
 
+// The modes a target needs, against a scan of every count: the table scene's link 3a
+// response needs 7 modes for 1 % of its peak (the fewest whose reduction meets it), and
+// a target no count up to the cap meets is said to be out of reach.
+TEST(StateSpace, ModesForATargetAreTheFewestThatMeetIt) {
+  const ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-table.yaml");
+  const LinearModel lm = buildLinearModel(s, {{"table_x", InputKind::BaseAcceleration, "", 0}},
+                                          {{"link3a.tip:x", OutputKind::Acceleration, "link3a.tip", 0, true}}, *s.damping);
+  std::vector<double> w = logFrequencies(0.01, 100, 400);
+  for (double& x : w) x *= 2 * M_PI;
+  const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
+  std::vector<double> scan;  // scan[k - 1]: the error with k modes
+  for (int k = 1; k <= 14; ++k) {
+    ReductionOptions o;
+    o.modes = k;
+    scan.push_back(compareResponses(hf, reduceModal(lm.full, o).model, w).max_relative);
+  }
+  for (double target : {0.05, 0.01, 0.003}) {
+    int fewest = 0;
+    for (int k = 1; k <= 14 && !fewest; ++k)
+      if (scan[k - 1] <= target) fewest = k;
+    ASSERT_GT(fewest, 0) << target;
+    for (int start : {2, 10}) {  // the count asked for: the search goes down or up from it
+      ReductionOptions base;
+      base.modes = start;
+      ModelError err;
+      modesForTarget(lm.full, base, hf, w, target, 14, err);
+      EXPECT_TRUE(err.needed.reached) << target;
+      EXPECT_EQ(err.needed.modes, fewest) << target << " from " << start;
+      EXPECT_NEAR(err.needed.error, scan[fewest - 1], 1e-9 * scan[fewest - 1] + 1e-15);
+    }
+  }
+  ReductionOptions base;
+  base.modes = 3;
+  ModelError err;
+  modesForTarget(lm.full, base, hf, w, 1e-9, 6, err);
+  EXPECT_FALSE(err.needed.reached);
+  EXPECT_EQ(err.needed.modes, 6);
+  EXPECT_NEAR(err.needed.error, scan[5], 1e-9 * scan[5]);
+}
+
 TEST(StateSpace, BandErrorFallsAsModesAreAdded) {
   const LinearModel lm = defaultModel();
   std::vector<double> w = logFrequencies(0.1, 60, 200);
