@@ -58,9 +58,9 @@ std::string formatModesText(const ModesReport& r) {
         "  m_eff: effective mass for base translation (what a shaker at the base sees)\n"
         "  peak: the named point that moves most\n";
   if (r.damped)
-    os << "  zeta_%: damping ratio under the scene's damping (" << r.damping_model << "), from the damped\n"
-       << strf("          eigenproblem over %d real modes%s\n", r.damping_basis_modes,
-               r.damping_exact ? " (every mode: exact)" : " (the lowest: a projection)");
+    os << "  zeta_%: damping ratio under the scene's damping: " << r.damping_model << "\n"
+       << strf("          (the damped eigenproblem over %d real modes%s)\n", r.damping_basis_modes,
+               r.damping_exact ? ", every mode: exact" : ", the lowest: a projection");
   else
     os << "  damping: none in the scene (give it `damping:` to see each mode's ratio; frf and rom assume 1 % modal)\n";
   os << strf("  %4s %13s  %-20s %-20s %9s %10s %10s  %s%s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
