@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <regex>
 
 #include "support/cli.hpp"
@@ -138,6 +140,28 @@ TEST_F(Correlate, BadInputIsNamed) {
   r = run("correlate --measured " + bad.string() + " --pair x=link1@0.5");
   EXPECT_EQ(r.code, 64) << r.err;
   EXPECT_TRUE(r.out.empty());
+  r = run("correlate --measured " + bad.string() + " --pair-distance 0");
+  EXPECT_EQ(r.code, 64) << r.err;
+}
+
+// The limits docs/outputs.md states: a file over 256 MB is refused before it is read
+// (a sparse file: nothing is written to disk), and over 2000 nodes after it is parsed.
+TEST_F(Correlate, MeasuredFileLimitsAreEnforced) {
+  const fs::path huge = dir_ / "huge.uff";
+  { std::ofstream(huge) << "    -1\n"; }
+  fs::resize_file(huge, (256L << 20) + 1);
+  Result r = run("correlate --measured " + huge.string());
+  EXPECT_EQ(r.code, 66) << r.err;
+  EXPECT_NE(r.err.find("above the limit"), std::string::npos) << r.err;
+  std::string nodes = "    -1\n    15\n";
+  char line[100];
+  for (int k = 1; k <= 2001; ++k) {
+    std::snprintf(line, sizeof line, "%10d%10d%10d%10d%13.5E%13.5E%13.5E\n", k, 0, 0, 8, 0.001 * k, 0.0, 0.0);
+    nodes += line;
+  }
+  r = run("correlate --measured " + write("many.uff", nodes + "    -1\n").string());
+  EXPECT_EQ(r.code, 65) << r.err;
+  EXPECT_NE(r.err.find("2001 nodes, more than the 2000"), std::string::npos) << r.err;
 }
 
 }  // namespace
