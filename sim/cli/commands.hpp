@@ -106,6 +106,9 @@ struct SimulateArgs : SceneArgs {
   double absolute_tolerance = 0;                       ///< SUNDIALS only; 0: the scene's.
   bool verify = false;        ///< a companion run at tolerance / 10 (sim/time/verify.hpp)
   double verify_target = 0;   ///< m; > 0 implies verify; 0: 1 % of the scored motion
+  double target_error = 0;    ///< m; > 0: choose the cheapest run that meets it (sim/time/target.hpp)
+  std::vector<std::string> points;  ///< the points --target-error is held on; empty: the scene's, else every tip
+  double time_budget = 0;     ///< s; > 0: --target-error within it
   std::string out;
   bool force = false;
 };

@@ -188,6 +188,17 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateArgs& sim) {
   si->add_option("--verify-target", sim.verify_target,
                  "Error the verification is held to, m (default 1 % of the scored points' largest motion); implies --verify")
       ->check(positive());
+  si->add_option("--target-error", sim.target_error,
+                 "Error to meet on the scored points, m: the cheapest integrator, tolerance and segments that meet it are "
+                 "chosen on a pilot window, run and verified (docs/accuracy.md)")
+      ->check(positive());
+  si->add_option("--points", sim.points,
+                 "Comma-separated link tips or stations --target-error is held on, e.g. link3a.tip (default: the scene's "
+                 "score_points, else every tip)")
+      ->delimiter(',');
+  si->add_option("--time-budget", sim.time_budget,
+                 "Wall seconds --target-error may take in all (pilot, run, verification); past it the target is refused")
+      ->check(positive());
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");
   si->add_flag("--force", sim.force, "Replace files of the same names in --out");
   return si;

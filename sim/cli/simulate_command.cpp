@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "facility/table_programs.hpp"
 #include "sim/cli/commands.hpp"
@@ -11,6 +12,7 @@
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
+#include "sim/time/target.hpp"
 #include "sim/time/verify.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/simulation_report.hpp"
@@ -20,6 +22,13 @@ namespace mmv::cli {
 namespace {
 
 void applyOverrides(const SimulateArgs& args, SimulationSpec& spec) {
+  if (args.target_error > 0) {
+    if (args.accuracy > 0) throw UsageError("--target-error chooses the accuracy: drop --accuracy");
+    if (args.verify || args.verify_target > 0)
+      throw UsageError("--target-error verifies its run itself: drop --verify and --verify-target");
+  } else if (!args.points.empty() || args.time_budget > 0) {
+    throw UsageError(std::string(args.points.empty() ? "--time-budget" : "--points") + " applies to --target-error only");
+  }
   if (!args.integrator.empty()) spec.integrator = args.integrator;
   if (args.accuracy > 0) spec.accuracy = args.accuracy;
   if (args.absolute_tolerance > 0) spec.absolute_tolerance = args.absolute_tolerance;
@@ -70,13 +79,39 @@ void verify(const SimulateArgs& args, const SceneT& scene, SimulationResult& r) 
   }, args.verify_target);
 }
 
+/// `--target-error`: the run chosen, run and verified (sim/time/target.hpp), with a
+/// progress line naming the stage.
+TargetOutcome runTarget(const SimulateArgs& args, const TradeProblem& problem) {
+  TargetOptions o;
+  o.target_m = args.target_error;
+  o.points = args.points;
+  o.time_budget_s = args.time_budget;
+  if (!args.integrator.empty()) o.integrators = {args.integrator};
+  Progress progress("target error: pilot, then whole runs");
+  return runToTarget(problem, o, [&](const std::string& stage, double f) { progress.report(f, 1.0, stage); });
+}
+
+/// The run asked for: the scene's settings, or the contract's choice (`target` set).
+template <class SceneT>
+SimulationResult runOrTarget(const SimulateArgs& args, SceneT& scene, const TradeProblem& problem,
+                             std::optional<TargetOutcome>& target) {
+  if (!(args.target_error > 0)) return simulateWithProgress(scene);
+  target = runTarget(args, problem);
+  SimulationResult r = std::move(target->result);
+  target->result = {};
+  scene.simulation.integrator = r.integrator;
+  scene.simulation.accuracy = r.accuracy;
+  return r;
+}
+
 /// run.json: what a run was made from, so that `render --history` can rebuild its model.
-nlohmann::ordered_json runRecord(const SimulateArgs& args, const std::string& source, const SimulationSpec& spec) {
+nlohmann::ordered_json runRecord(const SimulateArgs& args, const std::string& source, const SimulationSpec& spec,
+                                 int segments) {
   nlohmann::ordered_json j;
   j["scene_source"] = source;
   j["scene_copy"] = "scene.yaml";
   j["overrides"] = args.sets;  // --set KEY=VALUE, applied to scene.yaml
-  j["segments_override"] = args.segments;  // 0: the scene's own
+  j["segments_override"] = segments;  // 0: the scene's own
   j["no_gravity"] = args.no_gravity;
   j["integrator"] = spec.integrator;
   j["accuracy"] = spec.accuracy;
@@ -87,20 +122,26 @@ nlohmann::ordered_json runRecord(const SimulateArgs& args, const std::string& so
 
 int report(const SimulateArgs& args, const std::string& name, const std::string& source, const SimulationResult& r,
            std::vector<std::string> warnings, double size_m, OutputDir* out, const std::string& scene_text,
-           const SimulationSpec& spec) {
+           const SimulationSpec& spec, const std::optional<TargetOutcome>& target) {
   for (const auto& w : simulationWarnings(r, size_m)) warnings.push_back(w);
-  const nlohmann::ordered_json summary = simulationJson(r, warnings);
+  nlohmann::ordered_json summary = simulationJson(r, warnings);
+  int segments = args.segments;
+  if (target) {
+    summary["target_error"] = targetJson(*target);
+    if (target->attempts.back().segments) segments = target->attempts.back().segments;
+  }
   checkResultFinite(summary);  // before anything is committed: no NaN reaches a file either
   if (out) {
     std::ofstream(out->stage("history.csv"), std::ios::binary) << simulationHistoryCsv(r.record);
     std::ofstream(out->stage("summary.json"), std::ios::binary) << summary.dump(2) << '\n';
     std::ofstream(out->stage("scene.yaml"), std::ios::binary) << scene_text;
-    std::ofstream(out->stage("run.json"), std::ios::binary) << runRecord(args, source, spec).dump(2) << '\n';
+    std::ofstream(out->stage("run.json"), std::ios::binary) << runRecord(args, source, spec, segments).dump(2) << '\n';
     if (!r.states.rows.empty()) std::ofstream(out->stage("states.csv"), std::ios::binary) << simulationHistoryCsv(r.states);
     writeSimulationPlots(*out, r, name + strf(" (%s at %g)", r.integrator.c_str(), r.accuracy));
     for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
   }
-  args.json ? emitResult(summary) : emitResult(simulationText(name, source, r, warnings));
+  args.json ? emitResult(summary)
+            : emitResult(simulationText(name, source, r, warnings) + (target ? "\n" + targetText(*target) : std::string()));
   return kOk;
 }
 
@@ -113,9 +154,10 @@ int runSimulateCommand(const SimulateArgs& args) {
     if (auto* h = std::get_if<HamsasScene>(&loaded)) {
       applyOverrides(args, h->simulation);
       if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-      SimulationResult r = simulateWithProgress(*h);
+      std::optional<TargetOutcome> target;
+      SimulationResult r = runOrTarget(args, *h, hamsasTradeProblem(*h), target);
       verify(args, *h, r);
-      return report(args, h->name, h->source, r, {}, 0.0, out.get(), h->text, h->simulation);
+      return report(args, h->name, h->source, r, {}, 0.0, out.get(), h->text, h->simulation, target);
     }
     ArticleScene& scene = std::get<ArticleScene>(loaded);
     applyOverrides(args, scene.simulation);
@@ -123,8 +165,9 @@ int runSimulateCommand(const SimulateArgs& args) {
     for (const auto& w : warnings) std::cerr << "mmvlab: warning: " << w << '\n';
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     SimulationResult r;
+    std::optional<TargetOutcome> target;
     try {
-      r = simulateWithProgress(scene);
+      r = runOrTarget(args, scene, articleTradeProblem(scene), target);
     } catch (const std::invalid_argument& e) {  // a facility model refused its command
       throw SceneError(scene.positions.where("base") + ": " + e.what());
     }
@@ -133,7 +176,7 @@ int runSimulateCommand(const SimulateArgs& args) {
     verify(args, scene, r);
     double size = 0;
     for (const auto& l : scene.article.links) size += l.length;
-    return report(args, scene.name, scene.source, r, warnings, size, out.get(), scene.text, scene.simulation);
+    return report(args, scene.name, scene.source, r, warnings, size, out.get(), scene.text, scene.simulation, target);
   });
 }
 

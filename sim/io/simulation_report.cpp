@@ -125,6 +125,69 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
   return os.str();
 }
 
+namespace {
+
+std::string fidelityName(const TargetOutcome& t, const TargetAttempt& a) {
+  const std::string segments = a.segments ? strf(", %d segments per link", a.segments) : std::string(", the scene's segments");
+  return strf("%s at %g", a.integrator.c_str(), a.accuracy) + (t.has_segments ? segments : std::string());
+}
+
+}  // namespace
+
+std::string targetText(const TargetOutcome& t) {
+  std::ostringstream os;
+  int measured = 0;
+  for (const auto& r : t.pilot.runs) measured += r.ok;
+  os << strf("Target error %.3g m: pilot over the first %g s (target there %.3g m), %d runs measured of %zu, %.2f s\n",
+             t.target_m, t.window_s, t.window_target_m, measured, t.pilot.runs.size(), t.pilot.total_seconds);
+  Table a({"whole_run", "run_s", "estimated_error_m", "where", "verified_against", "verification_s", "target"});
+  for (const auto& r : t.attempts)
+    a.add({fidelityName(t, r), strf("%.3g", r.run_seconds), strf("%.3g", r.estimated_error_m),
+           strf("%s at %.4g s", r.point.c_str(), r.at_s),
+           strf("accuracy %g", r.accuracy / 10) + (t.has_segments ? ", the scene's segments" : ""),
+           strf("%.3g", r.companion_seconds),
+           r.met ? "met" : "missed"});
+  os << a.text();
+  const TargetAttempt& last = t.attempts.back();
+  os << strf("Chosen: %s; estimated error %.3g m within %.3g m; cost %.2f s in all (pilot %.2f s)\n",
+             fidelityName(t, last).c_str(), last.estimated_error_m, t.target_m,
+             t.total_seconds, t.pilot.total_seconds);
+  return os.str();
+}
+
+nlohmann::ordered_json targetJson(const TargetOutcome& t) {
+  nlohmann::ordered_json j;
+  j["target_m"] = t.target_m;
+  nlohmann::ordered_json runs = nlohmann::ordered_json::array();
+  for (const auto& r : t.pilot.runs) {
+    nlohmann::ordered_json one = {{"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments},
+                                  {"status", r.status}};
+    if (r.ok) one.update({{"error_m", r.error_m}, {"wall_time_s", r.seconds}});
+    runs.push_back(one);
+  }
+  j["pilot"] = {{"window_s", t.window_s},
+                {"window_target_m", t.window_target_m},
+                {"reference_uncertainty_m", t.pilot.reference_uncertainty_m},
+                {"reference_wall_time_s", t.pilot.reference_seconds},
+                {"wall_time_s", t.pilot.total_seconds},
+                {"runs", runs}};
+  nlohmann::ordered_json attempts = nlohmann::ordered_json::array();
+  for (const auto& r : t.attempts)
+    attempts.push_back({{"integrator", r.integrator},
+                        {"accuracy", r.accuracy},
+                        {"segments", r.segments},  // 0: the scene's
+                        {"run_wall_time_s", r.run_seconds},
+                        {"estimated_error_m", r.estimated_error_m},
+                        {"at_s", r.at_s},
+                        {"point", r.point},
+                        {"companion_accuracy", r.accuracy / 10},
+                        {"companion_wall_time_s", r.companion_seconds},
+                        {"met", r.met}});
+  j["attempts"] = attempts;
+  j["total_wall_time_s"] = t.total_seconds;
+  return j;
+}
+
 std::string simulationHistoryCsv(const SimulationRecord& rec) {
   std::ostringstream os;
   for (std::size_t c = 0; c < rec.columns.size(); ++c) os << (c ? "," : "") << csvColumnName(rec.columns[c]);

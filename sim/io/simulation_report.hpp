@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim/time/simulation.hpp"
+#include "sim/time/target.hpp"
 
 namespace mmv {
 
@@ -18,6 +19,9 @@ std::vector<std::string> simulationWarnings(const SimulationResult& r, double ar
 std::string simulationText(const std::string& scene_name, const std::string& scene_source, const SimulationResult& r,
                            const std::vector<std::string>& warnings);
 nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vector<std::string>& warnings);
+/// `simulate --target-error`: what the pilot found, each whole run verified, the cost.
+std::string targetText(const TargetOutcome& t);
+nlohmann::ordered_json targetJson(const TargetOutcome& t);
 /// history.csv: one header row (names with units), one row per sample, %.10g.
 std::string simulationHistoryCsv(const SimulationRecord& rec);
 

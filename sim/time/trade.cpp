@@ -35,6 +35,9 @@ TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
   for (const auto& name : articlePointNames(scene.article))
     if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tip") == 0) p.scorable.push_back(name);
   p.scorable_kind = "link tip";
+  for (const auto& l : scene.article.links)
+    if (!l.rigid) p.finest_segments = std::max(p.finest_segments, l.segments);
+  p.has_segments = p.finest_segments > 0;
   const ArticleSpec article = scene.article;
   p.also_scores = [article](const std::string& name, std::string& error) {
     return isStationName(name) && parseStation(name, article, error).has_value();
@@ -89,8 +92,7 @@ class TradeRunner {
     study_.reference_seconds = reference_.wall_seconds;
     study_.target_m = o_.target_m > 0 ? o_.target_m : defaultTradeTarget(study_);
     integratorGrid();
-    if (problem_.has_segments)  // rigid bodies: no segments
-      for (int n : o_.segments) measure(n, "cpodes", 1e-8);
+    if (problem_.has_segments) segmentLadder();  // rigid bodies: no segments
     markParetoFront();
     study_.total_seconds = elapsed();
     return study_;
@@ -118,6 +120,7 @@ class TradeRunner {
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       if (o_.run_budget_s > 0 && s > o_.run_budget_s) throw RunBudgetExceeded(fraction, s, false);
       if (o_.total_budget_s > 0 && elapsed() > o_.total_budget_s) throw RunBudgetExceeded(fraction, s, true);
+      if (o_.cut_costlier && s > cheapestWithinTarget()) throw RunBudgetExceeded(fraction, s, false, true);
     };
     if (o_.total_budget_s > 0 && elapsed() > o_.total_budget_s)
       return skip(r, "not_run", strf("not run: the trade's %g s budget was spent", o_.total_budget_s));
@@ -129,6 +132,9 @@ class TradeRunner {
     } catch (const NumericalError& e) {
       return skip(r, "failed", e.what());
     } catch (const RunBudgetExceeded& e) {
+      if (e.costlier)
+        return skip(r, "costlier", strf("cut after %.3g s at %.0f %% of the run: costlier than the cheapest run within the "
+                                        "target (%.3g s)", e.seconds, 100 * e.fraction, cheapestWithinTarget()));
       if (e.total)
         return skip(r, "not_run", strf("cut after %.3g s at %.0f %% of the run: the trade's %g s budget was spent",
                                        e.seconds, 100 * e.fraction, o_.total_budget_s));
@@ -148,12 +154,36 @@ class TradeRunner {
     return study_.runs.back();
   }
 
-  /// The cheapest run within the target so far (seconds), or infinity.
+  /// The cheapest run within the target so far (its cost in seconds, infinity if none).
   double cheapestWithinTarget() const {
-    double best = INFINITY;
+    const TradeRun* best = cheapestRunWithinTarget();
+    return best ? best->seconds : INFINITY;
+  }
+  const TradeRun* cheapestRunWithinTarget() const {
+    const TradeRun* best = nullptr;
     for (const auto& r : study_.runs)
-      if (r.ok && !r.segments && r.error_m <= study_.target_m) best = std::min(best, r.seconds);
+      if (r.ok && r.error_m <= study_.target_m && (!best || r.seconds < best->seconds)) best = &r;
     return best;
+  }
+
+  /// The segments ladder: with the reference integrator at 1e-8, or with the cheapest
+  /// run within the target (TradeOptions::ladder_at_cheapest), from the finest count
+  /// down, stopping at the first count that misses the target (a coarser one would too).
+  void segmentLadder() {
+    if (!o_.ladder_at_cheapest) {
+      for (int n : o_.segments) measure(n, "cpodes", 1e-8);
+      return;
+    }
+    const TradeRun* best = cheapestRunWithinTarget();
+    if (!best) return;
+    const std::string integrator = best->integrator;
+    const double accuracy = best->accuracy;
+    std::vector<int> fine_to_coarse = o_.segments;
+    std::sort(fine_to_coarse.begin(), fine_to_coarse.end(), std::greater<int>());
+    for (int n : fine_to_coarse) {
+      const TradeRun& r = measure(n, integrator, accuracy);
+      if (!r.ok || r.error_m > study_.target_m) break;
+    }
   }
 
   /// Every integrator from its loosest tolerance to its tightest, skipping what cannot pay.

@@ -36,10 +36,15 @@ namespace mmv {
 
 /// Thrown from a run's progress callback when it exceeds the per-run budget.
 struct RunBudgetExceeded : std::runtime_error {
-  RunBudgetExceeded(double fraction_done, double after_s, bool total_budget)
-      : std::runtime_error("run budget exceeded"), fraction(fraction_done), seconds(after_s), total(total_budget) {}
+  RunBudgetExceeded(double fraction_done, double after_s, bool total_budget, bool costlier_run = false)
+      : std::runtime_error("run budget exceeded"),
+        fraction(fraction_done),
+        seconds(after_s),
+        total(total_budget),
+        costlier(costlier_run) {}
   double fraction, seconds;
-  bool total;  ///< the trade's total budget, not the run's own
+  bool total;     ///< the trade's total budget, not the run's own
+  bool costlier;  ///< cut as it passed the cost of the cheapest run within the target
 };
 
 struct TradeRun {
@@ -66,6 +71,14 @@ struct TradeOptions {
   bool skip_costlier = true;  ///< skip the runs a looser run of their integrator shows cannot be the answer (above).
   double run_budget_s = 0;     ///< > 0: a run's wall-time limit (the reference runs excepted).
   double total_budget_s = 0;   ///< > 0: no run starts once the trade has taken this long.
+  /// Cut a run (status "costlier") once it has cost more than the cheapest run within
+  /// the target: it cannot be the answer, and its error is not wanted (the choice of
+  /// `simulate --target-error`, sim/time/target.hpp; a trade shows every error).
+  bool cut_costlier = false;
+  /// Run the segment ladder with the cheapest integrator run within the target (its
+  /// integrator and tolerance) instead of the reference integrator at 1e-8: the
+  /// cheapest fidelity with that integrator; none within the target: no ladder.
+  bool ladder_at_cheapest = false;
 };
 
 struct TradeStudy {
@@ -102,6 +115,7 @@ struct TradeProblem {
   std::function<bool(const std::string& name, std::string& error)> also_scores;
   std::string reference_integrator = "cpodes", check_integrator = "cvode_bdf";
   bool has_segments = true;             ///< rigid bodies only: no segment ladder.
+  int finest_segments = 0;              ///< the most segments of a flexible link (0: none).
   /// Runs with `spec` at `segments` per link (0: the scene's), calling `progress` with
   /// the fraction done at every sample (it may throw to cut the run short).
   std::function<SimulationResult(const SimulationSpec& spec, int segments, const std::function<void(double)>& progress)> run;

@@ -434,6 +434,43 @@ TEST_F(Cli, SimulateVerifyReportsAnErrorEstimate) {
   EXPECT_NE(run("simulate " + scene + " --verify-target -1").code, 0);
 }
 
+// --target-error: the slew's chosen run, its verification and the pilot in the JSON and
+// the text; an --out directory records the chosen run; what it cannot do is refused.
+TEST_F(Cli, SimulateTargetErrorChoosesRunsAndVerifies) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const Result r = run("simulate " + scene + " --segments 2 --duration 1 --target-error 1e-4 --points link3a.tip --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& t = j.at("target_error");
+  EXPECT_EQ(t["target_m"].get<double>(), 1e-4);
+  const auto& last = t["attempts"].back();
+  EXPECT_TRUE(last["met"].get<bool>());
+  EXPECT_LE(last["estimated_error_m"].get<double>(), 1e-4);
+  EXPECT_EQ(last["point"], "link3a.tip");
+  EXPECT_EQ(j["integrator"], last["integrator"]);  // the run reported is the one chosen
+  EXPECT_EQ(j["verification"]["target"], "given");
+  EXPECT_GT(t["pilot"]["runs"].size(), 7u);
+  const Result text = run("simulate " + scene + " --segments 2 --duration 1 --target-error 1e-4 --points link3a.tip");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("Chosen: "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("Target error 0.0001 m: pilot over the first 1 s"), std::string::npos) << text.out;
+
+  const Result accuracy = run("simulate " + scene + " --target-error 1e-4 --accuracy 1e-6");
+  EXPECT_EQ(accuracy.code, 64);
+  EXPECT_NE(accuracy.err.find("--target-error chooses the accuracy"), std::string::npos) << accuracy.err;
+  EXPECT_EQ(run("simulate " + scene + " --target-error 1e-4 --verify").code, 64);
+  const Result points = run("simulate " + scene + " --points link3a.tip");
+  EXPECT_EQ(points.code, 64);
+  EXPECT_NE(points.err.find("--points applies to --target-error only"), std::string::npos) << points.err;
+  const Result unknown = run("simulate " + scene + " --duration 1 --target-error 1e-4 --points link9.tip");
+  EXPECT_EQ(unknown.code, 64);
+  EXPECT_NE(unknown.err.find("link9.tip"), std::string::npos) << unknown.err;
+  const Result budget = run("simulate " + scene + " --target-error 1e-7 --time-budget 0.2");
+  EXPECT_EQ(budget.code, 1);
+  EXPECT_NE(budget.err.find("cannot be met within the 0.2 s budget"), std::string::npos) << budget.err;
+  EXPECT_TRUE(budget.out.empty());
+}
+
 TEST_F(Cli, SimulateBadInput) {
   // A sine beyond the table's +-15 cm stroke is refused before anything runs.
   std::string text = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml");

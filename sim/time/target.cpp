@@ -1,0 +1,199 @@
+#include "sim/time/target.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "sim/core/errors.hpp"
+#include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
+#include "sim/time/verify.hpp"
+
+namespace mmv {
+namespace {
+
+constexpr double kWindowFraction = 0.2;  ///< of the run, the pilot's window
+constexpr double kMinWindowS = 1.0;
+constexpr double kTightestAccuracy = 1e-12;
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// The fidelity of one run: integrator, tolerance and segments (0: the scene's).
+struct Fidelity {
+  std::string integrator;
+  double accuracy = 0;
+  int segments = 0;
+};
+
+std::string describe(const Fidelity& f) {
+  return strf("%s at %g", f.integrator.c_str(), f.accuracy) + (f.segments ? strf(", %d segments", f.segments) : "");
+}
+
+class TargetRunner {
+ public:
+  TargetRunner(const TradeProblem& problem, const TargetOptions& o,
+               const std::function<void(const std::string&, double)>& stage)
+      : problem_(problem), o_(o), stage_(stage) {
+    MMV_DEMAND(o.target_m > 0);
+    out_.target_m = o.target_m;
+    out_.has_segments = problem.has_segments;
+  }
+
+  TargetOutcome run() {
+    const Fidelity first = pilot();
+    chosen_accuracy_ = first.accuracy;
+    Fidelity run = first;
+    Fidelity companion = tighter(run);
+    SimulationResult result = wholeRun(run, "run");
+    for (;;) {
+      const SimulationResult tight = wholeRun(companion, "verification");
+      TargetAttempt a;
+      a.integrator = run.integrator;
+      a.accuracy = run.accuracy;
+      a.segments = run.segments;
+      a.run_seconds = result.wall_seconds;
+      a.companion_seconds = tight.wall_seconds;
+      const ScoredDistance d = scoredDistance(result.record, tight.record, points_);
+      a.estimated_error_m = d.distance_m;
+      a.at_s = d.at_s;
+      a.point = d.point;
+      a.met = d.distance_m <= o_.target_m;
+      out_.attempts.push_back(a);
+      if (a.met) {
+        result.verification = verification(a, companion, tight);
+        out_.result = std::move(result);
+        out_.total_seconds = since(t0_);
+        return out_;
+      }
+      if (companion.accuracy / 10 < kTightestAccuracy)
+        throw NumericalError(strf("--target-error %.3g m cannot be met: %s is %.3g m off at %s (t = %.4g s) and a tighter "
+                                  "tolerance than %g cannot be verified",
+                                  o_.target_m, describe(run).c_str(), a.estimated_error_m, a.point.c_str(), a.at_s,
+                                  companion.accuracy));
+      run = companion;  // the next tighter fidelity: the companion already ran it
+      result = tight;
+      companion = tighter(run);
+    }
+  }
+
+ private:
+  /// The same integrator at a 10x tighter tolerance, at the scene's segments.
+  static Fidelity tighter(const Fidelity& f) { return {f.integrator, f.accuracy / 10, 0}; }
+
+  /// The window's trade, and its cheapest run within the window's target.
+  Fidelity pilot() {
+    const double duration = problem_.duration;
+    out_.window_s = std::min(duration, std::max(kWindowFraction * duration, kMinWindowS));
+    out_.window_target_m = o_.target_m * out_.window_s / duration;
+    TradeProblem window = problem_;
+    window.duration = out_.window_s;
+    window.simulation.duration = out_.window_s;
+    TradeOptions t;
+    // Implicit methods first: on a stiff article one of them is cheap within the target
+    // early, and the explicit ones are then cut at its cost (the choice does not depend
+    // on the order: a run cut at that cost cannot be the cheapest).
+    t.integrators = o_.integrators.empty()
+                        ? std::vector<std::string>{"cvode_bdf", "cpodes", "arkode_dirk", "rk3", "rk_merson", "arkode_erk", "cvode_adams"}
+                        : o_.integrators;
+    t.accuracies = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+    t.segments.clear();
+    for (int n = problem_.finest_segments / 2; n >= 2; n /= 2) t.segments.push_back(n);
+    t.points = o_.points;
+    t.target_m = out_.window_target_m;
+    t.cut_costlier = true;
+    t.ladder_at_cheapest = true;
+    if (o_.time_budget_s > 0) t.total_budget_s = budgetLeft();
+    window.run = [this, inner = problem_.run](const SimulationSpec& spec, int segments,
+                                               const std::function<void(double)>& cut) {
+      stage_ ? stage_("pilot: " + describe({spec.integrator, spec.accuracy, segments}), 0.0) : void();
+      return inner(spec, segments, cut);
+    };
+    out_.pilot = runTrade(window, t);
+    points_ = out_.pilot.points;
+    const double floor = out_.pilot.reference_uncertainty_m;
+    if (o_.target_m <= 3 * floor)
+      throw NumericalError(strf("--target-error %.3g m cannot be verified: the two reference runs at 1e-10 differ by %.3g m "
+                                "over the first %g s; ask for more than 3x that",
+                                o_.target_m, floor, out_.window_s));
+    const TradeRun* best = nullptr;
+    for (const auto& r : out_.pilot.runs)
+      if (r.ok && r.error_m <= out_.window_target_m && (!best || r.seconds < best->seconds)) best = &r;
+    if (!best) {
+      checkBudget("the pilot");
+      throw NumericalError(strf("--target-error %.3g m cannot be met: no run of the pilot came within %.3g m over the first "
+                                "%g s (the tightest tolerance tried is 1e-8)",
+                                o_.target_m, out_.window_target_m, out_.window_s));
+    }
+    return {best->integrator, best->accuracy, best->segments};
+  }
+
+  double budgetLeft() const { return std::max(o_.time_budget_s - since(t0_), 1e-3); }
+
+  /// Throws when the time budget is spent, naming what was under way.
+  void checkBudget(const std::string& what) const {
+    if (!(o_.time_budget_s > 0) || since(t0_) <= o_.time_budget_s) return;
+    std::string best;
+    if (!out_.attempts.empty()) {
+      const TargetAttempt& a = out_.attempts.back();
+      best = strf("; the last run verified (%s) is %.3g m off", describe({a.integrator, a.accuracy, a.segments}).c_str(),
+                  a.estimated_error_m);
+    }
+    throw NumericalError(strf("--target-error %.3g m cannot be met within the %g s budget: it was spent during %s after "
+                              "%.3g s%s",
+                              o_.target_m, o_.time_budget_s, what.c_str(), since(t0_), best.c_str()));
+  }
+
+  /// The whole run at `f`, cut when the budget is spent.
+  SimulationResult wholeRun(const Fidelity& f, const std::string& what) {
+    checkBudget("the " + what);
+    SimulationSpec spec = problem_.simulation;
+    spec.score_points = points_;
+    spec.integrator = f.integrator;
+    spec.accuracy = f.accuracy;
+    if (!isSundialsIntegrator(f.integrator)) spec.absolute_tolerance = 0;
+    else spec.absolute_tolerance *= f.accuracy / chosen_accuracy_;  // tightened with the relative one
+    const std::string label = what + ": " + describe(f);
+    try {
+      return problem_.run(spec, f.segments, [&](double fraction) {
+        if (stage_) stage_(label, fraction);
+        if (o_.time_budget_s > 0 && since(t0_) > o_.time_budget_s) throw RunBudgetExceeded(fraction, since(t0_), true);
+      });
+    } catch (const RunBudgetExceeded&) {
+      checkBudget("the " + label);
+      throw;
+    }
+  }
+
+  RunVerification verification(const TargetAttempt& a, const Fidelity& companion, const SimulationResult& tight) const {
+    RunVerification v;
+    v.done = true;
+    v.companion_accuracy = companion.accuracy;
+    v.companion_seconds = a.companion_seconds;
+    v.estimated_error_m = a.estimated_error_m;
+    v.at_s = a.at_s;
+    v.point = a.point;
+    v.amplitude_m = scoredAmplitude(tight.record, points_);
+    v.target_m = o_.target_m;
+    v.target_is_default = false;
+    return v;
+  }
+
+  const TradeProblem& problem_;
+  const TargetOptions& o_;
+  const std::function<void(const std::string&, double)>& stage_;
+  std::vector<std::string> points_;
+  double chosen_accuracy_ = 1;  ///< the pilot's choice: the scene's absolute tolerance goes with it
+  TargetOutcome out_;
+  const Clock::time_point t0_ = Clock::now();
+};
+
+}  // namespace
+
+TargetOutcome runToTarget(const TradeProblem& problem, const TargetOptions& options,
+                          const std::function<void(const std::string& stage, double fraction)>& stage) {
+  MMV_THROW_UNLESS(options.target_m > 0, UsageError, "--target-error must be > 0 m");
+  return TargetRunner(problem, options, stage).run();
+}
+
+}  // namespace mmv
