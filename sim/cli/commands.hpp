@@ -47,6 +47,8 @@ struct ModesArgs : SceneArgs {
   int modes = 12;  ///< modes to report; 0 = all.
   std::vector<std::string> points;  ///< named points or stations whose shapes are tabulated.
   bool no_error_estimate = false;   ///< skip the coarser solutions (estimateDiscretization)
+  double target_error = 0;          ///< > 0: choose the segments for this relative frequency error (segmentsForTarget)
+  double time_budget = 0;           ///< s; > 0: --target-error within it
   std::string out;                  ///< modes.txt, modes.json, modes.csv here.
   bool force = false;
 };

@@ -74,6 +74,12 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
       ->delimiter(',');
   m->add_flag("--no-error-estimate", modes.no_error_estimate,
               "Skip each mode's discretization error estimate (the scene solved again with segments / 2 and / 4)");
+  m->add_option("--target-error", modes.target_error,
+                "Relative frequency error each of the --modes modes must meet, e.g. 1e-3: the fewest segments per link "
+                "(1, 2, 4, ... 256) whose Richardson estimate meets it are chosen")
+      ->check(CLI::Range(1e-12, 0.5));
+  m->add_option("--time-budget", modes.time_budget, "Wall seconds --target-error may take choosing the segments")
+      ->check(positive());
   m->add_option("--out", modes.out, "Also write modes.txt, modes.json and modes.csv (one row per mode) here");
   m->add_flag("--force", modes.force, "Replace files of the same names in --out");
   return m;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "sim/cli/commands.hpp"
 #include "sim/cli/figures.hpp"
@@ -17,6 +18,10 @@
 
 namespace mmv::cli {
 namespace {
+
+/// The finest mesh `modes --target-error` tries: 256 segments per link (the default
+/// article's 768 hinges solve in about a second).
+constexpr int kMaxTargetSegments = 256;
 
 /// convergence.png: each mode's |f_N / Richardson - 1| against segments per link, log-log
 /// (a straight line of slope -2 where the observed order is 2).
@@ -47,7 +52,17 @@ int runModesCommand(const ModesArgs& args) {
   return guarded([&]() -> int {
     const Scene loaded = loadScene(args);
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasModes(args, *h);
-    const ArticleScene& scene = std::get<ArticleScene>(loaded);
+    ArticleScene scene = std::get<ArticleScene>(loaded);
+    std::optional<SegmentsChoice> choice;
+    if (args.target_error > 0) {
+      if (args.segments > 0) throw UsageError("--target-error chooses the segments per link: drop --segments");
+      if (args.modes == 0) throw UsageError("--target-error holds the modes shown to it: give --modes N (N >= 1), not 0");
+      if (args.no_error_estimate) throw UsageError("--target-error needs the error estimate: drop --no-error-estimate");
+      choice = segmentsForTarget(scene, args.modes, args.target_error, kMaxTargetSegments, args.time_budget);
+      overrideSegments(scene, choice->segments);
+    } else if (args.time_budget > 0) {
+      throw UsageError("--time-budget applies to --target-error only");
+    }
     ModesOptions opt;
     opt.max_modes = args.modes;
     opt.with_shapes = args.json;
@@ -55,6 +70,7 @@ int runModesCommand(const ModesArgs& args) {
     opt.damping = scene.damping;
     ModesReport rep = runModes(scene, opt);
     if (!args.no_error_estimate) rep.discretization = estimateDiscretization(scene, reportFrequencies(rep));
+    rep.segments_choice = choice;
     for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
     const nlohmann::ordered_json json = modesToJson(rep);
     const std::string text = formatModesText(rep);

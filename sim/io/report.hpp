@@ -16,6 +16,8 @@ nlohmann::ordered_json modesToJson(const ModesReport& r);
 
 /// The discretization error block of `modes` (empty when not asked for).
 std::string discretizationText(const DiscretizationEstimate& d);
+std::string segmentsChoiceText(const SegmentsChoice& c);
+nlohmann::ordered_json segmentsChoiceJson(const SegmentsChoice& c);
 nlohmann::ordered_json discretizationJson(const DiscretizationEstimate& d);
 
 std::string formatConvergenceText(const ConvergenceStudy& c);

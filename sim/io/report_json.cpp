@@ -102,6 +102,7 @@ json modesToJson(const ModesReport& r) {
                  {"orthogonality_error", r.orthogonality_error},
                  {"stiffness_asymmetry", r.stiffness_asymmetry}};
   if (const auto& d = r.discretization; d.available || !d.reason.empty()) j["discretization_error"] = discretizationJson(d);
+  if (r.segments_choice) j["target_error"] = segmentsChoiceJson(*r.segments_choice);
   if (!r.warnings.empty()) j["warnings"] = r.warnings;
   j["time_s"] = {{"build", r.seconds_build},
                  {"equilibrium", r.seconds_equilibrium},
@@ -124,6 +125,18 @@ json discretizationJson(const DiscretizationEstimate& d) {
                      {"check", m.check.empty() ? json("unchecked") : json(m.check)}});
   }
   return {{"available", true}, {"segment_divisors", d.divisors}, {"wall_time_s", d.seconds}, {"modes", modes}};
+}
+
+json segmentsChoiceJson(const SegmentsChoice& c) {
+  json ladder = json::array();
+  for (const auto& l : c.ladder)
+    ladder.push_back({{"segments", l.segments},
+                      {"worst_estimated_relative_error", std::isfinite(l.worst_error) ? json(l.worst_error) : json(nullptr)},
+                      {"worst_mode", l.worst_mode ? json(l.worst_mode) : json(nullptr)},
+                      {"check", l.worst_check.empty() ? json(nullptr) : json(l.worst_check)},
+                      {"solve_time_s", l.seconds},
+                      {"met", l.met}});
+  return {{"target_relative_error", c.target}, {"segments", c.segments}, {"wall_time_s", c.seconds}, {"ladder", ladder}};
 }
 
 json convergenceToJson(const ConvergenceStudy& c) {

@@ -85,6 +85,7 @@ std::string formatModesText(const ModesReport& r) {
   if (static_cast<int>(r.modes.size()) < r.model.num_dofs)
     os << "  (" << r.modes.size() << " of " << r.model.num_dofs << " modes shown; --modes 0 shows all)\n";
   os << discretizationText(r.discretization);
+  if (r.segments_choice) os << segmentsChoiceText(*r.segments_choice);
   if (!r.modes.empty() && !r.modes.front().at_points.empty()) {
     os << "\nMode shapes at the points asked for (translation per unit modal coordinate, mass-normalised shapes)\n";
     Table t({"mode", "point", "ux_m", "uy_m"});
@@ -116,6 +117,18 @@ std::string discretizationText(const DiscretizationEstimate& d) {
            m.has_estimate ? strf("%.3g", 100 * m.estimated_relative_error) : "-",
            m.has_observed_order ? strf("%.2f", m.observed_order) : "-", m.check.empty() ? "unchecked" : m.check});
   }
+  return os.str() + t.text();
+}
+
+std::string segmentsChoiceText(const SegmentsChoice& c) {
+  std::ostringstream os;
+  os << strf("\nTarget error %g (relative, each frequency): %d segments per flexible link, chosen in %.0f ms\n", c.target,
+             c.segments, 1e3 * c.seconds);
+  Table t({"segments", "worst_est_err_%", "mode", "check", "solve_ms", "target"});
+  for (const auto& l : c.ladder)
+    t.add({std::to_string(l.segments), std::isfinite(l.worst_error) ? strf("%.3g", 100 * l.worst_error) : "-",
+           l.worst_mode ? std::to_string(l.worst_mode) : "-", l.worst_check.empty() ? "-" : l.worst_check,
+           strf("%.1f", 1e3 * l.seconds), l.met ? "met" : "-"});
   return os.str() + t.text();
 }
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
 #include "sim/modes/system_modes.hpp"
 
 namespace mmv {
@@ -80,6 +82,80 @@ DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const s
   e.available = true;
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return e;
+}
+
+namespace {
+
+/// The worst of the first modes' estimates at the finest of `runs` (each mode by index).
+SegmentsLevel assessLevel(const std::vector<std::vector<double>>& runs, int num_modes, double target) {
+  SegmentsLevel level;
+  level.worst_error = NAN;
+  if (runs.size() < 3) return level;
+  const std::vector<double>& finest = runs.back();
+  double scale = 0;
+  for (double f : finest) scale = std::max(scale, std::abs(f));
+  level.met = true;
+  level.worst_error = 0;
+  bool worst_trusted = true;
+  for (int i = 0; i < num_modes && i < static_cast<int>(finest.size()); ++i) {
+    if (!(std::abs(finest[i]) > 1e-6 * scale)) continue;  // a rigid-body mode
+    std::vector<double> f;
+    for (std::size_t k = runs.size() - 3; k < runs.size(); ++k) f.push_back(i < static_cast<int>(runs[k].size()) ? runs[k][i] : NAN);
+    const ConvergenceMode m = assessLadder(i + 1, f);
+    const bool trusted = m.check == "ok" || m.check == "order";
+    const double e = m.has_estimate ? m.estimated_relative_error : INFINITY;
+    if (!trusted || !(e <= target)) level.met = false;
+    // The worst mode: an untrusted one before any trusted one, then the largest estimate.
+    const bool worse = level.worst_mode == 0 || (!trusted && worst_trusted) ||
+                       (trusted == worst_trusted && !(e <= level.worst_error));
+    if (worse) {
+      level.worst_error = e;
+      level.worst_mode = i + 1;
+      level.worst_check = m.check.empty() ? "unchecked" : m.check;
+      worst_trusted = trusted;
+    }
+  }
+  return level;
+}
+
+}  // namespace
+
+SegmentsChoice segmentsForTarget(const ArticleScene& scene, int num_modes, double target, int max_segments,
+                                 double budget_s) {
+  MMV_THROW_UNLESS(target > 0 && target < 1, UsageError, strf("--target-error for modes is a relative frequency error in (0, 1) (got %g)", target));
+  SegmentsChoice c;
+  c.target = target;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  std::vector<std::vector<double>> runs;
+  for (int n = 1; n <= max_segments; n *= 2) {
+    ArticleScene s = scene;
+    overrideSegments(s, n);
+    const double start = since();
+    const ModesSolve sol = solveSceneModes(s, {}, num_modes);
+    runs.emplace_back(sol.frequencies_hz.data(), sol.frequencies_hz.data() + sol.frequencies_hz.size());
+    SegmentsLevel level = assessLevel(runs, num_modes, target);
+    level.segments = n;
+    level.seconds = since() - start;
+    c.ladder.push_back(level);
+    if (level.met) {
+      c.segments = n;
+      c.seconds = since();
+      return c;
+    }
+    if (budget_s > 0 && since() > budget_s) break;
+  }
+  c.seconds = since();
+  const SegmentsLevel& last = c.ladder.back();
+  const std::string best = std::isfinite(last.worst_error)
+                               ? strf("at %d segments per link mode %d is still %.3g %% off (%s)", last.segments,
+                                      last.worst_mode, 100 * last.worst_error, last.worst_check.c_str())
+                               : strf("only %d segments per link were solved", last.segments);
+  throw NumericalError(strf("--target-error %g (relative frequency error of the first %d modes) cannot be met ", target,
+                            num_modes) +
+                       (budget_s > 0 && since() > budget_s ? strf("within the %g s budget", budget_s)
+                                                           : strf("with up to %d segments per link", max_segments)) +
+                       ": " + best);
 }
 
 ConvergenceStudy runConvergence(const ArticleScene& scene, int max_segments, int num_modes) {

@@ -65,6 +65,30 @@ struct DiscretizationEstimate {
 /// `finest_hz`: the scene's own modes (negative: unstable, 0: rigid).
 DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const std::vector<double>& finest_hz);
 
+/// `modes --target-error E`: the fewest segments per flexible link (1, 2, 4, ... up to
+/// `max_segments`) at which each of the first `num_modes` vibration modes has an
+/// estimated relative frequency error <= E from the three finest runs (Richardson,
+/// assessLadder) with a sane observed order ("ok" or "order"; an "unconverged" mode is
+/// not trusted whatever its estimate). Rigid-body modes (0 Hz) carry no relative error.
+struct SegmentsLevel {
+  int segments = 0;
+  double seconds = 0;      ///< this solve
+  double worst_error = 0;  ///< the largest estimated relative error (NaN: fewer than three runs)
+  int worst_mode = 0;      ///< 0: none assessed
+  std::string worst_check; ///< its check; "unconverged" anywhere makes the level fail
+  bool met = false;
+};
+struct SegmentsChoice {
+  double target = 0;
+  int segments = 0;  ///< 0: not met within max_segments or the budget
+  std::vector<SegmentsLevel> ladder;
+  double seconds = 0;
+};
+/// Throws NumericalError when no count up to `max_segments` meets E, or the time budget
+/// (> 0, s) is spent first; the message names the best level reached.
+SegmentsChoice segmentsForTarget(const ArticleScene& scene, int num_modes, double target, int max_segments,
+                                 double budget_s = 0);
+
 /// Runs N = 1, 2, 4, ..., up to max_segments (>= 1), reporting `num_modes` modes.
 /// Throws NumericalError if a run fails.
 ConvergenceStudy runConvergence(const ArticleScene& scene, int max_segments, int num_modes);

@@ -116,6 +116,8 @@ struct ModesReport {
   /// Each mode's discretization error (estimateDiscretization, sim/modes/converge.hpp),
   /// when asked for; `modes` by default.
   DiscretizationEstimate discretization;
+  /// `modes --target-error`: how the segments per link were chosen (segmentsForTarget).
+  std::optional<SegmentsChoice> segments_choice;
 };
 
 /// The frequencies of a report's modes as solveSceneModes gives them (negative: unstable).

@@ -471,6 +471,27 @@ TEST_F(Cli, SimulateTargetErrorChoosesRunsAndVerifies) {
   EXPECT_TRUE(budget.out.empty());
 }
 
+// modes --target-error: the segments chosen, the ladder that chose them, and the modes
+// reported at that count; what it cannot hold is refused.
+TEST_F(Cli, ModesTargetErrorChoosesTheSegments) {
+  const Result r = run("modes --target-error 1e-3 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& t = j.at("target_error");
+  EXPECT_EQ(t["segments"].get<int>(), 64);  // 32 per link leave mode 12 at 0.15 %
+  EXPECT_TRUE(t["ladder"].back()["met"].get<bool>());
+  EXPECT_LE(t["ladder"].back()["worst_estimated_relative_error"].get<double>(), 1e-3);
+  for (const auto& m : j["discretization_error"]["modes"])
+    if (!m["estimated_relative_error"].is_null()) EXPECT_LE(m["estimated_relative_error"].get<double>(), 1e-3);
+  EXPECT_EQ(run("modes --target-error 1e-3 --segments 8").code, 64);
+  EXPECT_EQ(run("modes --target-error 1e-3 --modes 0").code, 64);
+  EXPECT_EQ(run("modes --time-budget 1").code, 64);
+  const Result never = run("modes --target-error 1e-11");
+  EXPECT_EQ(never.code, 1);
+  EXPECT_NE(never.err.find("cannot be met with up to 256 segments per link"), std::string::npos) << never.err;
+  EXPECT_TRUE(never.out.empty());
+}
+
 TEST_F(Cli, SimulateBadInput) {
   // A sine beyond the table's +-15 cm stroke is refused before anything runs.
   std::string text = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml");
