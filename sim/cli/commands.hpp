@@ -97,6 +97,8 @@ struct LinearArgs : SceneArgs {
   std::vector<std::string> vary;  ///< HAM-SAS frf: one "KEY=V1,V2,...".
   bool json = false;  ///< the summary as JSON (frf), rom.json on stdout (rom).
   double rom_target = 0.01;  ///< peak-normalized error the modes-needed count is for (0: not computed).
+  double target_error = 0;   ///< > 0: segments and kept modes chosen for it (frf/rom --target-error)
+  double time_budget = 0;    ///< s; > 0: --target-error's choice of segments within it
   std::string out;
   bool force = false;
 };

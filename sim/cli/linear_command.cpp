@@ -3,6 +3,7 @@
 #include <cmath>
 #include <ctime>
 #include <map>
+#include <optional>
 #include <fstream>
 #include <iostream>
 #include <tuple>
@@ -15,12 +16,17 @@
 #include "sim/io/output_dir.hpp"
 #include "sim/io/mat_file.hpp"
 #include "sim/io/linear_report.hpp"
+#include "sim/io/report.hpp"
+#include "sim/modes/system_modes.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/scene/stations.hpp"
 #include "sim/core/text.hpp"
 
 namespace mmv::cli {
 namespace {
+
+/// The finest mesh --target-error tries (as `modes --target-error`).
+constexpr int kMaxTargetSegments = 256;
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
@@ -132,26 +138,99 @@ std::vector<double> frequencies(const LinearArgs& a) {
   return logFrequencies(a.f_min, a.f_max, a.points);
 }
 
+/// What frf and rom compute: the model at the segments used, its reduction, the grid
+/// (every kept mode's half-power band resolved), the full responses and the errors.
+struct Analysis {
+  ArticleScene scene;
+  LinearModel lm;
+  ReducedModel red;
+  std::vector<double> f, w;
+  std::vector<Eigen::MatrixXcd> hf;
+  ModelError err;
+  std::optional<SegmentsChoice> segments;  ///< --target-error: how the segments were chosen
+};
+
+void respond(const LinearArgs& args, const std::vector<double>& grid, Analysis& a) {
+  a.f = resolveResonances(grid, a.red.kept_frequencies_hz, a.red.kept_damping);
+  a.w = a.f;
+  for (double& x : a.w) x *= 2 * M_PI;
+  a.hf = fullResponses(a.lm.second_order, a.w);
+  a.err = compareResponses(a.hf, a.red.model, a.w);
+  if (args.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
+    modesForTarget(a.lm.full, reductionOptions(args), a.hf, a.w, args.rom_target,
+                   std::max(1, std::min(60, a.lm.full.numStates() / 2)), a.err);
+}
+
+/// --target-error E: the segments that hold every mode up to --to within E
+/// (segmentsForTarget), then the fewest kept modes whose reduced model is within E of
+/// each pair's peak (modesForTarget), the reduction redone with them.
+Analysis analyse(LinearArgs args, ArticleScene scene, const std::vector<double>& grid) {
+  Analysis a;
+  if (args.target_error > 0) {
+    if (args.segments > 0) throw UsageError("--target-error chooses the segments per link: drop --segments");
+    if (!args.band.empty()) throw UsageError("--target-error chooses the modes kept: drop --band");
+    const ModesSolve all = solveSceneModes(scene, {}, 0);
+    int in_band = 0;
+    for (Eigen::Index k = 0; k < all.frequencies_hz.size(); ++k) in_band += all.frequencies_hz[k] <= args.f_max;
+    a.segments = segmentsForTarget(scene, std::clamp(in_band, 1, 60), args.target_error, kMaxTargetSegments, args.time_budget);
+    overrideSegments(scene, a.segments->segments);
+    args.rom_target = args.target_error;
+  } else if (args.time_budget > 0) {
+    throw UsageError("--time-budget applies to --target-error only");
+  }
+  std::tie(a.lm, a.red) = [&] {
+    Linear l = buildAndReduce(args, scene);
+    return std::make_pair(std::move(l.lm), std::move(l.red));
+  }();
+  a.scene = std::move(scene);
+  respond(args, grid, a);
+  if (a.segments && a.err.needed.reached && a.err.needed.modes != args.rom_modes) {
+    args.rom_modes = a.err.needed.modes;
+    a.red = reduce(args, a.lm.full);
+    respond(args, grid, a);
+  } else if (a.segments && !a.err.needed.reached) {
+    throw NumericalError(strf("--target-error %g: no reduced model of up to %d modes is within it of each pair's peak",
+                              args.target_error, a.err.needed.modes));
+  }
+  return a;
+}
+
+/// The target's choices, after the summary.
+std::string targetText(const Analysis& a) {
+  if (!a.segments) return "";
+  return segmentsChoiceText(*a.segments) +
+         strf("Reduced model for the target: %d modes kept, the fewest within %g of each pair's peak\n",
+              a.err.needed.modes, a.segments->target);
+}
+
+void addTargetJson(const Analysis& a, nlohmann::ordered_json& j) {
+  if (!a.segments) return;
+  nlohmann::ordered_json t = segmentsChoiceJson(*a.segments);
+  t["rom_modes"] = a.err.needed.modes;
+  j["target_error"] = t;
+}
+
 }  // namespace
 
 int runFrfCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
     const Scene loaded = loadScene(args);
     const std::vector<double> grid = frequencies(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasFrf(args, *h, grid);
-    const ArticleScene& scene = std::get<ArticleScene>(loaded);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
+      if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
+      return runHamsasFrf(args, *h, grid);
+    }
     if (!args.vary.empty()) throw UsageError("--vary applies to HAM-SAS scenes only");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const auto [lm, red] = buildAndReduce(args, scene);
-    // The log grid with every kept mode's half-power band resolved.
-    const std::vector<double> f = resolveResonances(grid, red.kept_frequencies_hz, red.kept_damping);
-    std::vector<double> w(f);
-    for (double& x : w) x *= 2 * M_PI;
-    const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
-    ModelError err = compareResponses(hf, red.model, w);
-    if (args.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
-      modesForTarget(lm.full, reductionOptions(args), hf, w, args.rom_target, std::max(1, std::min(60, lm.full.numStates() / 2)), err);
+    const Analysis a = analyse(args, std::get<ArticleScene>(loaded), grid);
+    const ArticleScene& scene = a.scene;
+    const LinearModel& lm = a.lm;
+    const ReducedModel& red = a.red;
+    const std::vector<double>& f = a.f;
+    const std::vector<double>& w = a.w;
+    const std::vector<Eigen::MatrixXcd>& hf = a.hf;
+    const ModelError& err = a.err;
     if (out) {
       const StateSpace& s = lm.full;
       std::vector<Eigen::MatrixXcd> hr;
@@ -187,8 +266,9 @@ int runFrfCommand(const LinearArgs& args) {
         }
       std::ofstream(out->stage("frf.uff"), std::ios::binary) << frfUff(lm, scene, f, hf);
     }
-    const std::string text = args.json ? "" : linearSummaryText(lm, red, err, f, hf);
-    const nlohmann::ordered_json json = args.json ? linearSummaryJson(lm, red, err, f, hf, scene.name) : nlohmann::ordered_json();
+    const std::string text = args.json ? "" : linearSummaryText(lm, red, err, f, hf) + targetText(a);
+    nlohmann::ordered_json json = args.json ? linearSummaryJson(lm, red, err, f, hf, scene.name) : nlohmann::ordered_json();
+    if (args.json) addTargetJson(a, json);
     if (out) {
       args.json ? checkResultFinite(json) : checkResultFinite(text);  // before any file is committed
       for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
@@ -203,29 +283,26 @@ int runRomCommand(const LinearArgs& args) {
     if (args.out.empty()) throw UsageError("rom: --out DIR is required (it writes rom.mat and full.mat)");
     const Scene loaded = loadScene(args);
     const std::vector<double> grid = frequencies(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h, grid);
-    const ArticleScene& scene = std::get<ArticleScene>(loaded);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
+      if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
+      return runHamsasRom(args, *h, grid);
+    }
     OutputDir out(args.out, args.force);
-    const auto [lm, red] = buildAndReduce(args, scene);
-    // The log grid with every kept mode's half-power band resolved.
-    const std::vector<double> f = resolveResonances(grid, red.kept_frequencies_hz, red.kept_damping);
-    std::vector<double> w(f);
-    for (double& x : w) x *= 2 * M_PI;
-    const std::vector<Eigen::MatrixXcd> hf = fullResponses(lm.second_order, w);
-    ModelError err = compareResponses(hf, red.model, w);
-    if (args.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
-      modesForTarget(lm.full, reductionOptions(args), hf, w, args.rom_target, std::max(1, std::min(60, lm.full.numStates() / 2)), err);
+    const Analysis a = analyse(args, std::get<ArticleScene>(loaded), grid);
+    const LinearModel& lm = a.lm;
+    const ReducedModel& red = a.red;
     try {
       writeStateSpaceMat(out.stage("rom.mat"), red.model);
       writeStateSpaceMat(out.stage("full.mat"), lm.full);
     } catch (const std::runtime_error& e) {
       throw OutputError(e.what());
     }
-    const nlohmann::ordered_json rom_json = romJson(lm, red, err, f);
+    nlohmann::ordered_json rom_json = romJson(lm, red, a.err, a.f);
+    addTargetJson(a, rom_json);
     checkResultFinite(rom_json);  // before any file is committed
     std::ofstream(out.stage("rom.json"), std::ios::binary) << rom_json.dump(2) << '\n';
     for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-    args.json ? emitResult(rom_json) : emitResult(linearSummaryText(lm, red, err, f, hf));
+    args.json ? emitResult(rom_json) : emitResult(linearSummaryText(lm, red, a.err, a.f, a.hf) + targetText(a));
     return kOk;
   });
 }

@@ -157,6 +157,12 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
                     "Report how many modes a reduced model needs for this FRF error relative to each pair's peak (0: skip)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--target-error", lin.target_error,
+                    "Relative error to meet, e.g. 1e-3: the segments per link are chosen for every mode up to --to "
+                    "(as modes --target-error) and the reduced model keeps the fewest modes within it of each pair's peak")
+        ->check(CLI::Range(1e-12, 0.5));
+    cmd->add_option("--time-budget", lin.time_budget, "Wall seconds --target-error may take choosing the segments")
+        ->check(positive());
     cmd->add_option("--out", lin.out, "Output directory");
     cmd->add_flag("--force", lin.force, "Replace files of the same names in --out");
   };

@@ -492,6 +492,26 @@ TEST_F(Cli, ModesTargetErrorChoosesTheSegments) {
   EXPECT_TRUE(never.out.empty());
 }
 
+// frf and rom --target-error: the segments chosen for every mode up to --to, and the
+// fewest kept modes whose reduced model is within the target of each pair's peak.
+TEST_F(Cli, FrfTargetErrorChoosesSegmentsAndKeptModes) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml").string();
+  const Result r = run("frf " + scene + " --target-error 1e-2 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& t = j.at("target_error");
+  EXPECT_EQ(t["segments"].get<int>(), 16);
+  EXPECT_LE(j["max_relative_frf_error"].get<double>(), 1e-2);
+  EXPECT_EQ(2 * t["rom_modes"].get<int>(), j["reduced_states"].get<int>());
+  EXPECT_LT(t["rom_modes"].get<int>(), 12);  // fewer than the modes in the band
+  // One mode fewer misses the target: the count is the fewest.
+  const Result fewer = run("frf " + scene + " --segments 16 --rom-modes " + std::to_string(t["rom_modes"].get<int>() - 1) + " --json");
+  ASSERT_EQ(fewer.code, 0) << fewer.err;
+  EXPECT_GT(nlohmann::json::parse(fewer.out)["max_relative_frf_error"].get<double>(), 1e-2);
+  EXPECT_EQ(run("frf " + scene + " --target-error 1e-2 --band 1:10").code, 64);
+  EXPECT_EQ(run("frf " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --target-error 1e-2").code, 64);
+}
+
 TEST_F(Cli, SimulateBadInput) {
   // A sine beyond the table's +-15 cm stroke is refused before anything runs.
   std::string text = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml");
