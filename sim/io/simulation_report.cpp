@@ -149,7 +149,8 @@ std::string targetText(const TargetOutcome& t) {
            r.met ? "met" : "missed"});
   os << a.text();
   const TargetAttempt& last = t.attempts.back();
-  os << strf("Chosen: %s; estimated error %.3g m within %.3g m; cost %.2f s in all (pilot %.2f s)\n",
+  os << strf("Chosen: %s; estimated error %.3g m within half the %.3g m target (the estimate's margin); cost %.2f s in "
+             "all (pilot %.2f s)\n",
              fidelityName(t, last).c_str(), last.estimated_error_m, t.target_m,
              t.total_seconds, t.pilot.total_seconds);
   return os.str();

@@ -15,6 +15,11 @@ namespace {
 constexpr double kWindowFraction = 0.2;  ///< of the run, the pilot's window
 constexpr double kMinWindowS = 1.0;
 constexpr double kTightestAccuracy = 1e-12;
+/// A run meets E when its estimate is within E / 2: the companion's own error is not
+/// always a tenth of the run's (CVODE Adams on the 170 deg pendulum at 1e-7: estimate
+/// 6.9e-5 m against a true 1.07e-4 m), and the estimate is within a factor of two of the
+/// true error for the integrators tested (tests/sim/time/verify_test.cpp).
+constexpr double kEstimateMargin = 0.5;
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
@@ -58,7 +63,7 @@ class TargetRunner {
       a.estimated_error_m = d.distance_m;
       a.at_s = d.at_s;
       a.point = d.point;
-      a.met = d.distance_m <= o_.target_m;
+      a.met = d.distance_m <= kEstimateMargin * o_.target_m;
       out_.attempts.push_back(a);
       if (a.met) {
         result.verification = verification(a, companion, tight);

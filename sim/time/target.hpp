@@ -17,7 +17,9 @@
 ///     tighter tolerance (sim/time/verify.hpp): the companion's difference estimates
 ///     the run's integration and (with fewer segments) discretization error against the
 ///     scene's model.
-///  3. A run whose estimate misses E is replaced by its companion (the next tighter
+///     The run meets E when the estimate is within E / 2 (the margin for a companion
+///     whose own error is not a tenth of the run's).
+///  3. A run whose estimate misses E / 2 is replaced by its companion (the next tighter
 ///     fidelity) with a new companion at a further 10x tighter tolerance, until the
 ///     estimate meets E, the tolerance passes 1e-12, or the time budget is spent.
 ///

@@ -445,7 +445,7 @@ TEST_F(Cli, SimulateTargetErrorChoosesRunsAndVerifies) {
   EXPECT_EQ(t["target_m"].get<double>(), 1e-4);
   const auto& last = t["attempts"].back();
   EXPECT_TRUE(last["met"].get<bool>());
-  EXPECT_LE(last["estimated_error_m"].get<double>(), 1e-4);
+  EXPECT_LE(last["estimated_error_m"].get<double>(), 0.5e-4);
   EXPECT_EQ(last["point"], "link3a.tip");
   EXPECT_EQ(j["integrator"], last["integrator"]);  // the run reported is the one chosen
   EXPECT_EQ(j["verification"]["target"], "given");

@@ -21,6 +21,10 @@ ArticleScene pendulumFrom170Degrees() {
   return s;
 }
 
+std::string strfAttempt(const TargetAttempt& a) {
+  return a.integrator + " at " + std::to_string(a.accuracy) + ": estimate " + std::to_string(a.estimated_error_m) + "; ";
+}
+
 // The true error of the chosen run: against CPodes at 1e-11 at the scene's own segments.
 double trueError(ArticleScene s, const TargetOutcome& t, const std::vector<std::string>& points) {
   s.simulation.integrator = "cpodes";
@@ -42,13 +46,15 @@ TEST(TargetError, ThePendulumMeetsItsTargetAgainstATightReference) {
   ASSERT_FALSE(t.attempts.empty());
   const TargetAttempt& chosen = t.attempts.back();
   EXPECT_TRUE(chosen.met);
-  EXPECT_LE(chosen.estimated_error_m, 1e-4);
+  EXPECT_LE(chosen.estimated_error_m, 0.5e-4);  // the margin
   EXPECT_DOUBLE_EQ(t.window_s, 1.2);  // 20 % of 6 s
   EXPECT_NEAR(t.window_target_m, 2e-5, 1e-18);  // scaled by the window's share
   EXPECT_FALSE(t.has_segments);
   for (std::size_t k = 0; k + 1 < t.attempts.size(); ++k) EXPECT_FALSE(t.attempts[k].met);
   const double actual = trueError(s, t, {});
-  EXPECT_LE(actual, 1e-4) << chosen.integrator << " at " << chosen.accuracy;
+  std::string tried;
+  for (const auto& a : t.attempts) tried += strfAttempt(a);
+  EXPECT_LE(actual, 1e-4) << tried;
   EXPECT_GT(chosen.estimated_error_m, 0.2 * actual);  // an estimate, not a bound far off
   EXPECT_TRUE(t.result.verification.done);
   EXPECT_FALSE(t.result.verification.target_is_default);
@@ -74,7 +80,8 @@ TEST(TargetError, TheSlewSceneMeetsItsTargetAtTheNamedTip) {
   // by far (a slew bends the links), so the scene's 8 are kept.
   EXPECT_EQ(chosen.segments, 0);
   bool ladder = false;
-  for (const auto& r : t.pilot.runs) ladder |= r.segments == 4 && r.ok && r.error_m > t.window_target_m;
+  for (const auto& r : t.pilot.runs)  // (or cut once it cost more than the cheapest run, on a loaded machine)
+    ladder |= r.segments == 4 && ((r.ok && r.error_m > t.window_target_m) || r.status == "costlier");
   EXPECT_TRUE(ladder);
 }
 
@@ -93,9 +100,11 @@ TEST(TargetError, ALooseTargetIsMetAndTheVerificationSeesTheSegments) {
   EXPECT_TRUE(chosen.met);
   const double actual = trueError(s, t, o.points);
   EXPECT_LE(actual, 0.05);
+  // The ladder was tried with the cheapest run: 4 per link measured (or, on a loaded
+  // machine, cut once it cost more than the cheapest run: a choice by wall time).
   int ladder = 0;
-  for (const auto& r : t.pilot.runs) ladder += r.segments > 0 && r.ok;
-  EXPECT_EQ(ladder, 2);  // 4 and 2 per link, both within 2.5 cm over the first second
+  for (const auto& r : t.pilot.runs) ladder += r.segments == 4 && (r.ok || r.status == "costlier");
+  EXPECT_EQ(ladder, 1);
   if (chosen.segments) EXPECT_GT(chosen.estimated_error_m, 0.5 * actual);
 }
 
