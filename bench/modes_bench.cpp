@@ -139,3 +139,20 @@ void BM_HamsasTransmissibilityPoint(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(mmv::spatialTransmissibility(h.model, h.lin, 2 * M_PI * 10.0));
 }
 BENCHMARK(BM_HamsasTransmissibilityPoint)->Unit(benchmark::kMicrosecond);
+
+#include <cmath>
+
+namespace {
+
+// `modes --target-error E` (segmentsForTarget): the ladder 1, 2, 4, ... up to the count
+// that holds the 12 modes within E (arg: -log10 E), on the default article.
+void BM_SegmentsForTarget(benchmark::State& st) {
+  const mmv::ArticleScene s = mmv::loadDefaultScene();
+  const double target = std::pow(10.0, -static_cast<double>(st.range(0)));
+  mmv::SegmentsChoice c;
+  for (auto _ : st) c = mmv::segmentsForTarget(s, 12, target, 256);
+  st.counters["segments"] = c.segments;
+}
+BENCHMARK(BM_SegmentsForTarget)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond);
+
+}  // namespace
