@@ -315,7 +315,7 @@ std::string constraintDriftWarning(const SimulationResult& r, double size_m) {
 
 double energyScale(const SimulationResult& r) {
   return std::max({r.peak_kinetic_energy_j, std::abs(r.motion_work_j), std::abs(r.dissipated_j),
-                   1e-8 * std::max(std::abs(r.initial_energy_j), std::abs(r.final_energy_j))});
+                   std::max(1e-8, r.accuracy) * std::max(std::abs(r.initial_energy_j), std::abs(r.final_energy_j))});
 }
 
 std::string energyBalanceWarning(const SimulationResult& r) {

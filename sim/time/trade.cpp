@@ -13,7 +13,9 @@
 
 namespace mmv {
 
-double defaultTradeTarget(const TradeStudy& s) { return defaultErrorTarget(s.reference_amplitude_m); }
+double defaultTradeTarget(const TradeStudy& s) {
+  return defaultErrorTarget(s.reference_amplitude_m, s.reference_scale_m);
+}
 
 TradeProblem tradeProblemBase(const std::string& scene_name, SimulationSpec simulation, double duration) {
   TradeProblem p;
@@ -89,6 +91,7 @@ class TradeRunner {
     const SimulationResult check = simulateWith(0, study_.check_integrator, 1e-10, {});
     study_.reference_uncertainty_m = scoredDistance(reference_.record, check.record, o_.points).distance_m;
     study_.reference_amplitude_m = scoredAmplitude(reference_.record, o_.points);
+    study_.reference_scale_m = scoredScale(reference_.record, o_.points);
     study_.reference_seconds = reference_.wall_seconds;
     study_.target_m = o_.target_m > 0 ? o_.target_m : defaultTradeTarget(study_);
     integratorGrid();

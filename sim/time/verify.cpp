@@ -45,7 +45,23 @@ double scoredAmplitude(const SimulationRecord& a, const std::vector<std::string>
   return worst;
 }
 
-double defaultErrorTarget(double amplitude_m) { return amplitude_m > 0 ? 0.01 * amplitude_m : 1e-4; }
+double scoredScale(const SimulationRecord& a, const std::vector<std::string>& points) {
+  double worst = 0;
+  for (const auto& [name, ca] : a.scored) {
+    if (!scored(points, name)) continue;
+    for (const auto& row : a.rows) {
+      double d2 = 0;
+      for (int c : ca) d2 += row[c] * row[c];
+      worst = std::max(worst, std::sqrt(d2));
+    }
+  }
+  return worst;
+}
+
+double defaultErrorTarget(double amplitude_m, double scale_m) {
+  const double motion = std::max(amplitude_m, kMotionFloor * scale_m);
+  return motion > 0 ? 0.01 * motion : 1e-4;
+}
 
 RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spec,
                           const std::function<SimulationResult(const SimulationSpec&)>& rerun, double target_m) {
@@ -63,7 +79,7 @@ RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spe
   v.at_s = d.at_s;
   v.point = d.point;
   v.amplitude_m = scoredAmplitude(companion.record, spec.score_points);
-  v.target_m = target_m > 0 ? target_m : defaultErrorTarget(v.amplitude_m);
+  v.target_m = target_m > 0 ? target_m : defaultErrorTarget(v.amplitude_m, scoredScale(companion.record, spec.score_points));
   v.target_is_default = !(target_m > 0);
   return v;
 }

@@ -31,12 +31,23 @@ ScoredDistance scoredDistance(const SimulationRecord& a, const SimulationRecord&
 /// The largest distance of the scored points from their first sample.
 double scoredAmplitude(const SimulationRecord& a, const std::vector<std::string>& points);
 
+/// The scored points' largest distance from the origin (m): the size their positions
+/// are known to relative to.
+double scoredScale(const SimulationRecord& a, const std::vector<std::string>& points);
+
+/// The smallest motion counted as motion: a micrometre per metre of the scored points'
+/// distance from the origin (`scale_m`). Below it an article held at rest only drifts
+/// by integration noise (CPodes at 1e-6 moves the closed article's tips 2 nm in 10 s),
+/// and 1 % of that drift is no target.
+constexpr double kMotionFloor = 1e-6;
+
 /// The target an error is held to when the user gives none: 1 % of the scored points'
-/// largest motion; 1e-4 m if nothing moved.
-double defaultErrorTarget(double amplitude_m);
+/// largest motion, the motion counted as no less than kMotionFloor x `scale_m`; 1e-4 m
+/// if both are 0.
+double defaultErrorTarget(double amplitude_m, double scale_m);
 
 /// Runs `rerun` at the run's tolerances / 10 and fills the estimate. `target_m` <= 0:
-/// defaultErrorTarget of the companion's amplitude. Throws what `rerun` throws.
+/// defaultErrorTarget of the companion's amplitude and scale. Throws what `rerun` throws.
 RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spec,
                           const std::function<SimulationResult(const SimulationSpec&)>& rerun, double target_m);
 

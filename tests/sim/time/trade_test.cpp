@@ -1,4 +1,5 @@
 #include "sim/time/trade.hpp"
+#include "sim/time/verify.hpp"
 
 #include <gtest/gtest.h>
 
@@ -66,7 +67,10 @@ TEST(Trade, TheDefaultTargetIsOnePercentOfTheScoredMotion) {
   EXPECT_GT(all.reference_amplitude_m, 0.01);  // metres of slew, not micrometres
   EXPECT_DOUBLE_EQ(defaultTradeTarget(all), 0.01 * all.reference_amplitude_m);
   TradeStudy still = all;
-  still.reference_amplitude_m = 0;
+  still.reference_amplitude_m = 0;  // nothing moved: 1 % of a micrometre per metre of the points' distance
+  EXPECT_GT(all.reference_scale_m, 1.0);
+  EXPECT_DOUBLE_EQ(defaultTradeTarget(still), 0.01 * kMotionFloor * all.reference_scale_m);
+  still.reference_scale_m = 0;
   EXPECT_DOUBLE_EQ(defaultTradeTarget(still), 1e-4);
   o.points = {"link1.tip"};
   const TradeStudy link1 = runTrade(articleTradeProblem(s), o);
