@@ -135,6 +135,7 @@ class TradeRunner {
     } catch (const NumericalError& e) {
       return skip(r, "failed", e.what());
     } catch (const RunBudgetExceeded& e) {
+      r.seconds = e.seconds;  // what it cost before the cut (a cut run's tighter tolerances cost more)
       if (e.costlier)
         return skip(r, "costlier", strf("cut after %.3g s at %.0f %% of the run: costlier than the cheapest run within the "
                                         "target (%.3g s)", e.seconds, 100 * e.fraction, cheapestWithinTarget()));
@@ -205,7 +206,7 @@ class TradeRunner {
                strf("skipped: costlier (a looser run %.3g s, the cheapest within the target %.3g s)", looser_cost, best));
         } else {
           const TradeRun& r = measure(0, name, acc);
-          if (r.ok) looser_cost = std::max(looser_cost, r.seconds);
+          if (r.ok || r.status == "costlier") looser_cost = std::max(looser_cost, r.seconds);
           cut = r.status == "over_budget";
         }
       }

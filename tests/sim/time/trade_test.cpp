@@ -200,6 +200,36 @@ TEST(Trade, SkipsTheRunsThatCannotBeTheCheapestWithinTheTarget) {
   for (const auto& r : runTrade(stubProblem(), o).runs) EXPECT_EQ(r.status, "ok");
 }
 
+// `cut_costlier` (the choice of `simulate --target-error`): the dear integrator's
+// loosest run is cut once it has cost more than the cheapest run within the target,
+// and its tighter tolerances are then skipped without starting (a cut run used to
+// leave them to start and be cut in turn: 30 s of a 32 s pilot on the table scene).
+TEST(Trade, ARunCutAsCostlierSkipsItsTighterTolerances) {
+  TradeProblem p = stubProblem();
+  const auto inner = p.run;
+  p.run = [inner](const SimulationSpec& s, int n, const std::function<void(double)>& progress) {
+    if (s.integrator == "rk_merson" && s.accuracy > 1e-9)  // dear: 11 samples of 50 ms against the cheap run's 0.1 s
+      return inner(s, n, [&](double f) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        progress(f);
+      });
+    return inner(s, n, progress);
+  };
+  TradeOptions o;
+  o.integrators = {"cpodes", "rk_merson"};
+  o.accuracies = {1e-3, 1e-4, 1e-6};
+  o.cut_costlier = true;
+  const TradeStudy t = runTrade(p, o);
+  ASSERT_EQ(t.runs.size(), 6u);
+  EXPECT_EQ(t.runs[3].status, "costlier");
+  EXPECT_NE(t.runs[3].failure.find("cut after"), std::string::npos) << t.runs[3].failure;
+  EXPECT_GT(t.runs[3].seconds, 0.1);  // what it cost before the cut
+  for (int k = 4; k < 6; ++k) {
+    EXPECT_EQ(t.runs[k].status, "costlier");
+    EXPECT_NE(t.runs[k].failure.find("skipped"), std::string::npos) << t.runs[k].failure;
+  }
+}
+
 TEST(Trade, BudgetsCutARunAndStopTheTrade) {
   TradeOptions o;
   o.integrators = {"cpodes", "cvode_bdf"};
