@@ -401,7 +401,7 @@ TEST_F(Cli, SimulateSlewScene) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 1001);  // header + 2 s at 500 Hz + t = 0
   EXPECT_EQ(csv.find("nan"), std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "summary.json"));
-  EXPECT_EQ(j["integrator"], "cpodes");
+  EXPECT_EQ(j["integrator"], "cvode_bdf");  // the cheapest within 1e-4 m (docs/accuracy.md)
   EXPECT_NEAR(j["table"]["carried_weight_n"].get<double>(), 956.4, 0.1);  // article + 3 x 10 kg rings
   EXPECT_GT(j["table"]["peak_force_n"].get<double>(), 0.0);
   ASSERT_EQ(j["torques"].size(), 6u);  // gimbal yaw, pitch, roll; joints 1 to 3
@@ -536,7 +536,7 @@ TEST_F(Cli, SimulateBadInput) {
   EXPECT_NE(li.err.find("cvode_bdf"), std::string::npos) << li.err;
   EXPECT_NE(li.err.find("ida"), std::string::npos) << li.err;
   std::string named = slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml");
-  const std::string integ = "integrator: cpodes";
+  const std::string integ = "integrator: cvode_bdf";
   ASSERT_NE(named.find(integ), std::string::npos);
   named.replace(named.find(integ), integ.size(), "integrator: cpode");
   const Result si = run("simulate --duration 0.1 " + write("integ.yaml", named).string());
