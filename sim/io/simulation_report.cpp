@@ -149,10 +149,10 @@ std::string targetText(const TargetOutcome& t) {
            strf("%s at %.4g s", r.point.c_str(), r.at_s),
            strf("accuracy %g", r.accuracy / 10) + (t.has_segments ? ", the scene's segments" : ""),
            strf("%.3g", r.companion_seconds),
-           r.met ? "met" : "missed"});
+           r.met ? "met" : !r.energy_ok ? "missed: energy balance" : "missed"});
   os << a.text();
   const TargetAttempt& last = t.attempts.back();
-  os << strf("Chosen: %s; estimated error %.3g m within half the %.3g m target (the estimate's margin); cost %.2f s in "
+  os << strf("Chosen: %s; estimated error %.3g m within half the %.3g m target (the estimate's margin), energy balance held; cost %.2f s in "
              "all (pilot %.2f s)\n",
              fidelityName(t, last).c_str(), last.estimated_error_m, t.target_m,
              t.total_seconds, t.pilot.total_seconds);
@@ -166,7 +166,7 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
   for (const auto& r : t.pilot.runs) {
     nlohmann::ordered_json one = {{"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments},
                                   {"status", r.status}};
-    if (r.ok) one.update({{"error_m", r.error_m}, {"wall_time_s", r.seconds}});
+    if (r.ok) one.update({{"error_m", r.error_m}, {"wall_time_s", r.seconds}, {"energy_balance_ok", r.energy_ok}});
     runs.push_back(one);
   }
   j["pilot"] = {{"window_s", t.window_s},
@@ -186,6 +186,7 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
                         {"point", r.point},
                         {"companion_accuracy", r.accuracy / 10},
                         {"companion_wall_time_s", r.companion_seconds},
+                        {"energy_balance_ok", r.energy_ok},
                         {"met", r.met}});
   j["attempts"] = attempts;
   j["total_wall_time_s"] = t.total_seconds;

@@ -63,7 +63,8 @@ class TargetRunner {
       a.estimated_error_m = d.distance_m;
       a.at_s = d.at_s;
       a.point = d.point;
-      a.met = d.distance_m <= kEstimateMargin * o_.target_m;
+      a.energy_ok = energyBalanceWarning(result).empty();
+      a.met = d.distance_m <= kEstimateMargin * o_.target_m && a.energy_ok;
       out_.attempts.push_back(a);
       if (a.met) {
         result.verification = verification(a, companion, tight);
@@ -108,6 +109,7 @@ class TargetRunner {
     t.target_m = out_.window_target_m;
     t.cut_costlier = true;
     t.ladder_at_cheapest = true;
+    t.require_energy_balance = true;
     if (o_.time_budget_s > 0) t.total_budget_s = budgetLeft();
     window.run = [this, inner = problem_.run](const SimulationSpec& spec, int segments,
                                                const std::function<void(double)>& cut) {
@@ -123,7 +125,7 @@ class TargetRunner {
                                 o_.target_m, floor, out_.window_s));
     const TradeRun* best = nullptr;
     for (const auto& r : out_.pilot.runs)
-      if (r.ok && r.error_m <= out_.window_target_m && (!best || r.seconds < best->seconds)) best = &r;
+      if (r.ok && r.error_m <= out_.window_target_m && r.energy_ok && (!best || r.seconds < best->seconds)) best = &r;
     if (!best) {
       checkBudget("the pilot");
       throw NumericalError(strf("--target-error %.3g m cannot be met: no run of the pilot came within %.3g m over the first "

@@ -18,7 +18,9 @@
 ///     the run's integration and (with fewer segments) discretization error against the
 ///     scene's model.
 ///     The run meets E when the estimate is within E / 2 (the margin for a companion
-///     whose own error is not a tenth of the run's).
+///     whose own error is not a tenth of the run's) and its energy balance holds at
+///     every sample (a run its own summary calls inaccurate is not accepted; the pilot
+///     asks the same of its runs).
 ///  3. A run whose estimate misses E / 2 is replaced by its companion (the next tighter
 ///     fidelity) with a new companion at a further 10x tighter tolerance, until the
 ///     estimate meets E, the tolerance passes 1e-12, or the time budget is spent.
@@ -51,7 +53,8 @@ struct TargetAttempt {
   double run_seconds = 0, companion_seconds = 0;
   double estimated_error_m = 0, at_s = 0;
   std::string point;
-  bool met = false;
+  bool energy_ok = true;  ///< the run's energy balance held at every sample (no energyBalanceWarning)
+  bool met = false;       ///< the estimate within E / 2 and the energy balance held
 };
 
 struct TargetOutcome {

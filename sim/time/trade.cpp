@@ -132,6 +132,7 @@ class TradeRunner {
       r.error_m = scoredDistance(res.record, reference_.record, o_.points).distance_m;
       r.seconds = res.wall_seconds;
       r.evaluations = res.realizations;
+      r.energy_ok = energyBalanceWarning(res).empty();
     } catch (const NumericalError& e) {
       return skip(r, "failed", e.what());
     } catch (const RunBudgetExceeded& e) {
@@ -166,7 +167,9 @@ class TradeRunner {
   const TradeRun* cheapestRunWithinTarget() const {
     const TradeRun* best = nullptr;
     for (const auto& r : study_.runs)
-      if (r.ok && r.error_m <= study_.target_m && (!best || r.seconds < best->seconds)) best = &r;
+      if (r.ok && r.error_m <= study_.target_m && (r.energy_ok || !o_.require_energy_balance) &&
+          (!best || r.seconds < best->seconds))
+        best = &r;
     return best;
   }
 

@@ -59,6 +59,9 @@ struct TradeRun {
   double error_m = 0, seconds = 0;
   long evaluations = 0;
   bool pareto = false;
+  /// The run's energy balance held within 1 % of its energy scale at every sample
+  /// (energyBalanceWarning, sim/time/simulation.hpp).
+  bool energy_ok = true;
 };
 
 struct TradeOptions {
@@ -79,6 +82,10 @@ struct TradeOptions {
   /// integrator and tolerance) instead of the reference integrator at 1e-8: the
   /// cheapest fidelity with that integrator; none within the target: no ladder.
   bool ladder_at_cheapest = false;
+  /// A run counts as within the target only when its energy balance holds too
+  /// (TradeRun::energy_ok): `simulate --target-error` accepts no run its own summary
+  /// would call inaccurate.
+  bool require_energy_balance = false;
 };
 
 struct TradeStudy {
