@@ -175,6 +175,7 @@ Analysis analyse(LinearArgs args, ArticleScene scene, const std::vector<double>&
     a.segments = segmentsForTarget(scene, std::clamp(in_band, 1, 60), args.target_error, kMaxTargetSegments, args.time_budget);
     overrideSegments(scene, a.segments->segments);
     args.rom_target = args.target_error;
+    args.rom_modes = std::clamp(in_band, 1, 60);  // the candidates: the grid resolves each one's band
   } else if (args.time_budget > 0) {
     throw UsageError("--time-budget applies to --target-error only");
   }
@@ -185,9 +186,13 @@ Analysis analyse(LinearArgs args, ArticleScene scene, const std::vector<double>&
   a.scene = std::move(scene);
   respond(args, grid, a);
   if (a.segments && a.err.needed.reached && a.err.needed.modes != args.rom_modes) {
+    // The fewest modes within the target, compared on the same grid (it resolves every
+    // candidate's half-power band, so the kept ones' too): no second full response.
     args.rom_modes = a.err.needed.modes;
     a.red = reduce(args, a.lm.full);
-    respond(args, grid, a);
+    const ModelError::ModesNeeded needed = a.err.needed;
+    a.err = compareResponses(a.hf, a.red.model, a.w);
+    a.err.needed = needed;
   } else if (a.segments && !a.err.needed.reached) {
     throw NumericalError(strf("--target-error %g: no reduced model of up to %d modes is within it of each pair's peak",
                               args.target_error, a.err.needed.modes));

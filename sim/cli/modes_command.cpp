@@ -51,7 +51,11 @@ void convergencePlot(OutputDir& out, const ConvergenceStudy& c) {
 int runModesCommand(const ModesArgs& args) {
   return guarded([&]() -> int {
     const Scene loaded = loadScene(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasModes(args, *h);
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
+      if (args.target_error > 0 || args.time_budget > 0)
+        throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
+      return runHamsasModes(args, *h);
+    }
     ArticleScene scene = std::get<ArticleScene>(loaded);
     std::optional<SegmentsChoice> choice;
     if (args.target_error > 0) {

@@ -486,6 +486,7 @@ TEST_F(Cli, ModesTargetErrorChoosesTheSegments) {
   EXPECT_EQ(run("modes --target-error 1e-3 --segments 8").code, 64);
   EXPECT_EQ(run("modes --target-error 1e-3 --modes 0").code, 64);
   EXPECT_EQ(run("modes --time-budget 1").code, 64);
+  EXPECT_EQ(run("modes " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --target-error 1e-3").code, 64);
   const Result never = run("modes --target-error 1e-11");
   EXPECT_EQ(never.code, 1);
   EXPECT_NE(never.err.find("cannot be met with up to 256 segments per link"), std::string::npos) << never.err;
