@@ -72,7 +72,7 @@ class TargetRunner {
         out_.total_seconds = since(t0_);
         return out_;
       }
-      if (companion.accuracy / 10 < kTightestAccuracy)
+      if (companion.accuracy / 10 < kTightestAccuracy * (1 - 1e-9))  // (the decades are products: a rounding margin)
         throw NumericalError(strf("--target-error %.3g m cannot be met: %s is %.3g m off at %s (t = %.4g s) and a tighter "
                                   "tolerance than %g cannot be verified",
                                   o_.target_m, describe(run).c_str(), a.estimated_error_m, a.point.c_str(), a.at_s,

@@ -128,6 +128,12 @@ TEST(SegmentsForTarget, TheChoiceMeetsTheClosedFormAndIsTheFewest) {
     EXPECT_NE(std::string(e.what()).find("with up to 16 segments per link"), std::string::npos) << e.what();
   }
   EXPECT_THROW(segmentsForTarget(s, 3, 0.0, 16), UsageError);
+  try {  // a budget spent before the target is met: refused, naming the budget and the level reached
+    segmentsForTarget(s, 3, 1e-9, 256, 1e-9);
+    FAIL() << "1e-9 met within 1e-9 s";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("within the 1e-09 s budget"), std::string::npos) << e.what();
+  }
 }
 
 // The default article: the 12 modes at the count chosen for 1e-3 are within 1e-3 of a

@@ -125,6 +125,44 @@ TEST(TargetError, ARunWhoseEnergyBalanceFailsIsNotAccepted) {
   EXPECT_TRUE(flagged);
 }
 
+// A run whose error never falls with the tolerance (a stub: each tolerance's positions
+// differ from the next one's by 1 cm) walks the tolerance down to the tightest that can
+// be verified and is then refused, naming the last run verified and its estimate.
+TEST(TargetError, ARunThatNeverConvergesIsRefusedAtTheTightestTolerance) {
+  SimulationSpec spec;
+  spec.duration = 1;
+  spec.sample_rate_hz = 10;
+  TradeProblem p = tradeProblemBase("stub", spec, 0);
+  p.scorable = {"p"};
+  p.scorable_kind = "point";
+  p.has_segments = false;
+  p.run = [](const SimulationSpec& s, int, const std::function<void(double)>& progress) {
+    SimulationResult r;
+    r.integrator = s.integrator;
+    r.accuracy = s.accuracy;
+    r.record.columns = {"time_s", "p_x_m"};
+    r.record.scored = {{"p", {1}}};
+    const int decade = static_cast<int>(std::lround(-std::log10(s.accuracy)));
+    for (int k = 0; k <= 10; ++k) {
+      r.record.rows.push_back({0.1 * k, 0.1 * k + 0.01 * (decade % 2)});
+      if (progress) progress(k / 10.0);
+    }
+    return r;
+  };
+  TargetOptions o;
+  o.target_m = 1e-3;
+  o.integrators = {"cvode_bdf"};
+  try {
+    runToTarget(p, o);
+    FAIL() << "a run that never converges was accepted";
+  } catch (const NumericalError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cannot be verified"), std::string::npos) << what;
+    EXPECT_NE(what.find("0.01 m off"), std::string::npos) << what;
+    EXPECT_NE(what.find("tighter tolerance than 1e-12"), std::string::npos) << what;
+  }
+}
+
 // Targets that cannot be met are refused with the reason: below what the 1e-10
 // references resolve, and within a budget too short for the runs.
 TEST(TargetError, AnImpossibleTargetIsRefused) {
