@@ -11,8 +11,19 @@ namespace {
 const TradeRun* cheapestWithin(const TradeStudy& s, double target) {
   const TradeRun* best = nullptr;
   for (const auto& r : s.runs)
-    if (r.ok && !r.segments && r.error_m <= target && (!best || r.seconds < best->seconds)) best = &r;
+    if (r.ok && !r.segments && r.error_m <= target && r.energy_ok && (!best || r.seconds < best->seconds)) best = &r;
   return best;
+}
+
+/// A run within the target cheaper than `best` whose energy balance fails (the reason
+/// it is not named), or null.
+const TradeRun* cheaperButUnbalanced(const TradeStudy& s, double target, const TradeRun* best) {
+  const TradeRun* r0 = nullptr;
+  for (const auto& r : s.runs)
+    if (r.ok && !r.segments && r.error_m <= target && !r.energy_ok && (!best || r.seconds < best->seconds) &&
+        (!r0 || r.seconds < r0->seconds))
+      r0 = &r;
+  return r0;
 }
 
 }  // namespace
@@ -39,7 +50,8 @@ std::string tradeText(const TradeStudy& s, double target) {
       continue;
     }
     t.add({r.integrator, strf("%.0e", r.accuracy), segments, strf("%.3g", r.error_m), strf("%.3f", r.seconds),
-           strf("%ld", r.evaluations), r.pareto ? "*" : "", ""});
+           strf("%ld", r.evaluations), r.pareto ? "*" : "",
+           r.energy_ok ? "" : "energy balance fails (over 1 % of the run's energy scale)"});
   }
   os << t.text();
   int costlier = 0, cut = 0, not_run = 0;
@@ -55,7 +67,10 @@ std::string tradeText(const TradeStudy& s, double target) {
     os << strf("\nCheapest run within %.3g m: %s at accuracy %.0e (%.3f s, error %.3g m)\n", target, best->integrator.c_str(),
                best->accuracy, best->seconds, best->error_m);
   else
-    os << strf("\nNo run reached %.3g m: tighten the accuracies\n", target);
+    os << strf("\nNo run reached %.3g m with its energy balance held: tighten the accuracies\n", target);
+  if (const TradeRun* u = cheaperButUnbalanced(s, target, best))
+    os << strf("(%s at accuracy %.0e is cheaper within %.3g m, %.3f s, but its energy balance fails)\n", u->integrator.c_str(),
+               u->accuracy, target, u->seconds);
   return os.str();
 }
 
@@ -78,6 +93,7 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
       x["cpu_s"] = r.seconds;
       x["evaluations"] = r.evaluations;
       x["pareto"] = r.pareto;
+      x["energy_balance_ok"] = r.energy_ok;
     } else {
       x["failure"] = r.failure;
     }
@@ -95,11 +111,11 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
 
 std::string tradeCsv(const TradeStudy& s) {
   std::ostringstream csv;
-  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto,status\n";
+  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto,status,energy_balance_ok\n";
   for (const auto& r : s.runs)
     csv << r.integrator << ',' << strf("%.3g", r.accuracy) << ',' << r.segments << ',' << r.ok << ','
         << (r.ok ? strf("%.6g,%.6g,%ld,%d", r.error_m, r.seconds, r.evaluations, r.pareto ? 1 : 0) : std::string(",,,")) << ','
-        << r.status << '\n';
+        << r.status << ',' << (r.ok ? std::to_string(r.energy_ok ? 1 : 0) : std::string()) << '\n';
   return csv.str();
 }
 

@@ -109,7 +109,6 @@ class TargetRunner {
     t.target_m = out_.window_target_m;
     t.cut_costlier = true;
     t.ladder_at_cheapest = true;
-    t.require_energy_balance = true;
     if (o_.time_budget_s > 0) t.total_budget_s = budgetLeft();
     window.run = [this, inner = problem_.run](const SimulationSpec& spec, int segments,
                                                const std::function<void(double)>& cut) {

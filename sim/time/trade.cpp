@@ -167,8 +167,7 @@ class TradeRunner {
   const TradeRun* cheapestRunWithinTarget() const {
     const TradeRun* best = nullptr;
     for (const auto& r : study_.runs)
-      if (r.ok && r.error_m <= study_.target_m && (r.energy_ok || !o_.require_energy_balance) &&
-          (!best || r.seconds < best->seconds))
+      if (r.ok && r.error_m <= study_.target_m && r.energy_ok && (!best || r.seconds < best->seconds))
         best = &r;
     return best;
   }

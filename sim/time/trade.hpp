@@ -14,6 +14,10 @@
 /// other run is both cheaper and more accurate. A run that fails is listed with its
 /// diagnostic instead of numbers.
 ///
+/// A run is within the target when its error is and its energy balance holds at every
+/// sample (TradeRun::energy_ok): no run its own summary would call inaccurate is named
+/// the cheapest, or cuts and skips others.
+///
 /// On a budget: each integrator's tolerances run from the loosest to the tightest, and
 ///  - a run is skipped as costlier when a looser run of the same integrator already
 ///    cost more than the cheapest run within the target (a tighter tolerance never costs
@@ -82,10 +86,6 @@ struct TradeOptions {
   /// integrator and tolerance) instead of the reference integrator at 1e-8: the
   /// cheapest fidelity with that integrator; none within the target: no ladder.
   bool ladder_at_cheapest = false;
-  /// A run counts as within the target only when its energy balance holds too
-  /// (TradeRun::energy_ok): `simulate --target-error` accepts no run its own summary
-  /// would call inaccurate.
-  bool require_energy_balance = false;
 };
 
 struct TradeStudy {

@@ -1,4 +1,5 @@
 #include "sim/time/trade.hpp"
+#include "sim/io/trade_report.hpp"
 #include "sim/time/verify.hpp"
 
 #include <gtest/gtest.h>
@@ -228,6 +229,32 @@ TEST(Trade, ARunCutAsCostlierSkipsItsTighterTolerances) {
     EXPECT_EQ(t.runs[k].status, "costlier");
     EXPECT_NE(t.runs[k].failure.find("skipped"), std::string::npos) << t.runs[k].failure;
   }
+}
+
+// A run within the target whose energy balance fails (the stub's cheap run at 1e-3
+// drifts half its peak kinetic energy) is not the cheapest run named: the report names
+// the next one and says why the cheaper one was passed over.
+TEST(Trade, ARunWhoseEnergyBalanceFailsIsNotNamedTheCheapest) {
+  TradeProblem p = stubProblem();
+  const auto inner = p.run;
+  p.run = [inner](const SimulationSpec& s, int n, const std::function<void(double)>& progress) {
+    SimulationResult r = inner(s, n, progress);
+    if (s.integrator == "cpodes" && s.accuracy == 1e-3)  // cheaper than the 1e-4 run, and unbalanced
+      r.wall_seconds = 0.05, r.peak_kinetic_energy_j = 1, r.max_energy_balance_error_j = 0.5;
+    return r;
+  };
+  TradeOptions o;
+  o.integrators = {"cpodes"};
+  o.accuracies = {1e-3, 1e-4};
+  const TradeStudy t = runTrade(p, o);
+  ASSERT_EQ(t.runs.size(), 2u);
+  EXPECT_FALSE(t.runs[0].energy_ok);
+  EXPECT_TRUE(t.runs[1].energy_ok);
+  const std::string text = tradeText(t, t.target_m);
+  EXPECT_NE(text.find("Cheapest run within 0.01 m: cpodes at accuracy 1e-04"), std::string::npos) << text;
+  EXPECT_NE(text.find("cpodes at accuracy 1e-03 is cheaper within 0.01 m"), std::string::npos) << text;
+  EXPECT_NE(text.find("energy balance fails"), std::string::npos) << text;
+  EXPECT_EQ(tradeJson(t, t.target_m)["cheapest_within_target"]["accuracy"].get<double>(), 1e-4);
 }
 
 TEST(Trade, BudgetsCutARunAndStopTheTrade) {
