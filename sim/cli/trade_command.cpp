@@ -50,6 +50,7 @@ int runTradeCommand(const TradeArgs& args) {
     o.points = args.points;
     o.target_m = args.target_error;
     o.skip_costlier = !args.all;
+    o.cut_costlier = !args.all;  // a run past the cheapest within the target cannot be it either
     o.run_budget_s = args.run_budget;
     o.total_budget_s = args.time_budget;
     for (const auto& name : o.integrators)

@@ -58,8 +58,9 @@ std::string tradeText(const TradeStudy& s, double target) {
   for (const auto& r : s.runs) costlier += r.status == "costlier", cut += r.status == "over_budget", not_run += r.status == "not_run";
   os << strf("\nThe trade took %.3g s", s.total_seconds);
   if (costlier + cut + not_run > 0)
-    os << strf(": %d runs skipped as costlier (a looser run of their integrator already cost more than the cheapest run "
-               "within the target; --all runs them), %d cut at the run budget, %d not run (budgets)",
+    os << strf(": %d runs skipped or cut as costlier (a looser run of their integrator, or the run itself so far, cost "
+               "more than the cheapest run within the target; --all runs them), %d cut at the run budget, %d not run "
+               "(budgets)",
                costlier, cut, not_run);
   os << '\n';
   const TradeRun* best = cheapestWithin(s, target);
