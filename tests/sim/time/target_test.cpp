@@ -7,6 +7,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/time/verify.hpp"
 #include "support/scenes.hpp"
+#include "support/stub_trade.hpp"
 
 namespace mmv {
 namespace {
@@ -129,26 +130,10 @@ TEST(TargetError, ARunWhoseEnergyBalanceFailsIsNotAccepted) {
 // differ from the next one's by 1 cm) walks the tolerance down to the tightest that can
 // be verified and is then refused, naming the last run verified and its estimate.
 TEST(TargetError, ARunThatNeverConvergesIsRefusedAtTheTightestTolerance) {
-  SimulationSpec spec;
-  spec.duration = 1;
-  spec.sample_rate_hz = 10;
-  TradeProblem p = tradeProblemBase("stub", spec, 0);
-  p.scorable = {"p"};
-  p.scorable_kind = "point";
-  p.has_segments = false;
-  p.run = [](const SimulationSpec& s, int, const std::function<void(double)>& progress) {
-    SimulationResult r;
-    r.integrator = s.integrator;
-    r.accuracy = s.accuracy;
-    r.record.columns = {"time_s", "p_x_m"};
-    r.record.scored = {{"p", {1}}};
+  const TradeProblem p = testing::stubTradeProblem([](const SimulationSpec& s, double t) {
     const int decade = static_cast<int>(std::lround(-std::log10(s.accuracy)));
-    for (int k = 0; k <= 10; ++k) {
-      r.record.rows.push_back({0.1 * k, 0.1 * k + 0.01 * (decade % 2)});
-      if (progress) progress(k / 10.0);
-    }
-    return r;
-  };
+    return t + 0.01 * (decade % 2);
+  });
   TargetOptions o;
   o.target_m = 1e-3;
   o.integrators = {"cvode_bdf"};

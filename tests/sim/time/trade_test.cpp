@@ -1,5 +1,6 @@
 #include "sim/time/trade.hpp"
 #include "sim/io/trade_report.hpp"
+#include "support/stub_trade.hpp"
 #include "sim/time/verify.hpp"
 
 #include <gtest/gtest.h>
@@ -160,28 +161,13 @@ TEST(Trade, ScoresStations) {
 // tolerance, "dear" 5 s (an explicit method at its stability limit); a run's error is
 // its accuracy in metres; the point moves 1 m, so the default target is 1 cm.
 TradeProblem stubProblem(double sleep_per_sample_s = 0) {
-  SimulationSpec spec;
-  spec.duration = 1;
-  spec.sample_rate_hz = 10;
-  TradeProblem p = tradeProblemBase("stub", spec, 0);
-  p.scorable = {"p"};
-  p.scorable_kind = "point";
-  p.has_segments = false;
-  p.run = [sleep_per_sample_s](const SimulationSpec& s, int, const std::function<void(double)>& progress) {
-    SimulationResult r;
-    r.record.columns = {"time_s", "p_x_m"};
-    r.record.scored = {{"p", {1}}};
-    const double offset = s.accuracy < 1e-9 ? 0.0 : s.accuracy;  // the references are exact
-    for (int k = 0; k <= 10; ++k) {
-      if (sleep_per_sample_s > 0) std::this_thread::sleep_for(std::chrono::duration<double>(sleep_per_sample_s));
-      r.record.rows.push_back({0.1 * k, 0.1 * k + offset});
-      if (progress) progress(k / 10.0);
-    }
-    r.wall_seconds = s.integrator == "rk_merson" ? 5.0 : 0.1;  // "dear" and "cheap"
-    r.realizations = 100;
-    return r;
-  };
-  return p;
+  return testing::stubTradeProblem(
+      [](const SimulationSpec& s, double t) { return t + (s.accuracy < 1e-9 ? 0.0 : s.accuracy); },  // the references are exact
+      [](const SimulationSpec& s, SimulationResult& r) {
+        r.wall_seconds = s.integrator == "rk_merson" ? 5.0 : 0.1;  // "dear" and "cheap"
+        r.realizations = 100;
+      },
+      sleep_per_sample_s);
 }
 
 TEST(Trade, SkipsTheRunsThatCannotBeTheCheapestWithinTheTarget) {
