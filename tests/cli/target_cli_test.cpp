@@ -1,0 +1,115 @@
+// Accuracy end to end (docs/accuracy.md): `simulate --verify`, and the contract
+// (`simulate`, `modes` and `frf --target-error`): what they choose and report, and what
+// they refuse.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+// --verify: the slew scene's run at its own accuracy against one 10x tighter, with the
+// estimate, where, and whether it meets the default target (1 % of the tips' motion).
+TEST_F(Cli, SimulateVerifyReportsAnErrorEstimate) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const Result r = run("simulate " + scene + " --segments 2 --duration 1 --verify --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& v = j.at("verification");
+  EXPECT_EQ(v["companion_accuracy"].get<double>(), 1e-7);
+  EXPECT_GT(v["estimated_error_m"].get<double>(), 0.0);
+  EXPECT_NEAR(v["target_m"].get<double>(), 0.01 * v["scored_amplitude_m"].get<double>(), 1e-15);
+  EXPECT_TRUE(v["met"].get<bool>());
+  EXPECT_NE(v["point"].get<std::string>().find(".tip"), std::string::npos);
+  // An unreachable target is reported as not met, with a warning, and the run still exits 0.
+  const Result strict = run("simulate " + scene + " --segments 2 --duration 1 --verify-target 1e-15");
+  ASSERT_EQ(strict.code, 0) << strict.err;
+  EXPECT_NE(strict.out.find("NOT MET"), std::string::npos) << strict.out;
+  EXPECT_NE(strict.out.find("warning: the run's estimated error"), std::string::npos);
+  EXPECT_NE(run("simulate " + scene + " --verify-target -1").code, 0);
+}
+
+// --target-error: the slew's chosen run, its verification and the pilot in the JSON and
+// the text; an --out directory records the chosen run; what it cannot do is refused.
+TEST_F(Cli, SimulateTargetErrorChoosesRunsAndVerifies) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const Result r = run("simulate " + scene + " --segments 2 --duration 1 --target-error 1e-4 --points link3a.tip --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& t = j.at("target_error");
+  EXPECT_EQ(t["target_m"].get<double>(), 1e-4);
+  const auto& last = t["attempts"].back();
+  EXPECT_TRUE(last["met"].get<bool>());
+  EXPECT_LE(last["estimated_error_m"].get<double>(), 0.5e-4);
+  EXPECT_EQ(last["point"], "link3a.tip");
+  EXPECT_EQ(j["integrator"], last["integrator"]);  // the run reported is the one chosen
+  EXPECT_EQ(j["verification"]["target"], "given");
+  EXPECT_GT(t["pilot"]["runs"].size(), 7u);
+  const Result text = run("simulate " + scene + " --segments 2 --duration 1 --target-error 1e-4 --points link3a.tip");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("Chosen: "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("Target error 0.0001 m: pilot over the first 1 s"), std::string::npos) << text.out;
+
+  const Result accuracy = run("simulate " + scene + " --target-error 1e-4 --accuracy 1e-6");
+  EXPECT_EQ(accuracy.code, 64);
+  EXPECT_NE(accuracy.err.find("--target-error chooses the accuracy"), std::string::npos) << accuracy.err;
+  EXPECT_EQ(run("simulate " + scene + " --target-error 1e-4 --verify").code, 64);
+  const Result points = run("simulate " + scene + " --points link3a.tip");
+  EXPECT_EQ(points.code, 64);
+  EXPECT_NE(points.err.find("--points applies to --target-error only"), std::string::npos) << points.err;
+  const Result unknown = run("simulate " + scene + " --duration 1 --target-error 1e-4 --points link9.tip");
+  EXPECT_EQ(unknown.code, 64);
+  EXPECT_NE(unknown.err.find("link9.tip"), std::string::npos) << unknown.err;
+  const Result budget = run("simulate " + scene + " --target-error 1e-7 --time-budget 0.2");
+  EXPECT_EQ(budget.code, 1);
+  EXPECT_NE(budget.err.find("cannot be met within the 0.2 s budget"), std::string::npos) << budget.err;
+  EXPECT_TRUE(budget.out.empty());
+}
+
+// modes --target-error: the segments chosen, the ladder that chose them, and the modes
+// reported at that count; what it cannot hold is refused.
+TEST_F(Cli, ModesTargetErrorChoosesTheSegments) {
+  const Result r = run("modes --target-error 1e-3 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& t = j.at("target_error");
+  EXPECT_EQ(t["segments"].get<int>(), 64);  // 32 per link leave mode 12 at 0.15 %
+  EXPECT_TRUE(t["ladder"].back()["met"].get<bool>());
+  EXPECT_LE(t["ladder"].back()["worst_estimated_relative_error"].get<double>(), 1e-3);
+  for (const auto& m : j["discretization_error"]["modes"])
+    if (!m["estimated_relative_error"].is_null()) EXPECT_LE(m["estimated_relative_error"].get<double>(), 1e-3);
+  EXPECT_EQ(run("modes --target-error 1e-3 --segments 8").code, 64);
+  EXPECT_EQ(run("modes --target-error 1e-3 --modes 0").code, 64);
+  EXPECT_EQ(run("modes --time-budget 1").code, 64);
+  EXPECT_EQ(run("modes " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --target-error 1e-3").code, 64);
+  const Result never = run("modes --target-error 1e-11");
+  EXPECT_EQ(never.code, 1);
+  EXPECT_NE(never.err.find("cannot be met with up to 256 segments per link"), std::string::npos) << never.err;
+  EXPECT_TRUE(never.out.empty());
+}
+
+// frf and rom --target-error: the segments chosen for every mode up to --to, and the
+// fewest kept modes whose reduced model is within the target of each pair's peak.
+TEST_F(Cli, FrfTargetErrorChoosesSegmentsAndKeptModes) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml").string();
+  const Result r = run("frf " + scene + " --target-error 1e-2 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& t = j.at("target_error");
+  EXPECT_EQ(t["segments"].get<int>(), 16);
+  EXPECT_LE(j["max_relative_frf_error"].get<double>(), 1e-2);
+  EXPECT_EQ(2 * t["rom_modes"].get<int>(), j["reduced_states"].get<int>());
+  EXPECT_LT(t["rom_modes"].get<int>(), 12);  // fewer than the modes in the band
+  // One mode fewer misses the target: the count is the fewest.
+  const Result fewer = run("frf " + scene + " --segments 16 --rom-modes " + std::to_string(t["rom_modes"].get<int>() - 1) + " --json");
+  ASSERT_EQ(fewer.code, 0) << fewer.err;
+  EXPECT_GT(nlohmann::json::parse(fewer.out)["max_relative_frf_error"].get<double>(), 1e-2);
+  EXPECT_EQ(run("frf " + scene + " --target-error 1e-2 --band 1:10").code, 64);
+  EXPECT_EQ(run("frf " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --target-error 1e-2").code, 64);
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
