@@ -25,9 +25,6 @@
 namespace mmv::cli {
 namespace {
 
-/// The finest mesh --target-error tries (as `modes --target-error`).
-constexpr int kMaxTargetSegments = 256;
-
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
   std::stringstream ss(s);

@@ -19,10 +19,6 @@
 namespace mmv::cli {
 namespace {
 
-/// The finest mesh `modes --target-error` tries: 256 segments per link (the default
-/// article's 768 hinges solve in about a second).
-constexpr int kMaxTargetSegments = 256;
-
 /// convergence.png: each mode's |f_N / Richardson - 1| against segments per link, log-log
 /// (a straight line of slope -2 where the observed order is 2).
 void convergencePlot(OutputDir& out, const ConvergenceStudy& c) {

@@ -84,6 +84,10 @@ struct SegmentsChoice {
   std::vector<SegmentsLevel> ladder;
   double seconds = 0;
 };
+/// The finest mesh the commands' --target-error tries: 256 segments per link (the
+/// default article at 1e-4 needs 128, chosen in 77 ms; docs/benchmarks.md).
+constexpr int kMaxTargetSegments = 256;
+
 /// Throws NumericalError when no count up to `max_segments` meets E, or the time budget
 /// (> 0, s) is spent first; the message names the best level reached.
 SegmentsChoice segmentsForTarget(const ArticleScene& scene, int num_modes, double target, int max_segments,

@@ -97,7 +97,7 @@ struct TradeStudy {
   /// The scored points' largest distance from where they start, in the reference run
   /// (m): the scale a default target is taken from.
   double reference_amplitude_m = 0;
-  double reference_scale_m = 0;  ///< the scored points' largest distance from the origin (scoredScale)
+  double reference_scale_m = 0;  ///< the scored points' extent (scoredScale)
   double reference_seconds = 0;
   double target_m = 0;        ///< the target the skipping used (TradeOptions::target_m or the default).
   double total_seconds = 0;   ///< the whole trade's wall time.

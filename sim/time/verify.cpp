@@ -46,15 +46,18 @@ double scoredAmplitude(const SimulationRecord& a, const std::vector<std::string>
 }
 
 double scoredScale(const SimulationRecord& a, const std::vector<std::string>& points) {
+  std::vector<const std::vector<int>*> cols;
+  for (const auto& [name, c] : a.scored)
+    if (scored(points, name)) cols.push_back(&c);
   double worst = 0;
-  for (const auto& [name, ca] : a.scored) {
-    if (!scored(points, name)) continue;
-    for (const auto& row : a.rows) {
-      double d2 = 0;
-      for (int c : ca) d2 += row[c] * row[c];
-      worst = std::max(worst, std::sqrt(d2));
-    }
-  }
+  for (const auto& row : a.rows)
+    for (std::size_t i = 0; i < cols.size(); ++i)
+      for (std::size_t j = i + 1; j < cols.size(); ++j) {
+        double d2 = 0;
+        for (std::size_t c = 0; c < cols[i]->size() && c < cols[j]->size(); ++c)
+          d2 += std::pow(row[(*cols[i])[c]] - row[(*cols[j])[c]], 2);
+        worst = std::max(worst, std::sqrt(d2));
+      }
   return worst;
 }
 

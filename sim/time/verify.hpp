@@ -31,19 +31,20 @@ ScoredDistance scoredDistance(const SimulationRecord& a, const SimulationRecord&
 /// The largest distance of the scored points from their first sample.
 double scoredAmplitude(const SimulationRecord& a, const std::vector<std::string>& points);
 
-/// The scored points' largest distance from the origin (m): the size their positions
-/// are known to relative to.
+/// The size of what the scored points span (m): the largest distance between two of
+/// them at one sample (the article's extent when its tips are scored). Independent of
+/// where the scene puts its origin; 0 for a single point.
 double scoredScale(const SimulationRecord& a, const std::vector<std::string>& points);
 
 /// The smallest motion counted as motion: a micrometre per metre of the scored points'
-/// distance from the origin (`scale_m`). Below it an article held at rest only drifts
-/// by integration noise (CPodes at 1e-6 moves the closed article's tips 2 nm in 10 s),
-/// and 1 % of that drift is no target.
+/// extent (`scale_m`). Below it an article held at rest only drifts by integration
+/// noise (CPodes at 1e-6 moves the closed article's tips 2 nm in 10 s), and 1 % of that
+/// drift is no target.
 constexpr double kMotionFloor = 1e-6;
 
 /// The target an error is held to when the user gives none: 1 % of the scored points'
 /// largest motion, the motion counted as no less than kMotionFloor x `scale_m`; 1e-4 m
-/// if both are 0.
+/// if both are 0 (one point scored that does not move).
 double defaultErrorTarget(double amplitude_m, double scale_m);
 
 /// Runs `rerun` at the run's tolerances / 10 and fills the estimate. `target_m` <= 0:
