@@ -150,7 +150,18 @@ struct BaseSpec {
   std::optional<GimbalSpec> gimbal;   ///< built only when the scene names one.
 };
 
+/// How the links are discretized (docs/spatial.md). Planar: bending in the plane of
+/// motion only (pins about z). Spatial: every hinge also bends out of the plane and
+/// twists (three body-fixed rotations: torsion about the link, out-of-plane bending
+/// about the in-plane normal, in-plane bending about z), so out-of-plane and torsion
+/// modes exist; with those two held it is the planar model.
+enum class ArticleModel { Planar, Spatial };
+
 struct ArticleSpec {
+  ArticleModel model = ArticleModel::Planar;
+  /// Spatial model only, for checks (not a scene key): the out-of-plane and torsion
+  /// coordinates of every hinge are held, leaving the planar model's motions.
+  bool lock_out_of_plane = false;
   std::vector<Material> materials;
   std::vector<Section> sections;
   std::vector<JointSpec> joints;

@@ -1,5 +1,6 @@
 #include "article/section.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mmv {
@@ -21,6 +22,31 @@ double sectionSecondMoment(const Section& s) {
       return (s.b * std::pow(s.h, 3) - (s.b - 2 * s.t) * std::pow(s.h - 2 * s.t, 3)) / 12.0;
     case SectionShape::RoundRod: return M_PI * std::pow(s.radius, 4) / 4.0;
     case SectionShape::Explicit: return s.explicit_second_moment;
+  }
+  return 0;
+}
+
+double sectionSecondMomentOut(const Section& s) {
+  switch (s.shape) {
+    case SectionShape::Rectangle: return s.h * std::pow(s.b, 3) / 12.0;
+    case SectionShape::RectangularTube:
+      return (s.h * std::pow(s.b, 3) - (s.h - 2 * s.t) * std::pow(s.b - 2 * s.t, 3)) / 12.0;
+    case SectionShape::RoundRod: return M_PI * std::pow(s.radius, 4) / 4.0;
+    case SectionShape::Explicit: return s.explicit_second_moment_out;
+  }
+  return 0;
+}
+
+double sectionTorsionConstant(const Section& s) {
+  switch (s.shape) {
+    case SectionShape::Rectangle: {
+      const double a = std::max(s.b, s.h), c = std::min(s.b, s.h), r = c / a;
+      return a * std::pow(c, 3) * (1.0 / 3.0 - 0.21 * r * (1 - std::pow(r, 4) / 12.0));
+    }
+    case SectionShape::RectangularTube:
+      return 2 * s.t * std::pow(s.b - s.t, 2) * std::pow(s.h - s.t, 2) / (s.b + s.h - 2 * s.t);
+    case SectionShape::RoundRod: return M_PI * std::pow(s.radius, 4) / 2.0;
+    case SectionShape::Explicit: return s.explicit_torsion_constant;
   }
   return 0;
 }

@@ -4,6 +4,9 @@
 /// Bending is in the plane of motion (the x-y plane of the article). For every
 /// section, `h` is the depth in that plane (the bending direction) and `b` the width
 /// out of plane, so I = b h^3 / 12 for a solid rectangle (MMV report, Table 1).
+/// The spatial model (docs/spatial.md) also bends the section out of the plane (about
+/// the link's in-plane normal, I_out: b and h swap roles) and twists it (St Venant
+/// torsion, G J); the report gives neither, so the formulas below are stated.
 
 #include <string>
 
@@ -14,6 +17,9 @@ struct Material {
   std::string name;
   double density = 0;         ///< rho in kg/m^3, must be > 0.
   double youngs_modulus = 0;  ///< E in Pa, must be > 0.
+  /// G in Pa (torsion, spatial model only): given, or E / (2 (1 + nu)) from a given
+  /// Poisson's ratio; 0 when the scene gives neither.
+  double shear_modulus = 0;
 };
 
 enum class SectionShape { Rectangle, RectangularTube, RoundRod, Explicit };
@@ -28,6 +34,8 @@ struct Section {
   double radius = 0;  ///< radius in m (round rod).
   double explicit_area = 0;           ///< A in m^2 (explicit shape).
   double explicit_second_moment = 0;  ///< I in m^4 about the out-of-plane axis (explicit).
+  double explicit_second_moment_out = 0;  ///< I_out in m^4 (explicit; 0: not given).
+  double explicit_torsion_constant = 0;   ///< J in m^4 (explicit; 0: not given).
 };
 
 /// Cross-section area A in m^2. A = b h, 2 t (b + h) - 4 t^2, or pi R^2.
@@ -35,6 +43,19 @@ double sectionArea(const Section& s);
 /// Second moment of area I in m^4 for bending in the plane of motion.
 /// I = b h^3/12, [b h^3 - (b - 2t)(h - 2t)^3]/12, or pi R^4/4.
 double sectionSecondMoment(const Section& s);
+/// Second moment of area in m^4 for bending out of the plane of motion (about the
+/// link's in-plane normal): h b^3/12, [h b^3 - (h - 2t)(b - 2t)^3]/12, pi R^4/4, or
+/// the explicit value (0 when not given).
+double sectionSecondMomentOut(const Section& s);
+/// St Venant torsion constant J in m^4 (G J is the torsional stiffness):
+///  - solid rectangle, sides a >= c: J = a c^3 [1/3 - 0.21 (c/a) (1 - c^4 / (12 a^4))]
+///    (Roark's Formulas for Stress and Strain, table of torsion constants; within
+///    0.5 % of the exact series for every aspect ratio; 0.1406 a^4 for a square);
+///  - rectangular tube, Bredt's thin-walled closed section on the wall's midline:
+///    J = 4 A_m^2 t / p_m = 2 t (b - t)^2 (h - t)^2 / (b + h - 2t);
+///  - round rod: J = pi R^4 / 2 (exact);
+///  - explicit: the given value (0 when not given).
+double sectionTorsionConstant(const Section& s);
 /// Squared radius of gyration of the section about the bending axis, I/A, in m^2.
 double sectionGyrationSquared(const Section& s);
 

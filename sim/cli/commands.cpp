@@ -26,8 +26,14 @@ Scene loadScene(const SceneArgs& args) {
   return scene;
 }
 
-ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command) {
+Scene loadPlanarScene(const SceneArgs& args, const std::string& command) {
   Scene scene = loadScene(args);
+  if (const auto* a = std::get_if<ArticleScene>(&scene)) requirePlanarModel(*a, command);
+  return scene;
+}
+
+ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command) {
+  Scene scene = command == "converge" ? loadScene(args) : loadPlanarScene(args, command);
   if (auto* a = std::get_if<ArticleScene>(&scene)) return std::move(*a);
   throw UsageError(command + ": " + sceneSource(scene) +
                    " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");

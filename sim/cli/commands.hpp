@@ -230,6 +230,8 @@ ReductionOptions reductionOptions(const LinearArgs& args);
 /// The scene (file or embedded default) with --segments and --no-gravity applied; the
 /// command dispatches on its kind once. UsageError for options that do not apply.
 Scene loadScene(const SceneArgs& args);
+/// loadScene for a command that handles only the planar article model (requirePlanarModel).
+Scene loadPlanarScene(const SceneArgs& args, const std::string& command);
 /// The same for a command that analyses articles only: UsageError for a HAM-SAS scene.
 ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command);
 /// `names` if each is a named point or a station of `article`, else UsageError naming

@@ -216,7 +216,7 @@ void addTargetJson(const Analysis& a, nlohmann::ordered_json& j) {
 
 int runFrfCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
-    const Scene loaded = loadScene(args);
+    const Scene loaded = loadPlanarScene(args, "frf");
     const std::vector<double> grid = frequencies(args);
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
       if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
@@ -283,7 +283,7 @@ int runFrfCommand(const LinearArgs& args) {
 int runRomCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
     if (args.out.empty()) throw UsageError("rom: --out DIR is required (it writes rom.mat and full.mat)");
-    const Scene loaded = loadScene(args);
+    const Scene loaded = loadPlanarScene(args, "rom");
     const std::vector<double> grid = frequencies(args);
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
       if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");

@@ -92,7 +92,7 @@ void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const Ha
 
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
   return guarded([&] {
-    const Scene loaded = loadScene(args);
+    const Scene loaded = loadPlanarScene(args, "place-sensors");
     PlacementOptions o;
     if (!args.modes.empty()) o.modes = parseModeList(args.modes);
     o.below_hz = args.below_hz;

@@ -97,7 +97,7 @@ int runRenderCommand(const RenderArgs& args) {
       return kOk;
     }
     if (!args.traces.empty() || args.at >= 0) throw UsageError("render: --traces and --at apply to --history RUN_DIR");
-    const Scene loaded = loadScene(args);
+    const Scene loaded = loadPlanarScene(args, "render");
     Drawings dr;
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
       const HamsasModes modes = analyseHamsas(h->isolator);

@@ -149,7 +149,7 @@ int report(const SimulateArgs& args, const std::string& name, const std::string&
 
 int runSimulateCommand(const SimulateArgs& args) {
   return guarded([&] {
-    Scene loaded = loadScene(args);
+    Scene loaded = loadPlanarScene(args, "simulate");
     std::unique_ptr<OutputDir> out;
     if (auto* h = std::get_if<HamsasScene>(&loaded)) {
       applyOverrides(args, h->simulation);

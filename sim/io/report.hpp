@@ -20,6 +20,10 @@ std::string segmentsChoiceText(const SegmentsChoice& c);
 nlohmann::ordered_json segmentsChoiceJson(const SegmentsChoice& c);
 nlohmann::ordered_json discretizationJson(const DiscretizationEstimate& d);
 
+/// The spatial model's planarity section of `modes` (sim/modes/planarity.hpp).
+std::string planarityText(const PlanarityReport& p);
+nlohmann::ordered_json planarityJson(const PlanarityReport& p);
+
 std::string formatConvergenceText(const ConvergenceStudy& c);
 nlohmann::ordered_json convergenceToJson(const ConvergenceStudy& c);
 

@@ -36,6 +36,12 @@ json modeJson(const ModesReport& r, const ModeInfo& m) {
              {"strain_energy_share", shares(m.strain)},
              {"kinetic_energy_share_by_link", shares(m.kinetic_by_link)},
              {"strain_energy_share_by_link", shares(m.strain_by_link)}};
+  if (r.spatial) {
+    mj["effective_mass_z_kg"] = m.effective_mass_z_kg;
+    mj["family"] = m.family.label;
+    mj["strain_share_by_axis"] = {
+        {"in_plane", m.family.in_plane}, {"out_of_plane", m.family.out_of_plane}, {"torsion", m.family.torsion}};
+  }
   if (!m.stable) mj["growth_rate_per_s"] = std::sqrt(-m.omega2);
   if (r.damped && m.stable && !m.rigid_body && m.has_damping) {
     mj["damping_ratio"] = m.damping_ratio;
@@ -44,13 +50,18 @@ json modeJson(const ModesReport& r, const ModeInfo& m) {
   json shape = json::array();
   for (const auto& p : m.shape) {
     json pj = {{"point", p.point}, {"ux", p.ux}, {"uy", p.uy}};
+    if (r.spatial) pj["uz"] = p.uz;
     if (p.has_rotation) pj["rz"] = p.rz;
     shape.push_back(pj);
   }
   mj["shape"] = shape;
   if (!m.at_points.empty()) {
     json at = json::array();
-    for (const auto& p : m.at_points) at.push_back({{"point", p.point}, {"ux_m", p.ux}, {"uy_m", p.uy}});
+    for (const auto& p : m.at_points) {
+      json pj = {{"point", p.point}, {"ux_m", p.ux}, {"uy_m", p.uy}};
+      if (r.spatial) pj["uz_m"] = p.uz;
+      at.push_back(pj);
+    }
     mj["at_points"] = at;
   }
   return mj;
@@ -66,7 +77,8 @@ json modesToJson(const ModesReport& r) {
   json links = json::array();
   for (const auto& [name, n] : r.model.link_segments)
     links.push_back({{"name", name}, {"segments", n ? json(n) : json("rigid")}});
-  j["model"] = {{"links", links},
+  j["model"] = {{"kind", r.spatial ? "spatial" : "planar"},
+                {"links", links},
                 {"bodies", r.model.num_bodies},
                 {"coordinates", r.model.num_coordinates},
                 {"dofs", r.model.num_dofs},
@@ -84,8 +96,11 @@ json modesToJson(const ModesReport& r) {
   for (const auto& c : r.closures)
     closures.push_back({{"name", c.name}, {"force_x_n", c.fx}, {"force_y_n", c.fy}, {"gap_m", c.error_m}});
   json points = json::array();
-  for (const auto& p : r.points)
-    points.push_back({{"name", p.name}, {"x_m", p.x}, {"y_m", p.y}, {"deflection_x_m", p.dx}, {"deflection_y_m", p.dy}});
+  for (const auto& p : r.points) {
+    json pj = {{"name", p.name}, {"x_m", p.x}, {"y_m", p.y}, {"deflection_x_m", p.dx}, {"deflection_y_m", p.dy}};
+    if (r.spatial) pj["z_m"] = p.z, pj["deflection_z_m"] = p.dz;
+    points.push_back(pj);
+  }
   j["equilibrium"] = {{"converged", r.equilibrium_converged},
                       {"iterations", r.equilibrium_iterations},
                       {"residual_n_m", r.equilibrium_residual_nm},
@@ -103,6 +118,7 @@ json modesToJson(const ModesReport& r) {
                  {"stiffness_asymmetry", r.stiffness_asymmetry}};
   if (const auto& d = r.discretization; d.available || !d.reason.empty()) j["discretization_error"] = discretizationJson(d);
   if (r.segments_choice) j["target_error"] = segmentsChoiceJson(*r.segments_choice);
+  if (r.planarity) j["planarity"] = planarityJson(*r.planarity);
   if (!r.warnings.empty()) j["warnings"] = r.warnings;
   j["time_s"] = {{"build", r.seconds_build},
                  {"equilibrium", r.seconds_equilibrium},

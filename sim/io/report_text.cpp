@@ -22,6 +22,51 @@ double shareOf(const std::vector<PartShare>& shares, const std::string& part) {
 
 const char* mmvlabVersion() { return "0.1.0"; }
 
+namespace {
+
+/// The system modes' table with its legend.
+std::string modesTable(const ModesReport& r) {
+  std::ostringstream os;
+  os << "\nSystem modes about the equilibrium\n"
+        "  kinetic, strain: the link with the largest share of the mode's energy, counted with the\n"
+        "                   lumped masses it carries (tip mass, torquers at its tip)\n"
+        "  geometric_%: share of the modal stiffness from preload (gravity, loads, closure forces)\n"
+        "  m_eff: effective mass for base translation (what a shaker at the base sees)\n"
+        "  peak: the named point that moves most\n";
+  if (r.damped)
+    os << "  zeta_%: damping ratio under the scene's damping: " << r.damping_model << "\n"
+       << strf("          (the damped eigenproblem over %d real modes%s)\n", r.damping_basis_modes,
+               r.damping_exact ? ", every mode: exact" : ", the lowest: a projection");
+  else
+    os << "  damping: none in the scene (give it `damping:` to see each mode's ratio; frf and rom assume 1 % modal)\n";
+  if (r.spatial)
+    os << "  family: what the mode's strain energy bends (in-plane, out-of-plane, torsion: 80 % or more; else mixed)\n";
+  os << strf("  %4s %13s  %-20s %-20s %9s %10s %10s  %s%s%s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
+            "geometric_%", "m_eff_x_kg", "m_eff_y_kg", r.spatial ? strf("%10s  %-13s ", "m_eff_z_kg", "family").c_str() : "",
+            r.damped ? strf("%8s  ", "zeta_%").c_str() : "", "peak");
+  for (const auto& m : r.modes) {
+    const std::string f = m.rigid_body ? strf("%13s", "0 (rigid)")
+                          : m.stable   ? strf("%13.4f", m.frequency_hz)
+                                       : strf("%13s", "UNSTABLE");
+    const std::string k = strf("%s (%.0f %%)", m.dominant_link_kinetic.c_str(), 100 * shareOf(m.kinetic_by_link, m.dominant_link_kinetic));
+    const std::string s = m.dominant_link_strain.empty()
+                              ? std::string("-")
+                              : strf("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain_by_link, m.dominant_link_strain));
+    const std::string zeta = !r.damped                                     ? ""
+                             : m.rigid_body || !m.stable || !m.has_damping ? strf("%8s  ", "-")
+                                                                           : strf("%8.3f  ", 100 * m.damping_ratio);
+    const std::string fam = r.spatial ? strf("%10.4f  %-13s ", m.effective_mass_z_kg, m.family.label.c_str()) : "";
+    os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s%s%s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
+              100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, fam.c_str(), zeta.c_str(),
+              m.peak_point.c_str());
+    if (!m.stable)
+      os << strf("       unstable: omega^2 = %.4g rad^2/s^2, growth rate %.4g 1/s\n", m.omega2, std::sqrt(-m.omega2));
+  }
+  return os.str();
+}
+
+}  // namespace
+
 std::string formatModesText(const ModesReport& r) {
   std::ostringstream os;
   const double g = std::hypot(r.gravity[0], r.gravity[1]);
@@ -46,51 +91,28 @@ std::string formatModesText(const ModesReport& r) {
     for (const auto& c : r.closures) os << strf("  %-14s %12.4f %12.4f %12.1e\n", c.name.c_str(), c.fx, c.fy, c.error_m);
   }
   os << "\nLink tips at equilibrium (deflection = equilibrium minus the unbent shape)\n";
-  os << strf("  %-12s %10s %10s %12s %12s\n", "point", "x_m", "y_m", "dx_mm", "dy_mm");
+  os << strf("  %-12s %10s %10s %12s %12s%s\n", "point", "x_m", "y_m", "dx_mm", "dy_mm", r.spatial ? "        dz_mm" : "");
   for (const auto& p : r.points)
     if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0)
-      os << strf("  %-12s %10.4f %10.4f %12.4f %12.4f\n", p.name.c_str(), p.x, p.y, 1e3 * p.dx, 1e3 * p.dy);
+      os << strf("  %-12s %10.4f %10.4f %12.4f %12.4f%s\n", p.name.c_str(), p.x, p.y, 1e3 * p.dx, 1e3 * p.dy,
+                 r.spatial ? strf(" %12.4f", 1e3 * p.dz).c_str() : "");
 
-  os << "\nSystem modes about the equilibrium\n"
-        "  kinetic, strain: the link with the largest share of the mode's energy, counted with the\n"
-        "                   lumped masses it carries (tip mass, torquers at its tip)\n"
-        "  geometric_%: share of the modal stiffness from preload (gravity, loads, closure forces)\n"
-        "  m_eff: effective mass for base translation (what a shaker at the base sees)\n"
-        "  peak: the named point that moves most\n";
-  if (r.damped)
-    os << "  zeta_%: damping ratio under the scene's damping: " << r.damping_model << "\n"
-       << strf("          (the damped eigenproblem over %d real modes%s)\n", r.damping_basis_modes,
-               r.damping_exact ? ", every mode: exact" : ", the lowest: a projection");
-  else
-    os << "  damping: none in the scene (give it `damping:` to see each mode's ratio; frf and rom assume 1 % modal)\n";
-  os << strf("  %4s %13s  %-20s %-20s %9s %10s %10s  %s%s\n", "mode", "frequency_Hz", "kinetic (link)", "strain (link)",
-            "geometric_%", "m_eff_x_kg", "m_eff_y_kg", r.damped ? strf("%8s  ", "zeta_%").c_str() : "", "peak");
-  for (const auto& m : r.modes) {
-    const std::string f = m.rigid_body ? strf("%13s", "0 (rigid)")
-                          : m.stable   ? strf("%13.4f", m.frequency_hz)
-                                       : strf("%13s", "UNSTABLE");
-    const std::string k = strf("%s (%.0f %%)", m.dominant_link_kinetic.c_str(), 100 * shareOf(m.kinetic_by_link, m.dominant_link_kinetic));
-    const std::string s = m.dominant_link_strain.empty()
-                              ? std::string("-")
-                              : strf("%s (%.0f %%)", m.dominant_link_strain.c_str(), 100 * shareOf(m.strain_by_link, m.dominant_link_strain));
-    const std::string zeta = !r.damped                                     ? ""
-                             : m.rigid_body || !m.stable || !m.has_damping ? strf("%8s  ", "-")
-                                                                           : strf("%8.3f  ", 100 * m.damping_ratio);
-    os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s%s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
-              100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, zeta.c_str(),
-              m.peak_point.c_str());
-    if (!m.stable)
-      os << strf("       unstable: omega^2 = %.4g rad^2/s^2, growth rate %.4g 1/s\n", m.omega2, std::sqrt(-m.omega2));
-  }
+  os << modesTable(r);
   if (static_cast<int>(r.modes.size()) < r.model.num_dofs)
     os << "  (" << r.modes.size() << " of " << r.model.num_dofs << " modes shown; --modes 0 shows all)\n";
   os << discretizationText(r.discretization);
   if (r.segments_choice) os << segmentsChoiceText(*r.segments_choice);
+  if (r.planarity) os << planarityText(*r.planarity);
   if (!r.modes.empty() && !r.modes.front().at_points.empty()) {
     os << "\nMode shapes at the points asked for (translation per unit modal coordinate, mass-normalised shapes)\n";
-    Table t({"mode", "point", "ux_m", "uy_m"});
+    Table t(r.spatial ? std::vector<std::string>{"mode", "point", "ux_m", "uy_m", "uz_m"}
+                      : std::vector<std::string>{"mode", "point", "ux_m", "uy_m"});
     for (const auto& m : r.modes)
-      for (const auto& p : m.at_points) t.add({std::to_string(m.number), p.point, strf("%.6g", p.ux), strf("%.6g", p.uy)});
+      for (const auto& p : m.at_points) {
+        std::vector<std::string> row{std::to_string(m.number), p.point, strf("%.6g", p.ux), strf("%.6g", p.uy)};
+        if (r.spatial) row.push_back(strf("%.6g", p.uz));
+        t.add(row);
+      }
     os << t.text();
   }
   os << strf("\nChecks: eigen residual %.1e, M-orthogonality error %.1e, stiffness asymmetry %.1e\n", r.eigen_residual,

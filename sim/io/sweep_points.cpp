@@ -42,6 +42,7 @@ ArticleScene sceneAt(const SweepContext& c, const std::vector<std::string>& extr
   Scene s = parseScene(c.scene_text, c.scene_source, sets);
   auto* a = std::get_if<ArticleScene>(&s);
   if (!a) throw SceneError(c.spec.source + ": scene " + c.scene_source + " is a HAM-SAS isolator; sweeps take article scenes");
+  requirePlanarModel(*a, "sweep");
   if (c.spec.segments > 0) overrideSegments(*a, c.spec.segments);
   return std::move(*a);
 }

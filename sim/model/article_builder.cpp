@@ -29,6 +29,21 @@ SimTK::Body::Rigid pieceBody(const LinkPiece& p, double gyration_sq) {
   return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
 }
 
+/// The spatial model's piece: the same in-plane inertia (Euler-Bernoulli: m l^2/12 about
+/// z), the same about the in-plane normal y (so a round rod's two bending families pair
+/// exactly), and the section's polar inertia about the link axis, m (I + I_out) / A,
+/// which torsion needs. A piece shorter than sqrt(6 (I + I_out) / A) would break the
+/// triangle inequality of a rigid body's moments: both bending moments then get the
+/// least addition m c that restores it (a share of the section's rotary inertia; none
+/// on the default article below 18 segments per link, docs/spatial.md).
+SimTK::Body::Rigid spatialPieceBody(const LinkPiece& p, double polar_gyration_sq) {
+  const SimTK::Vec3 com(0.5 * p.length, 0, 0);
+  const double bend = p.inertia_zz_about_com;
+  const double c = std::max(0.0, 0.5 * (p.mass * polar_gyration_sq - 2 * bend));
+  const SimTK::Inertia central(p.mass * polar_gyration_sq, bend + c, bend + c);
+  return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
+}
+
 /// A lumped mass at the body origin with rotary inertia J about z (disc-like: J/2 in x, y).
 SimTK::Body::Rigid lumpedBody(const LumpedMass& m) {
   const double j = m.rotary_inertia;
@@ -167,13 +182,15 @@ class Builder {
     auto& matter = model_.updMatter();
     const LinkDiscretization d = discretize(l);
     const int part = model_.addPart(l.name, Part::Kind::Link, l.name);
-    const double gyr2 = sectionGyrationSquared(*a_.findSection(l.section));
+    const Section& section = *a_.findSection(l.section);
+    const double gyr2 = sectionGyrationSquared(section);
+    const double polar2 = (sectionSecondMoment(section) + sectionSecondMomentOut(section)) / sectionArea(section);
     SimTK::MobilizedBodyIndex prev;
     LinkAxis axis;
     axis.link = l.name;
     axis.length = l.length;
     for (std::size_t k = 0; k < d.pieces.size(); ++k) {
-      const SimTK::Body::Rigid body = pieceBody(d.pieces[k], gyr2);
+      const SimTK::Body::Rigid body = spatial() ? spatialPieceBody(d.pieces[k], polar2) : pieceBody(d.pieces[k], gyr2);
       SimTK::MobilizedBodyIndex ix;
       if (k == 0 && first) {
         ix = parent.grounded && a_.base.type == BaseType::Floating ? addFloatingRoot(j, l, parent, body)
@@ -257,24 +274,50 @@ class Builder {
     return pin.getMobilizedBodyIndex();
   }
 
-  /// Hinge k of a link: a pin with the bending spring E*I/h (and its damper).
+  bool spatial() const { return a_.model == ArticleModel::Spatial; }
+
+  /// Hinge k of a link: a pin with the bending spring E*I/h (and its damper); in the
+  /// spatial model three body-fixed rotations (a Simbody Gimbal, q' = u): torsion about
+  /// the link (G J / h), out-of-plane bending about the in-plane normal (E I_out / h),
+  /// in-plane bending about z (E I / h, the planar hinge), named <link>.h<k>.twist,
+  /// <link>.h<k>.out and <link>.h<k>.
   SimTK::MobilizedBodyIndex addHinge(const LinkSpec& l, const LinkDiscretization& d, std::size_t k,
                                      SimTK::MobilizedBodyIndex prev, const SimTK::Body::Rigid& body) {
-    const double l_prev = d.pieces[k - 1].length;
-    SimTK::MobilizedBody::Pin pin(model_.updMatter().updMobilizedBody(prev), SimTK::Transform(SimTK::Vec3(l_prev, 0, 0)),
-                                  body, SimTK::Transform());
-    const SimTK::MobilizedBodyIndex ix = pin.getMobilizedBodyIndex();
+    const SimTK::Transform X_PF(SimTK::Vec3(d.pieces[k - 1].length, 0, 0));
+    auto& parent = model_.updMatter().updMobilizedBody(prev);
+    const SimTK::MobilizedBodyIndex ix =
+        spatial() ? SimTK::MobilizedBody::Gimbal(parent, X_PF, body, SimTK::Transform()).getMobilizedBodyIndex()
+                  : SimTK::MobilizedBody::Pin(parent, X_PF, body, SimTK::Transform()).getMobilizedBodyIndex();
+    const std::string name = l.name + ".h" + std::to_string(k);
+    const double k_in = d.hinge_stiffness[k - 1];
+    if (spatial()) {
+      const Section& sec = *a_.findSection(l.section);
+      const Material& mat = *a_.findMaterial(l.material);
+      const double ei = mat.youngs_modulus * sectionSecondMoment(sec);
+      addHingeCoordinate(l, ix, name + ".twist", 0, k_in * mat.shear_modulus * sectionTorsionConstant(sec) / ei,
+                         HingeAxis::Torsion);
+      addHingeCoordinate(l, ix, name + ".out", 1, k_in * sectionSecondMomentOut(sec) / sectionSecondMoment(sec),
+                         HingeAxis::OutOfPlane);
+    }
+    addHingeCoordinate(l, ix, name, spatial() ? 2 : 0, k_in, HingeAxis::InPlane);
+    model_.addPoint({name, ix, SimTK::Vec3(0), false});
+    return ix;
+  }
+
+  void addHingeCoordinate(const LinkSpec& l, SimTK::MobilizedBodyIndex ix, const std::string& name, int q,
+                          double stiffness, HingeAxis axis) {
     Coordinate coord;
-    coord.name = l.name + ".h" + std::to_string(k);
+    coord.name = name;
     coord.kind = CoordinateKind::Hinge;
     coord.part = l.name;
     coord.mobod = ix;
-    coord.stiffness = d.hinge_stiffness[k - 1];
+    coord.mobilizer_q = q;
+    coord.axis = axis;
+    coord.held = axis != HingeAxis::InPlane && a_.lock_out_of_plane;
+    coord.stiffness = stiffness;
     if (scene_.damping && scene_.damping->kind == DampingSpec::Kind::HingeViscous)
       coord.damping = scene_.damping->hinge_beta * coord.stiffness;
     model_.addCoordinate(coord);
-    model_.addPoint({coord.name, ix, SimTK::Vec3(0), false});
-    return ix;
   }
 
   LinkDiscretization discretize(const LinkSpec& l) const {
@@ -337,6 +380,7 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
 std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
   const auto& g = scene.gravity;
   auto model = std::make_unique<Model>(SimTK::Vec3(g[0], g[1], g[2]));
+  if (scene.article.model == ArticleModel::Spatial) model->setSpatial();
   Builder(scene, *model).build();
   addLoadsAndClosures(scene.article, *model);
   model->setClosedFormForces();  // the builder adds nothing else

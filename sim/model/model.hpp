@@ -3,9 +3,10 @@
 /// generalized coordinates (what each one is, whether it is held), the parts bodies
 /// belong to, and named points. Built by sim/model/article_builder.hpp.
 ///
-/// Mobilizers are planar pins about world z, welds, or (for a floating root) planar
-/// joints: rotation about z then translations along the ground frame's x and y. For
-/// all of them q' = u, so coordinate i has one q and one u.
+/// Mobilizers are planar pins about world z, welds, (for a floating root) planar
+/// joints: rotation about z then translations along the ground frame's x and y, or (the
+/// spatial article's hinges) gimbals: body-fixed x-y-z rotations. For all of them
+/// q' = u, so coordinate i has one q and one u.
 /// Units: angles in rad, torques in N*m, lengths in m, masses in kg.
 ///
 /// A Model is built once and then used read-only (const); analyses work on their own
@@ -28,8 +29,16 @@ enum class CoordinateKind {
 };
 
 enum class CoordinateMotion {
-  Rotation,     ///< about world z through the body origin (rad).
+  Rotation,     ///< about an axis through the body origin: world z, or (spatial hinges) the gimbal's axis (rad).
   Translation,  ///< along a ground-fixed direction (m).
+};
+
+/// What a hinge coordinate bends (the spatial model has all three; the planar one only
+/// InPlane). Joint coordinates count as InPlane.
+enum class HingeAxis {
+  InPlane,     ///< about z: bending in the plane of motion.
+  OutOfPlane,  ///< about the link's in-plane normal: bending out of the plane.
+  Torsion,     ///< about the link: twist.
 };
 
 struct Coordinate {
@@ -37,6 +46,7 @@ struct Coordinate {
   CoordinateKind kind = CoordinateKind::Hinge;
   CoordinateMotion motion = CoordinateMotion::Rotation;
   int mobilizer_q = 0;  ///< which q of its mobilizer (0 for pins).
+  HingeAxis axis = HingeAxis::InPlane;
   std::string part;  ///< the link (hinge) or joint (joint) it belongs to.
   SimTK::MobilizedBodyIndex mobod;
   double reference = 0;  ///< rad: commanded joint angle, or 0 for an unbent hinge.
@@ -134,6 +144,9 @@ class Model {
   /// coordinates' linear springs, so the closed-form stiffness of sim/statics/linearize.hpp
   /// applies. Builders that add other forces must not call this.
   void setClosedFormForces() { closed_form_forces_ = true; }
+  /// Declares rotations about axes other than world z (the spatial article's Gimbal
+  /// hinges): the closed-form stiffness then uses every rotation's own axis.
+  void setSpatial() { spatial_ = true; }
   /// Realizes topology and builds the reference state. Call once, last.
   void finalize();
   /// Time runs of closed trees: makes every closure a Simbody constraint (a
@@ -174,6 +187,7 @@ class Model {
   const NamedPoint* findPoint(const std::string& name) const;
   int findBody(SimTK::MobilizedBodyIndex mobod) const;  ///< index into getBodies(), -1 if none.
   bool hasClosedFormForces() const { return closed_form_forces_; }
+  bool isSpatial() const { return spatial_; }
   /// Coordinates whose motion moves body b (index into getBodies()): its own
   /// mobilizer's coordinate, if any, and those of all its ancestors.
   const std::vector<int>& getAncestorCoordinates(int b) const { return body_ancestors_[b]; }
@@ -227,6 +241,7 @@ class Model {
   std::vector<std::vector<int>> body_ancestors_;
   std::vector<int> coord_body_;
   bool closed_form_forces_ = false;
+  bool spatial_ = false;
   bool finalized_ = false;
 };
 

@@ -85,7 +85,7 @@ double StationPoint::angularRate(const SimTK::State& s) const {
   return (1 - xi_) * w(a_) + xi_ * w(b_);
 }
 
-Eigen::MatrixXd StationPoint::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const {
+Eigen::MatrixXd StationPoint::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows) const {
   const auto& m = model_->getMatter();
   // Frames: the two node points, then the pieces whose directions enter.
   const std::vector<SimTK::MobilizedBodyIndex> bodies{a_.point_body, b_.point_body, a_.left, a_.right, b_.left, b_.right};
@@ -112,7 +112,7 @@ Eigen::MatrixXd StationPoint::translationJacobian(const SimTK::State& s, const s
   const Eigen::MatrixXd De = (1 - xi_) * Da + xi_ * Db;  // z x de: (-de_y, de_x)
   P.row(0) -= spec_.offset * De.row(1);
   P.row(1) += spec_.offset * De.row(0);
-  return P.topRows(2);
+  return P.topRows(rows);
 }
 
 std::optional<PointRef> PointRef::resolve(const Model& model, const ArticleSpec& article, const std::string& name,
@@ -160,10 +160,10 @@ SimTK::Vec3 PointRef::localAxis(const SimTK::State& s, int axis) const {
   return axis == 0 ? x : SimTK::Vec3(-x[1], x[0], 0);
 }
 
-Eigen::MatrixXd PointRef::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const {
-  if (station_) return station_->translationJacobian(s, dofs);
+Eigen::MatrixXd PointRef::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows) const {
+  if (station_) return station_->translationJacobian(s, dofs, rows);
   const Eigen::MatrixXd J = model_->calcFrameJacobians(s, {point_->mobod}, {point_->station_B}, dofs);
-  return J.middleRows(3, 2);
+  return J.middleRows(3, rows);
 }
 
 }  // namespace mmv

@@ -40,8 +40,9 @@ class StationPoint {
   SimTK::Vec3 direction(const SimTK::State& s) const;
   /// The rotation rate about z (rad/s): the nodes' rates, interpolated linearly.
   double angularRate(const SimTK::State& s) const;
-  /// d p / d q for the coordinates `dofs`: rows x and y (m per unit coordinate).
-  Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const;
+  /// d p / d q for the coordinates `dofs`: rows x and y (m per unit coordinate), and z
+  /// when rows = 3 (the spatial model).
+  Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows = 2) const;
 
  private:
   struct Node {
@@ -74,7 +75,8 @@ class PointRef {
   double angularRate(const SimTK::State& s) const;
   /// Unit vectors of the point's local frame in the world: along the link (x) and across it (y).
   SimTK::Vec3 localAxis(const SimTK::State& s, int axis) const;
-  Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const;  ///< rows x, y
+  /// Rows x, y (and z when rows = 3).
+  Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows = 2) const;
 
  private:
   PointRef(const Model& model, std::string name) : model_(&model), name_(std::move(name)) {}

@@ -178,7 +178,7 @@ std::vector<PointReport> pointReports(const Model& model, const SimTK::State& eq
   for (const auto& p : model.getPoints()) {
     const SimTK::Vec3 x = model.findPointLocation(eqs, p);
     const SimTK::Vec3 x0 = model.findPointLocation(unbent, p);
-    out.push_back({p.name, x[0], x[1], x[0] - x0[0], x[1] - x0[1]});
+    out.push_back({p.name, x[0], x[1], x[0] - x0[0], x[1] - x0[1], x[2], x[2] - x0[2]});
   }
   return out;
 }
@@ -193,6 +193,7 @@ struct ModeKinematics {
   std::vector<SimTK::MobilizedBodyIndex> body_ix, point_ix;
   std::vector<SimTK::Vec3> body_com, point_st;
   std::vector<double> body_mass, body_izz;
+  std::vector<SimTK::Mat33> body_inertia_W;  ///< spatial model: central inertia, world axes.
   /// 6 rows (w; v) per body mass centre / named point for the shape phi over the DOFs.
   Eigen::VectorXd bodies(const Eigen::VectorXd& phi) const {
     return model->calcFrameVelocities(*state, body_ix, body_com, *dofs, phi);
@@ -203,13 +204,17 @@ struct ModeKinematics {
 };
 
 ModeKinematics modeKinematics(const Model& model, const SimTK::State& eqs, const std::vector<int>& dofs) {
-  ModeKinematics k{&model, &eqs, &dofs, {}, {}, {}, {}, {}, {}};
+  ModeKinematics k{&model, &eqs, &dofs, {}, {}, {}, {}, {}, {}, {}};
   for (const auto& b : model.getBodies()) {
     const SimTK::MassProperties mp = model.getMatter().getMobilizedBody(b.mobod).getBodyMassProperties(eqs);
     k.body_ix.push_back(b.mobod);
     k.body_com.push_back(mp.getMassCenter());
     k.body_mass.push_back(mp.getMass());
     k.body_izz.push_back(mp.calcCentralInertia().getMoments()[2]);
+    if (model.isSpatial()) {
+      const SimTK::Rotation R = model.getMatter().getMobilizedBody(b.mobod).getBodyRotation(eqs);
+      k.body_inertia_W.push_back(R * mp.calcCentralInertia().toMat33() * ~R);
+    }
   }
   for (const auto& p : model.getPoints()) {
     k.point_ix.push_back(p.mobod);
@@ -222,14 +227,17 @@ ModeKinematics modeKinematics(const Model& model, const SimTK::State& eqs, const
 void describeEnergies(const Model& model, const std::vector<int>& dofs, const ModeKinematics& k, const Eigen::VectorXd& phi,
                       ModeInfo& m) {
   std::map<std::string, double> kinetic, strain;
-  double Lx = 0, Ly = 0;
+  double Lx = 0, Ly = 0, Lz = 0;
   const Eigen::VectorXd vb = k.bodies(phi);
   for (std::size_t b = 0; b < k.body_mass.size(); ++b) {
     const Eigen::Matrix<double, 6, 1> v = vb.segment<6>(6 * b);  // (w; v_com)
-    const double ke = 0.5 * (k.body_mass[b] * v.tail<3>().squaredNorm() + k.body_izz[b] * v[2] * v[2]);
+    const SimTK::Vec3 w(v[0], v[1], v[2]);
+    const double spin = k.body_inertia_W.empty() ? k.body_izz[b] * v[2] * v[2] : ~w * (k.body_inertia_W[b] * w);
+    const double ke = 0.5 * (k.body_mass[b] * v.tail<3>().squaredNorm() + spin);
     kinetic[model.getParts()[model.getBodies()[b].part].name] += ke;
     Lx += k.body_mass[b] * v[3];
     Ly += k.body_mass[b] * v[4];
+    Lz += k.body_mass[b] * v[5];
   }
   const auto& coords = model.getCoordinates();
   for (std::size_t i = 0; i < dofs.size(); ++i) {
@@ -238,6 +246,10 @@ void describeEnergies(const Model& model, const std::vector<int>& dofs, const Mo
   }
   m.effective_mass_x_kg = Lx * Lx;
   m.effective_mass_y_kg = Ly * Ly;
+  if (model.isSpatial()) {
+    m.effective_mass_z_kg = Lz * Lz;
+    m.family = classifyMode(model, dofs, phi);
+  }
   m.kinetic = sortedShares(kinetic);
   m.strain = sortedShares(strain);
   m.kinetic_by_link = sortedShares(byCarrier(kinetic, model));
@@ -252,8 +264,9 @@ void describeShape(const Model& model, const ModeKinematics& k, const Eigen::Vec
   double peak = 0;
   for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
     const NamedPoint& np = model.getPoints()[p];
-    PointMotion pm{np.name, u[6 * p + 3], u[6 * p + 4], u[6 * p + 2], np.report_rotation};
-    const double mag = std::hypot(pm.ux, pm.uy);
+    PointMotion pm{np.name, u[6 * p + 3], u[6 * p + 4], 0.0, u[6 * p + 2], np.report_rotation};
+    if (model.isSpatial()) pm.uz = u[6 * p + 5];
+    const double mag = model.isSpatial() ? std::hypot(pm.ux, pm.uy, pm.uz) : std::hypot(pm.ux, pm.uy);
     if (mag > peak) {
       peak = mag;
       m.peak_point = np.name;
@@ -261,6 +274,18 @@ void describeShape(const Model& model, const ModeKinematics& k, const Eigen::Vec
     if (with_shapes) m.shape.push_back(pm);
   }
   m.modal_mass_kg = peak > 0 ? 1.0 / (peak * peak) : 0.0;
+}
+
+/// Solves more modes (doubling) until one lies above `hz` or all are solved: what the
+/// planarity report's band needs on a model large enough for the partial solver.
+void solveThroughBand(SolvedScene& s, const ArticleScene& scene, double hz) {
+  const int n = static_cast<int>(s.linearized.dofs.size());
+  auto highest = [&] { return s.modes.omega2.size() ? s.modes.frequencyHz(static_cast<int>(s.modes.omega2.size()) - 1) : 0.0; };
+  while (static_cast<int>(s.modes.omega2.size()) < n && highest() <= hz) {
+    const int more = std::min(n, std::max(20, 2 * static_cast<int>(s.modes.omega2.size())));
+    s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z, more >= n ? 0 : more);
+    markRigidBodyModes(s.modes, s.linearized, scene);
+  }
 }
 
 /// The eigen checks over the `count` modes reported, and a warning when a residual is
@@ -291,7 +316,8 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   const int solved_modes = options.damping && options.max_modes > 0
                                ? std::min(std::max(2 * options.max_modes, options.max_modes + 20), kMaxDampingBasis)
                                : options.max_modes;
-  const SolvedScene s = solveScene(scene, options.equilibrium, solved_modes);
+  SolvedScene s = solveScene(scene, options.equilibrium, solved_modes);
+  if (s.model->isSpatial()) solveThroughBand(s, scene, PlanarityReport().band_high_hz);
   rep.seconds_build = s.seconds_build;
   rep.seconds_equilibrium = s.seconds_equilibrium;
   rep.seconds_linearize = s.seconds_linearize;
@@ -315,7 +341,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     std::string error;
     std::optional<PointRef> p = PointRef::resolve(model, scene.article, name, error);
     if (!p) throw SceneError(scene.source + ": " + error);
-    point_rows.push_back(p->translationJacobian(eqs, dofs));
+    point_rows.push_back(p->translationJacobian(eqs, dofs, model.isSpatial() ? 3 : 2));
     at_points.push_back(*p);
   }
   rep.stiffness_asymmetry = s.linearized.asymmetry;
@@ -348,10 +374,12 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     describeShape(model, kin, phi, options.with_shapes, m);
     for (std::size_t p = 0; p < at_points.size(); ++p) {
       const Eigen::VectorXd u = point_rows[p] * phi;
-      m.at_points.push_back({at_points[p].name(), u[0], u[1], 0.0, false});
+      m.at_points.push_back({at_points[p].name(), u[0], u[1], u.size() > 2 ? u[2] : 0.0, 0.0, false});
     }
     rep.modes.push_back(std::move(m));
   }
+  rep.spatial = model.isSpatial();
+  if (rep.spatial) rep.planarity = planarityReport(model, eqs, dofs, s.modes);
   return rep;
 }
 

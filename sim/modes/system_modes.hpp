@@ -15,7 +15,9 @@
 ///    L = sum_b m_b (J_b phi) . e (the mass a base shaker "sees" in that mode; they add
 ///    up over all modes to the mass that moves relative to the base);
 ///  - the modal mass for the shape scaled to 1 m at its largest translation (kg);
-///  - the shape at named points (translations, and rotations where meaningful).
+///  - the shape at named points (translations, and rotations where meaningful);
+///  - on the spatial model, the mode's family (in-plane, out-of-plane, torsion, mixed)
+///    and the report's planarity section (sim/modes/planarity.hpp).
 
 #include <memory>
 #include <optional>
@@ -24,6 +26,7 @@
 
 #include "sim/model/model.hpp"
 #include "sim/modes/modal.hpp"
+#include "sim/modes/planarity.hpp"
 #include "sim/statics/linearize.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/scene/scene.hpp"
@@ -39,6 +42,7 @@ struct PartShare {
 struct PointMotion {
   std::string point;
   double ux = 0, uy = 0;  ///< m per unit modal coordinate (mass-normalised shape).
+  double uz = 0;          ///< m, out of the plane (spatial model only).
   double rz = 0;          ///< rad per unit modal coordinate (when has_rotation).
   bool has_rotation = false;
 };
@@ -52,6 +56,10 @@ struct ModeInfo {
   double modal_mass_kg = 0;  ///< for the shape scaled to 1 m at peak_point.
   std::string peak_point;
   double effective_mass_x_kg = 0, effective_mass_y_kg = 0;
+  double effective_mass_z_kg = 0;  ///< spatial model only.
+  /// Spatial model: the strain energy's split over in-plane, out-of-plane and torsion
+  /// (sim/modes/planarity.hpp); empty label in the planar model.
+  ModeFamily family;
   double geometric_stiffness_share = 0;
   /// Under the scene's damping (ModesReport::damped): the ratio to critical (1:
   /// overdamped) and |lambda| / 2 pi of the damped mode (sim/modes/damping.hpp).
@@ -82,6 +90,7 @@ struct PointReport {
   std::string name;
   double x = 0, y = 0;    ///< m, deflected equilibrium, world frame.
   double dx = 0, dy = 0;  ///< m, deflection: equilibrium minus the unbent shape.
+  double z = 0, dz = 0;   ///< m, out of the plane (0 in the planar model).
 };
 
 struct ModelSummary {
@@ -118,6 +127,9 @@ struct ModesReport {
   DiscretizationEstimate discretization;
   /// `modes --target-error`: how the segments per link were chosen (segmentsForTarget).
   std::optional<SegmentsChoice> segments_choice;
+  /// The spatial model (`model: spatial`): the planarity report over the 0.1-50 Hz band.
+  bool spatial = false;
+  std::optional<PlanarityReport> planarity;
 };
 
 /// The frequencies of a report's modes as solveSceneModes gives them (negative: unstable).

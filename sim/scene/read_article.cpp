@@ -1,4 +1,4 @@
-// Scene sections of an article: materials, sections, base (table, gimbal), joints,
+// Scene sections of an article (materials and sections: read_section.cpp): base (table, gimbal), joints,
 // links, closures, loads; the tree check.
 #include <Eigen/Dense>
 #include <set>
@@ -20,56 +20,14 @@ LumpedMass readLumpedMass(const YamlReader& r, const YAML::Node& n, const std::s
   return out;
 }
 
-Section readSection(const YamlReader& r, const std::string& name, const YAML::Node& n,
-                    const std::string& path) {
-  auto m = r.mapping(n, path, {"shape", "b", "h", "t", "radius", "area", "second_moment"});
-  Section s;
-  s.name = name;
-  const YAML::Node& shape = r.require(m, n, path, "shape");
-  const std::string kind = r.text(shape, path + ".shape");
-  auto need = [&](const char* key) -> const YAML::Node& { return r.require(m, n, path, key); };
-  auto forbid = [&](std::initializer_list<const char*> keys) {
-    for (const char* k : keys)
-      if (m.count(k))
-        r.fail(m.at(k).Mark(), path + "." + k + " does not apply to shape '" + kind + "'");
-  };
-  if (kind == "rectangle") {
-    s.shape = SectionShape::Rectangle;
-    forbid({"t", "radius", "area", "second_moment"});
-    s.b = r.positive(need("b"), path + ".b", " m");
-    s.h = r.positive(need("h"), path + ".h", " m");
-  } else if (kind == "rectangular_tube") {
-    s.shape = SectionShape::RectangularTube;
-    forbid({"radius", "area", "second_moment"});
-    s.b = r.positive(need("b"), path + ".b", " m");
-    s.h = r.positive(need("h"), path + ".h", " m");
-    s.t = r.positive(need("t"), path + ".t", " m");
-    if (2 * s.t >= std::min(s.b, s.h))
-      r.fail(need("t").Mark(), path + ".t must be < min(b, h)/2 m so the tube has a hole (got " +
-                                   need("t").Scalar() + ")");
-  } else if (kind == "round_rod") {
-    s.shape = SectionShape::RoundRod;
-    forbid({"b", "h", "t", "area", "second_moment"});
-    s.radius = r.positive(need("radius"), path + ".radius", " m");
-  } else if (kind == "explicit") {
-    s.shape = SectionShape::Explicit;
-    forbid({"b", "h", "t", "radius"});
-    s.explicit_area = r.positive(need("area"), path + ".area", " m^2");
-    s.explicit_second_moment = r.positive(need("second_moment"), path + ".second_moment", " m^4");
-  } else {
-    r.fail(shape.Mark(), path + ".shape: unknown shape '" + kind +
-                             "' (known: rectangle, rectangular_tube, round_rod, explicit)");
-  }
-  return s;
-}
-
 class SceneParser {
  public:
   SceneParser(const YamlReader& r) : r_(r) {}
 
   ArticleScene parse(const YAML::Node& root, const std::string& source) {
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
-                                     "links", "closures", "loads", "damping", "simulation", "sensors", "views", "lab"});
+                                     "links", "closures", "loads", "damping", "simulation", "sensors", "views", "lab",
+                                     "model"});
     ArticleScene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -95,6 +53,7 @@ class SceneParser {
     if (top.count("views")) readViews(top.at("views"), scene);
     if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));
     if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration);
+    if (top.count("model")) readModel(top.at("model"), a);
     return scene;
   }
 
@@ -144,14 +103,31 @@ class SceneParser {
     auto m = r_.mapping(n, "materials", namesOf(n, "materials"));
     for (const auto& [name, node] : m) {
       const std::string path = "materials." + name;
-      auto mm = r_.mapping(node, path, {"density", "youngs_modulus"});
-      Material mat;
-      mat.name = name;
-      mat.density = r_.positive(r_.require(mm, node, path, "density"), path + ".density", " kg/m^3");
-      mat.youngs_modulus =
-          r_.positive(r_.require(mm, node, path, "youngs_modulus"), path + ".youngs_modulus", " Pa");
-      a.materials.push_back(mat);
+      a.materials.push_back(readMaterial(r_, name, node, path));
     }
+  }
+
+  /// model: planar | spatial. The spatial model twists and bends every flexible link out
+  /// of the plane, so it needs each one's shear modulus and, for an explicit section,
+  /// its out-of-plane moment and torsion constant. Closed trees stay planar for now.
+  void readModel(const YAML::Node& n, ArticleSpec& a) {
+    const std::string v = r_.text(n, "model");
+    if (v == "planar") return;
+    if (v != "spatial") r_.fail(n.Mark(), "model: unknown model '" + v + "' (known: planar, spatial)");
+    a.model = ArticleModel::Spatial;
+    for (const auto& l : a.links) {
+      if (l.rigid) continue;
+      const Material& m = *a.findMaterial(l.material);
+      if (!(m.shear_modulus > 0))
+        r_.fail(n.Mark(), "model: spatial twists link '" + l.name + "': materials." + m.name +
+                              " needs shear_modulus (Pa) or poisson_ratio");
+      const Section& s = *a.findSection(l.section);
+      if (!(sectionSecondMomentOut(s) > 0) || !(sectionTorsionConstant(s) > 0))
+        r_.fail(n.Mark(), "model: spatial bends link '" + l.name + "' out of its plane: sections." + s.name +
+                              " needs second_moment_out and torsion_constant (m^4)");
+    }
+    if (!a.closures.empty())
+      r_.fail(n.Mark(), "model: spatial does not take closures yet (closed trees are planar; docs/spatial.md)");
   }
 
   void readSections(const YAML::Node& n, ArticleSpec& a) {

@@ -195,6 +195,9 @@ TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std
 SlewSpec readSlew(const YamlReader& r, const YAML::Node& sn, const std::string& path);
 SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n);
 DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
+/// sections.NAME and materials.NAME (sim/scene/read_section.cpp).
+Section readSection(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
+Material readMaterial(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
 facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n);
 void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
 /// A named point of the article; the message says how points are named.

@@ -15,29 +15,42 @@ Eigen::MatrixXd calcStiffness(const Model& model, const SimTK::State& s, const s
 
 namespace {
 
-/// G_k of the closed form: sum over point forces outboard of rotation k of F.(p - o_k).
+/// The closed form's per-rotation sums over the point forces outboard of rotation k:
+/// S_k = sum F . (p - o_k) and, in a spatial model, V_k = sum (F . a_k) (p - o_k),
+/// with a_k the axis (world) and o_k a point on it. For rotations j inboard of or equal
+/// to k, d^2 p / dq_j dq_k = a_j x (a_k x (p - o_k)), so
+///     K_jk = -F . d^2 p / dq_j dq_k = (a_j . a_k) S_k - a_j . V_k
+/// which is S_k (the planar G_k) when every axis is z and every force in the plane.
 class GeometricTerms {
  public:
   GeometricTerms(const Model& model, const SimTK::State& s)
-      : model_(model), s_(s), g_(model.getNumCoordinates(), 0.0), axis_(model.getNumCoordinates()),
-        rotation_(model.getNumCoordinates(), false) {
+      : model_(model), s_(s), spatial_(model.isSpatial()), g_(model.getNumCoordinates(), 0.0),
+        v_(model.getNumCoordinates(), SimTK::Vec3(0)), origin_(model.getNumCoordinates()),
+        axis_(model.getNumCoordinates(), SimTK::Vec3(0, 0, 1)), rotation_(model.getNumCoordinates(), false) {
     const auto& coords = model_.getCoordinates();
     for (std::size_t k = 0; k < coords.size(); ++k) {  // each axis once, not once per body outboard of it
       rotation_[k] = coords[k].motion == CoordinateMotion::Rotation;
-      if (rotation_[k]) axis_[k] = model_.getMatter().getMobilizedBody(coords[k].mobod).getBodyOriginLocation(s_);
+      if (!rotation_[k]) continue;
+      const SimTK::MobilizedBody& mb = model_.getMatter().getMobilizedBody(coords[k].mobod);
+      origin_[k] = mb.getBodyOriginLocation(s_);
+      if (spatial_) axis_[k] = mb.getHCol(s_, SimTK::MobilizerUIndex(coords[k].mobilizer_q))[0];
     }
   }
 
   void add(int body, const SimTK::Vec3& p_W, const SimTK::Vec3& F_W) {
-    for (int k : model_.getAncestorCoordinates(body))
-      if (rotation_[k]) g_[k] += ~F_W * (p_W - axis_[k]);
+    for (int k : model_.getAncestorCoordinates(body)) {
+      if (!rotation_[k]) continue;
+      const SimTK::Vec3 r = p_W - origin_[k];
+      g_[k] += ~F_W * r;
+      if (spatial_) v_[k] += (~F_W * axis_[k]) * r;
+    }
   }
   void addStation(int body, const SimTK::Vec3& station_B, const SimTK::Vec3& F_W) {
     const SimTK::MobilizedBody& mb = model_.getMatter().getMobilizedBody(model_.getBodies()[body].mobod);
     add(body, mb.findStationLocationInGround(s_, station_B), F_W);
   }
 
-  /// K_jk = G_k for rotations j inboard of or equal to k (both ways), over `dofs`.
+  /// K_jk for rotations j inboard of or equal to k (both ways), over `dofs`.
   Eigen::MatrixXd matrix(const std::vector<int>& dofs) const {
     const auto& coords = model_.getCoordinates();
     const int n = static_cast<int>(dofs.size());
@@ -46,14 +59,16 @@ class GeometricTerms {
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
     for (int b = 0; b < n; ++b) {
       const int k = dofs[b];
-      if (coords[k].motion != CoordinateMotion::Rotation) continue;
-      // Every rotation j that moves k's body (k itself included) is inboard of or
-      // equal to k, so the pair (j, k) gets k's term.
+      if (!rotation_[k]) continue;
+      // Every rotation j that moves k's body is inboard of or equal to k, except the
+      // later rotations of k's own mobilizer (a gimbal's): those are outboard of k.
       for (int j : model_.getAncestorCoordinates(model_.getCoordinateBody(k))) {
         const int a = column[j];
-        if (a < 0 || coords[j].motion != CoordinateMotion::Rotation) continue;
-        K(a, b) = g_[k];
-        K(b, a) = g_[k];
+        if (a < 0 || !rotation_[j]) continue;
+        if (coords[j].mobod == coords[k].mobod && coords[j].mobilizer_q > coords[k].mobilizer_q) continue;
+        const double kjk = spatial_ ? (~axis_[j] * axis_[k]) * g_[k] - ~axis_[j] * v_[k] : g_[k];
+        K(a, b) = kjk;
+        K(b, a) = kjk;
       }
     }
     return K;
@@ -62,8 +77,11 @@ class GeometricTerms {
  private:
   const Model& model_;
   const SimTK::State& s_;
-  std::vector<double> g_;
-  std::vector<SimTK::Vec3> axis_;  ///< o_k, world frame (rotations only).
+  bool spatial_;
+  std::vector<double> g_;         ///< S_k.
+  std::vector<SimTK::Vec3> v_;    ///< V_k (spatial models).
+  std::vector<SimTK::Vec3> origin_;  ///< o_k, world frame (rotations only).
+  std::vector<SimTK::Vec3> axis_;    ///< a_k, world frame (z in a planar model).
   std::vector<bool> rotation_;
 };
 

@@ -15,7 +15,10 @@
 ///    over gravity (F = m g at each mass centre) and loads, per coordinate k:
 ///        K_jk = k_spring,k delta_jk + G_k,  G_k = sum_{F outboard of k} F . (p - o_k).
 ///    Exact, O(n * depth). Constraint forces at a preloaded closed loop enter the same
-///    way (extra point forces, sim/statics/closures.hpp).
+///    way (extra point forces, sim/statics/closures.hpp). In the spatial model (axes a_k
+///    other than z) the same derivation gives, with d^2 p / dq_j dq_k = a_j x (a_k x (p - o_k)),
+///        K_jk = (a_j . a_k) G_k - a_j . V_k,  V_k = sum_{F outboard of k} (F . a_k) (p - o_k),
+///    where a gimbal's later rotations count as outboard of its earlier ones.
 ///  - central differences of f (step 1e-6 rad, truncation error ~1e-10 relative) for
 ///    any force model, O(n^2) force evaluations.
 /// The result is symmetrised; its asymmetry before that is reported, since a

@@ -1,0 +1,212 @@
+// The spatial article model (`model: spatial`, docs/spatial.md): against the planar
+// model it extends, the closed forms of out-of-plane bending and torsion, its own
+// stiffness by differences, and the planarity report.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "article/beam_theory.hpp"
+#include "sim/model/article_builder.hpp"
+#include "sim/modes/planarity.hpp"
+#include "sim/modes/system_modes.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+namespace {
+
+ArticleScene spatialDefault() {
+  ArticleScene s = loadDefaultScene();
+  s.article.model = ArticleModel::Spatial;
+  return s;
+}
+
+/// A horizontal cantilever (root clamped by a locked joint), no gravity, spatial model.
+ArticleScene spatialCantilever(const Section& sec, double density, double E, double G, double length, int segments,
+                               double tip_mass = 0, double tip_rotary = 0) {
+  ArticleScene s;
+  s.name = "spatial cantilever";
+  s.source = "<test>";
+  s.gravity = {0, 0, 0};
+  Material m;
+  m.name = "m";
+  m.density = density;
+  m.youngs_modulus = E;
+  m.shear_modulus = G;
+  s.article.materials.push_back(m);
+  Section named = sec;
+  named.name = "s";
+  s.article.sections.push_back(named);
+  JointSpec j;
+  j.name = "joint1";
+  j.parent = "base";
+  s.article.joints.push_back(j);
+  LinkSpec l;
+  l.name = "link1";
+  l.joint = "joint1";
+  l.material = "m";
+  l.section = "s";
+  l.length = length;
+  l.segments = segments;
+  if (tip_mass > 0) l.tip_mass = LumpedMass{tip_mass, tip_rotary};
+  s.article.links.push_back(l);
+  s.article.model = ArticleModel::Spatial;
+  return s;
+}
+
+/// The stable frequencies (Hz) of each mode family, ascending.
+std::map<std::string, std::vector<double>> familyFrequencies(const ArticleScene& scene) {
+  const SolvedScene s = solveScene(scene);
+  std::map<std::string, std::vector<double>> out;
+  for (int i = 0; i < s.modes.omega2.size(); ++i) {
+    if (!s.modes.isStable(i) || s.modes.isRigidBody(i)) continue;
+    out[classifyMode(*s.model, s.linearized.dofs, s.modes.shapes.col(i)).label].push_back(s.modes.frequencyHz(i));
+  }
+  return out;
+}
+
+/// Richardson's O(1/N^2) extrapolation of family `family`'s first `count` frequencies
+/// from n and 2n segments.
+std::vector<double> extrapolated(const std::function<ArticleScene(int)>& scene, int n, const std::string& family,
+                                 int count) {
+  const auto coarse = familyFrequencies(scene(n)).at(family), fine = familyFrequencies(scene(2 * n)).at(family);
+  std::vector<double> out;
+  for (int k = 0; k < count; ++k) out.push_back((4 * fine.at(k) - coarse.at(k)) / 3);
+  return out;
+}
+
+Section explicitSection(double area, double i_in, double i_out, double j) {
+  Section s;
+  s.shape = SectionShape::Explicit;
+  s.explicit_area = area;
+  s.explicit_second_moment = i_in;
+  s.explicit_second_moment_out = i_out;
+  s.explicit_torsion_constant = j;
+  return s;
+}
+
+// With the out-of-plane and torsion coordinates held, the spatial model is the planar
+// one: the same equilibrium and the same modes (the default article, 16 segments, where
+// the pieces need no inertia correction).
+TEST(Spatial, LockedOutOfPlaneIsThePlanarModel) {
+  ArticleScene locked = spatialDefault();
+  locked.article.lock_out_of_plane = true;
+  const SolvedScene planar = solveScene(loadDefaultScene()), spatial = solveScene(locked);
+  ASSERT_EQ(planar.modes.omega2.size(), spatial.modes.omega2.size());
+  for (int i = 0; i < planar.modes.omega2.size(); ++i)
+    EXPECT_NEAR(spatial.modes.omega2[i], planar.modes.omega2[i], 1e-9 * planar.modes.omega2[i]) << "mode " << i + 1;
+  SimTK::State a = planar.equilibrium.state, b = spatial.equilibrium.state;
+  planar.model->getSystem().realize(a, SimTK::Stage::Position);
+  spatial.model->getSystem().realize(b, SimTK::Stage::Position);
+  for (const auto& p : planar.model->getPoints()) {
+    const SimTK::Vec3 xa = planar.model->findPointLocation(a, p), xb = spatial.model->findPointLocation(b, *spatial.model->findPoint(p.name));
+    EXPECT_LE((xa - xb).norm(), 1e-9 * std::max(xa.norm(), 1.0)) << p.name;
+  }
+}
+
+// Free to leave the plane, the symmetric planar article keeps every planar mode: its
+// in-plane family is the planar spectrum (the families do not couple).
+TEST(Spatial, InPlaneFamilyOfTheFreeModelIsThePlanarSpectrum) {
+  const std::vector<double> in_plane = familyFrequencies(spatialDefault()).at("in-plane");
+  const SolvedScene planar = solveScene(loadDefaultScene());
+  ASSERT_EQ(static_cast<Eigen::Index>(in_plane.size()), planar.modes.omega2.size());
+  for (std::size_t i = 0; i < in_plane.size(); ++i)
+    EXPECT_NEAR(in_plane[i], planar.modes.frequencyHz(static_cast<int>(i)), 1e-9 * in_plane[i]) << i;
+}
+
+// The closed form of the spatial stiffness (every rotation about its own axis,
+// linearize.hpp) and central differences agree on the article rolled 20 deg by the
+// gimbal (gravity out of its plane) and bent in all three directions.
+TEST(Spatial, ClosedFormStiffnessEqualsFiniteDifferences) {
+  ArticleScene scene = spatialDefault();
+  scene.article.base.gimbal = GimbalSpec{};
+  scene.article.base.gimbal->roll.angle = 20 * M_PI / 180;
+  const auto model = buildArticleModel(scene);
+  ASSERT_TRUE(model->hasClosedFormForces() && model->isSpatial());
+  SimTK::State st = model->getReferenceState();
+  Eigen::VectorXd q = model->getQ(st);
+  for (int i = 0; i < q.size(); ++i) q[i] += 0.02 * std::sin(1.7 * i);
+  model->setQ(st, q);
+  const Eigen::MatrixXd Kc = calcStiffnessClosedForm(*model, st, model->getDofs());
+  const Eigen::MatrixXd Kd = calcStiffnessByDifferences(*model, st, model->getDofs());
+  Eigen::MatrixXd Gc = Kc, Gd = Kd;  // the gravity part alone, relative to its own size
+  for (int a = 0; a < Gc.rows(); ++a) {
+    const double k = model->getCoordinates()[model->getDofs()[a]].stiffness;
+    Gc(a, a) -= k;
+    Gd(a, a) -= k;
+  }
+  EXPECT_LT((Gc - Gd).cwiseAbs().maxCoeff(), 1e-7 * Gc.cwiseAbs().maxCoeff());
+  EXPECT_LT((Kc - Kd).cwiseAbs().maxCoeff(), 1e-9 * Kc.cwiseAbs().maxCoeff());
+}
+
+// Out-of-plane bending of a cantilever with a tip mass: the in-plane roots with I_out.
+TEST(Spatial, OutOfPlaneCantileverWithTipMassMatchesTheClosedForm) {
+  const double rho = 2700, E = 70e9, L = 1.0, A = 1e-3, I = 1e-9, I_out = 4e-9, mu = 0.5;
+  const Section sec = explicitSection(A, I, I_out, 2e-9);
+  auto scene = [&](int n) { return spatialCantilever(sec, rho, E, 26e9, L, n, mu * rho * A * L); };
+  const std::vector<double> roots = cantileverTipMassRoots(mu, 3);
+  const std::vector<double> out = extrapolated(scene, 32, "out-of-plane", 3), in = extrapolated(scene, 32, "in-plane", 3);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(out[k], beamFrequencyHz(roots[k], L, E * I_out, rho * A), 1e-6 * out[k]) << "out-of-plane " << k + 1;
+    EXPECT_NEAR(in[k], beamFrequencyHz(roots[k], L, E * I, rho * A), 1e-6 * in[k]) << "in-plane " << k + 1;
+  }
+}
+
+// Free torsion of a uniform round shaft carrying a tip disk of polar inertia J_d about
+// the shaft: beta tan beta = rho I_p L / J_d, omega = (beta / L) sqrt(G J / (rho I_p)).
+TEST(Spatial, TorsionOfAShaftWithATipDiskMatchesTheTanRelation) {
+  const double R = 0.005, rho = 2000, E = 60e9, G = 6e9, L = 1.0;
+  Section rod;
+  rod.shape = SectionShape::RoundRod;
+  rod.radius = R;
+  const double Ip = M_PI * std::pow(R, 4) / 2, disk = 2e-6;  // the lumped mass's rotary inertia about x is J/2
+  auto scene = [&](int n) { return spatialCantilever(rod, rho, E, G, L, n, 0.05, 2 * disk); };
+  const double ratio = rho * Ip * L / disk;
+  const std::vector<double> beta =
+      findRoots([&](double b) { return b * std::sin(b) - ratio * std::cos(b); }, 1e-6, 12.0, 1e-3, 3);
+  ASSERT_EQ(beta.size(), 3u);
+  const std::vector<double> f = extrapolated(scene, 32, "torsion", 3);
+  for (int k = 0; k < 3; ++k) {
+    const double closed = beta[k] / L * std::sqrt(G * Ip / (rho * Ip)) / (2 * M_PI);
+    EXPECT_NEAR(f[k], closed, 1e-6 * closed) << "torsion mode " << k + 1;
+  }
+}
+
+// A round rod bends alike about both section axes: its in-plane and out-of-plane
+// families pair to round-off.
+TEST(Spatial, RoundRodBendingFamiliesPair) {
+  Section rod;
+  rod.shape = SectionShape::RoundRod;
+  rod.radius = 0.00127;
+  const auto f = familyFrequencies(spatialCantilever(rod, 2110, 61e9, 6e9, 0.762, 16, 0.01));
+  const auto& in = f.at("in-plane");
+  const auto& out = f.at("out-of-plane");
+  ASSERT_EQ(in.size(), out.size());
+  for (std::size_t k = 0; k < in.size(); ++k) EXPECT_NEAR(out[k], in[k], 1e-9 * in[k]) << k;
+}
+
+// The planarity report: the symmetric planar article responds in its plane only (every
+// excitation decoupled); rolled by the gimbal, gravity bends it out of the plane, and a
+// base x excitation then reaches its out-of-plane modes.
+TEST(Spatial, PlanarityReportSeesCouplingOnlyWhenTheArticleLeavesItsPlane) {
+  ModesOptions opt;
+  opt.max_modes = 12;
+  const ModesReport flat = runModes(spatialDefault(), opt);
+  ASSERT_TRUE(flat.planarity.has_value());
+  EXPECT_TRUE(flat.planarity->covers_band);
+  EXPECT_FALSE(flat.planarity->others.empty());
+  for (const auto& r : flat.planarity->responses) EXPECT_TRUE(r.decoupled) << r.excitation << " at " << r.point;
+  ArticleScene rolled = spatialDefault();
+  rolled.article.base.gimbal = GimbalSpec{};
+  rolled.article.base.gimbal->roll.angle = 20 * M_PI / 180;
+  const ModesReport tilted = runModes(rolled, opt);
+  bool coupled = false;
+  for (const auto& r : tilted.planarity->responses)
+    if (r.excitation == "base x" && !r.decoupled && r.ratio > 1e-4) coupled = true;
+  EXPECT_TRUE(coupled);
+  EXPECT_GT(std::abs(tilted.points.back().dz), 1e-3);  // gravity's out-of-plane part bends the tips (m)
+}
+
+}  // namespace
+}  // namespace mmv
