@@ -87,6 +87,9 @@ struct LinkSpec {
   int segments = 1;        ///< flexible elements per link (>= 1); ignored when rigid.
   bool rigid = false;      ///< one rigid body instead of a flexible chain.
   double mount_angle = 0;  ///< rad, link direction relative to the joint's rotor frame.
+  /// rad, the link's tilt out of the plane of motion (toward +z) about the rotor frame's
+  /// in-plane normal, after mount_angle: branches spread out of the plane (spatial model).
+  double tilt = 0;
   std::optional<LumpedMass> tip_mass;  ///< rigidly attached at the tip.
 };
 

@@ -44,6 +44,13 @@ SimTK::Body::Rigid spatialPieceBody(const LinkPiece& p, double polar_gyration_sq
   return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
 }
 
+/// X_BM of a link's root piece on its joint: the link turned by its mount angle about z,
+/// then tilted out of the plane (toward +z) about y by its tilt.
+SimTK::Transform mountFrame(const LinkSpec& l) {
+  if (l.tilt == 0) return rotZ(-l.mount_angle);
+  return SimTK::Transform(SimTK::Rotation(l.tilt, SimTK::YAxis) * SimTK::Rotation(-l.mount_angle, SimTK::ZAxis));
+}
+
 /// A lumped mass at the body origin with rotary inertia J about z (disc-like: J/2 in x, y).
 SimTK::Body::Rigid lumpedBody(const LumpedMass& m) {
   const double j = m.rotary_inertia;
@@ -173,7 +180,7 @@ class Builder {
   /// The body that turns with a joint, and the mount angle of the link it belongs to.
   struct Rotor {
     SimTK::MobilizedBodyIndex mobod;
-    double mount = 0;
+    SimTK::Transform mount;  ///< X_BM of the rotor's link (mountFrame): its joint frame on it.
   };
 
   /// One link of joint j: its pieces and hinges, named points and tip mass. The first
@@ -195,9 +202,9 @@ class Builder {
       if (k == 0 && first) {
         ix = parent.grounded && a_.base.type == BaseType::Floating ? addFloatingRoot(j, l, parent, body)
                                                                     : addJointPin(j, l, parent, body);
-        rotor = {ix, l.mount_angle};
+        rotor = {ix, mountFrame(l)};
       } else if (k == 0) {
-        SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(rotor.mobod), rotZ(-rotor.mount), body, rotZ(-l.mount_angle));
+        SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(rotor.mobod), rotor.mount, body, mountFrame(l));
         ix = w.getMobilizedBodyIndex();
       } else {
         ix = addHinge(l, d, k, prev, body);
@@ -236,7 +243,7 @@ class Builder {
   SimTK::MobilizedBodyIndex addFloatingRoot(const JointSpec& j, const LinkSpec& l, const Frame& parent,
                                             const SimTK::Body::Rigid& body) {
     SimTK::MobilizedBody::Planar planar(model_.updMatter().updMobilizedBody(parent.mobod), parent.X_BF, body,
-                                        rotZ(-l.mount_angle));
+                                        mountFrame(l));
     const SimTK::MobilizedBodyIndex ix = planar.getMobilizedBodyIndex();
     const char* names[] = {"", ".x", ".y"};
     for (int q = 0; q < 3; ++q) {
@@ -257,7 +264,7 @@ class Builder {
   /// commanded angle) or free (with an optional commanded torque).
   SimTK::MobilizedBodyIndex addJointPin(const JointSpec& j, const LinkSpec& l, const Frame& parent,
                                         const SimTK::Body::Rigid& body) {
-    SimTK::MobilizedBody::Pin pin(model_.updMatter().updMobilizedBody(parent.mobod), parent.X_BF, body, rotZ(-l.mount_angle));
+    SimTK::MobilizedBody::Pin pin(model_.updMatter().updMobilizedBody(parent.mobod), parent.X_BF, body, mountFrame(l));
     Coordinate coord;
     coord.name = j.name;
     coord.kind = CoordinateKind::Joint;

@@ -1,6 +1,7 @@
 // Scene sections of an article (materials and sections: read_section.cpp): base (table, gimbal), joints,
 // links, closures, loads; the tree check.
 #include <Eigen/Dense>
+#include <optional>
 #include <set>
 
 #include "sim/core/integrators.hpp"
@@ -54,6 +55,8 @@ class SceneParser {
     if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));
     if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration);
     if (top.count("model")) readModel(top.at("model"), a);
+    if (out_of_plane_mark_ && a.model != ArticleModel::Spatial)
+      r_.fail(out_of_plane_mark_->mark, out_of_plane_mark_->path + ": branches out of the plane need model: spatial");
     return scene;
   }
 
@@ -316,19 +319,29 @@ class SceneParser {
 
       int count = 1;
       double spread = 0;
+      out_of_plane_ = false;
       if (m.count("branches")) {
         const YAML::Node& bn = m.at("branches");
-        auto bm = r_.mapping(bn, path + ".branches", {"count", "angle_deg"});
+        auto bm = r_.mapping(bn, path + ".branches", {"count", "angle_deg", "plane"});
         const YAML::Node& c = r_.require(bm, bn, path + ".branches", "count");
         count = r_.integer(c, path + ".branches.count");
         if (count < 1 || count > 26) r_.fail(c.Mark(), path + ".branches.count must be 1 to 26 (got " + c.Scalar() + ")");
         if (count > 1) spread = r_.number(r_.require(bm, bn, path + ".branches", "angle_deg"), path + ".branches.angle_deg") * kDegToRad;
+        if (bm.count("plane")) {
+          const std::string plane = r_.text(bm.at("plane"), path + ".branches.plane");
+          if (plane != "in" && plane != "out")
+            r_.fail(bm.at("plane").Mark(), path + ".branches.plane: unknown plane '" + plane + "' (known: in, out)");
+          if (plane == "out") {
+            out_of_plane_ = true;
+            if (!out_of_plane_mark_) out_of_plane_mark_ = Located{bm.at("plane").Mark(), path + ".branches.plane"};
+          }
+        }
       }
       for (int k = 0; k < count; ++k) {
         LinkSpec b = l;
         if (count > 1) {
           b.name = l.name + static_cast<char>('a' + k);
-          b.mount_angle += -0.5 * spread + spread * k / (count - 1);
+          (out_of_plane_ ? b.tilt : b.mount_angle) += -0.5 * spread + spread * k / (count - 1);
         }
         checkName(name, path + ".name", b.name);
         link_marks_[b.name] = {ln.Mark(), path};
@@ -427,6 +440,8 @@ class SceneParser {
   std::set<std::string> names_;
   std::map<std::string, Located> joint_marks_, joint_parent_marks_, link_marks_;
   YAML::Mark motion_mark_;
+  bool out_of_plane_ = false;                  ///< the link being read spreads its branches out of the plane.
+  std::optional<Located> out_of_plane_mark_;   ///< the first such `branches.plane: out`.
 };
 
 }  // namespace

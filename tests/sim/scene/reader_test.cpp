@@ -185,13 +185,38 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:3:46: simulation: 1000 s at 10000 Hz is 1e+07 samples, above the limit of 1000000 (a rate or a "
                 "duration in the wrong unit?)"},
         BadCase{"free joint beyond a half turn", "    hold: free", "    hold: free\n    angle_deg: 270",
-                "s.yaml:14:16: joints[1].angle_deg: 270 deg is beyond the joint's +-180 deg"}),
+                "s.yaml:14:16: joints[1].angle_deg: 270 deg is beyond the joint's +-180 deg"},
+        BadCase{"spatial model without a shear modulus", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spatial",
+                "s.yaml:3:8: model: spatial twists link 'l1': materials.steel needs shear_modulus (Pa) or poisson_ratio"},
+        BadCase{"unknown model", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spacial",
+                "s.yaml:3:8: model: unknown model 'spacial' (known: planar, spatial)"},
+        BadCase{"poisson ratio out of range", "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.7}",
+                "s.yaml:4:65: materials.steel.poisson_ratio must be in (-1, 0.5) for an isotropic solid (got 0.7)"},
+        BadCase{"shear modulus and poisson ratio", "youngs_modulus: 2.0e11}",
+                "youngs_modulus: 2.0e11, shear_modulus: 8e10, poisson_ratio: 0.3}",
+                "s.yaml:4:86: materials.steel: give shear_modulus or poisson_ratio, not both"},
+        BadCase{"branches out of the plane on the planar model", "angle_deg: 20}", "angle_deg: 20, plane: out}",
+                "s.yaml:27:48: links[1].branches.plane: branches out of the plane need model: spatial"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.what;
       for (char& ch : name)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
       return name;
     });
+
+TEST(SceneYaml, SpatialModelReadsShearModulusAndBranchesOutOfThePlane) {
+  const ArticleScene s = parseArticle(
+      replaceLine(replaceLine(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spatial"),
+                              "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.25}"),
+                  "angle_deg: 20}", "angle_deg: 20, plane: out}"),
+      "s.yaml");
+  EXPECT_EQ(s.article.model, ArticleModel::Spatial);
+  EXPECT_NEAR(s.article.findMaterial("steel")->shear_modulus, 2.0e11 / 2.5, 1e-3);
+  EXPECT_NEAR(s.article.findLink("l2a")->tilt, -10 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(s.article.findLink("l2b")->tilt, 10 * M_PI / 180, 1e-15);
+  EXPECT_EQ(s.article.findLink("l2b")->mount_angle, 0.0);
+  EXPECT_EQ(parseArticle(kGood, "s.yaml").article.model, ArticleModel::Planar);
+}
 
 TEST(SceneYaml, JointRangeWidensWhenTheSceneSaysSo) {
   const ArticleScene s = parseArticle(replaceLine(kGood, "    angle_deg: 30", "    angle_deg: 80\n    range_deg: 90\n    slew: {to_deg: -85}"), "s.yaml");

@@ -1,0 +1,60 @@
+// The spatial article end to end (docs/spatial.md): `modes --set model=spatial` lists the
+// default article's mode families and its planarity report; commands that are still
+// planar refuse the key, naming it.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+TEST_F(Cli, ModesOnTheSpatialArticleClassifiesModesAndReportsPlanarity) {
+  const Result r = run("modes --set model=spatial --modes 14");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* text : {"family", "out-of-plane", "in-plane", "Planarity: modes in 0.1-50 Hz", "nearest_in_plane",
+                           "decoupled", "dz_mm"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
+  const Result j = run("modes --set model=spatial --modes 14 --json --no-error-estimate");
+  ASSERT_EQ(j.code, 0) << j.err;
+  const nlohmann::json doc = nlohmann::json::parse(j.out);
+  EXPECT_EQ(doc["model"]["kind"], "spatial");
+  EXPECT_EQ(doc["modes"][1]["family"], "out-of-plane");  // link 1 out of the plane, below link 3's pair
+  const auto& p = doc.at("planarity");
+  EXPECT_TRUE(p["covers_band"].get<bool>());
+  EXPECT_EQ(p["in_plane_modes_in_band"], 8);  // the planar model's eight modes below 50 Hz
+  EXPECT_GE(p["other_modes_in_band"].size(), 4u);
+  for (const auto& resp : p["responses"]) EXPECT_TRUE(resp["decoupled"].get<bool>()) << resp;
+  EXPECT_TRUE(doc["modes"][1]["shape"][0].contains("uz"));
+  // The planar default reports no families and no planarity section.
+  const nlohmann::json planar = nlohmann::json::parse(run("modes --json --no-error-estimate").out);
+  EXPECT_EQ(planar["model"]["kind"], "planar");
+  EXPECT_FALSE(planar.contains("planarity"));
+  EXPECT_FALSE(planar["modes"][0].contains("family"));
+}
+
+TEST_F(Cli, PlanarCommandsRefuseTheSpatialModelNamingTheKey) {
+  const std::string png = (dir_ / "x.png").string();
+  for (const std::string& command : std::vector<std::string>{"simulate", "frf", "render --out " + png, "trade", "check"}) {
+    const Result r = run(command + " --set model=spatial");
+    EXPECT_EQ(r.code, 64) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("model: spatial is analysed by `modes` and `converge` so far"), std::string::npos)
+        << command << ": " << r.err;
+    EXPECT_FALSE(fs::exists(png));
+  }
+  const Result out = run("modes --set links.link3.branches.plane=out");
+  EXPECT_EQ(out.code, 65) << out.err;
+  EXPECT_NE(out.err.find("branches out of the plane need model: spatial"), std::string::npos) << out.err;
+}
+
+TEST_F(Cli, ConvergeRunsOnTheSpatialArticle) {
+  const Result r = run("converge --set model=spatial --max-segments 8 --modes 6 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["modes"].size(), 6u);
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
