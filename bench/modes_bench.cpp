@@ -155,4 +155,18 @@ void BM_SegmentsForTarget(benchmark::State& st) {
 }
 BENCHMARK(BM_SegmentsForTarget)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond);
 
+// The spatial article (`modes --set model=spatial`, docs/spatial.md) at N segments per
+// link: the report `modes` prints (equilibrium, linearization, every mode through the
+// 50 Hz band, families, planarity report) without the discretization estimate.
+void BM_SpatialModesReport(benchmark::State& st) {
+  mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
+  s.article.model = mmv::ArticleModel::Spatial;
+  mmv::ModesOptions opt;
+  opt.max_modes = 12;
+  mmv::ModesReport r;
+  for (auto _ : st) r = mmv::runModes(s, opt);
+  st.counters["dofs"] = r.model.num_dofs;
+}
+BENCHMARK(BM_SpatialModesReport)->Arg(8)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
+
 }  // namespace
