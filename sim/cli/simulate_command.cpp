@@ -149,7 +149,7 @@ int report(const SimulateArgs& args, const std::string& name, const std::string&
 
 int runSimulateCommand(const SimulateArgs& args) {
   return guarded([&] {
-    Scene loaded = loadPlanarScene(args, "simulate");
+    Scene loaded = loadScene(args);
     std::unique_ptr<OutputDir> out;
     if (auto* h = std::get_if<HamsasScene>(&loaded)) {
       applyOverrides(args, h->simulation);
@@ -160,6 +160,13 @@ int runSimulateCommand(const SimulateArgs& args) {
       return report(args, h->name, h->source, r, {}, 0.0, out.get(), h->text, h->simulation, target);
     }
     ArticleScene& scene = std::get<ArticleScene>(loaded);
+    if (scene.article.model == ArticleModel::Spatial) {
+      if (args.target_error > 0) requirePlanarModel(scene, "simulate --target-error");
+      if (!scene.sensors.empty())
+        throw UsageError("simulate: " + scene.positions.where("sensors") +
+                         ": the spatial model's time runs do not model sensors yet (their out-of-plane axes; "
+                         "docs/spatial.md): drop `sensors:` or use the planar model");
+    }
     applyOverrides(args, scene.simulation);
     std::vector<std::string> warnings = checkTableProgram(scene);
     for (const auto& w : warnings) std::cerr << "mmvlab: warning: " << w << '\n';

@@ -112,10 +112,13 @@ void ArticleRecorder::addJointColumns(const ArticleScene& scene) {
 
 void ArticleRecorder::addTipColumns(const ArticleScene& scene) {
   auto& cols = r_.record.columns;
+  const bool spatial = model_.isSpatial();
   auto add = [&](const std::string& name) {
-    r_.record.scored.push_back({name, {static_cast<int>(cols.size()), static_cast<int>(cols.size()) + 1}});
+    const int first = static_cast<int>(cols.size());
+    r_.record.scored.push_back({name, spatial ? std::vector<int>{first, first + 1, first + 2} : std::vector<int>{first, first + 1}});
     cols.push_back(name + "_x_m");
     cols.push_back(name + "_y_m");
+    if (spatial) cols.push_back(name + "_z_m");  // out of the plane
   };
   for (const auto& p : model_.getPoints())
     if (p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".tip") == 0) {
@@ -191,15 +194,14 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
     row.push_back(torque);
     r_.torques[j].peak_torque_nm = std::max(r_.torques[j].peak_torque_nm, std::abs(torque));
   }
+  const int dims = model_.isSpatial() ? 3 : 2;
   for (const NamedPoint* p : tips_) {
     const SimTK::Vec3 x = model_.findPointLocation(st, *p);
-    row.push_back(x[0]);
-    row.push_back(x[1]);
+    for (int k = 0; k < dims; ++k) row.push_back(x[k]);
   }
   for (const auto& p : stations_) {
     const SimTK::Vec3 x = p.position(st);
-    row.push_back(x[0]);
-    row.push_back(x[1]);
+    for (int k = 0; k < dims; ++k) row.push_back(x[k]);
   }
   for (auto& live : sensors_) row.push_back(live.model.sample(sensorTruth(live, st)));
   std::vector<double> q{t};
