@@ -195,6 +195,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"shear modulus and poisson ratio", "youngs_modulus: 2.0e11}",
                 "youngs_modulus: 2.0e11, shear_modulus: 8e10, poisson_ratio: 0.3}",
                 "s.yaml:4:86: materials.steel: give shear_modulus or poisson_ratio, not both"},
+        BadCase{"spatial model with an explicit section lacking its torsion constant",
+                "2.0e11}\nsections:\n  bar: {shape: rectangle, b: 0.02, h: 0.01}",
+                "2.0e11, poisson_ratio: 0.3}\nsections:\n  bar: {shape: explicit, area: 1e-4, second_moment: 1e-9, "
+                "second_moment_out: 2e-9}\nmodel: spatial",
+                "s.yaml:7:8: model: spatial bends link 'l1' out of its plane: sections.bar needs second_moment_out and "
+                "torsion_constant (m^4)"},
         BadCase{"branches out of the plane on the planar model", "angle_deg: 20}", "angle_deg: 20, plane: out}",
                 "s.yaml:27:48: links[1].branches.plane: branches out of the plane need model: spatial"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {

@@ -8,6 +8,7 @@
 #include "facility/slews.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/time/simulation.hpp"
+#include "support/record_column.hpp"
 #include "support/scenes.hpp"
 
 namespace mmv {
@@ -15,12 +16,7 @@ namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-int column(const SimulationRecord& r, const std::string& name) {
-  for (std::size_t c = 0; c < r.columns.size(); ++c)
-    if (r.columns[c] == name) return static_cast<int>(c);
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
+using testing::column;
 
 // A rigid uniform link (1 m, 3 kg) held horizontal along the plate's x on a gimbal.
 ArticleScene rigidLinkOnGimbal(double yaw, double pitch, double roll) {

@@ -6,18 +6,14 @@
 
 #include "facility/slews.hpp"
 #include "sim/modes/system_modes.hpp"
-#include "support/time_run.hpp"
+#include "support/record_column.hpp"
 #include "support/scenes.hpp"
+#include "support/time_run.hpp"
 
 namespace mmv {
 namespace {
 
-int column(const SimulationRecord& r, const std::string& name) {
-  for (std::size_t c = 0; c < r.columns.size(); ++c)
-    if (r.columns[c] == name) return static_cast<int>(c);
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
+using testing::column;
 
 // A point-mass pendulum released at rest from 90 deg: period 4 sqrt(L/g) K(1/sqrt 2)
 // (complete elliptic integral of the first kind). At accuracy 1e-9 the period from
