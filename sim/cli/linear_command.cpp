@@ -35,20 +35,22 @@ std::vector<std::string> split(const std::string& s, char sep) {
 int axisOf(const std::string& a, const std::string& what) {
   if (a == "x") return 0;
   if (a == "y") return 1;
-  throw UsageError(what + ": axis must be x or y (got " + a + ")");
+  if (a == "z") return 2;  // out of the plane: the spatial model only (checked with the model)
+  throw UsageError(what + ": axis must be x, y or z (got " + a + ")");
 }
 
 InputSpec parseInput(const std::string& text) {
   const auto p = split(text, ':');
-  if (text == "table_x" || text == "table_y") return {text, InputKind::BaseAcceleration, "", text == "table_y"};
+  if (text == "table_x" || text == "table_y" || text == "table_z")
+    return {text, InputKind::BaseAcceleration, "", text == "table_x" ? 0 : text == "table_y" ? 1 : 2};
   if (p.size() == 2 && p[0] == "torque") return {text, InputKind::JointTorque, p[1], 0};
   if (p.size() == 3 && p[0] == "force") return {text, InputKind::PointForce, p[1], axisOf(p[2], "--input " + text)};
-  throw UsageError("--input " + text + ": expected table_x, table_y, torque:JOINT or force:POINT:x|y");
+  throw UsageError("--input " + text + ": expected table_x, table_y, table_z, torque:JOINT or force:POINT:x|y|z");
 }
 
 OutputSpec parseOutput(const std::string& text) {
   const auto p = split(text, ':');
-  if (p.size() < 2 || p.size() > 3) throw UsageError("--output " + text + ": expected POINT:x|y[:disp|vel|acc|acc_abs]");
+  if (p.size() < 2 || p.size() > 3) throw UsageError("--output " + text + ": expected POINT:x|y|z[:disp|vel|acc|acc_abs]");
   OutputSpec o{text, OutputKind::Acceleration, p[0], axisOf(p[1], "--output " + text), true};
   if (p.size() == 3) {
     if (p[2] == "disp") o = {text, OutputKind::Displacement, p[0], o.axis, false};
@@ -164,6 +166,7 @@ void respond(const LinearArgs& args, const std::vector<double>& grid, Analysis& 
 Analysis analyse(LinearArgs args, ArticleScene scene, const std::vector<double>& grid) {
   Analysis a;
   if (args.target_error > 0) {
+    requirePlanarModel(scene, "--target-error");
     if (args.segments > 0) throw UsageError("--target-error chooses the segments per link: drop --segments");
     if (!args.band.empty()) throw UsageError("--target-error chooses the modes kept: drop --band");
     const ModesSolve all = solveSceneModes(scene, {}, 0);
@@ -216,7 +219,7 @@ void addTargetJson(const Analysis& a, nlohmann::ordered_json& j) {
 
 int runFrfCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
-    const Scene loaded = loadPlanarScene(args, "frf");
+    const Scene loaded = loadScene(args);
     const std::vector<double> grid = frequencies(args);
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
       if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
@@ -283,7 +286,7 @@ int runFrfCommand(const LinearArgs& args) {
 int runRomCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
     if (args.out.empty()) throw UsageError("rom: --out DIR is required (it writes rom.mat and full.mat)");
-    const Scene loaded = loadPlanarScene(args, "rom");
+    const Scene loaded = loadScene(args);
     const std::vector<double> grid = frequencies(args);
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
       if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");

@@ -72,6 +72,8 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
              f.back(), 100 * err.max_relative);
   os << localErrorLine(err, s.output_names, s.input_names) << modesNeededLine(err) << "\n";
   os << "peak_zeta_%: the largest peak's half-power damping, (f2 - f1) / (2 f_peak) ('-': its half-power points are not both in the band)\n";
+  if (err.zero.any())
+    os << "zero pair: the full response stays below 1e-9 of the largest over the band (round-off; decoupled by symmetry)\n";
   Table t({"output", "unit", "input", "unit", "peak_Hz", "peak_dB", "peak_zeta_%", "at_10_Hz_dB", "rom_error_%", "rom_local_%",
            "local_at_Hz"});
   const PeakTable peaks = refinedPeaks(lm.second_order, f, hf);
@@ -82,6 +84,11 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
       const double peak = 20 * std::log10(peaks.magnitude(o, i) + 1e-300);
       const double at10 = 20 * std::log10(std::abs(h10(o, i)) + 1e-300);
       const double zeta = peaks.half_power_damping(o, i);
+      if (err.zero(o, i)) {  // round-off only: no peak, no error to speak of
+        t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], "-", strf("%.2f", peak), "-",
+               strf("%.2f", at10), "zero pair", "-", "-"});
+        continue;
+      }
       t.add({s.output_names[o], s.output_units[o], s.input_names[i], s.input_units[i], strf("%.4g", fpeak),
              strf("%.2f", peak), zeta > 0 ? strf("%.3g", 100 * zeta) : "-", strf("%.2f", at10), strf("%.3g", 100 * err.relative(o, i)),
              strf("%.3g", 100 * err.local(o, i)), strf("%.4g", err.local_hz(o, i))});
@@ -123,7 +130,8 @@ nlohmann::ordered_json linearSummaryJson(const LinearModel& lm, const ReducedMod
                        {"at_10_hz_db", 20 * std::log10(std::abs(h10(o, i)) + 1e-300)},
                        {"rom_relative_error", err.relative(o, i)},
                        {"rom_local_error", err.local(o, i)},
-                       {"rom_local_error_hz", err.local_hz(o, i)}});
+                       {"rom_local_error_hz", err.local_hz(o, i)},
+                       {"zero_pair", static_cast<bool>(err.zero(o, i))}});
     }
   j["pairs"] = pairs;
   return j;

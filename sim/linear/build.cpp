@@ -26,9 +26,10 @@ Eigen::MatrixXd dampingMatrix(const LinearModel& lm, const Model& model, const s
   return lm.Mz * modes.shapes * c.asDiagonal() * modes.shapes.transpose() * lm.Mz;
 }
 
-/// Base coupling M_qb e_a = sum_b m_b J_b^T e_a (mass centres), over the DOFs.
+/// Base coupling M_qb e_a = sum_b m_b J_b^T e_a (mass centres), over the DOFs, for
+/// a = x, y, z (z moves nothing in the planar model).
 Eigen::MatrixXd baseCoupling(const Model& model, const SimTK::State& st, const std::vector<int>& dofs) {
-  Eigen::MatrixXd Mqb = Eigen::MatrixXd::Zero(dofs.size(), 2);
+  Eigen::MatrixXd Mqb = Eigen::MatrixXd::Zero(dofs.size(), 3);
   std::vector<SimTK::MobilizedBodyIndex> ix;
   std::vector<SimTK::Vec3> com;
   std::vector<double> mass;
@@ -40,7 +41,7 @@ Eigen::MatrixXd baseCoupling(const Model& model, const SimTK::State& st, const s
   }
   const Eigen::MatrixXd J = model.calcFrameJacobians(st, ix, com, dofs);
   for (std::size_t b = 0; b < ix.size(); ++b)
-    for (int a = 0; a < 2; ++a) Mqb.col(a) += mass[b] * J.row(6 * b + 3 + a).transpose();
+    for (int a = 0; a < 3; ++a) Mqb.col(a) += mass[b] * J.row(6 * b + 3 + a).transpose();
   return Mqb;
 }
 
@@ -50,7 +51,7 @@ Eigen::RowVectorXd pointRow(const ArticleScene& scene, const Model& model, const
   std::string error;
   const std::optional<PointRef> p = PointRef::resolve(model, scene.article, point, error);
   if (!p) throw SceneError(scene.source + ": " + what + ": " + error);
-  return Eigen::RowVectorXd(p->translationJacobian(st, dofs).row(axis));
+  return Eigen::RowVectorXd(p->translationJacobian(st, dofs, 3).row(axis));
 }
 
 /// The generalized force over the DOFs per unit of input `in`.
@@ -172,6 +173,12 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   symmetrize(lm.Cz);
   SimTK::State st = lm.solved.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
+  for (const auto& in : inputs)
+    if (in.kind != InputKind::JointTorque && in.axis == 2 && !model.isSpatial())
+      throw UsageError("input " + in.name + ": z is out of the plane, where the planar model does not move (model: spatial)");
+  for (const auto& out : outputs)
+    if (out.axis == 2 && !model.isSpatial())
+      throw UsageError("output " + out.name + ": z is out of the plane, where the planar model does not move (model: spatial)");
   const Eigen::MatrixXd Mqb = baseCoupling(model, st, dofs);
   lm.Bq = Eigen::MatrixXd::Zero(Z.cols(), inputs.size());
   for (std::size_t k = 0; k < inputs.size(); ++k)

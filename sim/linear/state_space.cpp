@@ -324,6 +324,12 @@ ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vecto
   ModelError e;
   const double floor = std::max(1e-9 * (peak.size() ? peak.maxCoeff() : 0.0), 1e-300);
   e.relative = diff.cwiseQuotient(peak.cwiseMax(floor));
+  // A pair whose full response never reaches the floor is zero (a pair that symmetry
+  // decouples): both models give round-off there, which is no error of the reduction.
+  e.zero = (peak.array() < floor).cast<bool>().matrix();
+  for (Eigen::Index o = 0; o < no; ++o)
+    for (Eigen::Index i = 0; i < ni; ++i)
+      if (e.zero(o, i)) e.relative(o, i) = 0;
   e.max_relative = e.relative.size() ? e.relative.maxCoeff() : 0.0;
   // Local: against the full response at the same frequency (the same floor), which a
   // peak-normalized error hides near an antiresonance or far down a roll-off.
@@ -332,7 +338,7 @@ ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vecto
   for (std::size_t k = 0; k < omegas.size(); ++k)
     for (Eigen::Index o = 0; o < no; ++o)
       for (Eigen::Index i = 0; i < ni; ++i) {
-        const double r = gap[k](o, i) / std::max(size[k](o, i), floor);
+        const double r = e.zero(o, i) ? 0.0 : gap[k](o, i) / std::max(size[k](o, i), floor);
         if (r > e.local(o, i)) e.local(o, i) = r, e.local_hz(o, i) = omegas[k] / (2 * M_PI);
       }
   if (e.local.size()) {

@@ -174,6 +174,10 @@ ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& options
 /// within 0.3 % of the peak can be off by 100 % of the response there.
 struct ModelError {
   Eigen::MatrixXd relative;  ///< outputs x inputs.
+  /// outputs x inputs: the full response stays below the 1e-9 floor over the grid (zero
+  /// up to round-off, e.g. an in-plane input to an out-of-plane output of the symmetric
+  /// spatial article); such a pair counts no error.
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> zero;
   double max_relative = 0;
   /// The fewest kept modes whose reduced model's max_relative meets `target`
   /// (modesForTarget): `modes` and its error; reached = false when even `modes` (the

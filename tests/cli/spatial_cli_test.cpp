@@ -38,10 +38,10 @@ TEST_F(Cli, ModesOnTheSpatialArticleClassifiesModesAndReportsPlanarity) {
 
 TEST_F(Cli, PlanarCommandsRefuseTheSpatialModelNamingTheKey) {
   const std::string png = (dir_ / "x.png").string();
-  for (const std::string& command : std::vector<std::string>{"frf", "render --out " + png, "trade", "check"}) {
+  for (const std::string& command : std::vector<std::string>{"render --out " + png, "trade", "check", "place-sensors --count 2"}) {
     const Result r = run(command + " --set model=spatial");
     EXPECT_EQ(r.code, 64) << command << ": " << r.err;
-    EXPECT_NE(r.err.find("model: spatial is analysed by `modes`, `converge` and `simulate` so far"), std::string::npos)
+    EXPECT_NE(r.err.find("model: spatial is analysed by `modes`, `converge`, `simulate`, `frf` and `rom` so far"), std::string::npos)
         << command << ": " << r.err;
     EXPECT_FALSE(fs::exists(png));
   }
@@ -71,6 +71,30 @@ TEST_F(Cli, SimulateRunsTheSpatialArticle) {
   EXPECT_EQ(run("simulate --set model=spatial --target-error 1e-3").code, 64);
   // A spatial run directory cannot be replayed by the planar renderer: refused, not misdrawn.
   EXPECT_EQ(run("render --history " + (dir_ / "run").string() + " --out " + (dir_ / "x.mp4").string()).code, 64);
+}
+
+// frf on the spatial article takes out-of-plane inputs and outputs (table_z, POINT:z).
+// The symmetric article's in-plane pair is the planar model's; the in-plane to
+// out-of-plane pairs are zero (round-off, counted as no error); the out-of-plane pair
+// peaks at link 3's out-of-plane modes (3.0-3.5 Hz). The planar model refuses z.
+TEST_F(Cli, FrfOnTheSpatialArticleHasOutOfPlaneInputsAndOutputs) {
+  const std::string io = " --input table_x --input table_z --output link3a.tip:x --output link3a.tip:z --json";
+  const Result r = run("frf --set model=spatial" + io);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const Result p = run("frf --input table_x --output link3a.tip:x --json");
+  ASSERT_EQ(p.code, 0) << p.err;
+  const double planar_db = nlohmann::json::parse(p.out)["pairs"][0]["peak_db"].get<double>();
+  ASSERT_EQ(j["pairs"].size(), 4u);  // (x, x), (x, z), (z, x), (z, z): outputs by inputs
+  EXPECT_NEAR(j["pairs"][0]["peak_db"].get<double>(), planar_db, 1e-6);
+  EXPECT_TRUE(j["pairs"][1]["zero_pair"].get<bool>());
+  EXPECT_TRUE(j["pairs"][2]["zero_pair"].get<bool>());
+  EXPECT_FALSE(j["pairs"][3]["zero_pair"].get<bool>());
+  EXPECT_GT(j["pairs"][3]["peak_hz"].get<double>(), 3.0);
+  EXPECT_LT(j["pairs"][3]["peak_hz"].get<double>(), 3.5);
+  const Result planar_z = run("frf --output link3a.tip:z");
+  EXPECT_EQ(planar_z.code, 64);
+  EXPECT_NE(planar_z.err.find("z is out of the plane"), std::string::npos) << planar_z.err;
 }
 
 TEST_F(Cli, ConvergeRunsOnTheSpatialArticle) {
