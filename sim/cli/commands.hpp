@@ -232,8 +232,9 @@ ReductionOptions reductionOptions(const LinearArgs& args);
 Scene loadScene(const SceneArgs& args);
 /// loadScene for a command that handles only the planar article model (requirePlanarModel).
 Scene loadPlanarScene(const SceneArgs& args, const std::string& command);
-/// The same for a command that analyses articles only: UsageError for a HAM-SAS scene.
-ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command);
+/// The article scene of `command` (a HAM-SAS scene is a UsageError); a spatial one only
+/// when `spatial_ok` (the command handles `model: spatial`), else requirePlanarModel refuses it.
+ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command, bool spatial_ok = false);
 /// `names` if each is a named point or a station of `article`, else UsageError naming
 /// `option` and the reason.
 std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
