@@ -93,8 +93,10 @@ json modesToJson(const ModesReport& r) {
                       {"equilibrium_angle_deg", jr.equilibrium_rad * kRadToDeg},
                       {"torque_n_m", jr.torque_nm}});
   json closures = json::array();
-  for (const auto& c : r.closures)
+  for (const auto& c : r.closures) {
     closures.push_back({{"name", c.name}, {"force_x_n", c.fx}, {"force_y_n", c.fy}, {"gap_m", c.error_m}});
+    if (r.spatial) closures.back()["force_z_n"] = c.fz;
+  }
   json points = json::array();
   for (const auto& p : r.points) {
     json pj = {{"name", p.name}, {"x_m", p.x}, {"y_m", p.y}, {"deflection_x_m", p.dx}, {"deflection_y_m", p.dy}};

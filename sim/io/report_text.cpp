@@ -87,8 +87,10 @@ std::string formatModesText(const ModesReport& r) {
 
   if (!r.closures.empty()) {
     os << "\nClosures and the force each applies to the article (world frame)\n";
-    os << strf("  %-14s %12s %12s %12s\n", "closure", "Fx_N", "Fy_N", "gap_m");
-    for (const auto& c : r.closures) os << strf("  %-14s %12.4f %12.4f %12.1e\n", c.name.c_str(), c.fx, c.fy, c.error_m);
+    os << strf("  %-14s %12s %12s%s %12s\n", "closure", "Fx_N", "Fy_N", r.spatial ? "         Fz_N" : "", "gap_m");
+    for (const auto& c : r.closures)
+      os << strf("  %-14s %12.4f %12.4f%s %12.1e\n", c.name.c_str(), c.fx, c.fy,
+                 r.spatial ? strf(" %12.4f", c.fz).c_str() : "", c.error_m);
   }
   os << "\nLink tips at equilibrium (deflection = equilibrium minus the unbent shape)\n";
   os << strf("  %-12s %10s %10s %12s %12s%s\n", "point", "x_m", "y_m", "dx_mm", "dy_mm", r.spatial ? "        dz_mm" : "");

@@ -378,6 +378,9 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
     } else {  // held across the line: its normal
       c.directions = {SimTK::Vec3(-std::sin(cs.direction), std::cos(cs.direction), 0)};
     }
+    // Spatial: the point is held out of the plane too (a pin is a ball joint, a slider
+    // holds the point on its line); the rotations stay free, as they are in the plane.
+    if (a.model == ArticleModel::Spatial && !a.lock_out_of_plane) c.directions.push_back(SimTK::Vec3(0, 0, 1));
     model.addClosure(c);
   }
 }

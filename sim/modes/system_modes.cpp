@@ -158,6 +158,7 @@ std::vector<ClosureReport> closureReports(const Model& model, const SimTK::State
     cr.name = c.name;
     cr.fx = forces[f].force_W[0];
     cr.fy = forces[f].force_W[1];
+    cr.fz = forces[f].force_W[2];
     for (std::size_t d = 0; d < c.directions.size(); ++d) cr.error_m = std::max(cr.error_m, std::abs(phi[row++]));
     f += c.to_ground ? 1 : 2;
     out.push_back(cr);

@@ -83,6 +83,7 @@ struct JointReport {
 struct ClosureReport {
   std::string name;
   double fx = 0, fy = 0;  ///< N, force the closure applies to the article's point, world frame.
+  double fz = 0;          ///< N, out of the plane (0 in the planar model).
   double error_m = 0;     ///< largest |Phi| of its rows at the equilibrium.
 };
 

@@ -112,7 +112,7 @@ class SceneParser {
 
   /// model: planar | spatial. The spatial model twists and bends every flexible link out
   /// of the plane, so it needs each one's shear modulus and, for an explicit section,
-  /// its out-of-plane moment and torsion constant. Closed trees stay planar for now.
+  /// its out-of-plane moment and torsion constant.
   void readModel(const YAML::Node& n, ArticleSpec& a) {
     const std::string v = r_.text(n, "model");
     if (v == "planar") return;
@@ -129,8 +129,6 @@ class SceneParser {
         r_.fail(n.Mark(), "model: spatial bends link '" + l.name + "' out of its plane: sections." + s.name +
                               " needs second_moment_out and torsion_constant (m^4)");
     }
-    if (!a.closures.empty())
-      r_.fail(n.Mark(), "model: spatial does not take closures yet (closed trees are planar; docs/spatial.md)");
   }
 
   void readSections(const YAML::Node& n, ArticleSpec& a) {

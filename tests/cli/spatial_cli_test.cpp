@@ -103,5 +103,21 @@ TEST_F(Cli, ConvergeRunsOnTheSpatialArticle) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["modes"].size(), 6u);
 }
 
+// The closed tree on the spatial model: the fixture's pin holds link 3a's tip out of the
+// plane too, and reports the force it takes along z (none: the symmetric article loads
+// the fixture in its plane).
+TEST_F(Cli, TheClosedTreeRunsOnTheSpatialModel) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-closed.yaml").string();
+  const Result r = run("modes " + scene + " --set model=spatial --json --no-error-estimate");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  const auto& c = doc["equilibrium"]["closures"].at(0);
+  EXPECT_EQ(c["name"], "fixture");
+  EXPECT_NEAR(c["force_z_n"].get<double>(), 0.0, 1e-9);
+  EXPECT_GT(std::abs(c["force_x_n"].get<double>()), 1.0);
+  const Result text = run("modes " + scene + " --set model=spatial --no-error-estimate");
+  EXPECT_NE(text.out.find("Fz_N"), std::string::npos) << text.out;
+}
+
 }  // namespace
 }  // namespace mmv::cli_testing

@@ -78,13 +78,17 @@ Section explicitSection(double area, double i_in, double i_out, double j) {
   return s;
 }
 
-// With the out-of-plane and torsion coordinates held, the spatial model is the planar
-// one: the same equilibrium and the same modes (the default article, 16 segments, where
-// the pieces need no inertia correction).
-TEST(Spatial, LockedOutOfPlaneIsThePlanarModel) {
-  ArticleScene locked = spatialDefault();
+ArticleScene shippedScene(const std::string& name) {
+  return std::get<ArticleScene>(loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/" + name));
+}
+
+/// With the out-of-plane and torsion coordinates held, the spatial model of `planar_scene`
+/// is the planar one: the same equilibrium and the same modes.
+void expectLockedSpatialIsPlanar(const ArticleScene& planar_scene) {
+  ArticleScene locked = planar_scene;
+  locked.article.model = ArticleModel::Spatial;
   locked.article.lock_out_of_plane = true;
-  const SolvedScene planar = solveScene(loadDefaultScene()), spatial = solveScene(locked);
+  const SolvedScene planar = solveScene(planar_scene), spatial = solveScene(locked);
   ASSERT_EQ(planar.modes.omega2.size(), spatial.modes.omega2.size());
   for (int i = 0; i < planar.modes.omega2.size(); ++i)
     EXPECT_NEAR(spatial.modes.omega2[i], planar.modes.omega2[i], 1e-9 * planar.modes.omega2[i]) << "mode " << i + 1;
@@ -97,6 +101,46 @@ TEST(Spatial, LockedOutOfPlaneIsThePlanarModel) {
   }
 }
 
+// The default article, 16 segments, where the pieces need no inertia correction.
+TEST(Spatial, LockedOutOfPlaneIsThePlanarModel) { expectLockedSpatialIsPlanar(loadDefaultScene()); }
+
+// The closed tree (link 3a's tip pinned to a fixture): the closure's out-of-plane row
+// has nothing to hold once the out-of-plane coordinates are, so the locked model has
+// the planar closure.
+TEST(Spatial, LockedClosedTreeIsThePlanarClosedTree) { expectLockedSpatialIsPlanar(shippedScene("mmv-closed.yaml")); }
+
+// Free out of the plane, the closed tree's pin holds the point along z as well (a ball
+// joint): its in-plane family is still the planar spectrum (the symmetric article does
+// not couple them), the fixture's point stays on its anchor in all three directions in
+// every mode, and the closure adds out-of-plane stiffness: link 3's first out-of-plane
+// pair rises above that of the open tree, whose link-3a tip is free.
+TEST(Spatial, ClosedTreeHoldsThePointOutOfThePlane) {
+  const ArticleScene closed_planar = shippedScene("mmv-closed.yaml");
+  ArticleScene closed = closed_planar;
+  closed.article.model = ArticleModel::Spatial;
+  const SolvedScene planar = solveScene(closed_planar), spatial = solveScene(closed);
+  const auto families = familyFrequencies(closed);
+  const auto& in_plane = families.at("in-plane");
+  for (int i = 0; i < 8; ++i)
+    EXPECT_NEAR(in_plane.at(i), planar.modes.frequencyHz(i), 1e-9 * planar.modes.frequencyHz(i)) << "mode " << i + 1;
+  ASSERT_EQ(spatial.model->getClosures().size(), 1u);
+  EXPECT_EQ(spatial.model->getClosures()[0].directions.size(), 3u);
+  SimTK::State st = spatial.equilibrium.state;
+  spatial.model->getSystem().realize(st, SimTK::Stage::Position);
+  const auto tipMotion = [&](const std::string& name) {
+    const NamedPoint& p = *spatial.model->findPoint(name);
+    const Eigen::MatrixXd J = spatial.model->calcFrameJacobians(st, {p.mobod}, {p.station_B}, spatial.linearized.dofs);
+    return Eigen::MatrixXd(J.middleRows(3, 3) * spatial.modes.shapes.leftCols(20));
+  };
+  const Eigen::MatrixXd held = tipMotion("link3a.tip"), free_tip = tipMotion("link3b.tip");
+  for (int m = 0; m < 20; ++m)
+    EXPECT_LE(held.col(m).norm(), 1e-9 * free_tip.col(m).norm()) << "mode " << m + 1;
+  ArticleScene open = closed;
+  open.article.closures.clear();
+  const auto open_out = familyFrequencies(open).at("out-of-plane");
+  const auto& closed_out = families.at("out-of-plane");
+  EXPECT_GT(closed_out.at(0), open_out.at(0));
+}
 // Past 18 segments per link, link 1's half pieces are shorter than sqrt(6 (I + I_out) / A)
 // and their bending moments get the least addition that keeps them rigid bodies
 // (article_builder.cpp): the model still builds (Simbody checks every inertia), and the
