@@ -1,5 +1,6 @@
 #include "article/beam_theory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -96,6 +97,19 @@ std::vector<double> beamRoots(BeamEnd root, BeamEnd tip, double mu, double j, in
   // Rigid-body roots sit at 0; the first elastic root of any case here is above 0.05
   // for mu, j up to ~1e4.
   return findRoots(f, 0.02, 200.0, 1e-3, count);
+}
+
+std::vector<double> torsionRoots(BeamEnd root, double r, int count) {
+  const bool free_root = root == BeamEnd::Free;
+  auto f = [&](double b) { return free_root ? std::sin(b) + r * b * std::cos(b) : std::cos(b) - r * b * std::sin(b); };
+  // A heavy disk pulls the first root of a clamped shaft down to about 1/sqrt(r): the
+  // scan's step resolves it; roots k sit below k pi.
+  const double step = std::min(1e-3, 0.05 / std::sqrt(1.0 + r));
+  return findRoots(f, step, (count + 1) * M_PI, step, count);
+}
+
+double torsionFrequencyHz(double beta, double length, double torsion_stiffness, double polar_inertia_per_length) {
+  return beta / (2.0 * M_PI * length) * std::sqrt(torsion_stiffness / polar_inertia_per_length);
 }
 
 double beamFrequencyHz(double beta_l, double length, double bending_stiffness,

@@ -25,6 +25,18 @@ enum class BeamEnd { Clamped, Pinned, Free };
 /// roots at lambda = 0 (pinned-free, free-free) are not returned.
 std::vector<double> beamRoots(BeamEnd root, BeamEnd tip, double mu, double j, int count);
 
+/// First `count` positive roots beta of free torsion of a uniform shaft (torsion
+/// constant J, polar moment of area I_p) carrying at its tip a disk of polar inertia
+/// J_d, with r = J_d / (rho I_p L) >= 0 and omega = (beta / L) sqrt(G J / (rho I_p)).
+/// With theta = cos or sin(beta x / L) and G J theta'(L) = J_d omega^2 theta(L):
+///   root clamped: cos(beta) - r beta sin(beta) = 0  (r = 0: (2k - 1) pi / 2);
+///   root free:    sin(beta) + r beta cos(beta) = 0  (r = 0: k pi; the rigid root 0 left out).
+/// `root` is Clamped or Free (a pinned root holds torsion: it is Clamped here).
+std::vector<double> torsionRoots(BeamEnd root, double r, int count);
+
+/// Natural frequency in Hz of a torsion root: beta / (2 pi L) sqrt(G J / (rho I_p)).
+double torsionFrequencyHz(double beta, double length, double torsion_stiffness, double polar_inertia_per_length);
+
 /// Natural frequency in Hz of a uniform Euler-Bernoulli beam for a root beta*L:
 ///   f = (beta L)^2 / (2 pi L^2) * sqrt(E I / (rho A)).
 double beamFrequencyHz(double beta_l, double length, double bending_stiffness,

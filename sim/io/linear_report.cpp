@@ -238,6 +238,7 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
     file.trace_lines.push_back(t);
   }
   const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
+  const std::size_t d = model.isSpatial() ? 3 : 2;
   const ModalSolution& modes = lm.solved.modes;
   const int count = std::min<int>(kLinearModelModes, static_cast<int>(modes.omega2.size()));
   const ModalDamping damping = modalDamping(model, lm.solved.linearized, modes, lm.damping, count);
@@ -250,7 +251,7 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
     const Eigen::VectorXd u = P * modes.shapes.col(k);
     for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
       m.nodes.push_back(static_cast<int>(p) + 1);
-      m.translations.push_back({u[2 * p], u[2 * p + 1], 0.0});
+      m.translations.push_back({u[d * p], u[d * p + 1], d == 3 ? u[d * p + 2] : 0.0});
     }
     file.modes.push_back(m);
   }

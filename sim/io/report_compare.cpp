@@ -15,6 +15,14 @@ std::string pct(double x) { return strf("%+.2f", 100 * x); }
 
 std::string frequency(const SystemModeRow& r) { return r.stable ? strf("%.4f", r.frequency_hz) : "UNSTABLE"; }
 
+/// A family as a table tag: in, out, tors, mix.
+std::string familyTag(const std::string& family) {
+  if (family == "in-plane") return "in";
+  if (family == "out-of-plane") return "out";
+  if (family == "torsion") return "tors";
+  return family == "mixed" ? "mix" : family;
+}
+
 Table componentTable(const CompareReport& r) {
   std::vector<std::string> head{"link", "tip_mass_kg", "mu"};
   int n = 0;
@@ -24,29 +32,38 @@ Table componentTable(const CompareReport& r) {
   for (const auto& c : r.components) {
     std::vector<std::string> row{c.link, strf("%.4f", c.tip.mass), strf("%.4f", c.mass_ratio)};
     for (const auto& m : c.modes)
-      row.push_back(m.has_closed_form ? strf("%.4f (%.4f)", m.frequency_hz, m.closed_form_hz) : strf("%.4f", m.frequency_hz));
+      row.push_back((m.has_closed_form ? strf("%.4f (%.4f)", m.frequency_hz, m.closed_form_hz) : strf("%.4f", m.frequency_hz)) +
+                    (m.family.empty() ? "" : " " + familyTag(m.family)));
     t.add(row);
   }
   return t;
 }
 
-Table systemTable(const std::vector<SystemModeRow>& rows) {
-  Table t({"mode", "frequency_Hz", "strain: link (share)", "kinetic: link (share)", "nearest component mode of that link",
-           "system/component-1_%"});
-  for (const auto& m : rows)
-    t.add({strf("%d", m.mode), frequency(m), strf("%s (%.0f %%)", m.strain_link.c_str(), 100 * m.strain_share),
-           strf("%s (%.0f %%)", m.kinetic_link.c_str(), 100 * m.kinetic_share),
-           m.component_mode ? strf("%s #%d %.4f Hz", m.strain_link.c_str(), m.component_mode, m.component_hz) : "-",
-           m.component_mode ? pct(m.component_difference) : "-"});
+Table systemTable(const std::vector<SystemModeRow>& rows, bool spatial) {
+  std::vector<std::string> head{"mode", "frequency_Hz", "strain: link (share)", "kinetic: link (share)",
+                                "nearest component mode of that link", "system/component-1_%"};
+  if (spatial) head.insert(head.begin() + 2, "family");
+  Table t(head);
+  for (const auto& m : rows) {
+    std::vector<std::string> row{strf("%d", m.mode), frequency(m), strf("%s (%.0f %%)", m.strain_link.c_str(), 100 * m.strain_share),
+                                 strf("%s (%.0f %%)", m.kinetic_link.c_str(), 100 * m.kinetic_share),
+                                 m.component_mode ? strf("%s #%d %.4f Hz", m.strain_link.c_str(), m.component_mode, m.component_hz) : "-",
+                                 m.component_mode ? pct(m.component_difference) : "-"};
+    if (spatial) row.insert(row.begin() + 2, familyTag(m.family));
+    t.add(row);
+  }
   return t;
 }
 
 Table synthesisTable(const CompareReport& r) {
-  Table t({"mode", "full_Hz", "link", "assumed_Hz", "err_%", "MAC", "verdict", "CB_Hz", "err_%", "MAC", "verdict"});
+  std::vector<std::string> head{"mode", "full_Hz", "link", "assumed_Hz", "err_%", "MAC", "verdict", "CB_Hz", "err_%", "MAC", "verdict"};
+  if (r.spatial) head.insert(head.begin() + 3, "family");
+  Table t(head);
   for (std::size_t i = 0; i < r.assumed.rows.size(); ++i) {
     const auto& a = r.assumed.rows[i];
     std::vector<std::string> row{strf("%d", a.mode), strf("%.4f", a.full_hz), a.dominant_link, strf("%.4f", a.synth_hz),
                                  pct(a.relative_error), strf("%.3f", a.mac), a.verdict};
+    if (r.spatial) row.insert(row.begin() + 3, familyTag(a.family));
     if (i < r.craig_bampton.rows.size()) {
       const auto& c = r.craig_bampton.rows[i];
       row.insert(row.end(), {strf("%.4f", c.synth_hz), pct(c.relative_error), strf("%.3f", c.mac), c.verdict});
@@ -120,11 +137,14 @@ std::string render(const CompareReport& r, bool md) {
   os << strf("; gravity %.4g m/s^2\n", r.gravity);
   os << "Components: each link alone, no gravity, " << componentBCName(r.component.bc) << ", tip mass: "
      << (r.component.explicit_tip ? "explicit" : tipMassRuleName(r.component.rule)) << " (Euler-Bernoulli closed form in parentheses)\n";
+  if (r.spatial)
+    os << (md ? "\n" : "") << "Spatial model: families in (in-plane), out (out-of-plane), tors (torsion), mix (mixed); each closed form is "
+          "its family's; out of the plane and in torsion the joint's pin clamps the root (docs/spatial.md)\n";
 
   heading("Table 2: component modes (Hz)");
   table(componentTable(r));
   heading("Table 3: system modes at the equilibrium, each with the link that dominates it");
-  table(systemTable(r.system));
+  table(systemTable(r.system, r.spatial));
   heading("Synthesis from component modes against the full model (Ritz: the k-th synthesized frequency is never below the k-th full one)");
   os << (md ? "" : "  ") << "assumed: " << r.assumed.method << " (" << r.assumed.reduced_dofs << " of " << r.assumed.full_dofs
      << " DOF); CB: " << r.craig_bampton.method << " (" << r.craig_bampton.reduced_dofs << " DOF)\n"
@@ -179,6 +199,8 @@ nlohmann::ordered_json synthesisJson(const SynthesisResult& s) {
                     {"mac", r.mac},
                     {"verdict", r.verdict},
                     {"dominant_link", r.dominant_link}});
+  for (std::size_t i = 0; i < s.rows.size(); ++i)
+    if (!s.rows[i].family.empty()) rows[i]["family"] = s.rows[i].family;
   j["modes"] = rows;
   auto mac = nlohmann::ordered_json::array();
   for (Eigen::Index i = 0; i < s.mac.rows(); ++i) {
@@ -192,7 +214,7 @@ nlohmann::ordered_json synthesisJson(const SynthesisResult& s) {
 
 nlohmann::ordered_json systemJson(const std::vector<SystemModeRow>& rows) {
   auto a = nlohmann::ordered_json::array();
-  for (const auto& m : rows)
+  for (const auto& m : rows) {
     a.push_back({{"mode", m.mode},
                  {"stable", m.stable},
                  {"frequency_hz", m.stable ? nlohmann::ordered_json(m.frequency_hz) : nlohmann::ordered_json(nullptr)},
@@ -203,6 +225,8 @@ nlohmann::ordered_json systemJson(const std::vector<SystemModeRow>& rows) {
                  {"nearest_component_mode", m.component_mode},
                  {"nearest_component_frequency_hz", m.component_hz},
                  {"system_over_component_minus_1", m.component_difference}});
+    if (!m.family.empty()) a.back()["family"] = m.family;
+  }
   return a;
 }
 
@@ -217,6 +241,7 @@ nlohmann::ordered_json compareToJson(const CompareReport& r) {
   j["command"] = "compare";
   j["scene"] = {{"name", r.scene_name}, {"source", r.scene_source}};
   j["topology"] = r.topology;
+  j["model"] = r.spatial ? "spatial" : "planar";
   auto joints = nlohmann::ordered_json::array();
   for (const auto& [n, a] : r.joint_angles_deg) joints.push_back({{"name", n}, {"angle_deg", a}});
   j["joints"] = joints;
@@ -226,9 +251,11 @@ nlohmann::ordered_json compareToJson(const CompareReport& r) {
   auto comps = nlohmann::ordered_json::array();
   for (const auto& c : r.components) {
     auto modes = nlohmann::ordered_json::array();
-    for (const auto& m : c.modes)
+    for (const auto& m : c.modes) {
       modes.push_back({{"frequency_hz", m.frequency_hz},
                        {"closed_form_hz", m.has_closed_form ? nlohmann::ordered_json(m.closed_form_hz) : nlohmann::ordered_json(nullptr)}});
+      if (!m.family.empty()) modes.back()["family"] = m.family;
+    }
     comps.push_back({{"link", c.link},
                      {"tip_mass_kg", c.tip.mass},
                      {"tip_rotary_inertia_kg_m2", c.tip.rotary_inertia},
@@ -255,18 +282,20 @@ nlohmann::ordered_json compareToJson(const CompareReport& r) {
 
 std::vector<std::pair<std::string, std::string>> compareCsvFiles(const CompareReport& r) {
   std::ostringstream comp, sys, syn;
-  comp << "link,boundary_condition,tip_mass_rule,tip_mass_kg,mass_ratio,mode,frequency_hz,closed_form_hz\n";
+  // The spatial model adds a last column, each mode's family.
+  const auto family = [&](const std::string& f) { return r.spatial ? "," + f : std::string(); };
+  comp << "link,boundary_condition,tip_mass_rule,tip_mass_kg,mass_ratio,mode,frequency_hz,closed_form_hz" << family("family") << '\n';
   for (const auto& c : r.components)
     for (std::size_t k = 0; k < c.modes.size(); ++k)
       comp << csvEscape(c.link) << ',' << componentBCName(r.component.bc) << ',' << c.tip_rule << ','
            << strf("%.6g,%.6g,%zu,%.8g,", c.tip.mass, c.mass_ratio, k + 1, c.modes[k].frequency_hz)
-           << (c.modes[k].has_closed_form ? strf("%.8g", c.modes[k].closed_form_hz) : "") << '\n';
+           << (c.modes[k].has_closed_form ? strf("%.8g", c.modes[k].closed_form_hz) : "") << family(c.modes[k].family) << '\n';
   sys << "mode,frequency_hz,strain_link,strain_share,kinetic_link,kinetic_share,nearest_component_mode,"
-         "nearest_component_frequency_hz,system_over_component_minus_1\n";
+         "nearest_component_frequency_hz,system_over_component_minus_1" << family("family") << '\n';
   for (const auto& m : r.system)
     sys << m.mode << ',' << (m.stable ? strf("%.8g", m.frequency_hz) : "") << ',' << csvEscape(m.strain_link) << ','
         << strf("%.6f", m.strain_share) << ',' << csvEscape(m.kinetic_link) << ',' << strf("%.6f", m.kinetic_share) << ','
-        << m.component_mode << ',' << strf("%.8g,%.6g", m.component_hz, m.component_difference) << '\n';
+        << m.component_mode << ',' << strf("%.8g,%.6g", m.component_hz, m.component_difference) << family(m.family) << '\n';
   syn << "method,mode,full_frequency_hz,synthesized_mode,synthesized_frequency_hz,relative_error,mac,verdict,dominant_link\n";
   for (const SynthesisResult* s : {&r.assumed, &r.craig_bampton})
     for (const auto& row : s->rows)

@@ -239,22 +239,33 @@ class Builder {
     tips_[l.name] = Frame{prev, X_tip, false};
   }
 
-  /// A floating root (component modes, free-free): rotation and both translations.
+  /// A floating root (component modes, free-free): rotation and both translations; in
+  /// the spatial model all six (a Simbody bushing: x-y-z body-fixed rotations, then
+  /// translations, q' = u), the in-plane three under the planar names.
   SimTK::MobilizedBodyIndex addFloatingRoot(const JointSpec& j, const LinkSpec& l, const Frame& parent,
                                             const SimTK::Body::Rigid& body) {
-    SimTK::MobilizedBody::Planar planar(model_.updMatter().updMobilizedBody(parent.mobod), parent.X_BF, body,
-                                        mountFrame(l));
-    const SimTK::MobilizedBodyIndex ix = planar.getMobilizedBodyIndex();
-    const char* names[] = {"", ".x", ".y"};
-    for (int q = 0; q < 3; ++q) {
+    auto& p = model_.updMatter().updMobilizedBody(parent.mobod);
+    const SimTK::MobilizedBodyIndex ix =
+        spatial() ? SimTK::MobilizedBody::Bushing(p, parent.X_BF, body, mountFrame(l)).getMobilizedBodyIndex()
+                  : SimTK::MobilizedBody::Planar(p, parent.X_BF, body, mountFrame(l)).getMobilizedBodyIndex();
+    struct Q {
+      const char* suffix;
+      bool rotation;
+      int planar_q, spatial_q;  // -1: not in that model
+    };
+    constexpr Q qs[] = {{"", true, 0, 2},        {".x", false, 1, 3},       {".y", false, 2, 4},
+                        {".roll", true, -1, 0},  {".pitch", true, -1, 1},   {".z", false, -1, 5}};
+    for (const Q& q : qs) {
+      const int mq = spatial() ? q.spatial_q : q.planar_q;
+      if (mq < 0) continue;
       Coordinate coord;
-      coord.name = j.name + names[q];
+      coord.name = j.name + q.suffix;
       coord.kind = CoordinateKind::Joint;
-      coord.motion = q == 0 ? CoordinateMotion::Rotation : CoordinateMotion::Translation;
-      coord.mobilizer_q = q;
+      coord.motion = q.rotation ? CoordinateMotion::Rotation : CoordinateMotion::Translation;
+      coord.mobilizer_q = mq;
       coord.part = j.name;
       coord.mobod = ix;
-      coord.reference = q == 0 ? j.angle : 0.0;
+      coord.reference = mq == (spatial() ? 2 : 0) ? j.angle : 0.0;
       model_.addCoordinate(coord);
     }
     return ix;

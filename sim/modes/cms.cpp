@@ -5,6 +5,7 @@
 
 #include "sim/core/linalg.hpp"
 #include "sim/model/article_builder.hpp"
+#include "sim/modes/planarity.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/statics/closures.hpp"
 #include "sim/statics/linearize.hpp"
@@ -81,12 +82,15 @@ Eigen::MatrixXd craigBamptonForLink(const ArticleScene& scene, const std::string
     const ModalSolution sol = solveModes(M, K);
     return sol.shapes.leftCols(std::min<Eigen::Index>(k, sol.shapes.cols()));
   }
-  // Interface at the tip: rotation and transverse deflection (the link lies along +x).
+  // Interface at the tip: rotation and transverse deflection (the link lies along +x);
+  // on the spatial model every rotation (the joint's pin transmits twist and
+  // out-of-plane bending) and the deflection along z too.
   const NamedPoint* tip = model->findPoint(link + ".tip");
   const Eigen::MatrixXd J = model->calcFrameJacobians(s, {tip->mobod}, {tip->station_B}, dofs);
-  Eigen::MatrixXd C(2, dofs.size());
-  C.row(0) = J.row(2);  // rotation about z
-  C.row(1) = J.row(4);  // translation along y
+  const bool out_of_plane = model->isSpatial() && !scene.article.lock_out_of_plane;
+  const std::vector<int> rows = out_of_plane ? std::vector<int>{0, 1, 2, 4, 5} : std::vector<int>{2, 4};
+  Eigen::MatrixXd C(rows.size(), dofs.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) C.row(r) = J.row(rows[r]);  // J: 3 rotations, then 3 translations
   return craigBamptonBasis(M, K, C, k);
 }
 
@@ -180,6 +184,7 @@ SynthesisResult synthesize(const ArticleScene& scene, const SynthesisOptions& o)
     row.mac = mac;
     row.verdict = synthesisVerdict(row.relative_error, mac, o);
     row.dominant_link = dominantStrainLink(model, dofs, full.modes.shapes.col(i));
+    if (model.isSpatial()) row.family = classifyMode(model, dofs, full.modes.shapes.col(i)).label;
     r.rows.push_back(row);
   }
   return r;

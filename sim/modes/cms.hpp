@@ -68,6 +68,7 @@ struct SynthesisRow {
   double mac = 0;
   std::string verdict;  ///< predicted, shifted, missed.
   std::string dominant_link;  ///< by strain energy in the full model.
+  std::string family;         ///< spatial model: the full mode's family (planarity.hpp); else empty.
 };
 
 struct SynthesisResult {

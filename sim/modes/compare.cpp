@@ -41,10 +41,12 @@ std::vector<SystemModeRow> systemModes(const ArticleScene& scene, int count, con
     r.kinetic_link = m.dominant_link_kinetic;
     r.strain_share = shareOf(m.strain_by_link, r.strain_link);
     r.kinetic_share = shareOf(m.kinetic_by_link, r.kinetic_link);
+    r.family = m.family.label;
     for (const auto& c : components) {
       if (c.link != r.strain_link) continue;
       double best = INFINITY;
       for (std::size_t k = 0; k < c.modes.size(); ++k) {
+        if (r.family != "mixed" && c.modes[k].family != r.family) continue;
         const double d = r.frequency_hz / c.modes[k].frequency_hz - 1.0;
         if (std::abs(d) < std::abs(best)) {
           best = d;
@@ -65,6 +67,7 @@ CompareReport runCompare(const ArticleScene& scene, const CompareOptions& o) {
   CompareReport rep;
   rep.scene_name = scene.name;
   rep.scene_source = scene.source;
+  rep.spatial = scene.article.model == ArticleModel::Spatial;
   // The main tables are the scene's own topology when it is among those asked for
   // (`--topology open,closed` on a closed scene: closed), else the first asked for.
   const std::string own = scene.article.closures.empty() ? "open" : "closed";

@@ -31,7 +31,9 @@ struct SystemModeRow {
   bool stable = true;
   std::string strain_link, kinetic_link;
   double strain_share = 0, kinetic_share = 0;
-  int component_mode = 0;         ///< nearest component mode of strain_link (1-based), 0: none.
+  std::string family;             ///< spatial model: in-plane, out-of-plane, torsion, mixed; else empty.
+  int component_mode = 0;         ///< nearest component mode of strain_link (1-based), 0: none; on the
+                                  ///< spatial model of the same family (any family for a mixed mode).
   double component_hz = 0;
   double component_difference = 0;  ///< system / component - 1.
 };
@@ -50,6 +52,7 @@ struct TopologyColumn {
 
 struct CompareReport {
   std::string scene_name, scene_source;
+  bool spatial = false;  ///< model: spatial (components and modes carry their families).
   std::vector<std::pair<std::string, double>> joint_angles_deg;
   double gravity = 0;
   std::string topology;  ///< of the main tables.

@@ -1,11 +1,13 @@
 #include "sim/modes/components.hpp"
 
 #include <cmath>
+#include <map>
 
 #include "sim/model/article_builder.hpp"
 #include "article/beam_theory.hpp"
 #include "sim/statics/linearize.hpp"
 #include "sim/modes/modal.hpp"
+#include "sim/modes/planarity.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/statics/statics.hpp"
 
@@ -48,6 +50,35 @@ void addOutboard(const ArticleSpec& a, const std::string& link, LumpedMass& m) {
       addOutboard(a, l.name, m);
     }
   }
+}
+
+/// The closed-form frequencies (Hz) of the link's first `count` modes of each family
+/// under boundary condition `bi`: "in-plane" (the planar model's only family),
+/// "out-of-plane" and "torsion" on the spatial model (components.hpp).
+std::map<std::string, std::vector<double>> closedForms(const ArticleSpec& a, const LinkSpec& l, const BCInfo& bi,
+                                                       const LumpedMass& tip, double mass_ratio, int count) {
+  const Material& mat = *a.findMaterial(l.material);
+  const Section& sec = *a.findSection(l.section);
+  const double rho_a = mat.density * sectionArea(sec), L = l.length;
+  const auto bending = [&](BeamEnd root, BeamEnd tip_end, double rotary, double second_moment) {
+    std::vector<double> hz;
+    for (double r : beamRoots(root, tip_end, mass_ratio, rotary / (rho_a * std::pow(L, 3)), count))
+      hz.push_back(beamFrequencyHz(r, L, mat.youngs_modulus * second_moment, rho_a));
+    return hz;
+  };
+  std::map<std::string, std::vector<double>> out;
+  out["in-plane"] = bending(bi.root, bi.tip, tip.rotary_inertia, sectionSecondMoment(sec));
+  if (a.model != ArticleModel::Spatial) return out;
+  // The joint pins turn about the plane's normal only: out of the plane and in torsion
+  // the root is clamped unless it floats. A lumped mass is a disk about the normal
+  // (article_builder.cpp): half its rotary inertia about the link and the in-plane normal.
+  const BeamEnd held_root = bi.root == BeamEnd::Free ? BeamEnd::Free : BeamEnd::Clamped;
+  out["out-of-plane"] = bending(held_root, bi.tip, 0.5 * tip.rotary_inertia, sectionSecondMomentOut(sec));
+  const double polar_per_length = mat.density * (sectionSecondMoment(sec) + sectionSecondMomentOut(sec));
+  std::vector<double>& torsion = out["torsion"];
+  for (double b : torsionRoots(held_root, 0.5 * tip.rotary_inertia / (polar_per_length * L), count))
+    torsion.push_back(torsionFrequencyHz(b, L, mat.shear_modulus * sectionTorsionConstant(sec), polar_per_length));
+  return out;
 }
 
 }  // namespace
@@ -113,9 +144,12 @@ ArticleScene componentScene(const ArticleScene& scene, const std::string& link, 
   j.parent = "base";
   j.hold = bi.root == BeamEnd::Clamped ? JointHold::Locked : JointHold::Free;
   s.article.joints.push_back(j);
+  s.article.model = scene.article.model;
+  s.article.lock_out_of_plane = scene.article.lock_out_of_plane;
   LinkSpec l = *spec;
   l.joint = "root";
   l.mount_angle = 0;
+  l.tilt = 0;
   l.tip_mass.reset();
   if (tip.mass > 0 || tip.rotary_inertia > 0) l.tip_mass = tip;
   s.article.links.push_back(l);
@@ -153,18 +187,16 @@ ComponentResult calcComponentModes(const ArticleScene& scene, const std::string&
   const LinearizedModel lin = linearize(*model, eq.state, eq.closure_multipliers);
   ModalSolution sol = solveModes(lin.M, lin.K, lin.Z);
   markRigidBodyModes(sol, lin, cs);
+  if (model->isSpatial()) separateDegenerateFamilies(*model, lin.dofs, sol);  // a round rod's pairs
 
   // Hinge rows of the DOF vector, in hinge order.
   std::vector<int> hinge_rows;
   for (std::size_t a = 0; a < lin.dofs.size(); ++a)
     if (model->getCoordinates()[lin.dofs[a]].kind == CoordinateKind::Hinge) hinge_rows.push_back(static_cast<int>(a));
 
-  const Material& mat = *scene.article.findMaterial(spec->material);
-  const Section& sec = *scene.article.findSection(spec->section);
-  const double rho_a = mat.density * sectionArea(sec), ei = mat.youngs_modulus * sectionSecondMoment(sec);
-  const BCInfo& bi = info(options.bc);
-  const auto roots = beamRoots(bi.root, bi.tip, r.mass_ratio, r.tip.rotary_inertia / (rho_a * std::pow(spec->length, 3)),
-                               options.num_modes);
+  const bool spatial = scene.article.model == ArticleModel::Spatial;
+  const auto closed = closedForms(scene.article, *spec, info(options.bc), r.tip, r.mass_ratio, options.num_modes);
+  std::map<std::string, std::size_t> next;  // the next closed form of each family
   std::vector<int> kept;
   for (Eigen::Index i = 0; i < sol.omega2.size() && static_cast<int>(kept.size()) < options.num_modes; ++i)
     if (!sol.isRigidBody(static_cast<int>(i))) kept.push_back(static_cast<int>(i));
@@ -172,9 +204,11 @@ ComponentResult calcComponentModes(const ArticleScene& scene, const std::string&
   for (std::size_t k = 0; k < kept.size(); ++k) {
     ComponentMode m;
     m.frequency_hz = sol.frequencyHz(kept[k]);
-    if (k < roots.size()) {
+    if (spatial) m.family = classifyMode(*model, lin.dofs, sol.shapes.col(kept[k])).label;
+    const auto family = closed.find(spatial ? m.family : "in-plane");
+    if (family != closed.end() && next[family->first] < family->second.size()) {
       m.has_closed_form = true;
-      m.closed_form_hz = beamFrequencyHz(roots[k], spec->length, ei, rho_a);
+      m.closed_form_hz = family->second[next[family->first]++];
     }
     r.modes.push_back(m);
     for (std::size_t h = 0; h < hinge_rows.size(); ++h) r.hinge_shapes(h, k) = sol.shapes(hinge_rows[h], kept[k]);

@@ -11,6 +11,14 @@
 /// direction needs no constraint). Rigid-body modes of pinned or free roots are left
 /// out.
 ///
+/// On the spatial model (docs/spatial.md) a component also bends out of its plane and
+/// twists. The joints are pins about the plane's normal, so a pinned root holds the
+/// out-of-plane rotation and the twist as a clamp does; a pinned tip holds the point
+/// along the normal too (a ball joint). Each mode's closed form is its family's: the
+/// beam roots with E I_out and the tip's rotary inertia about the in-plane normal
+/// (half the torquer's), or the torsion roots with G J, the section's polar inertia and
+/// the tip's polar inertia about the link (half the torquer's; beam_theory.hpp).
+///
 /// Tip mass rules, since the report's text and its TREETOPS numbers disagree on what
 /// link 1 and link 2 carried: `none`; `torquer` (the torquers at the link's tip only:
 /// what the report's TREETOPS mass ratio 1.7984 for link 1 is); `outboard` (all the
@@ -49,6 +57,9 @@ struct ComponentMode {
   double frequency_hz = 0;
   double closed_form_hz = 0;
   bool has_closed_form = false;
+  /// Spatial model: in-plane, out-of-plane, torsion or mixed (planarity.hpp); the closed
+  /// form is that family's (none for mixed). Empty on the planar model.
+  std::string family;
 };
 
 struct ComponentResult {

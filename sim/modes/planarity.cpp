@@ -28,6 +28,29 @@ ModeFamily classifyMode(const Model& model, const std::vector<int>& dofs, const 
   return f;
 }
 
+void separateDegenerateFamilies(const Model& model, const std::vector<int>& dofs, ModalSolution& modes,
+                                double tolerance) {
+  const Eigen::Index n = modes.omega2.size();
+  Eigen::VectorXd weight(dofs.size());
+  for (std::size_t i = 0; i < dofs.size(); ++i) {
+    const Coordinate& c = model.getCoordinates()[dofs[i]];
+    weight[static_cast<Eigen::Index>(i)] =
+        c.stiffness * (c.axis == HingeAxis::OutOfPlane ? 2.0 : c.axis == HingeAxis::Torsion ? 3.0 : 1.0);
+  }
+  for (Eigen::Index first = 0; first < n;) {
+    Eigen::Index last = first + 1;
+    while (last < n && std::abs(modes.omega2[last] - modes.omega2[first]) <= tolerance * std::abs(modes.omega2[first]))
+      ++last;
+    if (last - first > 1 && modes.omega2[first] > 0) {
+      const Eigen::MatrixXd V = modes.shapes.middleCols(first, last - first);
+      const Eigen::MatrixXd E = V.transpose() * weight.asDiagonal() * V;
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (E + E.transpose()));
+      modes.shapes.middleCols(first, last - first) = V * es.eigenvectors();
+    }
+    first = last;
+  }
+}
+
 namespace {
 
 Eigen::Vector3d toEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }

@@ -43,6 +43,15 @@ inline constexpr double kDecoupledRatio = 1e-9;
 
 ModeFamily classifyMode(const Model& model, const std::vector<int>& dofs, const Eigen::VectorXd& phi);
 
+/// Within every cluster of solved modes whose omega^2 agree to `tolerance` (relative),
+/// any M-orthonormal basis is a set of modes: a round rod's in-plane and out-of-plane
+/// bending pair comes out of the eigensolver in an arbitrary mix of the two. Rotates
+/// each cluster's shapes to the basis that diagonalizes the families' weighted strain
+/// energy (in-plane 1, out-of-plane 2, torsion 3), so each comes out in one family when
+/// the families are what is degenerate.
+void separateDegenerateFamilies(const Model& model, const std::vector<int>& dofs, ModalSolution& modes,
+                                double tolerance = 1e-9);
+
 struct PlanarityMode {
   int number = 0;  ///< 1-based, as in the modes table.
   double frequency_hz = 0;

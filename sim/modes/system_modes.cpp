@@ -90,8 +90,9 @@ Eigen::MatrixXd pointTranslationMatrix(const Model& model, const SimTK::State& s
     st.push_back(p.station_B);
   }
   const Eigen::MatrixXd J = model.calcFrameJacobians(s, ix, st, dofs);
-  Eigen::MatrixXd P(2 * ix.size(), dofs.size());
-  for (std::size_t p = 0; p < ix.size(); ++p) P.middleRows(2 * p, 2) = J.middleRows(6 * p + 3, 2);
+  const int d = model.isSpatial() ? 3 : 2;
+  Eigen::MatrixXd P(d * ix.size(), dofs.size());
+  for (std::size_t p = 0; p < ix.size(); ++p) P.middleRows(d * p, d) = J.middleRows(6 * p + 3, d);
   return P;
 }
 

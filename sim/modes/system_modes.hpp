@@ -173,8 +173,9 @@ SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq =
 /// (modal.hpp, markRigidBodyModes, with the scale |g| / L of the scene's pendulums).
 void markRigidBodyModes(ModalSolution& sol, const LinearizedModel& lin, const ArticleScene& scene);
 
-/// Translations (x, y) of every named point per unit DOF motion at state s: rows
-/// 2p, 2p+1 for point p, columns over `dofs`. P * phi is a shape as a test sees it.
+/// Translations of every named point per unit DOF motion at state s, d rows per point
+/// (x, y; and z on the spatial model: d = 3), columns over `dofs`. P * phi is a shape
+/// as a test sees it.
 Eigen::MatrixXd pointTranslationMatrix(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
 
 /// The link with the largest share of the strain energy of shape phi (over the

@@ -77,3 +77,29 @@ TEST(BeamTheory, FrequencyFormulaMatchesReportLink3) {
 
 }  // namespace
 }  // namespace mmv
+
+namespace mmv {
+namespace {
+
+// Torsion of a shaft with a tip disk: the classical roots without the disk, the
+// frequency equation at every root with it, and the heavy-disk limit (a rigid disk on
+// the shaft's torsion spring G J / L: beta^2 = rho I_p L / J_d = 1 / r).
+TEST(BeamTheory, TorsionRootsWithAndWithoutATipDisk) {
+  const auto clamped = torsionRoots(BeamEnd::Clamped, 0.0, 3), free_root = torsionRoots(BeamEnd::Free, 0.0, 3);
+  ASSERT_EQ(clamped.size(), 3u);
+  ASSERT_EQ(free_root.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(clamped[k], (2 * k + 1) * M_PI / 2, 1e-12);
+    EXPECT_NEAR(free_root[k], (k + 1) * M_PI, 1e-12);
+  }
+  for (double r : {0.1, 1.0, 30.0}) {
+    for (double b : torsionRoots(BeamEnd::Clamped, r, 3)) EXPECT_NEAR(b * std::tan(b), 1.0 / r, 1e-9 * (1 + 1 / r));
+    for (double b : torsionRoots(BeamEnd::Free, r, 3)) EXPECT_NEAR(std::tan(b), -r * b, 1e-9 * (1 + r * b));
+  }
+  const double r = 1e6;
+  EXPECT_NEAR(torsionRoots(BeamEnd::Clamped, r, 1).at(0), 1 / std::sqrt(r), 1e-6 / std::sqrt(r));
+  EXPECT_NEAR(torsionFrequencyHz(M_PI / 2, 2.0, 4.0, 1.0), M_PI / 2 / (2 * M_PI * 2.0) * 2.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace mmv

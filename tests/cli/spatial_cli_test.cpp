@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ TEST_F(Cli, PlanarCommandsRefuseTheSpatialModelNamingTheKey) {
   for (const std::string& command : std::vector<std::string>{"render --out " + png, "trade", "check", "place-sensors --count 2"}) {
     const Result r = run(command + " --set model=spatial");
     EXPECT_EQ(r.code, 64) << command << ": " << r.err;
-    EXPECT_NE(r.err.find("model: spatial is analysed by `modes`, `converge`, `simulate`, `frf` and `rom` so far"), std::string::npos)
+    EXPECT_NE(r.err.find("model: spatial is analysed by `modes`, `converge`, `compare`, `simulate`, `frf` and `rom` so far"), std::string::npos)
         << command << ": " << r.err;
     EXPECT_FALSE(fs::exists(png));
   }
@@ -117,6 +118,28 @@ TEST_F(Cli, TheClosedTreeRunsOnTheSpatialModel) {
   EXPECT_GT(std::abs(c["force_x_n"].get<double>()), 1.0);
   const Result text = run("modes " + scene + " --set model=spatial --no-error-estimate");
   EXPECT_NE(text.out.find("Fz_N"), std::string::npos) << text.out;
+}
+
+// compare on the spatial article: every component mode and system mode carries its
+// family in text, JSON and CSV; the planar comparison has no family anywhere.
+TEST_F(Cli, CompareRunsOnTheSpatialArticleWithFamilies) {
+  const Result r = run("compare --set model=spatial --component-modes 8 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["model"], "spatial");
+  std::vector<std::string> link1;
+  for (const auto& m : doc["component_modes"][0]["modes"]) link1.push_back(m["family"]);
+  EXPECT_NE(std::find(link1.begin(), link1.end(), "torsion"), link1.end());
+  EXPECT_EQ(doc["system_modes"][1]["family"], "out-of-plane");
+  EXPECT_EQ(doc["synthesis"]["craig_bampton"]["modes"][1]["family"], "out-of-plane");
+  const Result text = run("compare --set model=spatial --out " + (dir_ / "cmp").string());
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("Spatial model: families in (in-plane), out (out-of-plane)"), std::string::npos) << text.out;
+  const std::string csv = slurp(dir_ / "cmp" / "component_modes.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "link,boundary_condition,tip_mass_rule,tip_mass_kg,mass_ratio,mode,frequency_hz,closed_form_hz,family");
+  const nlohmann::json planar = nlohmann::json::parse(run("compare --json").out);
+  EXPECT_EQ(planar["model"], "planar");
+  EXPECT_FALSE(planar["system_modes"][0].contains("family"));
 }
 
 }  // namespace
