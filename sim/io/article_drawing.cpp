@@ -132,10 +132,11 @@ void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, cons
     }
     d.items.push_back(it);
     d.labels.push_back({at, sensor.name + " (" + sensor.type + ")", kSensor});
-    // Its measuring axis: an accelerometer's along or across its link; a gyro's and
-    // an encoder's the rotation axis, out of the plane of motion.
+    // Its measuring axis: an accelerometer's along or across its link; a gyro's its
+    // rotation axis (out of the plane of motion unless the spatial model's scene picks
+    // another); an encoder's its joint's, out of the plane.
     Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
-    if (sensor.type == "accelerometer") {
+    if (sensor.type != "encoder") {
       std::string error;
       axis = vec(PointRef::resolve(model, scene.article, sensor.target, error)->localAxis(s, sensor.axis));
     }

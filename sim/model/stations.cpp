@@ -85,6 +85,22 @@ double StationPoint::angularRate(const SimTK::State& s) const {
   return (1 - xi_) * w(a_) + xi_ * w(b_);
 }
 
+SimTK::Vec3 StationPoint::angularVelocity(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  auto w = [&](const Node& n) {
+    return 0.5 * (m.getMobilizedBody(n.left).getBodyAngularVelocity(s) + m.getMobilizedBody(n.right).getBodyAngularVelocity(s));
+  };
+  return (1 - xi_) * w(a_) + xi_ * w(b_);
+}
+
+SimTK::Vec3 StationPoint::normal(const SimTK::State& s) const {
+  const auto& m = model_->getMatter();
+  auto z = [&](const Node& n) {
+    return 0.5 * (m.getMobilizedBody(n.left).getBodyRotation(s).z() + m.getMobilizedBody(n.right).getBodyRotation(s).z());
+  };
+  return ((1 - xi_) * z(a_) + xi_ * z(b_)).normalize();
+}
+
 Eigen::MatrixXd StationPoint::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows) const {
   const auto& m = model_->getMatter();
   // Frames: the two node points, then the pieces whose directions enter.
@@ -154,10 +170,25 @@ double PointRef::angularRate(const SimTK::State& s) const {
   return model_->getMatter().getMobilizedBody(point_->mobod).getBodyAngularVelocity(s)[2];
 }
 
+double PointRef::angularRate(const SimTK::State& s, int axis) const {
+  if (axis == 2 && !model_->isSpatial()) return angularRate(s);
+  const SimTK::Vec3 w = station_ ? station_->angularVelocity(s)
+                                 : model_->getMatter().getMobilizedBody(point_->mobod).getBodyAngularVelocity(s);
+  return ~w * localAxis(s, axis);
+}
+
 SimTK::Vec3 PointRef::localAxis(const SimTK::State& s, int axis) const {
-  const SimTK::Vec3 x = station_ ? station_->direction(s)
-                                 : SimTK::Vec3(model_->getMatter().getMobilizedBody(point_->mobod).getBodyRotation(s).x());
-  return axis == 0 ? x : SimTK::Vec3(-x[1], x[0], 0);
+  const SimTK::Rotation* R =
+      station_ ? nullptr : &model_->getMatter().getMobilizedBody(point_->mobod).getBodyRotation(s);
+  const SimTK::Vec3 x = station_ ? station_->direction(s) : SimTK::Vec3(R->x());
+  if (!model_->isSpatial()) {  // the plane's normal is z: y = z x x
+    if (axis == 2) return SimTK::Vec3(0, 0, 1);
+    return axis == 0 ? x : SimTK::Vec3(-x[1], x[0], 0);
+  }
+  // The section's normal, made orthogonal to the (interpolated) link direction.
+  const SimTK::Vec3 n = station_ ? station_->normal(s) : SimTK::Vec3(R->z());
+  const SimTK::Vec3 y = (n % x).normalize();
+  return axis == 0 ? x : axis == 1 ? y : SimTK::Vec3(x % y);
 }
 
 Eigen::MatrixXd PointRef::translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows) const {

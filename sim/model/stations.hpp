@@ -40,6 +40,11 @@ class StationPoint {
   SimTK::Vec3 direction(const SimTK::State& s) const;
   /// The rotation rate about z (rad/s): the nodes' rates, interpolated linearly.
   double angularRate(const SimTK::State& s) const;
+  /// The nodes' angular velocities (world), interpolated linearly.
+  SimTK::Vec3 angularVelocity(const SimTK::State& s) const;
+  /// The unit normal of the link's section plane: the nodes' pieces' z axes, averaged
+  /// and interpolated like direction() (the plane's normal z on the planar model).
+  SimTK::Vec3 normal(const SimTK::State& s) const;
   /// d p / d q for the coordinates `dofs`: rows x and y (m per unit coordinate), and z
   /// when rows = 3 (the spatial model).
   Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows = 2) const;
@@ -73,7 +78,12 @@ class PointRef {
   SimTK::Vec3 velocity(const SimTK::State& s) const;
   SimTK::Vec3 acceleration(const SimTK::State& s) const;
   double angularRate(const SimTK::State& s) const;
-  /// Unit vectors of the point's local frame in the world: along the link (x) and across it (y).
+  /// The rotation rate (rad/s) about the point's local `axis` (localAxis): about z (2)
+  /// is angularRate's; the spatial model's x (twist) and y (out-of-plane bending) too.
+  double angularRate(const SimTK::State& s, int axis) const;
+  /// Unit vectors of the point's local frame in the world: along the link (x, 0), across
+  /// it in the plane of the link's section (y, 1) and along the section's normal (z, 2;
+  /// the plane's normal on the planar model). Body-fixed: they twist with the link.
   SimTK::Vec3 localAxis(const SimTK::State& s, int axis) const;
   /// Rows x, y (and z when rows = 3).
   Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows = 2) const;

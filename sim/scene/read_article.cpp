@@ -46,6 +46,7 @@ class SceneParser {
     readJoints(r_.require(top, root, "", "joints"), a);
     readLinks(r_.require(top, root, "", "links"), a);
     checkTree(a);
+    if (top.count("model")) readModel(top.at("model"), a);  // before the sensors, whose axes depend on it
     if (top.count("closures")) readClosures(top.at("closures"), a);
     if (top.count("loads")) readLoads(top.at("loads"), a);
     if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
@@ -54,7 +55,6 @@ class SceneParser {
     if (top.count("views")) readViews(top.at("views"), scene);
     if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));
     if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration);
-    if (top.count("model")) readModel(top.at("model"), a);
     if (out_of_plane_mark_ && a.model != ArticleModel::Spatial)
       r_.fail(out_of_plane_mark_->mark, out_of_plane_mark_->path + ": branches out of the plane need model: spatial");
     return scene;

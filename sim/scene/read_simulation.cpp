@@ -67,12 +67,18 @@ void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) 
     } else if (s.type == "rate_gyro" || s.type == "accelerometer") {
       s.target = readPointOrStation(r, r.require(m, sn, path, "point"), path + ".point", scene.article);
       if (m.count("joint")) r.fail(m.at("joint").Mark(), path + ".joint applies only to encoders");
+      s.axis = s.type == "rate_gyro" ? 2 : 0;
       if (m.count("axis")) {
-        if (s.type != "accelerometer") r.fail(m.at("axis").Mark(), path + ".axis applies only to accelerometers");
         const std::string a = r.text(m.at("axis"), path + ".axis");
-        if (a != "axial" && a != "transverse")
-          r.fail(m.at("axis").Mark(), path + ".axis: unknown axis '" + a + "' (known: axial, transverse)");
-        s.axis = a == "transverse";
+        if (a != "axial" && a != "transverse" && a != "normal")
+          r.fail(m.at("axis").Mark(), path + ".axis: unknown axis '" + a + "' (known: axial, transverse, normal)");
+        s.axis = a == "axial" ? 0 : a == "transverse" ? 1 : 2;
+        // The planar model has no motion out of its plane: nothing to read along (or
+        // about) anything but its in-plane axes.
+        const bool in_plane = s.type == "rate_gyro" ? s.axis == 2 : s.axis != 2;
+        if (scene.article.model != ArticleModel::Spatial && !in_plane)
+          r.fail(m.at("axis").Mark(), path + ".axis: " + (s.type == "rate_gyro" ? "a rate gyro about" : "an accelerometer along") +
+                                          " the " + a + " axis reads motion out of the plane: it needs model: spatial");
       }
     } else {
       r.fail(tn.Mark(), path + ".type: unknown sensor '" + s.type + "' (known: encoder, rate_gyro, accelerometer)");

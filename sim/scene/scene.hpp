@@ -54,7 +54,11 @@ struct SensorSceneSpec {
   std::string name;
   std::string type;    ///< encoder, rate_gyro, accelerometer.
   std::string target;  ///< joint (encoder), named point or station (gyro, accelerometer).
-  int axis = 0;        ///< accelerometer: 0 along the link (body x), 1 across it (body y).
+  /// The sensing axis in the point's local frame (PointRef::localAxis): 0 along the
+  /// link (axial), 1 across it in its plane (transverse), 2 the normal. Accelerometers
+  /// default to 0, gyros to 2 (the in-plane rotation); the accelerometer's normal and
+  /// the gyro's other axes need model: spatial.
+  int axis = 0;
   double noise_sigma = 0;  ///< in the measured unit; 0: none.
   std::uint64_t seed = 1;
   std::string where;   ///< file:line:col, for errors found later.

@@ -169,7 +169,7 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
 
 double ArticleRecorder::sensorTruth(const LiveSensor& live, const SimTK::State& st) const {
   if (live.joint >= 0) return st.getQ()[model_.getQIndex(live.joint)];
-  if (live.gyro) return live.point->angularRate(st);
+  if (live.gyro) return live.point->angularRate(st, live.axis);
   const SimTK::Vec3 f_W = live.point->acceleration(st) - model_.getGravity();  // specific force
   return ~f_W * live.point->localAxis(st, live.axis);
 }

@@ -5,9 +5,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "sim/io/uff_read.hpp"
 #include "support/cli.hpp"
 
 namespace mmv::cli_testing {
@@ -66,9 +68,25 @@ TEST_F(Cli, SimulateRunsTheSpatialArticle) {
   const std::string csv = slurp(dir_ / "run" / "history.csv");
   EXPECT_NE(csv.find("link3b_tip_z_m"), std::string::npos) << csv.substr(0, 400);
   const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
-  const Result sensors = run("simulate " + slew + " --set model=spatial");
-  EXPECT_EQ(sensors.code, 64) << sensors.err;
-  EXPECT_NE(sensors.err.find("do not model sensors yet"), std::string::npos) << sensors.err;
+  // The slew scene's instruments, and a triaxial accelerometer and a gyro about the
+  // link's axis, on the spatial model: every sensor gets its column.
+  const std::string triaxial =
+      " --set 'sensors=[{name: ax, type: accelerometer, point: link3a.tip}, {name: ay, type: accelerometer, point: "
+      "link3a.tip, axis: transverse}, {name: az, type: accelerometer, point: link3a.tip, axis: normal}, {name: twist, "
+      "type: rate_gyro, point: link1@0.5, axis: axial}]'";
+  const Result sensors = run("simulate " + slew + " --set model=spatial --set simulation.duration=0.2" + triaxial +
+                             " --out " + (dir_ / "tri").string());
+  ASSERT_EQ(sensors.code, 0) << sensors.err;
+  const std::string header = slurp(dir_ / "tri" / "history.csv").substr(0, 2000);
+  for (const char* c : {"ax_m_per_s2", "ay_m_per_s2", "az_m_per_s2", "twist_rad_per_s"})
+    EXPECT_NE(header.find(c), std::string::npos) << c;
+  // The planar model refuses an axis out of its plane, naming the key.
+  const Result planar = run("simulate " + slew + triaxial);
+  EXPECT_EQ(planar.code, 65) << planar.err;
+  EXPECT_NE(planar.err.find("sensors[2].axis: an accelerometer along the normal axis reads motion out of the plane: it "
+                            "needs model: spatial"),
+            std::string::npos)
+      << planar.err;
   EXPECT_EQ(run("simulate --set model=spatial --target-error 1e-3").code, 64);
   // A spatial run directory cannot be replayed by the planar renderer: refused, not misdrawn.
   EXPECT_EQ(run("render --history " + (dir_ / "run").string() + " --out " + (dir_ / "x.mp4").string()).code, 64);
@@ -93,6 +111,18 @@ TEST_F(Cli, FrfOnTheSpatialArticleHasOutOfPlaneInputsAndOutputs) {
   EXPECT_FALSE(j["pairs"][3]["zero_pair"].get<bool>());
   EXPECT_GT(j["pairs"][3]["peak_hz"].get<double>(), 3.0);
   EXPECT_LT(j["pairs"][3]["peak_hz"].get<double>(), 3.5);
+  // The modal UFF it writes carries the out-of-plane translations: mode 2 (link 1 out of
+  // the plane) moves along z only, mode 1 in the plane only.
+  ASSERT_EQ(run("frf --set model=spatial --input table_z --output link3a.tip:z --out " + (dir_ / "f").string()).code, 0);
+  const uff::File file = uff::read(slurp(dir_ / "f" / "frf.uff"));
+  ASSERT_GE(file.modes.size(), 2u);
+  const auto largest = [&](int mode, int axis) {
+    double m = 0;
+    for (const auto& t : file.modes[mode].translations) m = std::max(m, std::abs(t[axis]));
+    return m;
+  };
+  EXPECT_LT(largest(0, 2), 1e-9 * largest(0, 1));
+  EXPECT_LT(std::max(largest(1, 0), largest(1, 1)), 1e-9 * largest(1, 2));
   const Result planar_z = run("frf --output link3a.tip:z");
   EXPECT_EQ(planar_z.code, 64);
   EXPECT_NE(planar_z.err.find("z is out of the plane"), std::string::npos) << planar_z.err;

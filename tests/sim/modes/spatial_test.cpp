@@ -18,31 +18,13 @@
 #include "sim/time/simulation.hpp"
 #include "support/record_column.hpp"
 #include "support/scenes.hpp"
+#include "support/spatial_scenes.hpp"
 
 namespace mmv {
 namespace {
 
 ArticleScene spatialDefault() {
   ArticleScene s = loadDefaultScene();
-  s.article.model = ArticleModel::Spatial;
-  return s;
-}
-
-/// A horizontal cantilever (root clamped by a locked joint), no gravity, spatial model:
-/// support/scenes.hpp's cantilever with section `sec` and shear modulus G.
-ArticleScene spatialCantilever(const Section& sec, double density, double E, double G, double length, int segments,
-                               double tip_mass = 0, double tip_rotary = 0) {
-  testing::Beam b;
-  b.density = density;
-  b.youngs = E;
-  b.length = length;
-  ArticleScene s = testing::cantileverScene(b, segments, 0.0, 0.0, tip_mass);
-  s.name = "spatial cantilever";
-  s.article.materials[0].shear_modulus = G;
-  const std::string name = s.article.sections[0].name;
-  s.article.sections[0] = sec;
-  s.article.sections[0].name = name;
-  if (tip_mass > 0) s.article.links[0].tip_mass->rotary_inertia = tip_rotary;
   s.article.model = ArticleModel::Spatial;
   return s;
 }
@@ -68,15 +50,6 @@ std::vector<double> extrapolated(const std::function<ArticleScene(int)>& scene, 
   return out;
 }
 
-Section explicitSection(double area, double i_in, double i_out, double j) {
-  Section s;
-  s.shape = SectionShape::Explicit;
-  s.explicit_area = area;
-  s.explicit_second_moment = i_in;
-  s.explicit_second_moment_out = i_out;
-  s.explicit_torsion_constant = j;
-  return s;
-}
 
 ArticleScene shippedScene(const std::string& name) {
   return std::get<ArticleScene>(loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/" + name));
@@ -196,8 +169,8 @@ TEST(Spatial, ClosedFormStiffnessEqualsFiniteDifferences) {
 // Out-of-plane bending of a cantilever with a tip mass: the in-plane roots with I_out.
 TEST(Spatial, OutOfPlaneCantileverWithTipMassMatchesTheClosedForm) {
   const double rho = 2700, E = 70e9, L = 1.0, A = 1e-3, I = 1e-9, I_out = 4e-9, mu = 0.5;
-  const Section sec = explicitSection(A, I, I_out, 2e-9);
-  auto scene = [&](int n) { return spatialCantilever(sec, rho, E, 26e9, L, n, mu * rho * A * L); };
+  const Section sec = testing::explicitSection(A, I, I_out, 2e-9);
+  auto scene = [&](int n) { return testing::spatialCantilever(sec, rho, E, 26e9, L, n, mu * rho * A * L); };
   const std::vector<double> roots = cantileverTipMassRoots(mu, 3);
   const std::vector<double> out = extrapolated(scene, 32, "out-of-plane", 3), in = extrapolated(scene, 32, "in-plane", 3);
   for (int k = 0; k < 3; ++k) {
@@ -214,7 +187,7 @@ TEST(Spatial, TorsionOfAShaftWithATipDiskMatchesTheTanRelation) {
   rod.shape = SectionShape::RoundRod;
   rod.radius = R;
   const double Ip = M_PI * std::pow(R, 4) / 2, disk = 2e-6;  // the lumped mass's rotary inertia about x is J/2
-  auto scene = [&](int n) { return spatialCantilever(rod, rho, E, G, L, n, 0.05, 2 * disk); };
+  auto scene = [&](int n) { return testing::spatialCantilever(rod, rho, E, G, L, n, 0.05, 2 * disk); };
   const double ratio = rho * Ip * L / disk;
   const std::vector<double> beta =
       findRoots([&](double b) { return b * std::sin(b) - ratio * std::cos(b); }, 1e-6, 12.0, 1e-3, 3);
@@ -232,7 +205,7 @@ TEST(Spatial, RoundRodBendingFamiliesPair) {
   Section rod;
   rod.shape = SectionShape::RoundRod;
   rod.radius = 0.00127;
-  const auto f = familyFrequencies(spatialCantilever(rod, 2110, 61e9, 6e9, 0.762, 16, 0.01));
+  const auto f = familyFrequencies(testing::spatialCantilever(rod, 2110, 61e9, 6e9, 0.762, 16, 0.01));
   const auto& in = f.at("in-plane");
   const auto& out = f.at("out-of-plane");
   ASSERT_EQ(in.size(), out.size());
@@ -297,8 +270,8 @@ TEST(Spatial, FreeRunKeepsItsEnergyBalance) {
 // averages out); held rigid out of the plane (planar model) it follows it to 1e-6.
 TEST(Spatial, RollSlewTorqueFollowsTheRigidBodyEstimate) {
   const double m = 3.0, L = 1.0, g = 9.81, ring = 0.7;
-  const Section sec = explicitSection(1e-4, 2e-8, 2e-8, 4e-8);
-  ArticleScene s = spatialCantilever(sec, m / (1e-4 * L), 7e12, 2.7e12, L, 4);
+  const Section sec = testing::explicitSection(1e-4, 2e-8, 2e-8, 4e-8);
+  ArticleScene s = testing::spatialCantilever(sec, m / (1e-4 * L), 7e12, 2.7e12, L, 4);
   s.gravity = {0, -g, 0};
   s.article.base.direction = -M_PI / 2;  // hanging
   s.article.base.gimbal = GimbalSpec{};

@@ -263,7 +263,7 @@ TEST(Simulation, SensorsReadTheRun) {
   s.simulation.duration = 1.5;
   s.simulation.sample_rate_hz = 400;
   s.sensors.push_back({"enc", "encoder", "joint1", 0, 0.0, 1, "<test>"});
-  s.sensors.push_back({"gyro", "rate_gyro", "link1.tip", 0, 0.0, 1, "<test>"});
+  s.sensors.push_back({"gyro", "rate_gyro", "link1.tip", 2, 0.0, 1, "<test>"});
   const SimulationResult r = simulate(s);
   const int angle = column(r.record, "joint1_angle_deg"), enc = column(r.record, "enc_rad");
   const int gyro = column(r.record, "gyro_rad_per_s");
