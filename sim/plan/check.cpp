@@ -103,10 +103,12 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, con
     if (!l.rigid) rep.segments = std::max(rep.segments, l.segments);
   plan::addTorqueLines(in, rep.lines);
   plan::addTableAndModeLines(in, rep.lines);
+  plan::addPlanarityLines(in, rep.lines);
   plan::addSensorLines(in, rep.lines);
   plan::addLabLines(in, rep.lines);
   plan::addPlausibilityLines(in, rep.lines);
-  const std::vector<std::string> order{"torquers", "gimbal", "table", "modes", "sensors", "lab", "plausibility"};
+  const std::vector<std::string> order{"torquers", "gimbal", "table", "modes", "planarity", "sensors", "lab",
+                                        "plausibility"};
   std::stable_sort(rep.lines.begin(), rep.lines.end(), [&](const CheckLine& a, const CheckLine& b) {
     return std::find(order.begin(), order.end(), a.group) < std::find(order.begin(), order.end(), b.group);
   });

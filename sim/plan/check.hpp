@@ -26,6 +26,11 @@
 ///    through the sensor model) and, for accelerometers on the table, the steady-state
 ///    response of the flexible linear model to the table's program (sine: at its
 ///    frequency; sweep: the worst over its band; random: 3 sigma).
+///  - planarity (model: spatial): the modes in the band that leave the plane, each
+///    against its nearest in-plane mode's half-power bandwidth (closer, frequency alone
+///    cannot tell them apart); under each program the scene runs (table x, slews), the
+///    out-of-plane over in-plane resonant response at the link tips against
+///    max_out_of_plane_ratio (sim/modes/planarity.hpp). Above it: warn.
 ///  - lab (scene with `lab:`): the envelope of the article's points at rest and during
 ///    the rigid-link run against the floor, the ceiling and the platform's hole.
 ///  - plausibility: masses, lengths, moduli, deflections and frequencies outside what a
@@ -60,6 +65,8 @@ struct CheckOptions {
   double required_margin_pct = 20;  ///< below it (but >= 0): warn.
   double band_min_hz = 0.1, band_max_hz = 50;  ///< the modes of interest (report).
   int grid_points = 0;  ///< per held angle in the torque search; 0: 5 (3 beyond 5 angles).
+  /// Spatial model: the out-of-plane over in-plane response a planar test tolerates.
+  double max_out_of_plane_ratio = 0.05;
 };
 
 struct CheckReport {

@@ -32,6 +32,9 @@ void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out);
 void addSensorLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Payload, stroke, bandwidth (table scenes); modal content in the band.
 void addTableAndModeLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// The spatial model: the modes in the band that leave the plane against their nearest
+/// in-plane mode, and the out-of-plane response under the scene's programs.
+void addPlanarityLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// The article's envelope against the lab (scenes with `lab:`).
 void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Values no lab article has, each with the likely unit mistake.

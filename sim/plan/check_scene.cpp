@@ -99,8 +99,8 @@ void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const auto& base = in.scene.article.base.position;
   const facility::LabSpec& lab = *in.scene.lab;
   const facility::LabLevels y = facility::labLevels(lab, base[1]);
-  std::vector<std::array<double, 2>> pts;
-  for (const auto& p : in.modes.points) pts.push_back({p.x, p.y});
+  std::vector<std::array<double, 3>> pts;  // z: out of the plane (the spatial model)
+  for (const auto& p : in.modes.points) pts.push_back({p.x, p.y, p.z});
   bool during_run = false;
   if (in.rigid_run && !in.rigid_run->states.rows.empty()) {  // every point of the rigid article, every sample (at most 2000)
     const auto model = buildArticleModel(in.rigid);
@@ -112,7 +112,7 @@ void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out) {
       model->getSystem().realize(s, SimTK::Stage::Position);
       for (const auto& p : model->getPoints()) {
         const SimTK::Vec3 x = model->findPointLocation(s, p);
-        pts.push_back({x[0], x[1]});
+        pts.push_back({x[0], x[1], x[2]});
       }
     }
     during_run = true;
@@ -123,7 +123,8 @@ void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     lowest = std::min(lowest, p[1]);
     highest = std::max(highest, p[1]);
     reach = std::max(reach, std::abs(p[0] - base[0]));
-    if (p[1] > underside) in_hole = std::max(in_hole, std::abs(p[0] - base[0]));
+    // the hole is square, centred on the base
+    if (p[1] > underside) in_hole = std::max({in_hole, std::abs(p[0] - base[0]), std::abs(p[2] - base[2])});
   }
   const std::string when = during_run ? "at rest and during the scene's run (rigid links)" : "at rest";
   out.push_back(makeLine("lab", "lab.depth", "depth below the platform's top within its height above the floor", y.platform_top - lowest,

@@ -2,6 +2,7 @@
 // against its range, and its signal-to-resolution ratio.
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 #include "facility/sensors.hpp"
 #include "sim/core/text.hpp"
@@ -94,10 +95,12 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const auto& motion = scene.article.base.motion;
   std::vector<OutputSpec> outputs;
   std::vector<const SensorSceneSpec*> accels;
+  const int dims = scene.article.model == ArticleModel::Spatial ? 3 : 2;  // the acceleration's world components
   for (const auto& s : scene.sensors)
     if (s.type == "accelerometer") {
       accels.push_back(&s);
-      for (int axis : {0, 1}) outputs.push_back({s.name + (axis ? "_y" : "_x"), OutputKind::Acceleration, s.target, axis, true});
+      for (int axis = 0; axis < dims; ++axis)
+        outputs.push_back({s.name + "_" + "xyz"[axis], OutputKind::Acceleration, s.target, axis, true});
     }
   if (accels.empty() || !motion || scene.article.base.type != BaseType::Table) return;
   if (motion->type == TableMotion::Type::Profile) {
@@ -121,7 +124,9 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const facility::Sensor sensor(specOf(*accels[k]), scene.simulation.sample_rate_hz);
     const auto h = [&](double f) {
       const Eigen::MatrixXcd H = lm.second_order.response(2 * M_PI * f);
-      return (axis[0] * H(2 * k, 0) + axis[1] * H(2 * k + 1, 0)) * sensor.bandGain(f);
+      std::complex<double> along = 0;
+      for (int a = 0; a < dims; ++a) along += axis[a] * H(dims * k + a, 0);
+      return along * sensor.bandGain(f);
     };
     const ProgramPeak p = programPeak(*motion, h);
     out.push_back(sensorLine(*accels[k], "table", "under the table's program", p.value, 0, "flexible linear model, " + p.how));

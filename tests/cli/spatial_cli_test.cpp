@@ -41,10 +41,10 @@ TEST_F(Cli, ModesOnTheSpatialArticleClassifiesModesAndReportsPlanarity) {
 
 TEST_F(Cli, PlanarCommandsRefuseTheSpatialModelNamingTheKey) {
   const std::string png = (dir_ / "x.png").string();
-  for (const std::string& command : std::vector<std::string>{"render --out " + png, "trade", "check", "place-sensors --count 2"}) {
+  for (const std::string& command : std::vector<std::string>{"render --out " + png, "trade", "place-sensors --count 2"}) {
     const Result r = run(command + " --set model=spatial");
     EXPECT_EQ(r.code, 64) << command << ": " << r.err;
-    EXPECT_NE(r.err.find("model: spatial is analysed by `modes`, `converge`, `compare`, `simulate`, `frf` and `rom` so far"), std::string::npos)
+    EXPECT_NE(r.err.find("model: spatial is analysed by `modes`, `converge`, `compare`, `check`, `simulate`, `frf` and `rom` so far"), std::string::npos)
         << command << ": " << r.err;
     EXPECT_FALSE(fs::exists(png));
   }
@@ -170,6 +170,20 @@ TEST_F(Cli, CompareRunsOnTheSpatialArticleWithFamilies) {
   const nlohmann::json planar = nlohmann::json::parse(run("compare --json").out);
   EXPECT_EQ(planar["model"], "planar");
   EXPECT_FALSE(planar["system_modes"][0].contains("family"));
+}
+
+// check on the spatial article adds its planarity group (docs/planning.md).
+TEST_F(Cli, CheckOnTheSpatialArticleJudgesPlanarity) {
+  const std::string table = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml").string();
+  const Result r = run("check " + table + " --set model=spatial --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  std::vector<std::string> ids;
+  for (const auto& l : doc["lines"]) ids.push_back(l["id"]);
+  for (const char* id : {"planarity.modes", "planarity.mode4.separation", "planarity.base x"})
+    EXPECT_NE(std::find(ids.begin(), ids.end(), id), ids.end()) << id;
+  const Result planar = run("check " + table + " --json");
+  EXPECT_EQ(planar.out.find("planarity"), std::string::npos);
 }
 
 }  // namespace

@@ -171,3 +171,68 @@ TEST(Check, JudgeMargins) {
 
 }  // namespace
 }  // namespace mmv
+
+namespace mmv {
+namespace {
+
+const CheckLine* findId(const CheckReport& r, const std::string& id) {
+  for (const auto& l : r.lines)
+    if (l.id == id) return &l;
+  return nullptr;
+}
+
+ArticleScene spatialOnTheTable(bool branches_out) {
+  ArticleScene s = std::get<ArticleScene>(loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml"));
+  s.article.model = ArticleModel::Spatial;
+  if (branches_out)
+    for (auto& l : s.article.links)
+      if (l.name == "link3a" || l.name == "link3b") l.tilt = (l.name == "link3a" ? 1 : -1) * 15 * M_PI / 180;
+  return s;
+}
+
+// The planarity lines (spatial model only): every out-of-plane mode in the band against
+// its nearest in-plane mode's half-power bandwidth, and the table program's out-of-plane
+// response at the tips against the limit, as the modes report computes it. The symmetric
+// article is decoupled; spreading link 3's branches out of the plane couples it, and a
+// limit below its ratio warns.
+TEST(Check, PlanarityLinesJudgeTheSpatialArticle) {
+  EXPECT_EQ(findId(runCheck(std::get<ArticleScene>(loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml"))),
+                   "planarity.modes"),
+            nullptr);
+  const CheckReport sym = runCheck(spatialOnTheTable(false));
+  const CheckLine* count = findId(sym, "planarity.modes");
+  ASSERT_NE(count, nullptr);
+  EXPECT_EQ(count->demand, 6);
+  const CheckLine* base = findId(sym, "planarity.base x");
+  ASSERT_NE(base, nullptr);
+  EXPECT_EQ(base->demand, 0.0);
+  EXPECT_EQ(base->verdict, Verdict::Pass);
+  int separations = 0;
+  for (const auto& l : sym.lines)
+    if (l.id.rfind("planarity.mode", 0) == 0 && l.id != "planarity.modes") {
+      ++separations;
+      EXPECT_EQ(l.verdict, l.capacity > l.demand ? Verdict::Pass : Verdict::Warn) << l.requirement;
+    }
+  EXPECT_EQ(separations, 6);
+
+  const ArticleScene tilted = spatialOnTheTable(true);
+  ModesOptions mo;
+  mo.with_shapes = false;
+  const ModesReport modes = runModes(tilted, mo);
+  ASSERT_TRUE(modes.planarity.has_value());
+  double worst = 0;
+  for (const auto& r : modes.planarity->responses)
+    if (r.excitation == "base x") worst = std::max(worst, r.ratio);
+  EXPECT_GT(worst, 1e-3);
+  CheckOptions tight;
+  tight.max_out_of_plane_ratio = 0.5 * worst;
+  const CheckReport r = runCheck(tilted, tight, &modes);
+  const CheckLine* coupled = findId(r, "planarity.base x");
+  ASSERT_NE(coupled, nullptr);
+  EXPECT_DOUBLE_EQ(coupled->demand, worst);
+  EXPECT_EQ(coupled->verdict, Verdict::Warn);
+  EXPECT_EQ(findId(runCheck(tilted, CheckOptions{}, &modes), "planarity.base x")->verdict, Verdict::Pass);
+}
+
+}  // namespace
+}  // namespace mmv
