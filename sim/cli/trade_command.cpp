@@ -41,7 +41,7 @@ void reportProgress(TradeProblem& problem, const TradeOptions& o, Progress& prog
 
 int runTradeCommand(const TradeArgs& args) {
   return guarded([&] {
-    const Scene scene = loadPlanarScene(args, "trade");
+    const Scene scene = loadScene(args);
     TradeOptions o;
     if (!args.integrators.empty()) o.integrators = args.integrators;
     if (!args.accuracies.empty()) o.accuracies = args.accuracies;
