@@ -145,7 +145,7 @@ struct PlaceSensorsArgs : SceneArgs {
 };
 
 struct RenderArgs : SceneArgs {
-  std::string view = "front";
+  std::string view;  ///< empty: front, or iso for the spatial article.
   std::string mode;          ///< "", "K" or "K1-K2".
   double scale = 0;          ///< m of drawing per unit modal coordinate; 0: automatic.
   std::string size = "1280x720";

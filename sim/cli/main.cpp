@@ -271,7 +271,7 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
 CLI::App* addRenderCommand(CLI::App& app, RenderArgs& r) {
   CLI::App* c = app.add_subcommand("render", "Off-screen frames: the article with its sensors, a mode, a contact sheet, a mode's cycle, a time run");
   addSceneOptions(c, r);
-  c->add_option("--view", r.view, "front, side, top, iso (framing the article), lab (the whole room of a scene with lab:), sensor:NAME (close up on a scene sensor), or a view the scene names (views:)")->capture_default_str();
+  c->add_option("--view", r.view, "front, side, top, iso (framing the article), lab (the whole room of a scene with lab:), sensor:NAME (close up on a scene sensor), or a view the scene names (views:); default: front (iso for model: spatial, which leaves the plane the front view looks along)");
   c->add_option("--mode", r.mode, "A mode (K) or a range (K1-K2: a contact sheet); none: the static equilibrium");
   c->add_option("--scale", r.scale, "Drawing metres per unit modal coordinate (default: the largest translation 10 % of the article)")
       ->check(positive());

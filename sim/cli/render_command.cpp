@@ -84,20 +84,25 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
 
 }  // namespace
 
-int runRenderCommand(const RenderArgs& args) {
+int runRenderCommand(const RenderArgs& given) {
   return guarded([&] {
+    RenderArgs args = given;  // the view resolved below
     if (args.out.empty()) throw UsageError("render: --out FILE is required (.png, .mp4 or .avi)");
     const std::string ext = extensionOf(args.out);
     render::FrameOptions check;
     parseSize(args.size, check);  // a bad size is refused before any work
     if (!args.history.empty()) {
       if (!args.mode.empty()) throw UsageError("render: --mode and --history draw different things; give one");
+      if (args.view.empty()) args.view = "front";
       renderHistory(args, ext);
       std::cerr << "mmvlab: wrote " << args.out << '\n';
       return kOk;
     }
     if (!args.traces.empty() || args.at >= 0) throw UsageError("render: --traces and --at apply to --history RUN_DIR");
-    const Scene loaded = loadPlanarScene(args, "render");
+    const Scene loaded = loadScene(args);
+    // The spatial article moves out of its plane, which the front view looks along.
+    const auto* article = std::get_if<ArticleScene>(&loaded);
+    if (args.view.empty()) args.view = article && article->article.model == ArticleModel::Spatial ? "iso" : "front";
     Drawings dr;
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
       const HamsasModes modes = analyseHamsas(h->isolator);

@@ -1,5 +1,7 @@
 #include "sim/io/article_drawing.hpp"
 
+#include "sim/modes/planarity.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,6 +9,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/io/facility_drawing.hpp"
 #include "sim/model/stations.hpp"
+#include "sim/modes/planarity.hpp"
 
 namespace mmv {
 namespace {
@@ -198,14 +201,16 @@ ModeFrames::ModeFrames(const ArticleScene& scene, const SolvedScene& solved, int
     const std::vector<StationPoint> pts = samples(model, l);
     rest_.push_back(positions(pts, eq));
     shape_.emplace_back();
+    const int rows = model.isSpatial() ? 3 : 2;  // the spatial model's shapes leave the plane
     for (const auto& p : pts) {
-      const Eigen::Vector2d u = p.translationJacobian(eq, dofs) * phi;
-      shape_.back().push_back(Eigen::Vector3d(u.x(), u.y(), 0));
+      const Eigen::VectorXd u = p.translationJacobian(eq, dofs, rows) * phi;
+      shape_.back().push_back(Eigen::Vector3d(u[0], u[1], rows == 3 ? u[2] : 0.0));
       peak = std::max(peak, u.norm());
     }
     extent += l.length;
   }
   dominant_ = dominantStrainLink(model, dofs, phi);
+  if (model.isSpatial()) dominant_ += ", " + classifyMode(model, dofs, phi).label;
   scale_ = scale > 0 ? scale : (peak > 0 ? 0.1 * extent / peak : 1.0);
   peak_ = scale_ * peak;
   addHardware(hardware_, scene, model, eq);

@@ -87,3 +87,34 @@ TEST(Drawing, OnlyWhatTheSceneNames) {
 
 }  // namespace
 }  // namespace mmv
+
+namespace mmv {
+namespace {
+
+/// The largest motion of the drawn items along world axis `axis` between the two
+/// extremes of mode `mode`'s cycle.
+double drawnSwing(const ArticleScene& scene, const SolvedScene& solved, int mode, int axis) {
+  const DrawList up = drawMode(scene, solved, mode, 1.0, 0.0), down = drawMode(scene, solved, mode, -1.0, 0.0);
+  EXPECT_EQ(up.items.size(), down.items.size());
+  double swing = 0;
+  for (std::size_t i = 0; i < std::min(up.items.size(), down.items.size()); ++i)
+    swing = std::max(swing, std::abs(up.items[i].pose.translation()[axis] - down.items[i].pose.translation()[axis]));
+  return swing;
+}
+
+// A spatial mode shape is drawn in three dimensions: link 1's out-of-plane mode (mode 2)
+// swings the drawn article along z and not in the plane's x; the first (in-plane) mode
+// the other way round; the title names the family.
+TEST(Drawing, SpatialModesLeaveThePlaneAsTheyBend) {
+  ArticleScene scene = loadDefaultScene();
+  scene.article.model = ArticleModel::Spatial;
+  const SolvedScene solved = solveScene(scene);
+  EXPECT_GT(drawnSwing(scene, solved, 1, 2), 0.05);
+  EXPECT_LT(drawnSwing(scene, solved, 1, 0), 1e-9);
+  EXPECT_GT(drawnSwing(scene, solved, 0, 0), 0.05);
+  EXPECT_LT(drawnSwing(scene, solved, 0, 2), 1e-9);
+  EXPECT_NE(drawMode(scene, solved, 1, 1.0, 0.0).title.find("out-of-plane"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mmv
