@@ -76,7 +76,8 @@ void writeArticleReviewRenders(OutputDir& out, const ArticleScene& scene, const 
   SimTK::State st = solved.equilibrium.state;
   solved.model->getSystem().realize(st, SimTK::Stage::Position);
   writeReviewRenders(out, s, scene.name, drawArticle(scene, *solved.model, st),
-                     [&](int m) { return ModeFrames(scene, solved, m - 1, 0.0).frame(1.0, true); }, "front");
+                     [&](int m) { return ModeFrames(scene, solved, m - 1, 0.0).frame(1.0, true); },
+                     scene.article.model == ArticleModel::Spatial ? "iso" : "front");  // the front view hides z
 }
 
 void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const HamsasModes& h, const PlacementStudy& s) {
@@ -92,7 +93,7 @@ void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const Ha
 
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
   return guarded([&] {
-    const Scene loaded = loadPlanarScene(args, "place-sensors");
+    const Scene loaded = loadScene(args);
     PlacementOptions o;
     if (!args.modes.empty()) o.modes = parseModeList(args.modes);
     o.below_hz = args.below_hz;

@@ -78,6 +78,9 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   }
   std::vector<Eigen::RowVectorXd> rows;
   std::vector<double> masses;
+  // The spatial model adds each station's normal axis (out of the plane).
+  const int directions = model.isSpatial() ? 3 : 2;
+  const char* axis_names[] = {"axial", "transverse", "normal"};
   for (const auto& link : scene.article.links) {
     const Material& mat = *scene.article.findMaterial(link.material);
     const double mass = mat.density * sectionArea(*scene.article.findSection(link.section)) * o.spacing_m;
@@ -87,14 +90,17 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
       std::string error;
       const std::optional<PointRef> ref = PointRef::resolve(model, scene.article, name, error);
       MMV_DEMAND(ref.has_value());
-      const Eigen::MatrixXd u = ref->translationJacobian(st, s.linearized.dofs) * shapes;  // 2 x k, world x and y
+      // directions x k: the world translations
+      const Eigen::MatrixXd u = ref->translationJacobian(st, s.linearized.dofs, directions) * shapes;
       const SimTK::Vec3 pos = ref->position(st);
-      for (int a = 0; a < 2; ++a) {
+      for (int a = 0; a < directions; ++a) {
         const SimTK::Vec3 e = ref->localAxis(st, a);
-        rows.push_back(e[0] * u.row(0) + e[1] * u.row(1));
+        Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(k);
+        for (int c = 0; c < directions; ++c) row += e[c] * u.row(c);
+        rows.push_back(row);
         masses.push_back(mass);
         if (!o.triaxial || a == 0)
-          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : a == 0 ? "axial" : "transverse", pos[0], pos[1], pos[2]});
+          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : axis_names[a], pos[0], pos[1], pos[2]});
         p.block.push_back(static_cast<int>(study.candidates.size()) - 1);
       }
     }
@@ -102,7 +108,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   p.phi.resize(rows.size(), k);
   for (std::size_t r = 0; r < rows.size(); ++r) p.phi.row(r) = rows[r];
   p.row_mass = Eigen::Map<Eigen::VectorXd>(masses.data(), masses.size());
-  choosePlacement(study, p, o, 2, "spacing " + std::to_string(o.spacing_m) + " m");
+  choosePlacement(study, p, o, directions, "spacing " + std::to_string(o.spacing_m) + " m");
   return study;
 }
 

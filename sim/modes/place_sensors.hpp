@@ -7,7 +7,8 @@
 /// (transverse) in the plane of motion. A uniaxial candidate is one direction at one
 /// station; a triaxial block is both in-plane directions at a station, kept or removed
 /// together (the planar model has no out-of-plane motion, so a block's third axis reads
-/// nothing and is left out). Each row's tributary mass is the link's mass per length
+/// nothing and is left out). The spatial model adds each station's normal axis (a
+/// triaxial block is then all three; PointRef::localAxis). Each row's tributary mass is the link's mass per length
 /// times the spacing. Shapes are the mass-normalised system modes about the static
 /// equilibrium (sim/modes/system_modes.hpp), evaluated at stations with the beam's
 /// shape functions (sim/model/stations.hpp), so the choice does not depend on the mesh.

@@ -2,6 +2,8 @@
 // are computed here independently.
 
 #include "sim/modes/sensor_placement.hpp"
+#include "sim/modes/place_sensors.hpp"
+#include "sim/scene/scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -139,6 +141,37 @@ TEST(SensorPlacement, RankingsKeepTheLargestScores) {
   const PlacementResult r = placeSensors(p, PlacementMethod::DrivingPointResidue, 2);
   EXPECT_EQ(r.fisher_determinant, 0.0);
   EXPECT_TRUE(std::isinf(r.fisher_condition));
+}
+
+}  // namespace
+}  // namespace mmv
+
+namespace mmv {
+namespace {
+
+// On the spatial article every station is a candidate along its normal too (3 per
+// station), and for the out-of-plane target modes effective independence can only pick
+// normal axes: the in-plane axes see nothing of them (the symmetric article does not
+// couple the families). A triaxial block is all three axes.
+TEST(SensorPlacement, SpatialCandidatesHaveANormalAxisThatOutOfPlaneModesNeed) {
+  ArticleScene planar = loadDefaultScene();
+  ArticleScene spatial = planar;
+  spatial.article.model = ArticleModel::Spatial;
+  PlacementOptions o;
+  o.modes = {1};
+  o.count = 1;
+  const std::size_t planar_candidates = runPlacement(planar, o).candidates.size();
+  o.modes = {2, 4, 6};  // link 1's and link 3's out-of-plane modes (3.05, 3.33, 3.45 Hz)
+  o.count = 3;
+  const PlacementStudy s = runPlacement(spatial, o);
+  EXPECT_EQ(s.candidates.size(), planar_candidates / 2 * 3);
+  ASSERT_EQ(s.result.kept_blocks.size(), 3u);
+  for (int b : s.result.kept_blocks) EXPECT_EQ(s.candidates[b].axis, "normal") << s.candidates[b].station;
+  o.triaxial = true;
+  o.count = 3;  // their in-plane axes see nothing of these modes: one block per mode
+  const PlacementStudy t = runPlacement(spatial, o);
+  EXPECT_EQ(t.candidates.size(), planar_candidates / 2);
+  EXPECT_EQ(t.candidates[0].axis, "triaxial");
 }
 
 }  // namespace
