@@ -42,22 +42,25 @@ ArticleScene sceneAt(const SweepContext& c, const std::vector<std::string>& extr
   Scene s = parseScene(c.scene_text, c.scene_source, sets);
   auto* a = std::get_if<ArticleScene>(&s);
   if (!a) throw SceneError(c.spec.source + ": scene " + c.scene_source + " is a HAM-SAS isolator; sweeps take article scenes");
-  requirePlanarModel(*a, "sweep");
   if (c.spec.segments > 0) overrideSegments(*a, c.spec.segments);
   return std::move(*a);
 }
 
-/// The stable vibration modes' shapes at the named points (2 rows per point), first `count`.
+/// The stable vibration modes' shapes at the named points (2 rows per point, 3 on the
+/// spatial model: ux, uy, uz), first `count`.
 Eigen::MatrixXd pointShapes(const ModesReport& r, int count, std::vector<double>* hz) {
   std::vector<const ModeInfo*> modes;
   for (const auto& m : r.modes)
     if (m.stable && !m.rigid_body && static_cast<int>(modes.size()) < count) modes.push_back(&m);
-  const Eigen::Index rows = modes.empty() ? 0 : 2 * static_cast<Eigen::Index>(modes.front()->shape.size());
+  const Eigen::Index d = r.spatial ? 3 : 2;
+  const Eigen::Index rows = modes.empty() ? 0 : d * static_cast<Eigen::Index>(modes.front()->shape.size());
   Eigen::MatrixXd s(rows, static_cast<Eigen::Index>(modes.size()));
   for (std::size_t k = 0; k < modes.size(); ++k) {
     for (std::size_t p = 0; p < modes[k]->shape.size(); ++p) {
-      s(2 * p, k) = modes[k]->shape[p].ux;
-      s(2 * p + 1, k) = modes[k]->shape[p].uy;
+      const PointMotion& u = modes[k]->shape[p];
+      s(d * p, k) = u.ux;
+      s(d * p + 1, k) = u.uy;
+      if (d == 3) s(d * p + 2, k) = u.uz;
     }
     if (hz) hz->push_back(modes[k]->frequency_hz);
   }
