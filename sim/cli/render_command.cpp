@@ -93,7 +93,6 @@ int runRenderCommand(const RenderArgs& given) {
     parseSize(args.size, check);  // a bad size is refused before any work
     if (!args.history.empty()) {
       if (!args.mode.empty()) throw UsageError("render: --mode and --history draw different things; give one");
-      if (args.view.empty()) args.view = "front";
       renderHistory(args, ext);
       std::cerr << "mmvlab: wrote " << args.out << '\n';
       return kOk;

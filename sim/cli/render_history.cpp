@@ -107,7 +107,10 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
   // One camera for the whole run: the presets frame where the article goes over it.
   Eigen::AlignedBox3d reach;
   for (int k = 0; k <= 24; ++k) reach.extend(drawAt(t0 + (t1 - t0) * k / 24).bounds());
-  const Camera camera = chooseCamera(args.view, drawAt(t0), run.isolator ? std::vector<CameraView>{} : run.scene.views, reach);
+  // A spatial run leaves the plane the front view looks along: iso unless a view is given.
+  const bool spatial = !run.isolator && run.scene.article.model == ArticleModel::Spatial;
+  const std::string view = !args.view.empty() ? args.view : spatial ? "iso" : "front";
+  const Camera camera = chooseCamera(view, drawAt(t0), run.isolator ? std::vector<CameraView>{} : run.scene.views, reach);
   auto image = [&](double t) {
     const cv::Mat article = render::renderFrame(drawAt(t), camera, frame);
     if (traces.empty()) return article;

@@ -122,7 +122,6 @@ RunDir readRunDir(const std::string& dir, const std::string& scene_path) {
   const std::string scene_file = scene_path.empty() ? dir + "/scene.yaml" : scene_path;
   Scene scene = scene_path.empty() ? parseScene(readText(scene_file), scene_file, r.overrides) : loadSceneFile(scene_file, r.overrides);
   if (auto* a = std::get_if<ArticleScene>(&scene)) {
-    requirePlanarModel(*a, "a run directory's replay");
     r.scene = std::move(*a);
     if (r.segments_override > 0) overrideSegments(r.scene, r.segments_override);
   } else {

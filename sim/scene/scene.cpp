@@ -24,7 +24,7 @@ const std::string& sceneSource(const Scene& scene) {
 void requirePlanarModel(const ArticleScene& scene, const std::string& what) {
   if (scene.article.model != ArticleModel::Spatial) return;
   throw UsageError(what + ": " + scene.positions.where("model") +
-                   ": model: spatial is analysed by every command but `correlate` and `render --history` so far; " + what +
+                   ": model: spatial is analysed by every command but `correlate` so far; " + what +
                    " works on the planar model (drop the key, or --set model=planar; docs/spatial.md)");
 }
 
