@@ -10,7 +10,7 @@ namespace mmv::cli {
 
 int runCheckCommand(const CheckArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "check", /*spatial_ok=*/true);
+    const ArticleScene scene = loadArticleScene(args, "check");
     CheckOptions opt;
     opt.required_margin_pct = args.margin;
     std::tie(opt.band_min_hz, opt.band_max_hz) = parseBand(args.band);

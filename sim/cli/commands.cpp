@@ -26,14 +26,8 @@ Scene loadScene(const SceneArgs& args) {
   return scene;
 }
 
-Scene loadPlanarScene(const SceneArgs& args, const std::string& command) {
+ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command) {
   Scene scene = loadScene(args);
-  if (const auto* a = std::get_if<ArticleScene>(&scene)) requirePlanarModel(*a, command);
-  return scene;
-}
-
-ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command, bool spatial_ok) {
-  Scene scene = spatial_ok ? loadScene(args) : loadPlanarScene(args, command);
   if (auto* a = std::get_if<ArticleScene>(&scene)) return std::move(*a);
   throw UsageError(command + ": " + sceneSource(scene) +
                    " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");

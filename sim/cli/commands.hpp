@@ -230,11 +230,8 @@ ReductionOptions reductionOptions(const LinearArgs& args);
 /// The scene (file or embedded default) with --segments and --no-gravity applied; the
 /// command dispatches on its kind once. UsageError for options that do not apply.
 Scene loadScene(const SceneArgs& args);
-/// loadScene for a command that handles only the planar article model (requirePlanarModel).
-Scene loadPlanarScene(const SceneArgs& args, const std::string& command);
-/// The article scene of `command` (a HAM-SAS scene is a UsageError); a spatial one only
-/// when `spatial_ok` (the command handles `model: spatial`), else requirePlanarModel refuses it.
-ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command, bool spatial_ok = false);
+/// The article scene of `command` (a HAM-SAS scene is a UsageError), planar or spatial.
+ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command);
 /// `names` if each is a named point or a station of `article`, else UsageError naming
 /// `option` and the reason.
 std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,

@@ -34,7 +34,7 @@ void macPng(const std::string& path, const SynthesisResult& s, const std::string
 
 int runCompareCommand(const CompareArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "compare", /*spatial_ok=*/true);
+    const ArticleScene scene = loadArticleScene(args, "compare");
     CompareOptions o;
     parseComponentArgs(args.bc, args.tip_mass, o.component);
     o.modes_per_link = args.component_modes;

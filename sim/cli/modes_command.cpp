@@ -90,7 +90,7 @@ int runModesCommand(const ModesArgs& args) {
 
 int runConvergeCommand(const ConvergeArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "converge", /*spatial_ok=*/true);
+    const ArticleScene scene = loadArticleScene(args, "converge");
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);

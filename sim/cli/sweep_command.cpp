@@ -123,7 +123,7 @@ void plots(OutputDir& out, const SweepResult& r, const std::string& scene_name) 
 
 int runSweepCommand(const SweepArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "sweep-config", /*spatial_ok=*/true);
+    const ArticleScene scene = loadArticleScene(args, "sweep-config");
     SweepOptions o;
     if (args.grids.empty() || args.grids.size() > 2) throw UsageError("--grid: give one or two grids");
     for (const auto& g : args.grids) o.axes.push_back(parseGrid(g, scene));

@@ -163,6 +163,7 @@ void correlateModes(const ArticleScene& scene, const CorrelateOptions& o, Correl
       for (std::size_t k = 0; k < at.size(); ++k) {
         b[3 * k] = m.at_points[at[k]].ux;
         b[3 * k + 1] = m.at_points[at[k]].uy;
+        b[3 * k + 2] = m.at_points[at[k]].uz;  // 0 on the planar model
       }
       r.mac(i, j) = m.rigid_body || !m.stable ? 0.0 : modalAssurance(a, b);
     }
@@ -192,9 +193,10 @@ struct FrfMapping {
   std::string skipped;
 };
 
-FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes) {
+FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes, bool spatial) {
   FrfMapping m;
-  const char* axes = "xy";
+  const char* axes = "xyz";
+  const int directions = spatial ? 3 : 2;  // the spatial model has z
   auto station = [&](int node, const char* what) -> std::string {
     const NodePairing* n = findNode(nodes, node);
     if (!n) m.skipped = strf("its %s node %d is not defined in the file", what, node);
@@ -207,8 +209,9 @@ FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes) {
     return m;
   }
   const int rd = std::abs(f.response_direction), fd = std::abs(f.reference_direction);
-  if (rd < 1 || rd > 2 || fd < 1 || fd > 2) {
-    m.skipped = strf("direction %d/%d: z and rotations are outside the planar model", f.response_direction, f.reference_direction);
+  if (rd < 1 || rd > directions || fd < 1 || fd > directions) {
+    m.skipped = strf("direction %d/%d: %s are outside the %s model", f.response_direction, f.reference_direction,
+                     spatial ? "rotations" : "z and rotations", spatial ? "spatial" : "planar");
     return m;
   }
   m.sign = (f.response_direction < 0 ? -1 : 1) * (f.reference_direction < 0 ? -1 : 1);
@@ -231,7 +234,7 @@ FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes) {
   const bool absolute = base && kind == OutputKind::Acceleration;
   m.output = OutputSpec{strf("%s:%c:%s", out_point.c_str(), axes[rd - 1], kind_name), kind, out_point, rd - 1, absolute};
   if (base) {
-    m.input = InputSpec{fd == 1 ? "table_x" : "table_y", InputKind::BaseAcceleration, "", fd - 1};
+    m.input = InputSpec{std::string("table_") + axes[fd - 1], InputKind::BaseAcceleration, "", fd - 1};
   } else {
     const std::string in_point = station(f.reference_node, "reference");
     if (!m.skipped.empty()) return {std::nullopt, std::nullopt, 1, m.skipped};
@@ -240,12 +243,33 @@ FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes) {
   return m;
 }
 
+/// A function the model predicts as zero (below 1e-9 of its largest: a pair the
+/// symmetric spatial article decouples) has no FRAC: what the test shows there is an
+/// asymmetry the model does not have, and the note says how large it is.
+void markDecoupledFrfs(std::vector<FrfCorrelation>& frfs) {
+  auto largest = [](const std::vector<std::complex<double>>& v) {
+    double m = 0;
+    for (const auto& x : v) m = std::max(m, std::abs(x));
+    return m;
+  };
+  double model_max = 0, test_max = 0;
+  for (const auto& c : frfs) model_max = std::max(model_max, largest(c.model)), test_max = std::max(test_max, largest(c.test));
+  for (auto& c : frfs) {
+    if (!c.skipped.empty() || c.model.empty() || largest(c.model) >= 1e-9 * model_max) continue;
+    c.skipped = strf("the model predicts no response here (below 1e-9 of its largest function: a decoupled pair); the "
+                     "test's is %.3g of the test's largest",
+                     test_max > 0 ? largest(c.test) / test_max : 0.0);
+    c.frac = 0;
+    c.test_peak_hz = c.model_peak_hz = 0;
+  }
+}
+
 void correlateFrfs(const ArticleScene& scene, const MeasuredSet& test, const CorrelateOptions& o, CorrelationResult& r) {
   std::vector<FrfMapping> maps;
   std::vector<InputSpec> inputs;
   std::vector<OutputSpec> outputs;
   for (const auto& f : test.frfs) {
-    maps.push_back(mapFrf(f, r.nodes));
+    maps.push_back(mapFrf(f, r.nodes, scene.article.model == ArticleModel::Spatial));
     const FrfMapping& m = maps.back();
     if (!m.skipped.empty()) continue;
     if (std::none_of(inputs.begin(), inputs.end(), [&](const InputSpec& i) { return i.name == m.input->name; }))
@@ -296,6 +320,7 @@ void correlateFrfs(const ArticleScene& scene, const MeasuredSet& test, const Cor
     }
     r.frfs.push_back(std::move(c));
   }
+  markDecoupledFrfs(r.frfs);
 }
 
 }  // namespace

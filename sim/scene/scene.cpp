@@ -23,9 +23,8 @@ const std::string& sceneSource(const Scene& scene) {
 
 void requirePlanarModel(const ArticleScene& scene, const std::string& what) {
   if (scene.article.model != ArticleModel::Spatial) return;
-  throw UsageError(what + ": " + scene.positions.where("model") +
-                   ": model: spatial is analysed by every command but `correlate` so far; " + what +
-                   " works on the planar model (drop the key, or --set model=planar; docs/spatial.md)");
+  throw UsageError(what + ": " + scene.positions.where("model") + ": model: spatial is not taken by " + what +
+                   " yet; it works on the planar model (drop the key, or --set model=planar; docs/spatial.md)");
 }
 
 void overrideSegments(ArticleScene& scene, int n) {
