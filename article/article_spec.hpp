@@ -150,6 +150,9 @@ struct BaseSpec {
   double direction = 0;  ///< rad, world direction of a base joint's zero angle (from +x, ccw).
   double table_mass = 100;  ///< kg, the table's moving mass (BaseType::Table).
   std::optional<TableMotion> motion;  ///< BaseType::Table: the program; none = at rest.
+  /// BaseType::Table, spatial model: the program across the plane of motion (world z:
+  /// the report's table y axis), on a stage riding the x table; none = no such stage.
+  std::optional<TableMotion> motion_z;
   std::optional<GimbalSpec> gimbal;   ///< built only when the scene names one.
 };
 

@@ -91,6 +91,7 @@ class Builder {
       if (base.motion) prescribeTableProgram(table, makeTableProgram(*base.motion));
       // Held in statics and modes, so what is welded to it counts as fixed there.
       ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
+      if (base.motion_z) ground = buildTableZStage(*base.motion_z, table.getMobilizedBodyIndex(), part, ground);
     }
     if (base.gimbal) ground = buildGimbal(*base.gimbal, ground);
     // Breadth-first from the base so that every parent exists before its children.
@@ -237,6 +238,27 @@ class Builder {
       model_.addBody(w.getMobilizedBodyIndex(), tip_part, false);
     }
     tips_[l.name] = Frame{prev, X_tip, false};
+  }
+
+  /// The spatial model's stage across the plane (world z, the report's table y axis) on
+  /// the x table, massless (its force column is what the article demands), held in
+  /// statics and modes like the table and driven by its program in time runs.
+  Frame buildTableZStage(const TableMotion& motion, SimTK::MobilizedBodyIndex table, int part, const Frame& on_table) {
+    const SimTK::Rotation x_to_z(-SimTK::Pi / 2, SimTK::YAxis);  // the slider's x along world z
+    SimTK::MobilizedBody::Slider stage(model_.updMatter().updMobilizedBody(table), SimTK::Transform(x_to_z),
+                                       SimTK::Body::Massless(), SimTK::Transform(x_to_z));
+    Coordinate c;
+    c.name = "table.z";
+    c.kind = CoordinateKind::Joint;
+    c.motion = CoordinateMotion::Translation;
+    c.axis = HingeAxis::OutOfPlane;  // an excitation out of the plane (the planarity report leaves it out)
+    c.part = "table";
+    c.mobod = stage.getMobilizedBodyIndex();
+    c.held = true;
+    model_.addCoordinate(c);
+    model_.addBody(stage.getMobilizedBodyIndex(), part, true);
+    prescribeTableProgram(stage, makeTableProgram(motion));
+    return Frame{stage.getMobilizedBodyIndex(), on_table.X_BF, true};
   }
 
   /// A floating root (component modes, free-free): rotation and both translations; in

@@ -88,7 +88,8 @@ Excitations excitations(const Model& model, const SimTK::State& s, const std::ve
   }
   const auto& coords = model.getCoordinates();
   for (std::size_t c = 0; c < coords.size(); ++c) {
-    if (!coords[c].held || coords[c].kind != CoordinateKind::Joint) continue;
+    // In-plane excitations only: the table's stage across the plane drives out of it by design.
+    if (!coords[c].held || coords[c].kind != CoordinateKind::Joint || coords[c].axis != HingeAxis::InPlane) continue;
     SimTK::Vector unit(s.getNU(), 0.0), column;
     unit[model.getUIndex(static_cast<int>(c))] = 1;
     matter.multiplyByM(s, unit, column);

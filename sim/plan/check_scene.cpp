@@ -39,15 +39,26 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
                                   f.size(), table.bandwidth_hz), 0);
   if (modes.verdict == Verdict::Fail) modes.verdict = Verdict::Warn;
   out.push_back(modes);
-  if (!scene.article.base.motion) return;
-  const auto program = makeTableProgram(*scene.article.base.motion);
-  const facility::ProgramCheck pc = facility::checkProgram(*program, table, scene.simulation.duration);
-  out.push_back(makeLine("table", "table.stroke", "stroke of the program", pc.peak_displacement, table.stroke, "m",
-                         program->describe() + strf(", peak acceleration %.3g m/s^2", pc.peak_acceleration), margin));
-  CheckLine bw = makeLine("table", "table.program_bandwidth", "program's highest frequency within the bandwidth", program->maxFrequencyHz(), table.bandwidth_hz,
-                          "Hz", "above it the servo loop attenuates the motion", 0);
-  if (bw.verdict == Verdict::Fail) bw.verdict = Verdict::Warn;
-  out.push_back(bw);
+  // Each axis's program (the y axis across the plane: world z, spatial model only) against
+  // the table's stroke and servo bandwidth.
+  struct Axis {
+    const std::optional<TableMotion>* motion;
+    const char *id, *program;
+  };
+  for (const Axis& axis : {Axis{&scene.article.base.motion, "", "program"},
+                           Axis{&scene.article.base.motion_z, "_z", "y-axis program (across the plane)"}}) {
+    if (!*axis.motion) continue;
+    const auto program = makeTableProgram(**axis.motion);
+    const facility::ProgramCheck pc = facility::checkProgram(*program, table, scene.simulation.duration);
+    out.push_back(makeLine("table", strf("table.stroke%s", axis.id), strf("stroke of the %s", axis.program), pc.peak_displacement,
+                           table.stroke, "m", program->describe() + strf(", peak acceleration %.3g m/s^2", pc.peak_acceleration),
+                           margin));
+    CheckLine bw = makeLine("table", strf("table.program%s_bandwidth", axis.id),
+                            strf("%s's highest frequency within the bandwidth", axis.program), program->maxFrequencyHz(),
+                            table.bandwidth_hz, "Hz", "above it the servo loop attenuates the motion", 0);
+    if (bw.verdict == Verdict::Fail) bw.verdict = Verdict::Warn;
+    out.push_back(bw);
+  }
 }
 
 void addModeLines(const CheckInputs& in, std::vector<CheckLine>& out) {

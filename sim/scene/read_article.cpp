@@ -54,7 +54,12 @@ class SceneParser {
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
     if (top.count("views")) readViews(top.at("views"), scene);
     if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));
-    if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration);
+    if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration, motion_mark_, "base.motion");
+    if (a.base.motion_z) {
+      checkStroke(*a.base.motion_z, scene.simulation.duration, *motion_z_mark_, "base.motion_z");
+      if (a.model != ArticleModel::Spatial)
+        r_.fail(*motion_z_mark_, "base.motion_z moves the table across the plane of motion: it needs model: spatial");
+    }
     if (out_of_plane_mark_ && a.model != ArticleModel::Spatial)
       r_.fail(out_of_plane_mark_->mark, out_of_plane_mark_->path + ": branches out of the plane need model: spatial");
     return scene;
@@ -97,9 +102,9 @@ class SceneParser {
   }
 
   /// The table program must stay within the table's stroke over the scene's run.
-  void checkStroke(const TableMotion& motion, double duration) {
+  void checkStroke(const TableMotion& motion, double duration, const YAML::Mark& mark, const std::string& key) {
     const facility::ProgramCheck check = facility::checkProgram(*makeTableProgram(motion), {}, duration);
-    if (!check.within_stroke) r_.fail(motion_mark_, "base.motion: " + check.messages.front());
+    if (!check.within_stroke) r_.fail(mark, key + ": " + check.messages.front());
   }
 
   void readMaterials(const YAML::Node& n, ArticleSpec& a) {
@@ -182,18 +187,22 @@ class SceneParser {
   }
 
   void readBase(const YAML::Node& n, BaseSpec& b) {
-    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg", "table_mass", "motion", "gimbal"});
+    auto m = r_.mapping(n, "base", {"type", "position", "direction_deg", "table_mass", "motion", "motion_z", "gimbal"});
     if (m.count("type")) {
       const std::string t = r_.text(m.at("type"), "base.type");
       if (t == "table") b.type = BaseType::Table;
       else if (t != "fixed") r_.fail(m.at("type").Mark(), "base.type: unknown base type '" + t + "' (known: fixed, table)");
     }
-    for (const char* k : {"table_mass", "motion"})
+    for (const char* k : {"table_mass", "motion", "motion_z"})
       if (m.count(k) && b.type != BaseType::Table) r_.fail(m.at(k).Mark(), std::string("base.") + k + " applies only with type: table");
     if (m.count("table_mass")) b.table_mass = r_.positive(m.at("table_mass"), "base.table_mass", " kg");
     if (m.count("motion")) {
       b.motion = readTableMotion(r_, m.at("motion"), "base.motion", {});
       motion_mark_ = m.at("motion").Mark();
+    }
+    if (m.count("motion_z")) {
+      b.motion_z = readTableMotion(r_, m.at("motion_z"), "base.motion_z", {});
+      motion_z_mark_ = m.at("motion_z").Mark();
     }
     if (m.count("position")) {
       b.position = r_.vec3(m.at("position"), "base.position");
@@ -438,6 +447,7 @@ class SceneParser {
   std::set<std::string> names_;
   std::map<std::string, Located> joint_marks_, joint_parent_marks_, link_marks_;
   YAML::Mark motion_mark_;
+  std::optional<YAML::Mark> motion_z_mark_;
   bool out_of_plane_ = false;                  ///< the link being read spreads its branches out of the plane.
   std::optional<Located> out_of_plane_mark_;   ///< the first such `branches.plane: out`.
 };

@@ -73,7 +73,7 @@ class ArticleRecorder {
 
   const Model& model_;
   SimulationResult& r_;
-  int table_ = -1;
+  int table_ = -1, table_z_ = -1;
   std::vector<int> joints_;
   std::vector<const NamedPoint*> tips_;
   std::vector<PointRef> stations_;  ///< scored stations, after the tips
@@ -82,11 +82,17 @@ class ArticleRecorder {
 
 void ArticleRecorder::addTableColumns() {
   auto& cols = r_.record.columns;
-  for (int i = 0; i < model_.getNumCoordinates(); ++i)
+  for (int i = 0; i < model_.getNumCoordinates(); ++i) {
     if (model_.getCoordinates()[i].name == "table.x") table_ = i;
+    if (model_.getCoordinates()[i].name == "table.z") table_z_ = i;
+  }
   if (table_ < 0) return;
   cols.push_back("table_x_m");
   cols.push_back("table_force_n");
+  if (table_z_ >= 0) {  // the stage across the plane (spatial model)
+    cols.push_back("table_z_m");
+    cols.push_back("table_z_force_n");
+  }
   const SimTK::State& ref = model_.getReferenceState();
   const auto& matter = model_.getMatter();
   const double table_mass = matter.getMobilizedBody(model_.getCoordinates()[table_].mobod).getBodyMass(ref);
@@ -183,6 +189,12 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
     row.push_back(st.getQ()[model_.getQIndex(table_)]);
     row.push_back(force);
     r_.peak_table_force_n = std::max(r_.peak_table_force_n, std::abs(force));
+    if (table_z_ >= 0) {
+      const double force_z = -motion_forces[model_.getUIndex(table_z_)];
+      row.push_back(st.getQ()[model_.getQIndex(table_z_)]);
+      row.push_back(force_z);
+      r_.peak_table_force_n = std::max(r_.peak_table_force_n, std::abs(force_z));  // either axis's actuator
+    }
   }
   for (std::size_t j = 0; j < joints_.size(); ++j) {
     const int i = joints_[j];

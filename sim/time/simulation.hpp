@@ -90,7 +90,8 @@ struct SimulationResult {
   /// equations; SUNDIALS' ODE methods do not, so their drift grows.
   double constraint_drift_m = 0;
   /// With a table: the peak force its actuator must give along x (the table's own
-  /// moving mass included; column `table_force_n`), and the weight it carries
+  /// moving mass included; column `table_force_n`), or along the y-axis stage across
+  /// the plane when it is larger (`table_z_force_n`), and the weight it carries
   /// (everything but the table: article, torquers, gimbal), against its payload.
   double peak_table_force_n = 0;
   double carried_weight_n = 0;

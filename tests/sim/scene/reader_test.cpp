@@ -202,7 +202,18 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:7:8: model: spatial bends link 'l1' out of its plane: sections.bar needs second_moment_out and "
                 "torsion_constant (m^4)"},
         BadCase{"branches out of the plane on the planar model", "angle_deg: 20}", "angle_deg: 20, plane: out}",
-                "s.yaml:27:48: links[1].branches.plane: branches out of the plane need model: spatial"}),
+                "s.yaml:27:48: links[1].branches.plane: branches out of the plane need model: spatial"},
+        BadCase{"an accelerometer along the normal on the planar model", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nsensors:\n  - {name: az, type: accelerometer, point: l1.tip, axis: normal}",
+                "s.yaml:4:58: sensors[0].axis: an accelerometer along the normal axis reads motion out of the plane: it "
+                "needs model: spatial"},
+        BadCase{"a gyro about the link on the planar model", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nsensors:\n  - {name: g, type: rate_gyro, point: l1.tip, axis: axial}",
+                "s.yaml:4:53: sensors[0].axis: a rate gyro about the axial axis reads motion out of the plane: it needs "
+                "model: spatial"},
+        BadCase{"the table's y axis on the planar model", "gravity: [0, -9.81, 0]",
+                "gravity: [0, -9.81, 0]\nbase: {type: table, motion_z: {type: sine, amplitude: 0.001, frequency_hz: 2}}",
+                "s.yaml:3:31: base.motion_z moves the table across the plane of motion: it needs model: spatial"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.what;
       for (char& ch : name)

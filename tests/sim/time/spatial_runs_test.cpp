@@ -2,7 +2,8 @@
 // triaxial accelerometer and of a rate gyro, read in a run that leaves the plane, against
 // an independent rigid-body estimate passed through the same instrument model (its band
 // filters, resolution and range), and the planar model's readings where the spatial
-// model is held in the plane. Trade: the error and the motion scored include z.
+// model is held in the plane. Trade: the error and the motion scored include z. The
+// table's y axis: a stage across the plane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -140,6 +141,43 @@ TEST(SpatialTrade, TheScoredMotionIncludesTheSwingOutOfThePlane) {
   EXPECT_NEAR(t.reference_amplitude_m, 2 * L * std::sin(10 * M_PI / 180), 1e-3);
   ASSERT_EQ(t.runs.size(), 1u);
   EXPECT_TRUE(t.runs[0].ok) << t.runs[0].failure;
+}
+
+}  // namespace
+}  // namespace mmv
+
+namespace mmv {
+namespace {
+
+// The table's y axis (base.motion_z, across the plane): a stage on the x table driven by
+// its program. A rigid spatial article on it moves with it, and the stage's actuator
+// force is the article's mass times the program's acceleration (the stage is massless).
+TEST(SpatialTable, TheYAxisStageCarriesTheArticleAcrossThePlane) {
+  const double m_link = 3.0, tip = 0.5, A = 0.004, f = 2.0;
+  ArticleScene s = testing::spatialCantilever(testing::explicitSection(1e-4, 2e-8, 2e-8, 4e-8), m_link / 1e-4, 7e10,
+                                              2.7e10, 1.0, 2, tip);
+  s.article.links[0].rigid = true;
+  s.gravity = {0, -9.81, 0};
+  s.article.base.type = BaseType::Table;
+  s.article.base.motion_z = TableMotion::sine(A, f);
+  s.simulation.duration = 1.0;
+  s.simulation.sample_rate_hz = 200;
+  s.simulation.integrator = "rk_merson";
+  s.simulation.accuracy = 1e-8;
+  const SimulationResult r = simulate(s);
+  const int z = column(r.record, "table_z_m"), fz = column(r.record, "table_z_force_n"),
+            tip_z = column(r.record, "link1.tip_z_m"), tip_y = column(r.record, "link1.tip_y_m");
+  const double w = 2 * M_PI * f, mass = m_link + tip, peak_force = mass * A * w * w;
+  double worst_z = 0, worst_force = 0, worst_tip = 0;
+  for (const auto& row : r.record.rows) {
+    worst_z = std::max(worst_z, std::abs(row[z] - A * std::sin(w * row[0])));
+    worst_force = std::max(worst_force, std::abs(row[fz] + mass * A * w * w * std::sin(w * row[0])));
+    worst_tip = std::max({worst_tip, std::abs(row[tip_z] - row[z]), std::abs(row[tip_y] - r.record.rows[0][tip_y])});
+  }
+  EXPECT_LT(worst_z, 1e-12);
+  EXPECT_LT(worst_force, 1e-6 * peak_force) << "peak " << peak_force << " N";
+  EXPECT_LT(worst_tip, 1e-9);
+  EXPECT_NEAR(r.peak_table_force_n, peak_force, 0.01 * peak_force);  // the x table, at rest, needs none
 }
 
 }  // namespace
