@@ -166,7 +166,6 @@ void respond(const LinearArgs& args, const std::vector<double>& grid, Analysis& 
 Analysis analyse(LinearArgs args, ArticleScene scene, const std::vector<double>& grid) {
   Analysis a;
   if (args.target_error > 0) {
-    requirePlanarModel(scene, "--target-error");
     if (args.segments > 0) throw UsageError("--target-error chooses the segments per link: drop --segments");
     if (!args.band.empty()) throw UsageError("--target-error chooses the modes kept: drop --band");
     const ModesSolve all = solveSceneModes(scene, {}, 0);

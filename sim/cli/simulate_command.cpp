@@ -160,8 +160,6 @@ int runSimulateCommand(const SimulateArgs& args) {
       return report(args, h->name, h->source, r, {}, 0.0, out.get(), h->text, h->simulation, target);
     }
     ArticleScene& scene = std::get<ArticleScene>(loaded);
-    if (scene.article.model == ArticleModel::Spatial && args.target_error > 0)
-      requirePlanarModel(scene, "simulate --target-error");
     applyOverrides(args, scene.simulation);
     std::vector<std::string> warnings = checkTableProgram(scene);
     for (const auto& w : warnings) std::cerr << "mmvlab: warning: " << w << '\n';

@@ -21,12 +21,6 @@ const std::string& sceneSource(const Scene& scene) {
   return std::visit([](const auto& s) -> const std::string& { return s.source; }, scene);
 }
 
-void requirePlanarModel(const ArticleScene& scene, const std::string& what) {
-  if (scene.article.model != ArticleModel::Spatial) return;
-  throw UsageError(what + ": " + scene.positions.where("model") + ": model: spatial is not taken by " + what +
-                   " yet; it works on the planar model (drop the key, or --set model=planar; docs/spatial.md)");
-}
-
 void overrideSegments(ArticleScene& scene, int n) {
   MMV_DEMAND(n >= 1 && n <= limits::kMaxSegments);  // the CLI checks --segments against the same range
   for (auto& l : scene.article.links)

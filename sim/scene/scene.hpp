@@ -118,9 +118,6 @@ using Scene = std::variant<ArticleScene, HamsasScene>;
 const std::string& sceneName(const Scene& scene);
 const std::string& sceneSource(const Scene& scene);
 
-/// Throws UsageError naming `what` (a command) and the scene's `model` key when the
-/// scene asks for the spatial model, which `what` does not handle yet.
-void requirePlanarModel(const ArticleScene& scene, const std::string& what);
 
 /// Parses scene YAML text; `source_name` is used in error messages. `sets` are
 /// `--set KEY=VALUE` overrides (KEY a dotted path: mapping keys, list items by name,
