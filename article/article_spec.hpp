@@ -23,6 +23,9 @@ namespace mmv {
 struct LumpedMass {
   double mass = 0;            ///< kg, >= 0.
   double rotary_inertia = 0;  ///< kg*m^2 about z through the mass, >= 0.
+  /// m, where the mass sits across the link's section at its point: along the in-plane
+  /// normal (y) and the plane's normal (z, spatial model only); {0, 0} on the axis.
+  std::array<double, 2> offset{0, 0};
 };
 
 /// How the joint's torquer holds the commanded angle during statics and modes.

@@ -54,7 +54,9 @@ SimTK::Transform mountFrame(const LinkSpec& l) {
 /// A lumped mass at the body origin with rotary inertia J about z (disc-like: J/2 in x, y).
 SimTK::Body::Rigid lumpedBody(const LumpedMass& m) {
   const double j = m.rotary_inertia;
-  return SimTK::Body::Rigid(SimTK::MassProperties(m.mass, SimTK::Vec3(0), SimTK::Inertia(0.5 * j, 0.5 * j, j)));
+  const SimTK::Vec3 c(0, m.offset[0], m.offset[1]);  // across the section, in the link's tip frame
+  const SimTK::Inertia about_c(0.5 * j, 0.5 * j, j);  // a disk about the plane's normal
+  return SimTK::Body::Rigid(SimTK::MassProperties(m.mass, c, about_c.shiftFromMassCenter(c, m.mass)));
 }
 
 struct Frame {  // a place to attach things: a body and a frame on it

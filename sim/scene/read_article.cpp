@@ -12,12 +12,22 @@ namespace mmv::scene_detail {
 
 namespace {
 
-LumpedMass readLumpedMass(const YamlReader& r, const YAML::Node& n, const std::string& path) {
-  auto m = r.mapping(n, path, {"mass", "rotary_inertia"});
+/// {mass, rotary_inertia, offset: [y, z]}; `offset_z` gets the offset's position when its
+/// z is not 0 (the spatial model's, checked once the model is known).
+LumpedMass readLumpedMass(const YamlReader& r, const YAML::Node& n, const std::string& path,
+                          std::optional<Located>& offset_z) {
+  auto m = r.mapping(n, path, {"mass", "rotary_inertia", "offset"});
   LumpedMass out;
   out.mass = r.positive(r.require(m, n, path, "mass"), path + ".mass", " kg");
   if (m.count("rotary_inertia"))
     out.rotary_inertia = r.nonNegative(m.at("rotary_inertia"), path + ".rotary_inertia", " kg*m^2");
+  if (m.count("offset")) {
+    const YAML::Node& o = m.at("offset");
+    if (!o.IsSequence() || o.size() != 2)
+      r.fail(o.Mark(), path + ".offset must be [y, z] in m, across the link's section (got " + YamlReader::show(o) + ")");
+    out.offset = {r.number(o[0], path + ".offset[0]"), r.number(o[1], path + ".offset[1]")};
+    if (out.offset[1] != 0 && !offset_z) offset_z = Located{o.Mark(), path + ".offset"};
+  }
   return out;
 }
 
@@ -62,6 +72,8 @@ class SceneParser {
     }
     if (out_of_plane_mark_ && a.model != ArticleModel::Spatial)
       r_.fail(out_of_plane_mark_->mark, out_of_plane_mark_->path + ": branches out of the plane need model: spatial");
+    if (offset_z_mark_ && a.model != ArticleModel::Spatial)
+      r_.fail(offset_z_mark_->mark, offset_z_mark_->path + ": a mass offset out of the plane needs model: spatial");
     return scene;
   }
 
@@ -268,7 +280,7 @@ class SceneParser {
         r_.fail(m.at("servo_stiffness").Mark(), path + ".servo_stiffness applies only with hold: servo");
       }
       checkJointRange(m, path, j);
-      if (m.count("torquer")) j.torquer = readLumpedMass(r_, m.at("torquer"), path + ".torquer");
+      if (m.count("torquer")) j.torquer = readLumpedMass(r_, m.at("torquer"), path + ".torquer", offset_z_mark_);
       if (m.count("torque_capacity"))
         j.torque_capacity = r_.positive(m.at("torque_capacity"), path + ".torque_capacity", " N*m");
       if (m.count("slew")) {
@@ -322,7 +334,7 @@ class SceneParser {
         l.segments = static_cast<int>(v);
       }
       if (m.count("mount_angle_deg")) l.mount_angle = r_.number(m.at("mount_angle_deg"), path + ".mount_angle_deg") * kDegToRad;
-      if (m.count("tip_mass")) l.tip_mass = readLumpedMass(r_, m.at("tip_mass"), path + ".tip_mass");
+      if (m.count("tip_mass")) l.tip_mass = readLumpedMass(r_, m.at("tip_mass"), path + ".tip_mass", offset_z_mark_);
 
       int count = 1;
       double spread = 0;
@@ -450,6 +462,7 @@ class SceneParser {
   std::optional<YAML::Mark> motion_z_mark_;
   bool out_of_plane_ = false;                  ///< the link being read spreads its branches out of the plane.
   std::optional<Located> out_of_plane_mark_;   ///< the first such `branches.plane: out`.
+  std::optional<Located> offset_z_mark_;       ///< the first lumped mass offset out of the plane.
 };
 
 }  // namespace

@@ -369,3 +369,27 @@ TEST(Spatial, BranchAsymmetrySplitsModesAsPerturbationPredicts) {
 
 }  // namespace
 }  // namespace mmv
+
+namespace mmv {
+namespace {
+
+// A mass offset across the section (tip_mass.offset: [y, z]): hung at e out of the
+// plane at a horizontal cantilever's tip, its weight twists the link by m g e L / (G J)
+// (the hinges' torsion compliances add up to L / (G J)); on the axis it twists nothing.
+TEST(Spatial, AnOffsetTipMassTwistsTheLinkByItsWeightsMoment) {
+  const double L = 1.2, G = 2.6e10, J = 4e-9, m = 0.8, e = 0.03, g = 9.81;
+  const Section sec = testing::explicitSection(1e-4, 1e-8, 1e-8, J);
+  for (const double offset : {e, 0.0}) {
+    ArticleScene s = testing::spatialCantilever(sec, 2700, 7e11, G, L, 8, m);
+    s.gravity = {0, -g, 0};
+    s.article.links[0].tip_mass->offset = {0, offset};
+    const SolvedScene solved = solveScene(s);
+    double twist = 0;
+    for (std::size_t c = 0; c < solved.model->getCoordinates().size(); ++c)
+      if (solved.model->getCoordinates()[c].axis == HingeAxis::Torsion) twist += solved.equilibrium.q[c];
+    EXPECT_NEAR(std::abs(twist), m * g * offset * L / (G * J), 1e-3 * m * g * e * L / (G * J)) << "offset " << offset;
+  }
+}
+
+}  // namespace
+}  // namespace mmv

@@ -211,6 +211,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "gravity: [0, -9.81, 0]\nsensors:\n  - {name: g, type: rate_gyro, point: l1.tip, axis: axial}",
                 "s.yaml:4:53: sensors[0].axis: a rate gyro about the axial axis reads motion out of the plane: it needs "
                 "model: spatial"},
+        BadCase{"a mass offset out of the plane on the planar model", "    segments: 4\n",
+                "    segments: 4\n    tip_mass: {mass: 0.1, offset: [0, 0.01]}\n",
+                "s.yaml:21:35: links[0].tip_mass.offset: a mass offset out of the plane needs model: spatial"},
+        BadCase{"a mass offset that is not [y, z]", "    segments: 4\n",
+                "    segments: 4\n    tip_mass: {mass: 0.1, offset: [0, 0.01, 0]}\n",
+                "s.yaml:21:35: links[0].tip_mass.offset must be [y, z] in m, across the link's section (got a list)"},
         BadCase{"the table's y axis on the planar model", "gravity: [0, -9.81, 0]",
                 "gravity: [0, -9.81, 0]\nbase: {type: table, motion_z: {type: sine, amplitude: 0.001, frequency_hz: 2}}",
                 "s.yaml:3:31: base.motion_z moves the table across the plane of motion: it needs model: spatial"}),
