@@ -76,6 +76,22 @@ TEST(Statics, HoldingTorqueOfRigidLink) {
   }
 }
 
+// A tip mass offset across the section (tip_mass.offset [y, 0], the planar model): on a
+// rigid link held at theta it adds m_tip g (L cos(theta) - y sin(theta)), its weight's
+// moment about the joint from L along the link and y across it.
+TEST(Statics, AnOffsetTipMassAddsItsWeightsMoment) {
+  const Beam b;
+  const double m_tip = 0.7, y = 0.05;
+  for (double deg : {0.0, 30.0, -60.0}) {
+    ArticleScene s = cantileverScene(b, 1, kG, deg, m_tip, true);
+    s.article.links[0].tip_mass->offset = {y, 0.0};
+    const ModesReport r = runModes(s);
+    const double m = b.massPerLength() * b.length, th = deg * M_PI / 180;
+    const double expected = m * kG * 0.5 * b.length * std::cos(th) + m_tip * kG * (b.length * std::cos(th) - y * std::sin(th));
+    EXPECT_NEAR(r.joints[0].torque_nm, expected, 1e-9) << deg;
+  }
+}
+
 // Held flexible link: the holding torque is the root moment of the deflected beam;
 // for small deflections it equals the rigid value w L^2 / 2 to O((delta/L)^2).
 TEST(Statics, HoldingTorqueOfFlexibleCantilever) {
