@@ -81,6 +81,13 @@ struct JointSpec {
   std::optional<TableMotion> torque_input;
 };
 
+/// How the links are discretized (docs/spatial.md). Planar: bending in the plane of
+/// motion only (pins about z). Spatial: every hinge also bends out of the plane and
+/// twists (three body-fixed rotations: torsion about the link, out-of-plane bending
+/// about the in-plane normal, in-plane bending about z), so out-of-plane and torsion
+/// modes exist; with those two held it is the planar model.
+enum class ArticleModel { Planar, Spatial };
+
 struct LinkSpec {
   std::string name;
   std::string joint;       ///< the joint at the link's root.
@@ -94,6 +101,10 @@ struct LinkSpec {
   /// in-plane normal, after mount_angle: branches spread out of the plane (spatial model).
   double tilt = 0;
   std::optional<LumpedMass> tip_mass;  ///< rigidly attached at the tip.
+  /// How this link bends (ArticleSpec::linkModel): none takes the article's model. A
+  /// planar link of a spatial article bends in its plane only (pin hinges: rigid out of
+  /// the plane and in torsion) while it moves in 3-D with the rest of the article.
+  std::optional<ArticleModel> model;
 };
 
 /// A loop closure: a point of the article held to the ground (a fixture) or to
@@ -159,12 +170,6 @@ struct BaseSpec {
   std::optional<GimbalSpec> gimbal;   ///< built only when the scene names one.
 };
 
-/// How the links are discretized (docs/spatial.md). Planar: bending in the plane of
-/// motion only (pins about z). Spatial: every hinge also bends out of the plane and
-/// twists (three body-fixed rotations: torsion about the link, out-of-plane bending
-/// about the in-plane normal, in-plane bending about z), so out-of-plane and torsion
-/// modes exist; with those two held it is the planar model.
-enum class ArticleModel { Planar, Spatial };
 
 struct ArticleSpec {
   ArticleModel model = ArticleModel::Planar;
@@ -183,6 +188,12 @@ struct ArticleSpec {
   const Section* findSection(const std::string& name) const;
   const JointSpec* findJoint(const std::string& name) const;
   const LinkSpec* findLink(const std::string& name) const;
+  /// How link `l` bends: its own model, else the article's. A spatial link needs a
+  /// spatial article (the scene reader makes the article spatial when a link is).
+  ArticleModel linkModel(const LinkSpec& l) const { return l.model.value_or(model); }
+  bool bendsOutOfPlane(const LinkSpec& l) const {
+    return model == ArticleModel::Spatial && linkModel(l) == ArticleModel::Spatial;
+  }
   /// The torque capacity (N*m, 0: not given) of a joint's torquer or of a gimbal axis
   /// ("gimbal.yaw", "gimbal.pitch", "gimbal.roll").
   double torqueCapacity(const std::string& coordinate) const;

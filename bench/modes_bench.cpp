@@ -169,4 +169,19 @@ void BM_SpatialModesReport(benchmark::State& st) {
 }
 BENCHMARK(BM_SpatialModesReport)->Arg(8)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
 
+// The same with links 1 and 2 planar (`links.<name>.model: planar`): only link 3's rods
+// bend out of the plane and twist.
+void BM_SpatialLink3ModesReport(benchmark::State& st) {
+  mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));
+  s.article.model = mmv::ArticleModel::Spatial;
+  for (auto& l : s.article.links)
+    if (l.name == "link1" || l.name == "link2") l.model = mmv::ArticleModel::Planar;
+  mmv::ModesOptions opt;
+  opt.max_modes = 12;
+  mmv::ModesReport r;
+  for (auto _ : st) r = mmv::runModes(s, opt);
+  st.counters["dofs"] = r.model.num_dofs;
+}
+BENCHMARK(BM_SpatialLink3ModesReport)->Arg(16)->Unit(benchmark::kMillisecond);
+
 }  // namespace

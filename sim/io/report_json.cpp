@@ -75,8 +75,10 @@ json modesToJson(const ModesReport& r) {
   j["command"] = "modes";
   j["scene"] = {{"name", r.scene_name}, {"source", r.scene_source}};
   json links = json::array();
-  for (const auto& [name, n] : r.model.link_segments)
+  for (const auto& [name, n] : r.model.link_segments) {
     links.push_back({{"name", name}, {"segments", n ? json(n) : json("rigid")}});
+    if (r.spatial) links.back()["model"] = r.model.planar_links.count(name) ? "planar" : "spatial";
+  }
   j["model"] = {{"kind", r.spatial ? "spatial" : "planar"},
                 {"links", links},
                 {"bodies", r.model.num_bodies},

@@ -71,8 +71,9 @@ std::string formatModesText(const ModesReport& r) {
   std::ostringstream os;
   const double g = std::hypot(r.gravity[0], r.gravity[1]);
   os << r.scene_name << "  (scene: " << r.scene_source << ")\n";
-  os << "Model: " << r.model.num_links << " links (segments:";
-  for (const auto& [name, n] : r.model.link_segments) os << ' ' << name << ' ' << (n ? std::to_string(n) : "rigid");
+  os << "Model: " << (r.spatial ? "spatial, " : "") << r.model.num_links << " links (segments:";
+  for (const auto& [name, n] : r.model.link_segments)
+    os << ' ' << name << ' ' << (n ? std::to_string(n) : "rigid") << (r.model.planar_links.count(name) ? " (planar)" : "");
   os << "), " << r.model.num_bodies << " bodies, " << r.model.num_dofs << " DOF; "
      << strf("mass %.3f kg (%.3f kg moving); gravity %.4g m/s^2\n", r.model.total_mass_kg, r.model.moving_mass_kg, g);
   os << strf("Static equilibrium: converged in %d Newton iteration%s, residual %.2g N*m (force scale %.3g N*m)\n\n",

@@ -200,7 +200,11 @@ class Builder {
     axis.link = l.name;
     axis.length = l.length;
     for (std::size_t k = 0; k < d.pieces.size(); ++k) {
-      const SimTK::Body::Rigid body = spatial() ? spatialPieceBody(d.pieces[k], polar2) : pieceBody(d.pieces[k], gyr2);
+      // A planar link of the spatial article still moves out of the plane with it: its
+      // pieces get their polar inertia when its section states I_out.
+      const SimTK::Body::Rigid body = spatial() && (bendsOutOfPlane(l) || sectionSecondMomentOut(section) > 0)
+                                          ? spatialPieceBody(d.pieces[k], polar2)
+                                          : pieceBody(d.pieces[k], gyr2);
       SimTK::MobilizedBodyIndex ix;
       if (k == 0 && first) {
         ix = parent.grounded && a_.base.type == BaseType::Floating ? addFloatingRoot(j, l, parent, body)
@@ -317,22 +321,25 @@ class Builder {
   }
 
   bool spatial() const { return a_.model == ArticleModel::Spatial; }
+  bool bendsOutOfPlane(const LinkSpec& l) const { return a_.bendsOutOfPlane(l); }
 
   /// Hinge k of a link: a pin with the bending spring E*I/h (and its damper); in the
   /// spatial model three body-fixed rotations (a Simbody Gimbal, q' = u): torsion about
   /// the link (G J / h), out-of-plane bending about the in-plane normal (E I_out / h),
   /// in-plane bending about z (E I / h, the planar hinge), named <link>.h<k>.twist,
-  /// <link>.h<k>.out and <link>.h<k>.
+  /// <link>.h<k>.out and <link>.h<k>; a planar link (`model: planar` on a spatial
+  /// article) keeps the pin.
   SimTK::MobilizedBodyIndex addHinge(const LinkSpec& l, const LinkDiscretization& d, std::size_t k,
                                      SimTK::MobilizedBodyIndex prev, const SimTK::Body::Rigid& body) {
     const SimTK::Transform X_PF(SimTK::Vec3(d.pieces[k - 1].length, 0, 0));
     auto& parent = model_.updMatter().updMobilizedBody(prev);
+    const bool spatial_hinge = bendsOutOfPlane(l);
     const SimTK::MobilizedBodyIndex ix =
-        spatial() ? SimTK::MobilizedBody::Gimbal(parent, X_PF, body, SimTK::Transform()).getMobilizedBodyIndex()
+        spatial_hinge ? SimTK::MobilizedBody::Gimbal(parent, X_PF, body, SimTK::Transform()).getMobilizedBodyIndex()
                   : SimTK::MobilizedBody::Pin(parent, X_PF, body, SimTK::Transform()).getMobilizedBodyIndex();
     const std::string name = l.name + ".h" + std::to_string(k);
     const double k_in = d.hinge_stiffness[k - 1];
-    if (spatial()) {
+    if (spatial_hinge) {
       const Section& sec = *a_.findSection(l.section);
       const Material& mat = *a_.findMaterial(l.material);
       const double ei = mat.youngs_modulus * sectionSecondMoment(sec);
@@ -341,7 +348,7 @@ class Builder {
       addHingeCoordinate(l, ix, name + ".out", 1, k_in * sectionSecondMomentOut(sec) / sectionSecondMoment(sec),
                          HingeAxis::OutOfPlane);
     }
-    addHingeCoordinate(l, ix, name, spatial() ? 2 : 0, k_in, HingeAxis::InPlane);
+    addHingeCoordinate(l, ix, name, spatial_hinge ? 2 : 0, k_in, HingeAxis::InPlane);
     model_.addPoint({name, ix, SimTK::Vec3(0), false});
     return ix;
   }
@@ -414,8 +421,9 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
       c.directions = {SimTK::Vec3(-std::sin(cs.direction), std::cos(cs.direction), 0)};
     }
     // Spatial: the point is held out of the plane too (a pin is a ball joint, a slider
-    // holds the point on its line); the rotations stay free, as they are in the plane.
-    if (a.model == ArticleModel::Spatial && !a.lock_out_of_plane) c.directions.push_back(SimTK::Vec3(0, 0, 1));
+    // holds the point on its line) wherever the article can move it there (not when
+    // the chain to it bends in the plane only); the rotations stay free, as in the plane.
+    c.hold_z_if_free = a.model == ArticleModel::Spatial;
     model.addClosure(c);
   }
 }
@@ -425,6 +433,9 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
 std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
   const auto& g = scene.gravity;
   auto model = std::make_unique<Model>(SimTK::Vec3(g[0], g[1], g[2]));
+  for (const auto& l : scene.article.links)
+    if (scene.article.linkModel(l) == ArticleModel::Spatial && scene.article.model != ArticleModel::Spatial)
+      throw std::invalid_argument("link '" + l.name + "' bends out of its plane: the article's model must be spatial");
   if (scene.article.model == ArticleModel::Spatial) model->setSpatial();
   Builder(scene, *model).build();
   addLoadsAndClosures(scene.article, *model);

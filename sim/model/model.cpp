@@ -170,6 +170,23 @@ void Model::finalize() {
     if (!b.grounded) moving_mass_ += m;
   }
   finalized_ = true;
+  for (auto& c : closures_)
+    if (c.hold_z_if_free && pointMovesAlongZ(c)) c.directions.push_back(SimTK::Vec3(0, 0, 1));
+}
+
+bool Model::pointMovesAlongZ(const Closure& c) const {
+  std::vector<SimTK::MobilizedBodyIndex> b{c.mobod_a};
+  std::vector<SimTK::Vec3> st{c.station_a};
+  if (!c.to_ground) {
+    b.push_back(c.mobod_b);
+    st.push_back(c.station_b);
+  }
+  const Eigen::MatrixXd J = calcFrameJacobians(reference_state_, b, st, dofs_);
+  Eigen::RowVectorXd z = J.row(5);
+  if (!c.to_ground) z -= J.row(11);
+  // Planar pins move a point along z by exactly 0; a bending hinge out of the plane by
+  // its lever arm (m/rad).
+  return z.size() > 0 && z.cwiseAbs().maxCoeff() > 1e-12;
 }
 
 const NamedPoint* Model::findPoint(const std::string& name) const {

@@ -94,6 +94,9 @@ struct Closure {
   bool has_anchor = false;  ///< else the anchor is A's reference location (set by finalize).
   SimTK::Vec3 anchor_W;     ///< m, when to_ground.
   std::vector<SimTK::Vec3> directions;  ///< unit world directions held (2 for a pin, 1 for a slider).
+  /// The spatial model: finalize also holds the point along world z when a free
+  /// coordinate can move it there (along z where nothing moves it, it holds nothing).
+  bool hold_z_if_free = false;
 };
 
 /// A named point fixed on a body: "link1.tip", "link2.h3", "joint2", ...
@@ -221,6 +224,8 @@ class Model {
   SimTK::Vec3 findPointLocation(const SimTK::State& s, const NamedPoint& p) const;
 
  private:
+  /// Whether a free coordinate moves closure c's point (relative to its partner) along z.
+  bool pointMovesAlongZ(const Closure& c) const;
   SimTK::MultibodySystem system_;
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;

@@ -83,11 +83,11 @@ Eigen::MatrixXd craigBamptonForLink(const ArticleScene& scene, const std::string
     return sol.shapes.leftCols(std::min<Eigen::Index>(k, sol.shapes.cols()));
   }
   // Interface at the tip: rotation and transverse deflection (the link lies along +x);
-  // on the spatial model every rotation (the joint's pin transmits twist and
+  // on a link that bends out of its plane every rotation (the joint's pin transmits twist and
   // out-of-plane bending) and the deflection along z too.
   const NamedPoint* tip = model->findPoint(link + ".tip");
   const Eigen::MatrixXd J = model->calcFrameJacobians(s, {tip->mobod}, {tip->station_B}, dofs);
-  const bool out_of_plane = model->isSpatial() && !scene.article.lock_out_of_plane;
+  const bool out_of_plane = cs.article.bendsOutOfPlane(cs.article.links.front()) && !scene.article.lock_out_of_plane;
   const std::vector<int> rows = out_of_plane ? std::vector<int>{0, 1, 2, 4, 5} : std::vector<int>{2, 4};
   Eigen::MatrixXd C(rows.size(), dofs.size());
   for (std::size_t r = 0; r < rows.size(); ++r) C.row(r) = J.row(rows[r]);  // J: 3 rotations, then 3 translations

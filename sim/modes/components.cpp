@@ -54,7 +54,7 @@ void addOutboard(const ArticleSpec& a, const std::string& link, LumpedMass& m) {
 
 /// The closed-form frequencies (Hz) of the link's first `count` modes of each family
 /// under boundary condition `bi`: "in-plane" (the planar model's only family),
-/// "out-of-plane" and "torsion" on the spatial model (components.hpp).
+/// "out-of-plane" and "torsion" on a link that bends out of its plane (components.hpp).
 std::map<std::string, std::vector<double>> closedForms(const ArticleSpec& a, const LinkSpec& l, const BCInfo& bi,
                                                        const LumpedMass& tip, double mass_ratio, int count) {
   const Material& mat = *a.findMaterial(l.material);
@@ -68,7 +68,7 @@ std::map<std::string, std::vector<double>> closedForms(const ArticleSpec& a, con
   };
   std::map<std::string, std::vector<double>> out;
   out["in-plane"] = bending(bi.root, bi.tip, tip.rotary_inertia, sectionSecondMoment(sec));
-  if (a.model != ArticleModel::Spatial) return out;
+  if (!a.bendsOutOfPlane(l)) return out;
   // The joint pins turn about the plane's normal only: out of the plane and in torsion
   // the root is clamped unless it floats. A lumped mass is a disk about the normal
   // (article_builder.cpp): half its rotary inertia about the link and the in-plane normal.

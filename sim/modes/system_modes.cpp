@@ -125,7 +125,10 @@ ModelSummary summarizeModel(const ArticleScene& scene, const Model& model, std::
   m.num_dofs = static_cast<int>(num_dofs);
   m.total_mass_kg = model.getTotalMass();
   m.moving_mass_kg = model.getMovingMass();
-  for (const auto& l : scene.article.links) m.link_segments.push_back({l.name, l.rigid ? 0 : l.segments});
+  for (const auto& l : scene.article.links) {
+    m.link_segments.push_back({l.name, l.rigid ? 0 : l.segments});
+    if (scene.article.model == ArticleModel::Spatial && !scene.article.bendsOutOfPlane(l)) m.planar_links.insert(l.name);
+  }
   return m;
 }
 

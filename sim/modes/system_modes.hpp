@@ -21,6 +21,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,8 @@ struct ModelSummary {
   int num_links = 0, num_bodies = 0, num_coordinates = 0, num_dofs = 0;
   double total_mass_kg = 0, moving_mass_kg = 0;
   std::vector<std::pair<std::string, int>> link_segments;  ///< 0 for rigid.
+  /// A spatial article's links that bend in their plane only (`model: planar` of their own).
+  std::set<std::string> planar_links;
 };
 
 struct ModesReport {

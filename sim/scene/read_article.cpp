@@ -1,6 +1,7 @@
 // Scene sections of an article (materials and sections: read_section.cpp): base (table, gimbal), joints,
 // links, closures, loads; the tree check.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <optional>
 #include <set>
 
@@ -56,7 +57,7 @@ class SceneParser {
     readJoints(r_.require(top, root, "", "joints"), a);
     readLinks(r_.require(top, root, "", "links"), a);
     checkTree(a);
-    if (top.count("model")) readModel(top.at("model"), a);  // before the sensors, whose axes depend on it
+    resolveModels(top.count("model") ? &top.at("model") : nullptr, a);  // before the sensors, whose axes depend on it
     if (top.count("closures")) readClosures(top.at("closures"), a);
     if (top.count("loads")) readLoads(top.at("loads"), a);
     if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
@@ -127,24 +128,40 @@ class SceneParser {
     }
   }
 
-  /// model: planar | spatial. The spatial model twists and bends every flexible link out
-  /// of the plane, so it needs each one's shear modulus and, for an explicit section,
-  /// its out-of-plane moment and torsion constant.
-  void readModel(const YAML::Node& n, ArticleSpec& a) {
-    const std::string v = r_.text(n, "model");
-    if (v == "planar") return;
-    if (v != "spatial") r_.fail(n.Mark(), "model: unknown model '" + v + "' (known: planar, spatial)");
-    a.model = ArticleModel::Spatial;
+  ArticleModel readModelName(const YAML::Node& n, const std::string& path) {
+    const std::string v = r_.text(n, path);
+    if (v == "planar") return ArticleModel::Planar;
+    if (v != "spatial") r_.fail(n.Mark(), path + ": unknown model '" + v + "' (known: planar, spatial)");
+    return ArticleModel::Spatial;
+  }
+
+  /// model: planar | spatial, the scene's (`n`, may be null) and each link's own. The
+  /// article is spatial when any link is; a link without a model of its own takes the
+  /// scene's. A link that bends out of its plane twists, so it needs its material's
+  /// shear modulus and, for an explicit section, its out-of-plane moment and torsion
+  /// constant (named at the key that asked for it).
+  void resolveModels(const YAML::Node* n, ArticleSpec& a) {
+    const ArticleModel scene_model = n ? readModelName(*n, "model") : ArticleModel::Planar;
+    a.model = scene_model;
+    const bool any_spatial = std::any_of(a.links.begin(), a.links.end(),
+                                         [](const LinkSpec& l) { return l.model == ArticleModel::Spatial; });
+    if (scene_model == ArticleModel::Planar && any_spatial) {  // the article is spatial, the others stay planar
+      a.model = ArticleModel::Spatial;
+      for (auto& l : a.links)
+        if (!l.model) l.model = ArticleModel::Planar;
+    }
     for (const auto& l : a.links) {
-      if (l.rigid) continue;
+      if (l.rigid || !a.bendsOutOfPlane(l)) continue;
+      const auto own = link_model_marks_.find(l.name);
+      const Located at = own != link_model_marks_.end() ? own->second : Located{n->Mark(), "model"};
       const Material& m = *a.findMaterial(l.material);
       if (!(m.shear_modulus > 0))
-        r_.fail(n.Mark(), "model: spatial twists link '" + l.name + "': materials." + m.name +
-                              " needs shear_modulus (Pa) or poisson_ratio");
+        r_.fail(at.mark, at.path + ": spatial twists link '" + l.name + "': materials." + m.name +
+                             " needs shear_modulus (Pa) or poisson_ratio");
       const Section& s = *a.findSection(l.section);
       if (!(sectionSecondMomentOut(s) > 0) || !(sectionTorsionConstant(s) > 0))
-        r_.fail(n.Mark(), "model: spatial bends link '" + l.name + "' out of its plane: sections." + s.name +
-                              " needs second_moment_out and torsion_constant (m^4)");
+        r_.fail(at.mark, at.path + ": spatial bends link '" + l.name + "' out of its plane: sections." + s.name +
+                             " needs second_moment_out and torsion_constant (m^4)");
     }
   }
 
@@ -307,7 +324,7 @@ class SceneParser {
       const YAML::Node& ln = n[i];
       const std::string path = "links[" + std::to_string(i) + "]";
       auto m = r_.mapping(ln, path, {"name", "joint", "material", "section", "length", "segments",
-                                     "mount_angle_deg", "tip_mass", "branches"});
+                                     "mount_angle_deg", "tip_mass", "branches", "model"});
       LinkSpec l;
       const YAML::Node& name = r_.require(m, ln, path, "name");
       l.name = r_.text(name, path + ".name");
@@ -335,6 +352,7 @@ class SceneParser {
       }
       if (m.count("mount_angle_deg")) l.mount_angle = r_.number(m.at("mount_angle_deg"), path + ".mount_angle_deg") * kDegToRad;
       if (m.count("tip_mass")) l.tip_mass = readLumpedMass(r_, m.at("tip_mass"), path + ".tip_mass", offset_z_mark_);
+      if (m.count("model")) l.model = readModelName(m.at("model"), path + ".model");
 
       int count = 1;
       double spread = 0;
@@ -364,6 +382,7 @@ class SceneParser {
         }
         checkName(name, path + ".name", b.name);
         link_marks_[b.name] = {ln.Mark(), path};
+        if (m.count("model")) link_model_marks_[b.name] = {m.at("model").Mark(), path + ".model"};
         a.links.push_back(b);
       }
     }
@@ -458,6 +477,7 @@ class SceneParser {
   const YamlReader& r_;
   std::set<std::string> names_;
   std::map<std::string, Located> joint_marks_, joint_parent_marks_, link_marks_;
+  std::map<std::string, Located> link_model_marks_;  ///< links with a model of their own.
   YAML::Mark motion_mark_;
   std::optional<YAML::Mark> motion_z_mark_;
   bool out_of_plane_ = false;                  ///< the link being read spreads its branches out of the plane.

@@ -190,6 +190,11 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:3:8: model: spatial twists link 'l1': materials.steel needs shear_modulus (Pa) or poisson_ratio"},
         BadCase{"unknown model", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spacial",
                 "s.yaml:3:8: model: unknown model 'spacial' (known: planar, spatial)"},
+        BadCase{"a spatial link without a shear modulus", "    segments: 4\n", "    segments: 4\n    model: spatial\n",
+                "s.yaml:21:12: links[0].model: spatial twists link 'l1': materials.steel needs shear_modulus (Pa) or "
+                "poisson_ratio"},
+        BadCase{"unknown link model", "    segments: 4\n", "    segments: 4\n    model: flat\n",
+                "s.yaml:21:12: links[0].model: unknown model 'flat' (known: planar, spatial)"},
         BadCase{"poisson ratio out of range", "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.7}",
                 "s.yaml:4:65: materials.steel.poisson_ratio must be in (-1, 0.5) for an isotropic solid (got 0.7)"},
         BadCase{"shear modulus and poisson ratio", "youngs_modulus: 2.0e11}",
@@ -239,6 +244,27 @@ TEST(SceneYaml, SpatialModelReadsShearModulusAndBranchesOutOfThePlane) {
   EXPECT_NEAR(s.article.findLink("l2b")->tilt, 10 * M_PI / 180, 1e-15);
   EXPECT_EQ(s.article.findLink("l2b")->mount_angle, 0.0);
   EXPECT_EQ(parseArticle(kGood, "s.yaml").article.model, ArticleModel::Planar);
+}
+
+// A link's own model: a planar link of a spatial scene bends in its plane only, so its
+// material needs no shear modulus; a spatial link makes the article spatial, and the
+// links without a model of their own keep the scene's.
+TEST(SceneYaml, EachLinkMayChooseItsModel) {
+  const ArticleScene planar_link = parseArticle(
+      replaceLine(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spatial"),
+                  "    segments: 4\n", "    segments: 4\n    model: planar\n"),
+      "s.yaml");
+  EXPECT_EQ(planar_link.article.model, ArticleModel::Spatial);
+  EXPECT_FALSE(planar_link.article.bendsOutOfPlane(*planar_link.article.findLink("l1")));
+  EXPECT_TRUE(planar_link.article.bendsOutOfPlane(*planar_link.article.findLink("l2b")));
+  const ArticleScene spatial_link = parseArticle(
+      replaceLine(replaceLine(kGood, "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.3}"),
+                  "    segments: 4\n", "    segments: 4\n    model: spatial\n"),
+      "s.yaml");
+  EXPECT_EQ(spatial_link.article.model, ArticleModel::Spatial);
+  EXPECT_TRUE(spatial_link.article.bendsOutOfPlane(*spatial_link.article.findLink("l1")));
+  EXPECT_FALSE(spatial_link.article.bendsOutOfPlane(*spatial_link.article.findLink("l2a")));
+  EXPECT_FALSE(spatial_link.article.bendsOutOfPlane(*spatial_link.article.findLink("l2b")));
 }
 
 TEST(SceneYaml, JointRangeWidensWhenTheSceneSaysSo) {
