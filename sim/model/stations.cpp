@@ -16,8 +16,6 @@ Hermite hermite(double xi) {
   return {1 - 3 * x2 + 2 * x3, xi - 2 * x2 + x3, 3 * x2 - 2 * x3, x3 - x2};
 }
 
-const SimTK::Vec3 kZ(0, 0, 1);
-
 }  // namespace
 
 StationPoint::StationPoint(const Model& model, const StationSpec& spec) : model_(&model), spec_(spec) {
@@ -35,36 +33,50 @@ StationPoint::StationPoint(const Model& model, const StationSpec& spec) : model_
   xi_ = std::clamp((spec.x - axis->x[k]) / ell_, 0.0, 1.0);
 }
 
-SimTK::Vec3 StationPoint::interpolate(const NodeVector& point, const BodyVector& direction) const {
-  auto dir = [&](const Node& n) { return 0.5 * (direction(n.left) + direction(n.right)); };
+SimTK::Vec3 StationPoint::interpolate(const NodeVector& point, const BodyVector& axis) const {
+  // A node's body axis k: the mean of its two pieces', interpolated linearly.
+  auto along = [&](int k) {
+    auto node = [&](const Node& n) { return 0.5 * (axis(n.left, k) + axis(n.right, k)); };
+    return std::pair<SimTK::Vec3, SimTK::Vec3>(node(a_), node(b_));
+  };
   const Hermite h = hermite(xi_);
-  const SimTK::Vec3 ea = dir(a_), eb = dir(b_);
-  return h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb +
-         spec_.offset * (kZ % ((1 - xi_) * ea + xi_ * eb));
+  const auto [ea, eb] = along(0);
+  SimTK::Vec3 p = h.h1 * point(a_) + h.h2 * ell_ * ea + h.h3 * point(b_) + h.h4 * ell_ * eb;
+  if (spec_.offset != 0) {
+    const auto [ya, yb] = along(1);
+    p += spec_.offset * ((1 - xi_) * ya + xi_ * yb);
+  }
+  if (spec_.offset_z != 0) {
+    const auto [za, zb] = along(2);
+    p += spec_.offset_z * ((1 - xi_) * za + xi_ * zb);
+  }
+  return p;
 }
 
 SimTK::Vec3 StationPoint::position(const SimTK::State& s) const {
   const auto& m = model_->getMatter();
-  return interpolate([&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationLocationInGround(s, n.station_B); },
-                     [&](SimTK::MobilizedBodyIndex b) { return SimTK::Vec3(m.getMobilizedBody(b).getBodyRotation(s).x()); });
+  return interpolate(
+      [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationLocationInGround(s, n.station_B); },
+      [&](SimTK::MobilizedBodyIndex b, int k) { return SimTK::Vec3(m.getMobilizedBody(b).getBodyRotation(s)(k)); });
 }
 
 SimTK::Vec3 StationPoint::velocity(const SimTK::State& s) const {
   const auto& m = model_->getMatter();
-  return interpolate([&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationVelocityInGround(s, n.station_B); },
-                     [&](SimTK::MobilizedBodyIndex b) {  // e' = w x e
-                       const auto& mb = m.getMobilizedBody(b);
-                       return SimTK::Vec3(mb.getBodyAngularVelocity(s) % mb.getBodyRotation(s).x());
-                     });
+  return interpolate(
+      [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationVelocityInGround(s, n.station_B); },
+      [&](SimTK::MobilizedBodyIndex b, int k) {  // e' = w x e
+        const auto& mb = m.getMobilizedBody(b);
+        return SimTK::Vec3(mb.getBodyAngularVelocity(s) % mb.getBodyRotation(s)(k));
+      });
 }
 
 SimTK::Vec3 StationPoint::acceleration(const SimTK::State& s) const {
   const auto& m = model_->getMatter();
   return interpolate(
       [&](const Node& n) { return m.getMobilizedBody(n.point_body).findStationAccelerationInGround(s, n.station_B); },
-      [&](SimTK::MobilizedBodyIndex b) {  // e'' = alpha x e + w x (w x e)
+      [&](SimTK::MobilizedBodyIndex b, int k) {  // e'' = alpha x e + w x (w x e)
         const auto& mb = m.getMobilizedBody(b);
-        const SimTK::Vec3 e = mb.getBodyRotation(s).x(), w = mb.getBodyAngularVelocity(s);
+        const SimTK::Vec3 e = mb.getBodyRotation(s)(k), w = mb.getBodyAngularVelocity(s);
         return SimTK::Vec3(mb.getBodyAngularAcceleration(s) % e + w % (w % e));
       });
 }
@@ -108,26 +120,29 @@ Eigen::MatrixXd StationPoint::translationJacobian(const SimTK::State& s, const s
   const std::vector<SimTK::Vec3> stations{a_.station_B, b_.station_B, SimTK::Vec3(0), SimTK::Vec3(0), SimTK::Vec3(0),
                                           SimTK::Vec3(0)};
   const Eigen::MatrixXd J = model_->calcFrameJacobians(s, bodies, stations, dofs);  // (w; v) per frame
-  auto axis = [&](SimTK::MobilizedBodyIndex b) {
-    const SimTK::Vec3 e = m.getMobilizedBody(b).getBodyRotation(s).x();
+  auto axis = [&](SimTK::MobilizedBodyIndex b, int k) {
+    const SimTK::Vec3 e = m.getMobilizedBody(b).getBodyRotation(s)(k);
     return Eigen::Vector3d(e[0], e[1], e[2]);
   };
-  // d e / d q_c = (J_w,c x e) for each piece; a node's direction is the mean of two.
-  auto dirRows = [&](int left_frame, int right_frame, SimTK::MobilizedBodyIndex left, SimTK::MobilizedBodyIndex right) {
+  // d e / d q_c = (J_w,c x e) for each piece's body axis k; a node's is the mean of two.
+  auto dirRows = [&](int left_frame, int right_frame, SimTK::MobilizedBodyIndex left, SimTK::MobilizedBodyIndex right,
+                     int k) {
     Eigen::MatrixXd D(3, dofs.size());
-    const Eigen::Vector3d el = axis(left), er = axis(right);
+    const Eigen::Vector3d el = axis(left, k), er = axis(right, k);
     for (Eigen::Index c = 0; c < D.cols(); ++c) {
       const Eigen::Vector3d wl = J.block<3, 1>(6 * left_frame, c), wr = J.block<3, 1>(6 * right_frame, c);
       D.col(c) = 0.5 * (wl.cross(el) + wr.cross(er));
     }
     return D;
   };
-  const Eigen::MatrixXd Da = dirRows(2, 3, a_.left, a_.right), Db = dirRows(4, 5, b_.left, b_.right);
+  auto interpolated = [&](int k) {
+    return Eigen::MatrixXd((1 - xi_) * dirRows(2, 3, a_.left, a_.right, k) + xi_ * dirRows(4, 5, b_.left, b_.right, k));
+  };
+  const Eigen::MatrixXd Da = dirRows(2, 3, a_.left, a_.right, 0), Db = dirRows(4, 5, b_.left, b_.right, 0);
   const Hermite h = hermite(xi_);
   Eigen::MatrixXd P = h.h1 * J.middleRows(3, 3) + h.h2 * ell_ * Da + h.h3 * J.middleRows(9, 3) + h.h4 * ell_ * Db;
-  const Eigen::MatrixXd De = (1 - xi_) * Da + xi_ * Db;  // z x de: (-de_y, de_x)
-  P.row(0) -= spec_.offset * De.row(1);
-  P.row(1) += spec_.offset * De.row(0);
+  if (spec_.offset != 0) P += spec_.offset * interpolated(1);
+  if (spec_.offset_z != 0) P += spec_.offset_z * interpolated(2);
   return P.topRows(rows);
 }
 

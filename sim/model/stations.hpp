@@ -2,13 +2,15 @@
 /// Where a station (sim/scene/stations.hpp) is and how it moves: interpolated along its
 /// link's mesh (Model::LinkAxis) with the beam's cubic Hermite shape functions,
 ///
-///   p(xi) = H1 p_a + H2 l e_a + H3 p_b + H4 l e_b + offset z x e(xi),
+///   p(xi) = H1 p_a + H2 l e_a + H3 p_b + H4 l e_b + offset y(xi) + offset_z n(xi),
 ///   H1 = 1 - 3 xi^2 + 2 xi^3, H2 = xi - 2 xi^2 + xi^3, H3 = 3 xi^2 - 2 xi^3, H4 = xi^3 - xi^2,
 ///
 /// between the mesh nodes a and b around the station (root, hinges, tip; l their
 /// distance along the undeformed link, xi = (x - x_a) / l), where p is a node's position
 /// and e the link's direction there: a piece's body x axis, the mean of the two pieces
-/// at a hinge; e(xi) = (1 - xi) e_a + xi e_b. Velocity and acceleration are this
+/// at a hinge; e(xi) = (1 - xi) e_a + xi e_b, and y(xi), n(xi) the pieces' body y (across
+/// the section, in its plane) and z (the section's normal) axes interpolated alike, so an
+/// offset point turns with the link's twist (on the planar model y = z x e). Velocity and acceleration are this
 /// formula's exact time derivatives (e' = w x e, e'' = alpha x e + w x (w x e)), so a
 /// station's energy and motion agree. A rigid link's two nodes carry one piece: the
 /// station moves with it exactly. The interpolation error falls as O(h^2) with the
@@ -55,10 +57,11 @@ class StationPoint {
     SimTK::Vec3 station_B;
   };
   using NodeVector = std::function<SimTK::Vec3(const Node&)>;
-  using BodyVector = std::function<SimTK::Vec3(SimTK::MobilizedBodyIndex)>;
+  /// A body's axis k (0 x, 1 y, 2 z) or its time derivative.
+  using BodyVector = std::function<SimTK::Vec3(SimTK::MobilizedBodyIndex, int)>;
   /// The Hermite formula (above) for a node quantity (position, velocity or
   /// acceleration of its point) and the matching derivative of a piece's direction.
-  SimTK::Vec3 interpolate(const NodeVector& point, const BodyVector& direction) const;
+  SimTK::Vec3 interpolate(const NodeVector& point, const BodyVector& axis) const;
   const Model* model_;
   StationSpec spec_;
   Node a_, b_;

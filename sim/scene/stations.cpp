@@ -25,7 +25,7 @@ bool isStationName(const std::string& name) { return name.find('@') != std::stri
 std::optional<StationSpec> parseStation(const std::string& name, const ArticleSpec& article, std::string& error) {
   const auto at = name.find('@');
   if (at == std::string::npos || at == 0) {
-    error = "'" + name + "' is not a station (LINK@DIST m, LINK@FRACTION, optionally +OFFSETm)";
+    error = "'" + name + "' is not a station (LINK@DIST m, LINK@FRACTION, optionally +OFFSETm, +OFFSETm+NORMALm)";
     return std::nullopt;
   }
   StationSpec s;
@@ -70,10 +70,29 @@ std::optional<StationSpec> parseStation(const std::string& name, const ArticleSp
     s.x = pos * link->length;
   }
   if (!offset.empty()) {
+    // A second signed distance after the first's unit is the offset along the normal.
+    std::string offset_z;
+    const auto unit = offset.find('m');
+    if (unit != std::string::npos && unit + 1 < offset.size()) {
+      offset_z = offset.substr(unit + 1);
+      offset = offset.substr(0, unit + 1);
+    }
     bool offset_metres = false;
     if (!number(offset, s.offset, offset_metres) || !offset_metres) {
       error = "station '" + name + "': the offset across the section is a distance in m (e.g. +0.0127m; got " + offset + ")";
       return std::nullopt;
+    }
+    if (!offset_z.empty()) {
+      const char sign = offset_z.front();
+      if ((sign != '+' && sign != '-') || !number(offset_z, s.offset_z, offset_metres) || !offset_metres) {
+        error = "station '" + name + "': the offset along the section's normal is a signed distance in m after the "
+                "first (e.g. +0m+0.004m; got " + offset_z + ")";
+        return std::nullopt;
+      }
+      if (article.model != ArticleModel::Spatial && s.offset_z != 0) {
+        error = "station '" + name + "': an offset out of the plane (" + offset_z + ") needs model: spatial";
+        return std::nullopt;
+      }
     }
   }
   return s;

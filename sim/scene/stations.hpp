@@ -5,6 +5,8 @@
 ///     LINK@FRACTION        e.g. link1@0.75   (fraction of the link's length, 0..1)
 ///     ...+OFFSETm / -OFFSETm   e.g. link1@0.75+0.0127m (across the section, along
 ///                          the link's local y; the top face of link 1's tube)
+///     ...+Ym+Zm            e.g. link3a@0.5+0m+0.004m (and along the section's normal,
+///                          the link's local z: out of the plane; spatial model only)
 ///
 /// A station's motion is interpolated from the discretized link with the beam's cubic
 /// (Hermite) shape functions (sim/model/stations.hpp), so it converges as the segments
@@ -23,6 +25,7 @@ struct StationSpec {
   std::string link;    ///< a link (or branch) of the article.
   double x = 0;        ///< m from the link's root, 0 <= x <= length.
   double offset = 0;   ///< m across the section (local y).
+  double offset_z = 0; ///< m along the section's normal (local z, out of the plane: spatial model).
 };
 
 /// True when `name` is written as a station (it contains '@').

@@ -11,6 +11,7 @@
 #include "sim/model/article_builder.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "support/scenes.hpp"
+#include "support/spatial_scenes.hpp"
 
 namespace mmv {
 namespace {
@@ -81,10 +82,10 @@ TEST(Stations, ModeShapeConvergesAtSecondOrder) {
   }
 }
 
-// Velocity, acceleration and the Jacobian are the position's derivatives (central
-// differences: step 1e-6, truncation ~1e-12 relative; tolerance 1e-6 relative).
-TEST(Stations, KinematicsAreConsistent) {
-  ArticleScene s = testing::cantileverScene(testing::Beam{}, 6, 9.81);
+// Velocity, acceleration and the Jacobian (`rows` of it) of station `name` of `s` are
+// its position's derivatives (central differences: step 1e-6, truncation ~1e-12
+// relative; tolerance 1e-6 relative), in an arbitrary moving state.
+void expectConsistentKinematics(ArticleScene s, const std::string& name, int rows) {
   s.article.joints[0].hold = JointHold::Free;
   const auto model = buildArticleModel(s);
   SimTK::State st = model->getReferenceState();
@@ -95,7 +96,7 @@ TEST(Stations, KinematicsAreConsistent) {
   }
   model->getSystem().realize(st, SimTK::Stage::Acceleration);
   std::string error;
-  const auto p = PointRef::resolve(*model, s.article, "link1@0.43+0.01m", error);
+  const auto p = PointRef::resolve(*model, s.article, name, error);
   ASSERT_TRUE(p) << error;
   const double dt = 1e-6;
   auto shifted = [&](double h) {
@@ -114,7 +115,8 @@ TEST(Stations, KinematicsAreConsistent) {
   EXPECT_LT((a_fd - p->acceleration(st)).norm(), 1e-5 * p->acceleration(st).norm());
   std::vector<int> all(nq);
   for (int i = 0; i < nq; ++i) all[i] = i;
-  const Eigen::MatrixXd J = p->translationJacobian(st, all);
+  const Eigen::MatrixXd J = p->translationJacobian(st, all, rows);
+  ASSERT_EQ(J.rows(), rows);
   for (int c = 0; c < nq; ++c) {
     SimTK::State a = st, b = st;
     a.updQ()[model->getQIndex(c)] += dt;
@@ -122,9 +124,70 @@ TEST(Stations, KinematicsAreConsistent) {
     model->getSystem().realize(a, SimTK::Stage::Position);
     model->getSystem().realize(b, SimTK::Stage::Position);
     const SimTK::Vec3 d = (p->position(a) - p->position(b)) / (2 * dt);
-    EXPECT_NEAR(J(0, c), d[0], 1e-6 * (1 + std::abs(d[0]))) << c;
-    EXPECT_NEAR(J(1, c), d[1], 1e-6 * (1 + std::abs(d[1]))) << c;
+    for (int r = 0; r < rows; ++r) EXPECT_NEAR(J(r, c), d[r], 1e-6 * (1 + std::abs(d[r]))) << "row " << r << ", q " << c;
   }
+}
+
+TEST(Stations, KinematicsAreConsistent) {
+  expectConsistentKinematics(testing::cantileverScene(testing::Beam{}, 6, 9.81), "link1@0.43+0.01m", 2);
+}
+
+/// A spatial cantilever (support/spatial_scenes.hpp) of `segments` with a thick
+/// rectangular-like section, so offsets of a centimetre are on its faces. Soft (E = 70
+/// MPa): the differences above shift q by h^2 qdd / 2, whose error grows with the hinges'
+/// stiffness (a torsion hinge of aluminium would give qdd ~ 1e7 rad/s^2).
+ArticleScene spatialBeam(int segments) {
+  return testing::spatialCantilever(testing::explicitSection(2e-4, 1e-9, 4e-9, 2e-9), 2700, 7e7, 2.6e7, 1.0,
+                                    segments);
+}
+
+// On the spatial model, with offsets across the section and along its normal, in a
+// state where every hinge twists and bends both ways.
+TEST(Stations, KinematicsAreConsistentOutOfThePlane) {
+  expectConsistentKinematics(spatialBeam(6), "link1@0.43+0.01m-0.02m", 3);
+  expectConsistentKinematics(spatialBeam(6), "link1@0.43+0m+0.02m", 3);
+}
+
+// An offset point turns with the section: twisting the first hinge by theta rotates
+// everything outboard rigidly about the link's axis, so a station at (y, z) on the
+// section of an outboard piece goes to (y cos - z sin, y sin + z cos), exactly. (The
+// planar model's offset, z x e, would not have turned.)
+TEST(Stations, AnOffsetTurnsWithTheSectionsTwist) {
+  const ArticleScene s = spatialBeam(4);
+  const auto model = buildArticleModel(s);
+  SimTK::State st = model->getReferenceState();
+  const double theta = 0.3;
+  for (int i = 0; i < model->getNumCoordinates(); ++i)
+    if (model->getCoordinates()[i].name == "link1.h1.twist") st.updQ()[model->getQIndex(i)] = theta;
+  model->getSystem().realize(st, SimTK::Stage::Position);
+  std::string error;
+  const double y = 0.01, z = -0.02;
+  const auto p = PointRef::resolve(*model, s.article, "link1@0.6+0.01m-0.02m", error);
+  ASSERT_TRUE(p) << error;
+  const SimTK::Vec3 x = p->position(st);
+  EXPECT_NEAR(x[0], 0.6, 1e-12);
+  EXPECT_NEAR(x[1], y * std::cos(theta) - z * std::sin(theta), 1e-12);
+  EXPECT_NEAR(x[2], y * std::sin(theta) + z * std::cos(theta), 1e-12);
+}
+
+TEST(Stations, OffsetsAlongTheNormalNeedTheSpatialModel) {
+  const ArticleScene planar = loadDefaultScene();
+  ArticleScene spatial = planar;
+  spatial.article.model = ArticleModel::Spatial;
+  std::string error;
+  const auto st = parseStation("link3a@0.5+0m+0.004m", spatial.article, error);
+  ASSERT_TRUE(st) << error;
+  EXPECT_DOUBLE_EQ(st->offset, 0.0);
+  EXPECT_DOUBLE_EQ(st->offset_z, 0.004);
+  const auto both = parseStation("link3a@0.5-1e-3m-2e-3m", spatial.article, error);
+  ASSERT_TRUE(both) << error;
+  EXPECT_DOUBLE_EQ(both->offset, -1e-3);
+  EXPECT_DOUBLE_EQ(both->offset_z, -2e-3);
+  EXPECT_FALSE(parseStation("link3a@0.5+0m+0.004m", planar.article, error));
+  EXPECT_NE(error.find("an offset out of the plane (+0.004m) needs model: spatial"), std::string::npos) << error;
+  EXPECT_FALSE(parseStation("link3a@0.5+0m+0.004", spatial.article, error));  // the second needs its unit too
+  EXPECT_NE(error.find("the offset along the section's normal is a signed distance in m"), std::string::npos) << error;
+  EXPECT_FALSE(parseStation("link3a@0.5+0m0.004m", spatial.article, error));  // and its sign
 }
 
 // On a rigid link a station moves with the link exactly.
