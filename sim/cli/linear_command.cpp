@@ -32,11 +32,14 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-int axisOf(const std::string& a, const std::string& what) {
-  if (a == "x") return 0;
-  if (a == "y") return 1;
-  if (a == "z") return 2;  // out of the plane: the spatial model only (checked with the model)
-  throw UsageError(what + ": axis must be x, y or z (got " + a + ")");
+/// x, y, z (0..2) and, where `rotations`, rx, ry, rz (3..5: about world x, y, z). Out of
+/// the plane (z, rx, ry) the spatial model only (checked with the model).
+int axisOf(const std::string& a, const std::string& what, bool translations, bool rotations) {
+  const char* names[] = {"x", "y", "z", "rx", "ry", "rz"};
+  for (int k = translations ? 0 : 3; k < (rotations ? 6 : 3); ++k)
+    if (a == names[k]) return k;
+  const std::string allowed = !rotations ? "x, y or z" : !translations ? "rx, ry or rz" : "x, y, z, rx, ry or rz";
+  throw UsageError(what + ": axis must be " + allowed + " (got " + a + ")");
 }
 
 InputSpec parseInput(const std::string& text) {
@@ -44,14 +47,18 @@ InputSpec parseInput(const std::string& text) {
   if (text == "table_x" || text == "table_y" || text == "table_z")
     return {text, InputKind::BaseAcceleration, "", text == "table_x" ? 0 : text == "table_y" ? 1 : 2};
   if (p.size() == 2 && p[0] == "torque") return {text, InputKind::JointTorque, p[1], 0};
-  if (p.size() == 3 && p[0] == "force") return {text, InputKind::PointForce, p[1], axisOf(p[2], "--input " + text)};
-  throw UsageError("--input " + text + ": expected table_x, table_y, table_z, torque:JOINT or force:POINT:x|y|z");
+  if (p.size() == 3 && p[0] == "force") return {text, InputKind::PointForce, p[1], axisOf(p[2], "--input " + text, true, false)};
+  if (p.size() == 3 && p[0] == "moment")
+    return {text, InputKind::PointMoment, p[1], axisOf(p[2], "--input " + text, false, true)};
+  throw UsageError("--input " + text +
+                   ": expected table_x, table_y, table_z, torque:JOINT, force:POINT:x|y|z or moment:POINT:rx|ry|rz");
 }
 
 OutputSpec parseOutput(const std::string& text) {
   const auto p = split(text, ':');
-  if (p.size() < 2 || p.size() > 3) throw UsageError("--output " + text + ": expected POINT:x|y|z[:disp|vel|acc|acc_abs]");
-  OutputSpec o{text, OutputKind::Acceleration, p[0], axisOf(p[1], "--output " + text), true};
+  if (p.size() < 2 || p.size() > 3)
+    throw UsageError("--output " + text + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs]");
+  OutputSpec o{text, OutputKind::Acceleration, p[0], axisOf(p[1], "--output " + text, true, true), true};
   if (p.size() == 3) {
     if (p[2] == "disp") o = {text, OutputKind::Displacement, p[0], o.axis, false};
     else if (p[2] == "vel") o = {text, OutputKind::Velocity, p[0], o.axis, false};
@@ -73,7 +80,7 @@ void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, con
     return std::find(points.begin(), points.end(), p) != points.end() ? "" : "unknown point '" + p + "'" + how;
   };
   for (const auto& i : in) {
-    if (i.kind == InputKind::PointForce && !problem(i.target).empty())
+    if ((i.kind == InputKind::PointForce || i.kind == InputKind::PointMoment) && !problem(i.target).empty())
       throw UsageError("--input " + i.name + ": " + problem(i.target));
     if (i.kind != InputKind::JointTorque) continue;
     const JointSpec* j = scene.article.findJoint(i.target);

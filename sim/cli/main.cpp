@@ -142,9 +142,11 @@ CLI::App* addSweepCommand(CLI::App& app, SweepArgs& sw) {
 std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin) {
   auto addLinear = [&](CLI::App* cmd) {
     addSceneOptions(cmd, lin);
-    cmd->add_option("--input", lin.inputs, "table_x, table_y, table_z (spatial model), torque:JOINT, force:POINT:x|y|z (default: table_x, table_y)");
+    cmd->add_option("--input", lin.inputs, "table_x, table_y, table_z (spatial model), torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz (default: "
+                    "table_x, table_y)");
     cmd->add_option("--output", lin.outputs,
-                    "POINT:x|y|z[:disp|vel|acc|acc_abs] (z: spatial model; default: every link tip, absolute acceleration)");
+                    "POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] (z, rx, ry: spatial model; default: every link tip, absolute "
+                    "acceleration)");
     cmd->add_option("--from", lin.f_min, "Lowest frequency, Hz")->capture_default_str();
     cmd->add_option("--to", lin.f_max, "Highest frequency, Hz")->capture_default_str();
     cmd->add_option("--points", lin.points, "Log-spaced frequencies")->capture_default_str()->check(CLI::Range(2, 100000));

@@ -156,7 +156,8 @@ void stampNow(uff::File& file) {
 void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
                   const std::vector<Eigen::MatrixXcd>& h, std::map<std::string, int>& label, uff::File& file) {
   const StateSpace& s = lm.full;
-  const int spec_out[] = {8, 11, 12}, spec_in[] = {12, 0, 13};  // displacement, velocity, acceleration; force
+  // displacement, velocity, acceleration; table acceleration, joint torque, force, moment
+  const int spec_out[] = {8, 11, 12}, spec_in[] = {12, 0, 13, 13};
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
     for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
       const OutputSpec& out = lm.outputs[o];
@@ -172,11 +173,12 @@ void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::v
       fn.reference_node = in.kind == InputKind::BaseAcceleration ? label.at(kBaseNode) : label.at(in.target);
       fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis + 1;
       fn.ordinate_type = spec_out[static_cast<int>(out.kind)];
-      fn.ordinate_length_exp = 1;
+      fn.ordinate_length_exp = isRotationAxis(out.axis) ? 0 : 1;  // rad: no length
       fn.ordinate_label = s.output_names[o];
       fn.ordinate_units = s.output_units[o];
       fn.denominator_type = spec_in[static_cast<int>(in.kind)];
-      fn.denominator_length_exp = in.kind == InputKind::BaseAcceleration ? 1 : in.kind == InputKind::JointTorque ? 1 : 0;
+      fn.denominator_length_exp =
+          in.kind == InputKind::BaseAcceleration || in.kind == InputKind::JointTorque || in.kind == InputKind::PointMoment ? 1 : 0;
       fn.denominator_force_exp = in.kind == InputKind::BaseAcceleration ? 0 : 1;
       fn.denominator_label = s.input_names[i];
       fn.denominator_units = s.input_units[i];
@@ -212,7 +214,7 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
   std::vector<std::string> used;
   for (const auto& out : lm.outputs) used.push_back(out.point);
   for (const auto& in : lm.inputs)
-    if (in.kind == InputKind::PointForce) used.push_back(in.target);
+    if (in.kind == InputKind::PointForce || in.kind == InputKind::PointMoment) used.push_back(in.target);
   for (const auto& name : used) {
     std::string error;
     if (label.count(name)) continue;
@@ -239,6 +241,11 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
   }
   const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
   const std::size_t d = model.isSpatial() ? 3 : 2;
+  // 6 DOF per node: each point's body rotation too (about z only on the planar model).
+  std::vector<SimTK::MobilizedBodyIndex> bodies;
+  for (const auto& p : model.getPoints()) bodies.push_back(p.mobod);
+  const Eigen::MatrixXd Jp = model.calcFrameJacobians(st, bodies, std::vector<SimTK::Vec3>(bodies.size(), SimTK::Vec3(0)),
+                                                      lm.solved.linearized.dofs);
   const ModalSolution& modes = lm.solved.modes;
   const int count = std::min<int>(kLinearModelModes, static_cast<int>(modes.omega2.size()));
   const ModalDamping damping = modalDamping(model, lm.solved.linearized, modes, lm.damping, count);
@@ -248,10 +255,11 @@ std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::
     m.frequency_hz = modes.frequencyHz(k);
     m.modal_mass = 1.0;
     m.damping_ratio = k < static_cast<int>(damping.ratio.size()) ? damping.ratio[k] : 0.0;
-    const Eigen::VectorXd u = P * modes.shapes.col(k);
+    const Eigen::VectorXd u = P * modes.shapes.col(k), w = Jp * modes.shapes.col(k);
     for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
       m.nodes.push_back(static_cast<int>(p) + 1);
       m.translations.push_back({u[d * p], u[d * p + 1], d == 3 ? u[d * p + 2] : 0.0});
+      m.rotations.push_back({w[6 * p], w[6 * p + 1], w[6 * p + 2]});
     }
     file.modes.push_back(m);
   }

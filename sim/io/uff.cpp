@@ -65,12 +65,17 @@ std::string write(const File& file) {
     begin(os, 55);
     os << a80("mode " + std::to_string(m.mode)) << '\n' << a80(file.model_name) << '\n' << a80("NONE") << '\n'
        << a80("NONE") << '\n' << a80("NONE") << '\n';
-    // structural model, normal modes, 3 DOF global translation, displacement, real, 3 values
-    os << strf("%10d%10d%10d%10d%10d%10d\n", 1, 2, 2, 8, 2, 3);
+    // structural model, normal modes, 3 DOF global translation (or 6 DOF global
+    // translation and rotation), displacement, real, 3 (6) values per node
+    const bool six = !m.rotations.empty();
+    os << strf("%10d%10d%10d%10d%10d%10d\n", 1, 2, six ? 3 : 2, 8, 2, six ? 6 : 3);
     os << strf("%10d%10d%10d%10d\n", 2, 4, 1, m.mode);
     os << strf("%13.5E%13.5E%13.5E%13.5E\n", m.frequency_hz, m.modal_mass, m.damping_ratio, 0.0);
-    for (std::size_t i = 0; i < m.nodes.size(); ++i)
-      os << strf("%10d\n%13.5E%13.5E%13.5E\n", m.nodes[i], m.translations[i][0], m.translations[i][1], m.translations[i][2]);
+    for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+      os << strf("%10d\n%13.5E%13.5E%13.5E", m.nodes[i], m.translations[i][0], m.translations[i][1], m.translations[i][2]);
+      if (six) os << strf("%13.5E%13.5E%13.5E", m.rotations[i][0], m.rotations[i][1], m.rotations[i][2]);
+      os << '\n';
+    }
     end(os);
   }
   for (const auto& fn : file.functions) {

@@ -1,7 +1,7 @@
 #pragma once
 /// Universal File Format (ASCII) export for test-analysis tools (SDRC record formats,
 /// fixed-width FORTRAN fields): 151 header, 164 units (SI), 15 nodes, 82 trace lines,
-/// 55 mode shapes (normal modes, 3 translations per node), 58 functions (FRF, function
+/// 55 mode shapes (normal modes, 3 translations per node, or 6 DOF with the rotations), 58 functions (FRF, function
 /// type 4, or transmissibility, type 5; complex double ordinate over an uneven
 /// frequency abscissa). (sim/io/uff_read.hpp reads them, and what acquisition software writes.)
 
@@ -28,6 +28,9 @@ struct ModeShape {
   double frequency_hz = 0, modal_mass = 0, damping_ratio = 0;
   std::vector<int> nodes;
   std::vector<std::array<double, 3>> translations;  ///< per node, m per unit modal coordinate.
+  /// Per node, rad per unit modal coordinate about x, y, z (6 DOF per node: data
+  /// characteristic 3); empty: translations only (characteristic 2).
+  std::vector<std::array<double, 3>> rotations;
   /// Complex modes (read from analysis type 3 or complex data): the imaginary parts,
   /// per node; empty for a real (normal) mode.
   std::vector<std::array<double, 3>> translations_imag;

@@ -252,6 +252,7 @@ void read55(Cursor& c, File& file) {
     m.nodes.push_back(node);
     m.translations.push_back(re);
     if (complex_data) m.translations_imag.push_back(im);
+    if (ndv == 6 && !complex_data) m.rotations.push_back({v[3], v[4], v[5]});  // a complex mode's rotations are not kept
   }
   file.modes.push_back(m);
 }

@@ -45,14 +45,19 @@ Eigen::MatrixXd baseCoupling(const Model& model, const SimTK::State& st, const s
   return Mqb;
 }
 
-/// The Jacobian row of a named point's (or a station's) translation along world axis `axis`, over the DOFs.
+/// The Jacobian row of a named point's (or a station's) translation along world axis
+/// `axis` (0..2), or its rotation about world axis axis - 3 (3..5), over the DOFs.
 Eigen::RowVectorXd pointRow(const ArticleScene& scene, const Model& model, const SimTK::State& st,
                             const std::vector<int>& dofs, const std::string& point, int axis, const std::string& what) {
   std::string error;
   const std::optional<PointRef> p = PointRef::resolve(model, scene.article, point, error);
   if (!p) throw SceneError(scene.source + ": " + what + ": " + error);
+  if (isRotationAxis(axis)) return Eigen::RowVectorXd(p->rotationJacobian(st, dofs).row(axis - 3));
   return Eigen::RowVectorXd(p->translationJacobian(st, dofs, 3).row(axis));
 }
+
+/// Whether `axis` leaves the plane of motion: z, and the rotations about x and y.
+bool outOfPlane(int axis) { return axis == 2 || axis == 3 || axis == 4; }
 
 /// The generalized force over the DOFs per unit of input `in`.
 Eigen::VectorXd inputForce(const ArticleScene& scene, const Model& model, const SimTK::State& st,
@@ -61,7 +66,9 @@ Eigen::VectorXd inputForce(const ArticleScene& scene, const Model& model, const 
   Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
   switch (in.kind) {
     case InputKind::BaseAcceleration: return -Mqb.col(in.axis);
-    case InputKind::PointForce: return pointRow(scene, model, st, dofs, in.target, in.axis, "input " + in.name).transpose();
+    case InputKind::PointForce:
+    case InputKind::PointMoment:  // J_v^T f, or J_w^T m
+      return pointRow(scene, model, st, dofs, in.target, in.axis, "input " + in.name).transpose();
     case InputKind::JointTorque: {
       int row = -1;
       for (int a = 0; a < n; ++a)
@@ -111,15 +118,16 @@ void outputMatrices(const ArticleScene& scene, const Model& model, const SimTK::
 /// Names and units of the inputs, outputs and states.
 void nameSignals(const Model& model, const LinearizedModel& lin, const std::vector<InputSpec>& inputs,
                  const std::vector<OutputSpec>& outputs, StateSpace& ss) {
-  const char* in_units[] = {"m/s^2", "N*m", "N"};
+  const char* in_units[] = {"m/s^2", "N*m", "N", "N*m"};
   for (const auto& in : inputs) {
     ss.input_names.push_back(in.name);
     ss.input_units.push_back(in_units[static_cast<int>(in.kind)]);
   }
   const char* out_units[] = {"m", "m/s", "m/s^2"};
+  const char* rotation_units[] = {"rad", "rad/s", "rad/s^2"};
   for (const auto& out : outputs) {
     ss.output_names.push_back(out.name);
-    ss.output_units.push_back(out_units[static_cast<int>(out.kind)]);
+    ss.output_units.push_back((isRotationAxis(out.axis) ? rotation_units : out_units)[static_cast<int>(out.kind)]);
   }
   const bool open = lin.G.rows() == 0;
   const int nz = static_cast<int>(lin.Z.cols());
@@ -173,12 +181,15 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   symmetrize(lm.Cz);
   SimTK::State st = lm.solved.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
+  const char* axis_names[] = {"z", "z", "z", "rx", "ry"};
   for (const auto& in : inputs)
-    if (in.kind != InputKind::JointTorque && in.axis == 2 && !model.isSpatial())
-      throw UsageError("input " + in.name + ": z is out of the plane, where the planar model does not move (model: spatial)");
+    if (in.kind != InputKind::JointTorque && outOfPlane(in.axis) && !model.isSpatial())
+      throw UsageError("input " + in.name + ": " + axis_names[in.axis] +
+                       " is out of the plane, where the planar model does not move (model: spatial)");
   for (const auto& out : outputs)
-    if (out.axis == 2 && !model.isSpatial())
-      throw UsageError("output " + out.name + ": z is out of the plane, where the planar model does not move (model: spatial)");
+    if (outOfPlane(out.axis) && !model.isSpatial())
+      throw UsageError("output " + out.name + ": " + axis_names[out.axis] +
+                       " is out of the plane, where the planar model does not move (model: spatial)");
   const Eigen::MatrixXd Mqb = baseCoupling(model, st, dofs);
   lm.Bq = Eigen::MatrixXd::Zero(Z.cols(), inputs.size());
   for (std::size_t k = 0; k < inputs.size(); ++k)

@@ -11,8 +11,10 @@
 /// Inputs (units): base acceleration of the table in x or y (m/s^2), entering as the
 /// inertial load -M_qb b'' with M_qb = sum_b J_b^T m_b e (the mass coupling of a rigid
 /// base translation); torque at a joint that is a degree of freedom (N*m); force at a
-/// named point along x or y (N). Outputs: displacement (m), velocity (m/s) or
-/// acceleration (m/s^2) of a named point along x or y, relative to the base or absolute
+/// named point along x, y or z (N); a moment at a named point about x, y or z (N*m:
+/// J_w^T m). Outputs: displacement (m), velocity (m/s) or acceleration (m/s^2) of a
+/// named point along x, y or z, or its rotation (rad, rad/s, rad/s^2) about x, y or z
+/// (z and the rotations out of the plane on the spatial model), relative to the base or absolute
 /// (absolute adds the base motion: for an acceleration output, D gains the base
 /// acceleration input itself). Absolute acceleration over base acceleration is the
 /// transmissibility.
@@ -31,22 +33,28 @@
 
 namespace mmv {
 
-enum class InputKind { BaseAcceleration, JointTorque, PointForce };
+enum class InputKind { BaseAcceleration, JointTorque, PointForce, PointMoment };
 enum class OutputKind { Displacement, Velocity, Acceleration };
 
 struct InputSpec {
   std::string name;
   InputKind kind = InputKind::BaseAcceleration;
-  std::string target;  ///< joint (torque) or point (force); unused for the base.
-  int axis = 0;        ///< 0: x, 1: y (base and force).
+  std::string target;  ///< joint (torque) or point (force, moment); unused for the base.
+  /// 0, 1, 2: along world x, y, z (base and force); 3, 4, 5: about world x, y, z (moment).
+  int axis = 0;
 };
+
+/// Axes 3..5 of inputs and outputs are rotations about world x, y, z.
+inline bool isRotationAxis(int axis) { return axis >= 3; }
 
 struct OutputSpec {
   std::string name;
   OutputKind kind = OutputKind::Displacement;
   std::string point;
-  int axis = 0;           ///< 0: x, 1: y.
-  bool absolute = false;  ///< add the base's own motion.
+  /// 0, 1, 2: translation along world x, y, z (m, m/s, m/s^2); 3, 4, 5: rotation about
+  /// world x, y, z (rad, rad/s, rad/s^2: the point's body's, or a station's interpolated).
+  int axis = 0;
+  bool absolute = false;  ///< add the base's own motion (the base translates only).
 };
 
 

@@ -146,6 +146,12 @@ Eigen::MatrixXd StationPoint::translationJacobian(const SimTK::State& s, const s
   return P.topRows(rows);
 }
 
+Eigen::MatrixXd StationPoint::rotationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const {
+  const Eigen::MatrixXd J = model_->calcFrameJacobians(s, {a_.left, a_.right, b_.left, b_.right},
+                                                       std::vector<SimTK::Vec3>(4, SimTK::Vec3(0)), dofs);
+  return 0.5 * (1 - xi_) * (J.middleRows(0, 3) + J.middleRows(6, 3)) + 0.5 * xi_ * (J.middleRows(12, 3) + J.middleRows(18, 3));
+}
+
 std::optional<PointRef> PointRef::resolve(const Model& model, const ArticleSpec& article, const std::string& name,
                                           std::string& error) {
   PointRef r(model, name);
@@ -210,6 +216,11 @@ Eigen::MatrixXd PointRef::translationJacobian(const SimTK::State& s, const std::
   if (station_) return station_->translationJacobian(s, dofs, rows);
   const Eigen::MatrixXd J = model_->calcFrameJacobians(s, {point_->mobod}, {point_->station_B}, dofs);
   return J.middleRows(3, rows);
+}
+
+Eigen::MatrixXd PointRef::rotationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const {
+  if (station_) return station_->rotationJacobian(s, dofs);
+  return model_->calcFrameJacobians(s, {point_->mobod}, {point_->station_B}, dofs).topRows(3);
 }
 
 }  // namespace mmv

@@ -50,6 +50,9 @@ class StationPoint {
   /// d p / d q for the coordinates `dofs`: rows x and y (m per unit coordinate), and z
   /// when rows = 3 (the spatial model).
   Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows = 2) const;
+  /// d w / d u for the coordinates `dofs` (3 rows: world x, y, z; rad per unit
+  /// coordinate): angularVelocity()'s, the nodes' pieces' interpolated alike.
+  Eigen::MatrixXd rotationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const;
 
  private:
   struct Node {
@@ -90,6 +93,9 @@ class PointRef {
   SimTK::Vec3 localAxis(const SimTK::State& s, int axis) const;
   /// Rows x, y (and z when rows = 3).
   Eigen::MatrixXd translationJacobian(const SimTK::State& s, const std::vector<int>& dofs, int rows = 2) const;
+  /// The angular velocity's rows (world x, y, z) per unit rate of `dofs`: the point's
+  /// body's, or a station's interpolated one (StationPoint::rotationJacobian).
+  Eigen::MatrixXd rotationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const;
 
  private:
   PointRef(const Model& model, std::string name) : model_(&model), name_(std::move(name)) {}

@@ -142,7 +142,9 @@ TEST(UffRead, ModesNormalComplexAndWithRotations) {
   EXPECT_EQ(file.modes[0].mode, 4);
   EXPECT_NEAR(file.modes[0].frequency_hz, 12.5, 1e-9);
   EXPECT_NEAR(file.modes[0].damping_ratio, 0.02, 1e-9);
-  EXPECT_NEAR(file.modes[0].translations[0][1], -0.2, 1e-9);  // rotations dropped
+  EXPECT_NEAR(file.modes[0].translations[0][1], -0.2, 1e-9);
+  ASSERT_EQ(file.modes[0].rotations.size(), 1u);  // the rotations kept
+  EXPECT_NEAR(file.modes[0].rotations[0][2], 9.0, 1e-9);
   EXPECT_TRUE(file.modes[0].translations_imag.empty());
   EXPECT_NEAR(file.modes[1].frequency_hz, 4.0, 1e-4);
   EXPECT_NEAR(file.modes[1].damping_ratio, 0.05, 1e-5);

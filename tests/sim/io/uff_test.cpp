@@ -27,7 +27,10 @@ uff::File sample() {
   m.damping_ratio = 0.01;
   m.nodes = {1, 2, 17};
   m.translations = {{{0, 0, 0}}, {{-0.123456, 7.8e-9, 0}}, {{1e3, -2.5, 0}}};
-  f.modes = {m};
+  uff::ModeShape six = m;  // 6 DOF per node: the rotations too
+  six.mode = 4;
+  six.rotations = {{{0, 0, 1.5}}, {{-2e-3, 4.25, 0}}, {{0, -7.5e-8, 3}}};
+  f.modes = {m, six};
   uff::Function fn;
   fn.function_type = 5;
   fn.id1 = "link3a.tip:x / table_x";
@@ -62,14 +65,21 @@ TEST(Uff, RoundTripOfEveryDataset) {
   ASSERT_EQ(b.trace_lines.size(), 1u);
   EXPECT_EQ(b.trace_lines[0].nodes, a.trace_lines[0].nodes);
   EXPECT_EQ(b.trace_lines[0].id, "link1");
-  ASSERT_EQ(b.modes.size(), 1u);
+  ASSERT_EQ(b.modes.size(), 2u);
   EXPECT_EQ(b.modes[0].mode, 3);
   EXPECT_NEAR(b.modes[0].frequency_hz, 3.3403, 1e-9);
-  EXPECT_EQ(b.modes[0].nodes, a.modes[0].nodes);
+  EXPECT_TRUE(b.modes[0].rotations.empty());
+  for (int n = 0; n < 2; ++n) {
+    EXPECT_EQ(b.modes[n].nodes, a.modes[n].nodes);
+    for (std::size_t i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(b.modes[n].translations[i][k], a.modes[n].translations[i][k],
+                    5e-6 * std::abs(a.modes[n].translations[i][k]) + 1e-300);
+  }
+  ASSERT_EQ(b.modes[1].rotations.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k)
-      EXPECT_NEAR(b.modes[0].translations[i][k], a.modes[0].translations[i][k],
-                  5e-6 * std::abs(a.modes[0].translations[i][k]) + 1e-300);
+      EXPECT_NEAR(b.modes[1].rotations[i][k], a.modes[1].rotations[i][k], 5e-6 * std::abs(a.modes[1].rotations[i][k]) + 1e-300);
   ASSERT_EQ(b.functions.size(), 1u);
   const auto& fa = a.functions[0];
   const auto& fb = b.functions[0];
@@ -97,7 +107,9 @@ TEST(Uff, FixedWidthLayout) {
   for (std::size_t i = 0; i + 1 < l.size(); ++i)
     if (l[i] == "    -1" && l[i + 1].size() == 80 && l[i + 1].substr(6).find_first_not_of(' ') == std::string::npos)
       starts[std::stoi(l[i + 1].substr(0, 6))].push_back(i + 2);
-  for (int ds : {151, 164, 15, 82, 55, 58}) ASSERT_EQ(starts.count(ds), 1u) << ds;
+  for (int ds : {151, 164, 15, 82, 58}) ASSERT_EQ(starts.count(ds), 1u) << ds;
+  ASSERT_EQ(starts.count(55), 1u);
+  ASSERT_EQ(starts[55].size(), 2u);  // translations only, then 6 DOF
   for (const auto& s : l) EXPECT_LE(s.size(), 80u) << s;
   const std::size_t h = starts[151][0];
   for (int k : {0, 1, 2, 5}) EXPECT_EQ(l[h + k].size(), 80u);                 // 80A1
@@ -122,6 +134,9 @@ TEST(Uff, FixedWidthLayout) {
   EXPECT_EQ(l[m + 7].size(), 52u);                                           // 6E13.5 (4 used)
   EXPECT_EQ(l[m + 8].size(), 10u);                                           // I10 node
   EXPECT_EQ(l[m + 9].size(), 39u);                                           // 6E13.5 (3 used)
+  const std::size_t six = starts[55][1];
+  EXPECT_EQ(l[six + 5], "         1         2         3         8         2         6");  // 6 DOF global, 6 values
+  EXPECT_EQ(l[six + 9].size(), 78u);                                         // 6E13.5
   const std::size_t f = starts[58][0];
   EXPECT_EQ(l[f + 5].size(), 80u);                                           // 2(I5,I10),2(1X,10A1,I10,I4)
   EXPECT_EQ(l[f + 5].substr(0, 5), "    5");                                 // function type: transmissibility
