@@ -143,6 +143,23 @@ TEST(Check, HangingArticleDepthAgainstTheLab) {
   EXPECT_EQ(find(runCheck(s), "depth below the platform's top")->verdict, Verdict::Fail);
 }
 
+// The platform's hole is square in x and z: on the spatial model a link that rises into
+// it tilted out of the plane is judged by its offset along z too. A rigid 1.2 m link
+// pointing up, tilted 60 deg toward +z, puts its tip 1.2 sin 60 = 1.04 m off the hole's
+// centre along z (beyond the 0.76 m half-side: fail); tilted 20 deg, 0.41 m (pass).
+TEST(Check, TheLabsHoleSeesOffsetsOutOfThePlane) {
+  for (const double tilt_deg : {60.0, 20.0}) {
+    ArticleScene s = testing::cantileverScene(rigidBeam(), 1, kG, 90.0, 0, true);
+    s.lab = facility::LabSpec{};
+    s.article.model = ArticleModel::Spatial;
+    s.article.links[0].tilt = tilt_deg * M_PI / 180;
+    const CheckLine* hole = find(runCheck(s), "points above the platform's underside within the hole");
+    ASSERT_NE(hole, nullptr);
+    EXPECT_NEAR(hole->demand, rigidBeam().length * std::sin(tilt_deg * M_PI / 180), 1e-9) << tilt_deg;
+    EXPECT_EQ(hole->verdict, tilt_deg > 40 ? Verdict::Fail : Verdict::Pass) << tilt_deg;
+  }
+}
+
 TEST(Check, ClosedTreeIsCheckedAtItsConfigurationAndSaysSo) {
   const ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-closed.yaml");
   const CheckReport r = runCheck(s);
