@@ -250,21 +250,18 @@ TEST(SceneYaml, SpatialModelReadsShearModulusAndBranchesOutOfThePlane) {
 // material needs no shear modulus; a spatial link makes the article spatial, and the
 // links without a model of their own keep the scene's.
 TEST(SceneYaml, EachLinkMayChooseItsModel) {
-  const ArticleScene planar_link = parseArticle(
-      replaceLine(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spatial"),
-                  "    segments: 4\n", "    segments: 4\n    model: planar\n"),
-      "s.yaml");
-  EXPECT_EQ(planar_link.article.model, ArticleModel::Spatial);
-  EXPECT_FALSE(planar_link.article.bendsOutOfPlane(*planar_link.article.findLink("l1")));
-  EXPECT_TRUE(planar_link.article.bendsOutOfPlane(*planar_link.article.findLink("l2b")));
-  const ArticleScene spatial_link = parseArticle(
-      replaceLine(replaceLine(kGood, "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.3}"),
-                  "    segments: 4\n", "    segments: 4\n    model: spatial\n"),
-      "s.yaml");
-  EXPECT_EQ(spatial_link.article.model, ArticleModel::Spatial);
-  EXPECT_TRUE(spatial_link.article.bendsOutOfPlane(*spatial_link.article.findLink("l1")));
-  EXPECT_FALSE(spatial_link.article.bendsOutOfPlane(*spatial_link.article.findLink("l2a")));
-  EXPECT_FALSE(spatial_link.article.bendsOutOfPlane(*spatial_link.article.findLink("l2b")));
+  // The scene with link l1's own model and one other edit; which links bend out of the plane.
+  const auto bending = [](const std::string& l1_model, const std::string& from, const std::string& to) {
+    const ArticleScene s = parseArticle(
+        replaceLine(replaceLine(kGood, from, to), "    segments: 4\n", "    segments: 4\n    model: " + l1_model + "\n"),
+        "s.yaml");
+    EXPECT_EQ(s.article.model, ArticleModel::Spatial);
+    std::string out;
+    for (const char* l : {"l1", "l2a", "l2b"}) out += s.article.bendsOutOfPlane(*s.article.findLink(l)) ? 'S' : 'P';
+    return out;
+  };
+  EXPECT_EQ(bending("planar", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spatial"), "PSS");
+  EXPECT_EQ(bending("spatial", "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.3}"), "SPP");
 }
 
 TEST(SceneYaml, JointRangeWidensWhenTheSceneSaysSo) {
