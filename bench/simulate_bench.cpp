@@ -8,7 +8,9 @@
 
 #include <cmath>
 
+#include "sim/model/article_builder.hpp"
 #include "sim/modes/system_modes.hpp"
+#include "sim/scene/scene.hpp"
 #include "sim/time/simulation.hpp"
 
 namespace {
@@ -60,5 +62,42 @@ void BM_TargetErrorSlew(benchmark::State& st) {
   st.SetLabel(t.attempts.back().integrator);
 }
 BENCHMARK(BM_TargetErrorSlew)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+// What one right-hand side costs on the slew scene's model (8 segments per link), and
+// what a link carried by K modal coordinates (issue 12: q = T p, T constant) would need
+// in its place: the reduced mass T^T M T (Simbody's M, n x n, then the product) and the
+// generalized forces T^T (f - c) by one inverse-dynamics pass. Arg: 0 the full right-hand
+// side (realize to Acceleration), 1 M alone, 2 the inverse-dynamics pass alone, 3 eight
+// products M v (the reduced mass of 8 modal coordinates by columns, O(n) each).
+void BM_RightHandSideParts(benchmark::State& st) {
+  const mmv::ArticleScene s =
+      std::get<mmv::ArticleScene>(mmv::loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml"));
+  const auto model = mmv::buildArticleModel(s);
+  const auto& sys = model->getSystem();
+  const auto& matter = model->getMatter();
+  SimTK::State state = model->getReferenceState();
+  for (int i = 0; i < state.getNU(); ++i) state.updU()[i] = 0.1 * std::sin(1.0 + i);
+  SimTK::Matrix M;
+  SimTK::Vector udot(state.getNU(), 0.0), tau, Mv;
+  const SimTK::Vector_<SimTK::SpatialVec> no_body_forces(matter.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
+  const SimTK::Vector no_mobility_forces(state.getNU(), 0.0);
+  for (auto _ : st) {
+    state.invalidateAllCacheAtOrAbove(SimTK::Stage::Position);
+    if (st.range(0) == 0) {
+      sys.realize(state, SimTK::Stage::Acceleration);
+    } else {
+      sys.realize(state, SimTK::Stage::Velocity);
+      if (st.range(0) == 1) matter.calcM(state, M);
+      else if (st.range(0) == 2) matter.calcResidualForceIgnoringConstraints(state, no_mobility_forces, no_body_forces, udot, tau);
+      else
+        for (int k = 0; k < 8; ++k) matter.multiplyByM(state, udot, Mv);
+    }
+    benchmark::ClobberMemory();
+  }
+  st.counters["mobilities"] = state.getNU();
+  const char* labels[] = {"full rhs", "mass matrix", "inverse dynamics", "8 x M v"};
+  st.SetLabel(labels[st.range(0)]);
+}
+BENCHMARK(BM_RightHandSideParts)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
