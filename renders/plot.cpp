@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
@@ -251,14 +252,20 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
                                                    : colourFor(0.85 * double(k) / (series.size() - 1));
     // Dashes of 8 px with 6 px gaps along the whole polyline (a pattern restarted per
     // segment would draw a dense curve solid): `phase` is the distance into the pattern.
+    if (!s.dashed && !s.markers_only) {
+      std::vector<std::optional<Pixel>> pts;
+      pts.reserve(s.x.size());
+      for (std::size_t i = 0; i < s.x.size(); ++i)
+        pts.push_back(usable(s.x[i], s.y[i]) ? std::optional<Pixel>(Pixel{px(s.x[i]), py(s.y[i])}) : std::nullopt);
+      const auto line = columnEnvelope(pts);
+      for (std::size_t i = 1; i < line.size(); ++i)
+        if (line[i - 1] && line[i])
+          cv::line(img, {line[i - 1]->x, line[i - 1]->y}, {line[i]->x, line[i]->y}, colour, 2, cv::LINE_AA);
+    }
     double phase = 0;
-    for (std::size_t i = 1; i < s.x.size() && !s.markers_only; ++i) {
+    for (std::size_t i = 1; i < s.x.size() && !s.markers_only && s.dashed; ++i) {
       if (!usable(s.x[i - 1], s.y[i - 1]) || !usable(s.x[i], s.y[i])) continue;
       const cv::Point2d a(px(s.x[i - 1]), py(s.y[i - 1])), b(px(s.x[i]), py(s.y[i]));
-      if (!s.dashed) {
-        cv::line(img, a, b, colour, 2, cv::LINE_AA);
-        continue;
-      }
       const double len = std::hypot(b.x - a.x, b.y - a.y);
       for (double d = 0; d < len;) {
         const double in = std::fmod(phase + d, 14.0), step = std::min(len - d, in < 8 ? 8 - in : 14 - in);
@@ -335,6 +342,30 @@ void writeBodePng(const std::string& path, const std::vector<BodeTrace>& traces,
             false, markers, false);
   if (!markers.empty()) text(img, "dotted: model modes 1, 2, ...", {width - right + 15, 50 + 22 * static_cast<int>(traces.size()) + 20}, 0.4);
   save(path, img);
+}
+
+// A solid polyline's pixels (integers) with each pixel column's run of points
+/// reduced to its first, lowest, highest and last (in their order): a 10^5-sample time
+/// run draws as a few thousand segments with the same envelope. nullopt breaks the line.
+std::vector<std::optional<Pixel>> columnEnvelope(const std::vector<std::optional<Pixel>>& pts) {
+  std::vector<std::optional<Pixel>> out;
+  std::size_t i = 0;
+  while (i < pts.size()) {
+    if (!pts[i]) {  // a break (several in a row are one)
+      if (!out.empty() && out.back()) out.push_back(std::nullopt);
+      ++i;
+      continue;
+    }
+    std::size_t j = i, lo = i, hi = i;
+    for (; j < pts.size() && pts[j] && pts[j]->x == pts[i]->x; ++j) {
+      if (pts[j]->y < pts[lo]->y) lo = j;
+      if (pts[j]->y > pts[hi]->y) hi = j;
+    }
+    for (std::size_t k : {i, std::min(lo, hi), std::max(lo, hi), j - 1})
+      if (out.empty() || !out.back() || !(*out.back() == *pts[k])) out.push_back(pts[k]);
+    i = j;
+  }
+  return out;
 }
 
 }  // namespace mmv::render

@@ -3,6 +3,7 @@
 /// x-y line plots for frequency maps. Plain data in, a file out; throws
 /// std::runtime_error if the file cannot be written.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,16 @@ struct Series {
   bool hollow = false;        ///< markers as rings (e.g. points that failed a check), drawn over filled ones.
   std::vector<std::string> point_labels;  ///< optional, one per point: a small label beside its marker.
 };
+
+/// A solid polyline's pixels with each pixel column's run of points reduced to its
+/// first, lowest, highest and last, in their order (nullopt breaks the line): what
+/// writeLinePlotPng draws, so a 10^5-sample time run costs a few thousand segments and
+/// keeps its envelope.
+struct Pixel {
+  int x = 0, y = 0;
+  bool operator==(const Pixel& o) const { return x == o.x && y == o.y; }
+};
+std::vector<std::optional<Pixel>> columnEnvelope(const std::vector<std::optional<Pixel>>& pts);
 
 /// Line plot of several series with axes, ticks, labels and a legend.
 void writeLinePlotPng(const std::string& path, const std::vector<Series>& series, const std::string& title,

@@ -1,9 +1,11 @@
 #include "sim/io/simulation_report.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
 #include "facility/table_programs.hpp"
+#include "sim/core/errors.hpp"
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
@@ -194,14 +196,25 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
 }
 
 std::string simulationHistoryCsv(const SimulationRecord& rec) {
-  std::ostringstream os;
-  for (std::size_t c = 0; c < rec.columns.size(); ++c) os << (c ? "," : "") << csvColumnName(rec.columns[c]);
-  os << '\n';
+  std::string out;
+  for (std::size_t c = 0; c < rec.columns.size(); ++c) out += (c ? "," : "") + csvColumnName(rec.columns[c]);
+  out += '\n';
+  // std::to_chars in the style of printf's %.10g (the standard's words), without
+  // printf's locale and format parsing: the run's rows dominate what --out writes.
+  char buf[32];
+  std::size_t cells = 0;
+  for (const auto& row : rec.rows) cells += row.size();
+  out.reserve(out.size() + 18 * cells);
   for (const auto& row : rec.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) os << (c ? "," : "") << strf("%.10g", row[c]);
-    os << '\n';
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c) out += ',';
+      const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, row[c], std::chars_format::general, 10);
+      MMV_DEMAND(ec == std::errc());  // 10 significant digits fit in 32 characters
+      out.append(buf, end);
+    }
+    out += '\n';
   }
-  return os.str();
+  return out;
 }
 
 std::vector<std::string> simulationWarnings(const SimulationResult& r, double article_size_m) {
