@@ -153,7 +153,8 @@ TEST(Check, TheLabsHoleSeesOffsetsOutOfThePlane) {
     s.lab = facility::LabSpec{};
     s.article.model = ArticleModel::Spatial;
     s.article.links[0].tilt = tilt_deg * M_PI / 180;
-    const CheckLine* hole = find(runCheck(s), "points above the platform's underside within the hole");
+    const CheckReport report = runCheck(s);  // the line points into it
+    const CheckLine* hole = find(report, "points above the platform's underside within the hole");
     ASSERT_NE(hole, nullptr);
     EXPECT_NEAR(hole->demand, rigidBeam().length * std::sin(tilt_deg * M_PI / 180), 1e-9) << tilt_deg;
     EXPECT_EQ(hole->verdict, tilt_deg > 40 ? Verdict::Fail : Verdict::Pass) << tilt_deg;
