@@ -250,9 +250,7 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
     const cv::Scalar colour = s.colour_index >= 0  ? kQualitative[s.colour_index % kPaletteSize]
                               : series.size() <= 8 ? kQualitative[k]
                                                    : colourFor(0.85 * double(k) / (series.size() - 1));
-    // Dashes of 8 px with 6 px gaps along the whole polyline (a pattern restarted per
-    // segment would draw a dense curve solid): `phase` is the distance into the pattern.
-    if (!s.dashed && !s.markers_only) {
+    if (!s.dashed && !s.markers_only) {  // solid: each pixel column's envelope (plot.hpp)
       std::vector<std::optional<Pixel>> pts;
       pts.reserve(s.x.size());
       for (std::size_t i = 0; i < s.x.size(); ++i)
@@ -262,6 +260,8 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
         if (line[i - 1] && line[i])
           cv::line(img, {line[i - 1]->x, line[i - 1]->y}, {line[i]->x, line[i]->y}, colour, 2, cv::LINE_AA);
     }
+    // Dashes of 8 px with 6 px gaps along the whole polyline (a pattern restarted per
+    // segment would draw a dense curve solid): `phase` is the distance into the pattern.
     double phase = 0;
     for (std::size_t i = 1; i < s.x.size() && !s.markers_only && s.dashed; ++i) {
       if (!usable(s.x[i - 1], s.y[i - 1]) || !usable(s.x[i], s.y[i])) continue;
@@ -344,9 +344,8 @@ void writeBodePng(const std::string& path, const std::vector<BodeTrace>& traces,
   save(path, img);
 }
 
-// A solid polyline's pixels (integers) with each pixel column's run of points
-/// reduced to its first, lowest, highest and last (in their order): a 10^5-sample time
-/// run draws as a few thousand segments with the same envelope. nullopt breaks the line.
+// Declared in plot.hpp: each pixel column's run of points kept as its first, lowest,
+// highest and last; consecutive breaks collapse into one.
 std::vector<std::optional<Pixel>> columnEnvelope(const std::vector<std::optional<Pixel>>& pts) {
   std::vector<std::optional<Pixel>> out;
   std::size_t i = 0;

@@ -35,9 +35,8 @@ std::vector<std::string> split(const std::string& s, char sep) {
 /// x, y, z (0..2) and, where `rotations`, rx, ry, rz (3..5: about world x, y, z). Out of
 /// the plane (z, rx, ry) the spatial model only (checked with the model).
 int axisOf(const std::string& a, const std::string& what, bool translations, bool rotations) {
-  const char* names[] = {"x", "y", "z", "rx", "ry", "rz"};
   for (int k = translations ? 0 : 3; k < (rotations ? 6 : 3); ++k)
-    if (a == names[k]) return k;
+    if (a == axisName(k)) return k;
   const std::string allowed = !rotations ? "x, y or z" : !translations ? "rx, ry or rz" : "x, y, z, rx, ry or rz";
   throw UsageError(what + ": axis must be " + allowed + " (got " + a + ")");
 }

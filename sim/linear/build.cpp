@@ -56,9 +56,6 @@ Eigen::RowVectorXd pointRow(const ArticleScene& scene, const Model& model, const
   return Eigen::RowVectorXd(p->translationJacobian(st, dofs, 3).row(axis));
 }
 
-/// Whether `axis` leaves the plane of motion: z, and the rotations about x and y.
-bool outOfPlane(int axis) { return axis == 2 || axis == 3 || axis == 4; }
-
 /// The generalized force over the DOFs per unit of input `in`.
 Eigen::VectorXd inputForce(const ArticleScene& scene, const Model& model, const SimTK::State& st,
                            const std::vector<int>& dofs, const Eigen::MatrixXd& Mqb, const InputSpec& in) {
@@ -181,14 +178,13 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   symmetrize(lm.Cz);
   SimTK::State st = lm.solved.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
-  const char* axis_names[] = {"z", "z", "z", "rx", "ry"};
   for (const auto& in : inputs)
-    if (in.kind != InputKind::JointTorque && outOfPlane(in.axis) && !model.isSpatial())
-      throw UsageError("input " + in.name + ": " + axis_names[in.axis] +
+    if (in.kind != InputKind::JointTorque && leavesThePlane(in.axis) && !model.isSpatial())
+      throw UsageError("input " + in.name + ": " + axisName(in.axis) +
                        " is out of the plane, where the planar model does not move (model: spatial)");
   for (const auto& out : outputs)
-    if (outOfPlane(out.axis) && !model.isSpatial())
-      throw UsageError("output " + out.name + ": " + axis_names[out.axis] +
+    if (leavesThePlane(out.axis) && !model.isSpatial())
+      throw UsageError("output " + out.name + ": " + axisName(out.axis) +
                        " is out of the plane, where the planar model does not move (model: spatial)");
   const Eigen::MatrixXd Mqb = baseCoupling(model, st, dofs);
   lm.Bq = Eigen::MatrixXd::Zero(Z.cols(), inputs.size());

@@ -195,10 +195,9 @@ struct FrfMapping {
 
 FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes, bool spatial) {
   FrfMapping m;
-  const char* axes[] = {"x", "y", "z", "rx", "ry", "rz"};
-  // UFF directions 1..6: x, y, z, then rotations about them; the planar model moves
-  // along x, y and about z only.
-  const auto modelled = [&](int d) { return d >= 1 && d <= 6 && (spatial || d == 1 || d == 2 || d == 6); };
+  // UFF directions 1..6: x, y, z, then rotations about them (axes 0..5); the planar
+  // model moves along x, y and about z only.
+  const auto modelled = [&](int d) { return d >= 1 && d <= 6 && (spatial || !leavesThePlane(d - 1)); };
   auto station = [&](int node, const char* what) -> std::string {
     const NodePairing* n = findNode(nodes, node);
     if (!n) m.skipped = strf("its %s node %d is not defined in the file", what, node);
@@ -235,18 +234,18 @@ FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes, b
   const std::string out_point = station(f.response_node, "response");
   if (!m.skipped.empty()) return m;
   const bool absolute = base && kind == OutputKind::Acceleration;
-  m.output = OutputSpec{strf("%s:%s:%s", out_point.c_str(), axes[rd - 1], kind_name), kind, out_point, rd - 1, absolute};
+  m.output = OutputSpec{strf("%s:%s:%s", out_point.c_str(), axisName(rd - 1), kind_name), kind, out_point, rd - 1, absolute};
   if (base) {
     if (fd > 3) {
       m.skipped = strf("direction %d: the table translates only (its inputs are x, y, z)", f.reference_direction);
       return m;
     }
-    m.input = InputSpec{std::string("table_") + axes[fd - 1], InputKind::BaseAcceleration, "", fd - 1};
+    m.input = InputSpec{std::string("table_") + axisName(fd - 1), InputKind::BaseAcceleration, "", fd - 1};
   } else {
     const std::string in_point = station(f.reference_node, "reference");
     if (!m.skipped.empty()) return {std::nullopt, std::nullopt, 1, m.skipped};
     const bool moment = fd > 3;  // a force at a rotation direction is a moment
-    m.input = InputSpec{strf("%s:%s:%s", moment ? "moment" : "force", in_point.c_str(), axes[fd - 1]),
+    m.input = InputSpec{strf("%s:%s:%s", moment ? "moment" : "force", in_point.c_str(), axisName(fd - 1)),
                         moment ? InputKind::PointMoment : InputKind::PointForce, in_point, fd - 1};
   }
   return m;

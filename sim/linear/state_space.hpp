@@ -46,6 +46,13 @@ struct InputSpec {
 
 /// Axes 3..5 of inputs and outputs are rotations about world x, y, z.
 inline bool isRotationAxis(int axis) { return axis >= 3; }
+/// The axes' names as the command line and the UFF mapping write them: x, y, z, rx, ry, rz.
+inline const char* axisName(int axis) {
+  static const char* const kNames[] = {"x", "y", "z", "rx", "ry", "rz"};
+  return kNames[axis];
+}
+/// Whether `axis` leaves the plane of motion: z, and the rotations about x and y.
+inline bool leavesThePlane(int axis) { return axis == 2 || axis == 3 || axis == 4; }
 
 struct OutputSpec {
   std::string name;

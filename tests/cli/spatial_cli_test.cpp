@@ -34,6 +34,16 @@ TEST_F(Cli, ModesOnTheSpatialArticleClassifiesModesAndReportsPlanarity) {
   EXPECT_GE(p["other_modes_in_band"].size(), 4u);
   for (const auto& resp : p["responses"]) EXPECT_TRUE(resp["decoupled"].get<bool>()) << resp;
   EXPECT_TRUE(doc["modes"][1]["shape"][0].contains("uz"));
+  // A model per link: link 3 spatial, links 1 and 2 planar, said in the text and the JSON.
+  const Result mixed = run("modes --set links.link3.model=spatial --modes 4 --json --no-error-estimate");
+  ASSERT_EQ(mixed.code, 0) << mixed.err;
+  const nlohmann::json m = nlohmann::json::parse(mixed.out);
+  EXPECT_EQ(m["model"]["kind"], "spatial");
+  std::string models;
+  for (const auto& l : m["model"]["links"]) models += l["model"].get<std::string>() + " ";
+  EXPECT_EQ(models, "planar planar spatial spatial ");
+  EXPECT_NE(run("modes --set links.link3.model=spatial --modes 4").out.find("link1 16 (planar) link2 16 (planar) link3a 16 "),
+            std::string::npos);
   // The planar default reports no families and no planarity section.
   const nlohmann::json planar = nlohmann::json::parse(run("modes --json --no-error-estimate").out);
   EXPECT_EQ(planar["model"]["kind"], "planar");
