@@ -96,6 +96,10 @@ struct LinkSpec {
   double length = 0;       ///< m, > 0.
   int segments = 1;        ///< flexible elements per link (>= 1); ignored when rigid.
   bool rigid = false;      ///< one rigid body instead of a flexible chain.
+  /// Time runs: > 0 carries the link's hinges by its first `modes` modes with its root
+  /// held and the rest of the article rigid (sim/time/modal_links.hpp) instead of one
+  /// coordinate per hinge; 0: every hinge its own coordinate. At most its hinge count.
+  int modes = 0;
   double mount_angle = 0;  ///< rad, link direction relative to the joint's rotor frame.
   /// rad, the link's tilt out of the plane of motion (toward +z) about the rotor frame's
   /// in-plane normal, after mount_angle: branches spread out of the plane (spatial model).

@@ -40,6 +40,13 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
   j["accuracy"] = r.accuracy;
   j["duration_s"] = r.record.rows.empty() ? 0.0 : r.record.rows.back()[0];
   j["samples"] = r.record.rows.size();
+  if (!r.modal_links.empty()) {
+    auto links = nlohmann::ordered_json::array();
+    for (const auto& m : r.modal_links)
+      links.push_back({{"link", m.link}, {"modes", m.modes}, {"hinges", m.hinges}, {"highest_kept_hz", m.highest_kept_hz},
+                       {"first_dropped_hz", m.first_dropped_hz > 0 ? nlohmann::ordered_json(m.first_dropped_hz) : nlohmann::ordered_json(nullptr)}});
+    j["modal_links"] = links;
+  }
   auto torques = nlohmann::ordered_json::array();
   for (const auto& t : r.torques)
     torques.push_back({{"joint", t.joint},
@@ -97,6 +104,13 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
              r.realizations, isSundialsIntegrator(r.integrator) ? "right-hand sides" : "realizations",
              r.jacobians < 0 ? "Jacobians not reported" : strf("%ld Jacobians", r.jacobians).c_str(), r.stepping_seconds,
              r.output_seconds);
+  if (!r.modal_links.empty()) {
+    os << "Links in modal coordinates (root held, the rest rigid, at the start):\n";
+    for (const auto& m : r.modal_links)
+      os << strf("  %s: %d of %d modes, up to %.4g Hz%s\n", m.link.c_str(), m.modes, m.hinges, m.highest_kept_hz,
+                 m.first_dropped_hz > 0 ? strf("; the first left out %.4g Hz", m.first_dropped_hz).c_str() : " (all kept)");
+    os << "\n";
+  }
   Table t({"joint", "peak_torque_N*m", "capacity_N*m", "within"});
   for (const auto& q : r.torques)
     t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",

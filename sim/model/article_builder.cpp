@@ -1,5 +1,7 @@
 #include "sim/model/article_builder.hpp"
 
+#include <algorithm>
+
 #include "sim/core/errors.hpp"
 #include "sim/model/motions.hpp"
 #include <limits>
@@ -90,7 +92,7 @@ class Builder {
       c.held = true;  // at rest in statics and modes; driven in time runs
       model_.addCoordinate(c);
       model_.addBody(table.getMobilizedBodyIndex(), part, true);
-      if (base.motion) prescribeTableProgram(table, makeTableProgram(*base.motion));
+      if (base.motion) model_.setPrescribedAcceleration(c.mobod, prescribeTableProgram(table, makeTableProgram(*base.motion)));
       // Held in statics and modes, so what is welded to it counts as fixed there.
       ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
       if (base.motion_z) ground = buildTableZStage(*base.motion_z, table.getMobilizedBodyIndex(), part, ground);
@@ -117,11 +119,13 @@ class Builder {
  private:
   /// Holds a locked coordinate's pin at its angle (zero prescribed speed) or drives it
   /// along its slew, the slew limited to +-range.
-  static void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, double range) {
+  void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, double range) {
     if (spec) {
-      prescribeSlew(pin, makeSlew(*spec, angle, range), spec->start_time);
+      model_.setPrescribedAcceleration(pin.getMobilizedBodyIndex(),
+                                       prescribeSlew(pin, makeSlew(*spec, angle, range), spec->start_time));
     } else {
       SimTK::Motion::Steady(pin, 0.0);
+      model_.setPrescribedAcceleration(pin.getMobilizedBodyIndex(), [](double) { return 0.0; });
     }
   }
 
@@ -263,7 +267,7 @@ class Builder {
     c.held = true;
     model_.addCoordinate(c);
     model_.addBody(stage.getMobilizedBodyIndex(), part, true);
-    prescribeTableProgram(stage, makeTableProgram(motion));
+    model_.setPrescribedAcceleration(c.mobod, prescribeTableProgram(stage, makeTableProgram(motion)));
     return Frame{stage.getMobilizedBodyIndex(), on_table.X_BF, true};
   }
 
@@ -440,6 +444,8 @@ std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
   Builder(scene, *model).build();
   addLoadsAndClosures(scene.article, *model);
   model->setClosedFormForces();  // the builder adds nothing else
+  if (std::any_of(scene.article.links.begin(), scene.article.links.end(), [](const LinkSpec& l) { return l.modes > 0; }))
+    model->addReducedMotions();
   model->finalize();
   return model;
 }

@@ -1,5 +1,7 @@
 #include "sim/model/model.hpp"
 
+#include <algorithm>
+
 #include "sim/core/errors.hpp"
 #include <stdexcept>
 
@@ -121,6 +123,25 @@ const LinkAxis* Model::findLinkAxis(const std::string& link) const {
   for (const auto& a : link_axes_)
     if (a.link == link) return &a;
   return nullptr;
+}
+
+void Model::addReducedMotions() {
+  MMV_DEMAND(!finalized_ && reduced_motions_.empty());
+  std::vector<SimTK::MobilizedBodyIndex> free;
+  for (const auto& c : coords_) {
+    const auto& mb = matter_.getMobilizedBody(c.mobod);
+    if (!mb.hasMotion() && std::find(free.begin(), free.end(), c.mobod) == free.end()) free.push_back(c.mobod);
+  }
+  reduced_motions_.addTo(matter_, free, static_cast<int>(coords_.size()));  // one u per coordinate (finalize checks)
+}
+
+void Model::setPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod, std::function<double(double)> udot) {
+  prescribed_udot_[mobod] = std::move(udot);
+}
+
+const std::function<double(double)>* Model::findPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod) const {
+  const auto it = prescribed_udot_.find(mobod);
+  return it == prescribed_udot_.end() ? nullptr : &it->second;
 }
 
 void Model::finalize() {

@@ -15,11 +15,14 @@
 #include <Simbody.h>
 
 #include <Eigen/Dense>
+#include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "facility/table_programs.hpp"
+#include "sim/model/reduced_motions.hpp"
 
 namespace mmv {
 
@@ -150,6 +153,16 @@ class Model {
   /// Declares rotations about axes other than world z (the spatial article's Gimbal
   /// hinges): the closed-form stiffness then uses every rotation's own axis.
   void setSpatial() { spatial_ = true; }
+  /// Time runs in reduced coordinates (sim/time/modal_links.hpp): gives every mobilizer
+  /// no Motion drives an acceleration-level one, disabled by default
+  /// (sim/model/reduced_motions.hpp). Call before finalize.
+  void addReducedMotions();
+  /// The acceleration a one-coordinate mobilizer's Motion prescribes (the builder
+  /// registers each Motion's; runs in reduced coordinates use them).
+  void setPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod, std::function<double(double)> udot);
+  /// Registered for `mobod`, or null.
+  const std::function<double(double)>* findPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod) const;
+  const ReducedMotions& getReducedMotions() const { return reduced_motions_; }
   /// Realizes topology and builds the reference state. Call once, last.
   void finalize();
   /// Time runs of closed trees: makes every closure a Simbody constraint (a
@@ -248,6 +261,8 @@ class Model {
   bool closed_form_forces_ = false;
   bool spatial_ = false;
   bool finalized_ = false;
+  ReducedMotions reduced_motions_;
+  std::map<SimTK::MobilizedBodyIndex, std::function<double(double)>> prescribed_udot_;
 };
 
 }  // namespace mmv

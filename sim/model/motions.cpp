@@ -40,12 +40,14 @@ class TableProgramMotion : public SimTK::Motion::Custom::Implementation {
 
 }  // namespace
 
-void prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program) {
-  SimTK::Motion::Custom(mobod, new TableProgramMotion(std::move(program)));
+PrescribedAcceleration prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program) {
+  SimTK::Motion::Custom(mobod, new TableProgramMotion(program));
+  return [program](double t) { return program->acceleration(t); };
 }
 
-void prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s) {
+PrescribedAcceleration prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s) {
   SimTK::Motion::Custom(mobod, new SlewMotion(slew, start_s));
+  return [slew, start_s](double t) { return slew.at(t - start_s).acceleration; };
 }
 
 }  // namespace mmv

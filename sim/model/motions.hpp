@@ -6,6 +6,7 @@
 
 #include <Simbody.h>
 
+#include <functional>
 #include <memory>
 
 #include "facility/slews.hpp"
@@ -14,10 +15,15 @@
 
 namespace mmv {
 
-/// Prescribes a one-coordinate mobilizer's position by a program.
-void prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program);
+/// A prescribed coordinate's acceleration over time (rad/s^2 or m/s^2): what a run in
+/// reduced coordinates (sim/time/modal_links.hpp) needs without realizing Acceleration.
+using PrescribedAcceleration = std::function<double(double t)>;
 
-/// Prescribes a one-coordinate mobilizer's angle by a slew that starts at `start_s` (s).
-void prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s);
+/// Prescribes a one-coordinate mobilizer's position by a program; returns its acceleration.
+PrescribedAcceleration prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program);
+
+/// Prescribes a one-coordinate mobilizer's angle by a slew that starts at `start_s` (s);
+/// returns its acceleration.
+PrescribedAcceleration prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s);
 
 }  // namespace mmv

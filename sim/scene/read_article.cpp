@@ -63,7 +63,7 @@ class SceneParser {
     if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
     if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"));
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
-    if (top.count("views")) readViews(top.at("views"), scene);
+    if (top.count("views")) readViews(r_, top.at("views"), scene);
     if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));
     if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration, motion_mark_, "base.motion");
     if (a.base.motion_z) {
@@ -75,35 +75,13 @@ class SceneParser {
       r_.fail(out_of_plane_mark_->mark, out_of_plane_mark_->path + ": branches out of the plane need model: spatial");
     if (offset_z_mark_ && a.model != ArticleModel::Spatial)
       r_.fail(offset_z_mark_->mark, offset_z_mark_->path + ": a mass offset out of the plane needs model: spatial");
+    if (modes_mark_ && (a.model != ArticleModel::Planar || !a.closures.empty()))
+      r_.fail(modes_mark_->mark, modes_mark_->path + ": links in modal coordinates need a planar open tree (this article is " +
+                                     (a.model != ArticleModel::Planar ? "spatial)" : "closed)"));
     return scene;
   }
 
  private:
-  /// views: {NAME: {eye: [x, y, z], target: [x, y, z], up: [x, y, z], fov_deg: F}}.
-  void readViews(const YAML::Node& n, ArticleScene& scene) {
-    auto m = r_.mapping(n, "views", namesOf(n, "views"));
-    for (const auto& [name, node] : m) {
-      const std::string path = "views." + name;
-      auto v = r_.mapping(node, path, {"eye", "target", "up", "fov_deg"});
-      CameraView c;
-      c.name = name;
-      c.eye = r_.vec3(r_.require(v, node, path, "eye"), path + ".eye");
-      c.target = r_.vec3(r_.require(v, node, path, "target"), path + ".target");
-      if (v.count("up")) c.up = r_.vec3(v.at("up"), path + ".up");
-      if (v.count("fov_deg")) {
-        c.fov_deg = r_.positive(v.at("fov_deg"), path + ".fov_deg", " deg");
-        if (c.fov_deg >= 170) r_.fail(v.at("fov_deg").Mark(), path + ".fov_deg must be below 170 deg (got " + v.at("fov_deg").Scalar() + ")");
-      }
-      const Eigen::Vector3d eye(c.eye[0], c.eye[1], c.eye[2]), target(c.target[0], c.target[1], c.target[2]),
-          up(c.up[0], c.up[1], c.up[2]);
-      const Eigen::Vector3d look = target - eye;
-      if (!(look.norm() > 1e-9)) r_.fail(node.Mark(), path + ": eye and target must differ");
-      if (!(up.cross(look).norm() > 1e-9 * look.norm() * std::max(up.norm(), 1e-300)))
-        r_.fail(node.Mark(), path + ".up must not be parallel to the line of sight (or zero)");
-      scene.views.push_back(c);
-    }
-  }
-
   /// The slew the facility would make from `from` (rad) within +-range: refused here,
   /// at its key, rather than when the model is built.
   void checkSlew(const YAML::Node& n, const std::string& path, const SlewSpec& slew, double from, double range) {
@@ -121,7 +99,7 @@ class SceneParser {
   }
 
   void readMaterials(const YAML::Node& n, ArticleSpec& a) {
-    auto m = r_.mapping(n, "materials", namesOf(n, "materials"));
+    auto m = r_.mapping(n, "materials", namesOf(r_, n, "materials"));
     for (const auto& [name, node] : m) {
       const std::string path = "materials." + name;
       a.materials.push_back(readMaterial(r_, name, node, path));
@@ -166,18 +144,8 @@ class SceneParser {
   }
 
   void readSections(const YAML::Node& n, ArticleSpec& a) {
-    auto m = r_.mapping(n, "sections", namesOf(n, "sections"));
+    auto m = r_.mapping(n, "sections", namesOf(r_, n, "sections"));
     for (const auto& [name, node] : m) a.sections.push_back(readSection(r_, name, node, "sections." + name));
-  }
-
-  /// Every key of a name->item mapping is allowed; duplicates are still caught.
-  std::vector<std::string> namesOf(const YAML::Node& n, const std::string& path) {
-    if (!n.IsMap()) r_.fail(n.Mark(), path + " must be a mapping of names (got " + YamlReader::show(n) + ")");
-    std::vector<std::string> keys;
-    for (auto it = n.begin(); it != n.end(); ++it)
-      if (it->first.IsScalar()) keys.push_back(it->first.Scalar());
-    if (keys.empty()) r_.fail(n.Mark(), path + " must name at least one entry");
-    return keys;
   }
 
   /// base.gimbal: {yaw|pitch|roll: {angle_deg, slew, range_deg, torque_capacity}, ring_mass, ring_inertia}.
@@ -324,7 +292,7 @@ class SceneParser {
       const YAML::Node& ln = n[i];
       const std::string path = "links[" + std::to_string(i) + "]";
       auto m = r_.mapping(ln, path, {"name", "joint", "material", "section", "length", "segments",
-                                     "mount_angle_deg", "tip_mass", "branches", "model"});
+                                     "mount_angle_deg", "tip_mass", "branches", "model", "modes"});
       LinkSpec l;
       const YAML::Node& name = r_.require(m, ln, path, "name");
       l.name = r_.text(name, path + ".name");
@@ -353,6 +321,13 @@ class SceneParser {
       if (m.count("mount_angle_deg")) l.mount_angle = r_.number(m.at("mount_angle_deg"), path + ".mount_angle_deg") * kDegToRad;
       if (m.count("tip_mass")) l.tip_mass = readLumpedMass(r_, m.at("tip_mass"), path + ".tip_mass", offset_z_mark_);
       if (m.count("model")) l.model = readModelName(m.at("model"), path + ".model");
+      if (m.count("modes")) {
+        const YAML::Node& k = m.at("modes");
+        l.modes = r_.integer(k, path + ".modes");
+        if (l.rigid || l.modes < 1 || l.modes > l.segments)
+          r_.fail(k.Mark(), path + ".modes must be 1 to the link's " + (l.rigid ? "hinges (a rigid link has none)" : std::to_string(l.segments) + " hinges (one per segment)") + " (got " + k.Scalar() + ")");
+        modes_mark_ = Located{k.Mark(), path + ".modes"};
+      }
 
       int count = 1;
       double spread = 0;
@@ -483,6 +458,7 @@ class SceneParser {
   bool out_of_plane_ = false;                  ///< the link being read spreads its branches out of the plane.
   std::optional<Located> out_of_plane_mark_;   ///< the first such `branches.plane: out`.
   std::optional<Located> offset_z_mark_;       ///< the first lumped mass offset out of the plane.
+  std::optional<Located> modes_mark_;          ///< the last link in modal coordinates.
 };
 
 }  // namespace

@@ -2,6 +2,9 @@
 // in, for renders and the envelope check. `lab: {}` is the report's laboratory.
 #include "sim/scene/reader_util.hpp"
 
+#include <Eigen/Dense>
+#include <algorithm>
+
 namespace mmv::scene_detail {
 
 facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n) {
@@ -49,6 +52,31 @@ facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n) {
   need(lab.platform_width <= lab.floor_width, "platform_width_m",
        strf("the platform (%g m) must fit over the floor (%g m)", lab.platform_width, lab.floor_width));
   return lab;
+}
+
+/// views: {NAME: {eye: [x, y, z], target: [x, y, z], up: [x, y, z], fov_deg: F}}.
+void readViews(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) {
+  auto m = r.mapping(n, "views", namesOf(r, n, "views"));
+  for (const auto& [name, node] : m) {
+    const std::string path = "views." + name;
+    auto v = r.mapping(node, path, {"eye", "target", "up", "fov_deg"});
+    CameraView c;
+    c.name = name;
+    c.eye = r.vec3(r.require(v, node, path, "eye"), path + ".eye");
+    c.target = r.vec3(r.require(v, node, path, "target"), path + ".target");
+    if (v.count("up")) c.up = r.vec3(v.at("up"), path + ".up");
+    if (v.count("fov_deg")) {
+      c.fov_deg = r.positive(v.at("fov_deg"), path + ".fov_deg", " deg");
+      if (c.fov_deg >= 170) r.fail(v.at("fov_deg").Mark(), path + ".fov_deg must be below 170 deg (got " + v.at("fov_deg").Scalar() + ")");
+    }
+    const Eigen::Vector3d eye(c.eye[0], c.eye[1], c.eye[2]), target(c.target[0], c.target[1], c.target[2]),
+        up(c.up[0], c.up[1], c.up[2]);
+    const Eigen::Vector3d look = target - eye;
+    if (!(look.norm() > 1e-9)) r.fail(node.Mark(), path + ": eye and target must differ");
+    if (!(up.cross(look).norm() > 1e-9 * look.norm() * std::max(up.norm(), 1e-300)))
+      r.fail(node.Mark(), path + ".up must not be parallel to the line of sight (or zero)");
+    scene.views.push_back(c);
+  }
 }
 
 }  // namespace mmv::scene_detail

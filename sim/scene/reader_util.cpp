@@ -26,4 +26,14 @@ std::string readPointOrStation(const YamlReader& r, const YAML::Node& n, const s
   return name;
 }
 
+/// Every key of a name->item mapping is allowed; duplicates are still caught.
+std::vector<std::string> namesOf(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (!n.IsMap()) r.fail(n.Mark(), path + " must be a mapping of names (got " + YamlReader::show(n) + ")");
+  std::vector<std::string> keys;
+  for (auto it = n.begin(); it != n.end(); ++it)
+    if (it->first.IsScalar()) keys.push_back(it->first.Scalar());
+  if (keys.empty()) r.fail(n.Mark(), path + " must name at least one entry");
+  return keys;
+}
+
 }  // namespace mmv::scene_detail

@@ -199,6 +199,10 @@ DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
 Section readSection(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
 Material readMaterial(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
 facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n);
+/// views: {NAME: {eye: [x, y, z], target: [x, y, z], up: [x, y, z], fov_deg: F}} (sim/scene/read_lab.cpp).
+void readViews(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
+/// Every key of a name->item mapping (each allowed; duplicates are still caught).
+std::vector<std::string> namesOf(const YamlReader& r, const YAML::Node& n, const std::string& path);
 void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
 /// A named point of the article; the message says how points are named.
 std::string readPoint(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a);

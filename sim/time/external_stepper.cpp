@@ -12,7 +12,7 @@
 namespace mmv {
 
 std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
-                                                     double rtol, double atol) {
+                                                     double rtol, double atol, const ReducedCoordinates* reduced) {
 #ifdef MMVLAB_SUNDIALS_PLUGIN
   const std::vector<std::string> candidates = pluginCandidates("libmmvlab_sundials.so", MMVLAB_SUNDIALS_PLUGIN);
 #else
@@ -26,9 +26,10 @@ std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySyste
       tried += (tried.empty() ? "" : "; ") + path + " (" + ::dlerror() + ")";
       continue;
     }
-    auto create = reinterpret_cast<CreateStepper>(::dlsym(handle, "mmv_create_sundials_stepper"));
-    if (!create) throw UnavailableError(path + ": no mmv_create_sundials_stepper");
-    ExternalStepper* stepper = create(&system, static_cast<int>(method), rtol, atol);
+    // _v2: the factory that takes reduced coordinates (an older plugin lacks it).
+    auto create = reinterpret_cast<CreateStepper>(::dlsym(handle, "mmv_create_sundials_stepper_v2"));
+    if (!create) throw UnavailableError(path + ": no mmv_create_sundials_stepper_v2 (a plugin from an older build?)");
+    ExternalStepper* stepper = create(&system, static_cast<int>(method), rtol, atol, reduced);
     MMV_DEMAND(stepper != nullptr);  // every SundialsMethod has a stepper
     return std::unique_ptr<ExternalStepper>(stepper);
   }

@@ -24,6 +24,27 @@ struct IntegratorStats {
   long jacobians = 0;    ///< iteration-matrix evaluations (implicit methods; 0 for explicit ones; -1: not reported, CPodes)
 };
 
+/// Coordinates the integrator carries instead of Simbody's Y (sim/time/modal_links.hpp):
+/// the integrator's y is theirs; they set the Simbody State from it.
+class ReducedCoordinates {
+ public:
+  virtual ~ReducedCoordinates() = default;
+  virtual int size() const = 0;
+  /// y at the state `s` (the run's start).
+  virtual void project(const SimTK::State& s, double* y) const = 0;
+  /// Sets `s` to time t and y and writes y' into `ydot`. `full`: `s` is then realized to
+  /// Acceleration with the reduced model's accelerations (a sample); else only as far
+  /// as y' needs (a right-hand side). Throws on a Simbody failure.
+  virtual void load(double t, const double* y, SimTK::State& s, double* ydot, bool full) const = 0;
+  /// An approximation of dy'/dy at (t, y) for the implicit methods' Newton iteration
+  /// (column-major, size() x size()); false: none, difference quotients instead. Only
+  /// the iteration's convergence depends on it, not the solution.
+  virtual bool jacobian(double t, const double* y, double* J) const {
+    (void)t, (void)y, (void)J;
+    return false;
+  }
+};
+
 class ExternalStepper {
  public:
   virtual ~ExternalStepper() = default;
@@ -37,8 +58,9 @@ class ExternalStepper {
 };
 
 /// The plugin's factory (extern "C").
+/// `reduced`: null, or the coordinates to integrate (ODE methods only; kept by the caller).
 using CreateStepper = ExternalStepper* (*)(const SimTK::MultibodySystem* system, int method, double relative_tolerance,
-                                           double absolute_tolerance);
+                                           double absolute_tolerance, const ReducedCoordinates* reduced);
 
 /// The plugin's methods (codes as SundialsIntegrator::Method).
 enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeDirk = 3, Ida = 4 };
@@ -48,7 +70,9 @@ enum class SundialsMethod { CvodeAdams = 0, CvodeBdf = 1, ArkodeErk = 2, ArkodeD
 /// holds closed trees' closures). Throws
 /// UnavailableError if the plugin cannot be loaded (the message says where it was looked for).
 /// `atol` <= 0: the relative tolerance (on the state's unit scale: rad, m, rad/s, m/s).
+/// `reduced`: integrate those coordinates instead of Simbody's Y (not with IDA).
 std::unique_ptr<ExternalStepper> makeSundialsStepper(const SimTK::MultibodySystem& system, SundialsMethod method,
-                                                     double rtol, double atol = 0);
+                                                     double rtol, double atol = 0,
+                                                     const ReducedCoordinates* reduced = nullptr);
 
 }  // namespace mmv

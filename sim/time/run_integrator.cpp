@@ -25,7 +25,8 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const
 }  // namespace
 
 RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::string& name, double accuracy,
-                             const SimTK::State& initial, const std::string& source, double atol)
+                             const SimTK::State& initial, const std::string& source, double atol,
+                             const ReducedCoordinates* reduced)
     : system_(sys), name_(name), accuracy_(accuracy) {
   // Simbody asserts (and aborts) outside (0, 1); say so instead.
   if (!(accuracy > 0 && accuracy < 1))
@@ -35,10 +36,14 @@ RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::strin
                                                                {"arkode_erk", SundialsMethod::ArkodeErk},
                                                                {"arkode_dirk", SundialsMethod::ArkodeDirk},
                                                                {"ida", SundialsMethod::Ida}};
-  if (const auto it = kSundials.find(name); it != kSundials.end()) {
+  const auto it = kSundials.find(name);
+  if (reduced && (it == kSundials.end() || it->second == SundialsMethod::Ida) && findIntegrator(name))
+    throw SceneError(source + ": links in modal coordinates (links[].modes) run under SUNDIALS' ODE methods "
+                     "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk), not " + name);
+  if (it != kSundials.end()) {
     if (!(atol >= 0 && atol < 1))
       throw SceneError(source + ": simulation absolute tolerance must be in [0, 1) (got " + std::to_string(atol) + ")");
-    sundials_ = makeSundialsStepper(sys, it->second, accuracy, atol);
+    sundials_ = makeSundialsStepper(sys, it->second, accuracy, atol, reduced);
     std::string error;
     if (!sundials_->initialize(initial, error)) throw NumericalError(error);
     return;

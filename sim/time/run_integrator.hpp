@@ -24,8 +24,12 @@ class RunIntegrator {
   /// outside (0, 1), NumericalError if SUNDIALS cannot start.
   /// `absolute_tolerance` > 0 applies to SUNDIALS' methods (SceneError for Simbody's,
   /// which measure errors on the state's unit scale only); 0: the accuracy.
+  /// `reduced`: the run integrates those coordinates (links in modal coordinates,
+  /// sim/time/modal_links.hpp; kept by the caller): SUNDIALS' ODE methods only, any other
+  /// name is a SceneError.
   RunIntegrator(const SimTK::MultibodySystem& system, const std::string& name, double accuracy,
-                const SimTK::State& initial, const std::string& source, double absolute_tolerance = 0);
+                const SimTK::State& initial, const std::string& source, double absolute_tolerance = 0,
+                const ReducedCoordinates* reduced = nullptr);
   ~RunIntegrator();
   /// Where the run ends (call before the first stepTo): Simbody's integrators do not
   /// step past it, SUNDIALS' size their first step by it (and may step past the end

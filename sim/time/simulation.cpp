@@ -253,8 +253,16 @@ SimulationResult simulate(const ArticleScene& scene, const std::function<void(do
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
   SimulationResult r;
-  const SimTK::State s = initialState(*model, spec, r.warnings);
-  RunIntegrator integrator(model->getSystem(), spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance);
+  SimTK::State s = initialState(*model, spec, r.warnings);
+  std::unique_ptr<ModalLinks> modal;  // links in modal coordinates
+  if (!model->getReducedMotions().empty()) {
+    model->getSystem().realize(s, SimTK::Stage::Position);
+    modal = std::make_unique<ModalLinks>(*model, scene.article, s);
+    r.modal_links = modal->summary();
+    model->getReducedMotions().enable(model->getMatter(), s);
+  }
+  RunIntegrator integrator(model->getSystem(), spec.integrator, spec.accuracy, s, scene.source, spec.absolute_tolerance,
+                           modal.get());
   r.integrator = spec.integrator;
   r.accuracy = spec.accuracy;
   ArticleRecorder recorder(*model, scene, r);

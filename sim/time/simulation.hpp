@@ -35,6 +35,7 @@
 #include <Simbody.h>
 
 #include "sim/scene/scene.hpp"
+#include "sim/time/modal_links.hpp"
 
 namespace mmv {
 
@@ -110,6 +111,8 @@ struct SimulationResult {
   /// from its scene angle (assessEquilibrium, sim/statics/statics.hpp).
   std::vector<std::string> warnings;
   RunVerification verification;  ///< filled by verifyRun on request
+  /// Links carried by their modes (`links[i].modes`; sim/time/modal_links.hpp).
+  std::vector<ModalLinkSummary> modal_links;
 };
 
 /// Runs the scene's time run with its `simulation:` settings. `progress`, if given,

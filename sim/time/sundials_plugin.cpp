@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 
 namespace mmv {
@@ -99,10 +100,18 @@ struct SundialsIntegrator::Impl {
   double seconds = 0;  // inside the solver's calls
   double end_time = 0;  // the run's end (sizes the first step)
   double reached = 0;   // the solver's internal time
-  Impl(const SimTK::MultibodySystem& s, Method m, double r, double a) : system(s), method(m), rtol(r), atol(a) {}
+  const ReducedCoordinates* reduced = nullptr;  // y is theirs when given
+  std::vector<double> reduced_ydot, reduced_jacobian;
+  Impl(const SimTK::MultibodySystem& s, Method m, double r, double a, const ReducedCoordinates* rc)
+      : system(s), method(m), rtol(r), atol(a), reduced(rc) {}
 
-  /// Copies y into `work`, applies the prescribed motions and realizes to Acceleration.
-  void load(double t, N_Vector yv) {
+  /// Copies y into `work`, applies the prescribed motions and realizes to Acceleration
+  /// (reduced coordinates: `full` as ReducedCoordinates::load).
+  void load(double t, N_Vector yv, bool full = true) {
+    if (reduced) {
+      reduced->load(t, N_VGetArrayPointer(yv), work, reduced_ydot.data(), full);
+      return;
+    }
     work.setTime(t);
     SimTK::Vector& Y = work.updY();
     const double* d = N_VGetArrayPointer(yv);
@@ -142,12 +151,36 @@ struct SundialsIntegrator::Impl {
     }
   }
 
+  /// The reduced coordinates' own Jacobian (ReducedCoordinates::jacobian).
+  static int jacobian(double t, N_Vector yv, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      const int n = static_cast<int>(self->reduced_ydot.size());
+      self->reduced_jacobian.resize(static_cast<std::size_t>(n) * n);
+      if (!self->reduced->jacobian(t, N_VGetArrayPointer(yv), self->reduced_jacobian.data())) return -1;
+      for (int j = 0; j < n; ++j) {
+        double* col = SUNDenseMatrix_Column(J, j);
+        for (int i = 0; i < n; ++i) col[i] = self->reduced_jacobian[static_cast<std::size_t>(j) * n + i];
+      }
+      return 0;
+    } catch (...) {
+      return -1;
+    }
+  }
+
   static int rhs(double t, N_Vector yv, N_Vector ydot, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
-      self->load(t, yv);
-      const SimTK::Vector& yd = self->work.getYDot();
+      self->load(t, yv, false);
       double* out = N_VGetArrayPointer(ydot);
+      if (self->reduced) {
+        for (std::size_t i = 0; i < self->reduced_ydot.size(); ++i) {
+          if (!std::isfinite(self->reduced_ydot[i])) return 1;
+          out[i] = self->reduced_ydot[i];
+        }
+        return 0;
+      }
+      const SimTK::Vector& yd = self->work.getYDot();
       for (int i = 0; i < yd.size(); ++i) {
         if (!std::isfinite(yd[i])) return 1;  // recoverable: CVODE retries with a smaller step
         out[i] = yd[i];
@@ -159,8 +192,9 @@ struct SundialsIntegrator::Impl {
   }
 };
 
-SundialsIntegrator::SundialsIntegrator(const SimTK::MultibodySystem& system, Method method, double rtol, double atol)
-    : impl_(std::make_unique<Impl>(system, method, rtol, atol > 0 ? atol : rtol)) {}
+SundialsIntegrator::SundialsIntegrator(const SimTK::MultibodySystem& system, Method method, double rtol, double atol,
+                                       const ReducedCoordinates* reduced)
+    : impl_(std::make_unique<Impl>(system, method, rtol, atol > 0 ? atol : rtol, reduced)) {}
 
 SundialsIntegrator::~SundialsIntegrator() = default;
 
@@ -170,14 +204,20 @@ void SundialsIntegrator::initialize(const SimTK::State& s) {
   m.work = s;
   m.reached = s.getTime();
   if (me == Method::Ida) {
+    if (m.reduced) throw PluginFailure("IDA integrates Simbody's own coordinates only: reduced (modal) links need an ODE method (cvode_bdf, cvode_adams, arkode_erk, arkode_dirk)");
     initializeIda(s);
     return;
   }
-  const int n = s.getNY();
+  const int n = m.reduced ? m.reduced->size() : s.getNY();
   m.y.p = N_VNew_Serial(n, m.ctx.c);
   if (!m.y.p) throw PluginFailure("SUNDIALS: cannot allocate the state vector");
   double* d = N_VGetArrayPointer(m.y.p);
-  for (int i = 0; i < n; ++i) d[i] = s.getY()[i];
+  if (m.reduced) {
+    m.reduced_ydot.assign(n, 0.0);
+    m.reduced->project(s, d);
+  } else {
+    for (int i = 0; i < n; ++i) d[i] = s.getY()[i];
+  }
   m.mem.method = me;
   // Absolute tolerance: given, or the relative one times a unit scale (rad, m, rad/s, m/s).
   switch (me) {
@@ -211,6 +251,11 @@ void SundialsIntegrator::initialize(const SimTK::State& s) {
     if (!m.A.p || !m.ls.p) throw PluginFailure("SUNDIALS: cannot create the dense linear solver for " + std::to_string(n) + " states");
     if (me == Method::Bdf) check(me, CVodeSetLinearSolver(m.mem.p, m.ls.p, m.A.p), "CVodeSetLinearSolver");
     else check(me, ARKStepSetLinearSolver(m.mem.p, m.ls.p, m.A.p), "ARKStepSetLinearSolver");
+    std::vector<double> probe(static_cast<std::size_t>(n) * n);
+    if (m.reduced && m.reduced->jacobian(s.getTime(), d, probe.data())) {
+      if (me == Method::Bdf) check(me, CVodeSetJacFn(m.mem.p, &Impl::jacobian), "CVodeSetJacFn");
+      else check(me, ARKStepSetJacFn(m.mem.p, &Impl::jacobian), "ARKStepSetJacFn");
+    }
   } else if (me == Method::Adams) {
     m.nls.p = SUNNonlinSol_FixedPoint(m.y.p, 0, m.ctx.c);
     if (!m.nls.p) throw PluginFailure("CVODE: cannot create the fixed-point solver");
@@ -342,8 +387,9 @@ namespace {
 
 class CvodeStepper : public ExternalStepper {
  public:
-  CvodeStepper(const SimTK::MultibodySystem& sys, SundialsIntegrator::Method method, double rtol, double atol)
-      : integ_(sys, method, rtol, atol) {}
+  CvodeStepper(const SimTK::MultibodySystem& sys, SundialsIntegrator::Method method, double rtol, double atol,
+               const ReducedCoordinates* reduced)
+      : integ_(sys, method, rtol, atol, reduced) {}
   bool initialize(const SimTK::State& s, std::string& error) override { return guard([&] { integ_.initialize(s); }, error); }
   bool stepTo(double t, std::string& error) override { return guard([&] { integ_.stepTo(t); }, error); }
   void setEndTime(double t) override { integ_.setEndTime(t); }
@@ -367,8 +413,8 @@ class CvodeStepper : public ExternalStepper {
 }  // namespace
 }  // namespace mmv
 
-extern "C" __attribute__((visibility("default"))) mmv::ExternalStepper* mmv_create_sundials_stepper(const SimTK::MultibodySystem* system, int method, double rtol,
-                                                            double atol) {
+extern "C" __attribute__((visibility("default"))) mmv::ExternalStepper* mmv_create_sundials_stepper_v2(
+    const SimTK::MultibodySystem* system, int method, double rtol, double atol, const mmv::ReducedCoordinates* reduced) {
   if (method < 0 || method > 4) return nullptr;
-  return new mmv::CvodeStepper(*system, static_cast<mmv::SundialsIntegrator::Method>(method), rtol, atol);
+  return new mmv::CvodeStepper(*system, static_cast<mmv::SundialsIntegrator::Method>(method), rtol, atol, reduced);
 }

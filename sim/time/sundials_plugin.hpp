@@ -26,8 +26,9 @@ class SundialsIntegrator {
   /// perr(q) = 0; the multipliers are left out of the error test (index 2).
   enum class Method { Adams = 0, Bdf = 1, ArkErk = 2, ArkDirk = 3, Ida = 4 };
   /// absolute_tolerance <= 0: the relative one.
+  /// `reduced`: integrate those coordinates instead of Simbody's Y (not IDA; kept by the caller).
   SundialsIntegrator(const SimTK::MultibodySystem& system, Method method, double relative_tolerance,
-                  double absolute_tolerance = 0);
+                  double absolute_tolerance = 0, const ReducedCoordinates* reduced = nullptr);
   ~SundialsIntegrator();
   SundialsIntegrator(const SundialsIntegrator&) = delete;
   SundialsIntegrator& operator=(const SundialsIntegrator&) = delete;

@@ -96,7 +96,7 @@ TEST(SceneOverrides, ErrorsAreTheFilesWithTheOverrideForThePosition) {
   EXPECT_EQ(afterPosition(errorOf({"links.l1.length=-2"}), "--set links.l1.length=-2: "), "links[0].length must be > 0 m (got -2)");
   EXPECT_EQ(errorOf({"links.l1.lenght=2"}),
             "--set links.l1.lenght=2: unknown key 'links[0].lenght' (did you mean 'length'?) (allowed: name, joint, material, section, length, "
-            "segments, mount_angle_deg, tip_mass, branches, model)");
+            "segments, mount_angle_deg, tip_mass, branches, model, modes)");
   EXPECT_EQ(errorOf({"links.l1.length=abc"}), "--set links.l1.length=abc: links[0].length must be a number (got abc)");
   EXPECT_EQ(errorOf({"lab.hole_side_m=9"}),
             "--set lab.hole_side_m=9: lab.hole_side_m: the hole (9 m) must be smaller than the platform (6.096 m x 8.8392 m)");

@@ -123,6 +123,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:6:53: sections.bar.second_moment must be > 0 m^4 (got -1e-9)"},
         BadCase{"segments < 1", "    segments: 4", "    segments: 0",
                 "s.yaml:20:15: links[0].segments must be an integer from 1 to 1024 or 'rigid' (got 0)"},
+        BadCase{"modes beyond the hinges", "    segments: 4", "    segments: 4\n    modes: 5",
+                "s.yaml:21:12: links[0].modes must be 1 to the link's 4 hinges (one per segment) (got 5)"},
+        BadCase{"modes of a rigid link", "    segments: rigid", "    segments: rigid\n    modes: 1",
+                "s.yaml:27:12: links[1].modes must be 1 to the link's hinges (a rigid link has none) (got 1)"},
         BadCase{"unknown material", "    material: steel\n    section: bar\n    length: 1.0",
                 "    material: steal\n    section: bar\n    length: 1.0",
                 "s.yaml:17:15: links[0].material: unknown material 'steal' (did you mean 'steel'?) (known: steel)"},
@@ -262,6 +266,16 @@ TEST(SceneYaml, EachLinkMayChooseItsModel) {
   };
   EXPECT_EQ(bending("planar", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spatial"), "PSS");
   EXPECT_EQ(bending("spatial", "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.3}"), "SPP");
+}
+
+// Links in modal coordinates need a planar open tree (sim/time/modal_links.hpp): a
+// closure is refused at the link's key; without it the count is read.
+TEST(SceneYaml, ModesOnlyOnAPlanarOpenTree) {
+  const std::string modal = replaceLine(kGood, "    segments: 4", "    segments: 4\n    modes: 2");
+  EXPECT_EQ(parseArticle(modal, "s.yaml").article.links[0].modes, 2);
+  EXPECT_EQ(parseArticle(modal, "s.yaml").article.links[1].modes, 0);
+  EXPECT_EQ(errorOf(modal + "closures:\n  - {point: l1.tip}\n"),
+            "s.yaml:21:12: links[0].modes: links in modal coordinates need a planar open tree (this article is closed)");
 }
 
 TEST(SceneYaml, JointRangeWidensWhenTheSceneSaysSo) {

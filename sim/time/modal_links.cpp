@@ -1,0 +1,254 @@
+#include "sim/time/modal_links.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
+#include "sim/statics/linearize.hpp"
+
+namespace mmv {
+
+ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const SimTK::State& start)
+    : model_(model), rhs_(start) {
+  const auto& moved = model.getReducedMotions().mobilizers();
+  for (int i = 0; i < model.getNumCoordinates(); ++i)
+    if (std::find(moved.begin(), moved.end(), model.getCoordinates()[i].mobod) != moved.end()) free_.push_back(i);
+  const int n = static_cast<int>(free_.size());
+  start_.resize(n);
+  for (int r = 0; r < n; ++r) {
+    free_q_.push_back(model.getQIndex(free_[r]));
+    free_u_.push_back(model.getUIndex(free_[r]));
+    start_[r] = start.getQ()[free_q_[r]];
+  }
+  SimTK::Matrix Ms;
+  model.getMatter().calcM(start, Ms);
+  Eigen::MatrixXd M(n, n);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) M(r, c) = Ms(free_u_[r], free_u_[c]);
+  std::vector<Eigen::VectorXd> columns;
+  std::vector<bool> in_a_link(n, false);
+  for (const auto& l : article.links) {
+    if (l.modes <= 0) continue;
+    std::vector<int> rows;  // into free_
+    for (int r = 0; r < n; ++r) {
+      const Coordinate& c = model.getCoordinates()[free_[r]];
+      if (c.kind == CoordinateKind::Hinge && c.part == l.name) rows.push_back(r), in_a_link[r] = true;
+    }
+    addLink(l, rows, start, M, columns);
+  }
+  for (int r = 0; r < n; ++r) {  // every other free coordinate is its own
+    if (in_a_link[r]) continue;
+    columns.push_back(Eigen::VectorXd::Unit(n, r));
+  }
+  T_.resize(n, static_cast<int>(columns.size()));
+  for (std::size_t j = 0; j < columns.size(); ++j) T_.col(static_cast<int>(j)) = columns[j];
+  // The Newton iteration's Jacobian: the stiffness and damping at the start, projected.
+  Eigen::MatrixXd K = calcStiffness(model, start, free_);
+  K = 0.5 * (K + K.transpose()).eval();
+  Eigen::VectorXd c(n);
+  for (int r = 0; r < n; ++r) c[r] = model.getCoordinates()[free_[r]].damping;
+  K_ = T_.transpose() * K * T_;
+  C_ = T_.transpose() * c.asDiagonal() * T_;
+  const int nu = start.getNU();
+  udot_ = SimTK::Vector(nu, 0.0);
+  v_ = SimTK::Vector(nu, 0.0);
+  // The mass matrix in closed form when every free coordinate is a pin (one per
+  // mobilizer) and their axes are parallel, the planar article's case; else M v products.
+  // (The planar article's pins stay parallel as it moves: only the gimbal, below all
+  // of them, can turn their common axis, which is read at each evaluation.)
+  const SimTK::SimbodyMatterSubsystem& matter = model.getMatter();
+  bodies_.assign(matter.getNumBodies(), PinBody{});
+  parallel_pins_ = true;
+  for (int r = 0; r < n; ++r) {
+    const Coordinate& c = model.getCoordinates()[free_[r]];
+    const SimTK::MobilizedBody& mb = matter.getMobilizedBody(c.mobod);
+    const SimTK::Vec3 a = mb.getBodyRotation(start) * mb.getOutboardFrame(start).R().z();
+    if (r == 0) axis_ = a, axis_body_ = c.mobod, axis_M_ = SimTK::Vec3(mb.getOutboardFrame(start).R().z());
+    if (c.motion != CoordinateMotion::Rotation || mb.getNumU(start) != 1 || (a - axis_).norm() > 1e-12)
+      parallel_pins_ = false;
+    bodies_[c.mobod].free_row = r;
+  }
+  for (int b = 1; b < matter.getNumBodies(); ++b) {
+    const SimTK::MobilizedBody& mb = matter.getMobilizedBody(SimTK::MobilizedBodyIndex(b));
+    PinBody& body = bodies_[b];
+    body.parent = mb.getParentMobilizedBody().getMobilizedBodyIndex();
+    body.pin_B = mb.getOutboardFrame(start).p();
+    const SimTK::MassProperties& mp = mb.getBodyMassProperties(start);
+    body.mass = mp.getMass();
+    body.com_B = mp.getMassCenter();
+    body.central = mp.calcCentralInertia();
+  }
+  // Every other mobility follows a Motion whose acceleration the builder registered.
+  for (int i = 0; i < model.getNumCoordinates(); ++i) {
+    const Coordinate& c = model.getCoordinates()[i];
+    if (std::find(free_.begin(), free_.end(), i) != free_.end()) continue;
+    const auto* udot = model.findPrescribedAcceleration(c.mobod);
+    if (!udot) throw InternalError("coordinate " + c.name + " is neither free nor prescribed with a known acceleration");
+    prescribed_.push_back({model.getUIndex(i), udot});
+  }
+}
+
+void ModalLinks::addLink(const LinkSpec& l, const std::vector<int>& rows, const SimTK::State& start,
+                         const Eigen::MatrixXd& M, std::vector<Eigen::VectorXd>& columns) {
+  const int h = static_cast<int>(rows.size());
+  if (h < l.modes) throw InternalError(strf("link %s: %d modes asked of %d hinges", l.name.c_str(), l.modes, h));
+  std::vector<int> coords;
+  Eigen::MatrixXd Mh(h, h);
+  for (int r = 0; r < h; ++r) {
+    coords.push_back(free_[rows[r]]);
+    for (int c = 0; c < h; ++c) Mh(r, c) = M(rows[r], rows[c]);
+  }
+  Eigen::MatrixXd K = calcStiffness(model_, start, coords);
+  K = 0.5 * (K + K.transpose()).eval();
+  Eigen::LLT<Eigen::MatrixXd> chol(Mh);
+  if (chol.info() != Eigen::Success)
+    throw NumericalError("link " + l.name + ": its mass matrix with the root held is not positive definite");
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, Mh);
+  if (eig.info() != Eigen::Success) throw NumericalError("link " + l.name + ": its modes did not converge");
+  const int n = static_cast<int>(free_.size());
+  for (int j = 0; j < l.modes; ++j) {
+    Eigen::VectorXd col = Eigen::VectorXd::Zero(n);
+    for (int r = 0; r < h; ++r) col[rows[r]] = eig.eigenvectors()(r, j);  // M-normalized
+    columns.push_back(col);
+  }
+  auto hz = [&](int j) { return std::sqrt(std::max(0.0, eig.eigenvalues()[j])) / (2 * M_PI); };
+  summary_.push_back({l.name, l.modes, h, hz(l.modes - 1), l.modes < h ? hz(l.modes) : 0.0});
+}
+
+void ModalLinks::project(const SimTK::State& s, double* y) const {
+  const int n = static_cast<int>(free_.size()), k = static_cast<int>(T_.cols());
+  Eigen::VectorXd dq(n), u(n);
+  for (int r = 0; r < n; ++r) dq[r] = s.getQ()[free_q_[r]] - start_[r], u[r] = s.getU()[free_u_[r]];
+  const auto qr = T_.colPivHouseholderQr();
+  Eigen::Map<Eigen::VectorXd>(y, k) = qr.solve(dq);
+  Eigen::Map<Eigen::VectorXd>(y + k, k) = qr.solve(u);
+}
+
+void ModalLinks::load(double t, const double* y, SimTK::State& s, double* ydot, bool full) const {
+  const int k = static_cast<int>(T_.cols());
+  // A right-hand side in a State of its own without the reduced Motions; a sample in the
+  // run's State, whose reduced Motions then take the accelerations, realized to
+  // Acceleration (outputs, motion forces, energy).
+  accelerations(t, y, full ? s : rhs_);
+  for (int j = 0; j < k; ++j) ydot[j] = y[k + j], ydot[k + j] = a_[j];
+  if (!full) return;
+  const int n = static_cast<int>(free_.size());
+  x_.noalias() = T_ * a_;
+  for (int r = 0; r < n; ++r) udot_[free_u_[r]] = x_[r];
+  model_.getReducedMotions().setAccelerations(s, udot_);
+  for (int r = 0; r < n; ++r) udot_[free_u_[r]] = 0.0;
+  model_.getSystem().realize(s, SimTK::Stage::Acceleration);
+}
+
+bool ModalLinks::jacobian(double t, const double* y, double* J) const {
+  // dy'/dy ~ [0 I; -G^-1 K  -G^-1 C] with G at y: the springs and dampers dominate the
+  // stiff part; the velocity-dependent inertial terms and the change of G are left out.
+  accelerations(t, y, rhs_);
+  const int k = static_cast<int>(T_.cols());
+  Eigen::Map<Eigen::MatrixXd> Jm(J, 2 * k, 2 * k);
+  Jm.setZero();
+  Jm.topRightCorner(k, k).setIdentity();
+  const Eigen::LLT<Eigen::MatrixXd> llt(G_);
+  Jm.bottomLeftCorner(k, k) = -llt.solve(K_);
+  Jm.bottomRightCorner(k, k) = -llt.solve(C_);
+  return true;
+}
+
+void ModalLinks::accelerations(double t, const double* y, SimTK::State& s) const {
+  const SimTK::MultibodySystem& sys = model_.getSystem();
+  const SimTK::SimbodyMatterSubsystem& matter = model_.getMatter();
+  const int n = static_cast<int>(free_.size()), k = static_cast<int>(T_.cols());
+  const Eigen::Map<const Eigen::VectorXd> q(y, k), u(y + k, k);
+  x_.noalias() = T_ * q;
+  s.setTime(t);
+  SimTK::Vector& Q = s.updQ();
+  for (int r = 0; r < n; ++r) Q[free_q_[r]] = start_[r] + x_[r];
+  x_.noalias() = T_ * u;
+  SimTK::Vector& U = s.updU();
+  for (int r = 0; r < n; ++r) U[free_u_[r]] = x_[r];
+  sys.realize(s, SimTK::Stage::Time);
+  sys.prescribeQ(s);
+  sys.realize(s, SimTK::Stage::Position);
+  sys.prescribeU(s);
+  // The residual M udot + c - f of the inverse dynamics with the reduced accelerations
+  // zero and the prescribed ones as commanded: O(n), no forward dynamics (it ignores
+  // Motions, so `s` may have the reduced ones enabled).
+  for (const auto& [ui, udot] : prescribed_) udot_[ui] = (*udot)(t);
+  sys.realize(s, SimTK::Stage::Dynamics);
+  matter.calcResidualForceIgnoringConstraints(s, sys.getMobilityForces(s, SimTK::Stage::Dynamics),
+                                              sys.getRigidBodyForces(s, SimTK::Stage::Dynamics), udot_, f_);
+  b_.resize(k);
+  G_.resize(k, k);
+  x_.resize(n);
+  for (int r = 0; r < n; ++r) x_[r] = -f_[free_u_[r]];
+  b_.noalias() = T_.transpose() * x_;
+  if (parallel_pins_) planarMassMatrix(s);
+  else productsMassMatrix(s);
+  // T^T (r0 + M T a) = 0: the projected forces do no work on the reduced coordinates.
+  a_ = G_.llt().solve(b_);
+}
+
+void ModalLinks::productsMassMatrix(const SimTK::State& s) const {
+  const int n = static_cast<int>(free_.size()), k = static_cast<int>(T_.cols());
+  G_.resize(k, k);
+  x_.resize(n);
+  for (int j = 0; j < k; ++j) {
+    for (int r = 0; r < n; ++r) v_[free_u_[r]] = T_(r, j);
+    model_.getMatter().multiplyByM(s, v_, Mv_);
+    for (int r = 0; r < n; ++r) x_[r] = Mv_[free_u_[r]];
+    G_.col(j).noalias() = T_.transpose() * x_;
+  }
+  for (int r = 0; r < n; ++r) v_[free_u_[r]] = 0.0;
+}
+
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> ModalLinks::massMatrices(double t, const double* y) const {
+  accelerations(t, y, rhs_);
+  std::pair<Eigen::MatrixXd, Eigen::MatrixXd> out;
+  if (parallel_pins_) {
+    planarMassMatrix(rhs_);
+    out.first = G_;
+  }
+  productsMassMatrix(rhs_);
+  out.second = G_;
+  return out;
+}
+
+void ModalLinks::planarMassMatrix(const SimTK::State& s) const {
+  // Free pins with one axis a through points o_i: a unit rate of reduced coordinate j
+  // turns body b at S_bj = sum_i T_ij (i: its free ancestors and itself) and moves its
+  // mass centre p_b at a x (p_b S_bj - P_bj), P_bj = sum_i T_ij o_i; both accumulate
+  // outward. G = sum_b m_b v_b^T v_b + (a^T I_b a) S_b^T S_b = A^T A.
+  const SimTK::SimbodyMatterSubsystem& matter = model_.getMatter();
+  const int k = static_cast<int>(T_.cols()), nb = static_cast<int>(bodies_.size());
+  S_.setZero(nb, k);
+  P_.setZero(3 * nb, k);
+  A_.setZero(4 * nb, k);
+  const SimTK::Vec3 axis_G = matter.getMobilizedBody(axis_body_).getBodyRotation(s) * axis_M_;
+  const Eigen::Vector3d axis(axis_G[0], axis_G[1], axis_G[2]);
+  for (int b = 1; b < nb; ++b) {  // parents come before children
+    const PinBody& body = bodies_[b];
+    const SimTK::Transform& X_GB = matter.getMobilizedBody(SimTK::MobilizedBodyIndex(b)).getBodyTransform(s);
+    S_.row(b) = S_.row(body.parent);
+    P_.middleRows(3 * b, 3) = P_.middleRows(3 * body.parent, 3);
+    if (body.free_row >= 0) {
+      const SimTK::Vec3 o = X_GB * body.pin_B;
+      S_.row(b) += T_.row(body.free_row);
+      for (int c = 0; c < 3; ++c) P_.row(3 * b + c) += o[c] * T_.row(body.free_row);
+    }
+    if (!(body.mass > 0)) continue;
+    const SimTK::Vec3 p = X_GB * body.com_B;
+    const SimTK::Vec3 a_B = ~X_GB.R() * axis_G;
+    const double Ia = std::max(0.0, ~a_B * (body.central * a_B));
+    const Eigen::Vector3d pe(p[0], p[1], p[2]);
+    const double sm = std::sqrt(body.mass);
+    for (int j = 0; j < k; ++j) {
+      const Eigen::Vector3d d = pe * S_(b, j) - P_.block<3, 1>(3 * b, j);
+      A_.block<3, 1>(4 * b, j) = sm * axis.cross(d);
+    }
+    A_.row(4 * b + 3) = std::sqrt(Ia) * S_.row(b);
+  }
+  G_.noalias() = A_.transpose() * A_;
+}
+
+}  // namespace mmv

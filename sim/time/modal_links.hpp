@@ -1,0 +1,112 @@
+#pragma once
+/// Links in modal coordinates for time runs (scene `links[i].modes: K`): the reduced
+/// flexible body of floating-frame formulations, on our segment model. Each such link's
+/// hinge angles are carried by its first K modes,
+///
+///     theta_link(t) = theta_link(0) + Phi_link q(t),
+///
+/// the modes of the link at the run's start with its root held and the rest of the
+/// article rigid (the hinge block of the system's M and K there: the outboard links
+/// load it as rigid bodies, and K includes the geometric stiffness of gravity's preload).
+/// Every other free coordinate (free joints, hinges of links without `modes`) stays its
+/// own. The equations of motion are the segment model's projected onto that basis
+/// (Galerkin):
+///
+///     T^T [ M(theta) (T a + prescribed) + c(theta, theta') - f(theta, theta', t) ] = 0,
+///
+/// a = q''. The kinematics stay the segment model's, nonlinear: a link spun up keeps
+/// its centrifugal stiffening (which a linear floating-frame body only has when its
+/// geometric stiffness is added), and with every mode kept the run is the segment
+/// model's run. What is dropped is the truncated modes' motion and so their stiffness:
+/// the stiff hinge modes leave the time run, and with them most of its cost.
+///
+/// Simbody evaluates it: the inverse dynamics with a = 0 and the prescribed joints'
+/// accelerations as commanded gives the residual forces (O(n)), and K products M v give
+/// T^T M T. Every free mobilizer carries an acceleration-level Motion
+/// (sim/model/reduced_motions.hpp), so at a sample the state is realized with the
+/// reduced accelerations, so every output (points, sensors, joint torques, energy
+/// books) is the reduced model's. The projected constraint forces do no work
+/// (T^T f = 0), so the energy balance holds as for the segment model.
+
+#include <Simbody.h>
+
+#include <Eigen/Dense>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "article/article_spec.hpp"
+#include "sim/model/model.hpp"
+#include "sim/time/external_stepper.hpp"
+
+namespace mmv {
+
+/// One link's kept modes, for the run's summary.
+struct ModalLinkSummary {
+  std::string link;
+  int modes = 0, hinges = 0;
+  double highest_kept_hz = 0;   ///< the last kept mode at the start
+  double first_dropped_hz = 0;  ///< the first mode left out (0: none)
+};
+
+class ModalLinks final : public ReducedCoordinates {
+ public:
+  /// The basis at `start` (realized to Position, the model's reduced motions not enabled
+  /// in it: the run's state enables them, see load). Throws NumericalError when a link's held-root mass matrix is not positive
+  /// definite.
+  ModalLinks(const Model& model, const ArticleSpec& article, const SimTK::State& start);
+  int size() const override { return 2 * static_cast<int>(T_.cols()); }
+  void project(const SimTK::State& s, double* y) const override;
+  /// A right-hand side is evaluated in a State of its own (without the reduced Motions'
+  /// work at Dynamics); `s`, the run's state with them enabled, is written only when `full`.
+  void load(double t, const double* y, SimTK::State& s, double* ydot, bool full) const override;
+  bool jacobian(double t, const double* y, double* J) const override;
+  const std::vector<ModalLinkSummary>& summary() const { return summary_; }
+  /// T^T M T at (t, y) in closed form (empty unless the free coordinates are parallel
+  /// pins) and by Simbody's M v products: the two must agree (a test's check).
+  std::pair<Eigen::MatrixXd, Eigen::MatrixXd> massMatrices(double t, const double* y) const;
+  /// The free coordinates' basis (rows: freeCoordinates(), columns: reduced coordinates).
+  const Eigen::MatrixXd& basis() const { return T_; }
+  const std::vector<int>& freeCoordinates() const { return free_; }
+
+ private:
+  void addLink(const LinkSpec& l, const std::vector<int>& hinges, const SimTK::State& start, const Eigen::MatrixXd& M,
+               std::vector<Eigen::VectorXd>& columns);
+
+  /// a_ = q'' at (t, y), evaluated in `s` (set to t and y, realized to Dynamics).
+  void accelerations(double t, const double* y, SimTK::State& s) const;
+  /// G_ = T^T M T for parallel pins (planar articles), O(bodies k + bodies k^2) flops
+  /// without Simbody's k M v products.
+  void planarMassMatrix(const SimTK::State& s) const;
+  /// G_ by K of Simbody's M v products (any mobilizers).
+  void productsMassMatrix(const SimTK::State& s) const;
+
+  const Model& model_;
+  mutable SimTK::State rhs_;
+  std::vector<int> free_;             ///< model coordinates the basis moves
+  std::vector<int> free_q_, free_u_;  ///< their Simbody indices
+  Eigen::VectorXd start_;             ///< their values at the start
+  Eigen::MatrixXd T_;
+  Eigen::MatrixXd K_, C_;  ///< T^T K T, T^T C T at the start (the Jacobian's)
+  std::vector<ModalLinkSummary> summary_;
+  std::vector<std::pair<int, const std::function<double(double)>*>> prescribed_;  ///< u index, acceleration(t)
+  // Work space of load() (one run, one thread).
+  mutable SimTK::Vector udot_, v_, Mv_, f_;
+  mutable Eigen::MatrixXd G_, S_, P_, A_;
+  bool parallel_pins_ = false;
+  /// What planarMassMatrix needs of each mobilized body (constant over a run).
+  struct PinBody {
+    int parent = 0;
+    int free_row = -1;       ///< row of T for its free pin, -1 if none
+    SimTK::Vec3 pin_B{0};    ///< its pin's point (the outboard frame's origin), body frame
+    double mass = 0;
+    SimTK::Vec3 com_B{0};
+    SimTK::Inertia central;  ///< about the mass centre, body frame
+  };
+  std::vector<PinBody> bodies_;
+  SimTK::MobilizedBodyIndex axis_body_;  ///< a free pin's body: the common axis is its
+  SimTK::Vec3 axis_M_{0}, axis_{0};      ///< axis in that body's frame; at the start
+  mutable Eigen::VectorXd b_, a_, x_;
+};
+
+}  // namespace mmv
