@@ -122,6 +122,8 @@ struct TradeArgs : SceneArgs {
   std::vector<std::string> integrators;
   std::vector<double> accuracies;
   std::vector<int> segments_ladder;
+  std::vector<int> modes_ladder;  ///< 0 alone: no modal runs
+  std::vector<double> modes_accuracies;
   std::vector<std::string> points;
   double duration = 0;
   double target_error = 0;  ///< m; 0: defaultTradeTarget (1 % of the scored motion)

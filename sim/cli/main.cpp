@@ -228,6 +228,12 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
       ->check(integratorName());
   tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
   tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',')->check(CLI::Range(1, mmv::limits::kMaxSegments));
+  tp->add_option("--modes-ladder", tr.modes_ladder,
+                 "Comma-separated modes per link for runs with the links in modal coordinates (default 1,2,3,4; 0: none)")
+      ->delimiter(',')
+      ->check(CLI::Range(0, mmv::limits::kMaxSegments));
+  tp->add_option("--modes-accuracies", tr.modes_accuracies, "Comma-separated accuracies of the modal runs (CVODE BDF; default 1e-5,1e-6,1e-7)")
+      ->delimiter(',');
   tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(positive());
   tp->add_option("--points", tr.points, "Comma-separated link tips or stations the error is scored at, e.g. link3a.tip,link1@0.5 (default: every tip)")
       ->delimiter(',');

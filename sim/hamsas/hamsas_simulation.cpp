@@ -230,7 +230,7 @@ TradeProblem hamsasTradeProblem(const HamsasScene& base, double duration) {
   p.reference_integrator = "rk_merson";
   p.check_integrator = "arkode_erk";
   p.has_segments = false;
-  p.run = [scene](const SimulationSpec& spec, int, const std::function<void(double)>& progress) {
+  p.run = [scene](const SimulationSpec& spec, const RunFidelity&, const std::function<void(double)>& progress) {
     HamsasScene s = scene;
     s.simulation = spec;
     return simulate(s, progress);

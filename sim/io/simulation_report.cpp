@@ -148,7 +148,8 @@ namespace {
 
 std::string fidelityName(const TargetOutcome& t, const TargetAttempt& a) {
   const std::string segments = a.segments ? strf(", %d segments per link", a.segments) : std::string(", the scene's segments");
-  return strf("%s at %g", a.integrator.c_str(), a.accuracy) + (t.has_segments ? segments : std::string());
+  return strf("%s at %g", a.integrator.c_str(), a.accuracy) + (t.has_segments ? segments : std::string()) +
+         (a.modes ? strf(" in %d modes per link", a.modes) : std::string());
 }
 
 }  // namespace
@@ -163,7 +164,7 @@ std::string targetText(const TargetOutcome& t) {
   for (const auto& r : t.attempts)
     a.add({fidelityName(t, r), strf("%.3g", r.run_seconds), strf("%.3g", r.estimated_error_m),
            strf("%s at %.4g s", r.point.c_str(), r.at_s),
-           strf("accuracy %g", r.accuracy / 10) + (t.has_segments ? ", the scene's segments" : ""),
+           strf("accuracy %g", r.accuracy / 10) + (t.has_segments ? ", the scene's segments, every hinge" : ""),
            strf("%.3g", r.companion_seconds),
            r.met ? "met" : !r.energy_ok ? "missed: energy balance" : "missed"});
   os << a.text();
@@ -181,7 +182,7 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
   for (const auto& r : t.pilot.runs) {
     nlohmann::ordered_json one = {{"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments},
-                                  {"status", r.status}};
+                                  {"modes", r.modes},           {"status", r.status}};
     if (r.ok) one.update({{"error_m", r.error_m}, {"wall_time_s", r.seconds}, {"energy_balance_ok", r.energy_ok}});
     runs.push_back(one);
   }
@@ -196,6 +197,7 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
     attempts.push_back({{"integrator", r.integrator},
                         {"accuracy", r.accuracy},
                         {"segments", r.segments},  // 0: the scene's
+                        {"modes", r.modes},        // 0: every hinge
                         {"run_wall_time_s", r.run_seconds},
                         {"estimated_error_m", r.estimated_error_m},
                         {"at_s", r.at_s},

@@ -1,5 +1,6 @@
 #include "sim/io/trade_report.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "sim/core/text.hpp"
@@ -41,19 +42,22 @@ std::string tradeText(const TradeStudy& s, double target) {
     for (const auto& p : s.points) os << ' ' << p;
     os << "\n\n";
   }
-  Table t({"integrator", "accuracy", "segments", "tip_error_m", "cpu_s", "evaluations", "pareto", "note"});
+  Table t({"integrator", "accuracy", "segments", "modes", "tip_error_m", "cpu_s", "evaluations", "pareto", "note"});
   for (const auto& r : s.runs) {
     const std::string segments = r.segments ? strf("%d", r.segments) : "scene";
+    const std::string modes = r.modes ? strf("%d", r.modes) : "all";
     if (!r.ok) {  // why it has no numbers: the diagnostic, the cut, the skip
-      t.add({r.integrator, strf("%.0e", r.accuracy), segments, "-", "-", "-", "",
+      t.add({r.integrator, strf("%.0e", r.accuracy), segments, modes, "-", "-", "-", "",
              r.status == "failed" ? "FAILED: " + r.failure : r.failure});
       continue;
     }
-    t.add({r.integrator, strf("%.0e", r.accuracy), segments, strf("%.3g", r.error_m), strf("%.3f", r.seconds),
+    t.add({r.integrator, strf("%.0e", r.accuracy), segments, modes, strf("%.3g", r.error_m), strf("%.3f", r.seconds),
            strf("%ld", r.evaluations), r.pareto ? "*" : "",
            r.energy_ok ? "" : "energy balance fails (over 1 % of the run's energy scale)"});
   }
   os << t.text();
+  if (std::any_of(s.runs.begin(), s.runs.end(), [](const TradeRun& r) { return r.modes > 0; }))
+    os << "(modes: per link, in modal coordinates (links[].modes); all: every hinge its own coordinate)\n";
   int costlier = 0, cut = 0, not_run = 0;
   for (const auto& r : s.runs) costlier += r.status == "costlier", cut += r.status == "over_budget", not_run += r.status == "not_run";
   os << strf("\nThe trade took %.3g s", s.total_seconds);
@@ -65,8 +69,9 @@ std::string tradeText(const TradeStudy& s, double target) {
   os << '\n';
   const TradeRun* best = cheapestWithin(s, target);
   if (best)
-    os << strf("\nCheapest run within %.3g m: %s at accuracy %.0e (%.3f s, error %.3g m)\n", target, best->integrator.c_str(),
-               best->accuracy, best->seconds, best->error_m);
+    os << strf("\nCheapest run within %.3g m: %s at accuracy %.0e%s (%.3f s, error %.3g m)\n", target, best->integrator.c_str(),
+               best->accuracy, best->modes ? strf(" with %d modes per link", best->modes).c_str() : "", best->seconds,
+               best->error_m);
   else
     os << strf("\nNo run reached %.3g m with its energy balance held: tighten the accuracies\n", target);
   if (const TradeRun* u = cheaperButUnbalanced(s, target, best))
@@ -88,7 +93,8 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
   auto runs = nlohmann::ordered_json::array();
   for (const auto& r : s.runs) {
     nlohmann::ordered_json x = {
-        {"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments}, {"ok", r.ok}, {"status", r.status}};
+        {"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments}, {"modes", r.modes},
+        {"ok", r.ok},                 {"status", r.status}};
     if (r.ok) {
       x["tip_error_m"] = r.error_m;
       x["cpu_s"] = r.seconds;
@@ -105,18 +111,19 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
   const TradeRun* best = cheapestWithin(s, target);
   j["target_error_m"] = target;
   j["reference_amplitude_m"] = s.reference_amplitude_m;
-  j["cheapest_within_target"] = best ? nlohmann::ordered_json{{"integrator", best->integrator}, {"accuracy", best->accuracy}}
+  j["cheapest_within_target"] = best ? nlohmann::ordered_json{{"integrator", best->integrator}, {"accuracy", best->accuracy},
+                                                              {"modes", best->modes}}
                                      : nlohmann::ordered_json(nullptr);
   return j;
 }
 
 std::string tradeCsv(const TradeStudy& s) {
   std::ostringstream csv;
-  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto,status,energy_balance_ok\n";
+  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto,status,energy_balance_ok,modes\n";
   for (const auto& r : s.runs)
     csv << r.integrator << ',' << strf("%.3g", r.accuracy) << ',' << r.segments << ',' << r.ok << ','
         << (r.ok ? strf("%.6g,%.6g,%ld,%d", r.error_m, r.seconds, r.evaluations, r.pareto ? 1 : 0) : std::string(",,,")) << ','
-        << r.status << ',' << (r.ok ? std::to_string(r.energy_ok ? 1 : 0) : std::string()) << '\n';
+        << r.status << ',' << (r.ok ? std::to_string(r.energy_ok ? 1 : 0) : std::string()) << ',' << r.modes << '\n';
   return csv.str();
 }
 

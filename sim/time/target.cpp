@@ -24,15 +24,18 @@ constexpr double kEstimateMargin = 0.5;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-/// The fidelity of one run: integrator, tolerance and segments (0: the scene's).
+/// The fidelity of one run: integrator, tolerance, segments (0: the scene's) and modes
+/// per link (0: every hinge).
 struct Fidelity {
   std::string integrator;
   double accuracy = 0;
   int segments = 0;
+  int modes = 0;
 };
 
 std::string describe(const Fidelity& f) {
-  return strf("%s at %g", f.integrator.c_str(), f.accuracy) + (f.segments ? strf(", %d segments", f.segments) : "");
+  return strf("%s at %g", f.integrator.c_str(), f.accuracy) + (f.segments ? strf(", %d segments", f.segments) : "") +
+         (f.modes ? strf(", %d modes per link", f.modes) : "");
 }
 
 class TargetRunner {
@@ -57,6 +60,7 @@ class TargetRunner {
       a.integrator = run.integrator;
       a.accuracy = run.accuracy;
       a.segments = run.segments;
+      a.modes = run.modes;
       a.run_seconds = result.wall_seconds;
       a.companion_seconds = tight.wall_seconds;
       const ScoredDistance d = scoredDistance(result.record, tight.record, points_);
@@ -84,8 +88,9 @@ class TargetRunner {
   }
 
  private:
-  /// The same integrator at a 10x tighter tolerance, at the scene's segments.
-  static Fidelity tighter(const Fidelity& f) { return {f.integrator, f.accuracy / 10, 0}; }
+  /// The same integrator at a 10x tighter tolerance, at the scene's segments with every
+  /// hinge its own coordinate: what a reduced model leaves out is in the estimate.
+  static Fidelity tighter(const Fidelity& f) { return {f.integrator, f.accuracy / 10, 0, 0}; }
 
   /// The window's trade, and its cheapest run within the window's target.
   Fidelity pilot() {
@@ -110,10 +115,10 @@ class TargetRunner {
     t.cut_costlier = true;
     t.ladder_at_cheapest = true;
     if (o_.time_budget_s > 0) t.total_budget_s = budgetLeft();
-    window.run = [this, inner = problem_.run](const SimulationSpec& spec, int segments,
+    window.run = [this, inner = problem_.run](const SimulationSpec& spec, const RunFidelity& f,
                                                const std::function<void(double)>& cut) {
-      stage_ ? stage_("pilot: " + describe({spec.integrator, spec.accuracy, segments}), 0.0) : void();
-      return inner(spec, segments, cut);
+      stage_ ? stage_("pilot: " + describe({spec.integrator, spec.accuracy, f.segments, f.modes}), 0.0) : void();
+      return inner(spec, f, cut);
     };
     out_.pilot = runTrade(window, t);
     points_ = out_.pilot.points;
@@ -131,7 +136,7 @@ class TargetRunner {
                                 "%g s (the tightest tolerance tried is 1e-8)",
                                 o_.target_m, out_.window_target_m, out_.window_s));
     }
-    return {best->integrator, best->accuracy, best->segments};
+    return {best->integrator, best->accuracy, best->segments, best->modes};
   }
 
   double budgetLeft() const { return std::max(o_.time_budget_s - since(t0_), 1e-3); }
@@ -142,7 +147,7 @@ class TargetRunner {
     std::string best;
     if (!out_.attempts.empty()) {
       const TargetAttempt& a = out_.attempts.back();
-      best = strf("; the last run verified (%s) is %.3g m off", describe({a.integrator, a.accuracy, a.segments}).c_str(),
+      best = strf("; the last run verified (%s) is %.3g m off", describe({a.integrator, a.accuracy, a.segments, a.modes}).c_str(),
                   a.estimated_error_m);
     }
     throw NumericalError(strf("--target-error %.3g m cannot be met within the %g s budget: it was spent during %s after "
@@ -161,7 +166,7 @@ class TargetRunner {
     else spec.absolute_tolerance *= f.accuracy / chosen_accuracy_;  // tightened with the relative one
     const std::string label = what + ": " + describe(f);
     try {
-      return problem_.run(spec, f.segments, [&](double fraction) {
+      return problem_.run(spec, {f.segments, f.modes}, [&](double fraction) {
         if (stage_) stage_(label, fraction);
         if (o_.time_budget_s > 0 && since(t0_) > o_.time_budget_s) throw RunBudgetExceeded(fraction, since(t0_), true);
       });

@@ -50,6 +50,7 @@ struct TargetAttempt {
   std::string integrator;
   double accuracy = 0;
   int segments = 0;  ///< 0: the scene's.
+  int modes = 0;     ///< per link; 0: every hinge.
   double run_seconds = 0, companion_seconds = 0;
   double estimated_error_m = 0, at_s = 0;
   std::string point;

@@ -40,14 +40,16 @@ TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
   for (const auto& l : scene.article.links)
     if (!l.rigid) p.finest_segments = std::max(p.finest_segments, l.segments);
   p.has_segments = p.finest_segments > 0;
+  p.has_modes = p.has_segments && scene.article.model == ArticleModel::Planar && scene.article.closures.empty();
   const ArticleSpec article = scene.article;
   p.also_scores = [article](const std::string& name, std::string& error) {
     return isStationName(name) && parseStation(name, article, error).has_value();
   };
-  p.run = [scene](const SimulationSpec& spec, int segments, const std::function<void(double)>& progress) {
+  p.run = [scene](const SimulationSpec& spec, const RunFidelity& f, const std::function<void(double)>& progress) {
     ArticleScene s = scene;
     s.simulation = spec;
-    if (segments > 0) overrideSegments(s, segments);
+    if (f.segments > 0) overrideSegments(s, f.segments);
+    for (auto& l : s.article.links) l.modes = l.rigid ? 0 : std::min(f.modes, l.segments);
     return simulate(s, progress);
   };
   return p;
@@ -87,8 +89,8 @@ class TradeRunner {
   }
 
   TradeStudy run() {
-    reference_ = simulateWith(0, study_.reference_integrator, 1e-10, {});
-    const SimulationResult check = simulateWith(0, study_.check_integrator, 1e-10, {});
+    reference_ = simulateWith({}, study_.reference_integrator, 1e-10, {});
+    const SimulationResult check = simulateWith({}, study_.check_integrator, 1e-10, {});
     study_.reference_uncertainty_m = scoredDistance(reference_.record, check.record, o_.points).distance_m;
     study_.reference_amplitude_m = scoredAmplitude(reference_.record, o_.points);
     study_.reference_scale_m = scoredScale(reference_.record, o_.points);
@@ -104,7 +106,7 @@ class TradeRunner {
  private:
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
 
-  SimulationResult simulateWith(int segments, const std::string& integrator, double accuracy,
+  SimulationResult simulateWith(const RunFidelity& f, const std::string& integrator, double accuracy,
                                 const std::function<void(double)>& progress) const {
     SimulationSpec spec = problem_.simulation;
     spec.score_points = o_.points;  // every run records the points scored (stations among them)
@@ -112,12 +114,12 @@ class TradeRunner {
     spec.accuracy = accuracy;
     // The scene's absolute tolerance applies to SUNDIALS' methods only.
     if (!isSundialsIntegrator(integrator)) spec.absolute_tolerance = 0;
-    return problem_.run(spec, segments, progress);
+    return problem_.run(spec, f, progress);
   }
 
   /// One scored run: its error against the reference and its cost, or why it has none.
-  const TradeRun& measure(int segments, const std::string& integrator, double accuracy) {
-    TradeRun r{integrator, accuracy, segments};
+  const TradeRun& measure(const RunFidelity& f, const std::string& integrator, double accuracy) {
+    TradeRun r{integrator, accuracy, f.segments, f.modes};
     const auto started = std::chrono::steady_clock::now();
     auto cut = [&](double fraction) {  // the per-run and the total budget, checked at every sample
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -128,7 +130,7 @@ class TradeRunner {
     if (o_.total_budget_s > 0 && elapsed() > o_.total_budget_s)
       return skip(r, "not_run", strf("not run: the trade's %g s budget was spent", o_.total_budget_s));
     try {
-      const SimulationResult res = simulateWith(segments, integrator, accuracy, cut);
+      const SimulationResult res = simulateWith(f, integrator, accuracy, cut);
       r.error_m = scoredDistance(res.record, reference_.record, o_.points).distance_m;
       r.seconds = res.wall_seconds;
       r.evaluations = res.realizations;
@@ -177,7 +179,7 @@ class TradeRunner {
   /// down, stopping at the first count that misses the target (a coarser one would too).
   void segmentLadder() {
     if (!o_.ladder_at_cheapest) {
-      for (int n : o_.segments) measure(n, "cpodes", 1e-8);
+      for (int n : o_.segments) measure({n, 0}, "cpodes", 1e-8);
       return;
     }
     const TradeRun* best = cheapestRunWithinTarget();
@@ -187,30 +189,36 @@ class TradeRunner {
     std::vector<int> fine_to_coarse = o_.segments;
     std::sort(fine_to_coarse.begin(), fine_to_coarse.end(), std::greater<int>());
     for (int n : fine_to_coarse) {
-      const TradeRun& r = measure(n, integrator, accuracy);
+      const TradeRun& r = measure({n, best->modes}, integrator, accuracy);
       if (!r.ok || r.error_m > study_.target_m) break;
     }
   }
 
-  /// Every integrator from its loosest tolerance to its tightest, skipping what cannot pay.
+  /// Every integrator from its loosest tolerance to its tightest, skipping what cannot
+  /// pay; then each rung of the modes ladder the same way.
   void integratorGrid() {
-    std::vector<double> loose_to_tight = o_.accuracies;
+    for (const auto& name : o_.integrators) toleranceLadder(name, o_.accuracies, 0);
+    if (!problem_.has_modes) return;
+    for (int k : o_.modes)
+      if (k > 0 && k < problem_.finest_segments) toleranceLadder(o_.modes_integrator, o_.modes_accuracies, k);
+  }
+
+  void toleranceLadder(const std::string& name, std::vector<double> loose_to_tight, int modes) {
     std::sort(loose_to_tight.begin(), loose_to_tight.end(), std::greater<double>());
-    for (const auto& name : o_.integrators) {
-      double looser_cost = 0;  // the largest cost of this integrator's looser runs
-      bool cut = false;        // a looser run was over the budget: a tighter one would be too
-      for (double acc : loose_to_tight) {
-        const double best = cheapestWithinTarget();
-        if (cut) {
-          skip({name, acc}, "not_run", strf("not run: a looser run was over the %g s budget", o_.run_budget_s));
-        } else if (o_.skip_costlier && looser_cost > best) {
-          skip({name, acc}, "costlier",
-               strf("skipped: costlier (a looser run %.3g s, the cheapest within the target %.3g s)", looser_cost, best));
-        } else {
-          const TradeRun& r = measure(0, name, acc);
-          if (r.ok || r.status == "costlier") looser_cost = std::max(looser_cost, r.seconds);
-          cut = r.status == "over_budget";
-        }
+    double looser_cost = 0;  // the largest cost of this integrator's looser runs
+    bool cut = false;        // a looser run was over the budget: a tighter one would be too
+    for (double acc : loose_to_tight) {
+      const double best = cheapestWithinTarget();
+      TradeRun skipped{name, acc, 0, modes};
+      if (cut) {
+        skip(skipped, "not_run", strf("not run: a looser run was over the %g s budget", o_.run_budget_s));
+      } else if (o_.skip_costlier && looser_cost > best) {
+        skip(skipped, "costlier",
+             strf("skipped: costlier (a looser run %.3g s, the cheapest within the target %.3g s)", looser_cost, best));
+      } else {
+        const TradeRun& r = measure({0, modes}, name, acc);
+        if (r.ok || r.status == "costlier") looser_cost = std::max(looser_cost, r.seconds);
+        cut = r.status == "over_budget";
       }
     }
   }

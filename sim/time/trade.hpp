@@ -51,10 +51,19 @@ struct RunBudgetExceeded : std::runtime_error {
   bool costlier;  ///< cut as it passed the cost of the cheapest run within the target
 };
 
+/// What a run models: segments per flexible link (0: the scene's) and modes per link
+/// (links in modal coordinates, sim/time/modal_links.hpp; each link at most its hinges;
+/// 0: every hinge its own coordinate, whatever the scene says).
+struct RunFidelity {
+  int segments = 0;
+  int modes = 0;
+};
+
 struct TradeRun {
   std::string integrator;
   double accuracy = 0;
   int segments = 0;  ///< 0: the scene's.
+  int modes = 0;     ///< modes per link; 0: every hinge.
   bool ok = true;
   /// Why a run has no numbers: "failed" (the integrator's diagnostic in `failure`),
   /// "over_budget" (cut), "costlier" or "not_run" (skipped; `failure` says why); "ok".
@@ -72,6 +81,12 @@ struct TradeOptions {
   std::vector<std::string> integrators{"rk_merson", "rk3", "cpodes", "cvode_bdf", "cvode_adams", "arkode_erk", "arkode_dirk"};
   std::vector<double> accuracies{1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
   std::vector<int> segments{2, 4, 8};  ///< with the reference integrator at 1e-8 (compared to the scene's segments).
+  /// Modes per link (fewer than the most hinges of a link), each run by `modes_integrator`
+  /// over `modes_accuracies` as one more integrator of the grid (the same skipping):
+  /// the reduced model's error against the segment reference and its cost.
+  std::vector<int> modes{1, 2, 3, 4};
+  std::string modes_integrator = "cvode_bdf";
+  std::vector<double> modes_accuracies{1e-5, 1e-6, 1e-7};
   double duration = 0;  ///< 0: the scene's.
   std::vector<std::string> points;  ///< tips scored, e.g. "link3a.tip"; empty: every link tip.
   double target_m = 0;        ///< the error to meet; 0: defaultTradeTarget of the reference run.
@@ -123,10 +138,13 @@ struct TradeProblem {
   std::function<bool(const std::string& name, std::string& error)> also_scores;
   std::string reference_integrator = "cpodes", check_integrator = "cvode_bdf";
   bool has_segments = true;             ///< rigid bodies only: no segment ladder.
+  bool has_modes = false;               ///< links that can run in modal coordinates (planar open trees).
   int finest_segments = 0;              ///< the most segments of a flexible link (0: none).
-  /// Runs with `spec` at `segments` per link (0: the scene's), calling `progress` with
-  /// the fraction done at every sample (it may throw to cut the run short).
-  std::function<SimulationResult(const SimulationSpec& spec, int segments, const std::function<void(double)>& progress)> run;
+  /// Runs with `spec` at `fidelity`, calling `progress` with the fraction done at every
+  /// sample (it may throw to cut the run short).
+  std::function<SimulationResult(const SimulationSpec& spec, const RunFidelity& fidelity,
+                                 const std::function<void(double)>& progress)>
+      run;
 };
 
 /// A problem's common part: the scene's name and simulation settings, with `duration`

@@ -471,16 +471,19 @@ TEST_F(Cli, TradeWritesItsStudy) {
   const fs::path out = dir_ / "trade";
   const Result r = run("trade " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string() +
                        " --segments 2 --duration 0.4 --integrators rk_merson,cvode_bdf --accuracies 1e-3,1e-5 "
-                       "--segment-ladder 1 --target-error 1e-3 --points link3a.tip --out " + out.string());
+                       "--segment-ladder 1 --modes-ladder 1 --modes-accuracies 1e-5 --target-error 1e-3 --points link3a.tip --out " +
+                       out.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Cheapest run within"), std::string::npos);
   EXPECT_NE(r.out.find("Error scored at: link3a.tip\n"), std::string::npos) << r.out;
   const std::string csv = slurp(out / "trade.csv");
   EXPECT_EQ(csv.rfind("integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto", 0), 0u);
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 5);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 6);  // 4 + the modal run + the segment ladder
   EXPECT_TRUE(isPng(out / "trade.png"));
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "trade.json"));
-  EXPECT_EQ(j["runs"].size(), 5u);
+  EXPECT_EQ(j["runs"].size(), 6u);
+  EXPECT_EQ(j["runs"][4]["modes"], 1);
+  EXPECT_NE(r.out.find("modes: per link, in modal coordinates"), std::string::npos) << r.out;
   EXPECT_EQ(j["points"], nlohmann::json::array({"link3a.tip"}));
   // Command-line mistakes (64), refused before anything runs or is written.
   const Result bad = run("trade --duration 0.1 --points tip9 --out " + (dir_ / "bad").string());

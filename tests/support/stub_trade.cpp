@@ -15,7 +15,7 @@ TradeProblem stubTradeProblem(std::function<double(const SimulationSpec&, double
   p.scorable = {"p"};
   p.scorable_kind = "point";
   p.has_segments = false;
-  p.run = [x, finish, sleep_per_sample_s](const SimulationSpec& s, int, const std::function<void(double)>& progress) {
+  p.run = [x, finish, sleep_per_sample_s](const SimulationSpec& s, const RunFidelity&, const std::function<void(double)>& progress) {
     SimulationResult r;
     r.integrator = s.integrator;
     r.accuracy = s.accuracy;

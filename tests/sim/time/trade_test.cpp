@@ -33,6 +33,7 @@ TEST(Trade, ErrorsFallWithAccuracyAndTheFrontIsNonDominated) {
   o.integrators = {"rk_merson", "cpodes", "cvode_bdf"};
   o.accuracies = {1e-3, 1e-6};
   o.segments = {1};
+  o.modes = {};             // (ModesLadder below)
   o.skip_costlier = false;  // every run: the whole trade-off is measured here
   const TradeStudy t = runTrade(articleTradeProblem(s), o);
   ASSERT_EQ(t.runs.size(), 7u);
@@ -194,7 +195,7 @@ TEST(Trade, SkipsTheRunsThatCannotBeTheCheapestWithinTheTarget) {
 TEST(Trade, ARunCutAsCostlierSkipsItsTighterTolerances) {
   TradeProblem p = stubProblem();
   const auto inner = p.run;
-  p.run = [inner](const SimulationSpec& s, int n, const std::function<void(double)>& progress) {
+  p.run = [inner](const SimulationSpec& s, const RunFidelity& n, const std::function<void(double)>& progress) {
     if (s.integrator == "rk_merson" && s.accuracy > 1e-9)  // dear: 11 samples of 50 ms against the cheap run's 0.1 s
       return inner(s, n, [&](double f) {
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -223,7 +224,7 @@ TEST(Trade, ARunCutAsCostlierSkipsItsTighterTolerances) {
 TEST(Trade, ARunWhoseEnergyBalanceFailsIsNotNamedTheCheapest) {
   TradeProblem p = stubProblem();
   const auto inner = p.run;
-  p.run = [inner](const SimulationSpec& s, int n, const std::function<void(double)>& progress) {
+  p.run = [inner](const SimulationSpec& s, const RunFidelity& n, const std::function<void(double)>& progress) {
     SimulationResult r = inner(s, n, progress);
     if (s.integrator == "cpodes" && s.accuracy == 1e-3)  // cheaper than the 1e-4 run, and unbalanced
       r.wall_seconds = 0.05, r.peak_kinetic_energy_j = 1, r.max_energy_balance_error_j = 0.5;
@@ -262,6 +263,34 @@ TEST(Trade, BudgetsCutARunAndStopTheTrade) {
 }
 
 
+// The modes ladder: the slew scene's links in 1, 2 and 3 modes each (CVODE BDF at 1e-7)
+// beside the segment model; the error falls as modes are added, the runs say their
+// modes, and a rung of 8 or more (every hinge of the scene's 8 segments) is not run.
+TEST(Trade, TheModesLadderRunsTheLinksInModalCoordinates) {
+  ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-slew.yaml");
+  TradeOptions o;
+  o.integrators = {"cvode_bdf"};
+  o.accuracies = {1e-7};
+  o.segments = {};
+  o.modes = {1, 2, 3, 8, 9};
+  o.modes_accuracies = {1e-7};
+  o.duration = 1.5;
+  o.points = {"link3a.tip"};
+  o.skip_costlier = false;
+  const TradeStudy t = runTrade(articleTradeProblem(s, 1.5), o);
+  ASSERT_EQ(t.runs.size(), 4u);
+  EXPECT_EQ(t.runs[0].modes, 0);
+  for (int k = 1; k <= 3; ++k) {
+    const TradeRun& r = t.runs[k];
+    ASSERT_TRUE(r.ok) << r.failure;
+    EXPECT_EQ(r.modes, k);
+    EXPECT_EQ(r.integrator, "cvode_bdf");
+    if (k > 1) EXPECT_LT(r.error_m, 0.5 * t.runs[k - 1].error_m) << k;
+  }
+  EXPECT_LT(t.runs[3].error_m, 1e-4);
+  EXPECT_GT(t.runs[1].error_m, t.runs[0].error_m);  // one mode per link is far from the segment model
+}
+
 // A real run cut mid-way by the budget (Simbody's RK-Merson and CVODE in the SUNDIALS
 // plugin): the run is abandoned between samples and listed, and the next run is
 // unaffected (the sanitized suite checks that nothing leaks).
@@ -271,6 +300,7 @@ TEST(Trade, ARealRunIsCutCleanly) {
   o.integrators = {"rk_merson", "cvode_bdf"};
   o.accuracies = {1e-4};
   o.segments = {};
+  o.modes = {};
   o.run_budget_s = 1e-9;  // over at its first sample after the start
   const TradeStudy t = runTrade(articleTradeProblem(s), o);
   ASSERT_EQ(t.runs.size(), 2u);
