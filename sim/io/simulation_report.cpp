@@ -165,7 +165,7 @@ std::string targetText(const TargetOutcome& t) {
     a.add({fidelityName(t, r), strf("%.3g", r.run_seconds), strf("%.3g", r.estimated_error_m),
            strf("%s at %.4g s", r.point.c_str(), r.at_s),
            strf("accuracy %g", r.accuracy / 10) + (t.has_segments ? ", the scene's segments, every hinge" : ""),
-           strf("%.3g", r.companion_seconds),
+           r.companion_reused ? std::string("(the same)") : strf("%.3g", r.companion_seconds),
            r.met ? "met" : !r.energy_ok ? "missed: energy balance" : "missed"});
   os << a.text();
   const TargetAttempt& last = t.attempts.back();

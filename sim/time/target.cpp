@@ -54,15 +54,21 @@ class TargetRunner {
     Fidelity run = first;
     Fidelity companion = tighter(run);
     SimulationResult result = wholeRun(run, "run");
+    SimulationResult tight;
+    bool verified_by_tight = false;  // `tight` is the companion's run
+    bool more_modes_tried = false;
     for (;;) {
-      const SimulationResult tight = wholeRun(companion, "verification");
+      const bool reused = verified_by_tight;
+      if (!verified_by_tight) tight = wholeRun(companion, "verification");
+      verified_by_tight = true;
       TargetAttempt a;
       a.integrator = run.integrator;
       a.accuracy = run.accuracy;
       a.segments = run.segments;
       a.modes = run.modes;
       a.run_seconds = result.wall_seconds;
-      a.companion_seconds = tight.wall_seconds;
+      a.companion_seconds = reused ? 0.0 : tight.wall_seconds;
+      a.companion_reused = reused;
       const ScoredDistance d = scoredDistance(result.record, tight.record, points_);
       a.estimated_error_m = d.distance_m;
       a.at_s = d.at_s;
@@ -76,6 +82,14 @@ class TargetRunner {
         out_.total_seconds = since(t0_);
         return out_;
       }
+      // A modal run that missed: once, twice its modes at the same tolerance, held to the
+      // same companion (the segment model at 10x tighter: the modes do not change it).
+      if (run.modes > 0 && !more_modes_tried && run.modes + 1 < problem_.finest_segments) {
+        more_modes_tried = true;
+        run.modes = std::min(2 * run.modes, problem_.finest_segments - 1);
+        result = wholeRun(run, "run");
+        continue;
+      }
       if (companion.accuracy / 10 < kTightestAccuracy * (1 - 1e-9))  // (the decades are products: a rounding margin)
         throw NumericalError(strf("--target-error %.3g m cannot be met: %s is %.3g m off at %s (t = %.4g s) and a tighter "
                                   "tolerance than %g cannot be verified",
@@ -84,6 +98,7 @@ class TargetRunner {
       run = companion;  // the next tighter fidelity: the companion already ran it
       result = tight;
       companion = tighter(run);
+      verified_by_tight = false;
     }
   }
 
@@ -127,9 +142,14 @@ class TargetRunner {
       throw NumericalError(strf("--target-error %.3g m cannot be verified: the two reference runs at 1e-10 differ by %.3g m "
                                 "over the first %g s; ask for more than 3x that",
                                 o_.target_m, floor, out_.window_s));
+    // A modal run must come within half the window's target, the margin its whole run
+    // is held to: what the modes leave out grows with what the run goes on to excite
+    // (the slew scene's table sweep rises to 8 Hz), which the window does not see.
     const TradeRun* best = nullptr;
     for (const auto& r : out_.pilot.runs)
-      if (r.ok && r.error_m <= out_.window_target_m && r.energy_ok && (!best || r.seconds < best->seconds)) best = &r;
+      if (r.ok && r.error_m <= (r.modes > 0 ? kEstimateMargin : 1.0) * out_.window_target_m && r.energy_ok &&
+          (!best || r.seconds < best->seconds))
+        best = &r;
     if (!best) {
       checkBudget("the pilot");
       throw NumericalError(strf("--target-error %.3g m cannot be met: no run of the pilot came within %.3g m over the first "

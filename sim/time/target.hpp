@@ -51,7 +51,8 @@ struct TargetAttempt {
   double accuracy = 0;
   int segments = 0;  ///< 0: the scene's.
   int modes = 0;     ///< per link; 0: every hinge.
-  double run_seconds = 0, companion_seconds = 0;
+  double run_seconds = 0, companion_seconds = 0;  ///< companion_seconds 0 when reused
+  bool companion_reused = false;  ///< held to the previous attempt's companion (a modal run with more modes)
   double estimated_error_m = 0, at_s = 0;
   std::string point;
   bool energy_ok = true;  ///< the run's energy balance held at every sample (no energyBalanceWarning)

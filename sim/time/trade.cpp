@@ -199,8 +199,16 @@ class TradeRunner {
   void integratorGrid() {
     for (const auto& name : o_.integrators) toleranceLadder(name, o_.accuracies, 0);
     if (!problem_.has_modes) return;
+    std::string integrator = o_.modes_integrator;
+    std::vector<double> accuracies = o_.modes_accuracies;
+    if (o_.ladder_at_cheapest) {  // the rungs at the cheapest run's tolerance, with its integrator if it can
+      const TradeRun* best = cheapestRunWithinTarget();
+      if (!best) return;
+      accuracies = {best->accuracy};
+      if (isSundialsIntegrator(best->integrator) && best->integrator != "ida") integrator = best->integrator;
+    }
     for (int k : o_.modes)
-      if (k > 0 && k < problem_.finest_segments) toleranceLadder(o_.modes_integrator, o_.modes_accuracies, k);
+      if (k > 0 && k < problem_.finest_segments) toleranceLadder(integrator, accuracies, k);
   }
 
   void toleranceLadder(const std::string& name, std::vector<double> loose_to_tight, int modes) {

@@ -98,8 +98,10 @@ struct TradeOptions {
   /// `simulate --target-error`, sim/time/target.hpp; a trade shows every error).
   bool cut_costlier = false;
   /// Run the segment ladder with the cheapest integrator run within the target (its
-  /// integrator and tolerance) instead of the reference integrator at 1e-8: the
-  /// cheapest fidelity with that integrator; none within the target: no ladder.
+  /// integrator and tolerance) instead of the reference integrator at 1e-8, and the
+  /// modes ladder at its tolerance (with its integrator when that is one of SUNDIALS'
+  /// ODE methods, else `modes_integrator`): the cheapest fidelity with that integrator;
+  /// none within the target: no ladders.
   bool ladder_at_cheapest = false;
 };
 
