@@ -126,6 +126,57 @@ TEST(TargetError, ARunWhoseEnergyBalanceFailsIsNotAccepted) {
   EXPECT_TRUE(flagged);
 }
 
+// Modal candidates (a stub problem, 5 s, whose runs cost what the test says): K modes per
+// link leave out 5e-2 / K^4.6 m, growing as (t / 5 s)^2, so the 1 s window sees a 25th
+// of it. 1 mode (window 2e-3 m) misses the window's 2e-4 m; 2 modes (8e-5 m) come within
+// half of it and are the cheapest, but over the whole run they are 2e-3 m off against a
+// 1e-3 m target; the contract then tries 4 modes once, held to the same companion (the
+// segment model 10x tighter, not run again), and they meet it.
+TEST(TargetError, AModalRunThatMissesIsTriedWithTwiceItsModesAgainstTheSameCompanion) {
+  TradeProblem p = tradeProblemBase("modal stub", SimulationSpec{}, 5.0);
+  p.simulation.sample_rate_hz = 10;
+  p.scorable = {"p"};
+  p.scorable_kind = "point";
+  p.has_segments = false;
+  p.has_modes = true;
+  p.finest_segments = 8;
+  int segment_runs = 0;
+  p.run = [&segment_runs](const SimulationSpec& s, const RunFidelity& f, const std::function<void(double)>& progress) {
+    const bool reference = s.accuracy < 1e-9;
+    const double left_out = f.modes ? 5e-2 * std::pow(f.modes, -4.6) : 0.0;
+    const double error = reference ? 0.0 : left_out + 0.01 * s.accuracy;
+    SimulationResult r;
+    r.integrator = s.integrator;
+    r.accuracy = s.accuracy;
+    r.record.columns = {"time_s", "p_x_m"};
+    r.record.scored = {{"p", {1}}};
+    const int n = static_cast<int>(std::lround(s.duration * 10));
+    for (int k = 0; k <= n; ++k) {
+      const double t = 0.1 * k;
+      r.record.rows.push_back({t, t + error * (t / 5) * (t / 5)});
+      if (progress) progress(double(k) / n);
+    }
+    r.wall_seconds = f.modes ? 0.2 + 0.05 * f.modes : 1.0 - 0.05 * std::log10(s.accuracy);
+    if (!f.modes && !reference && s.duration > 4) ++segment_runs;
+    return r;
+  };
+  TargetOptions o;
+  o.target_m = 1e-3;
+  o.integrators = {"cvode_bdf"};
+  const TargetOutcome t = runToTarget(p, o);
+  ASSERT_EQ(t.attempts.size(), 2u);
+  EXPECT_EQ(t.attempts[0].modes, 2);
+  EXPECT_FALSE(t.attempts[0].met);
+  EXPECT_NEAR(t.attempts[0].estimated_error_m, 2e-3, 1e-4);
+  EXPECT_EQ(t.attempts[1].modes, 4);
+  EXPECT_TRUE(t.attempts[1].met);
+  EXPECT_TRUE(t.attempts[1].companion_reused);
+  EXPECT_EQ(t.attempts[1].companion_seconds, 0.0);
+  EXPECT_EQ(segment_runs, 1);  // the one companion over the whole run
+  for (const auto& r : t.pilot.runs)
+    if (r.modes == 1) EXPECT_GT(r.error_m, t.window_target_m);
+}
+
 // A run whose error never falls with the tolerance (a stub: each tolerance's positions
 // differ from the next one's by 1 cm) walks the tolerance down to the tightest that can
 // be verified and is then refused, naming the last run verified and its estimate.
