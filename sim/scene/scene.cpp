@@ -1,5 +1,7 @@
 #include "sim/scene/scene.hpp"
 
+#include <algorithm>
+
 #include "sim/core/integrators.hpp"
 
 namespace mmv {
@@ -23,8 +25,11 @@ const std::string& sceneSource(const Scene& scene) {
 
 void overrideSegments(ArticleScene& scene, int n) {
   MMV_DEMAND(n >= 1 && n <= limits::kMaxSegments);  // the CLI checks --segments against the same range
-  for (auto& l : scene.article.links)
-    if (!l.rigid) l.segments = n;
+  for (auto& l : scene.article.links) {
+    if (l.rigid) continue;
+    l.segments = n;
+    l.modes = std::min(l.modes, n);  // a link in modal coordinates keeps at most its n hinges
+  }
 }
 
 }  // namespace mmv

@@ -139,6 +139,7 @@ const char* defaultSceneYaml();
 ArticleScene loadDefaultScene();
 
 /// Replaces the segment count of every flexible (non-rigid) link; 1 <= n <= limits::kMaxSegments.
+/// A link in modal coordinates keeps min(modes, n) modes (one hinge per segment).
 void overrideSegments(ArticleScene& scene, int n);
 
 }  // namespace mmv
