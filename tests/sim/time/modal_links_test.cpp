@@ -113,6 +113,18 @@ TEST(ModalLinks, ErrorFallsAsModesAreAdded) {
   EXPECT_LT(last, 1e-4);
 }
 
+// `--segments 2` on a scene with 4 modes per link: each link keeps its 2 hinges' modes
+// (an internal error before).
+TEST(ModalLinks, FewerSegmentsKeepAtMostTheirHinges) {
+  ArticleScene s = slewScene(0.1, 4);
+  overrideSegments(s, 2);
+  for (const auto& l : s.article.links) EXPECT_EQ(l.modes, 2) << l.name;
+  const SimulationResult r = simulate(s);
+  ASSERT_EQ(r.modal_links.size(), 4u);
+  EXPECT_EQ(r.modal_links[0].hinges, 2);
+  EXPECT_EQ(r.modal_links[0].first_dropped_hz, 0.0);
+}
+
 TEST(ModalLinks, SimbodysIntegratorsAreRefused) {
   ArticleScene s = slewScene(0.1, 2);
   s.simulation.integrator = "cpodes";
