@@ -26,6 +26,10 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   Eigen::MatrixXd M(n, n);
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < n; ++c) M(r, c) = Ms(free_u_[r], free_u_[c]);
+  // The stiffness over every free coordinate, once: each link's modes take its block,
+  // and the Newton iteration's Jacobian the projection.
+  Eigen::MatrixXd K = calcStiffness(model, start, free_);
+  K = 0.5 * (K + K.transpose()).eval();
   std::vector<Eigen::VectorXd> columns;
   std::vector<bool> in_a_link(n, false);
   for (const auto& l : article.links) {
@@ -35,7 +39,7 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
       const Coordinate& c = model.getCoordinates()[free_[r]];
       if (c.kind == CoordinateKind::Hinge && c.part == l.name) rows.push_back(r), in_a_link[r] = true;
     }
-    addLink(l, rows, start, M, columns);
+    addLink(l, rows, M, K, columns);
   }
   for (int r = 0; r < n; ++r) {  // every other free coordinate is its own
     if (in_a_link[r]) continue;
@@ -44,8 +48,6 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   T_.resize(n, static_cast<int>(columns.size()));
   for (std::size_t j = 0; j < columns.size(); ++j) T_.col(static_cast<int>(j)) = columns[j];
   // The Newton iteration's Jacobian: the stiffness and damping at the start, projected.
-  Eigen::MatrixXd K = calcStiffness(model, start, free_);
-  K = 0.5 * (K + K.transpose()).eval();
   Eigen::VectorXd c(n);
   for (int r = 0; r < n; ++r) c[r] = model.getCoordinates()[free_[r]].damping;
   K_ = T_.transpose() * K * T_;
@@ -89,18 +91,13 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   }
 }
 
-void ModalLinks::addLink(const LinkSpec& l, const std::vector<int>& rows, const SimTK::State& start,
-                         const Eigen::MatrixXd& M, std::vector<Eigen::VectorXd>& columns) {
+void ModalLinks::addLink(const LinkSpec& l, const std::vector<int>& rows, const Eigen::MatrixXd& M,
+                         const Eigen::MatrixXd& K_free, std::vector<Eigen::VectorXd>& columns) {
   const int h = static_cast<int>(rows.size());
   if (h < l.modes) throw InternalError(strf("link %s: %d modes asked of %d hinges", l.name.c_str(), l.modes, h));
-  std::vector<int> coords;
-  Eigen::MatrixXd Mh(h, h);
-  for (int r = 0; r < h; ++r) {
-    coords.push_back(free_[rows[r]]);
-    for (int c = 0; c < h; ++c) Mh(r, c) = M(rows[r], rows[c]);
-  }
-  Eigen::MatrixXd K = calcStiffness(model_, start, coords);
-  K = 0.5 * (K + K.transpose()).eval();
+  Eigen::MatrixXd Mh(h, h), K(h, h);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < h; ++c) Mh(r, c) = M(rows[r], rows[c]), K(r, c) = K_free(rows[r], rows[c]);
   Eigen::LLT<Eigen::MatrixXd> chol(Mh);
   if (chol.info() != Eigen::Success)
     throw NumericalError("link " + l.name + ": its mass matrix with the root held is not positive definite");

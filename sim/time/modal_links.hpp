@@ -70,7 +70,7 @@ class ModalLinks final : public ReducedCoordinates {
   const std::vector<int>& freeCoordinates() const { return free_; }
 
  private:
-  void addLink(const LinkSpec& l, const std::vector<int>& hinges, const SimTK::State& start, const Eigen::MatrixXd& M,
+  void addLink(const LinkSpec& l, const std::vector<int>& hinges, const Eigen::MatrixXd& M, const Eigen::MatrixXd& K_free,
                std::vector<Eigen::VectorXd>& columns);
 
   /// a_ = q'' at (t, y), evaluated in `s` (set to t and y, realized to Dynamics).
