@@ -12,6 +12,9 @@
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <string_view>
+
+#include "sim/core/files.hpp"
 
 namespace mmv::render {
 namespace {
@@ -377,7 +380,13 @@ cv::Mat contactSheet(const std::vector<cv::Mat>& tiles, int columns) {
 }
 
 void writePng(const std::string& path, const cv::Mat& image) {
-  if (!cv::imwrite(path, image)) throw std::runtime_error(path + ": cannot write the PNG");
+  std::vector<unsigned char> png;
+  try {
+    if (!cv::imencode(".png", image, png)) throw std::runtime_error(path + ": cannot encode the PNG");
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(path + ": cannot encode the PNG: " + e.what());
+  }
+  writeFileChecked(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 VideoSink::VideoSink(const std::string& path, double fps, cv::Size size) : path_(path), size_(size) {
@@ -393,6 +402,22 @@ VideoSink::VideoSink(const std::string& path, double fps, cv::Size size) : path_
 
 VideoSink::~VideoSink() = default;
 
+void VideoSink::close() {
+  if (!writer_) return;
+  writer_->release();
+  writer_.reset();
+  // The encoder does not report a failed write: read the file back (a truncated MP4 has
+  // no index and does not open, or opens short).
+  syncFileChecked(path_);
+  cv::VideoCapture back(path_, cv::CAP_FFMPEG);
+  const double n = back.isOpened() ? back.get(cv::CAP_PROP_FRAME_COUNT) : -1;
+  if (!back.isOpened() || std::lround(n) != frames_)
+    throw std::runtime_error(path_ + ": the video did not write whole (" +
+                             (back.isOpened() ? std::to_string(std::lround(n)) + " of " + std::to_string(frames_) + " frames"
+                                              : std::string("it does not open")) +
+                             "; disk full?)");
+}
+
 void VideoSink::write(const cv::Mat& frame) {
   if (frame.size() != size_) throw std::runtime_error(path_ + ": a frame of another size");
   writer_->write(frame);
@@ -403,6 +428,7 @@ void writeVideo(const std::string& path, const std::vector<cv::Mat>& frames, dou
   if (frames.empty()) throw std::runtime_error(path + ": no frames");
   VideoSink sink(path, fps, frames[0].size());
   for (const auto& f : frames) sink.write(f);
+  sink.close();
 }
 
 namespace {

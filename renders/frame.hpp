@@ -38,6 +38,7 @@ bool projectPoint(const Camera& camera, int width, int height, const Eigen::Vect
 cv::Mat contactSheet(const std::vector<cv::Mat>& tiles, int columns);
 
 /// Writes a PNG; throws std::runtime_error when it cannot.
+/// Encodes `image` as PNG and writes it, every write checked (OutputError on a full disk).
 void writePng(const std::string& path, const cv::Mat& image);
 
 /// A video written frame by frame (a long run's frames are never all in memory):
@@ -47,7 +48,10 @@ void writePng(const std::string& path, const cv::Mat& image);
 class VideoSink {
  public:
   VideoSink(const std::string& path, double fps, cv::Size size);
-  ~VideoSink();  ///< closes the file
+  ~VideoSink();  ///< closes the file (unchecked: call close() on success)
+  /// Closes the file and reads it back: a video that did not write whole (a full disk)
+  /// is a std::runtime_error.
+  void close();
   VideoSink(const VideoSink&) = delete;
   VideoSink& operator=(const VideoSink&) = delete;
   void write(const cv::Mat& frame);

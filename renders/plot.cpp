@@ -1,4 +1,5 @@
 #include "renders/plot.hpp"
+#include "renders/frame.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,15 +48,7 @@ cv::Scalar colourFor(double t) {
   return cv::Scalar(rgb[2], rgb[1], rgb[0]);
 }
 
-void save(const std::string& path, const cv::Mat& img) {
-  bool ok = false;
-  try {
-    ok = cv::imwrite(path, img);
-  } catch (const cv::Exception& e) {
-    throw std::runtime_error(path + ": cannot write PNG: " + e.what());
-  }
-  if (!ok) throw std::runtime_error(path + ": cannot write PNG");
-}
+void save(const std::string& path, const cv::Mat& img) { writePng(path, img); }
 
 /// `v` formatted; |v| below `zero_below` prints as 0 (a linear axis' tick that is zero
 /// up to round-off, never "-0" or "1e-17"; pass a fraction of the tick step).
@@ -93,6 +86,12 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
     for (int j = 0; j < cols; ++j) {
       const double v = values(i, j), t = (v - vmin) / (vmax - vmin);
       const cv::Rect r(left + j * cell, top + i * cell, cell, cell);
+      if (!std::isfinite(v)) {  // undefined (a MAC with a zero shape): grey, labelled so
+        cv::rectangle(img, r, cv::Scalar(200, 200, 200), cv::FILLED);
+        cv::rectangle(img, r, kWhite, 1);
+        text(img, "n/a", {r.x + cell / 2, r.y + cell / 2 + 5}, 0.38, kBlack, true);
+        continue;
+      }
       cv::rectangle(img, r, colourFor(t), cv::FILLED);
       cv::rectangle(img, r, kWhite, 1);
       // Three significant figures at most, the text shrunk to fit its cell (-123.4 dB fits).

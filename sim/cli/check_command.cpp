@@ -18,9 +18,9 @@ int runCheckCommand(const CheckArgs& args) {
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const CheckReport rep = runCheck(scene, opt);
     if (out) {
-      std::ofstream(out->stage("check.md"), std::ios::binary) << checkMarkdown(rep);
-      std::ofstream(out->stage("check.json"), std::ios::binary) << checkJson(rep).dump(2) << '\n';
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->write("check.md", checkMarkdown(rep));
+      out->write("check.json", checkJson(rep).dump(2) + "\n");
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(checkJson(rep)) : emitResult(checkText(rep));
     return kOk;

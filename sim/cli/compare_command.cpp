@@ -11,12 +11,6 @@
 namespace mmv::cli {
 namespace {
 
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw OutputError(path + ": cannot write");
-}
-
 void macPng(const std::string& path, const SynthesisResult& s, const std::string& title) {
   std::vector<std::string> rows, cols;
   for (Eigen::Index i = 0; i < s.mac.rows(); ++i) rows.push_back(strf("%ld: %.2f Hz", static_cast<long>(i + 1), s.synth_hz[i]));
@@ -48,12 +42,12 @@ int runCompareCommand(const CompareArgs& args) {
     const CompareReport rep = runCompare(scene, o);
     checkResultFinite(compareToJson(rep));  // before any file is committed
     if (out) {
-      writeText(out->stage("compare.md"), formatCompareMarkdown(rep));
-      for (const auto& [name, text] : compareCsvFiles(rep)) writeText(out->stage(name), text);
-      writeText(out->stage("compare.json"), compareToJson(rep).dump(2) + "\n");
+      out->write("compare.md", formatCompareMarkdown(rep));
+      for (const auto& [name, text] : compareCsvFiles(rep)) out->write(name, text);
+      out->write("compare.json", compareToJson(rep).dump(2) + "\n");
       macPng(out->stage("mac_assumed_modes.png"), rep.assumed, "MAC: " + rep.assumed.method + ": " + scene.name);
       macPng(out->stage("mac_craig_bampton.png"), rep.craig_bampton, "MAC: " + rep.craig_bampton.method + ": " + scene.name);
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(compareToJson(rep)) : emitResult(formatCompareText(rep));
     return kOk;

@@ -79,6 +79,7 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
     render::VideoSink video(p, 24.0, cv::Size(frame.width, frame.height));
     for (int i = 0; i < 48; ++i)
       video.write(render::renderFrame(dr.mode(modes[0] - 1, std::sin(2 * M_PI * i / 48), false), cam, frame));
+    video.close();
   });
 }
 

@@ -10,6 +10,7 @@
 
 #include "renders/frame.hpp"
 #include "sim/core/errors.hpp"
+#include "sim/core/files.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv::cli {
@@ -37,6 +38,7 @@ void writeAtomically(const std::string& path, bool force, Write write) {
   const fs::path tmp = dir / (".mmvlab-" + std::to_string(::getpid()) + "-" + target.filename().string());
   try {
     write(tmp.string());
+    syncFileChecked(tmp.string());  // there, whole and on the disk before it is renamed
   } catch (const std::exception& e) {
     fs::remove(tmp, ec);
     throw OutputError(e.what());

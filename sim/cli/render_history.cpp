@@ -133,6 +133,7 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
   writeAtomically(args.out, args.force, [&](const std::string& p) {
     render::VideoSink video(p, args.fps, cv::Size(size.width, size.height));
     for (int k = 0; k < static_cast<int>(frames); ++k) video.write(image(t0 + k * args.speed / args.fps));
+    video.close();
   });
 }
 

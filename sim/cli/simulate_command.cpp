@@ -132,13 +132,13 @@ int report(const SimulateArgs& args, const std::string& name, const std::string&
   }
   checkResultFinite(summary);  // before anything is committed: no NaN reaches a file either
   if (out) {
-    std::ofstream(out->stage("history.csv"), std::ios::binary) << simulationHistoryCsv(r.record);
-    std::ofstream(out->stage("summary.json"), std::ios::binary) << summary.dump(2) << '\n';
-    std::ofstream(out->stage("scene.yaml"), std::ios::binary) << scene_text;
-    std::ofstream(out->stage("run.json"), std::ios::binary) << runRecord(args, source, spec, segments).dump(2) << '\n';
-    if (!r.states.rows.empty()) std::ofstream(out->stage("states.csv"), std::ios::binary) << simulationHistoryCsv(r.states);
+    out->write("history.csv", simulationHistoryCsv(r.record));
+    out->write("summary.json", summary.dump(2) + "\n");
+    out->write("scene.yaml", scene_text);
+    out->write("run.json", runRecord(args, source, spec, segments).dump(2) + "\n");
+    if (!r.states.rows.empty()) out->write("states.csv", simulationHistoryCsv(r.states));
     writeSimulationPlots(*out, r, name + strf(" (%s at %g)", r.integrator.c_str(), r.accuracy));
-    for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+    out->commit();  // reported as written when the command succeeds
   }
   args.json ? emitResult(summary)
             : emitResult(simulationText(name, source, r, warnings) + (target ? "\n" + targetText(*target) : std::string()));

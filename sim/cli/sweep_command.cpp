@@ -138,10 +138,10 @@ int runSweepCommand(const SweepArgs& args) {
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const SweepResult r = runSweep(scene, o);
     if (out) {
-      std::ofstream(out->stage("sweep.csv"), std::ios::binary) << sweepCsv(r);
-      std::ofstream(out->stage("sweep.json"), std::ios::binary) << sweepJson(r).dump(2) << '\n';
+      out->write("sweep.csv", sweepCsv(r));
+      out->write("sweep.json", sweepJson(r).dump(2) + "\n");
       plots(*out, r, scene.name);
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(sweepJson(r)) : emitResult(sweepText(r));
     return kOk;

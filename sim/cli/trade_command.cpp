@@ -123,10 +123,10 @@ int runTradeCommand(const TradeArgs& args) {
     const double target = s.target_m;
     checkResultFinite(tradeJson(s, target));  // before any file is committed
     if (out) {
-      std::ofstream(out->stage("trade.csv"), std::ios::binary) << tradeCsv(s);
-      std::ofstream(out->stage("trade.json"), std::ios::binary) << tradeJson(s, target).dump(2) << '\n';
+      out->write("trade.csv", tradeCsv(s));
+      out->write("trade.json", tradeJson(s, target).dump(2) + "\n");
       writeTradePlot(out->stage("trade.png"), s);
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(tradeJson(s, target)) : emitResult(tradeText(s, target));
     return kOk;

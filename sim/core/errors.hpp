@@ -7,6 +7,7 @@
 ///   SceneError      65 (content)                              UnavailableError  69
 ///   SceneFileError  66 (file)
 ///   OutputError     73 (--out)
+///   StdoutError     74 (standard output cannot be written: a full disk, a closed pipe)
 ///
 /// A user error's what() is one line that points at the cause: for scene content
 /// "file:line:col: what is wrong (got X)", for the command line the option and value.
@@ -46,6 +47,13 @@ class SceneFileError : public std::runtime_error {
 
 /// Cannot create or write the output (exit 73, EX_CANTCREAT).
 class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Standard output cannot be written (exit 74, EX_IOERR): the result was not delivered,
+/// so nothing is committed to --out either.
+class StdoutError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

@@ -49,6 +49,16 @@ void writeStrings(mat_t* mat, const char* name, const std::vector<std::string>& 
   write(mat, std::move(cell), name);
 }
 
+/// Reads `name` back from the closed file and checks it is the matrix written (matio
+/// buffers its writes, so a full disk can surface only here).
+void checkMatrix(mat_t* mat, const std::string& path, const char* name, const Eigen::MatrixXd& m) {
+  MatVar v(Mat_VarRead(mat, name));
+  const bool ok = v && v->class_type == MAT_C_DOUBLE && v->rank == 2 && v->dims[0] == static_cast<size_t>(m.rows()) &&
+                  v->dims[1] == static_cast<size_t>(m.cols()) &&
+                  (m.size() == 0 || (v->data && Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(v->data), m.rows(), m.cols()) == m));
+  if (!ok) throw OutputError(path + ": " + name + " did not write whole (disk full?)");
+}
+
 }  // namespace
 
 void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
@@ -68,6 +78,14 @@ void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
   writeStrings(mat.get(), "StateName", d.state_names);
   writeStrings(mat.get(), "InputUnit", d.input_units);
   writeStrings(mat.get(), "OutputUnit", d.output_units);
+  if (Mat_Close(mat.release()) != 0) throw OutputError(path + ": cannot write the .mat file (disk full?)");
+  MatFile back(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
+  if (!back) throw OutputError(path + ": the .mat file written does not open (disk full?)");
+  const std::pair<const char*, const Eigen::MatrixXd*> written[] = {{"A", &s.A}, {"B", &s.B}, {"C", &s.C}, {"D", &s.D},
+                                                                    {"E", &s.E}, {"Ad", &d.A}, {"Bd", &d.B}, {"Ed", &d.E}};
+  for (const auto& [name, m] : written) checkMatrix(back.get(), path, name, *m);
+  for (const char* name : {"InputName", "OutputName", "StateName", "InputUnit", "OutputUnit"})
+    if (!MatVar(Mat_VarReadInfo(back.get(), name))) throw OutputError(path + ": " + name + " did not write whole (disk full?)");
 }
 
 }  // namespace mmv

@@ -8,6 +8,10 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <exception>
+#include <iostream>
+
+#include "sim/core/files.hpp"
 
 namespace mmv {
 
@@ -68,7 +72,7 @@ void removeStaleStaging(const fs::path& base) {
 
 }  // namespace
 
-OutputDir::OutputDir(const std::string& dir, bool force) : force_(force) {
+OutputDir::OutputDir(const std::string& dir, bool force) : force_(force), exceptions_at_start_(std::uncaught_exceptions()) {
   if (dir.empty()) throw OutputError("--out: empty directory name");
   std::error_code ec;
   target_ = dir;  // as the user wrote it, for messages; relative paths stay valid (no chdir)
@@ -90,6 +94,9 @@ OutputDir::OutputDir(const std::string& dir, bool force) : force_(force) {
 }
 
 OutputDir::~OutputDir() {
+  if (committed_ && std::uncaught_exceptions() > exceptions_at_start_) undoCommit();
+  else
+    for (const auto& n : placed_) std::cerr << "mmvlab: wrote " << (target_ / n).string() << '\n';
   std::error_code ec;
   fs::remove_all(staging_, ec);
   forgetAll();
@@ -101,44 +108,58 @@ std::string OutputDir::stage(const std::string& name) {
   return (staging_ / name).string();
 }
 
-std::vector<std::string> OutputDir::commit() {
+void OutputDir::write(const std::string& name, std::string_view bytes) { writeFileChecked(stage(name), bytes); }
+
+void OutputDir::undoCommit() {
+  std::error_code ignore;
+  for (const auto& n : placed_) fs::remove(target_ / n, ignore);
+  for (const auto& n : aside_) fs::rename(staging_ / (".old-" + n), target_ / n, ignore);
+  placed_.clear();
+  aside_.clear();
+  if (created_target_) fs::remove(target_, ignore);  // only if empty: a directory this run made
+}
+
+void OutputDir::commit() {
+  MMV_DEMAND(!committed_);
   std::error_code ec;
-  if (!force_) {
-    for (const auto& n : names_)
-      if (fs::exists(target_ / n, ec))
-        throw OutputError((target_ / n).string() + " exists: nothing was written (use --force to replace)");
+  // Every staged file is there in full and on the disk before any is placed (writers of
+  // their own, PNG and .mat libraries, may have failed quietly).
+  for (const auto& n : names_) syncFileChecked((staging_ / n).string());
+  for (const auto& n : names_) {
+    const fs::path t = target_ / n;
+    const fs::file_status st = fs::symlink_status(t, ec);
+    if (!fs::exists(st)) continue;
+    if (!force_) throw OutputError(t.string() + " exists: nothing was written (use --force to replace)");
+    if (!fs::is_regular_file(st))
+      throw OutputError(t.string() + " exists and is not a regular file (a directory or a link): nothing was written "
+                                     "(--force replaces only the files mmvlab writes)");
   }
+  created_target_ = !fs::exists(target_, ec);
   fs::create_directories(target_, ec);
   if (ec) throw OutputError(target_.string() + ": cannot create directory: " + ec.message());
   // --force: the old files are moved aside first and put back if any new one cannot be
-  // placed, so a failure never leaves the user with fewer files than before.
-  std::vector<std::string> aside, placed;
-  const auto undo = [&]() {
-    std::error_code ignore;
-    for (const auto& n : placed) fs::remove(target_ / n, ignore);
-    for (const auto& n : aside) fs::rename(staging_ / (".old-" + n), target_ / n, ignore);
-  };
+  // placed (or anything after the commit fails, see the destructor), so a failure never
+  // leaves the user with fewer files than before.
+  committed_ = true;
   for (const auto& n : names_) {
-    if (!fs::exists(target_ / n, ec)) continue;
+    if (!fs::exists(fs::symlink_status(target_ / n, ec))) continue;
     fs::rename(target_ / n, staging_ / (".old-" + n), ec);
     if (ec) {
-      undo();
+      undoCommit();
+      committed_ = false;
       throw OutputError((target_ / n).string() + ": cannot replace: " + ec.message());
     }
-    aside.push_back(n);
+    aside_.push_back(n);
   }
-  std::vector<std::string> out;
   for (const auto& n : names_) {
     fs::rename(staging_ / n, target_ / n, ec);
     if (ec) {
-      undo();
+      undoCommit();
+      committed_ = false;
       throw OutputError((target_ / n).string() + ": cannot write: " + ec.message());
     }
-    placed.push_back(n);
-    out.push_back((target_ / n).string());
+    placed_.push_back(n);
   }
-  committed_ = true;
-  return out;
 }
 
 }  // namespace mmv

@@ -1,13 +1,19 @@
 #pragma once
-/// Writing a command's files into --out DIR without half-written results: every file
-/// is first written into a private staging directory next to DIR; commit() then
-/// checks that no file would replace one the user already has (unless --force) and
-/// moves them all into DIR. If anything fails before commit(), DIR is untouched and
-/// the staging directory is removed.
+/// Writing a command's files into --out DIR as one transaction: every file is first
+/// written into a private staging directory next to DIR (write(): every write, the
+/// fsync and the close checked; files a library writes are checked and synced at
+/// commit); commit() then checks that no file would replace one the user already has
+/// (unless --force; a directory or anything but a regular file is never replaced) and
+/// moves them all into DIR, the files they replace set aside. The transaction ends when
+/// the OutputDir is destroyed: normally, the replaced files are dropped; while an
+/// exception unwinds (anything after commit that fails, e.g. standard output that
+/// cannot be written), DIR is put back as it was. If anything fails before commit(),
+/// DIR is untouched and the staging directory is removed.
 
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sim/core/errors.hpp"
@@ -21,15 +27,21 @@ class OutputDir {
   OutputDir& operator=(const OutputDir&) = delete;
   ~OutputDir();
 
-  /// Where to write `name` now (inside the staging directory).
+  /// Where to write `name` now (inside the staging directory), for a writer of its own.
   std::string stage(const std::string& name);
-  /// Moves every staged file into the target directory; returns their final paths.
-  std::vector<std::string> commit();
+  /// Writes `bytes` as `name` into the staging directory, every step checked.
+  void write(const std::string& name, std::string_view bytes);
+  /// Moves every staged file into the target directory. The files are reported on
+  /// stderr ("mmvlab: wrote DIR/NAME") when the transaction ends well (the destructor).
+  void commit();
 
  private:
   std::filesystem::path target_, staging_;
   std::vector<std::string> names_;
-  bool force_ = false, committed_ = false;
+  std::vector<std::string> aside_, placed_;  ///< replaced (kept in staging) and placed by commit()
+  bool force_ = false, committed_ = false, created_target_ = false;
+  int exceptions_at_start_ = 0;  ///< std::uncaught_exceptions() when made: more at the end means a failure
+  void undoCommit();
 };
 
 }  // namespace mmv

@@ -1,6 +1,8 @@
 // Parallel, resumable, sharded sweeps (sim/plan/sweep_runner.hpp).
 #include "sim/plan/sweep_runner.hpp"
 
+#include "sim/core/files.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -94,12 +96,13 @@ ParsedJournal parseJournal(const fs::path& path) {
 /// Writes `text` to `path` through a temporary file and a rename: never half a file.
 void writeAtomically(const fs::path& path, const std::string& text) {
   const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp");
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw OutputError(tmp.string() + ": cannot write");
+  writeFileChecked(tmp.string(), text);
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw OutputError(path.string() + ": cannot write (" + ec.message() + ")");
   }
-  fs::rename(tmp, path);
 }
 
 std::string tableText(const std::vector<std::string>& header, const std::map<long, std::string>& rows) {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sim/core/files.hpp"
 #include "support/cli.hpp"
 
 namespace mmv {
@@ -42,8 +43,68 @@ TEST_F(OutputDirTest, StagesInsideAnExistingDirectory) {
   int staging = 0;
   for (const auto& e : fs::directory_iterator(root_)) staging += e.is_directory();
   EXPECT_EQ(staging, 1);  // DIR/.mmvlab-staging-PID-NAME: a mount point or a read-only parent works
-  EXPECT_EQ(out.commit().size(), 1u);
+  out.commit();
   EXPECT_EQ(slurp(root_ / "x.csv"), "1\n");
+}
+
+// The transaction ends with the OutputDir: a failure after the commit (standard output
+// that cannot be written) puts DIR back as it was, the replaced files and all. Before,
+// `rom --out D > /dev/full` exited 74 with D written.
+TEST_F(OutputDirTest, AFailureAfterTheCommitPutsEverythingBack) {
+  std::ofstream(root_ / "a.csv") << "old a\n";
+  const fs::path fresh = root_ / "new_dir";
+  EXPECT_THROW(
+      {
+        OutputDir out(root_.string(), true);
+        out.write("a.csv", "new a\n");
+        out.write("b.csv", "new b\n");
+        out.commit();
+        EXPECT_EQ(slurp(root_ / "a.csv"), "new a\n");
+        throw StdoutError("standard output is full");
+      },
+      StdoutError);
+  EXPECT_EQ(slurp(root_ / "a.csv"), "old a\n");
+  EXPECT_FALSE(fs::exists(root_ / "b.csv"));
+  EXPECT_THROW(
+      {
+        OutputDir out(fresh.string(), false);
+        out.write("a.csv", "x");
+        out.commit();
+        throw StdoutError("standard output is full");
+      },
+      StdoutError);
+  EXPECT_FALSE(fs::exists(fresh));  // the directory the run made is gone too
+  int left = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(root_)) ++left;
+  EXPECT_EQ(left, 1);  // a.csv: no staging directory left
+}
+
+// --force replaces only the files mmvlab writes: a directory (with the user's files in
+// it) that has an output's name is refused, untouched. Before, `simulate --out R2
+// --force` deleted R2/tips.png/ and everything under it.
+TEST_F(OutputDirTest, ForceNeverReplacesADirectory) {
+  fs::create_directories(root_ / "tips.png");
+  std::ofstream(root_ / "tips.png" / "mine.txt") << "keep\n";
+  OutputDir out(root_.string(), true);
+  out.write("tips.png", "png");
+  EXPECT_THROW(out.commit(), OutputError);
+  EXPECT_EQ(slurp(root_ / "tips.png" / "mine.txt"), "keep\n");
+}
+
+// Every write is checked: a full disk is an OutputError naming the file, never a short
+// file with success (/dev/full fails every write with ENOSPC).
+TEST_F(OutputDirTest, AFullDiskIsAnError) {
+  try {
+    writeFileChecked("/dev/full", std::string(100000, 'x'));
+    ADD_FAILURE() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/dev/full: cannot write: No space left on device"), std::string::npos) << e.what();
+  }
+  OutputDir out(root_.string(), false);
+  const std::string staged = out.stage("empty.png");  // a library that failed quietly: an empty file
+  std::ofstream(staged).flush();
+  EXPECT_THROW(out.commit(), OutputError);
+  EXPECT_FALSE(fs::exists(root_ / "empty.png"));
 }
 
 // The second new file cannot be placed (its staged copy is gone): the commit fails and
