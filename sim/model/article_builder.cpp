@@ -443,7 +443,10 @@ std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
   if (scene.article.model == ArticleModel::Spatial) model->setSpatial();
   Builder(scene, *model).build();
   addLoadsAndClosures(scene.article, *model);
-  model->setClosedFormForces();  // the builder adds nothing else
+  model->setClosedFormForces();  // the builder adds nothing else (the damper below vanishes at rest)
+  // A modal ratio or Rayleigh damping: a damping matrix over the free coordinates, set
+  // by a time run at its equilibrium (sim/statics/damping_matrix.hpp).
+  if (scene.damping && scene.damping->kind != DampingSpec::Kind::HingeViscous) model->addLinearDamper();
   if (std::any_of(scene.article.links.begin(), scene.article.links.end(), [](const LinkSpec& l) { return l.modes > 0; }))
     model->addReducedMotions();
   model->finalize();

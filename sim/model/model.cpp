@@ -1,6 +1,7 @@
 #include "sim/model/model.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "sim/core/errors.hpp"
 #include <stdexcept>
@@ -46,6 +47,74 @@ class ProgramMobilityForce : public SimTK::Force::Custom::Implementation {
 };
 
 }  // namespace
+
+/// C over the speeds `u`, shared by the model and its Simbody force element.
+struct Model::LinearDamping {
+  std::vector<int> coords, u;
+  Eigen::MatrixXd C;
+  Eigen::VectorXd speeds(const SimTK::State& s) const {
+    Eigen::VectorXd v(u.size());
+    for (std::size_t i = 0; i < u.size(); ++i) v[static_cast<Eigen::Index>(i)] = s.getU()[u[i]];
+    return v;
+  }
+};
+
+namespace {
+
+/// f = -C u on the speeds of a Model::LinearDamping.
+class LinearDamperForce : public SimTK::Force::Custom::Implementation {
+ public:
+  explicit LinearDamperForce(std::shared_ptr<const Model::LinearDamping> d) : d_(std::move(d)) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                 SimTK::Vector& mobility_forces) const override {
+    if (d_->C.size() == 0) return;
+    const Eigen::VectorXd f = d_->C * d_->speeds(s);
+    for (std::size_t i = 0; i < d_->u.size(); ++i) mobility_forces[d_->u[i]] -= f[static_cast<Eigen::Index>(i)];
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+  bool dependsOnlyOnPositions() const override { return false; }
+
+ private:
+  std::shared_ptr<const Model::LinearDamping> d_;
+};
+
+}  // namespace
+
+void Model::addLinearDamper() {
+  MMV_DEMAND(!finalized_ && !linear_damper_);
+  linear_damper_ = std::make_shared<LinearDamping>();
+  SimTK::Force::Custom(forces_, new LinearDamperForce(linear_damper_));
+}
+
+void Model::setLinearDamping(const std::vector<int>& coords, const Eigen::MatrixXd& C) {
+  MMV_DEMAND(linear_damper_ && finalized_);
+  MMV_DEMAND(C.rows() == static_cast<Eigen::Index>(coords.size()) && C.cols() == C.rows());
+  linear_damper_->coords = coords;
+  linear_damper_->u.clear();
+  for (int i : coords) linear_damper_->u.push_back(getUIndex(i));
+  linear_damper_->C = C;
+}
+
+const Eigen::MatrixXd& Model::getLinearDamping() const {
+  static const Eigen::MatrixXd none;
+  return linear_damper_ ? linear_damper_->C : none;
+}
+
+const std::vector<int>& Model::getLinearDampingCoordinates() const {
+  static const std::vector<int> none;
+  return linear_damper_ ? linear_damper_->coords : none;
+}
+
+double Model::calcDissipation(const SimTK::State& s) const {
+  double p = 0;
+  for (std::size_t i = 0; i < coords_.size(); ++i)
+    if (coords_[i].damping > 0) p += coords_[i].damping * std::pow(s.getU()[uindex_[i]], 2);
+  if (linear_damper_ && linear_damper_->C.size() > 0) {
+    const Eigen::VectorXd v = linear_damper_->speeds(s);
+    p += v.dot(linear_damper_->C * v);
+  }
+  return p;
+}
 
 void Model::addCoordinate(const Coordinate& c) {
   MMV_DEMAND(!finalized_);

@@ -139,6 +139,23 @@ class Model {
   /// Registers a coordinate; adds a linear spring if stiffness > 0 and a viscous
   /// damper if damping > 0.
   void addCoordinate(const Coordinate& c);
+  /// Installs a viscous damping force f = -C u over a set of coordinates (the scene's
+  /// modal or Rayleigh damping in time runs: sim/statics/damping_matrix.hpp); its
+  /// matrix is set later by setLinearDamping, once the equilibrium it is formed at is
+  /// known (until then the force is zero). Call before finalize. The force vanishes at
+  /// rest, so statics and stiffness (closed form included) are unaffected.
+  void addLinearDamper();
+  struct LinearDamping;  ///< its data, shared with the Simbody force element (model.cpp).
+  bool hasLinearDamper() const { return linear_damper_ != nullptr; }
+  /// C (symmetric, over `coords`, coordinate indices) of the force addLinearDamper
+  /// installed. Changes no Simbody topology: states made before stay valid, but a state
+  /// realized to Dynamics before this call must be realized again.
+  void setLinearDamping(const std::vector<int>& coords, const Eigen::MatrixXd& C);
+  /// The matrix set (empty before setLinearDamping) and its coordinates.
+  const Eigen::MatrixXd& getLinearDamping() const;
+  const std::vector<int>& getLinearDampingCoordinates() const;
+  /// Power dissipated by every viscous damper, sum c_i u_i^2 + u^T C u (W).
+  double calcDissipation(const SimTK::State& s) const;
   /// Power the coordinates' commanded torques deliver, sum tau(t) u (W).
   double inputPower(const SimTK::State& s) const;
   void addPoint(const NamedPoint& p);
@@ -262,6 +279,7 @@ class Model {
   bool spatial_ = false;
   bool finalized_ = false;
   ReducedMotions reduced_motions_;
+  std::shared_ptr<LinearDamping> linear_damper_;
   std::map<SimTK::MobilizedBodyIndex, std::function<double(double)>> prescribed_udot_;
 };
 

@@ -18,15 +18,6 @@ Eigen::VectorXd hingeDampers(const Model& model, const std::vector<int>& dofs, d
   return c;
 }
 
-std::string describeDamping(const DampingSpec& d) {
-  switch (d.kind) {
-    case DampingSpec::Kind::Modal: return strf("modal, %.3g %% of critical in every mode", 100 * d.modal_ratio);
-    case DampingSpec::Kind::Rayleigh: return strf("Rayleigh, C = %.4g/s * M + %.4g s * K", d.alpha, d.beta);
-    case DampingSpec::Kind::HingeViscous: return strf("hinge dampers c = %.4g s * k on every bending hinge", d.hinge_beta);
-  }
-  return "";
-}
-
 namespace {
 
 /// Phi^T C Phi over the modes held, for the damping model.

@@ -23,6 +23,7 @@
 #include "sim/model/model.hpp"
 #include "sim/modes/modal.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/statics/damping_matrix.hpp"
 #include "sim/statics/linearize.hpp"
 
 namespace mmv {
@@ -30,10 +31,6 @@ namespace mmv {
 /// The viscous damper of each coordinate in `dofs` (N*m*s/rad): hinge_beta * k on the
 /// bending hinges, 0 on joints.
 Eigen::VectorXd hingeDampers(const Model& model, const std::vector<int>& dofs, double hinge_beta_s);
-
-/// One line describing the damping model, with its parameters and units
-/// ("hinge dampers c = 0.002 s * k", "modal, 1 % of critical in every mode").
-std::string describeDamping(const DampingSpec& d);
 
 /// The most real modes the damped eigenproblem is solved over (2x as many states, a dense
 /// nonsymmetric eigen solution: under a second at 400 on this machine).

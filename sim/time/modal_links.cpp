@@ -9,6 +9,29 @@
 
 namespace mmv {
 
+namespace {
+
+/// The viscous damping over the free coordinates `free`: the hinge dampers, and a modal
+/// or Rayleigh damping matrix (Model::getLinearDamping) where the model carries one.
+Eigen::MatrixXd dampingOverFree(const Model& model, const std::vector<int>& free) {
+  const int n = static_cast<int>(free.size());
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n);
+  for (int r = 0; r < n; ++r) C(r, r) = model.getCoordinates()[free[r]].damping;
+  const std::vector<int>& damped = model.getLinearDampingCoordinates();
+  std::vector<int> row(damped.size(), -1);  // each damped coordinate's row in free
+  for (std::size_t a = 0; a < damped.size(); ++a) {
+    const auto it = std::find(free.begin(), free.end(), damped[a]);
+    if (it != free.end()) row[a] = static_cast<int>(it - free.begin());
+  }
+  for (std::size_t a = 0; a < damped.size(); ++a)
+    for (std::size_t b = 0; b < damped.size(); ++b)
+      if (row[a] >= 0 && row[b] >= 0)
+        C(row[a], row[b]) += model.getLinearDamping()(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+  return C;
+}
+
+}  // namespace
+
 ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const SimTK::State& start)
     : model_(model), rhs_(start) {
   const auto& moved = model.getReducedMotions().mobilizers();
@@ -48,10 +71,9 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   T_.resize(n, static_cast<int>(columns.size()));
   for (std::size_t j = 0; j < columns.size(); ++j) T_.col(static_cast<int>(j)) = columns[j];
   // The Newton iteration's Jacobian: the stiffness and damping at the start, projected.
-  Eigen::VectorXd c(n);
-  for (int r = 0; r < n; ++r) c[r] = model.getCoordinates()[free_[r]].damping;
+  const Eigen::MatrixXd C = dampingOverFree(model, free_);
   K_ = T_.transpose() * K * T_;
-  C_ = T_.transpose() * c.asDiagonal() * T_;
+  C_ = T_.transpose() * C * T_;
   const int nu = start.getNU();
   udot_ = SimTK::Vector(nu, 0.0);
   v_ = SimTK::Vector(nu, 0.0);

@@ -15,20 +15,12 @@
 #include "sim/scene/stations.hpp"
 #include "sim/statics/closures.hpp"
 #include "sim/time/run_integrator.hpp"
+#include "sim/statics/damping_matrix.hpp"
+#include "sim/statics/linearize.hpp"
 #include "sim/statics/statics.hpp"
 
 namespace mmv {
 namespace {
-
-/// Power dissipated by the dampers, sum c u^2 (W).
-double dissipation(const Model& model, const SimTK::State& s) {
-  double p = 0;
-  for (int i = 0; i < model.getNumCoordinates(); ++i) {
-    const double c = model.getCoordinates()[i].damping;
-    if (c > 0) p += c * std::pow(s.getU()[model.getUIndex(i)], 2);
-  }
-  return p;
-}
 
 /// A sensor in a run: its facility model and what it reads.
 struct LiveSensor {
@@ -224,13 +216,32 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
   return row;
 }
 
+/// The scene's modal or Rayleigh damping as the damping matrix of the linear models,
+/// formed at the equilibrium `eq` (every mode of it gets its ratio) and held constant in
+/// the coordinates through the run.
+void setDampingMatrix(Model& model, const DampingSpec& damping, const EquilibriumResult& eq) {
+  const LinearizedModel lin = linearize(model, eq.state, eq.closure_multipliers);
+  model.setLinearDamping(lin.dofs, calcDampingMatrix(lin, damping));
+}
+
 /// The run's start: the static equilibrium (or the scene's angles) at rest, with the
-/// closures as constraints from here on.
-SimTK::State initialState(Model& model, const SimulationSpec& spec, std::vector<std::string>& warnings) {
+/// closures as constraints from here on, and the damping matrix (if the scene has one)
+/// formed at the equilibrium.
+SimTK::State initialState(Model& model, const SimulationSpec& spec, const std::optional<DampingSpec>& damping,
+                          std::vector<std::string>& warnings) {
   SimTK::State s = model.getReferenceState();
+  const bool matrix_damping = model.hasLinearDamper() && damping && isMatrixDamping(*damping);
+  std::optional<EquilibriumResult> solved;
+  if (spec.from_equilibrium || matrix_damping) {
+    solved = solveEquilibrium(model);
+    if (!solved->converged)
+      throw NumericalError("static equilibrium failed" +
+                           std::string(spec.from_equilibrium ? "" : " (the damping matrix is formed there)") + ": " +
+                           solved->failure);
+    if (matrix_damping) setDampingMatrix(model, *damping, *solved);
+  }
   if (spec.from_equilibrium) {
-    const EquilibriumResult eq = solveEquilibrium(model);
-    if (!eq.converged) throw NumericalError("static equilibrium failed: " + eq.failure);
+    const EquilibriumResult& eq = *solved;
     s = eq.state;
     const EquilibriumAssessment a = assessEquilibrium(model, eq);
     for (const auto& m : a.moved_joints) warnings.push_back("the start is the static equilibrium nearest the scene's angles: " + m);
@@ -253,7 +264,7 @@ SimulationResult simulate(const ArticleScene& scene, const std::function<void(do
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene);
   SimulationResult r;
-  SimTK::State s = initialState(*model, spec, r.warnings);
+  SimTK::State s = initialState(*model, spec, scene.damping, r.warnings);
   std::unique_ptr<ModalLinks> modal;  // links in modal coordinates
   if (!model->getReducedMotions().empty()) {
     model->getSystem().realize(s, SimTK::Stage::Position);
@@ -265,9 +276,13 @@ SimulationResult simulate(const ArticleScene& scene, const std::function<void(do
                            modal.get());
   r.integrator = spec.integrator;
   r.accuracy = spec.accuracy;
+  r.damping = !scene.damping ? "none (the scene has no damping:)"
+              : isMatrixDamping(*scene.damping)
+                  ? describeDamping(*scene.damping) + ", its damping matrix formed at the static equilibrium"
+                  : describeDamping(*scene.damping);
   ArticleRecorder recorder(*model, scene, r);
   recordRun(model->getSystem(), integrator, spec, r, progress, [&](const SimTK::State& st) { return model->inputPower(st); },
-            [&](const SimTK::State& st) { return dissipation(*model, st); },
+            [&](const SimTK::State& st) { return model->calcDissipation(st); },
             [&](double t, const SimTK::State& st) { return recorder.sample(t, st); });
   recorder.finish();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -98,6 +98,9 @@ struct SimulationResult {
   double carried_weight_n = 0;
   std::string integrator;
   double accuracy = 0;
+  /// The damping the run carried, one line ("none: the scene has no damping:", or the
+  /// model with where its matrix was formed).
+  std::string damping;
   int steps = 0, realizations = 0;
   long rejected_steps = 0;  ///< error-test and Newton failures, retried with a smaller step
   long jacobians = 0;       ///< iteration matrices formed (implicit methods); -1: not reported (CPodes)

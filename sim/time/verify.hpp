@@ -52,7 +52,19 @@ double defaultErrorTarget(double amplitude_m, double scale_m);
 RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spec,
                           const std::function<SimulationResult(const SimulationSpec&)>& rerun, double target_m);
 
-/// A warning when the estimate exceeds its target; empty otherwise.
+/// The safety factor a verified run's estimate is held to: "met" means
+/// kVerifySafetyFactor x estimate <= target. The estimate is the run's distance from a
+/// companion at 10x tighter tolerances, so the companion's own error, and an error that
+/// does not fall with the tolerance as the method's order says, are not in it: on a
+/// pendulum released from 170 deg (CVODE Adams at 1e-7) the true error was 1.15 to 1.39
+/// times the estimate (tests/sim/time/verify_test.cpp measures it). The contract
+/// (`--target-error`, sim/time/target.hpp) holds its candidates to the same factor.
+inline constexpr double kVerifySafetyFactor = 2.0;
+
+/// The estimate, with its safety factor, within the target.
+bool verificationMet(const RunVerification& v);
+
+/// A warning when the estimate, with its safety factor, exceeds its target; empty otherwise.
 std::string verificationWarning(const RunVerification& v);
 
 }  // namespace mmv
