@@ -19,6 +19,7 @@ const char* verdictName(Verdict v) {
     case Verdict::Fail: return "FAIL";
     case Verdict::NotChecked: return "n/a";
     case Verdict::Info: return "info";
+    case Verdict::Advisory: return "advisory";
   }
   return "?";
 }
@@ -31,6 +32,10 @@ void judge(CheckLine& l, double required_margin_pct) {
   }
   l.margin_pct = (l.capacity - l.demand) / l.capacity * 100;
   l.verdict = l.margin_pct < 0 ? Verdict::Fail : l.margin_pct < required_margin_pct ? Verdict::Warn : Verdict::Pass;
+}
+
+void makeAdvisory(CheckLine& l) {
+  if (l.verdict == Verdict::Fail) l.verdict = Verdict::Advisory;
 }
 
 namespace plan {
@@ -115,7 +120,8 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, con
   rep.overall = Verdict::Pass;
   for (const auto& l : rep.lines) {
     if (l.verdict == Verdict::Fail) rep.overall = Verdict::Fail;
-    if (l.verdict == Verdict::Warn && rep.overall == Verdict::Pass) rep.overall = Verdict::Warn;
+    if ((l.verdict == Verdict::Warn || l.verdict == Verdict::Advisory) && rep.overall == Verdict::Pass)
+      rep.overall = Verdict::Warn;
     if (l.verdict == Verdict::NotChecked) ++rep.not_checked;
   }
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -44,8 +44,16 @@
 
 namespace mmv {
 
-enum class Verdict { Pass, Warn, Fail, NotChecked, Info };
-const char* verdictName(Verdict v);  ///< "pass", "warn", "FAIL", "n/a", "info".
+/// Advisory: a line that is not a requirement of the test (the table's bandwidth against
+/// the modes, the closest pair, planarity) whose demand exceeds its capacity (a negative
+/// margin); its note says how the test goes on. It raises the overall verdict to warn.
+enum class Verdict { Pass, Warn, Fail, NotChecked, Info, Advisory };
+const char* verdictName(Verdict v);  ///< "pass", "warn", "FAIL", "n/a", "info", "advisory".
+
+struct CheckLine;
+/// Marks `l` advisory: a negative margin becomes Verdict::Advisory, never FAIL nor a
+/// mislabelled warn.
+void makeAdvisory(CheckLine& l);
 
 struct CheckLine {
   std::string id;           ///< stable across runs of one scene, e.g. "torque.joint1.hold", "table.stroke" (sweep columns).

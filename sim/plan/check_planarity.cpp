@@ -48,7 +48,7 @@ void addModeSeparationLines(const CheckInputs& in, const PlanarityReport& p, std
                                                        "out-of-plane axes tell them apart"
                                                      : ""),
                            0);
-    if (l.verdict == Verdict::Fail) l.verdict = Verdict::Warn;
+    makeAdvisory(l);
     out.push_back(l);
   }
 }
@@ -76,7 +76,7 @@ void addResponseLines(const CheckInputs& in, const PlanarityReport& p, std::vect
                                             "(modes %d and %d, equal modal damping); above the limit the test is not planar",
                                             worst->point.c_str(), worst->out_mode, worst->in_mode),
                            in.options.required_margin_pct);
-    if (l.verdict == Verdict::Fail) l.verdict = Verdict::Warn;
+    makeAdvisory(l);
     out.push_back(l);
   }
 }

@@ -93,20 +93,23 @@ TEST(Check, TablePayloadStrokeAndAccelerometerPeakUnderASine) {
   EXPECT_NEAR(stroke->margin_pct, (0.15 - 0.01) / 0.15 * 100, 1e-9);
   EXPECT_NE(stroke->note.find("peak acceleration 1.58 m/s^2"), std::string::npos) << stroke->note;  // 0.01 (4 pi)^2
   // The hanging link's transverse axis is world x: the accelerometer reads the table's
-  // acceleration (2 pi f)^2 A through its band limits.
+  // acceleration (2 pi f)^2 A through its band limits: in steady state (the note), and
+  // over the scene's 2 s run from rest (the demand) at least that (a 200 Hz sample
+  // misses the crest by at most 1 - cos(pi f / fs) = 0.1 %) plus the 0.1 Hz high-pass's
+  // response to the sine starting at t = 0 (5.6 % here).
   const CheckLine* acc = find(r, "acc (accelerometer at link1.tip) under the table's program");
   ASSERT_NE(acc, nullptr);
   const facility::Sensor sensor(facility::accelerometerSpec(), s.simulation.sample_rate_hz);
   const double expected = std::pow(2 * M_PI * 2.0, 2) * 0.01 * sensor.bandGain(2.0);
-  EXPECT_NEAR(acc->demand, expected, 2e-3 * expected);
+  EXPECT_NE(acc->note.find("steady state of the 2 Hz sine would read 1.58 m/s^2"), std::string::npos) << acc->note;
+  EXPECT_GE(acc->demand, 0.999 * expected);
+  EXPECT_LE(acc->demand, 1.1 * expected);
   EXPECT_EQ(acc->verdict, Verdict::Pass);
-  // The same accelerometer in the rigid-link run, as recorded: at least the steady
-  // amplitude (a 200 Hz sample misses the crest by at most 1 - cos(pi f / fs) = 0.1 %),
-  // plus the 0.1 Hz high-pass's response to the sine starting at t = 0 (5.6 % here).
+  // The same accelerometer in the rigid-link run, as recorded: the link is rigid, so the
+  // time run of the nonlinear model and the linear model's response are one motion.
   const CheckLine* run = find(r, "acc (accelerometer at link1.tip) during the scene's run");
   ASSERT_NE(run, nullptr);
-  EXPECT_GE(run->demand, 0.999 * expected);
-  EXPECT_LE(run->demand, 1.1 * expected);
+  EXPECT_NEAR(run->demand, acc->demand, 1e-3 * acc->demand);
 }
 
 TEST(Check, ASineBeyondTheAccelerometersRangeFails) {
@@ -229,7 +232,7 @@ TEST(Check, PlanarityLinesJudgeTheSpatialArticle) {
   for (const auto& l : sym.lines)
     if (l.id.rfind("planarity.mode", 0) == 0 && l.id != "planarity.modes") {
       ++separations;
-      EXPECT_EQ(l.verdict, l.capacity > l.demand ? Verdict::Pass : Verdict::Warn) << l.requirement;
+      EXPECT_EQ(l.verdict, l.capacity > l.demand ? Verdict::Pass : Verdict::Advisory) << l.requirement;
     }
   EXPECT_EQ(separations, 6);
 
@@ -248,7 +251,8 @@ TEST(Check, PlanarityLinesJudgeTheSpatialArticle) {
   const CheckLine* coupled = findId(r, "planarity.base x");
   ASSERT_NE(coupled, nullptr);
   EXPECT_DOUBLE_EQ(coupled->demand, worst);
-  EXPECT_EQ(coupled->verdict, Verdict::Warn);
+  EXPECT_EQ(coupled->verdict, Verdict::Advisory);  // beyond the limit: advice, labelled as such
+  EXPECT_NE(r.overall, Verdict::Pass);  // and it raises the overall verdict
   EXPECT_EQ(findId(runCheck(tilted, CheckOptions{}, &modes), "planarity.base x")->verdict, Verdict::Pass);
 }
 
