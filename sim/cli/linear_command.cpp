@@ -138,8 +138,16 @@ Linear buildAndReduce(const LinearArgs& args, const ArticleScene& scene) {
   return r;
 }
 
+/// The response grid: --from..--to; with --band and no --from/--to, the band (from
+/// --from's default where the band starts at 0): a model reduced to a band is judged
+/// there, and its error and band_hz say so.
 std::vector<double> frequencies(const LinearArgs& a) {
   if (!(a.f_min > 0) || !(a.f_max > a.f_min)) throw UsageError("--from/--to: need 0 < FROM < TO (Hz)");
+  if (!a.band.empty() && !a.range_given) {
+    const auto [lo, hi] = parseBand(a.band);
+    const double from = lo > 0 ? lo : std::min(a.f_min, 0.01 * hi);
+    return logFrequencies(from, hi, a.points);
+  }
   return logFrequencies(a.f_min, a.f_max, a.points);
 }
 
@@ -264,7 +272,7 @@ int runFrfCommand(const LinearArgs& args) {
             rom.magnitude_db.push_back(fb);
             rom.phase_deg.push_back(std::arg(b) * 180 / M_PI);
           }
-          std::ofstream(out->stage("frf_" + base + ".csv"), std::ios::binary) << frfCsv(s, o, i, f, hf, hr);
+          out->write("frf_" + base + ".csv", frfCsv(s, o, i, f, hf, hr));
           try {
             figures::bode(out->stage("bode_" + base + ".png"), {full, rom},
                           s.output_names[o] + " / " + s.input_names[i] + " (" + s.output_units[o] + " per " +
@@ -274,14 +282,14 @@ int runFrfCommand(const LinearArgs& args) {
             throw OutputError(e.what());
           }
         }
-      std::ofstream(out->stage("frf.uff"), std::ios::binary) << frfUff(lm, scene, f, hf);
+      out->write("frf.uff", frfUff(lm, scene, f, hf));
     }
     const std::string text = args.json ? "" : linearSummaryText(lm, red, err, f, hf) + targetText(a);
     nlohmann::ordered_json json = args.json ? linearSummaryJson(lm, red, err, f, hf, scene.name) : nlohmann::ordered_json();
     if (args.json) addTargetJson(a, json);
     if (out) {
       args.json ? checkResultFinite(json) : checkResultFinite(text);  // before any file is committed
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(json) : emitResult(text);
     return kOk;
@@ -310,9 +318,11 @@ int runRomCommand(const LinearArgs& args) {
     nlohmann::ordered_json rom_json = romJson(lm, red, a.err, a.f);
     addTargetJson(a, rom_json);
     checkResultFinite(rom_json);  // before any file is committed
-    std::ofstream(out.stage("rom.json"), std::ios::binary) << rom_json.dump(2) << '\n';
-    for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
-    args.json ? emitResult(rom_json) : emitResult(linearSummaryText(lm, red, a.err, a.f, a.hf) + targetText(a));
+    out.write("rom.json", rom_json.dump(2) + "\n");
+    // The text for stdout is made before --out is committed: nothing long runs after it.
+    const std::string text = args.json ? "" : linearSummaryText(lm, red, a.err, a.f, a.hf) + targetText(a);
+    out.commit();  // reported as written when the command succeeds
+    args.json ? emitResult(rom_json) : emitResult(text);
     return kOk;
   });
 }

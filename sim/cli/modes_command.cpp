@@ -65,7 +65,7 @@ int runModesCommand(const ModesArgs& args) {
     }
     ModesOptions opt;
     opt.max_modes = args.modes;
-    opt.with_shapes = args.json;
+    opt.with_shapes = true;  // the JSON on stdout and in --out is one object: shapes in both
     opt.points = checkedPoints(args.points, scene.article, "--points");
     opt.damping = scene.damping;
     ModesReport rep = runModes(scene, opt);
@@ -74,14 +74,15 @@ int runModesCommand(const ModesArgs& args) {
     for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
     const nlohmann::ordered_json json = modesToJson(rep);
     const std::string text = formatModesText(rep);
+    std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
     if (!args.out.empty()) {
-      OutputDir out(args.out, args.force);
+      out.emplace(args.out, args.force);
       checkResultFinite(json);  // before any file is committed
       checkResultFinite(text);
-      std::ofstream(out.stage("modes.txt"), std::ios::binary) << text;
-      std::ofstream(out.stage("modes.json"), std::ios::binary) << json.dump(2) << '\n';
-      std::ofstream(out.stage("modes.csv"), std::ios::binary) << modesCsv(rep);
-      for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->write("modes.txt", text);
+      out->write("modes.json", json.dump(2) + "\n");
+      out->write("modes.csv", modesCsv(rep));
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(json) : emitResult(text);
     return kOk;
@@ -99,11 +100,11 @@ int runConvergeCommand(const ConvergeArgs& args) {
     if (out) {
       checkResultFinite(json);  // before any file is committed
       checkResultFinite(text);
-      std::ofstream(out->stage("converge.txt"), std::ios::binary) << text;
-      std::ofstream(out->stage("converge.json"), std::ios::binary) << json.dump(2) << '\n';
-      std::ofstream(out->stage("converge.csv"), std::ios::binary) << convergenceCsv(c);
+      out->write("converge.txt", text);
+      out->write("converge.json", json.dump(2) + "\n");
+      out->write("converge.csv", convergenceCsv(c));
       convergencePlot(*out, c);
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(json) : emitResult(text);
     return kOk;

@@ -58,8 +58,8 @@ json modeJson(const ModesReport& r, const ModeInfo& m) {
   if (!m.at_points.empty()) {
     json at = json::array();
     for (const auto& p : m.at_points) {
-      json pj = {{"point", p.point}, {"ux_m", p.ux}, {"uy_m", p.uy}};
-      if (r.spatial) pj["uz_m"] = p.uz;
+      json pj = {{"point", p.point}, {"ux_per_modal_unit", p.ux}, {"uy_per_modal_unit", p.uy}};
+      if (r.spatial) pj["uz_per_modal_unit"] = p.uz;
       at.push_back(pj);
     }
     mj["at_points"] = at;

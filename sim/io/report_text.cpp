@@ -107,9 +107,10 @@ std::string formatModesText(const ModesReport& r) {
   if (r.segments_choice) os << segmentsChoiceText(*r.segments_choice);
   if (r.planarity) os << planarityText(*r.planarity);
   if (!r.modes.empty() && !r.modes.front().at_points.empty()) {
-    os << "\nMode shapes at the points asked for (translation per unit modal coordinate, mass-normalised shapes)\n";
-    Table t(r.spatial ? std::vector<std::string>{"mode", "point", "ux_m", "uy_m", "uz_m"}
-                      : std::vector<std::string>{"mode", "point", "ux_m", "uy_m"});
+    os << "\nMode shapes at the points asked for (translation per unit modal coordinate of the mass-normalised shape,\n"
+          "phi^T M phi = 1: m per (kg^1/2 m), i.e. kg^-1/2; not a displacement in metres)\n";
+    Table t(r.spatial ? std::vector<std::string>{"mode", "point", "ux_per_modal_unit", "uy_per_modal_unit", "uz_per_modal_unit"}
+                      : std::vector<std::string>{"mode", "point", "ux_per_modal_unit", "uy_per_modal_unit"});
     for (const auto& m : r.modes)
       for (const auto& p : m.at_points) {
         std::vector<std::string> row{std::to_string(m.number), p.point, strf("%.6g", p.ux), strf("%.6g", p.uy)};

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "sim/core/text.hpp"
 #include "sim/model/article_builder.hpp"
 #include "sim/model/stations.hpp"
 #include "sim/statics/closures.hpp"
@@ -352,6 +353,9 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.stiffness_asymmetry = s.linearized.asymmetry;
   const int n = static_cast<int>(s.modes.omega2.size());
   const int count = options.max_modes > 0 ? std::min(options.max_modes, n) : n;
+  if (options.max_modes > n)
+    rep.warnings.push_back(strf("%d modes asked for; the model has %d (one per degree of freedom): all %d shown",
+                                options.max_modes, n, n));
   checkReportedModes(s, count, rep);
   ModalDamping damping;
   if (options.damping) {

@@ -42,8 +42,10 @@ struct PartShare {
 
 struct PointMotion {
   std::string point;
-  double ux = 0, uy = 0;  ///< m per unit modal coordinate (mass-normalised shape).
-  double uz = 0;          ///< m, out of the plane (spatial model only).
+  /// Translation per unit modal coordinate of the mass-normalised shape (phi^T M phi = 1):
+  /// kg^-1/2, not metres.
+  double ux = 0, uy = 0;
+  double uz = 0;          ///< the same, out of the plane (spatial model only).
   double rz = 0;          ///< rad per unit modal coordinate (when has_rotation).
   bool has_rotation = false;
 };

@@ -23,8 +23,8 @@ TEST_F(Cli, ModesAndFrfAcceptStations) {
   const Result b = run("modes --json --modes 1 --segments 32 --points link1@1.83m");
   ASSERT_EQ(a.code, 0) << a.err;
   ASSERT_EQ(b.code, 0) << b.err;
-  const double ya = nlohmann::json::parse(a.out)["modes"][0]["at_points"][0]["uy_m"].get<double>();
-  const double yb = nlohmann::json::parse(b.out)["modes"][0]["at_points"][0]["uy_m"].get<double>();
+  const double ya = nlohmann::json::parse(a.out)["modes"][0]["at_points"][0]["uy_per_modal_unit"].get<double>();
+  const double yb = nlohmann::json::parse(b.out)["modes"][0]["at_points"][0]["uy_per_modal_unit"].get<double>();
   EXPECT_NEAR(ya, yb, 2e-3 * std::abs(yb));  // O(h^2): 16 -> 32 segments changes the shape by ~0.1 %
   const Result bad = run("modes --points link1@3m");
   EXPECT_EQ(bad.code, 64);
