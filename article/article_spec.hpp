@@ -105,6 +105,7 @@ struct LinkSpec {
   /// in-plane normal, after mount_angle: branches spread out of the plane (spatial model).
   double tilt = 0;
   std::optional<LumpedMass> tip_mass;  ///< rigidly attached at the tip.
+  std::string key;  ///< the scene entry it was read from ("links[2]"; a branch shares its link's), for messages.
   /// How this link bends (ArticleSpec::linkModel): none takes the article's model. A
   /// planar link of a spatial article bends in its plane only (pin hinges: rigid out of
   /// the plane and in torsion) while it moves in 3-D with the rest of the article.

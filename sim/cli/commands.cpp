@@ -9,6 +9,7 @@
 
 #include "sim/io/finite_check.hpp"
 #include "sim/io/output_dir.hpp"
+#include "sim/scene/plausibility.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/scene/stations.hpp"
 
@@ -18,8 +19,15 @@ Scene loadScene(const SceneArgs& args) {
   Scene scene = args.scene_path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", args.sets)
                                          : loadSceneFile(args.scene_path, args.sets);
   if (auto* a = std::get_if<ArticleScene>(&scene)) {
-    if (args.segments > 0) overrideSegments(*a, args.segments);
+    if (args.segments > 0)
+      for (const auto& note : overrideSegments(*a, args.segments)) std::cerr << "mmvlab: warning: " << note << '\n';
     if (args.no_gravity) a->gravity = {0, 0, 0};
+    // Values no lab article has: warned in every command, refused with --strict.
+    const std::vector<std::string> slips = scenePlausibility(*a);
+    if (args.strict && !slips.empty())
+      throw SceneError(slips.front() + " (--strict: implausible values are errors" +
+                       (slips.size() > 1 ? strf("; %zu more", slips.size() - 1) : std::string()) + ")");
+    for (const auto& w : slips) std::cerr << "warning: " << w << " (likely a unit mistake)\n";
   } else if (args.segments > 0 || args.no_gravity) {
     throw UsageError("--segments and --no-gravity do not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
   }
@@ -78,6 +86,8 @@ int guarded(const std::function<int()>& body) {
     return say("mmvlab: ", e, kUsage);
   } catch (const OutputError& e) {
     return say("mmvlab: ", e, kCannotCreate);
+  } catch (const StdoutError& e) {
+    return say("mmvlab: ", e, kIoError);
   } catch (const SceneFileError& e) {
     return say("mmvlab: ", e, kNoInput);
   } catch (const SceneError& e) {
@@ -103,14 +113,27 @@ void checkResultFinite(const nlohmann::ordered_json& json) {
                          "beyond what the model resolves: please report it with the scene");
 }
 
+namespace {
+
+/// Standard output that did not take the result (a full disk, a closed pipe) fails the
+/// command, so an --out committed before is put back (OutputDir's transaction).
+void flushStdout() {
+  std::cout.flush();
+  if (!std::cout) throw StdoutError("cannot write to standard output (disk full or pipe closed?)");
+}
+
+}  // namespace
+
 void emitResult(const std::string& text) {
   checkResultFinite(text);
-  std::cout << text << std::flush;
+  std::cout << text;
+  flushStdout();
 }
 
 void emitResult(const nlohmann::ordered_json& json) {
   checkResultFinite(json);
-  std::cout << json.dump(2) << '\n' << std::flush;
+  std::cout << json.dump(2) << '\n';
+  flushStdout();
 }
 
 std::pair<double, double> parseBand(const std::string& band) {

@@ -40,6 +40,7 @@ struct SceneArgs {
   int segments = 0;        ///< > 0: override every flexible link's segment count.
   bool no_gravity = false; ///< analyse without gravity (as the report's TREETOPS run).
   std::vector<std::string> sets;  ///< --set KEY=VALUE overrides of scene keys.
+  bool strict = false;            ///< implausible values (sim/scene/plausibility.hpp) are errors, not warnings.
 };
 
 struct ModesArgs : SceneArgs {
@@ -87,6 +88,7 @@ struct SweepArgs : SceneArgs {
 struct LinearArgs : SceneArgs {
   std::vector<std::string> inputs, outputs;  ///< see docs/outputs.md; empty: defaults.
   double f_min = 0.01, f_max = 100;          ///< Hz.
+  bool range_given = false;  ///< --from or --to given: the grid is theirs even with --band.
   int points = 400;
   int rom_modes = 8;
   std::string band;  ///< "F1:F2" (Hz): keep the modes in the band instead.
@@ -174,6 +176,7 @@ struct CorrelateArgs : SceneArgs {
   std::vector<std::string> pairs;  ///< NODE=POINT, by the user.
   int modes = 20;                  ///< model modes compared.
   double mac_threshold = 0.7;
+  double max_frequency_error = 0.3;  ///< |f_model / f_test - 1| above it: not a pair.
   double damping_ratio = 0.01;
   bool damping_given = false;      ///< --damping overrides the scene's damping.
   std::string out;

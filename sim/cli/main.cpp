@@ -61,6 +61,8 @@ void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
                   "KEY=VALUE: override a scene key (repeatable), e.g. links.link1.length=2.5, joints.joint2.angle_deg=15; "
                   "checked as if it were in the file")
       ->allow_extra_args(false);
+  cmd->add_flag("--strict", a.strict,
+                "Refuse a scene with an implausible value (a likely unit slip, warned on stderr otherwise): exit 65");
 }
 
 /// `mmvlab modes` and its options.
@@ -259,10 +261,12 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
                                    "Sensor stations for the target modes: effective independence, kinetic energy or residue");
   addSceneOptions(p, ps);
   p->add_flag("--json", ps.json, "Print JSON instead of tables");
-  p->add_option("--modes", ps.modes, "Target modes, e.g. 1-8 or 1,3,5-7 (default: every mode below --below-hz)");
-  p->add_option("--below-hz", ps.below_hz, "Target every vibration mode below this frequency, Hz")
+  CLI::Option* target_modes =
+      p->add_option("--modes", ps.modes, "Target modes, e.g. 1-8 or 1,3,5-7 (default: every mode below --below-hz)");
+  p->add_option("--below-hz", ps.below_hz, "Target every vibration mode below this frequency, Hz (not with --modes)")
       ->capture_default_str()
-      ->check(positive());
+      ->check(positive())
+      ->excludes(target_modes);  // one rule chooses the targets, never one silently over the other
   p->add_option("--count", ps.count, "Sensors to place (triaxial: blocks)")->capture_default_str()->check(CLI::Range(1, 100000));
   p->add_option("--spacing", ps.spacing, "Distance between candidate stations along each link, m")
       ->capture_default_str()
@@ -323,6 +327,10 @@ CLI::App* addCorrelateCommand(CLI::App& app, CorrelateArgs& co) {
   c->add_option("--mac-threshold", co.mac_threshold, "A test and a model mode pair only at or above this MAC")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
+  c->add_option("--max-frequency-error", co.max_frequency_error,
+                "A test and a model mode pair only within this relative frequency difference, |f_model / f_test - 1|")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6, 100.0));
   c->add_option("--damping", co.damping_ratio, "Modal damping ratio of every mode (default: the scene's damping, else 0.01)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
@@ -422,6 +430,7 @@ int main(int argc, char** argv) {
     if (cp->parsed()) return runCompareCommand(cmp);
     if (sp->parsed()) return runSweepCommand(sw);
     lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
+    lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
     if (si->parsed()) return runSimulateCommand(sim);
     if (tp->parsed()) return runTradeCommand(tr);
     if (pl->parsed()) return runPlaceSensorsCommand(ps);
@@ -434,8 +443,9 @@ int main(int argc, char** argv) {
   // A full disk or a closed pipe behind stdout is a failure, not a success.
   std::cout.flush();
   if (!std::cout) {
+    if (code != kOk) return code;  // the command has said why
     std::cerr << "mmvlab: cannot write to standard output (disk full or pipe closed?)\n";
-    return code == kOk ? kIoError : code;
+    return kIoError;
   }
   return code;
 }

@@ -7,6 +7,7 @@
 #include "sim/core/text.hpp"
 #include "sim/model/article_builder.hpp"
 #include "sim/plan/check_parts.hpp"
+#include "sim/scene/plausibility.hpp"
 #include "sim/scene/programs.hpp"
 
 namespace mmv::plan {
@@ -37,7 +38,7 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
                              f.empty() ? 0 : f.back(), table.bandwidth_hz, "Hz",
                              strf("%ld of %zu modes lie above %.3g Hz: the table cannot excite them (the 30 lb shaker can)", above,
                                   f.size(), table.bandwidth_hz), 0);
-  if (modes.verdict == Verdict::Fail) modes.verdict = Verdict::Warn;
+  makeAdvisory(modes);
   out.push_back(modes);
   // Each axis's program (the y axis across the plane: world z, spatial model only) against
   // the table's stroke and servo bandwidth.
@@ -56,7 +57,7 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     CheckLine bw = makeLine("table", strf("table.program%s_bandwidth", axis.id),
                             strf("%s's highest frequency within the bandwidth", axis.program), program->maxFrequencyHz(),
                             table.bandwidth_hz, "Hz", "above it the servo loop attenuates the motion", 0);
-    if (bw.verdict == Verdict::Fail) bw.verdict = Verdict::Warn;
+    makeAdvisory(bw);
     out.push_back(bw);
   }
 }
@@ -94,7 +95,7 @@ void addModeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
                                  100 * spacing / f[k], 100 * zeta,
                                  in.scene.damping && in.scene.damping->kind == DampingSpec::Kind::Modal ? "" : " (assumed)"),
                             0);
-  if (pair.verdict == Verdict::Fail) pair.verdict = Verdict::Warn;
+  makeAdvisory(pair);
   out.push_back(pair);
 }
 
@@ -151,24 +152,7 @@ void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out) {
 
 std::vector<std::string> mmv::plausibilityWarnings(const ArticleScene& scene, const ModesReport& modes) {
   const ArticleSpec& a = scene.article;
-  std::vector<std::string> warnings;
-  for (const auto& m : a.materials) {
-    if (m.density > 25000) warnings.push_back(strf("materials.%s.density %.4g kg/m^3 is above any metal's: g/cm^3 times 1000 twice, or lb/ft^3?", m.name.c_str(), m.density));
-    if (m.density < 100) warnings.push_back(strf("materials.%s.density %.4g kg/m^3 is below any structural material's: given in g/cm^3 (1.65 for 1650)?", m.name.c_str(), m.density));
-    if (m.youngs_modulus < 1e8) warnings.push_back(strf("materials.%s.youngs_modulus %.4g Pa is softer than rubber: given in GPa or MPa?", m.name.c_str(), m.youngs_modulus));
-    if (m.youngs_modulus > 1.2e12) warnings.push_back(strf("materials.%s.youngs_modulus %.4g Pa is stiffer than diamond: an exponent too many?", m.name.c_str(), m.youngs_modulus));
-  }
-  for (const auto& l : a.links) {
-    if (l.length > 20) warnings.push_back(strf("links.%s.length %.4g m is longer than a lab can hold: given in mm or in?", l.name.c_str(), l.length));
-    const Section* s = a.findSection(l.section);
-    const Material* m = a.findMaterial(l.material);
-    if (s && sectionArea(*s) > 0.05) warnings.push_back(strf("sections.%s: area %.3g m^2 is a floor slab's: dimensions given in mm?", s->name.c_str(), sectionArea(*s)));
-    if (s && m && m->density * sectionArea(*s) * l.length > 500)
-      warnings.push_back(strf("link %s weighs %.4g kg: check the units of its length, section and density", l.name.c_str(), m->density * sectionArea(*s) * l.length));
-  }
-  const double g = std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]);
-  if (g > 0 && (g < 9.7 || g > 9.9))
-    warnings.push_back(strf("gravity %.4g m/s^2 is not a laboratory's (9.78-9.83 m/s^2): given in ft/s^2 or cm/s^2?", g));
+  std::vector<std::string> warnings = scenePlausibility(scene);  // the rules every command warns with
   double deflection = 0, size = 0;
   for (const auto& p : modes.points) deflection = std::max(deflection, std::hypot(p.dx, p.dy));
   for (const auto& l : a.links) size += l.length;

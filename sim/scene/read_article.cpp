@@ -356,6 +356,7 @@ class SceneParser {
           (out_of_plane_ ? b.tilt : b.mount_angle) += -0.5 * spread + spread * k / (count - 1);
         }
         checkName(name, path + ".name", b.name);
+        b.key = path;
         link_marks_[b.name] = {ln.Mark(), path};
         if (m.count("model")) link_model_marks_[b.name] = {m.at("model").Mark(), path + ".model"};
         a.links.push_back(b);

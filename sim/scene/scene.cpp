@@ -23,13 +23,18 @@ const std::string& sceneSource(const Scene& scene) {
   return std::visit([](const auto& s) -> const std::string& { return s.source; }, scene);
 }
 
-void overrideSegments(ArticleScene& scene, int n) {
+std::vector<std::string> overrideSegments(ArticleScene& scene, int n) {
   MMV_DEMAND(n >= 1 && n <= limits::kMaxSegments);  // the CLI checks --segments against the same range
+  std::vector<std::string> notes;
   for (auto& l : scene.article.links) {
     if (l.rigid) continue;
     l.segments = n;
-    l.modes = std::min(l.modes, n);  // a link in modal coordinates keeps at most its n hinges
+    if (l.modes > n)  // a link in modal coordinates keeps at most its n hinges
+      notes.push_back("link " + l.name + " in " + std::to_string(n) + " segments keeps " + std::to_string(n) + " of the " +
+                      std::to_string(l.modes) + " modes its `modes:` asks (a link has one hinge per segment)");
+    l.modes = std::min(l.modes, n);
   }
+  return notes;
 }
 
 }  // namespace mmv

@@ -139,7 +139,9 @@ const char* defaultSceneYaml();
 ArticleScene loadDefaultScene();
 
 /// Replaces the segment count of every flexible (non-rigid) link; 1 <= n <= limits::kMaxSegments.
-/// A link in modal coordinates keeps min(modes, n) modes (one hinge per segment).
-void overrideSegments(ArticleScene& scene, int n);
+/// A link in modal coordinates keeps min(modes, n) modes (one hinge per segment); each
+/// such clamp is returned as a note for the user ("link link1 in 2 segments keeps 2 of
+/// the 3 modes ...").
+std::vector<std::string> overrideSegments(ArticleScene& scene, int n);
 
 }  // namespace mmv

@@ -253,7 +253,9 @@ namespace {
 TEST_F(Cli, ModesNamesALikelyUnitMistake) {
   const Result bad = run("modes --segments 2 --set links.link1.length=2440");
   EXPECT_EQ(bad.code, 0) << bad.err;
-  EXPECT_NE(bad.out.find("warning: likely a unit mistake: links.link1.length 2440 m"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("warning: likely a unit mistake: --set links.link1.length=2440: links[0] (link1).length 2440 m"),
+            std::string::npos) << bad.out;
+  EXPECT_NE(bad.err.find("links[0] (link1).length 2440 m is longer than a lab can hold"), std::string::npos) << bad.err;  // at load
   EXPECT_NE(bad.out.find("given in mm"), std::string::npos);
   const Result json = run("modes --segments 2 --json --set links.link1.length=2440");
   EXPECT_NE(json.out.find("\"warnings\""), std::string::npos);
