@@ -32,6 +32,7 @@ CorrelateOptions options(const CorrelateArgs& args, const ArticleScene& scene) {
   o.pair_distance_m = args.pair_distance;
   o.model_modes = args.modes;
   o.mac_threshold = args.mac_threshold;
+  o.max_frequency_error = args.max_frequency_error;
   o.damping.modal_ratio = args.damping_ratio;
   if (scene.damping && !args.damping_given) o.damping = *scene.damping;
   for (const auto& p : args.pairs) {
@@ -95,14 +96,14 @@ int runCorrelateCommand(const CorrelateArgs& args) {
     checkResultFinite(json);
     checkResultFinite(text);
     if (out) {
-      std::ofstream(out->stage("correlation.json"), std::ios::binary) << json.dump(2) << '\n';
-      std::ofstream(out->stage("mac.csv"), std::ios::binary) << macCsv(r);
+      out->write("correlation.json", json.dump(2) + "\n");
+      out->write("mac.csv", macCsv(r));
       try {
         writeFigures(r, scene, *out);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(json) : emitResult(text);
     return kOk;

@@ -68,16 +68,20 @@ std::string correlationText(const ArticleScene& scene, const CorrelationResult& 
     os << strf("  test mode T%d (%.4f Hz) pairs with no model mode: not predicted by the model\n", i + 1,
                r.test_modes[i].frequency_hz);
   if (!r.frfs.empty()) {
-    os << "\nFrequency responses: FRAC of the model's against each measured one (1: the same response)\n";
-    Table t({"function", "id", "output", "input", "FRAC", "test_peak_Hz", "model_peak_Hz"});
+    os << strf("\nFrequency responses: FRAC of the model's against each measured one (1: the same response; at or above "
+               "%.2g: consistent, below: differs, in level, phase or a peak's frequency; a 1 %% shift of a lightly damped "
+               "peak alone can halve it: see the Bode overlays)\n",
+               kFracThreshold);
+    Table t({"function", "id", "output", "input", "FRAC", "verdict", "test_peak_Hz", "model_peak_Hz"});
     for (const auto& f : r.frfs)
       if (f.skipped.empty())
         t.add({std::to_string(f.index + 1), f.id.empty() ? "-" : f.id, f.output, f.input, strf("%.4f", f.frac),
-               strf("%.4g", f.test_peak_hz), strf("%.4g", f.model_peak_hz)});
+               f.frac >= kFracThreshold ? "consistent" : "differs", strf("%.4g", f.test_peak_hz), strf("%.4g", f.model_peak_hz)});
     os << t.text();
     for (const auto& f : r.frfs)
       if (!f.skipped.empty()) os << strf("  function %d (%s) not modelled: %s\n", f.index + 1, f.id.c_str(), f.skipped.c_str());
   }
+  for (const auto& n : r.notes) os << "note: " << n << '\n';
   for (const auto& w : r.warnings) os << "warning: " << w << '\n';
   return os.str();
 }
@@ -111,9 +115,9 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
   j["model_modes"] = mm;
   json mac = json::array();
   for (Eigen::Index i = 0; i < r.mac.rows(); ++i) {
-    std::vector<double> row;
-    for (Eigen::Index k = 0; k < r.mac.cols(); ++k) row.push_back(r.mac(i, k));
-    mac.push_back(row);
+    json row = json::array();
+    for (Eigen::Index k = 0; k < r.mac.cols(); ++k) row.push_back(std::isnan(r.mac(i, k)) ? json(nullptr) : json(r.mac(i, k)));
+    mac.push_back(row);  // null: undefined (a shape zero at the paired points)
   }
   j["mac"] = mac;
   j["mac_translations"] = r.shape_dofs;
@@ -136,6 +140,8 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
       x["output"] = f.output;
       x["input"] = f.input;
       x["frac"] = f.frac;
+      x["frac_threshold"] = kFracThreshold;
+      x["frac_verdict"] = f.frac >= kFracThreshold ? "consistent" : "differs";
       x["test_peak_hz"] = f.test_peak_hz;
       x["model_peak_hz"] = f.model_peak_hz;
     } else {
@@ -145,6 +151,7 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
   }
   j["frfs"] = frfs;
   j["warnings"] = r.warnings;
+  j["notes"] = r.notes;
   return j;
 }
 
@@ -154,7 +161,8 @@ std::string macCsv(const CorrelationResult& r) {
   for (Eigen::Index i = 0; i < r.mac.rows(); ++i)
     for (Eigen::Index k = 0; k < r.mac.cols(); ++k)
       os << "T" << i + 1 << ',' << strf("%.8g", r.test_modes[i].frequency_hz) << ",M" << r.model_modes[k].number << ','
-         << strf("%.8g", r.model_modes[k].frequency_hz) << ',' << strf("%.6f", r.mac(i, k)) << '\n';
+         << strf("%.8g", r.model_modes[k].frequency_hz) << ','
+         << (std::isnan(r.mac(i, k)) ? std::string() : strf("%.6f", r.mac(i, k))) << '\n';  // empty: undefined
   return os.str();
 }
 

@@ -1,5 +1,7 @@
 #include "sim/linear/correlation.hpp"
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -15,7 +17,7 @@ namespace mmv {
 double modalAssurance(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
   MMV_DEMAND(a.size() == b.size());
   const double na = a.squaredNorm(), nb = b.squaredNorm();
-  if (!(na > 0) || !(nb > 0)) return 0.0;
+  if (!(na > 0) || !(nb > 0)) return std::numeric_limits<double>::quiet_NaN();  // undefined, not "no correlation"
   return std::norm(a.dot(b)) / (na * nb);  // dot() conjugates its first argument
 }
 
@@ -32,11 +34,13 @@ double frequencyResponseAssurance(const std::vector<std::complex<double>>& a, co
   return std::norm(cross) / (na * nb);
 }
 
-std::vector<ModePair> pairByMac(const Eigen::MatrixXd& mac, double threshold) {
+std::vector<ModePair> pairByMac(const Eigen::MatrixXd& mac, double threshold,
+                                const Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>& allowed) {
+  MMV_DEMAND(allowed.size() == 0 || (allowed.rows() == mac.rows() && allowed.cols() == mac.cols()));
   std::vector<ModePair> all, out;
   for (Eigen::Index i = 0; i < mac.rows(); ++i)
     for (Eigen::Index j = 0; j < mac.cols(); ++j)
-      if (mac(i, j) >= threshold) all.push_back({static_cast<int>(i), static_cast<int>(j), mac(i, j)});
+      if (mac(i, j) >= threshold && (allowed.size() == 0 || allowed(i, j))) all.push_back({static_cast<int>(i), static_cast<int>(j), mac(i, j)});
   std::stable_sort(all.begin(), all.end(), [](const ModePair& a, const ModePair& b) { return a.mac > b.mac; });
   std::set<int> rows, cols;
   for (const auto& p : all)
@@ -130,6 +134,33 @@ const NodePairing* findNode(const std::vector<NodePairing>& nodes, int label) {
   return nullptr;
 }
 
+/// Pairs r's test and model modes by MAC within the frequency window, and notes each
+/// test mode left unpaired whose best MAC lies outside it.
+std::vector<ModePair> pairWithinWindow(const CorrelateOptions& o, CorrelationResult& r) {
+  // The frequency window: a pair is a pair only where the frequencies are within it.
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> window(r.mac.rows(), r.mac.cols());
+  for (Eigen::Index i = 0; i < r.mac.rows(); ++i)
+    for (Eigen::Index j = 0; j < r.mac.cols(); ++j) {
+      const double ft = r.test_modes[i].frequency_hz, fm = r.model_modes[j].frequency_hz;
+      window(i, j) = ft > 0 && std::abs(fm / ft - 1) <= o.max_frequency_error;
+    }
+  std::vector<ModePair> pairs = pairByMac(r.mac, o.mac_threshold, window);
+  for (Eigen::Index i = 0; i < r.mac.rows(); ++i) {
+    const bool paired = std::any_of(pairs.begin(), pairs.end(), [&](const ModePair& p) { return p.test == i; });
+    Eigen::Index best = -1;
+    for (Eigen::Index j = 0; j < r.mac.cols(); ++j)
+      if (!window(i, j) && r.mac(i, j) >= o.mac_threshold && (best < 0 || r.mac(i, j) > r.mac(i, best))) best = j;
+    if (!paired && best >= 0)
+      r.notes.push_back(strf("test mode T%ld (%.4g Hz) has MAC %.3f with model mode M%d (%.4g Hz, %+.0f %%), outside the "
+                             "+-%.3g %% frequency window: not paired (--max-frequency-error widens it)",
+                             static_cast<long>(i + 1), r.test_modes[i].frequency_hz, r.mac(i, best), r.model_modes[best].number,
+                             r.model_modes[best].frequency_hz,
+                             100 * (r.model_modes[best].frequency_hz / r.test_modes[i].frequency_hz - 1),
+                             100 * o.max_frequency_error));
+  }
+  return pairs;
+}
+
 void correlateModes(const ArticleScene& scene, const CorrelateOptions& o, CorrelationResult& r) {
   std::vector<std::string> stations;
   for (const auto& n : r.nodes)
@@ -145,13 +176,18 @@ void correlateModes(const ArticleScene& scene, const CorrelateOptions& o, Correl
   r.model_damped = rep.damped;
   r.damping_model = rep.damping_model;
   r.mac = Eigen::MatrixXd::Zero(r.test_modes.size(), r.model_modes.size());
+  std::set<int> no_geometry;  // shape nodes the file never placed
   for (std::size_t i = 0; i < r.test_modes.size(); ++i) {
     const MeasuredMode& t = r.test_modes[i];
     std::vector<std::complex<double>> tv;
     std::vector<int> at;
     for (std::size_t k = 0; k < t.nodes.size(); ++k) {
       const NodePairing* n = findNode(r.nodes, t.nodes[k]);
-      if (!n || n->station.empty()) continue;
+      if (!n) {
+        no_geometry.insert(t.nodes[k]);
+        continue;
+      }
+      if (n->station.empty()) continue;
       at.push_back(static_cast<int>(std::find(stations.begin(), stations.end(), n->station) - stations.begin()));
       for (int d = 0; d < 3; ++d) tv.push_back(t.shape[k][d]);
     }
@@ -168,7 +204,15 @@ void correlateModes(const ArticleScene& scene, const CorrelateOptions& o, Correl
       r.mac(i, j) = m.rigid_body || !m.stable ? 0.0 : modalAssurance(a, b);
     }
   }
-  r.pairs = pairByMac(r.mac, o.mac_threshold);
+  for (int node : no_geometry)
+    r.notes.push_back(strf("node %d has a mode shape but no geometry (datasets 15, 2411): left out of the MAC", node));
+  if (r.shape_dofs == 0 && !r.test_modes.empty())
+    r.warnings.push_back("no mode shape has a paired node: every MAC is undefined (the file's shape nodes have no geometry, "
+                         "or none lies on the article)");
+  for (Eigen::Index i = 0; i < r.mac.rows(); ++i)
+    if (r.mac.cols() > 0 && r.mac.row(i).array().isNaN().all() && r.shape_dofs > 0)
+      r.warnings.push_back(strf("test mode T%ld does not move at the paired nodes: its MAC is undefined", static_cast<long>(i + 1)));
+  r.pairs = pairWithinWindow(o, r);
   std::set<int> paired_test, paired_model;
   for (const auto& p : r.pairs) paired_test.insert(p.test), paired_model.insert(p.model);
   for (std::size_t j = 0; j < r.model_modes.size(); ++j) {
@@ -363,6 +407,17 @@ CorrelationResult correlate(const ArticleScene& scene, const MeasuredSet& test, 
   correlateFrfs(scene, test, o, r);
   for (const auto& n : r.nodes)
     if (n.station.empty()) r.warnings.push_back(strf("node %d is %.3g m from the article: not paired", n.node, n.distance_m));
+  std::map<std::string, std::vector<int>> by_station;
+  for (const auto& n : r.nodes)
+    if (!n.station.empty()) by_station[n.station].push_back(n.node);
+  for (const auto& [station, nodes] : by_station) {
+    if (nodes.size() < 2) continue;
+    std::string list;
+    for (std::size_t k = 0; k < nodes.size(); ++k) list += (k ? ", " : "") + std::to_string(nodes[k]);
+    r.notes.push_back(strf("%zu nodes (%s) pair with one station, %s: the model has one motion there (is the test's "
+                           "geometry where the article is?)",
+                           nodes.size(), list.c_str(), station.c_str()));
+  }
   return r;
 }
 

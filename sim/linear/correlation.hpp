@@ -11,7 +11,12 @@
 ///    nodes' translations (x, y, z; the planar model's z is 0, so out-of-plane motion in
 ///    a test shape lowers its MAC), complex test shapes as they are. Test and model modes
 ///    are paired greedily from the largest MAC down, each at most once, and only at or
-///    above `mac_threshold`; the frequency error of a pair is (f_model - f_test) / f_test.
+///    above `mac_threshold` and within the frequency window |f_model / f_test - 1| <=
+///    `max_frequency_error` (a 167 Hz test mode is not a 62.7 kHz model mode, whatever
+///    the MAC over a few points says; a high-MAC candidate outside the window is named in
+///    a note); the frequency error of a pair is (f_model - f_test) / f_test. A MAC
+///    with a shape that is zero over the paired translations is undefined (NaN in
+///    `mac`, "undefined" and null in the outputs), never 0.
 ///    Model modes in the test's band that pair with no test mode are the ones the test
 ///    did not see; test modes that pair with none are the ones the model does not have.
 ///  - FRFs: each measured function is modelled with the same output (the response node's
@@ -19,7 +24,12 @@
 ///    (acceleration in the denominator: the table's acceleration along the reference
 ///    direction; force: a force at the reference node's station), and compared by
 ///    FRAC = |sum conj(H_t) H_m|^2 / (sum |H_t|^2 sum |H_m|^2) over the measured
-///    frequencies (1: the same shape of response, level and phase included).
+///    frequencies (1: the same shape of response, level and phase included), judged
+///    against kFracThreshold: "consistent" at or above it, "differs" below (FRAC falls
+///    fast with a small frequency shift at a lightly damped peak: a model within 1 % in
+///    frequency can read 0.5, so a low FRAC asks for the Bode overlay, and says so).
+///  - Notes: every node that pairs with no station, that has no geometry (a mode shape's
+///    node the file never placed), or that shares its station with another node.
 ///
 /// Frames: the measured geometry is in the scene's world frame (m, after the file's
 /// units), as our UFF writer puts it. Directions 1..3 are +x, +y, +z, negative ones the
@@ -67,11 +77,15 @@ struct MeasuredSet {
   std::vector<MeasuredFrf> frfs;
 };
 
+/// FRAC at or above this: the measured and modelled responses are consistent.
+inline constexpr double kFracThreshold = 0.9;
+
 struct CorrelateOptions {
   double pair_distance_m = 0.05;   ///< a node farther than this from the article is not paired.
   std::vector<std::pair<int, std::string>> named_pairs;  ///< node -> point or station, by the user.
   int model_modes = 20;            ///< model modes compared.
   double mac_threshold = 0.7;      ///< pairs below it are not pairs.
+  double max_frequency_error = 0.3; ///< |f_model / f_test - 1| above it: not a pair, whatever the MAC.
   DampingSpec damping;             ///< the model's damping (FRFs and its modes' ratios).
 };
 
@@ -104,7 +118,7 @@ struct CorrelationResult {
   std::vector<ModeInfo> model_modes;   ///< with their damping ratios
   bool model_damped = false;
   std::string damping_model;
-  Eigen::MatrixXd mac;                 ///< test x model.
+  Eigen::MatrixXd mac;                 ///< test x model; NaN where undefined (a shape zero at the paired points).
   int shape_dofs = 0;                  ///< paired node translations the MAC is taken over.
   std::vector<ModePair> pairs;
   double band_min_hz = 0, band_max_hz = 0;  ///< the test's band: its FRFs' range, else 0 to 1.1x its top mode.
@@ -112,14 +126,17 @@ struct CorrelationResult {
   std::vector<int> test_not_predicted; ///< test modes without a model mode.
   std::vector<FrfCorrelation> frfs;
   std::vector<std::string> warnings;
+  std::vector<std::string> notes;      ///< nodes left out or sharing a station; candidates outside the window.
 };
 
-/// MAC of two shapes over the same DOFs; 0 when either is zero.
+/// MAC of two shapes over the same DOFs; NaN (undefined) when either is zero.
 double modalAssurance(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b);
 /// FRAC of two responses over the same frequencies; 0 when either is zero.
 double frequencyResponseAssurance(const std::vector<std::complex<double>>& a, const std::vector<std::complex<double>>& b);
-/// Pairs rows with columns of a MAC matrix, largest first, each once, at or above threshold.
-std::vector<ModePair> pairByMac(const Eigen::MatrixXd& mac, double threshold);
+/// Pairs rows with columns of a MAC matrix, largest first, each once, at or above
+/// threshold, and only where `allowed` (same size; empty: everywhere). NaN never pairs.
+std::vector<ModePair> pairByMac(const Eigen::MatrixXd& mac, double threshold,
+                                const Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>& allowed = {});
 
 /// The whole correlation (see above). Throws SceneError when a named pair names an
 /// unknown node, point or station, or when no measured node pairs with the article;

@@ -96,6 +96,47 @@ TEST_F(Correlate, TheModelAgainstItsOwnResponsesIsExact) {
   EXPECT_NE(r.out.find("T1 "), std::string::npos);
 }
 
+// Pairing with judgement: a mode pairs only within the frequency window, a candidate
+// left out is named; a node without geometry and nodes that share a station are noted;
+// each FRAC has its verdict. Before, a 167 Hz test mode paired with a 62.7 kHz model
+// mode, nodes without geometry vanished ("MAC over 0 translations") and 18 nodes on one
+// station went unremarked.
+TEST_F(Correlate, PairsInsideTheWindowAndNotesWhatItLeavesOut) {
+  const fs::path uff = measured(stiffScene().string(), "stiff");
+  const json tight = runJson("correlate " + table() + " --measured " + uff.string() + " --modes 12 --max-frequency-error 1e-6");
+  for (const json& p : tight["pairs"]) EXPECT_LE(std::abs(p["frequency_error"].get<double>()), 1e-6) << p.dump();
+  const std::size_t left_out = tight["test_modes_not_predicted"].size();
+  EXPECT_EQ(left_out + tight["pairs"].size(), 12u);
+  EXPECT_GE(left_out, 6u);  // the modes link 2's stiffness moves
+  std::size_t window_notes = 0;
+  for (const json& n : tight["notes"])
+    window_notes += n.get<std::string>().find("outside the +-0.0001 % frequency window: not paired") != std::string::npos;
+  EXPECT_EQ(window_notes, left_out) << tight["notes"].dump(1);
+  const json wide = runJson("correlate " + table() + " --measured " + uff.string() + " --modes 12");
+  EXPECT_EQ(wide["pairs"].size(), 12u);
+  for (const json& f : wide["frfs"]) {
+    EXPECT_EQ(f["frac_threshold"].get<double>(), 0.9);
+    EXPECT_EQ(f["frac_verdict"], f["frac"].get<double>() >= 0.9 ? "consistent" : "differs") << f.dump();
+  }
+
+  std::string text = slurp(uff);
+  // Node 1 loses its geometry (its dataset-15 line), and node 998 is put where node 2 is.
+  const auto nodes = text.find("    -1\n    15    ");
+  ASSERT_NE(nodes, std::string::npos);
+  const auto first = text.find('\n', nodes + 7) + 1;  // past the "15" line
+  const std::string line1 = text.substr(first, text.find('\n', first) + 1 - first);
+  ASSERT_EQ(line1.substr(0, 10), "         1") << line1;
+  text.erase(first, line1.size());
+  const std::string line2 = text.substr(first, text.find('\n', first) + 1 - first);
+  ASSERT_EQ(line2.substr(0, 10), "         2") << line2;
+  text.insert(first, "       998" + line2.substr(10));
+  const json c = runJson("correlate " + table() + " --measured " + write("edited.uff", text).string() + " --modes 12");
+  const std::string notes = c["notes"].dump();
+  EXPECT_NE(notes.find("node 1 has a mode shape but no geometry"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("3 nodes (998, 2, 76) pair with one station, link1@0m"), std::string::npos) << notes;  // 76: the root once more
+  EXPECT_EQ(c["pairs"].size(), 12u);  // the rest still pair
+}
+
 TEST_F(Correlate, UnseenModesUnpairedNodesAndNamedPairs) {
   std::string text = slurp(measured(table(), "self"));
   // The test missed mode 3: its dataset 55 is gone.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace mmv {
 namespace {
@@ -21,7 +22,23 @@ TEST(Correlation, MacIsScaleAndPhaseInvariantAndZeroForOrthogonalShapes) {
   Eigen::VectorXcd d(4);
   d << 1.0, 0.0, 0.0, 0.0;
   EXPECT_NEAR(modalAssurance(a, d), 1.0 / a.squaredNorm(), 1e-15);
-  EXPECT_EQ(modalAssurance(a, Eigen::VectorXcd::Zero(4)), 0.0);
+  // A zero shape has no direction: its MAC is undefined, not "uncorrelated" (before: 0).
+  EXPECT_TRUE(std::isnan(modalAssurance(a, Eigen::VectorXcd::Zero(4))));
+  EXPECT_TRUE(std::isnan(modalAssurance(Eigen::VectorXcd::Zero(4), Eigen::VectorXcd::Zero(4))));
+}
+
+// Pairing honours a window (the frequency window of correlate) and never pairs NaN.
+TEST(Correlation, PairingStaysInsideTheWindowAndSkipsUndefinedMacs) {
+  Eigen::MatrixXd mac(2, 2);
+  mac << 0.99, 0.80,
+         std::numeric_limits<double>::quiet_NaN(), 0.95;
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> window(2, 2);
+  window << false, true,  // test 1's best MAC is outside its window
+            true, true;
+  const std::vector<ModePair> p = pairByMac(mac, 0.7, window);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p[0].test, 1);
+  EXPECT_EQ(p[0].model, 1);  // test 1 cannot take model 1 (test 2 has it, MAC 0.95 > 0.80)
 }
 
 TEST(Correlation, FracOfAScaledResponseIsOneAndOfAShiftedResonanceLess) {
