@@ -82,8 +82,19 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
 }  // namespace
 
 int runHamsasModes(const ModesArgs& args, const HamsasScene& scene) {
+  std::unique_ptr<OutputDir> out;  // made first: a bad --out is refused before the work
+  if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
   const HamsasModes h = analyseHamsas(scene.isolator);
-  args.json ? emitResult(hamsasModesJson(scene, h, args.modes)) : emitResult(hamsasModesText(scene, h, args.modes));
+  const nlohmann::ordered_json json = hamsasModesJson(scene, h, args.modes);
+  const std::string text = hamsasModesText(scene, h, args.modes);
+  checkResultFinite(json);  // before any file is committed
+  checkResultFinite(text);
+  if (out) {  // the same files as the article's modes (before, --out was ignored here)
+    out->write("modes.txt", text);
+    out->write("modes.json", json.dump(2) + "\n");
+    out->commit();  // reported as written when the command succeeds
+  }
+  args.json ? emitResult(json) : emitResult(text);
   return kOk;
 }
 
@@ -113,9 +124,9 @@ int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::ve
     text += hamsasVaryText(vary_key, varied);
   }
   if (out) {
-    std::ofstream(out->stage("transmissibility.csv"), std::ios::binary) << hamsasTransmissibilityCsv(f, T);
+    out->write("transmissibility.csv", hamsasTransmissibilityCsv(f, T));
     writeTransmissibilityPlots(*out, scene.name, f, T, T10, vary_key, varied, vary_unit);
-    for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+    out->commit();  // reported as written when the command succeeds
   }
   if (args.json) {
     nlohmann::ordered_json j = hamsasTransmissibilityJson(scene, f, T, T10);
@@ -151,8 +162,8 @@ int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::ve
     throw OutputError(e.what());
   }
   const nlohmann::ordered_json rom_json = hamsasRomJson(full, red, err, f);
-  std::ofstream(out.stage("rom.json"), std::ios::binary) << rom_json.dump(2) << '\n';
-  for (const auto& path : out.commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+  out.write("rom.json", rom_json.dump(2) + "\n");
+  out.commit();  // reported as written when the command succeeds
   args.json ? emitResult(rom_json) : emitResult(hamsasRomText(scene, h, full, red, err, f));
   return kOk;
 }

@@ -52,11 +52,13 @@ SpatialMode describeMode(const SpatialSpec& s, const SpatialLinearization& lin, 
     auto& d = by_dir.try_emplace(s.bodies[b].group, Eigen::Matrix<double, 6, 1>::Zero()).first->second;
     for (int k = 0; k < 6; ++k) d[k] += pb[k] * (Mb.row(k).dot(pb));
   }
-  const double V = phi.dot(lin.K * phi);
-  for (const auto& e : lin.elements) {
-    m.strain_share[e.group] += phi.dot(e.K * phi) / V;
-    m.strain_share["preload"] += phi.dot(e.K_preload * phi) / V;
-  }
+  // Shares of the elastic energy (each element's is >= 0), and the preloads' work apart:
+  // as shares of the net energy an IP mode read flex_joint=10003% preload=-9910%.
+  double elastic = 0, preload = 0;
+  for (const auto& e : lin.elements) elastic += phi.dot(e.K * phi), preload += phi.dot(e.K_preload * phi);
+  for (const auto& e : lin.elements)
+    if (elastic > 0) m.strain_share[e.group] += phi.dot(e.K * phi) / elastic;
+  m.preload_over_elastic = elastic > 0 ? preload / elastic : 0.0;
   std::string best;
   double share = -1;
   const auto groups = m.kinetic_share;

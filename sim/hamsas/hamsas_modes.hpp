@@ -17,9 +17,13 @@ struct SpatialMode {
   double frequency_hz = 0;  ///< negative: unstable (sqrt(-omega^2) / 2 pi).
   std::string label;        ///< the body group and direction holding most kinetic energy, e.g. "ot z".
   std::map<std::string, double> kinetic_share;  ///< per body group, and per "group.direction".
-  /// Per element group (elastic part), and "preload": the work of the elements' preloads
-  /// (gravity carried through joints and springs: a pendulum's restoring stiffness).
+  /// Per element group: its share of the elastic strain energy (each >= 0, summing to 1).
   std::map<std::string, double> strain_share;
+  /// The work of the elements' preloads (gravity carried through joints and springs: a
+  /// pendulum's restoring stiffness, an inverted pendulum's negative one) over the
+  /// elastic strain energy: -0.99 where gravity takes back 99 % of what the flex joints
+  /// store (an IP tuned low). The mode's net stiffness energy is (1 + this) x elastic.
+  double preload_over_elastic = 0;
 };
 
 /// One measured feature (docs/sources.md section 3) and the model mode that shows it.

@@ -68,8 +68,9 @@ std::string hamsasModesText(const HamsasScene& scene, const HamsasModes& h, int 
            f.mode >= 0 ? strf("%+.2f", 100 * (f.model_hz / f.measured_hz - 1)) : "-",
            f.mode >= 0 ? std::to_string(f.mode + 1) : "-", strf("%.3f", f.shape_match), f.rule});
   os << t.text() << '\n';
-  os << "Modes (kinetic energy by body group; strain energy by element group, 'preload' = gravity's work):\n";
-  Table m({"mode", "f_Hz", "label", "kinetic_energy", "strain_energy"});
+  os << "Modes (kinetic energy by body group; elastic strain energy by element group; gravity_%: the preloads' work\n"
+        "over the elastic energy, negative where gravity takes back what the elements store, as in an inverted pendulum):\n";
+  Table m({"mode", "f_Hz", "label", "kinetic_energy", "elastic_strain_energy", "gravity_%"});
   const int n = max_modes > 0 ? std::min<int>(max_modes, static_cast<int>(h.modes.size())) : static_cast<int>(h.modes.size());
   for (int i = 0; i < n; ++i) {
     auto top = [](const std::map<std::string, double>& shares, bool skip_dirs) {
@@ -83,7 +84,7 @@ std::string hamsasModesText(const HamsasScene& scene, const HamsasModes& h, int 
       return out;
     };
     m.add({std::to_string(i + 1), strf("%.5g", h.modes[i].frequency_hz), h.modes[i].label, top(h.modes[i].kinetic_share, true),
-           top(h.modes[i].strain_share, false)});
+           top(h.modes[i].strain_share, false), std::abs(h.modes[i].preload_over_elastic) < 5e-4 ? "0.0" : strf("%+.1f", 100 * h.modes[i].preload_over_elastic)});
   }
   os << m.text();
   return os.str();
@@ -118,6 +119,7 @@ nlohmann::ordered_json hamsasModesJson(const HamsasScene& scene, const HamsasMod
     for (const auto& [k, v] : h.modes[i].kinetic_share)
       if (k.find('.') == std::string::npos) m["kinetic_share"][k] = v;
     m["strain_share"] = h.modes[i].strain_share;
+    m["preload_over_elastic"] = h.modes[i].preload_over_elastic;
     j["modes"].push_back(m);
   }
   return j;
