@@ -111,9 +111,9 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     const PlacementStudy s = article ? runPlacement(*article, o) : runHamsasPlacement(*isolator, *h, o);
     checkResultFinite(placementJson(s));  // before any file is committed
     if (out) {
-      std::ofstream(out->stage("placement.json"), std::ios::binary) << placementJson(s).dump(2) << '\n';
-      std::ofstream(out->stage("candidates.csv"), std::ios::binary) << placementCandidatesCsv(s);
-      std::ofstream(out->stage("automac.csv"), std::ios::binary) << placementAutoMacCsv(s);
+      out->write("placement.json", placementJson(s).dump(2) + "\n");
+      out->write("candidates.csv", placementCandidatesCsv(s));
+      out->write("automac.csv", placementAutoMacCsv(s));
       std::vector<std::string> rows, cols;
       for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
         rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j], s.target_frequencies_hz[j]));
@@ -128,7 +128,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }
-      for (const auto& path : out->commit()) std::cerr << "mmvlab: wrote " << path << '\n';
+      out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(placementJson(s)) : emitResult(placementText(s));
     return kOk;

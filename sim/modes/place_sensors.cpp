@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <cstdlib>
 #include <optional>
 
 #include "article/section.hpp"
@@ -83,10 +85,24 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   const char* axis_names[] = {"axial", "transverse", "normal"};
   for (const auto& link : scene.article.links) {
     const Material& mat = *scene.article.findMaterial(link.material);
-    const double mass = mat.density * sectionArea(*scene.article.findSection(link.section)) * o.spacing_m;
-    for (double x : stationsAlong(link.length, o.spacing_m)) {
+    const double rho_a = mat.density * sectionArea(*scene.article.findSection(link.section));
+    // The lumped masses at the link's tip: its tip mass and the torquers of the joints it carries.
+    double tip = link.tip_mass ? link.tip_mass->mass : 0.0;
+    for (const auto& j : scene.article.joints)
+      if (j.parent == link.name && j.torquer) tip += j.torquer->mass;
+    const std::vector<double> xs = stationsAlong(link.length, o.spacing_m);
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const double x = xs[i];
+      // Each station's tributary mass (modal kinetic energy): the link between the
+      // midpoints to its neighbours (the first from the root, the last to the tip), and
+      // the tip's lumped masses at the last. Before, every station had rho A spacing and
+      // no torquer or tip mass counted.
+      const double from = i == 0 ? 0.0 : 0.5 * (xs[i - 1] + x), to = i + 1 == xs.size() ? link.length : 0.5 * (x + xs[i + 1]);
+      const double mass = rho_a * (to - from) + (i + 1 == xs.size() ? tip : 0.0);
       char name[96];
       std::snprintf(name, sizeof name, "%s@%.4gm", link.name.c_str(), x);
+      if (std::strtod(std::strchr(name, '@') + 1, nullptr) > link.length)  // rounded past the tip: exact digits
+        std::snprintf(name, sizeof name, "%s@%.17gm", link.name.c_str(), x);
       std::string error;
       const std::optional<PointRef> ref = PointRef::resolve(model, scene.article, name, error);
       MMV_DEMAND(ref.has_value());
@@ -100,7 +116,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
         rows.push_back(row);
         masses.push_back(mass);
         if (!o.triaxial || a == 0)
-          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : axis_names[a], pos[0], pos[1], pos[2]});
+          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : axis_names[a], pos[0], pos[1], pos[2], mass});
         p.block.push_back(static_cast<int>(study.candidates.size()) - 1);
       }
     }

@@ -37,6 +37,10 @@ struct PlacementCandidate {
   double x_m = 0;       ///< along the link from its root.
   std::string axis;     ///< "axial", "transverse", or "triaxial" (a block).
   double world_x = 0, world_y = 0, world_z = 0;  ///< m, at the equilibrium.
+  /// kg: the station's tributary mass, the MKE weight: the link between the midpoints to
+  /// its neighbours (from the root, to the tip), plus the tip mass and the torquers the
+  /// link carries at the last station. A link's stations sum to all of it.
+  double mass_kg = 0;
 };
 
 struct PlacementStudy {

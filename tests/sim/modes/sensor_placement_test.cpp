@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "article/section.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -141,6 +143,33 @@ TEST(SensorPlacement, RankingsKeepTheLargestScores) {
   const PlacementResult r = placeSensors(p, PlacementMethod::DrivingPointResidue, 2);
   EXPECT_EQ(r.fisher_determinant, 0.0);
   EXPECT_TRUE(std::isinf(r.fisher_condition));
+}
+
+// Modal kinetic energy weighs each station by its tributary mass: a link's stations sum
+// to its own mass plus the tip mass and torquers it carries (before: rho A spacing at
+// every station, the torquers and tip masses left out, so MKE ranked the station under
+// torquer 2's 4.67 kg like any other), and the last station carries the lumps.
+TEST(SensorPlacement, TributaryMassesSumToTheLinkAndWhatItCarries) {
+  ArticleScene s = loadDefaultScene();
+  PlacementOptions o;
+  o.modes = {1, 2};
+  o.count = 2;
+  o.spacing_m = 0.1;
+  o.method = PlacementMethod::ModalKineticEnergy;
+  const PlacementStudy p = runPlacement(s, o);
+  for (const auto& link : s.article.links) {
+    SCOPED_TRACE(link.name);
+    double sum = 0, last = 0;
+    for (const auto& c : p.candidates)
+      if (c.link == link.name && c.axis == "axial") sum += c.mass_kg, last = c.mass_kg;
+    double carried = link.tip_mass ? link.tip_mass->mass : 0.0;
+    for (const auto& j : s.article.joints)
+      if (j.parent == link.name && j.torquer) carried += j.torquer->mass;
+    const double own = s.article.findMaterial(link.material)->density * sectionArea(*s.article.findSection(link.section)) * link.length;
+    EXPECT_NEAR(sum, own + carried, 1e-12 * (own + carried));
+    EXPECT_GT(last, carried);
+    if (link.name == "link1") EXPECT_GT(carried, 4.6);  // torquer 2, 4.67 kg, at link 1's tip
+  }
 }
 
 }  // namespace
