@@ -49,6 +49,12 @@ TEST_F(Honesty, ClampsAreSaidAndConflictingRulesRefused) {
   ASSERT_EQ(clamp.code, 0) << clamp.err;
   EXPECT_NE(clamp.err.find("link link1 in 2 segments keeps 2 of the 3 modes"), std::string::npos) << clamp.err;
 
+  // A link whose tip station's 4-digit name rounded past the tip: an internal error (70)
+  // before; now the station keeps its digits and the request is judged on its merits.
+  const Result tiny = run("place-sensors --set links.link3.length=0.000898394 --count 2");
+  EXPECT_EQ(tiny.code, 64) << tiny.err;
+  EXPECT_NE(tiny.err.find("needs at least one measured direction per target mode"), std::string::npos) << tiny.err;
+
   const Result both = run("place-sensors --modes 1-4 --below-hz 30 --count 4");
   EXPECT_EQ(both.code, 64) << both.err;
   EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
