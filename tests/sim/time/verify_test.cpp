@@ -19,14 +19,14 @@ ArticleScene pendulumFrom170Degrees(const std::string& integrator) {
   return s;
 }
 
-SimulationResult verified(ArticleScene s, double accuracy) {
+SimulationResult verified(ArticleScene s, double accuracy, double target_m = 0.0) {
   s.simulation.accuracy = accuracy;
   SimulationResult r = simulate(s);
   r.verification = verifyRun(r, s.simulation, [&](const SimulationSpec& spec) {
     ArticleScene t = s;
     t.simulation = spec;
     return simulate(t);
-  }, 0.0);
+  }, target_m);
   return r;
 }
 
@@ -69,13 +69,7 @@ TEST(Verify, MetHoldsTheTrueErrorWithinTheTarget) {
     const SimulationResult truth = simulate(s);
     for (double accuracy : {1e-6, 1e-7, 1e-8}) {
       SCOPED_TRACE(std::string(integrator) + " at " + std::to_string(accuracy));
-      s.simulation.accuracy = accuracy;
-      SimulationResult r = simulate(s);
-      r.verification = verifyRun(r, s.simulation, [&](const SimulationSpec& spec) {
-        ArticleScene t = s;
-        t.simulation = spec;
-        return simulate(t);
-      }, target);
+      const SimulationResult r = verified(s, accuracy, target);
       const double actual = scoredDistance(r.record, truth.record, {}).distance_m;
       EXPECT_LE(actual, kVerifySafetyFactor * r.verification.estimated_error_m);
       if (verificationMet(r.verification)) EXPECT_LE(actual, target) << "estimate " << r.verification.estimated_error_m;
