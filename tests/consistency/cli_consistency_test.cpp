@@ -69,6 +69,64 @@ TEST_F(Consistency, ModesJsonOnStdoutEqualsModesJsonInOut) {
   }
 }
 
+/// The whitespace-separated words of `line`.
+std::vector<std::string> words(const std::string& line) {
+  std::vector<std::string> w;
+  std::stringstream ss(line);
+  for (std::string x; ss >> x;) w.push_back(x);
+  return w;
+}
+
+// The text and the JSON of one run say the same: each mode's frequency in `modes`' table
+// and each check line's demand, capacity, margin and verdict, to the text's digits, on
+// every shipped article scene.
+TEST_F(Consistency, TextAndJsonSayTheSame) {
+  int lines = 0, modes = 0;
+  for (const std::string& scene : shippedScenes()) {
+    if (scene.find("hamsas") != std::string::npos) continue;
+    SCOPED_TRACE(scene);
+    const Result mt = run("modes " + scene + " --no-error-estimate"), mj = run("modes " + scene + " --no-error-estimate --json");
+    ASSERT_EQ(mt.code, 0) << mt.err;
+    const json mjs = json::parse(mj.out);
+    for (const auto& m : mjs["modes"]) {
+      if (!m["stable"].get<bool>()) continue;
+      const std::string number = std::to_string(m["number"].get<int>());
+      bool found = false;
+      std::stringstream text(mt.out.substr(mt.out.find("System modes about the equilibrium")));
+      for (std::string line; std::getline(text, line);) {
+        const auto w = words(line);
+        if (w.size() < 2 || w[0] != number) continue;
+        EXPECT_NEAR(std::stod(w[1]), m["frequency_hz"].get<double>(), 5.01e-5) << line;
+        found = true;
+        ++modes;
+        break;
+      }
+      EXPECT_TRUE(found) << "mode " << number;
+    }
+    const Result ct = run("check " + scene), cj = run("check " + scene + " --json");
+    ASSERT_EQ(ct.code, 0) << ct.err;
+    const json cjs = json::parse(cj.out);
+    for (const auto& l : cjs["lines"]) {
+      const std::string req = l["requirement"].get<std::string>();
+      const auto at = ct.out.find("  " + req + "  ");
+      if (at == std::string::npos || l["capacity"].is_null()) continue;  // a long requirement wraps; n/a lines
+      const std::string line = ct.out.substr(at, ct.out.find('\n', at) - at);
+      const auto w = words(line.substr(req.size() + 2));
+      ASSERT_EQ(w.size(), 5u) << line;  // demand capacity unit margin verdict
+      const double demand = l["demand"].get<double>(), capacity = l["capacity"].get<double>();
+      EXPECT_NEAR(std::stod(w[0]), demand, 5e-4 * std::abs(demand) + 1e-12) << line;
+      EXPECT_NEAR(std::stod(w[1]), capacity, 5e-4 * std::abs(capacity)) << line;
+      EXPECT_EQ(w[2], l["unit"].get<std::string>()) << line;
+      EXPECT_NEAR(std::stod(w[3]), l["margin_pct"].get<double>(), 0.051) << line;
+      EXPECT_EQ(w[4], l["verdict"].get<std::string>()) << line;
+      ++lines;
+    }
+  }
+  EXPECT_GT(modes, 40);
+  EXPECT_GT(lines, 20);
+  std::printf("[consistency] text against JSON: %d mode frequencies, %d check lines, all equal to the text's digits\n", modes, lines);
+}
+
 // The docs (docs/planning.md): FAIL below 0, unless the line is advisory; never warn or
 // pass with a negative margin. Before, the table's bandwidth line read -180 % warn.
 TEST_F(Consistency, ANegativeMarginIsFailOrAdvisory) {
