@@ -132,6 +132,23 @@ INSTANTIATE_TEST_SUITE_P(Models, DampedDecay,
                                            Case{"hinge_dampers", hinges(4e-4)}),
                          [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.name); });
 
+// A link in modal coordinates (links[i].modes) carries the damping matrix too, through
+// the Galerkin projection (the residual's inverse dynamics sees the force; the Newton
+// Jacobian gets T^T C T): the same decrement as the modes' ratio.
+TEST(DampedDecayModalLinks, AModalLinkDecaysAtTheModesRatio) {
+  const testing::Beam beam{1.0, 7800.0, 2.0e11, 1e-4, 1e-9};
+  ArticleScene scene = testing::cantileverScene(beam, 8, 9.81, 0.0);
+  scene.damping = modal(0.02);
+  const SolvedScene solved = solveScene(scene);
+  scene.article.links[0].modes = 3;
+  const Decay d = modeOneDecay(scene, solved, 12);
+  ASSERT_GE(d.peaks, 10);
+  const double expected = 2 * M_PI * 0.02 / std::sqrt(1 - 0.02 * 0.02);
+  EXPECT_NEAR(d.decrement / expected, 1.0, 0.02) << "decrement " << d.decrement << ", 2 pi zeta " << expected;
+  std::printf("[consistency] modal link (3 modes), modal 2 %%: decrement %.6f vs %.6f (%+.3f %%)\n", d.decrement, expected,
+              100 * (d.decrement / expected - 1));
+}
+
 // Without a `damping:` the run is undamped and says so.
 TEST(DampedDecayNone, AnUndampedRunSaysSo) {
   const testing::Beam beam{1.0, 7800.0, 2.0e11, 1e-4, 1e-9};
