@@ -11,6 +11,7 @@
 #include "renders/frame.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/core/files.hpp"
+#include "sim/io/output_dir.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv::cli {
@@ -25,8 +26,9 @@ Camera chooseCamera(const std::string& view, const DrawList& d, const std::vecto
                     const Eigen::AlignedBox3d& frame = Eigen::AlignedBox3d());
 
 /// Writes through a temporary name in the same directory, renamed on success, so a
-/// failed or interrupted run leaves no partial file; refuses to replace a file unless
-/// `force` (OutputError, exit 73).
+/// failed or interrupted run leaves no partial file (SIGINT, SIGTERM, SIGHUP remove the
+/// temporary; one a SIGKILL left is removed by the next run writing there); refuses to
+/// replace a file unless `force` (OutputError, exit 73).
 template <class Write>
 void writeAtomically(const std::string& path, bool force, Write write) {
   namespace fs = std::filesystem;
@@ -35,7 +37,12 @@ void writeAtomically(const std::string& path, bool force, Write write) {
   if (fs::exists(target, ec) && !force) throw OutputError(path + ": exists (use --force to replace it)");
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec)) throw OutputError(path + ": the directory " + dir.string() + " does not exist");
+  removeStaleTemporaries(dir.string());
   const fs::path tmp = dir / (".mmvlab-" + std::to_string(::getpid()) + "-" + target.filename().string());
+  removeOnSignal(tmp.string());
+  struct Forget {
+    ~Forget() { forgetRemovalsOnSignal(); }
+  } forget;
   try {
     write(tmp.string());
     syncFileChecked(tmp.string());  // there, whole and on the disk before it is renamed

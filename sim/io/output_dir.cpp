@@ -7,6 +7,7 @@
 #include <array>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -70,7 +71,31 @@ void removeStaleStaging(const fs::path& base) {
   }
 }
 
+/// The process id in a temporary's name `.mmvlab-PID-NAME` (0: not such a name).
+long temporaryOwner(const std::string& name) {
+  const std::string prefix = ".mmvlab-";
+  if (name.rfind(prefix, 0) != 0) return 0;
+  char* end = nullptr;
+  const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
+  return end && *end == '-' && end != name.c_str() + prefix.size() ? pid : 0;
+}
+
 }  // namespace
+
+void removeOnSignal(const std::string& path) { remember(path, false); }
+void forgetRemovalsOnSignal() { forgetAll(); }
+
+void removeStaleTemporaries(const std::string& dir) {
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const long pid = temporaryOwner(it->path().filename().string());
+    std::error_code type;
+    if (pid > 0 && it->is_regular_file(type) && ::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH) {
+      std::error_code ignore;
+      fs::remove(it->path(), ignore);
+    }
+  }
+}
 
 OutputDir::OutputDir(const std::string& dir, bool force) : force_(force), exceptions_at_start_(std::uncaught_exceptions()) {
   if (dir.empty()) throw OutputError("--out: empty directory name");

@@ -20,6 +20,14 @@
 
 namespace mmv {
 
+/// For a single output file written through a temporary beside it (`render --out`):
+/// SIGINT, SIGTERM and SIGHUP remove `path` (until forgotten), as they remove OutputDir's
+/// staging; and the temporaries `.mmvlab-PID-NAME` in `dir` whose process is gone (a
+/// SIGKILL) are removed.
+void removeOnSignal(const std::string& path);
+void forgetRemovalsOnSignal();
+void removeStaleTemporaries(const std::string& dir);
+
 class OutputDir {
  public:
   OutputDir(const std::string& dir, bool force);

@@ -178,6 +178,41 @@ int stagingLeft(const fs::path& dir, pid_t pid = 0) {
 // a trade run with --out: the directory is either absent or holds every file of a
 // complete run, the data files equal to an undisturbed run's; a SIGINT leaves
 // no staging directory, and the next run sweeps away those a SIGKILL left.
+// render writes a video through `.mmvlab-PID-NAME` beside --out. Before, a SIGINT,
+// SIGTERM, SIGHUP or SIGKILL left that file and no later run removed it. Now a SIGINT
+// removes it, and a temporary whose process is gone (what a SIGKILL leaves) is removed
+// by the next render writing there.
+TEST_F(Cli, RenderLeavesNoTemporaryBehind) {
+  const auto temporaries = [&] {
+    std::vector<std::string> t;
+    for (const auto& e : fs::directory_iterator(dir_))
+      if (e.path().filename().string().rfind(".mmvlab-", 0) == 0) t.push_back(e.path().filename().string());
+    return t;
+  };
+  const pid_t pid = spawn(split(std::string(MMVLAB_BINARY) + " render --mode 1 --size 640x360 --out " + (dir_ / "m.mp4").string()));
+  ASSERT_GT(pid, 0);
+  const auto start = std::chrono::steady_clock::now();
+  while (temporaries().empty() && std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_EQ(temporaries().size(), 1u) << "the video's temporary never appeared";
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(temporaries().empty()) << temporaries()[0];
+  EXPECT_FALSE(fs::exists(dir_ / "m.mp4"));
+  // A SIGKILLed run's temporary: a process that has exited, its pid on a file.
+  const pid_t gone = ::fork();
+  if (gone == 0) ::_exit(0);
+  ::waitpid(gone, &status, 0);
+  const std::string stale = ".mmvlab-" + std::to_string(gone) + "-k.mp4";
+  write(stale, "half a video");
+  write(".mmvlab-staging-notmine", "x");  // not a temporary of this kind: kept
+  const Result r = run("render --out " + (dir_ / "a.png").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / stale));
+  EXPECT_TRUE(fs::exists(dir_ / ".mmvlab-staging-notmine"));
+}
+
 TEST_F(Cli, KilledRunsLeaveNoPartialFile) {
   struct Case {
     std::string args;      // after the binary; OUT is appended
