@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/cli/commands.hpp"
+#include "sim/core/files.hpp"
 #include "sim/cli/progress.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/sweep_points.hpp"
@@ -77,7 +78,7 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
       return runSweep(run, args.force);
     }();
     const nlohmann::ordered_json j = summary(context, run, r);
-    std::ofstream(std::filesystem::path(run.dir) / "sweep.json", std::ios::binary) << j.dump(2) << '\n';
+    writeFileChecked((std::filesystem::path(run.dir) / "sweep.json").string(), j.dump(2) + "\n");  // checked: a full disk is 73
     if (shard.count == 1) writeSweepPlots(run.dir);
     if (args.json) {
       std::cout << j.dump(2) << '\n';

@@ -13,6 +13,7 @@
 
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/core/files.hpp"
 #include "sim/core/text.hpp"
 
 namespace mmv::cli {
@@ -115,8 +116,7 @@ void pareto(const SweepTable& t, const fs::path& dir) {
     v.push_back({t.number(i, f1), t.number(i, mass), worst});
   }
   const auto front = paretoFront(v);
-  std::ofstream csv(dir / "pareto.csv");
-  csv << "point,mode1_hz,mass_kg,worst_torque_margin_pct\n";
+  std::string csv = "point,mode1_hz,mass_kg,worst_torque_margin_pct\n";
   render::Series all{"every point", {}, {}}, feasible{"torque margins >= 0", {}, {}}, best{"Pareto front (f1, mass, margin)", {}, {}};
   all.markers_only = feasible.markers_only = best.markers_only = true;
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -125,8 +125,9 @@ void pareto(const SweepTable& t, const fs::path& dir) {
   }
   for (std::size_t i : front) {
     best.x.push_back(v[i][1]), best.y.push_back(v[i][0]);
-    csv << t.rows[i][0] << strf(",%.10g,%.10g,%.6g\n", v[i][0], v[i][1], v[i][2]);
+    csv += t.rows[i][0] + strf(",%.10g,%.10g,%.6g\n", v[i][0], v[i][1], v[i][2]);
   }
+  writeFileChecked((dir / "pareto.csv").string(), csv);  // a full disk is exit 73, not a short file
   figures::linePlot((dir / "pareto.png").string(), {all, feasible, best}, "Lowest frequency against mass (worst torque margin the third objective)",
                            "mass (kg)", "mode 1 (Hz)");
 }
