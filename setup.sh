@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Installs mmvlab's build and test dependencies from Debian 12 packages.
+# Installs mmvlab's dependencies from Debian 12 packages.
 # Idempotent: packages already present are skipped; apt-get runs only when something
 # is missing. Needs root (or sudo) for the install step.
 #
-#   ./setup.sh      everything needed to build, run, test and benchmark mmvlab
+#   ./setup.sh          what building and running mmvlab needs (the README's first command)
+#   ./setup.sh --test   that, plus what the test suite and the benchmarks add
+#                       (GoogleTest, Google Benchmark, Octave, Python with numpy)
 set -euo pipefail
 
 build_pkgs=(
@@ -11,11 +13,18 @@ build_pkgs=(
   libsimbody-dev libeigen3-dev libsundials-dev
   libopencv-dev libosmesa6-dev libgl-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev libspectra-dev
+)
+test_pkgs=(
   libgtest-dev googletest libbenchmark-dev
   octave octave-control          # the test suite loads our .mat files into Octave's ss()
   python3 python3-numpy          # ... and reads every CSV back with Python's csv module and numpy
 )
 want=("${build_pkgs[@]}")
+case "${1:-}" in
+  "") ;;
+  --test) want+=("${test_pkgs[@]}") ;;
+  *) echo "setup: unknown option '$1' (use no option, or --test for the test suite's packages too)" >&2; exit 64 ;;
+esac
 
 missing=()
 for p in "${want[@]}"; do
