@@ -40,7 +40,7 @@ void fittedText(cv::Mat& img, const std::string& s, cv::Point at, double scale, 
 /// Viridis-like colour for t in [0, 1] (BGR), from five anchors.
 cv::Scalar colourFor(double t) {
   static const double anchors[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
-  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) * 4.0 : 0.0;  // a NaN would index past the table
   const int i = std::min(3, static_cast<int>(t));
   const double f = t - i;
   double rgb[3];
@@ -65,6 +65,27 @@ double tickStep(double range, int target = 6) {
   for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
     if (raw <= m * mag) return m * mag;
   return 10 * mag;
+}
+
+/// The ticks of a linear axis over [a0, a1]: multiples of a "nice" step, counted by an
+/// integer index so a range of a few ulps (where x + step == x) still ends; at most 50.
+std::vector<double> linearTicks(double a0, double a1) {
+  std::vector<double> out;
+  const double step = tickStep(a1 - a0);
+  if (!(step > 0) || !std::isfinite(step)) return out;
+  const double k0 = std::ceil(a0 / step), k1 = std::floor(a1 / step + 1e-9);
+  for (double k = k0; k <= k1 && out.size() < 50; k += 1.0) out.push_back(k * step);
+  return out;
+}
+
+/// Widens [lo, hi] to a range a plot can resolve: a point (or a span of a few ulps,
+/// where pixel positions and tick steps underflow) becomes a span around its centre.
+void resolvableRange(double& lo, double& hi) {
+  const double scale = std::max({std::abs(lo), std::abs(hi), 1e-300});
+  if (hi - lo > 1e-9 * scale) return;
+  const double mid = 0.5 * (lo + hi), half = lo == hi && lo == 0 ? 1.0 : std::max(1e-6 * scale, 1e-300);
+  lo = mid - half;
+  hi = mid + half;
 }
 
 }  // namespace
@@ -153,8 +174,8 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
       y1 = std::max(y1, ty(s.y[i]));
     }
   if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
-  if (x1 == x0) x0 -= 1, x1 += 1;
-  if (y1 == y0) y0 -= 1, y1 += 1;
+  resolvableRange(x0, x1);
+  resolvableRange(y0, y1);
   const double pad = 0.05 * (y1 - y0);
   y0 -= pad;
   y1 += pad;
@@ -191,7 +212,7 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
     });
   } else {
     const double sx = tickStep(x1 - x0);
-    for (double x = std::ceil(x0 / sx) * sx; x <= x1 + 1e-9 * sx; x += sx) {
+    for (double x : linearTicks(x0, x1)) {
       const int xx = left + static_cast<int>((x - x0) / (x1 - x0) * pw);
       cv::line(img, {xx, top}, {xx, top + ph}, kGrey);
       text(img, fmt(x, "%g", 1e-6 * sx), {xx, top + ph + 20}, 0.42, kBlack, true);
@@ -205,7 +226,7 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& se
     });
   } else {
     const double sy = tickStep(y1 - y0);
-    for (double y = std::ceil(y0 / sy) * sy; y <= y1 + 1e-9 * sy; y += sy) {
+    for (double y : linearTicks(y0, y1)) {
       const int yy = top + ph - static_cast<int>((y - y0) / (y1 - y0) * ph);
       cv::line(img, {left, yy}, {left + pw, yy}, kGrey);
       yTick(fmt(y, "%g", 1e-6 * sy), yy);

@@ -46,31 +46,45 @@ const Api& api() {
   return *table;
 }
 
+/// A figure is an output: whatever the plugin throws while drawing or writing one (an
+/// encoder that fails, a full disk) is an OutputError, exit 73, here at the boundary
+/// (its own copy of our error types may not match ours across the shared object).
+template <class F>
+void drawing(F&& f) {
+  try {
+    f();
+  } catch (const UnavailableError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw OutputError(e.what());
+  }
+}
+
 }  // namespace
 
 void linePlot(const std::string& path, const std::vector<render::Series>& series, const std::string& title,
               const std::string& x_label, const std::string& y_label, bool log_y, bool log_x) {
-  api().line_plot(path, series, title, x_label, y_label, log_y, log_x);
+  drawing([&] { api().line_plot(path, series, title, x_label, y_label, log_y, log_x); });
 }
 
 void heatmap(const std::string& path, const Eigen::MatrixXd& values, const std::vector<std::string>& row_labels,
              const std::vector<std::string>& col_labels, const std::string& title, const std::string& row_axis,
              const std::string& col_axis, double vmin, double vmax) {
-  api().heatmap(path, values, row_labels, col_labels, title, row_axis, col_axis, vmin, vmax);
+  drawing([&] { api().heatmap(path, values, row_labels, col_labels, title, row_axis, col_axis, vmin, vmax); });
 }
 
 void bode(const std::string& path, const std::vector<render::BodeTrace>& traces, const std::string& title, const std::string& x_label,
           const std::vector<double>& markers) {
-  api().bode(path, traces, title, x_label, markers);
+  drawing([&] { api().bode(path, traces, title, x_label, markers); });
 }
 
 void framePng(const std::string& path, const DrawList& list, const Camera& camera, const FrameSize& size) {
-  api().frame_png(path, list, camera, size);
+  drawing([&] { api().frame_png(path, list, camera, size); });
 }
 
 void contactSheetPng(const std::string& path, const std::vector<DrawList>& lists, const std::vector<Camera>& cameras,
                      const FrameSize& size, int columns) {
-  api().contact_sheet_png(path, lists, cameras, size, columns);
+  drawing([&] { api().contact_sheet_png(path, lists, cameras, size, columns); });
 }
 
 int renderCommand(const cli::RenderArgs& args) { return api().render_command(args); }

@@ -5,9 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <functional>
 #include <map>
+#include <thread>
 
 namespace mmv::render {
 namespace {
@@ -53,6 +61,53 @@ TEST(Plot, ASparseCurveIsDrawnPointForPoint) {
   const auto line = columnEnvelope(pts);
   ASSERT_EQ(line.size(), pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_TRUE(line[i] == pts[i]) << i;
+}
+
+/// Runs `draw` in a child process: true when it exits 0 within `seconds` (a hang is
+/// killed and reported false, so the suite does not wait for ctest's timeout).
+bool finishesWithin(const std::function<void()>& draw, int seconds) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    try {
+      draw();
+    } catch (...) {
+      _exit(2);
+    }
+    _exit(0);
+  }
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+  int status = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return false;
+}
+
+// An axis spanning about one ulp (a sweep over [0.001, 0.0010000000000000002]) looped
+// forever adding a tick step smaller than the ulp; a flat series drew the same way.
+TEST(Plot, AnAxisOfAFewUlpsIsDrawnAndEnds) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("mmvlab_ulp_axis_" + std::to_string(getpid()) + ".png")).string();
+  Series s{"one ulp", {0.001, 0.0010000000000000002}, {30.0, 30.000000000000004}};
+  s.markers_only = true;
+  EXPECT_TRUE(finishesWithin([&] { writeLinePlotPng(path, {s}, "ulp", "x", "y"); }, 20));
+  Series big{"huge", {1e300, 1e300}, {-1e-300, -1e-300}};
+  EXPECT_TRUE(finishesWithin([&] { writeLinePlotPng(path, {big}, "huge", "x", "y"); }, 20));
+  EXPECT_GT(std::filesystem::file_size(path), 1000u);
+  std::filesystem::remove(path);
+}
+
+// A heat map whose colour range is NaN (every cell missing, or a NaN that reached the
+// range) indexed its colour table out of range; every cell is now drawn, NaN as "n/a".
+TEST(Plot, AHeatMapWithANaNRangeIsDrawn) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("mmvlab_nan_map_" + std::to_string(getpid()) + ".png")).string();
+  Eigen::MatrixXd m(2, 2);
+  m << 1.0, NAN, 3.0, 4.0;
+  EXPECT_TRUE(finishesWithin([&] { writeHeatmapPng(path, m, {"a", "b"}, {"c", "d"}, "nan", "r", "c", NAN, NAN); }, 20));
+  EXPECT_GT(std::filesystem::file_size(path), 1000u);
+  std::filesystem::remove(path);
 }
 
 }  // namespace
