@@ -17,6 +17,7 @@
 
 namespace mmv {
 class OutputDir;
+class OutputDir;
 struct SimulationResult;
 }  // namespace mmv
 
@@ -207,8 +208,8 @@ int runCheckCommand(const CheckArgs& args);
 int runCorrelateCommand(const CorrelateArgs& args);
 int runDesignSweepCommand(const DesignSweepArgs& args);
 int runSweepMergeCommand(const SweepMergeArgs& args);
-/// The figures of a sweep directory's sweep.csv (sim/cli/sweep_plots.cpp); their paths.
-std::vector<std::string> writeSweepPlots(const std::string& dir);
+/// The figures of a sweep's table (sweep.csv's text; sim/cli/sweep_plots.cpp), staged in `out`.
+void writeSweepPlots(const std::string& csv_text, OutputDir& out);
 int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);

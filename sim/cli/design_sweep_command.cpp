@@ -12,6 +12,7 @@
 
 #include "sim/cli/commands.hpp"
 #include "sim/core/files.hpp"
+#include "sim/io/output_dir.hpp"
 #include "sim/cli/progress.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/sweep_points.hpp"
@@ -78,15 +79,19 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
       return runSweep(run, args.force);
     }();
     const nlohmann::ordered_json j = summary(context, run, r);
-    writeFileChecked((std::filesystem::path(run.dir) / "sweep.json").string(), j.dump(2) + "\n");  // checked: a full disk is 73
-    if (shard.count == 1) writeSweepPlots(run.dir);
+    // sweep.csv is the journal's table (runSweep wrote it whole); the summary and the
+    // figures are one transaction on top of it: all of them replace the last run's, or none.
+    OutputDir out(run.dir, /*force=*/true);
+    out.write("sweep.json", j.dump(2) + "\n");
+    if (shard.count == 1) writeSweepPlots(r.table, out);
+    out.commit();
     if (args.json) {
-      std::cout << j.dump(2) << '\n';
+      emitResult(j);
     } else {
-      std::cout << strf("sweep %s: %zu points (%s), shard %s: %ld computed, %ld already done, %.2f s on %d threads\n",
-                        spec.source.c_str(), context.points.size(), j["design"].get<std::string>().c_str(), shard.text().c_str(),
-                        r.computed, r.reused, r.seconds, run.jobs)
-                << "wrote " << r.csv << '\n';
+      emitResult(strf("sweep %s: %zu points (%s), shard %s: %ld computed, %ld already done, %.2f s on %d threads\n",
+                      spec.source.c_str(), context.points.size(), j["design"].get<std::string>().c_str(), shard.text().c_str(),
+                      r.computed, r.reused, r.seconds, run.jobs) +
+                 "wrote " + r.csv + "\n");
     }
     return kOk;
   });
@@ -94,8 +99,14 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
 
 int runSweepMergeCommand(const SweepMergeArgs& args) {
   return guarded([&] {
-    const std::string csv = mergeSweepShards(args.shards, args.out, args.force);
-    const std::vector<std::string> figures = writeSweepPlots(args.out);
+    OutputDir out(args.out, args.force);
+    const std::string table = mergeSweepTables(args.shards);
+    out.write("sweep.csv", table);
+    writeSweepPlots(table, out);
+    std::vector<std::string> figures = out.targets();
+    const std::string csv = figures.front();
+    figures.erase(figures.begin());
+    out.commit();
     if (args.json) {
       nlohmann::ordered_json j;
       j["command"] = "sweep-merge";

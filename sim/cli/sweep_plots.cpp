@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
@@ -13,8 +12,8 @@
 
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
-#include "sim/core/files.hpp"
 #include "sim/core/text.hpp"
+#include "sim/io/output_dir.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -44,8 +43,8 @@ std::vector<std::string> splitCsv(const std::string& line) {
   return out;
 }
 
-SweepTable readTable(const fs::path& csv) {
-  std::ifstream in(csv);
+SweepTable readTable(const std::string& csv_text) {
+  std::istringstream in(csv_text);
   SweepTable t;
   std::string line;
   std::getline(in, line);
@@ -105,7 +104,7 @@ std::vector<std::size_t> paretoFront(const std::vector<std::array<double, 3>>& v
   return front;
 }
 
-void pareto(const SweepTable& t, const fs::path& dir) {
+void pareto(const SweepTable& t, OutputDir& out) {
   const int f1 = t.column("mode1_hz"), mass = t.column("mass_kg");
   const std::vector<int> margins = columnsLike(t, "torque_", "_margin_pct");  // check line ids as CSV names
   if (f1 < 0 || mass < 0 || margins.empty()) return;
@@ -127,13 +126,13 @@ void pareto(const SweepTable& t, const fs::path& dir) {
     best.x.push_back(v[i][1]), best.y.push_back(v[i][0]);
     csv += t.rows[i][0] + strf(",%.10g,%.10g,%.6g\n", v[i][0], v[i][1], v[i][2]);
   }
-  writeFileChecked((dir / "pareto.csv").string(), csv);  // a full disk is exit 73, not a short file
-  figures::linePlot((dir / "pareto.png").string(), {all, feasible, best}, "Lowest frequency against mass (worst torque margin the third objective)",
+  out.write("pareto.csv", csv);
+  figures::linePlot(out.stage("pareto.png"), {all, feasible, best}, "Lowest frequency against mass (worst torque margin the third objective)",
                            "mass (kg)", "mode 1 (Hz)");
 }
 
 /// A full grid over two parameters: the first frequency on the grid, value in each cell.
-void gridMap(const SweepTable& t, const fs::path& dir) {
+void gridMap(const SweepTable& t, OutputDir& out) {
   const int f1 = t.column("mode1_hz");
   if (t.parameters.size() != 2 || f1 < 0) return;
   std::set<double> a, b;
@@ -146,37 +145,31 @@ void gridMap(const SweepTable& t, const fs::path& dir) {
   std::vector<std::string> al, bl;
   for (double x : av) al.push_back(strf("%.4g", x));
   for (double x : bv) bl.push_back(strf("%.4g", x));
-  const double lo = m.minCoeff(), hi = m.maxCoeff();
-  figures::heatmap((dir / "mode1_map.png").string(), m, al, bl, "Mode 1 (Hz) over the grid", t.header[1], t.header[2], lo,
+  double lo = INFINITY, hi = -INFINITY;  // over the cells that hold a number (a missing one is drawn "n/a")
+  for (Eigen::Index i = 0; i < m.size(); ++i)
+    if (std::isfinite(m(i))) lo = std::min(lo, m(i)), hi = std::max(hi, m(i));
+  if (!std::isfinite(lo)) lo = 0, hi = 1;
+  figures::heatmap(out.stage("mode1_map.png"), m, al, bl, "Mode 1 (Hz) over the grid", t.header[1], t.header[2], lo,
                           hi > lo ? hi : lo + 1);
 }
 
 }  // namespace
 
-std::vector<std::string> writeSweepPlots(const std::string& dir_text) {
-  const fs::path dir(dir_text);
-  const SweepTable t = readTable(dir / "sweep.csv");
-  if (t.rows.empty()) return {};
-  std::vector<std::string> written;
+void writeSweepPlots(const std::string& csv_text, OutputDir& out) {
+  const SweepTable t = readTable(csv_text);
+  if (t.rows.empty()) return;
   const std::vector<int> freqs = columnsLike(t, "mode", "_hz"), margins = columnsLike(t, "", "_margin_pct");
   for (std::size_t k = 0; k < t.parameters.size(); ++k) {
     const int p = static_cast<int>(k) + 1;
-    if (!freqs.empty()) {
-      const fs::path f = dir / ("frequencies_vs_" + fileSafe(t.parameters[k]) + ".png");
-      againstParameter(t, f, p, freqs, "Tracked modes against " + t.parameters[k], "frequency (Hz)");
-      written.push_back(f.string());
-    }
-    if (!margins.empty()) {
-      const fs::path f = dir / ("margins_vs_" + fileSafe(t.parameters[k]) + ".png");
-      againstParameter(t, f, p, margins, "Check margins against " + t.parameters[k], "margin (%)");
-      written.push_back(f.string());
-    }
+    if (!freqs.empty())
+      againstParameter(t, out.stage("frequencies_vs_" + fileSafe(t.parameters[k]) + ".png"), p, freqs,
+                       "Tracked modes against " + t.parameters[k], "frequency (Hz)");
+    if (!margins.empty())
+      againstParameter(t, out.stage("margins_vs_" + fileSafe(t.parameters[k]) + ".png"), p, margins,
+                       "Check margins against " + t.parameters[k], "margin (%)");
   }
-  pareto(t, dir);
-  gridMap(t, dir);
-  for (const char* extra : {"pareto.png", "pareto.csv", "mode1_map.png"})
-    if (fs::exists(dir / extra)) written.push_back((dir / extra).string());
-  return written;
+  pareto(t, out);
+  gridMap(t, out);
 }
 
 }  // namespace mmv::cli

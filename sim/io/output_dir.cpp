@@ -144,6 +144,12 @@ void OutputDir::undoCommit() {
   if (created_target_) fs::remove(target_, ignore);  // only if empty: a directory this run made
 }
 
+std::vector<std::string> OutputDir::targets() const {
+  std::vector<std::string> out;
+  for (const auto& n : names_) out.push_back((target_ / n).string());
+  return out;
+}
+
 void OutputDir::commit() {
   MMV_DEMAND(!committed_);
   std::error_code ec;

@@ -42,6 +42,8 @@ class OutputDir {
   /// Moves every staged file into the target directory. The files are reported on
   /// stderr ("mmvlab: wrote DIR/NAME") when the transaction ends well (the destructor).
   void commit();
+  /// Where the staged files go (DIR/NAME), in the order they were staged.
+  std::vector<std::string> targets() const;
 
  private:
   std::filesystem::path target_, staging_;

@@ -4,12 +4,14 @@
 #include "sim/core/files.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <mutex>
 #include <sstream>
 
@@ -30,6 +32,10 @@ namespace {
 
 constexpr const char* kJournal = "journal.csv";
 constexpr const char* kMagic = "# mmvlab sweep journal v1";
+constexpr const char* kLock = ".mmvlab-sweep.lock";
+/// A journal holds at most kMaxSweepPoints rows of a few hundred bytes; a larger file is
+/// not one of ours (docs/reliability.md, bounds table).
+constexpr long kMaxJournalBytes = 1L << 30;
 
 std::string headerLine(const std::vector<std::string>& header) {
   std::string s;
@@ -49,12 +55,25 @@ struct ParsedJournal {
   std::uintmax_t valid_bytes = 0;  ///< where the well-formed part ends.
 };
 
+/// A row's cells after the point index hold numbers, words (ok, FAIL) or nothing; a
+/// number that is not finite (nan, inf: a hand edit or another tool) is not one the
+/// sweep writes, and its row is computed again.
+bool cellsWellFormed(const std::string& line) {
+  std::size_t start = line.find(',');
+  while (start != std::string::npos) {
+    const std::size_t end = line.find(',', start + 1);
+    const std::string cell = line.substr(start + 1, end == std::string::npos ? std::string::npos : end - start - 1);
+    char* stop = nullptr;
+    const double v = std::strtod(cell.c_str(), &stop);
+    if (!cell.empty() && stop == cell.c_str() + cell.size() && !std::isfinite(v)) return false;
+    start = end;
+  }
+  return true;
+}
+
 ParsedJournal parseJournal(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw OutputError(path.string() + ": cannot read the sweep journal");
-  std::ostringstream os;
-  os << in.rdbuf();
-  const std::string text = os.str();
+  std::string text, why;
+  if (!readInputFile(path.string(), kMaxJournalBytes, text, why)) throw OutputError(path.string() + ": cannot read the sweep journal: " + why);
   ParsedJournal p;
   std::size_t pos = 0;
   auto nextLine = [&](std::string& line) {
@@ -85,7 +104,8 @@ ParsedJournal parseJournal(const fs::path& path) {
     char* end = nullptr;
     const long point = std::strtol(line.c_str(), &end, 10);
     const bool ok = end != line.c_str() && *end == ',' && point >= 0 && point < p.journal.total_points &&
-                    p.journal.shard.contains(point) && fieldCount(line) == p.journal.header.size() && !p.journal.rows.count(point);
+                    p.journal.shard.contains(point) && fieldCount(line) == p.journal.header.size() && !p.journal.rows.count(point) &&
+                    cellsWellFormed(line);
     if (!ok) break;  // everything from here on is recomputed
     p.journal.rows.emplace(point, line);
     p.valid_bytes = pos;
@@ -156,6 +176,34 @@ SweepJournal openJournal(const SweepRun& run, bool restart) {
   return p.journal;
 }
 
+/// An exclusive lock on `dir` for this process's life in it: a second sweep on the same
+/// --out (which would compute every point twice into one journal) is refused.
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const fs::path& dir) : path_(dir / kLock) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) throw OutputError(path_.string() + ": cannot create the sweep's lock file");
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      char pid[32] = {0};
+      const ssize_t n = ::pread(fd_, pid, sizeof pid - 1, 0);
+      ::close(fd_);
+      throw OutputError(dir.string() + " is in use by another sweep" + (n > 0 ? std::string(" (process ") + pid + ")" : std::string()) +
+                        ": wait for it to finish, or use another --out");
+    }
+    const std::string me = std::to_string(::getpid());
+    if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, me.data(), me.size(), 0) != static_cast<ssize_t>(me.size())) {
+      // The pid is a courtesy for the message above; the lock itself is held.
+    }
+  }
+  ~DirectoryLock() { ::close(fd_); }
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+ private:
+  fs::path path_;
+  int fd_ = -1;
+};
+
 }  // namespace
 
 SweepRunResult runSweep(const SweepRun& run, bool restart) {
@@ -164,6 +212,7 @@ SweepRunResult runSweep(const SweepRun& run, bool restart) {
   std::error_code ec;
   fs::create_directories(run.dir, ec);
   if (!fs::is_directory(run.dir)) throw OutputError(run.dir + ": cannot create the output directory");
+  const DirectoryLock lock(run.dir);
   SweepJournal journal = openJournal(run, restart);
   std::vector<long> todo;
   long in_shard = 0;
@@ -200,7 +249,8 @@ SweepRunResult runSweep(const SweepRun& run, bool restart) {
   }
   result.computed = static_cast<long>(todo.size());
   result.csv = (fs::path(run.dir) / "sweep.csv").string();
-  writeAtomically(result.csv, tableText(run.header, journal.rows));
+  result.table = tableText(run.header, journal.rows);
+  writeAtomically(result.csv, result.table);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
@@ -211,7 +261,7 @@ SweepJournal readSweepJournal(const std::string& dir) {
   return parseJournal(path).journal;
 }
 
-std::string mergeSweepShards(const std::vector<std::string>& dirs, const std::string& out_dir, bool force) {
+std::string mergeSweepTables(const std::vector<std::string>& dirs) {
   if (dirs.empty()) throw UsageError("sweep-merge: name the shard directories");
   std::vector<SweepJournal> parts;
   for (const auto& d : dirs) parts.push_back(readSweepJournal(d));
@@ -236,11 +286,16 @@ std::string mergeSweepShards(const std::vector<std::string>& dirs, const std::st
     throw OutputError(strf("%zu of %ld points are missing (%s%s): run the shards that hold them (or resume them) first", missing.size(),
                            parts[0].total_points, list.c_str(), missing.size() > 10 ? ", ..." : ""));
   }
+  return tableText(parts[0].header, rows);
+}
+
+std::string mergeSweepShards(const std::vector<std::string>& dirs, const std::string& out_dir, bool force) {
+  const std::string table = mergeSweepTables(dirs);
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   const fs::path csv = fs::path(out_dir) / "sweep.csv";
   if (fs::exists(csv) && !force) throw OutputError(csv.string() + " exists: use --force to replace it");
-  writeAtomically(csv, tableText(parts[0].header, rows));
+  writeAtomically(csv, table);
   return csv.string();
 }
 

@@ -43,6 +43,7 @@ struct SweepRunResult {
   long computed = 0, reused = 0;  ///< this run's points and those the journal already had.
   double seconds = 0;
   std::string csv;  ///< the path of sweep.csv.
+  std::string table;  ///< its contents.
 };
 
 /// Runs (or resumes) the sweep. Throws OutputError when DIR holds another sweep's
@@ -65,5 +66,7 @@ SweepJournal readSweepJournal(const std::string& dir);
 /// Throws OutputError (and writes nothing) when the shards belong to different sweeps,
 /// overlap, or leave points missing (named).
 std::string mergeSweepShards(const std::vector<std::string>& dirs, const std::string& out_dir, bool force);
+/// The merged table itself (what mergeSweepShards writes), checked the same way.
+std::string mergeSweepTables(const std::vector<std::string>& dirs);
 
 }  // namespace mmv

@@ -2,7 +2,10 @@
 // the same file; a torn or corrupt journal is cut back and resumed without a duplicate.
 #include "sim/plan/sweep_runner.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -76,6 +79,61 @@ TEST_F(SweepRunner, ATornAndACorruptJournalAreCutBackAndResumed) {
   EXPECT_EQ(runSweep(r, false).computed, 0);
   EXPECT_EQ(evaluated_, 0);
   EXPECT_EQ(slurp(res.csv), whole);
+}
+
+// A row holding nan or inf (never written by a sweep: a hand edit) is computed again,
+// not carried into sweep.csv (where it reached the figures and crashed the heat map).
+TEST_F(SweepRunner, AJournalRowHoldingANonFiniteNumberIsComputedAgain) {
+  const std::string whole = slurp(runSweep(run("whole", 2), false).csv);
+  for (const char* bad : {"nan", "inf", "-Infinity"}) {
+    const SweepRun r = run(std::string("bad_") + (bad[0] == '-' ? "minf" : bad), 2);
+    fs::create_directories(r.dir);
+    std::string journal = slurp(dir_ / "whole" / "journal.csv");
+    const std::size_t at = journal.find("\n3,9,");
+    ASSERT_NE(at, std::string::npos);
+    journal.replace(at + 3, 1, bad);
+    std::ofstream(fs::path(r.dir) / "journal.csv", std::ios::binary) << journal;
+    const SweepRunResult res = runSweep(r, false);
+    EXPECT_EQ(res.reused, 3) << bad;  // rows 0-2 kept, row 3 and those after it again
+    EXPECT_EQ(slurp(res.csv), whole) << bad;
+  }
+}
+
+// The journal is read like any input file: a device or a FIFO in its place is refused
+// (a FIFO blocked the run forever, /dev/zero grew to gigabytes).
+TEST_F(SweepRunner, AJournalThatIsNotARegularFileIsRefused) {
+  const SweepRun r = run("fifo", 2);
+  fs::create_directories(r.dir);
+  ASSERT_EQ(mkfifo((fs::path(r.dir) / "journal.csv").c_str(), 0600), 0);
+  try {
+    runSweep(r, false);
+    FAIL() << "a FIFO journal was accepted";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is not a regular file"), std::string::npos) << e.what();
+  }
+  const SweepRun z = run("zero", 2);
+  fs::create_directories(z.dir);
+  fs::create_symlink("/dev/zero", fs::path(z.dir) / "journal.csv");
+  EXPECT_THROW(runSweep(z, false), OutputError);
+}
+
+// Two sweeps on one --out at once computed every point twice into one journal; the
+// second is now refused while the first holds the directory's lock.
+TEST_F(SweepRunner, ASecondSweepOnTheSameDirectoryIsRefusedWhileTheFirstRuns) {
+  const SweepRun r = run("busy", 2);
+  fs::create_directories(r.dir);
+  const int fd = ::open((fs::path(r.dir) / ".mmvlab-sweep.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as a running sweep holds it
+  try {
+    runSweep(r, false);
+    FAIL() << "ran beside another sweep";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is in use by another sweep"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(evaluated_, 0);
+  ::close(fd);  // the first one ends: the directory is free again
+  EXPECT_EQ(runSweep(r, false).computed, 50);
 }
 
 TEST_F(SweepRunner, AnotherSweepsDirectoryIsRefusedUnlessRestarted) {
