@@ -26,8 +26,16 @@ struct FrameOptions {
   int supersample = 3;             ///< render at this multiple of the size (anti-aliasing).
 };
 
+/// The largest side of the buffer OSMesa draws into (the frame times its supersampling):
+/// a larger frame is supersampled less (8192 x 8192 not at all), so every size up to
+/// the documented 8192 draws into at most 8192 x 8192 samples (docs/reliability.md).
+constexpr int kMaxBufferSide = 8192;
+/// The supersampling a frame gets: `options.supersample`, lowered to fit kMaxBufferSide.
+int effectiveSupersample(const FrameOptions& options);
+
 /// Draws `list` as `camera` sees it; returns a BGR image (CV_8UC3). Throws
-/// std::runtime_error if OSMesa cannot create a context.
+/// std::runtime_error if OSMesa cannot create a context, or before allocating anything
+/// when the machine has less memory available than the frame needs (named).
 cv::Mat renderFrame(const DrawList& list, const Camera& camera, const FrameOptions& options);
 
 /// The pixel (x right, y down, from the top-left corner) where world point `p` lands in

@@ -52,7 +52,7 @@ struct Drawings {
 
 void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings& dr, const std::vector<CameraView>& views) {
   render::FrameOptions frame;
-  parseSize(args.size, frame);
+  parseSize(args.size, frame, ext);
   auto cameraFor = [&](const DrawList& d) { return chooseCamera(args.view, d, views); };
   if (args.mode.empty()) {
     if (ext != ".png") throw UsageError("--out " + args.out + ": a video needs --mode K (the mode's cycle)");
@@ -64,6 +64,7 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
   }
   const std::vector<int> modes = parseModes(args.mode, dr.modes);
   if (ext == ".png") {
+    checkSheetPixels(args.size, args.mode, modes.size(), frame);
     std::vector<cv::Mat> tiles;
     for (int m : modes) {
       const DrawList d = dr.mode(m - 1, 1.0, modes.size() > 1);
@@ -91,7 +92,7 @@ int runRenderCommand(const RenderArgs& given) {
     if (args.out.empty()) throw UsageError("render: --out FILE is required (.png, .mp4 or .avi)");
     const std::string ext = extensionOf(args.out);
     render::FrameOptions check;
-    parseSize(args.size, check);  // a bad size is refused before any work
+    parseSize(args.size, check, ext);  // a bad size is refused before any work
     if (!args.history.empty()) {
       if (!args.mode.empty()) throw UsageError("render: --mode and --history draw different things; give one");
       renderHistory(args, ext);

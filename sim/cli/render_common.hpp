@@ -16,8 +16,15 @@
 
 namespace mmv::cli {
 
-/// "1280x720" -> width, height (16..8192 each); UsageError otherwise.
-void parseSize(const std::string& text, render::FrameOptions& o);
+/// The bounds on what render draws (docs/reliability.md, bounds table).
+constexpr int kMaxFrameSide = 8192;             ///< --size, either side.
+constexpr int kMaxMp4Side = 8191;               ///< MPEG-4 part 2 codes 13-bit dimensions.
+constexpr double kMaxImagePixels = 8192.0 * 8192.0;  ///< one PNG, a contact sheet included.
+
+/// "1280x720" -> width, height (16..8192 each; at most 8191 for an .mp4); UsageError otherwise.
+void parseSize(const std::string& text, render::FrameOptions& o, const std::string& ext);
+/// A contact sheet of `tiles` frames at most kMaxImagePixels; UsageError naming --mode and --size.
+void checkSheetPixels(const std::string& size_text, const std::string& mode_text, std::size_t tiles, const render::FrameOptions& o);
 
 /// The camera for `--view VIEW` on drawing `d`: a preset framing `frame` (the drawing's
 /// own bounds when empty), `lab` (the whole room), `sensor:NAME`, or a scene view.

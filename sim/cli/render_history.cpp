@@ -95,7 +95,7 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
   if (args.segments > 0 || args.no_gravity || !args.sets.empty())
     throw UsageError("render --history: the run's own segments, gravity and overrides are used (run.json); drop --segments, --no-gravity and --set");
   render::FrameOptions size, frame;
-  parseSize(args.size, size);
+  parseSize(args.size, size, ext);
   frame = size;  // with traces, the drawing takes the left 60 % and the traces the rest
   if (!args.traces.empty()) frame.width = std::max(16, size.width * 3 / 5);
   const RunDir run = readRunDir(args.history, args.scene_path);

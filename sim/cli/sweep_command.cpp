@@ -35,7 +35,8 @@ GridAxis parseGrid(const std::string& text, const ArticleScene& scene) {
     if (parts[i + 1].empty() || *end != '\0' || !std::isfinite(*v[i])) throw UsageError(form);
   }
   if (!(ax.step_deg > 0) || ax.to_deg < ax.from_deg) throw UsageError("--grid " + text + ": need FROM <= TO and STEP > 0");
-  if (ax.values().size() > 2000) throw UsageError("--grid " + text + ": more than 2000 values on one axis");
+  if (ax.count() > GridAxis::kMaxValues)
+    throw UsageError(strf("--grid %s: %.4g values on one axis, above the limit of %.0f", text.c_str(), ax.count(), GridAxis::kMaxValues));
   return ax;
 }
 

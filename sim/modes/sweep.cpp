@@ -8,13 +8,16 @@
 
 namespace mmv {
 
+double GridAxis::count() const {
+  if (!(step_deg > 0) || !(to_deg >= from_deg)) return 0;
+  return std::floor((to_deg - from_deg) / step_deg + 1e-9) + 1;
+}
+
 std::vector<double> GridAxis::values() const {
+  const double n = count();
+  MMV_DEMAND(n <= kMaxValues);  // the reader refused more
   std::vector<double> v;
-  for (int i = 0;; ++i) {
-    const double a = from_deg + i * step_deg;
-    if (a > to_deg + 1e-9 * step_deg) break;
-    v.push_back(a);
-  }
+  for (int i = 0; i < static_cast<int>(n); ++i) v.push_back(from_deg + i * step_deg);
   return v;
 }
 

@@ -29,6 +29,10 @@ namespace mmv {
 struct GridAxis {
   std::string joint;
   double from_deg = 0, to_deg = 0, step_deg = 1;
+  static constexpr double kMaxValues = 2000;  ///< per axis (docs/reliability.md, bounds).
+  /// How many values values() holds, computed without making them (a step of 1e-10 deg
+  /// over 20 deg is 2e11 values: refused before anything is allocated).
+  double count() const;
   std::vector<double> values() const;  ///< from, from+step, ..., up to to (inclusive within 1e-9 step).
 };
 
