@@ -19,6 +19,20 @@ SimTK::Transform rotZ(double angle, const SimTK::Vec3& p = SimTK::Vec3(0)) {
   return SimTK::Transform(SimTK::Rotation(angle, SimTK::ZAxis), p);
 }
 
+/// A rigid body of mass m whose mass centre is at `com` in its frame, with inertia
+/// `central` about that centre. Simbody stores the inertia about the frame origin and
+/// subtracts the shift again when it builds the tree, refusing a moment below -1.8e-14:
+/// a lumped mass without rotary inertia (58.94 kg, 2 m off its link) came back as
+/// -2.8e-14 and ended the run (exit 70). Each central moment is at least 1e-12 m |com|^2,
+/// far above that round-off and far below anything the dynamics can see.
+SimTK::Body::Rigid rigidBody(double m, const SimTK::Vec3& com, const SimTK::Inertia& central) {
+  const double floor = 1e-12 * m * com.normSqr();
+  SimTK::Mat33 I = central.toMat33();
+  for (int i = 0; i < 3; ++i) I(i, i) = std::max(I(i, i), floor);
+  const SimTK::Inertia c(SimTK::SymMat33(I(0, 0), I(1, 0), I(1, 1), I(2, 0), I(2, 1), I(2, 2)));
+  return SimTK::Body::Rigid(SimTK::MassProperties(m, com, c.shiftFromMassCenter(-com, m)));
+}
+
 /// A piece of length l and mass m, origin at its inboard end, x along the piece.
 /// In the plane only Izz = m l^2 / 12 about the centre matters (Euler-Bernoulli: no
 /// section rotary inertia). The out-of-plane axes get the section's gyration r^2 = I/A,
@@ -28,7 +42,7 @@ SimTK::Body::Rigid pieceBody(const LinkPiece& p, double gyration_sq) {
   const SimTK::Vec3 com(0.5 * p.length, 0, 0);
   const SimTK::Inertia central(p.mass * gyration_sq, p.inertia_zz_about_com + p.mass * gyration_sq,
                                p.inertia_zz_about_com);
-  return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
+  return rigidBody(p.mass, com, central);
 }
 
 /// The spatial model's piece: the same in-plane inertia (Euler-Bernoulli: m l^2/12 about
@@ -43,7 +57,7 @@ SimTK::Body::Rigid spatialPieceBody(const LinkPiece& p, double polar_gyration_sq
   const double bend = p.inertia_zz_about_com;
   const double c = std::max(0.0, 0.5 * (p.mass * polar_gyration_sq - 2 * bend));
   const SimTK::Inertia central(p.mass * polar_gyration_sq, bend + c, bend + c);
-  return SimTK::Body::Rigid(SimTK::MassProperties(p.mass, com, central.shiftFromMassCenter(-com, p.mass)));
+  return rigidBody(p.mass, com, central);
 }
 
 /// X_BM of a link's root piece on its joint: the link turned by its mount angle about z,
@@ -58,7 +72,7 @@ SimTK::Body::Rigid lumpedBody(const LumpedMass& m) {
   const double j = m.rotary_inertia;
   const SimTK::Vec3 c(0, m.offset[0], m.offset[1]);  // across the section, in the link's tip frame
   const SimTK::Inertia about_c(0.5 * j, 0.5 * j, j);  // a disk about the plane's normal
-  return SimTK::Body::Rigid(SimTK::MassProperties(m.mass, c, about_c.shiftFromMassCenter(c, m.mass)));
+  return rigidBody(m.mass, c, about_c);
 }
 
 struct Frame {  // a place to attach things: a body and a frame on it
