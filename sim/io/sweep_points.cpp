@@ -36,12 +36,19 @@ std::string clean(std::string s) {
   return s;
 }
 
+/// A reader's message about an override ("--set KEY=VALUE: what") without the
+/// command-line wording, for an entry that came from the spec's file.
+std::string withoutSetPrefix(const std::string& message, const std::string& set) {
+  const std::string prefix = "--set " + set + ": ";
+  return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+}
+
 ArticleScene sceneAt(const SweepContext& c, const std::vector<std::string>& extra) {
   std::vector<std::string> sets = c.spec.sets;
   sets.insert(sets.end(), extra.begin(), extra.end());
   Scene s = parseScene(c.scene_text, c.scene_source, sets);
   auto* a = std::get_if<ArticleScene>(&s);
-  if (!a) throw SceneError(c.spec.source + ": scene " + c.scene_source + " is a HAM-SAS isolator; sweeps take article scenes");
+  if (!a) throw SceneError(c.spec.scene_where + ": scene " + c.scene_source + " is a HAM-SAS isolator; sweeps take article scenes");
   if (c.spec.segments > 0) overrideSegments(*a, c.spec.segments);
   return std::move(*a);
 }
@@ -215,13 +222,27 @@ SweepContext prepareSweep(const SweepSpec& spec) {
     c.scene_source = spec.scene_path;
   }
   if (spec.outputs.empty()) throw SceneError(spec.source + ": outputs: name at least one");
-  (void)sceneAt(c, {});
+  // The scene alone (its own errors carry its own positions; a HAM-SAS scene is named
+  // at the spec's scene: key), then each set: entry in turn, then each parameter alone:
+  // an error points at the spec's line that caused it.
+  SweepContext bare = c;
+  bare.spec.sets.clear();
+  (void)sceneAt(bare, {});
+  for (std::size_t i = 0; i < spec.sets.size(); ++i) {
+    try {
+      bare.spec.sets.push_back(spec.sets[i]);
+      (void)sceneAt(bare, {});
+    } catch (const std::exception& e) {
+      throw SceneError(spec.set_where.at(i) + ": set[" + std::to_string(i) + "] '" + spec.sets[i] + "': " + withoutSetPrefix(e.what(), spec.sets[i]));
+    }
+  }
   for (std::size_t k = 0; k < spec.parameters.size(); ++k) {  // each key, alone, as in a file
     const SweepParameter& p = spec.parameters[k];
+    const std::string set = p.key + "=" + shortest(p.gridValues().empty() ? p.at(0) : p.gridValues().front());
     try {
-      (void)sceneAt(c, {p.key + "=" + shortest(p.gridValues().empty() ? p.at(0) : p.gridValues().front())});
+      (void)sceneAt(c, {set});
     } catch (const std::exception& e) {
-      throw SceneError(p.where + ": parameters[" + std::to_string(k) + "] '" + p.key + "': " + e.what());
+      throw SceneError(p.where + ": parameters[" + std::to_string(k) + "] '" + p.key + "': " + withoutSetPrefix(e.what(), set));
     }
   }
   const PointResult nominal = analyse(c, sceneAt(c, {}));

@@ -112,18 +112,27 @@ SweepSpec parseSweepSpec(const std::string& text, const std::string& source, con
   } catch (const YAML::Exception& e) {
     throw SceneError(source + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
   }
-  if (!root.IsMap()) throw SceneError(source + ": a sweep spec is a mapping (scene, parameters, design, outputs)");
+  if (!root.IsDefined() || root.IsNull())
+    throw SceneError(source + ":1:1: the sweep spec is empty: it is a mapping (scene, parameters, design, outputs; docs/planning.md)");
+  if (!root.IsMap())
+    r.fail(root.Mark(), std::string("a sweep spec is a mapping (scene, parameters, design, outputs), not a ") +
+                            (root.IsSequence() ? "list" : "scalar"));
   auto m = r.mapping(root, "", {"scene", "set", "segments", "parameters", "design", "outputs", "modes"});
   SweepSpec s;
   s.source = source;
   s.text = text;
+  s.scene_where = source;
   if (m.count("scene")) {
+    s.scene_where = r.position(m.at("scene").Mark());
     const std::filesystem::path p = r.text(m.at("scene"), "scene");
     s.scene_path = (p.is_absolute() ? p : std::filesystem::path(folder) / p).lexically_normal().string();
   }
   if (m.count("set")) {
     r.sequence(m.at("set"), "set");
-    for (std::size_t i = 0; i < m.at("set").size(); ++i) s.sets.push_back(r.text(m.at("set")[i], strf("set[%zu]", i)));
+    for (std::size_t i = 0; i < m.at("set").size(); ++i) {
+      s.sets.push_back(r.text(m.at("set")[i], strf("set[%zu]", i)));
+      s.set_where.push_back(r.position(m.at("set")[i].Mark()));
+    }
   }
   if (m.count("segments")) {
     s.segments = r.integer(m.at("segments"), "segments");

@@ -41,7 +41,9 @@ struct SweepSpec {
   std::string source;      ///< the spec file.
   std::string text;        ///< the spec as read (identifies the sweep: resumes and shards must match it).
   std::string scene_path;  ///< resolved against the spec's folder; empty: the embedded default scene.
+  std::string scene_where;  ///< file:line:col of `scene:` (the spec's file when it has none).
   std::vector<std::string> sets;
+  std::vector<std::string> set_where;  ///< file:line:col of each set entry.
   int segments = 0;
   std::vector<SweepParameter> parameters;
   enum class Design { Grid, LatinHypercube } design = Design::Grid;

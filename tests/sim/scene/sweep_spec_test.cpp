@@ -87,6 +87,32 @@ TEST(SweepSpec, BadSpecsNameTheirPosition) {
       << errorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n");
 }
 
+// Each of these exited 65 with no file:line:col (issue 38): the spec's position now
+// leads every message, a set: entry named as itself (not as a command-line --set).
+TEST(SweepSpec, EmptyScalarHamsasAndBadSetSpecsNameTheirPosition) {
+  auto message = [](const std::string& text) {
+    try {
+      (void)prepareSweep(parseSweepSpec(text, "spec.yaml", "."));
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message("").rfind("spec.yaml:1:1: the sweep spec is empty", 0), 0u) << message("");
+  EXPECT_EQ(message("# only a comment\n").rfind("spec.yaml:1:1: the sweep spec is empty", 0), 0u);
+  EXPECT_EQ(message("42\n"), "spec.yaml:1:1: a sweep spec is a mapping (scene, parameters, design, outputs), not a scalar");
+  EXPECT_EQ(message("- a\n- b\n"), "spec.yaml:1:1: a sweep spec is a mapping (scene, parameters, design, outputs), not a list");
+  const std::string body = "parameters:\n  - {key: links.link1.length, values: [2]}\noutputs: [mass]\n";
+  EXPECT_EQ(message(kScene + "set: [links.link1.length=3, joints.jointX.angle_deg=5]\n" + body),
+            "spec.yaml:3:29: set[1] 'joints.jointX.angle_deg=5': no item 'jointX' (known: joint1, joint2, joint3)");
+  const std::string hamsas = std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/hamsas.yaml\nset: [joints.joint1.angle_deg=5]\n";
+  const std::string m = message(hamsas + body);
+  EXPECT_EQ(m.rfind("spec.yaml:1:8: scene ", 0), 0u) << m;
+  EXPECT_NE(m.find("is a HAM-SAS isolator; sweeps take article scenes"), std::string::npos) << m;
+  EXPECT_EQ(message(kScene + "parameters:\n  - {key: links.link9.length, values: [1]}\noutputs: [mass]\n"),
+            "spec.yaml:4:5: parameters[0] 'links.link9.length': no item 'link9' (known: link1, link2, link3)");
+}
+
 TEST(SweepSpec, PointsAreRowsOfTheirOwn) {
   // The same point evaluated twice (and out of order) gives the same cells.
   const SweepContext c = prepareSweep(parse(
