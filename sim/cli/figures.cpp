@@ -39,6 +39,7 @@ const Api& api() {
         continue;
       }
       table = t;
+      table->adopt_progress(progressState());
       return;
     }
   });

@@ -13,6 +13,7 @@
 
 #include "renders/plot.hpp"  // plain data: Series, BodeTrace
 #include "sim/core/drawing.hpp"
+#include "sim/core/progress.hpp"
 
 namespace mmv::cli {
 struct RenderArgs;
@@ -53,7 +54,10 @@ struct Api {
   void (*frame_png)(const std::string&, const DrawList&, const Camera&, const FrameSize&);
   void (*contact_sheet_png)(const std::string&, const std::vector<DrawList>&, const std::vector<Camera>&, const FrameSize&, int);
   int (*render_command)(const cli::RenderArgs&);
+  /// The plugin's stages (a history's frames) recorded in the host's progress state,
+  /// which the host's watchdog prints (sim/core/progress.hpp).
+  void (*adopt_progress)(ProgressState*);
 };
-constexpr int kApiVersion = 2;
+constexpr int kApiVersion = 3;
 
 }  // namespace mmv::figures

@@ -20,8 +20,8 @@ void contactSheetImpl(const std::string& path, const std::vector<DrawList>& list
   render::writePng(path, render::contactSheet(tiles, columns));
 }
 
-const Api kApi{kApiVersion,      render::writeLinePlotPng, render::writeHeatmapPng, render::writeBodePng,
-               framePngImpl,     contactSheetImpl,         cli::runRenderCommand};
+const Api kApi{kApiVersion,  render::writeLinePlotPng, render::writeHeatmapPng, render::writeBodePng, framePngImpl,
+               contactSheetImpl, cli::runRenderCommand, adoptProgressState};
 
 }  // namespace
 }  // namespace mmv::figures

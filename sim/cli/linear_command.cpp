@@ -14,6 +14,7 @@
 
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/core/progress.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/mat_file.hpp"
 #include "sim/io/linear_report.hpp"
@@ -136,6 +137,8 @@ struct Linear {
 /// Hessenberg reduction of the first-order matrix) on another core meanwhile.
 Linear buildAndReduce(const LinearArgs& args, const ArticleScene& scene) {
   Linear r{build(args, scene, false), {}};
+  const ProgressStage stage(strf("reducing: the state-space model's modes (%d states), the full model factorized beside it",
+                                 r.lm.full.numStates()));
   tbb::parallel_invoke([&] { r.lm.second_order.prepare(); }, [&] { r.red = reduce(args, r.lm.full); });
   return r;
 }
@@ -176,6 +179,7 @@ struct Analysis {
 /// Fills a.mesh_*: each vibration mode up to --to, its estimated frequency error
 /// (estimateDiscretization: the scene at segments / 2 and / 4) over its damping ratio.
 void estimateMeshError(const LinearArgs& args, Analysis& a) {
+  const ProgressStage stage("the mesh's share of the FRF error (the modes again, and on a coarser mesh)");
   ModesOptions mo;
   mo.max_modes = 60;
   mo.with_shapes = false;
@@ -222,6 +226,7 @@ void respond(const LinearArgs& args, const std::vector<double>& grid, Analysis& 
   for (double& x : a.w) x *= 2 * M_PI;
   a.hf = fullResponses(a.lm.second_order, a.w);
   a.err = compareResponses(a.hf, a.red.model, a.w);
+  const ProgressStage stage("the reduced model's error: fewest modes within the target");
   if (args.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
     modesForTarget(a.lm.full, reductionOptions(args), a.hf, a.w, args.rom_target,
                    std::max(1, std::min(60, a.lm.full.numStates() / 2)), a.err);

@@ -7,6 +7,8 @@
 #include <iostream>
 
 #include "sim/cli/commands.hpp"
+#include "sim/cli/progress.hpp"
+#include "sim/core/progress.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
@@ -439,6 +441,8 @@ int main(int argc, char** argv) {
     if (ro->parsed()) return runRomCommand(lin);
     return runSceneCommand();
   };
+  const Watchdog watchdog;
+  const mmv::ProgressStage stage(app.get_subcommands().empty() ? std::string("mmvlab") : app.get_subcommands().front()->get_name());
   const int code = run();
   // A full disk or a closed pipe behind stdout is a failure, not a success.
   std::cout.flush();

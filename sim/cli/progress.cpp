@@ -3,17 +3,67 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <cstdlib>
 
+#include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
 
 namespace mmv::cli {
 
+namespace {
+
+std::atomic<int> bars{0};  ///< Progress objects alive: they report, the watchdog keeps quiet.
+
+double watchdogInterval() {
+  const char* v = std::getenv("MMVLAB_PROGRESS_INTERVAL");
+  if (!v) return 15.0;
+  char* end = nullptr;
+  const double s = std::strtod(v, &end);
+  return end != v && *end == '\0' && s > 0 && s < 1e6 ? s : 15.0;
+}
+
+}  // namespace
+
+Watchdog::Watchdog() : interval_(watchdogInterval()), start_(std::chrono::steady_clock::now()), thread_([this] { watch(); }) {}
+
+Watchdog::~Watchdog() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void Watchdog::watch() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  double next = interval_;
+  const auto tick = std::chrono::duration<double>(std::min(1.0, interval_ / 4));
+  while (!wake_.wait_for(lock, tick, [this] { return stop_; })) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (elapsed < next) continue;
+    next = elapsed + interval_;
+    if (bars.load() > 0) continue;
+    std::string where;
+    for (const ProgressLevel& l : progressSnapshot()) {
+      where += (where.empty() ? "" : " > ") + printable(l.what);
+      if (l.total > 0) where += strf(" (%s%s%ld of %ld)", l.unit.c_str(), l.unit.empty() ? "" : " ", l.done, l.total);
+    }
+    std::fprintf(stderr, elapsed < 10 ? "mmvlab: still working (%.1f s)%s%s\n" : "mmvlab: still working (%.0f s)%s%s\n", elapsed, where.empty() ? "" : ": ", where.c_str());
+    std::fflush(stderr);
+  }
+}
+
 Progress::Progress(std::string what)
     : what_(std::move(what)), tty_(::isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()),
-      thread_([this] { watch(); }) {}
+      thread_([this] { watch(); }) {
+  ++bars;
+}
 
 Progress::~Progress() {
+  --bars;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
@@ -32,7 +82,8 @@ void Progress::report(double done, double total, const std::string& detail) {
 }
 
 void Progress::watch() {
-  const auto tick = tty_ ? std::chrono::milliseconds(250) : std::chrono::milliseconds(1000);
+  const double interval = watchdogInterval();
+  const auto tick = std::chrono::duration<double>(tty_ ? 0.25 : std::min(1.0, interval / 4));
   std::unique_lock<std::mutex> lock(mutex_);
   while (!wake_.wait_for(lock, tick, [this] { return stop_; })) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -40,7 +91,7 @@ void Progress::watch() {
     if (tty_ && elapsed >= 1.0) {
       bar_shown_ = true;
       print(elapsed);
-    } else if (!tty_ && elapsed >= 15.0 && elapsed - last_line_ >= 15.0) {
+    } else if (!tty_ && elapsed >= interval && elapsed - last_line_ >= interval) {
       last_line_ = elapsed;
       print(elapsed);
     }

@@ -40,4 +40,26 @@ class Progress {
   std::thread thread_;
 };
 
+/// The command's watchdog (one, made by main): every 15 s of a run (the first line at
+/// 15 s; MMVLAB_PROGRESS_INTERVAL=SECONDS changes it, for the tests) it prints the
+/// stages the work has named (sim/core/progress.hpp), for example
+///   mmvlab: still working (30 s): sweep-config > configurations of the grid (configuration 3 of 40) > eigen-solution: 12 modes of 64 DOF
+/// unless a Progress bar of its own is reporting. Short runs print nothing.
+class Watchdog {
+ public:
+  Watchdog();
+  ~Watchdog();
+  Watchdog(const Watchdog&) = delete;
+  Watchdog& operator=(const Watchdog&) = delete;
+
+ private:
+  void watch();
+  const double interval_;
+  const std::chrono::steady_clock::time_point start_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
 }  // namespace mmv::cli

@@ -12,6 +12,7 @@
 
 #include "renders/frame.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/core/progress.hpp"
 #include "sim/cli/render_common.hpp"
 #include "sim/io/article_drawing.hpp"
 #include "sim/io/hamsas_drawing.hpp"
@@ -66,7 +67,9 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
   if (ext == ".png") {
     checkSheetPixels(args.size, args.mode, modes.size(), frame);
     std::vector<cv::Mat> tiles;
+    const ProgressStage stage("drawing the modes");
     for (int m : modes) {
+      progressCount(static_cast<long>(tiles.size()) + 1, static_cast<long>(modes.size()), "mode");
       const DrawList d = dr.mode(m - 1, 1.0, modes.size() > 1);
       tiles.push_back(render::renderFrame(d, cameraFor(d), frame));
     }
@@ -78,8 +81,11 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
   const Camera cam = cameraFor(dr.mode(modes[0] - 1, 1.0, false));  // one camera for every frame
   writeAtomically(args.out, args.force, [&](const std::string& p) {
     render::VideoSink video(p, 24.0, cv::Size(frame.width, frame.height));
-    for (int i = 0; i < 48; ++i)
+    const ProgressStage stage("drawing the mode's cycle");
+    for (int i = 0; i < 48; ++i) {
+      progressCount(i + 1, 48, "frame");
       video.write(render::renderFrame(dr.mode(modes[0] - 1, std::sin(2 * M_PI * i / 48), false), cam, frame));
+    }
     video.close();
   });
 }

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "sim/cli/commands.hpp"
+#include "sim/core/progress.hpp"
 #include "sim/cli/render_common.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/article_drawing.hpp"
@@ -132,7 +133,11 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
                           frames, args.fps, args.speed, kMaxFrames));
   writeAtomically(args.out, args.force, [&](const std::string& p) {
     render::VideoSink video(p, args.fps, cv::Size(size.width, size.height));
-    for (int k = 0; k < static_cast<int>(frames); ++k) video.write(image(t0 + k * args.speed / args.fps));
+    const ProgressStage stage("drawing the run's frames");
+    for (int k = 0; k < static_cast<int>(frames); ++k) {
+      progressCount(k + 1, static_cast<long>(frames), "frame");
+      video.write(image(t0 + k * args.speed / args.fps));
+    }
     video.close();
   });
 }

@@ -1,5 +1,6 @@
 // The rows of `mmvlab sweep` (sim/io/sweep_points.hpp).
 #include "sim/io/sweep_points.hpp"
+#include "sim/core/progress.hpp"
 
 #include "sim/core/files.hpp"
 #include "sim/core/integrators.hpp"
@@ -245,7 +246,10 @@ SweepContext prepareSweep(const SweepSpec& spec) {
       throw SceneError(p.where + ": parameters[" + std::to_string(k) + "] '" + p.key + "': " + withoutSetPrefix(e.what(), set));
     }
   }
-  const PointResult nominal = analyse(c, sceneAt(c, {}));
+  const PointResult nominal = [&] {
+    const ProgressStage stage("the nominal scene (before the points)");
+    return analyse(c, sceneAt(c, {}));
+  }();
   layOut(c, nominal);
   c.points = sweepPoints(spec);
   std::string id = std::string(mmvlabVersion()) + "\n" + spec.text + "\n" + c.scene_text + "\n" + std::to_string(spec.segments) + "\n";

@@ -5,6 +5,8 @@
 
 #include "sim/core/linalg.hpp"
 #include "sim/core/errors.hpp"
+#include "sim/core/progress.hpp"
+#include "sim/core/text.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/model/stations.hpp"
 #include "sim/modes/damping.hpp"
@@ -151,6 +153,7 @@ std::vector<OutputSpec> defaultOutputs(const ArticleScene& scene) {
 LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputSpec>& inputs,
                              const std::vector<OutputSpec>& outputs, const DampingSpec& damping,
                              bool prepare_responses) {
+  const ProgressStage stage("building the linear model");
   LinearModel lm;
   // The undamped modes serve only the UFF file's first 12 shapes (linear_report.cpp):
   // on large models only those are solved for (shift-invert Lanczos).
@@ -167,6 +170,7 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
                      ": the article has no degrees of freedom (every link rigid, every joint held or closed), so it has "
                      "no response to compute: give a link segments or a joint `hold: free` or `servo`");
   const Eigen::MatrixXd& Z = lm.Z;
+  std::optional<ProgressStage> step(std::in_place, strf("projecting M and K (%ld DOF)", static_cast<long>(Z.cols())));
   lm.Mz = Z.transpose() * lin.M * Z;
   lm.Kz = Z.transpose() * lin.K * Z;
   symmetrize(lm.Mz);
@@ -174,8 +178,10 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   // Symmetric by construction, to round-off that grows with the model (M Phi c Phi^T M
   // at 32 segments per link is 1e-12 off): made exact, as M and K are, so the symmetric
   // paths (modal responses, the partial reduction) apply at every size.
+  step.emplace("damping matrix");
   lm.Cz = dampingMatrix(lm, model, dofs, damping);
   symmetrize(lm.Cz);
+  step.emplace("inputs and outputs");
   SimTK::State st = lm.solved.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
   for (const auto& in : inputs)
@@ -196,7 +202,9 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   so.C = lm.Cz;
   so.K = lm.Kz;
   so.Bq = lm.Bq;
+  step.reset();
   if (prepare_responses) so.prepare();
+  const ProgressStage ss("state-space model");
   lm.full = secondOrderModel(lm.Mz, lm.Cz, lm.Kz, lm.Bq, so.Cd, so.Cv, so.Ca, so.D);
   nameSignals(model, lin, inputs, outputs, lm.full);
   return lm;

@@ -1,5 +1,6 @@
 #include "sim/linear/state_space.hpp"
 
+#include <atomic>
 #include <Eigen/Eigenvalues>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -8,6 +9,8 @@
 #include <cmath>
 
 #include "sim/core/errors.hpp"
+#include "sim/core/progress.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv {
 
@@ -264,6 +267,7 @@ void SecondOrderResponse::prepare() {
   modal_ = hessenberg_ = false;
   const Eigen::Index n = K.rows();
   if (n == 0) return;
+  const ProgressStage stage(strf("factorizing the second-order model (%ld DOF)", static_cast<long>(n)));
   const double scale = K.cwiseAbs().maxCoeff();
   const bool symmetric = (K - K.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale &&
                          (C - C.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * std::max(C.cwiseAbs().maxCoeff(), 1e-300);
@@ -312,7 +316,9 @@ ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vecto
   const Eigen::Index no = b.C.rows(), ni = b.B.cols();
   Eigen::MatrixXd diff = Eigen::MatrixXd::Zero(no, ni), peak = Eigen::MatrixXd::Zero(no, ni);
   std::vector<Eigen::MatrixXd> gap(omegas.size()), size(omegas.size());  // |a - b|, |a| per frequency
+  const ProgressStage stage("comparing the reduced model with the full one");
   for (std::size_t k = 0; k < omegas.size(); ++k) {
+    progressCount(static_cast<long>(k + 1), static_cast<long>(omegas.size()), "frequency");
     const Eigen::MatrixXcd ha = full(k, omegas[k]), hb = b.response(omegas[k]);
     gap[k] = (ha - hb).cwiseAbs();
     size[k] = ha.cwiseAbs();
@@ -369,8 +375,13 @@ std::vector<Eigen::MatrixXcd> fullResponses(const SecondOrderResponse& h, const 
   // Frequencies are independent: spread over the cores (each response is computed the
   // same way on any thread, so the result does not depend on how many there are).
   std::vector<Eigen::MatrixXcd> out(omegas.size());
+  const ProgressStage stage("frequency response of the full model");
+  std::atomic<long> done{0};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, omegas.size(), 8), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t k = r.begin(); k != r.end(); ++k) out[k] = h.response(omegas[k]);
+    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+      out[k] = h.response(omegas[k]);
+      progressCount(++done, static_cast<long>(omegas.size()), "frequency");
+    }
   });
   return out;
 }
@@ -441,6 +452,7 @@ std::pair<double, double> brentMaximum(const F& f, double a, double b) {
 PeakTable refinedPeaks(const SecondOrderResponse& h, const std::vector<double>& f,
                        const std::vector<Eigen::MatrixXcd>& responses) {
   MMV_DEMAND(!f.empty() && (responses.empty() || responses.size() == f.size()));
+  const ProgressStage stage("refining the response peaks");
   std::vector<Eigen::MatrixXd> grid;
   grid.reserve(f.size());
   for (std::size_t k = 0; k < f.size(); ++k)

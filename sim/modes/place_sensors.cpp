@@ -1,4 +1,5 @@
 #include "sim/modes/place_sensors.hpp"
+#include "sim/core/progress.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -83,6 +84,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   // The spatial model adds each station's normal axis (out of the plane).
   const int directions = model.isSpatial() ? 3 : 2;
   const char* axis_names[] = {"axial", "transverse", "normal"};
+  const ProgressStage stage("candidate stations: their mode shapes");
   for (const auto& link : scene.article.links) {
     const Material& mat = *scene.article.findMaterial(link.material);
     const double rho_a = mat.density * sectionArea(*scene.article.findSection(link.section));

@@ -1,4 +1,5 @@
 #include "sim/modes/sensor_placement.hpp"
+#include "sim/core/progress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -75,7 +76,10 @@ std::vector<int> effectiveIndependence(const PlacementProblem& p, int count, Pla
   };
   Eigen::MatrixXd Qinv;
   projector(kept, Qinv);
+  const ProgressStage stage("effective independence: deleting candidates");
+  const long to_delete = static_cast<long>(kept.size()) - count;
   while (static_cast<int>(kept.size()) > count) {
+    progressCount(to_delete - (static_cast<long>(kept.size()) - count) + 1, to_delete, "deletion");
     double best = -1;
     std::size_t best_i = 0;
     for (std::size_t i = 0; i < kept.size(); ++i) {

@@ -1,4 +1,5 @@
 #include "sim/modes/sweep.hpp"
+#include "sim/core/progress.hpp"
 
 #include <cmath>
 
@@ -151,8 +152,10 @@ SweepResult runSweep(const ArticleScene& scene, const SweepOptions& o) {
   const std::vector<double> a0 = o.axes[0].values();
   const std::vector<double> a1 = o.axes.size() > 1 ? o.axes[1].values() : std::vector<double>{0.0};
   Walker walk(scene, o, r);
+  const ProgressStage stage("configurations of the grid");
   for (std::size_t j = 0; j < a1.size(); ++j)
     for (std::size_t ii = 0; ii < a0.size(); ++ii) {
+      progressCount(static_cast<long>(j * a0.size() + ii + 1), static_cast<long>(a0.size() * a1.size()), "configuration");
       const std::size_t i = (j % 2 == 0) ? ii : a0.size() - 1 - ii;  // back and forth
       std::vector<double> angles{a0[i]};
       if (o.axes.size() > 1) angles.push_back(a1[j]);

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
 #include "sim/model/article_builder.hpp"
 #include "sim/model/stations.hpp"
@@ -57,16 +58,26 @@ std::map<std::string, double> byCarrier(const std::map<std::string, double>& ene
 SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_opts, int num_modes) {
   SolvedScene s;
   auto t0 = Clock::now();
-  s.model = buildArticleModel(scene);
+  {
+    const ProgressStage stage("assembling the model");
+    s.model = buildArticleModel(scene);
+  }
   s.seconds_build = secondsSince(t0);
   t0 = Clock::now();
-  s.equilibrium = solveEquilibrium(*s.model, eq_opts);
+  {
+    const ProgressStage stage(strf("static equilibrium (%zu DOF)", s.model->getDofs().size()));
+    s.equilibrium = solveEquilibrium(*s.model, eq_opts);
+  }
   s.seconds_equilibrium = secondsSince(t0);
   if (!s.equilibrium.converged) throw NumericalError("static equilibrium failed: " + s.equilibrium.failure);
   t0 = Clock::now();
-  s.linearized = linearize(*s.model, s.equilibrium.state, s.equilibrium.closure_multipliers);
+  {
+    const ProgressStage stage(strf("linearizing: mass and stiffness matrices (%zu DOF)", s.model->getDofs().size()));
+    s.linearized = linearize(*s.model, s.equilibrium.state, s.equilibrium.closure_multipliers);
+  }
   s.seconds_linearize = secondsSince(t0);
   t0 = Clock::now();
+  const ProgressStage stage(strf("eigen-solution: %d modes of %zu DOF", num_modes, s.linearized.dofs.size()));
   s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z, num_modes);
   markRigidBodyModes(s.modes, s.linearized, scene);
   s.seconds_eigen = secondsSince(t0);

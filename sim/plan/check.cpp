@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "facility/table_programs.hpp"
+#include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
 #include "sim/plan/check_parts.hpp"
 
@@ -98,7 +100,10 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, con
     mo.with_shapes = false;
     in.modes = runModes(scene, mo);
   }
-  plan::runRigid(in);
+  {
+    const ProgressStage stage("the rigid article's slews and table programs");
+    plan::runRigid(in);
+  }
 
   CheckReport rep;
   rep.scene_name = scene.name;
@@ -106,10 +111,15 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, con
   rep.overrides = scene.overrides;
   for (const auto& l : scene.article.links)
     if (!l.rigid) rep.segments = std::max(rep.segments, l.segments);
+  std::optional<ProgressStage> stage(std::in_place, "torquer lines");
   plan::addTorqueLines(in, rep.lines);
+  stage.emplace("table and mode lines");
   plan::addTableAndModeLines(in, rep.lines);
+  stage.emplace("planarity lines");
   plan::addPlanarityLines(in, rep.lines);
+  stage.emplace("sensor lines: the linear time responses");
   plan::addSensorLines(in, rep.lines);
+  stage.reset();
   plan::addLabLines(in, rep.lines);
   plan::addPlausibilityLines(in, rep.lines);
   const std::vector<std::string> order{"torquers", "gimbal", "table", "modes", "planarity", "sensors", "lab",

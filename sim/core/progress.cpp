@@ -1,0 +1,56 @@
+#include "sim/core/progress.hpp"
+
+#include <mutex>
+#include <thread>
+
+namespace mmv {
+
+struct ProgressState {
+  std::mutex mutex;
+  std::thread::id owner;
+  std::vector<ProgressLevel> stages;
+};
+
+namespace {
+
+ProgressState own;
+ProgressState* state = &own;
+
+}  // namespace
+
+ProgressState* progressState() { return state; }
+void adoptProgressState(ProgressState* host) { state = host ? host : &own; }
+
+ProgressStage::ProgressStage(std::string what) {
+  ProgressState& s = *state;
+  std::lock_guard<std::mutex> lock(s.mutex);
+  if (s.stages.empty()) s.owner = std::this_thread::get_id();
+  else if (s.owner != std::this_thread::get_id()) return;
+  s.stages.push_back({std::move(what), 0, 0, ""});
+  recorded_ = true;
+}
+
+ProgressStage::~ProgressStage() {
+  if (!recorded_) return;
+  ProgressState& s = *state;
+  std::lock_guard<std::mutex> lock(s.mutex);
+  if (!s.stages.empty()) s.stages.pop_back();
+}
+
+void progressCount(long done, long total, const char* unit) {
+  ProgressState& s = *state;
+  std::lock_guard<std::mutex> lock(s.mutex);
+  if (s.stages.empty()) return;
+  ProgressLevel& l = s.stages.back();
+  l.done = done;
+  l.total = total;
+  l.unit = unit ? unit : "";
+}
+
+std::vector<ProgressLevel> progressSnapshot() {
+  ProgressState& s = *state;
+  std::lock_guard<std::mutex> lock(s.mutex);
+  return s.stages;
+}
+
+}  // namespace mmv

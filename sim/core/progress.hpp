@@ -1,0 +1,45 @@
+#pragma once
+// What a long computation is doing now, for whoever watches it: the CLI's watchdog
+// prints it on stderr every 15 s (sim/cli/progress.hpp), so a run of minutes is never
+// taken for a hang. The work names its stages (RAII, nested: "modes" > "eigen-solution
+// (4096 DOF)") and counts inside the innermost one ("mode 3 of 12"); recording is cheap
+// (a mutex, no I/O) and nothing is printed here.
+//
+// Stages are recorded from one thread: the one that opened the outermost stage (the
+// command's); stages opened on worker threads (a sweep's points) are ignored, the sweep
+// counts its points itself. Counts come from any thread (a parallel loop's workers).
+#include <string>
+#include <vector>
+
+namespace mmv {
+
+struct ProgressState;
+
+/// This module's state; a plugin (the figures) reports into its host's by adopting it.
+ProgressState* progressState();
+void adoptProgressState(ProgressState* host);
+
+class ProgressStage {
+ public:
+  explicit ProgressStage(std::string what);
+  ~ProgressStage();
+  ProgressStage(const ProgressStage&) = delete;
+  ProgressStage& operator=(const ProgressStage&) = delete;
+
+ private:
+  bool recorded_ = false;
+};
+
+/// `done` of `total` within the innermost stage ("point 3 of 200"); each stage keeps
+/// its own count while stages inside it come and go.
+void progressCount(long done, long total, const char* unit = "");
+
+struct ProgressLevel {
+  std::string what;
+  long done = 0, total = 0;
+  std::string unit;
+};
+/// The open stages, outermost first.
+std::vector<ProgressLevel> progressSnapshot();
+
+}  // namespace mmv
