@@ -1,0 +1,175 @@
+// The file-system fault harness (issue 38; docs/reliability.md, "Faults"): every verb
+// with --out runs under a shim (tests/faults/write_fault.cpp, LD_PRELOAD) that fails
+// its n-th write to a regular file with ENOSPC or EIO, or makes it short, for n over
+// the run's writes (stdout to a file counts as one). The transaction rule:
+//   - a failure exits 73 (cannot create the output) or 74 (stdout), never 0, never 70,
+//     never a signal, with a message;
+//   - --out holds exactly what it held before (a user's own file, and the outputs of an
+//     earlier run that --force would have replaced), and no staging or temporary is
+//     left beside it or in it;
+//   - a short write is finished (the writers loop) and the run succeeds whole.
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+using Tree = std::map<std::string, std::string>;  ///< relative path -> contents ("<dir>" for a directory)
+
+Tree snapshot(const fs::path& root) {
+  Tree t;
+  if (!fs::exists(root)) return t;
+  for (const auto& e : fs::recursive_directory_iterator(root)) {
+    const std::string rel = fs::relative(e.path(), root).string();
+    if (rel.rfind(".mmvlab-sweep.lock", 0) == 0) continue;  // the sweep's lock file: not an output
+    t[rel] = e.is_directory() ? "<dir>" : slurp(e.path());
+  }
+  return t;
+}
+
+std::vector<std::string> leftovers(const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const fs::path& where : {dir.parent_path(), dir})
+    if (fs::is_directory(where))
+      for (const auto& e : fs::directory_iterator(where)) {
+        const std::string n = e.path().filename().string();
+        if (n.rfind(".mmvlab", 0) == 0 && n != ".mmvlab-sweep.lock") out.push_back(e.path().string());
+      }
+  return out;
+}
+
+class Faults : public Cli {
+ protected:
+  struct Verb {
+    std::string name;
+    std::string args;  ///< with {out} for the output directory (or file)
+    std::string file;  ///< --out is one file of this name (render), not a directory
+  };
+
+  Result runWith(const std::string& args, const std::string& fault) {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr", report = dir_ / "count";
+    const std::string env = "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0\" LD_PRELOAD=" +
+                            std::string(MMVLAB_WRITE_FAULT) + " MMVLAB_FAULT=" + fault + " MMVLAB_FAULT_REPORT=" + report.string() + " ";
+    const int status = std::system((env + MMVLAB_BINARY + " " + args + " >" + out.string() + " 2>" + err.string()).c_str());
+    Result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  static std::string with(std::string args, const fs::path& out) {
+    const auto at = args.find("{out}");
+    return args.replace(at, 5, out.string());
+  }
+
+  /// The verb's writes counted on a clean run into a fresh directory; then the
+  /// directory prepared as a user has it (a file of theirs and a finished earlier run);
+  /// then each chosen write failed in turn, the rule checked after each.
+  void exercise(const Verb& v, int samples) {
+    const fs::path home = dir_ / v.name;
+    fs::create_directories(home);
+    const fs::path out = !v.file.empty() ? home / v.file : home / "out";
+    const std::string args = with(v.args, out) + " --force";
+    // A clean run: the count, and the earlier outputs that --force replaces.
+    const Result counted = runWith(args, "count");
+    ASSERT_EQ(counted.code, 0) << v.name << ": " << counted.err;
+    const long writes = std::atol(slurp(dir_ / "count").c_str());
+    ASSERT_GT(writes, 0) << v.name << ": no write to a regular file was seen";
+    if (v.file.empty()) {
+      std::ofstream(out / "notes-of-mine.txt") << "the user's own file\n";
+    }
+    Tree before = snapshot(!v.file.empty() ? home : out);
+    std::set<long> points{1, writes};
+    for (int i = 1; i < samples; ++i) points.insert(1 + (writes - 1) * i / samples);
+    int failures = 0;
+    for (long n : points)
+      for (const char* kind : {"enospc", "eio", "short"}) {
+        if (std::string(kind) != "enospc" && n != 1 && n != writes && n != *std::next(points.begin(), static_cast<long>(points.size()) / 2))
+          continue;  // EIO and short writes at the first, middle and last write
+        const std::string fault = std::string(kind) + ":" + std::to_string(n);
+        const Result r = runWith(args, fault);
+        const std::string where = v.name + " with " + fault + " of " + std::to_string(writes) + " writes";
+        EXPECT_EQ(leftovers(out), std::vector<std::string>{}) << where;
+        if (std::string(kind) == "short") {
+          EXPECT_EQ(r.code, 0) << where << ": a short write must be finished\n" << r.err;
+          before = snapshot(!v.file.empty() ? home : out);  // a new, whole run: what the next fault must leave
+          continue;
+        }
+        EXPECT_TRUE(r.code == 73 || r.code == 74) << where << ": exit " << r.code << "\n" << r.err;
+        EXPECT_EQ(r.err.find("internal error"), std::string::npos) << where << "\n" << r.err;
+        EXPECT_NE(r.err.find("mmvlab: "), std::string::npos) << where << ": no message";
+        const Tree after = snapshot(!v.file.empty() ? home : out);
+        EXPECT_TRUE(after == before) << where << ": --out changed (" << before.size() << " entries before, " << after.size()
+                                     << " after)\n" << r.err;
+        if (after != before) {
+          for (const auto& [k, c] : before)
+            if (!after.count(k) || after.at(k) != c) ADD_FAILURE() << where << ": " << k << (after.count(k) ? " changed" : " gone");
+          for (const auto& [k, c] : after)
+            if (!before.count(k)) ADD_FAILURE() << where << ": " << k << " appeared";
+        }
+        ++failures;
+      }
+    EXPECT_GT(failures, 0);
+  }
+
+  std::string scene(const char* name) const { return (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / name).string(); }
+};
+
+// The harness can see a failure: the shim counts writes to regular files only, fails
+// the one it is told to (and every one after: a full disk stays full), and lets a
+// short write through as short (dd, writing 3-byte blocks, is the program under test).
+TEST_F(Faults, TheShimFailsTheWriteItIsToldTo) {
+  const fs::path f = dir_ / "f.bin", report = dir_ / "count";
+  auto dd = [&](const std::string& fault, const std::string& of, int blocks) {
+    const std::string cmd = "LD_PRELOAD=" + std::string(MMVLAB_WRITE_FAULT) + " MMVLAB_FAULT=" + fault + " MMVLAB_FAULT_REPORT=" +
+                            report.string() + " dd if=/dev/zero of=" + of + " bs=3 count=" + std::to_string(blocks) +
+                            " iflag=fullblock status=none 2>/dev/null";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  EXPECT_EQ(dd("count", f.string(), 4), 0);
+  EXPECT_EQ(slurp(report), "4\n");
+  EXPECT_EQ(dd("count", "/dev/null", 4), 0);
+  EXPECT_EQ(slurp(report), "0\n");  // not a regular file
+  EXPECT_NE(dd("enospc:3", f.string(), 4), 0);
+  EXPECT_EQ(fs::file_size(f), 6u);  // two blocks, then the disk is full
+  EXPECT_NE(dd("eio:1", f.string(), 4), 0);
+  EXPECT_EQ(fs::file_size(f), 0u);
+  EXPECT_EQ(dd("short:2", f.string(), 4), 0);  // dd finishes a short write itself
+  EXPECT_EQ(fs::file_size(f), 12u);
+}
+
+TEST_F(Faults, ModesConvergeCompareAndCheckLeaveOutAsItWas) {
+  exercise({"modes", "modes --segments 4 --out {out}"}, 8);
+  exercise({"converge", "converge --out {out}"}, 6);
+  exercise({"compare", "compare --segments 4 --out {out}"}, 8);
+  exercise({"check", "check --segments 4 --out {out}"}, 6);
+}
+
+TEST_F(Faults, FrfAndRomLeaveOutAsItWas) {
+  exercise({"frf", "frf --segments 4 --out {out}"}, 8);
+  exercise({"rom", "rom --segments 4 --out {out}"}, 8);
+}
+
+TEST_F(Faults, SimulateSweepConfigAndPlaceSensorsLeaveOutAsItWas) {
+  exercise({"simulate", "simulate " + scene("mmv-slew.yaml") + " --segments 2 --duration 0.2 --out {out}"}, 8);
+  exercise({"sweep-config", "sweep-config --segments 4 --grid joint2:0:20:10 --out {out}"}, 6);
+  exercise({"place-sensors", "place-sensors --segments 4 --out {out}"}, 6);
+}
+
+TEST_F(Faults, CorrelateAndRenderLeaveOutAsItWas) {
+  const Result f = run("frf " + scene("mmv-table.yaml") + " --segments 4 --out " + (dir_ / "measured").string());
+  ASSERT_EQ(f.code, 0) << f.err;
+  exercise({"correlate", "correlate " + scene("mmv-table.yaml") + " --segments 4 --measured " + (dir_ / "measured" / "frf.uff").string() +
+                             " --modes 6 --out {out}"},
+           6);
+  exercise({"render", "render --segments 4 --size 160x120 --out {out}", "out.png"}, 4);
+  exercise({"render-video", "render --segments 4 --mode 1 --size 160x120 --out {out}", "out.mp4"}, 6);
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
