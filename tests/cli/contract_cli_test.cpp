@@ -123,29 +123,6 @@ TEST_F(Cli, SundialsPluginExportsOnlyItsFactory) {
 
 namespace {
 
-/// Starts `args` (split on spaces) as a child with stdout and stderr discarded.
-pid_t spawn(const std::vector<std::string>& args) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::FILE* null = std::freopen("/dev/null", "w", stdout);
-    null = std::freopen("/dev/null", "w", stderr);
-    (void)null;
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::istringstream is(s);
-  for (std::string w; is >> w;) out.push_back(w);
-  return out;
-}
-
 /// A CSV without its wall-time-dependent columns (trade's cpu_s and pareto), for
 /// comparing two runs' files.
 std::string withoutTimedColumns(const std::string& csv) {

@@ -8,9 +8,13 @@
 //     earlier run that --force would have replaced), and no staging or temporary is
 //     left beside it or in it;
 //   - a short write is finished (the writers loop) and the run succeeds whole.
+#include <signal.h>
+
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <set>
+#include <thread>
 
 #include "support/cli.hpp"
 
@@ -24,7 +28,8 @@ Tree snapshot(const fs::path& root) {
   if (!fs::exists(root)) return t;
   for (const auto& e : fs::recursive_directory_iterator(root)) {
     const std::string rel = fs::relative(e.path(), root).string();
-    if (rel.rfind(".mmvlab-sweep.lock", 0) == 0) continue;  // the sweep's lock file: not an output
+    // Staging and temporaries (.mmvlab-*): not outputs; leftovers() looks for them.
+    if (rel.rfind(".mmvlab-", 0) == 0) continue;
     t[rel] = e.is_directory() ? "<dir>" : slurp(e.path());
   }
   return t;
@@ -169,6 +174,61 @@ TEST_F(Faults, CorrelateAndRenderLeaveOutAsItWas) {
            6);
   exercise({"render", "render --segments 4 --size 160x120 --out {out}", "out.png"}, 4);
   exercise({"render-video", "render --segments 4 --mode 1 --size 160x120 --out {out}", "out.mp4"}, 6);
+}
+
+// The signal harness: each verb killed at moments spread over a clean run's duration,
+// by SIGINT, SIGTERM, SIGHUP (caught: staging removed, then the default action) and
+// SIGKILL (not caught: the next run on the same --out removes what it left). After
+// each, --out holds either what it held before or a whole new output (a kill after the
+// commit), never a mix, and after the next run no staging is left anywhere.
+class Signals : public Faults {
+ protected:
+  void killAtMoments(const Verb& v) {
+    const fs::path home = dir_ / v.name;
+    fs::create_directories(home);
+    const fs::path out = !v.file.empty() ? home / v.file : home / "out";
+    const std::string args = with(v.args, out) + " --force";
+    const auto t0 = std::chrono::steady_clock::now();
+    ASSERT_EQ(run(args).code, 0) << v.name;
+    const double clean = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (v.file.empty()) std::ofstream(out / "notes-of-mine.txt") << "the user's own file\n";
+    const Tree whole = snapshot(!v.file.empty() ? home : out);
+    const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGKILL};
+    for (int k = 0; k < 8; ++k) {
+      const Tree before = snapshot(!v.file.empty() ? home : out);
+      const int sig = sigs[k % 4];
+      const pid_t pid = spawn(split(std::string(MMVLAB_BINARY) + " " + args));
+      std::this_thread::sleep_for(std::chrono::duration<double>(clean * (0.05 + 0.12 * k)));
+      ::kill(pid, sig);
+      int status = 0;
+      ::waitpid(pid, &status, 0);
+      const std::string where = v.name + " killed by signal " + std::to_string(sig) + " at " + std::to_string(0.05 + 0.12 * k) + " of its run";
+      EXPECT_FALSE(WIFSIGNALED(status) && WTERMSIG(status) != sig) << where << ": died of signal " << WTERMSIG(status);
+      if (WIFEXITED(status)) EXPECT_EQ(WEXITSTATUS(status), 0) << where << ": finished before the signal, yet failed";
+      const Tree after = snapshot(!v.file.empty() ? home : out);
+      bool same_names = after.size() == whole.size();
+      for (const auto& [name, c] : whole) same_names = same_names && after.count(name);
+      EXPECT_TRUE(after == before || same_names) << where << ": --out is neither as it was nor a whole output (" << after.size()
+                                                 << " entries, " << whole.size() << " in a whole one)";
+      for (const auto& [name, c] : after)
+        if (c != "<dir>") EXPECT_FALSE(c.empty() && !whole.at(name).empty()) << where << ": " << name << " is empty";
+      if (sig != SIGKILL) EXPECT_EQ(leftovers(out), std::vector<std::string>{}) << where;
+    }
+    ASSERT_EQ(run(args).code, 0) << v.name << ": the run after the kills";
+    EXPECT_EQ(leftovers(out), std::vector<std::string>{}) << v.name << ": a SIGKILL's staging outlived the next run";
+  }
+};
+
+TEST_F(Signals, EveryVerbKilledAnywhereLeavesOutWholeOrAsItWas) {
+  killAtMoments({"modes", "modes --segments 16 --out {out}"});
+  killAtMoments({"frf", "frf --segments 8 --out {out}"});
+  killAtMoments({"rom", "rom --segments 8 --out {out}"});
+  killAtMoments({"check", "check --segments 8 --out {out}"});
+  killAtMoments({"simulate", "simulate " + scene("mmv-slew.yaml") + " --segments 2 --duration 0.5 --out {out}"});
+  killAtMoments({"sweep-config", "sweep-config --segments 4 --grid joint2:0:40:10 --out {out}"});
+  killAtMoments({"place-sensors", "place-sensors --segments 8 --out {out}"});
+  killAtMoments({"compare", "compare --segments 8 --out {out}"});
+  killAtMoments({"render-video", "render --segments 4 --mode 1 --size 320x240 --out {out}", "out.mp4"});
 }
 
 }  // namespace

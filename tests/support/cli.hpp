@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace mmv::cli_testing {
 
@@ -36,6 +37,29 @@ inline fs::path freshTestDir(const std::string& prefix) {
 inline bool isPng(const fs::path& p) {
   const std::string head = slurp(p).substr(0, 8);
   return head == std::string("\x89PNG\r\n\x1a\n", 8);
+}
+
+/// Starts `args` (split on spaces) as a child with stdout and stderr discarded.
+inline pid_t spawn(const std::vector<std::string>& args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::FILE* null = std::freopen("/dev/null", "w", stdout);
+    null = std::freopen("/dev/null", "w", stderr);
+    (void)null;
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+inline std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream is(s);
+  for (std::string w; is >> w;) out.push_back(w);
+  return out;
 }
 
 struct Result {
