@@ -15,7 +15,16 @@
 #include "sim/io/report.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/plan/check.hpp"
+#include "sim/io/run_dir.hpp"
+#include "sim/io/uff_read.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/scene/sweep_spec.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace mmv::fuzz {
 namespace {
@@ -29,7 +38,93 @@ std::optional<std::string> judgeSceneError(const SceneError& e) {
   return "scene error without fuzz.yaml:line:col: " + printable(e.what());
 }
 
+/// A named user error whose message starts with `prefix` (the file or the override
+/// it is about) keeps the contract; a numerical error too; anything else breaks it.
+std::optional<std::string> judgeNamed(std::exception_ptr p, const std::string& prefix) {
+  try {
+    std::rethrow_exception(p);
+  } catch (const SceneError& e) {
+    if (std::string(e.what()).rfind(prefix, 0) == 0) return std::nullopt;
+    return "scene error that does not name " + prefix + ": " + printable(e.what());
+  } catch (const SceneFileError& e) {
+    if (std::string(e.what()).rfind(prefix, 0) == 0) return std::nullopt;
+    return "file error that does not name " + prefix + ": " + printable(e.what());
+  } catch (const UsageError& e) {
+    if (std::string(e.what()).rfind(prefix, 0) == 0) return std::nullopt;
+    return "usage error that does not name " + prefix + ": " + printable(e.what());
+  } catch (const NumericalError&) {
+    return std::nullopt;
+  } catch (const std::exception& e) {
+    return std::string("uncaught ") + typeid(e).name() + ": " + printable(e.what());
+  } catch (...) {
+    return std::string("uncaught exception of a type not derived from std::exception");
+  }
+}
+
 }  // namespace
+
+std::optional<std::string> specTarget(const std::string& text) {
+  try {
+    const SweepSpec spec = parseSweepSpec(text, kSource, ".");
+    double n = 1;
+    for (const auto& p : spec.parameters) n *= spec.design == SweepSpec::Design::Grid ? static_cast<double>(p.gridValues().size()) : 1.0;
+    if (spec.design == SweepSpec::Design::LatinHypercube) n = spec.lhs_samples;
+    if (n <= 10000) {
+      const auto points = sweepPoints(spec);
+      if (static_cast<double>(points.size()) != n) return strf("%zu points where the spec makes %.0f", points.size(), n);
+      for (const auto& pt : points)
+        for (double x : pt)
+          if (!std::isfinite(x)) return std::string("a point holds a value that is not finite");
+    }
+    return std::nullopt;
+  } catch (...) {
+    return judgeException(std::current_exception());
+  }
+}
+
+std::optional<std::string> uffTarget(const std::string& text) {
+  try {
+    (void)uff::read(text, "fuzz.uff");
+    return std::nullopt;
+  } catch (...) {
+    return judgeNamed(std::current_exception(), "fuzz.uff");
+  }
+}
+
+std::optional<std::string> setTarget(const std::string& text) {
+  std::vector<std::string> sets;
+  std::istringstream is(text);
+  for (std::string line; std::getline(is, line) && sets.size() < 16;) sets.push_back(line);
+  try {
+    (void)parseScene(defaultSceneYaml(), "<default scene>", sets);
+    return std::nullopt;
+  } catch (...) {
+    return judgeNamed(std::current_exception(), "--set ");
+  }
+}
+
+std::optional<std::string> runDirTarget(const std::string& text) {
+  namespace fs = std::filesystem;
+  static const fs::path dir = fs::temp_directory_path() / ("mmvlab_fuzz_run_" + std::to_string(::getpid()));
+  static const bool made = [] {
+    fs::create_directories(dir);
+    std::ofstream(dir / "scene.yaml") << defaultSceneYaml();
+    return true;
+  }();
+  (void)made;
+  const std::size_t at = text.find("\n@@\n");
+  const std::string json = at == std::string::npos ? text : text.substr(0, at);
+  const std::string csv = at == std::string::npos ? std::string() : text.substr(at + 4);
+  std::ofstream(dir / "run.json", std::ios::binary) << json;
+  std::ofstream(dir / "history.csv", std::ios::binary) << csv;
+  std::ofstream(dir / "states.csv", std::ios::binary) << csv;
+  try {
+    (void)readRunDir(dir.string());
+    return std::nullopt;
+  } catch (...) {
+    return judgeNamed(std::current_exception(), dir.string());
+  }
+}
 
 /// Any exception: a named user or numerical error keeps the contract, anything else
 /// (an internal error, a third party's exception) breaks it.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "fuzz/fuzz_targets.hpp"
@@ -50,6 +51,35 @@ TEST(FuzzReplay, ModesKeepsTheContractOnTheCorpus) {
       const auto breach = modesTarget(read(p));
       EXPECT_FALSE(breach.has_value()) << p << ": " << breach.value_or("");
     }
+}
+
+// The other inputs' corpora (tests/fuzz/corpus-spec, -uff, -set, -rundir: the seeds
+// and what their fuzzers kept) through their targets.
+TEST(FuzzReplay, SpecUffSetAndRunDirectoryReadersKeepTheContractOnTheirCorpora) {
+  struct Corpus {
+    const char* dir;
+    std::optional<std::string> (*target)(const std::string&);
+  };
+  for (const Corpus& c : {Corpus{"tests/fuzz/corpus-spec", specTarget}, Corpus{"sweeps", specTarget}, Corpus{"tests/fuzz/corpus-uff", uffTarget},
+                          Corpus{"tests/fuzz/corpus-set", setTarget}, Corpus{"tests/fuzz/corpus-rundir", runDirTarget}}) {
+    std::size_t n = 0;
+    for (const auto& p : inputs(c.dir)) {
+      const auto breach = c.target(read(p));
+      EXPECT_FALSE(breach.has_value()) << p << ": " << breach.value_or("");
+      ++n;
+    }
+    EXPECT_GE(n, 1u) << c.dir;
+  }
+}
+
+// The new targets can fail too: an unpositioned error is a breach, a well-formed input is
+// accepted, and a refused one is accepted when its message names the input.
+TEST(FuzzReplay, TheOtherTargetsJudgeTheirInputs) {
+  EXPECT_FALSE(specTarget("scene: x.yaml\nparameters: []\noutputs: [mass]\n").has_value());  // refused at its line
+  EXPECT_FALSE(setTarget("links.link9.length=2\n").has_value());                               // refused, named --set
+  EXPECT_FALSE(setTarget("links.link1.length=2.5\n").has_value());
+  EXPECT_FALSE(uffTarget("    -1\n    58\n").has_value());  // refused at fuzz.uff:LINE:COL
+  EXPECT_FALSE(runDirTarget("{}").has_value());               // "not a run record", naming run.json
 }
 
 // The judgement can fail: a scene error without a position, an internal or a third
