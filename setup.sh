@@ -5,7 +5,7 @@
 #
 #   ./setup.sh          what building and running mmvlab needs (the README's first command)
 #   ./setup.sh --test   that, plus what the test suite and the benchmarks add
-#                       (GoogleTest, Google Benchmark, Octave, Python with numpy)
+#                       (GoogleTest, Google Benchmark, Octave, Python with numpy, Slurm)
 set -euo pipefail
 
 build_pkgs=(
@@ -18,6 +18,7 @@ test_pkgs=(
   libgtest-dev googletest libbenchmark-dev
   octave octave-control          # the test suite loads our .mat files into Octave's ss()
   python3 python3-numpy          # ... and reads every CSV back with Python's csv module and numpy
+  slurmctld slurmd slurm-client munge   # a single-node Slurm runs the sharded sweep (tests/cluster/slurm_test.sh)
 )
 want=("${build_pkgs[@]}")
 case "${1:-}" in

@@ -102,7 +102,9 @@ std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet&
   SimTK::State st = s.equilibrium.state;
   s.model->getSystem().realize(st, SimTK::Stage::Position);
   std::map<int, std::string> named;
-  for (const auto& [node, point] : o.named_pairs) {
+  for (const auto& named_pair : o.named_pairs) {
+    const int node = named_pair.first;  // a plain variable: C++17 lambdas cannot capture a structured binding (clang)
+    const std::string& point = named_pair.second;
     const bool known = std::any_of(test.nodes.begin(), test.nodes.end(), [&](const MeasuredNode& n) { return n.label == node; });
     if (!known) throw SceneError(test.source + ": --pair " + std::to_string(node) + "=" + point + ": the file defines no node " + std::to_string(node));
     std::string error;
