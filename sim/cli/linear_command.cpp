@@ -185,7 +185,7 @@ void estimateMeshError(const LinearArgs& args, Analysis& a) {
   mo.with_shapes = false;
   mo.damping = a.lm.damping;
   const ModesReport rep = runModes(a.scene, mo);
-  const DiscretizationEstimate d = estimateDiscretization(a.scene, reportFrequencies(rep));
+  const DiscretizationEstimate d = estimateDiscretization(a.scene, rep);
   if (!d.available) {
     a.mesh_note = d.reason;
     return;

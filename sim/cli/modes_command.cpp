@@ -69,7 +69,7 @@ int runModesCommand(const ModesArgs& args) {
     opt.points = checkedPoints(args.points, scene.article, "--points");
     opt.damping = scene.damping;
     ModesReport rep = runModes(scene, opt);
-    if (!args.no_error_estimate) rep.discretization = estimateDiscretization(scene, reportFrequencies(rep));
+    if (!args.no_error_estimate) rep.discretization = estimateDiscretization(scene, rep);
     rep.segments_choice = choice;
     for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
     const nlohmann::ordered_json json = modesToJson(rep);

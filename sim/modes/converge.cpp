@@ -3,6 +3,7 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "sim/core/errors.hpp"
 #include "sim/core/text.hpp"
@@ -39,9 +40,32 @@ ConvergenceMode assessLadder(int number, const std::vector<double>& frequency_hz
   return m;
 }
 
-DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const std::vector<double>& finest_hz) {
+namespace {
+
+/// For each of `fine`'s modes, the index of its coarse counterpart (or -1): the k-th mode
+/// of a family (ModeFamily::label: in-plane, out-of-plane, torsion, mixed, rigid; one
+/// family on the planar model, where this is pairing by index) with the k-th of the same
+/// family on the coarse mesh.
+std::vector<int> pairModes(const std::vector<ModeInfo>& fine, const std::vector<ModeInfo>& coarse) {
+  std::map<std::string, std::vector<int>> coarse_by_family;
+  for (std::size_t j = 0; j < coarse.size(); ++j) coarse_by_family[coarse[j].family.label].push_back(static_cast<int>(j));
+  std::map<std::string, std::size_t> taken;
+  std::vector<int> match(fine.size(), -1);
+  for (std::size_t i = 0; i < fine.size(); ++i) {
+    const std::string& family = fine[i].family.label;
+    const std::vector<int>& same = coarse_by_family[family];
+    const std::size_t k = taken[family]++;
+    if (k < same.size()) match[i] = same[k];
+  }
+  return match;
+}
+
+}  // namespace
+
+DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const ModesReport& finest) {
   DiscretizationEstimate e;
   const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<double> finest_hz = reportFrequencies(finest);
   bool flexible = false, by2 = true, by4 = true;
   for (const auto& l : scene.article.links) {
     if (l.rigid) continue;
@@ -58,24 +82,39 @@ DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const s
     return e;
   }
   e.divisors = by4 ? std::vector<int>{4, 2} : std::vector<int>{2};
+  // Each coarse mesh solved for more modes than the finest has: a mode's counterpart may
+  // sit further down the list there.
   std::vector<std::vector<double>> runs;
+  std::vector<bool> unpaired(finest_hz.size(), false);  ///< the coarse mesh has enough modes, none of this one's family
   for (int d : e.divisors) {
     ArticleScene coarse = scene;
     for (auto& l : coarse.article.links)
       if (!l.rigid) l.segments /= d;
-    const ModesSolve sol = solveSceneModes(coarse, {}, static_cast<int>(finest_hz.size()));
-    runs.emplace_back(sol.frequencies_hz.data(), sol.frequencies_hz.data() + sol.frequencies_hz.size());
+    ModesOptions mo;
+    mo.max_modes = static_cast<int>(finest_hz.size()) + std::max(4, static_cast<int>(finest_hz.size()) / 2);
+    mo.with_shapes = false;
+    const ModesReport c = runModes(coarse, mo);
+    const std::vector<int> match = pairModes(finest.modes, c.modes);
+    std::vector<double> f(finest_hz.size(), NAN);
+    for (std::size_t i = 0; i < f.size() && i < match.size(); ++i) {
+      if (match[i] >= 0) f[i] = c.modes[static_cast<std::size_t>(match[i])].frequency_hz;
+      else if (i < c.modes.size()) unpaired[i] = true;
+    }
+    runs.push_back(std::move(f));
   }
   double scale = 0;
   for (double f : finest_hz) scale = std::max(scale, std::abs(f));
   for (std::size_t i = 0; i < finest_hz.size(); ++i) {
     std::vector<double> f;
-    for (const auto& r : runs) f.push_back(i < r.size() ? r[i] : NAN);
+    for (const auto& r : runs) f.push_back(r[i]);
     f.push_back(finest_hz[i]);
     ConvergenceMode m = assessLadder(static_cast<int>(i) + 1, f);
     if (!(std::abs(finest_hz[i]) > 1e-6 * scale)) {  // a rigid-body mode: no relative error
       m.has_estimate = m.has_observed_order = false;
       m.check = "rigid";
+    } else if (unpaired[i]) {  // no coarse mode of its family: nothing to extrapolate from
+      m.has_estimate = m.has_observed_order = false;
+      m.check = "unpaired";
     }
     e.modes.push_back(std::move(m));
   }

@@ -62,8 +62,18 @@ struct DiscretizationEstimate {
   std::vector<ConvergenceMode> modes;  ///< one per finest frequency; check "rigid" for a zero-frequency mode
   double seconds = 0;
 };
-/// `finest_hz`: the scene's own modes (negative: unstable, 0: rigid).
-DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const std::vector<double>& finest_hz);
+struct ModesReport;  // sim/modes/system_modes.hpp (which holds a DiscretizationEstimate)
+struct ModeInfo;
+
+/// `finest`: the scene's own modes (runModes). Each is followed down the coarser meshes
+/// within its family, not by its place in the whole list: the k-th in-plane mode with the
+/// k-th in-plane mode of the coarse mesh, and so for out-of-plane, torsion and mixed
+/// modes (the spatial model's ModeFamily; the planar model has one family, where this is
+/// pairing by index). Where bending and torsion families interleave differently on two
+/// meshes, pairing by index compared unlike modes (a 20 x 5 mm strip: an estimate 26x too
+/// low). A mode whose family has fewer modes on a coarse mesh gets check "unpaired" and
+/// no estimate.
+DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const ModesReport& finest);
 
 /// `modes --target-error E`: the fewest segments per flexible link (1, 2, 4, ... up to
 /// `max_segments`) at which each of the first `num_modes` vibration modes has an
