@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +44,23 @@ YAML::Node childOf(const YAML::Node& node, const std::string& part, std::string&
   return YAML::Node(YAML::NodeType::Undefined);
 }
 
+/// `s` as a YAML double-quoted scalar: a key part with a quote or a backslash in it
+/// (`--set 'l"=x'`) stays one key instead of ending the quotes early.
+std::string yamlQuoted(const std::string& s) {
+  std::string q = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') q += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      q += hex;
+      continue;
+    }
+    q += c;
+  }
+  return q + "\"";
+}
+
 /// Applies `--set KEY=VALUE` overrides to the document: KEY is a dotted path of
 /// mapping keys and list items (by their `name`, or index); VALUE is YAML. Missing
 /// keys are added (the section readers then check them as if they were in the file).
@@ -78,7 +96,7 @@ void applyOverrides(YAML::Node& root, const std::vector<std::string>& sets, int 
     if (!node.IsMap()) throw SceneError("--set " + set + ": '" + key + "' does not name a key of a mapping");
     // The rest as one flow mapping on the override's own line: {"b": {"c": VALUE}}.
     std::string text = std::string(static_cast<std::size_t>(first_line) + k, '\n');
-    for (std::size_t i = depth; i < parts.size(); ++i) text += (i > depth ? "{\"" : "\"") + parts[i] + "\": ";
+    for (std::size_t i = depth; i < parts.size(); ++i) text += std::string(i > depth ? "{" : "") + yamlQuoted(parts[i]) + ": ";
     text += value + std::string(parts.size() - 1 - depth, '}');
     YAML::Node doc;
     try {
