@@ -49,14 +49,20 @@ SimTK::Body::Rigid pieceBody(const LinkPiece& p, double gyration_sq) {
 /// z), the same about the in-plane normal y (so a round rod's two bending families pair
 /// exactly), and the section's polar inertia about the link axis, m (I + I_out) / A,
 /// which torsion needs. A piece shorter than sqrt(6 (I + I_out) / A) would break the
-/// triangle inequality of a rigid body's moments: both bending moments then get the
-/// least addition m c that restores it (a share of the section's rotary inertia; none
-/// on the default article below 18 segments per link, docs/spatial.md).
-SimTK::Body::Rigid spatialPieceBody(const LinkPiece& p, double polar_gyration_sq) {
+/// triangle inequality of a rigid body's moments: the bending moments then get the least
+/// share s of the section's own rotary inertia that restores it, m I/A s about z and
+/// m I_out/A s about y, s = 1 - 2 (m l^2/12) / (m (I + I_out)/A) (none on the default
+/// article below 18 segments per link, docs/spatial.md). As the pieces shrink s goes to
+/// 1: each slice carries its true rotary inertia (a Rayleigh beam), whatever the section.
+/// (Before, both axes got the same m (I + I_out)/(2A) s: 8.5 times the true in-plane
+/// rotary inertia of a 20 x 5 mm strip, which pulled its in-plane modes below the beam's
+/// as the mesh was refined. For a round rod the two are the same.) A section that states
+/// no I_out (`out_of_plane` as `in_plane`): `in_share` 0.5, both axes alike.
+SimTK::Body::Rigid spatialPieceBody(const LinkPiece& p, double polar_gyration_sq, double in_share) {
   const SimTK::Vec3 com(0.5 * p.length, 0, 0);
-  const double bend = p.inertia_zz_about_com;
-  const double c = std::max(0.0, 0.5 * (p.mass * polar_gyration_sq - 2 * bend));
-  const SimTK::Inertia central(p.mass * polar_gyration_sq, bend + c, bend + c);
+  const double bend = p.inertia_zz_about_com, polar = p.mass * polar_gyration_sq;
+  const double s = polar > 0 ? std::max(0.0, 1.0 - 2 * bend / polar) : 0.0;
+  const SimTK::Inertia central(polar, bend + s * polar * (1 - in_share), bend + s * polar * in_share);
   return rigidBody(p.mass, com, central);
 }
 
@@ -213,6 +219,10 @@ class Builder {
     const Section& section = *a_.findSection(l.section);
     const double gyr2 = sectionGyrationSquared(section);
     const double polar2 = (sectionSecondMoment(section) + sectionSecondMomentOut(section)) / sectionArea(section);
+    // The in-plane second moment's share of the polar one (the rotary inertia about z).
+    const double in_share = sectionSecondMomentOut(section) > 0
+                                ? sectionSecondMoment(section) / (sectionSecondMoment(section) + sectionSecondMomentOut(section))
+                                : 0.5;
     SimTK::MobilizedBodyIndex prev;
     LinkAxis axis;
     axis.link = l.name;
@@ -221,7 +231,7 @@ class Builder {
       // A planar link of the spatial article still moves out of the plane with it: its
       // pieces get their polar inertia when its section states I_out.
       const SimTK::Body::Rigid body = spatial() && (bendsOutOfPlane(l) || sectionSecondMomentOut(section) > 0)
-                                          ? spatialPieceBody(d.pieces[k], polar2)
+                                          ? spatialPieceBody(d.pieces[k], polar2, in_share)
                                           : pieceBody(d.pieces[k], gyr2);
       SimTK::MobilizedBodyIndex ix;
       if (k == 0 && first) {
