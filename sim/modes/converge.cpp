@@ -125,21 +125,23 @@ DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const M
 
 namespace {
 
-/// The worst of the first modes' estimates at the finest of `runs` (each mode by index).
-SegmentsLevel assessLevel(const std::vector<std::vector<double>>& runs, int num_modes, double target) {
+/// The worst of the first modes' estimates at the finest of `runs`, each mode followed
+/// down the two coarser runs within its family (pairModes).
+SegmentsLevel assessLevel(const std::vector<std::vector<ModeInfo>>& runs, int num_modes, double target) {
   SegmentsLevel level;
   level.worst_error = NAN;
   if (runs.size() < 3) return level;
-  const std::vector<double>& finest = runs.back();
+  const std::vector<ModeInfo>& finest = runs.back();
   double scale = 0;
-  for (double f : finest) scale = std::max(scale, std::abs(f));
+  for (const ModeInfo& m : finest) scale = std::max(scale, std::abs(m.frequency_hz));
+  const std::vector<int> pair2 = pairModes(finest, runs[runs.size() - 2]), pair3 = pairModes(finest, runs[runs.size() - 3]);
+  auto at = [](const std::vector<ModeInfo>& run, int j) { return j >= 0 ? run[static_cast<std::size_t>(j)].frequency_hz : NAN; };
   level.met = true;
   level.worst_error = 0;
   bool worst_trusted = true;
   for (int i = 0; i < num_modes && i < static_cast<int>(finest.size()); ++i) {
-    if (!(std::abs(finest[i]) > 1e-6 * scale)) continue;  // a rigid-body mode
-    std::vector<double> f;
-    for (std::size_t k = runs.size() - 3; k < runs.size(); ++k) f.push_back(i < static_cast<int>(runs[k].size()) ? runs[k][i] : NAN);
+    if (finest[i].rigid_body || !(std::abs(finest[i].frequency_hz) > 1e-6 * scale)) continue;  // a rigid-body mode
+    const std::vector<double> f{at(runs[runs.size() - 3], pair3[i]), at(runs[runs.size() - 2], pair2[i]), finest[i].frequency_hz};
     const ConvergenceMode m = assessLadder(i + 1, f);
     const bool trusted = m.check == "ok" || m.check == "order";
     const double e = m.has_estimate ? m.estimated_relative_error : INFINITY;
@@ -166,13 +168,15 @@ SegmentsChoice segmentsForTarget(const ArticleScene& scene, int num_modes, doubl
   c.target = target;
   const auto t0 = std::chrono::steady_clock::now();
   auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-  std::vector<std::vector<double>> runs;
+  std::vector<std::vector<ModeInfo>> runs;
   for (int n = 1; n <= max_segments; n *= 2) {
     ArticleScene s = scene;
     overrideSegments(s, n);
     const double start = since();
-    const ModesSolve sol = solveSceneModes(s, {}, num_modes);
-    runs.emplace_back(sol.frequencies_hz.data(), sol.frequencies_hz.data() + sol.frequencies_hz.size());
+    ModesOptions mo;  // more modes than asked for: a mode's counterpart may sit further down a coarser run
+    mo.max_modes = num_modes + std::max(4, num_modes / 2);
+    mo.with_shapes = false;
+    runs.push_back(runModes(s, mo).modes);
     SegmentsLevel level = assessLevel(runs, num_modes, target);
     level.segments = n;
     level.seconds = since() - start;
