@@ -21,16 +21,6 @@ class Progress : public Cli {
         out += line + "\n";
     return out;
   }
-  Result run(const std::string& args, const std::string& env = "") {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string cmd = env + std::string(MMVLAB_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(cmd.c_str());
-    Result r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
   std::string scene(const char* name) const { return (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / name).string(); }
 };
 

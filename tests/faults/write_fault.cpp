@@ -97,22 +97,22 @@ __attribute__((visibility("default"))) ssize_t writev(int fd, const struct iovec
   return real_writev(fd, iov, cnt);
 }
 
-__attribute__((visibility("default"))) int fsync(int fd) {
+/* A flush to the disk fails once a full disk or a failing device has shown itself. */
+static int syncThrough(int fd, int (*real)(int)) {
   setup();
   if (fired && (mode == kEnospc || mode == kEio) && regular(fd)) {
     errno = mode == kEnospc ? ENOSPC : EIO;
     return -1;
   }
-  return real_fsync(fd);
+  return real(fd);
+}
+
+__attribute__((visibility("default"))) int fsync(int fd) {
+  return syncThrough(fd, real_fsync);
 }
 
 __attribute__((visibility("default"))) int fdatasync(int fd) {
-  setup();
-  if (fired && (mode == kEnospc || mode == kEio) && regular(fd)) {
-    errno = mode == kEnospc ? ENOSPC : EIO;
-    return -1;
-  }
-  return real_fdatasync(fd);
+  return syncThrough(fd, real_fdatasync);
 }
 
 __attribute__((destructor)) static void report(void) {

@@ -39,25 +39,22 @@ std::optional<std::string> judgeSceneError(const SceneError& e) {
 }
 
 /// A named user error whose message starts with `prefix` (the file or the override
-/// it is about) keeps the contract; a numerical error too; anything else breaks it.
+/// it is about) keeps the contract; anything else is judged as judgeException does.
 std::optional<std::string> judgeNamed(std::exception_ptr p, const std::string& prefix) {
+  auto named = [&](const char* kind, const std::exception& e) -> std::optional<std::string> {
+    if (std::string(e.what()).rfind(prefix, 0) == 0) return std::nullopt;
+    return std::string(kind) + " error that does not name " + prefix + ": " + printable(e.what());
+  };
   try {
     std::rethrow_exception(p);
   } catch (const SceneError& e) {
-    if (std::string(e.what()).rfind(prefix, 0) == 0) return std::nullopt;
-    return "scene error that does not name " + prefix + ": " + printable(e.what());
+    return named("scene", e);
   } catch (const SceneFileError& e) {
-    if (std::string(e.what()).rfind(prefix, 0) == 0) return std::nullopt;
-    return "file error that does not name " + prefix + ": " + printable(e.what());
+    return named("file", e);
   } catch (const UsageError& e) {
-    if (std::string(e.what()).rfind(prefix, 0) == 0) return std::nullopt;
-    return "usage error that does not name " + prefix + ": " + printable(e.what());
-  } catch (const NumericalError&) {
-    return std::nullopt;
-  } catch (const std::exception& e) {
-    return std::string("uncaught ") + typeid(e).name() + ": " + printable(e.what());
+    return named("usage", e);
   } catch (...) {
-    return std::string("uncaught exception of a type not derived from std::exception");
+    return judgeException(std::current_exception());
   }
 }
 

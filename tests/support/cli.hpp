@@ -72,9 +72,10 @@ class Cli : public ::testing::Test {
   void SetUp() override { dir_ = freshTestDir("mmvlab_cli_"); }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Result run(const std::string& args) {
+  /// `env`: variables set for this run only, "NAME=VALUE " (shell words, with their space).
+  Result run(const std::string& args, const std::string& env = "") {
     const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string cmd = std::string(MMVLAB_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const std::string cmd = env + std::string(MMVLAB_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
     const int status = std::system(cmd.c_str());
     Result r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
