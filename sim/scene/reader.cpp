@@ -127,7 +127,18 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name, c
     if (!root.IsMap()) reader.fail(root.Mark(), "the scene must be a mapping of keys");
     const int first_line = static_cast<int>(std::count(yaml_text.begin(), yaml_text.end(), '\n')) + 10;
     reader.setOverrides(first_line, sets);
+    auto hasHamsas = [](const YAML::Node& r) { return r.IsMap() && static_cast<bool>(r["hamsas"]); };  // const: no zombie key
+    const bool isolator = hasHamsas(root);
     applyOverrides(root, sets, first_line);
+    // Which kind of scene the file is (an article, or HAM-SAS by its top-level `hamsas:`)
+    // is the file's to say: an override that would turn one into the other is refused
+    // at the override (the reader then complained about the file's own keys instead).
+    if (hasHamsas(root) != isolator)
+      for (const auto& set : sets)
+        if (set.rfind("hamsas", 0) == 0 && (set.size() == 6 || set[6] == '=' || set[6] == '.'))
+          throw SceneError("--set " + set + ": '" + std::string(isolator ? "removing" : "adding") +
+                           " hamsas' would change the scene's kind; an override changes values within " +
+                           (isolator ? "the HAM-SAS scene" : "the article scene"));
   }
   if (root.IsMap() && root["hamsas"]) {
     HamsasScene h = scene_detail::readHamsasScene(reader, root, source_name);

@@ -103,6 +103,9 @@ TEST(SceneOverrides, ErrorsAreTheFilesWithTheOverrideForThePosition) {
   EXPECT_EQ(errorOf({"links.l9.length=2"}), "--set links.l9.length=2: no item 'l9' (known: l1, l2)");
   EXPECT_EQ(errorOf({"links.l1.length=[1"}).rfind("--set links.l1.length=[1: malformed YAML value", 0), 0u);
   EXPECT_EQ(errorOf({"name.first=x"}), "--set name.first=x: 'name.first' does not name a key of a mapping");
+  // The kind of scene is the file's to say (the set fuzzer: the reader then blamed the file's own keys).
+  EXPECT_EQ(errorOf({"hamsas="}), "--set hamsas=: 'adding hamsas' would change the scene's kind; an override changes values within the article scene");
+  EXPECT_EQ(errorOf({"l\"=1"}).rfind("--set l\"=1: ", 0), 0u);  // a quote in a key part stays in it
   // A malformed override is the command line's mistake.
   EXPECT_THROW(withSets({"links.l1.length"}), UsageError);
   EXPECT_THROW(withSets({"links..length=2"}), UsageError);
