@@ -32,6 +32,9 @@ struct FrameOptions {
 constexpr int kMaxBufferSide = 8192;
 /// The supersampling a frame gets: `options.supersample`, lowered to fit kMaxBufferSide.
 int effectiveSupersample(const FrameOptions& options);
+/// Throws std::runtime_error naming the GB needed and available when a frame drawn at
+/// w x h samples (width x height pixels) would not fit in MemAvailable (frame_memory.cpp).
+void checkFrameMemory(int w, int h, int width, int height);
 
 /// Draws `list` as `camera` sees it; returns a BGR image (CV_8UC3). Throws
 /// std::runtime_error if OSMesa cannot create a context, or before allocating anything
