@@ -1,10 +1,12 @@
 #include "sim/io/output_dir.hpp"
 
+#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
@@ -33,6 +35,15 @@ struct SignalCleanup {
 };
 SignalCleanup g_cleanup;
 
+// A signal that arrives while files are being moved into DIR (or the transaction ends)
+// waits until they are consistent again: the handler, on whichever thread it runs, only
+// records it then, and the section's end acts on it. Both sides take it with exchange(),
+// so it is acted on exactly once.
+std::atomic<int> g_in_critical{0}, g_pending_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "async-signal-safe only when lock free");
+
+/// In a handler the raised signal is blocked until the handler returns; it then ends the
+/// process with the signal's default action.
 void removeStagedAndReraise(int sig) {
   for (int i = g_cleanup.count - 1; i >= 0; --i)
     (g_cleanup.is_dir[i] ? ::rmdir : ::unlink)(g_cleanup.paths[i].data());
@@ -40,18 +51,49 @@ void removeStagedAndReraise(int sig) {
   ::raise(sig);
 }
 
+/// The thread that stages files (the main one). A signal the kernel hands to another
+/// thread (a worker, the progress watchdog) is passed on to it, so the cleanup never runs
+/// beside a thread that is still creating files in the staging directory.
+pthread_t g_owner;
+
+void onSignal(int sig) {
+  if (!pthread_equal(pthread_self(), g_owner)) {
+    pthread_kill(g_owner, sig);
+    return;
+  }
+  g_pending_signal.store(sig);
+  if (g_in_critical.load() != 0) return;
+  if (const int s = g_pending_signal.exchange(0)) removeStagedAndReraise(s);
+}
+
+void installHandlers() {
+  static const bool installed = [] {
+    g_owner = pthread_self();
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, onSignal);
+    return true;
+  }();
+  (void)installed;
+}
+
+/// While one lives, SIGINT, SIGTERM and SIGHUP are held back (see above).
+struct SignalsHeld {
+  SignalsHeld() { g_in_critical.store(1); }
+  ~SignalsHeld() {
+    g_in_critical.store(0);
+    if (const int s = g_pending_signal.exchange(0)) removeStagedAndReraise(s);
+  }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+};
+
 void remember(const fs::path& p, bool dir) {
+  installHandlers();
   const std::string s = p.string();
   const int i = g_cleanup.count;
   if (i >= SignalCleanup::kMaxPaths || s.size() >= g_cleanup.paths[i].size()) return;  // left for the next run's sweep
   std::memcpy(g_cleanup.paths[i].data(), s.c_str(), s.size() + 1);
   g_cleanup.is_dir[i] = dir;
   g_cleanup.count = i + 1;
-  static const bool installed = [] {
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, removeStagedAndReraise);
-    return true;
-  }();
-  (void)installed;
 }
 
 void forgetAll() { g_cleanup.count = 0; }
@@ -114,17 +156,18 @@ OutputDir::OutputDir(const std::string& dir, bool force) : force_(force), except
   removeStaleStaging(base);
   staging_ = base / (kStagingPrefix + std::to_string(::getpid()) + "-" + absolute.filename().string());
   fs::remove_all(staging_, ec);
+  remember(staging_, true);  // before it exists: a signal in between finds nothing to remove
   if (!fs::create_directory(staging_, ec)) throw OutputError(dir + ": cannot write in " + base.string() + ": " + ec.message());
-  remember(staging_, true);
 }
 
 OutputDir::~OutputDir() {
+  const SignalsHeld held;  // the undo (or the drop of the replaced files) runs whole
   if (committed_ && std::uncaught_exceptions() > exceptions_at_start_) undoCommit();
   else
     for (const auto& n : placed_) std::cerr << "mmvlab: wrote " << (target_ / n).string() << '\n';
   std::error_code ec;
   fs::remove_all(staging_, ec);
-  forgetAll();
+  forgetAll();  // before `held` acts on a signal that came meanwhile: nothing left to remove
 }
 
 std::string OutputDir::stage(const std::string& name) {
@@ -170,7 +213,9 @@ void OutputDir::commit() {
   if (ec) throw OutputError(target_.string() + ": cannot create directory: " + ec.message());
   // --force: the old files are moved aside first and put back if any new one cannot be
   // placed (or anything after the commit fails, see the destructor), so a failure never
-  // leaves the user with fewer files than before.
+  // leaves the user with fewer files than before. A signal meanwhile waits for the end:
+  // DIR then holds the whole new output (or, after a failure, the old one).
+  const SignalsHeld held;
   committed_ = true;
   for (const auto& n : names_) {
     if (!fs::exists(fs::symlink_status(target_ / n, ec))) continue;
@@ -191,6 +236,10 @@ void OutputDir::commit() {
     }
     placed_.push_back(n);
   }
+  // Committed: a signal from now on removes only the staging and the replaced files in it.
+  forgetAll();
+  remember(staging_, true);
+  for (const auto& n : aside_) remember(staging_ / (".old-" + n), false);
 }
 
 }  // namespace mmv

@@ -4,11 +4,18 @@
 #include "sim/io/output_dir.hpp"
 
 #include <gtest/gtest.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
+#include <vector>
 
 #include "sim/core/files.hpp"
 #include "support/cli.hpp"
@@ -135,6 +142,41 @@ TEST_F(OutputDirTest, AFileOrAnEmptyNameIsRefused) {
   EXPECT_THROW(OutputDir((root_ / "file").string(), false), OutputError);
   EXPECT_THROW(OutputDir((root_ / "file" / "sub").string(), false), OutputError);
   EXPECT_THROW(OutputDir("", false), OutputError);
+}
+
+// The kernel may hand a SIGTERM to any thread; here it goes to a worker while the main
+// thread keeps rewriting its staged files. The cleanup must not run beside that writing
+// (a file recreated after its unlink kept the staging directory alive, as the signal
+// harness once saw): the worker passes the signal to the staging thread, which stops,
+// cleans and dies of it. Run in a child process, which the signal ends.
+TEST_F(OutputDirTest, ASignalToAnotherThreadStillRemovesTheStaging) {
+  for (int round = 0; round < 5; ++round) {
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      OutputDir out((root_ / "out").string(), false);
+      std::vector<std::string> staged;
+      for (int i = 0; i < 50; ++i) staged.push_back(out.stage("f" + std::to_string(i) + ".csv"));
+      std::atomic<bool> writing{false};
+      std::thread worker([&writing] {
+        while (!writing.load()) std::this_thread::yield();
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        ::pthread_kill(::pthread_self(), SIGTERM);
+        std::this_thread::sleep_for(std::chrono::seconds(10));
+      });
+      for (long n = 0;; ++n) {
+        std::ofstream(staged[n % staged.size()]) << n << '\n';
+        writing.store(true);
+      }
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "round " << round << ": status " << status;
+    EXPECT_EQ(WTERMSIG(status), SIGTERM) << "round " << round;
+    EXPECT_TRUE(fs::is_empty(root_)) << "round " << round << ": staging left behind";
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+  }
 }
 
 }  // namespace
