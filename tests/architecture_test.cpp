@@ -34,12 +34,13 @@ const std::map<std::string, std::set<std::string>>& allowedIncludes() {
   static const std::set<std::string> hamsas = with(with(linear, time), {"sim/linear", "sim/time"});
   static const std::set<std::string> plan = with(hamsas, {"sim/hamsas"});
   static const std::set<std::string> io = with(plan, {"sim/plan"});
-  static const std::set<std::string> cli = with(io, {"sim/io", "renders"});
+  static const std::set<std::string> app = with(io, {"sim/io"});
+  static const std::set<std::string> cli = with(app, {"sim/app", "renders"});
   static const std::map<std::string, std::set<std::string>> rules{
       {"article", {}},           {"facility", {}},          {"sim/core", core},   {"sim/scene", scene},
       {"sim/model", model},      {"sim/statics", statics},  {"sim/modes", modes}, {"sim/linear", linear},
       {"sim/time", time},        {"sim/hamsas", hamsas},    {"sim/plan", plan},       {"sim/io", io},       {"renders", {"sim/core"}},
-      {"sim/cli", cli},
+      {"sim/app", app},          {"sim/cli", cli},          {"python", with(app, {"sim/app"})},
   };
   return rules;
 }

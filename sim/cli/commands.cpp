@@ -16,22 +16,19 @@
 namespace mmv::cli {
 
 Scene loadScene(const SceneArgs& args) {
-  Scene scene = args.scene_path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", args.sets)
-                                         : loadSceneFile(args.scene_path, args.sets);
-  if (auto* a = std::get_if<ArticleScene>(&scene)) {
-    if (args.segments > 0)
-      for (const auto& note : overrideSegments(*a, args.segments)) std::cerr << "mmvlab: warning: " << note << '\n';
-    if (args.no_gravity) a->gravity = {0, 0, 0};
-    // Values no lab article has: warned in every command, refused with --strict.
-    const std::vector<std::string> slips = scenePlausibility(*a);
-    if (args.strict && !slips.empty())
-      throw SceneError(slips.front() + " (--strict: implausible values are errors" +
-                       (slips.size() > 1 ? strf("; %zu more", slips.size() - 1) : std::string()) + ")");
-    for (const auto& w : slips) std::cerr << "warning: " << w << " (likely a unit mistake)\n";
-  } else if (args.segments > 0 || args.no_gravity) {
-    throw UsageError("--segments and --no-gravity do not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
-  }
-  return scene;
+  app::LoadedScene loaded = app::loadScene(sceneRequest(args));
+  for (const auto& w : loaded.warnings) std::cerr << w << '\n';
+  return std::move(loaded.scene);
+}
+
+app::SceneRequest sceneRequest(const SceneArgs& args) {
+  app::SceneRequest r;
+  r.path = args.scene_path;
+  r.sets = args.sets;
+  r.segments = args.segments;
+  r.no_gravity = args.no_gravity;
+  r.strict = args.strict;
+  return r;
 }
 
 ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command) {
@@ -39,22 +36,6 @@ ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command)
   if (auto* a = std::get_if<ArticleScene>(&scene)) return std::move(*a);
   throw UsageError(command + ": " + sceneSource(scene) +
                    " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");
-}
-
-std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
-                                       const std::string& option) {
-  const std::vector<std::string> points = articlePointNames(article);
-  for (const auto& n : names) {
-    std::string error;
-    if (isStationName(n)) {
-      if (!parseStation(n, article, error)) throw UsageError(option + ": " + error);
-    } else if (std::find(points.begin(), points.end(), n) == points.end()) {
-      throw UsageError(option + ": unknown point '" + n + "'" + didYouMean(n, points) +
-                       " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
-                       "<link>@<m>m or <link>@<fraction>)");
-    }
-  }
-  return names;
 }
 
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {
@@ -99,18 +80,6 @@ int guarded(const std::function<int()>& body) {
   } catch (const std::exception& e) {
     return say("mmvlab: internal error: ", e, kInternal);
   }
-}
-
-void checkResultFinite(const std::string& text) {
-  if (const std::string at = firstNonFiniteLine(text); !at.empty())
-    throw NumericalError("a result is not finite (" + at + " of the report); nothing was printed. This is a bug or an "
-                         "input beyond what the model resolves: please report it with the scene");
-}
-
-void checkResultFinite(const nlohmann::ordered_json& json) {
-  if (const std::string at = firstNonFiniteJson(json); !at.empty())
-    throw NumericalError("a result is not finite (JSON " + at + "); nothing was printed. This is a bug or an input "
-                         "beyond what the model resolves: please report it with the scene");
 }
 
 namespace {

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/app/modes_study.hpp"
+#include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/modes/components.hpp"
 #include "sim/scene/scene.hpp"
@@ -227,21 +229,20 @@ int runConvergeCommand(const ConvergeArgs& args);
 int runSceneCommand();
 
 // HAM-SAS isolator scenes (sim/cli/hamsas_command.cpp).
-int runHamsasModes(const ModesArgs& args, const HamsasScene& scene);
 int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
 int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
 /// --rom-modes / --band / --no-residualize as reduction options.
 ReductionOptions reductionOptions(const LinearArgs& args);
 // Shared by the command implementations.
-/// The scene (file or embedded default) with --segments and --no-gravity applied; the
-/// command dispatches on its kind once. UsageError for options that do not apply.
+/// The scene (file or embedded default) with --segments and --no-gravity applied
+/// (app::loadScene; its warnings printed on stderr); the command dispatches on its kind
+/// once. UsageError for options that do not apply.
 Scene loadScene(const SceneArgs& args);
+/// The scene options as the study layer's request.
+app::SceneRequest sceneRequest(const SceneArgs& args);
 /// The article scene of `command` (a HAM-SAS scene is a UsageError), planar or spatial.
 ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command);
-/// `names` if each is a named point or a station of `article`, else UsageError naming
-/// `option` and the reason.
-std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
-                                       const std::string& option);
+using app::checkedPoints;
 /// --bc and --tip-mass into `o`; throws UsageError naming the known values.
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o);
 /// --band F_MIN_HZ:F_MAX_HZ as (min, max); UsageError unless 0 <= min < max.
@@ -255,7 +256,6 @@ int guarded(const std::function<int()>& body);
 void emitResult(const std::string& text);
 void emitResult(const nlohmann::ordered_json& json);
 /// The same check alone, for a command that must refuse before it commits its --out files.
-void checkResultFinite(const std::string& text);
-void checkResultFinite(const nlohmann::ordered_json& json);
+using app::checkResultFinite;
 
 }  // namespace mmv::cli

@@ -81,23 +81,6 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
 
 }  // namespace
 
-int runHamsasModes(const ModesArgs& args, const HamsasScene& scene) {
-  std::unique_ptr<OutputDir> out;  // made first: a bad --out is refused before the work
-  if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-  const HamsasModes h = analyseHamsas(scene.isolator);
-  const nlohmann::ordered_json json = hamsasModesJson(scene, h, args.modes);
-  const std::string text = hamsasModesText(scene, h, args.modes);
-  checkResultFinite(json);  // before any file is committed
-  checkResultFinite(text);
-  if (out) {  // the same files as the article's modes (before, --out was ignored here)
-    out->write("modes.txt", text);
-    out->write("modes.json", json.dump(2) + "\n");
-    out->commit();  // reported as written when the command succeeds
-  }
-  args.json ? emitResult(json) : emitResult(text);
-  return kOk;
-}
-
 int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& f) {
   if (!args.inputs.empty() || !args.outputs.empty())
     throw UsageError("frf on a HAM-SAS scene computes the 6 x 6 ground-to-optical-table transmissibility; "

@@ -46,45 +46,24 @@ void convergencePlot(OutputDir& out, const ConvergenceStudy& c) {
 
 int runModesCommand(const ModesArgs& args) {
   return guarded([&]() -> int {
-    const Scene loaded = loadScene(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
-      if (args.target_error > 0 || args.time_budget > 0)
-        throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
-      return runHamsasModes(args, *h);
-    }
-    ArticleScene scene = std::get<ArticleScene>(loaded);
-    std::optional<SegmentsChoice> choice;
-    if (args.target_error > 0) {
-      if (args.segments > 0) throw UsageError("--target-error chooses the segments per link: drop --segments");
-      if (args.modes == 0) throw UsageError("--target-error holds the modes shown to it: give --modes N (N >= 1), not 0");
-      if (args.no_error_estimate) throw UsageError("--target-error needs the error estimate: drop --no-error-estimate");
-      choice = segmentsForTarget(scene, args.modes, args.target_error, kMaxTargetSegments, args.time_budget);
-      overrideSegments(scene, choice->segments);
-    } else if (args.time_budget > 0) {
-      throw UsageError("--time-budget applies to --target-error only");
-    }
-    ModesOptions opt;
-    opt.max_modes = args.modes;
-    opt.with_shapes = true;  // the JSON on stdout and in --out is one object: shapes in both
-    opt.points = checkedPoints(args.points, scene.article, "--points");
-    opt.damping = scene.damping;
-    ModesReport rep = runModes(scene, opt);
-    if (!args.no_error_estimate) rep.discretization = estimateDiscretization(scene, rep);
-    rep.segments_choice = choice;
-    for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
-    const nlohmann::ordered_json json = modesToJson(rep);
-    const std::string text = formatModesText(rep);
+    const Scene scene = loadScene(args);
+    app::ModesRequest r;
+    r.modes = args.modes;
+    r.points = args.points;
+    r.error_estimate = !args.no_error_estimate;
+    r.target_error = args.target_error;
+    r.time_budget = args.time_budget;
+    r.segments_given = args.segments > 0;
     std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
-    if (!args.out.empty()) {
-      out.emplace(args.out, args.force);
-      checkResultFinite(json);  // before any file is committed
-      checkResultFinite(text);
-      out->write("modes.txt", text);
-      out->write("modes.json", json.dump(2) + "\n");
-      out->write("modes.csv", modesCsv(rep));
+    if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
+    const app::ModesStudy s = app::runModesStudy(scene, r);
+    if (out) {
+      out->write("modes.txt", s.text);
+      out->write("modes.json", s.json.dump(2) + "\n");
+      if (s.report) out->write("modes.csv", s.csv);
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(json) : emitResult(text);
+    args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
   });
 }

@@ -1,5 +1,6 @@
 #include "sim/core/progress.hpp"
 
+#include <atomic>
 #include <mutex>
 #include <thread>
 
@@ -15,6 +16,13 @@ namespace {
 
 ProgressState own;
 ProgressState* state = &own;
+std::atomic<ProgressCheckpoint> checkpoint{nullptr};
+
+/// The checkpoint, on the recording thread only (not a worker's), outside the lock.
+void runCheckpoint(const ProgressState& s) {
+  const ProgressCheckpoint check = checkpoint.load();
+  if (check && s.owner == std::this_thread::get_id()) check();
+}
 
 }  // namespace
 
@@ -23,9 +31,13 @@ void adoptProgressState(ProgressState* host) { state = host ? host : &own; }
 
 ProgressStage::ProgressStage(std::string what) {
   ProgressState& s = *state;
+  {
+    std::lock_guard<std::mutex> lock(s.mutex);
+    if (s.stages.empty()) s.owner = std::this_thread::get_id();
+    else if (s.owner != std::this_thread::get_id()) return;
+  }
+  runCheckpoint(s);  // before the stage is pushed: a throw here leaves nothing to pop
   std::lock_guard<std::mutex> lock(s.mutex);
-  if (s.stages.empty()) s.owner = std::this_thread::get_id();
-  else if (s.owner != std::this_thread::get_id()) return;
   s.stages.push_back({std::move(what), 0, 0, ""});
   recorded_ = true;
 }
@@ -39,13 +51,18 @@ ProgressStage::~ProgressStage() {
 
 void progressCount(long done, long total, const char* unit) {
   ProgressState& s = *state;
-  std::lock_guard<std::mutex> lock(s.mutex);
-  if (s.stages.empty()) return;
-  ProgressLevel& l = s.stages.back();
-  l.done = done;
-  l.total = total;
-  l.unit = unit ? unit : "";
+  {
+    std::lock_guard<std::mutex> lock(s.mutex);
+    if (s.stages.empty()) return;
+    ProgressLevel& l = s.stages.back();
+    l.done = done;
+    l.total = total;
+    l.unit = unit ? unit : "";
+  }
+  runCheckpoint(s);
 }
+
+void setProgressCheckpoint(ProgressCheckpoint check) { checkpoint.store(check); }
 
 std::vector<ProgressLevel> progressSnapshot() {
   ProgressState& s = *state;

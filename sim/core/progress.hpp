@@ -42,4 +42,11 @@ struct ProgressLevel {
 /// The open stages, outermost first.
 std::vector<ProgressLevel> progressSnapshot();
 
+/// A host's check, run on the recording thread whenever a stage opens or a count is
+/// recorded there (the Python module: its signals, so Ctrl-C ends a long run between two
+/// steps, and the user's progress callback). It may throw to abandon the work: what the
+/// work holds is released by unwinding, as for any error. Empty: none (the CLI's).
+using ProgressCheckpoint = void (*)();
+void setProgressCheckpoint(ProgressCheckpoint check);
+
 }  // namespace mmv

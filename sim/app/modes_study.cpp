@@ -1,0 +1,95 @@
+#include "sim/app/modes_study.hpp"
+
+#include <algorithm>
+
+#include "sim/core/text.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/io/finite_check.hpp"
+#include "sim/io/hamsas_report.hpp"
+#include "sim/io/report.hpp"
+#include "sim/modes/converge.hpp"
+#include "sim/plan/check.hpp"
+#include "sim/scene/stations.hpp"
+
+namespace mmv::app {
+
+std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
+                                       const std::string& option) {
+  const std::vector<std::string> points = articlePointNames(article);
+  for (const auto& n : names) {
+    std::string error;
+    if (isStationName(n)) {
+      if (!parseStation(n, article, error)) throw UsageError(option + ": " + error);
+    } else if (std::find(points.begin(), points.end(), n) == points.end()) {
+      throw UsageError(option + ": unknown point '" + n + "'" + didYouMean(n, points) +
+                       " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
+                       "<link>@<m>m or <link>@<fraction>)");
+    }
+  }
+  return names;
+}
+
+namespace {
+
+void checkRequest(const ModesRequest& r, bool article) {
+  const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
+  if (r.modes < 0) throw UsageError(strf("%s: expected 0 (all) or more modes (got %d)", opt("--modes").c_str(), r.modes));
+  if (!(r.target_error >= 0) || !(r.time_budget >= 0))
+    throw UsageError(opt("--target-error") + " and " + opt("--time-budget") + " are positive numbers");
+  if (!article && (r.target_error > 0 || r.time_budget > 0))
+    throw UsageError(opt("--target-error") + " applies to the article's scenes (HAM-SAS has no segments)");
+  if (r.target_error > 0) {
+    if (r.segments_given) throw UsageError(opt("--target-error") + " chooses the segments per link: drop " + opt("--segments"));
+    if (r.modes == 0)
+      throw UsageError(opt("--target-error") + " holds the modes shown to it: give " + opt("--modes") + " N (N >= 1), not 0");
+    if (!r.error_estimate)
+      throw UsageError(opt("--target-error") + " needs the error estimate: drop " + opt("--no-error-estimate"));
+  } else if (r.time_budget > 0) {
+    throw UsageError(opt("--time-budget") + " applies to " + opt("--target-error") + " only");
+  }
+}
+
+ModesStudy articleModes(ArticleScene scene, const ModesRequest& r) {
+  std::optional<SegmentsChoice> choice;
+  if (r.target_error > 0) {
+    choice = segmentsForTarget(scene, r.modes, r.target_error, kMaxTargetSegments, r.time_budget);
+    overrideSegments(scene, choice->segments);
+  }
+  ModesOptions opt;
+  opt.max_modes = r.modes;
+  opt.with_shapes = true;  // the JSON on stdout and in --out is one object: shapes in both
+  opt.points = checkedPoints(r.points, scene.article, optionName(r.front, "--points"));
+  opt.damping = scene.damping;
+  ModesReport rep = runModes(scene, opt);
+  if (r.error_estimate) rep.discretization = estimateDiscretization(scene, rep);
+  rep.segments_choice = choice;
+  for (const auto& w : plausibilityWarnings(scene, rep)) rep.warnings.push_back("likely a unit mistake: " + w);
+  ModesStudy s;
+  s.json = modesToJson(rep);
+  s.text = formatModesText(rep);
+  s.csv = modesCsv(rep);
+  s.report = std::move(rep);
+  return s;
+}
+
+}  // namespace
+
+ModesStudy runModesStudy(const Scene& scene, const ModesRequest& r) {
+  const auto* article = std::get_if<ArticleScene>(&scene);
+  checkRequest(r, article != nullptr);
+  ModesStudy s;
+  if (article) {
+    s = articleModes(*article, r);
+  } else {
+    const auto& h = std::get<HamsasScene>(scene);
+    if (!r.points.empty()) throw UsageError(optionName(r.front, "--points") + " applies to the article's scenes");
+    const HamsasModes m = analyseHamsas(h.isolator);
+    s.json = hamsasModesJson(h, m, r.modes);
+    s.text = hamsasModesText(h, m, r.modes);
+  }
+  checkResultFinite(s.json);  // before any file is committed or any result returned
+  checkResultFinite(s.text);
+  return s;
+}
+
+}  // namespace mmv::app

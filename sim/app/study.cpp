@@ -1,0 +1,60 @@
+#include "sim/app/study.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "sim/core/integrators.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/finite_check.hpp"
+#include "sim/scene/plausibility.hpp"
+
+namespace mmv::app {
+
+std::string optionName(Front front, const std::string& cli_flag) {
+  if (front == Front::Cli) return cli_flag;
+  std::string name = cli_flag.substr(cli_flag.find_first_not_of('-'));
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
+void applySegments(Scene& scene, int segments, Front front, std::vector<std::string>& warnings) {
+  auto* a = std::get_if<ArticleScene>(&scene);
+  if (!a) throw UsageError(optionName(front, "--segments") + " does not apply to a HAM-SAS scene (rigid bodies)");
+  if (segments < 1 || segments > limits::kMaxSegments)
+    throw UsageError(strf("%s: expected 1 .. %d segments per link (got %d)", optionName(front, "--segments").c_str(),
+                          limits::kMaxSegments, segments));
+  for (const auto& note : overrideSegments(*a, segments)) warnings.push_back("mmvlab: warning: " + note);
+}
+
+LoadedScene loadScene(const SceneRequest& r) {
+  LoadedScene out{r.path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", r.sets) : loadSceneFile(r.path, r.sets),
+                  {}};
+  auto* a = std::get_if<ArticleScene>(&out.scene);
+  if (!a && (r.segments > 0 || r.no_gravity))
+    throw UsageError(optionName(r.front, "--segments") + " and " + optionName(r.front, "--no-gravity") +
+                     " do not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
+  if (!a) return out;
+  if (r.segments != 0) applySegments(out.scene, r.segments, r.front, out.warnings);
+  if (r.no_gravity) a->gravity = {0, 0, 0};
+  // Values no lab article has: warned in every command, refused with --strict.
+  const std::vector<std::string> slips = scenePlausibility(*a);
+  if (r.strict && !slips.empty())
+    throw SceneError(slips.front() + " (" + optionName(r.front, "--strict") + ": implausible values are errors" +
+                     (slips.size() > 1 ? strf("; %zu more", slips.size() - 1) : std::string()) + ")");
+  for (const auto& w : slips) out.warnings.push_back("warning: " + w + " (likely a unit mistake)");
+  return out;
+}
+
+void checkResultFinite(const std::string& text) {
+  if (const std::string at = firstNonFiniteLine(text); !at.empty())
+    throw NumericalError("a result is not finite (" + at + " of the report); nothing was printed. This is a bug or an "
+                         "input beyond what the model resolves: please report it with the scene");
+}
+
+void checkResultFinite(const nlohmann::ordered_json& json) {
+  if (const std::string at = firstNonFiniteJson(json); !at.empty())
+    throw NumericalError("a result is not finite (JSON " + at + "); nothing was printed. This is a bug or an input "
+                         "beyond what the model resolves: please report it with the scene");
+}
+
+}  // namespace mmv::app
