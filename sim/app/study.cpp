@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
@@ -43,6 +44,19 @@ LoadedScene loadScene(const SceneRequest& r) {
                      (slips.size() > 1 ? strf("; %zu more", slips.size() - 1) : std::string()) + ")");
   for (const auto& w : slips) out.warnings.push_back("warning: " + w + " (likely a unit mistake)");
   return out;
+}
+
+void checkRange(Front front, const std::string& cli_flag, double v, double lo, double hi, bool open_low) {
+  const bool ok = std::isfinite(v) && (open_low ? v > lo : v >= lo) && v <= hi;
+  if (!ok)
+    throw UsageError(strf("%s: expected %s %g and <= %g (got %g)", optionName(front, cli_flag).c_str(), open_low ? ">" : ">=",
+                          lo, hi, v));
+}
+
+const ArticleScene& articleOf(const Scene& scene, const std::string& verb) {
+  if (const auto* a = std::get_if<ArticleScene>(&scene)) return *a;
+  throw UsageError(verb + ": " + sceneSource(scene) +
+                   " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");
 }
 
 void checkResultFinite(const std::string& text) {

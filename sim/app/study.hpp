@@ -43,6 +43,13 @@ LoadedScene loadScene(const SceneRequest& request);
 /// else a UsageError naming the option); the notes it makes join `warnings`.
 void applySegments(Scene& scene, int segments, Front front, std::vector<std::string>& warnings);
 
+/// A number the user gave, checked against its range [lo, hi] (`open_low`: (lo, hi]);
+/// a UsageError naming the option as `front` spells it.
+void checkRange(Front front, const std::string& cli_flag, double value, double lo, double hi, bool open_low = false);
+
+/// The article of `scene`; a HAM-SAS scene is a UsageError naming `verb`.
+const ArticleScene& articleOf(const Scene& scene, const std::string& verb);
+
 /// A result that holds a NaN or infinity is a NumericalError naming where, never printed.
 void checkResultFinite(const std::string& text);
 void checkResultFinite(const nlohmann::ordered_json& json);

@@ -267,12 +267,10 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
       p->add_option("--modes", ps.modes, "Target modes, e.g. 1-8 or 1,3,5-7 (default: every mode below --below-hz)");
   p->add_option("--below-hz", ps.below_hz, "Target every vibration mode below this frequency, Hz (not with --modes)")
       ->capture_default_str()
-      ->check(positive())
       ->excludes(target_modes);  // one rule chooses the targets, never one silently over the other
-  p->add_option("--count", ps.count, "Sensors to place (triaxial: blocks)")->capture_default_str()->check(CLI::Range(1, 100000));
-  p->add_option("--spacing", ps.spacing, "Distance between candidate stations along each link, m")
-      ->capture_default_str()
-      ->check(CLI::Range(1e-3, 100.0));
+  p->add_option("--count", ps.count, "Sensors to place (triaxial: blocks), 1 .. 100000")->capture_default_str();
+  p->add_option("--spacing", ps.spacing, "Distance between candidate stations along each link, 0.001 .. 100 m")
+      ->capture_default_str();
   p->add_flag("--triaxial", ps.triaxial, "Place triaxial blocks (kept or removed whole) instead of uniaxial sensors");
   p->add_option("--method", ps.method, "efi (effective independence), mke (modal kinetic energy) or dpr (driving-point residue)")
       ->capture_default_str();
@@ -306,7 +304,7 @@ CLI::App* addCheckCommand(CLI::App& app, CheckArgs& ck) {
   CLI::App* c = app.add_subcommand("check", "Feasibility: torquers, gimbal, table, modes, sensors, lab; demand, capacity, margin, verdict");
   addSceneOptions(c, ck);
   c->add_flag("--json", ck.json, "Print JSON instead of the table");
-  c->add_option("--margin", ck.margin, "Required margin, %: a smaller one is a warning")->capture_default_str()->check(CLI::Range(0.0, 99.0));
+  c->add_option("--margin", ck.margin, "Required margin, 0 .. 99 %: a smaller one is a warning")->capture_default_str();
   c->add_option("--band", ck.band, "The modes of interest, F_MIN_HZ:F_MAX_HZ (report: 0.1-50 Hz)")->capture_default_str();
   c->add_option("--out", ck.out, "Also write check.md (Markdown) and check.json here");
   c->add_flag("--force", ck.force, "Replace files of the same names in --out");

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "sim/app/plan_studies.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
@@ -94,24 +95,21 @@ void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const Ha
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
   return guarded([&] {
     const Scene loaded = loadScene(args);
-    PlacementOptions o;
-    if (!args.modes.empty()) o.modes = parseModeList(args.modes);
-    o.below_hz = args.below_hz;
-    o.spacing_m = args.spacing;
-    o.triaxial = args.triaxial;
-    o.count = args.count;
-    if (!parsePlacementMethod(args.method, o.method))
-      throw UsageError("--method: unknown method '" + args.method + "' (known: efi, mke, dpr)");
+    app::PlacementRequest r;
+    if (!args.modes.empty()) r.modes = parseModeList(args.modes);
+    r.below_hz = args.below_hz;
+    r.spacing_m = args.spacing;
+    r.triaxial = args.triaxial;
+    r.count = args.count;
+    r.method = args.method;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const auto* article = std::get_if<ArticleScene>(&loaded);
     const auto* isolator = std::get_if<HamsasScene>(&loaded);
-    std::optional<HamsasModes> h;
-    if (isolator) h = analyseHamsas(isolator->isolator);
-    const PlacementStudy s = article ? runPlacement(*article, o) : runHamsasPlacement(*isolator, *h, o);
-    checkResultFinite(placementJson(s));  // before any file is committed
+    const app::PlacementStudyResult study = app::runPlacementStudy(loaded, r);
+    const PlacementStudy& s = study.study;
     if (out) {
-      out->write("placement.json", placementJson(s).dump(2) + "\n");
+      out->write("placement.json", study.json.dump(2) + "\n");
       out->write("candidates.csv", placementCandidatesCsv(s));
       out->write("automac.csv", placementAutoMacCsv(s));
       std::vector<std::string> rows, cols;
@@ -124,13 +122,13 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
                                 strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()),
                                 "mode", "mode");
         if (article) writeArticleReviewRenders(*out, *article, s);
-        else writeHamsasReviewRenders(*out, *isolator, *h, s);
+        else writeHamsasReviewRenders(*out, *isolator, *study.isolator_modes, s);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(placementJson(s)) : emitResult(placementText(s));
+    args.json ? emitResult(study.json) : emitResult(study.text);
     return kOk;
   });
 }

@@ -1,0 +1,52 @@
+#pragma once
+/// `check` (feasibility, sim/plan/check.hpp) and `place-sensors` (sim/modes/place_sensors.hpp,
+/// the isolator's: sim/hamsas/hamsas_placement.hpp) as studies.
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/app/study.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/modes/place_sensors.hpp"
+#include "sim/plan/check.hpp"
+
+namespace mmv::app {
+
+struct CheckRequest {
+  double margin_pct = 20;                      ///< a margin below it is a warning; 0 .. 99.
+  double band_min_hz = 0.1, band_max_hz = 50;  ///< the modes of interest; 0 <= min < max.
+  Front front = Front::Cli;
+};
+
+struct CheckStudy {
+  CheckReport report;
+  nlohmann::ordered_json json;
+  std::string text, markdown;
+};
+
+/// The feasibility report of an article scene (a HAM-SAS scene is a UsageError).
+CheckStudy runCheckStudy(const Scene& scene, const CheckRequest& request);
+
+struct PlacementRequest {
+  std::vector<int> modes;  ///< target modes, 1-based; empty: every vibration mode below `below_hz`.
+  double below_hz = 50;    ///< > 0; not with `modes`.
+  double spacing_m = 0.1;  ///< 1e-3 .. 100 m.
+  int count = 8;           ///< 1 .. 100000.
+  bool triaxial = false;
+  std::string method = "efi";  ///< efi, mke or dpr.
+  bool below_given = false;    ///< `below_hz` was given (then not `modes` too).
+  Front front = Front::Cli;
+};
+
+struct PlacementStudyResult {
+  PlacementStudy study;
+  std::optional<HamsasModes> isolator_modes;  ///< a HAM-SAS scene's (its review renders draw them)
+  nlohmann::ordered_json json;
+  std::string text;
+};
+
+PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& request);
+
+}  // namespace mmv::app
