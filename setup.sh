@@ -5,7 +5,7 @@
 #
 #   ./setup.sh          what building and running mmvlab needs (the README's first command)
 #   ./setup.sh --test   that, plus what the test suite and the benchmarks add
-#                       (GoogleTest, Google Benchmark, Octave, Python with numpy, Slurm)
+#                       (GoogleTest, Google Benchmark, Octave, pytest, Slurm)
 set -euo pipefail
 
 build_pkgs=(
@@ -13,11 +13,13 @@ build_pkgs=(
   libsimbody-dev libeigen3-dev libsundials-dev
   libopencv-dev libosmesa6-dev libgl-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev libspectra-dev
+  python3-dev pybind11-dev python3-numpy   # the Python module (python/): `import mmvlab`
 )
 test_pkgs=(
   libgtest-dev googletest libbenchmark-dev
   octave octave-control          # the test suite loads our .mat files into Octave's ss()
   python3 python3-numpy          # ... and reads every CSV back with Python's csv module and numpy
+  python3-pytest                 # the Python module's tests (python/tests)
   slurmctld slurmd slurm-client munge   # a single-node Slurm runs the sharded sweep (tests/cluster/slurm_test.sh)
 )
 want=("${build_pkgs[@]}")

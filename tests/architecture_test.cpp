@@ -204,7 +204,7 @@ std::vector<LongFunction> longFunctions(const std::string& source, int max_lines
 
 TEST(Architecture, NoIncludePointsUp) {
   std::vector<std::string> bad;
-  for (const auto& p : sources({"article", "facility", "sim", "renders"})) {
+  for (const auto& p : sources({"article", "facility", "sim", "renders", "python"})) {
     const auto v = layeringViolations(repoPath(p), slurp(p));
     bad.insert(bad.end(), v.begin(), v.end());
   }
@@ -240,6 +240,10 @@ TEST(Architecture, ChecksCatchWhatTheyShould) {
   EXPECT_TRUE(layeringViolations("sim/cli/x.cpp", "#include \"renders/plot.hpp\"\n").empty());
   EXPECT_EQ(layeringViolations("renders/x.cpp", "#include \"sim/model/model.hpp\"\n").size(), 1u);
   EXPECT_TRUE(layeringViolations("renders/x.cpp", "#include \"sim/core/drawing.hpp\"\n").empty());
+  EXPECT_EQ(layeringViolations("sim/io/x.cpp", "#include \"sim/app/study.hpp\"\n").size(), 1u);
+  EXPECT_EQ(layeringViolations("python/x.cpp", "#include \"renders/plot.hpp\"\n").size(), 1u);
+  EXPECT_EQ(layeringViolations("python/x.cpp", "#include \"sim/cli/commands.hpp\"\n").size(), 1u);
+  EXPECT_TRUE(layeringViolations("python/x.cpp", "#include \"sim/app/study.hpp\"\n").empty());
   std::string body = "namespace a {\nint f(int x) {\n";
   for (int i = 0; i < 90; ++i) body += "  x += 1;  // }\n";
   body += "  auto g = [&]() { return \"}\"; };\n  return x;\n}\nstruct S {\n  int h() { return 1; }\n};\n}\n";

@@ -35,11 +35,17 @@ ProgressStage::ProgressStage(std::string what) {
     std::lock_guard<std::mutex> lock(s.mutex);
     if (s.stages.empty()) s.owner = std::this_thread::get_id();
     else if (s.owner != std::this_thread::get_id()) return;
+    s.stages.push_back({std::move(what), 0, 0, ""});
+    recorded_ = true;
   }
-  runCheckpoint(s);  // before the stage is pushed: a throw here leaves nothing to pop
-  std::lock_guard<std::mutex> lock(s.mutex);
-  s.stages.push_back({std::move(what), 0, 0, ""});
-  recorded_ = true;
+  try {
+    runCheckpoint(s);  // sees the stage just opened
+  } catch (...) {
+    std::lock_guard<std::mutex> lock(s.mutex);
+    s.stages.pop_back();  // no destructor runs for a constructor that throws
+    recorded_ = false;
+    throw;
+  }
 }
 
 ProgressStage::~ProgressStage() {

@@ -17,9 +17,13 @@ grep -qxF "$test && tests/sanitized.sh" "$root/.ci/run" || fail ".ci/run does no
 
 # setup.sh without --test names no test-only package; with --test it adds them.
 plain=$(sed -n '/^build_pkgs=(/,/^)/p' "$root/setup.sh")
-for p in libgtest-dev libbenchmark-dev octave python3-numpy; do
+for p in libgtest-dev libbenchmark-dev octave python3-pytest; do
   ! grep -qw -- "$p" <<<"$plain" || fail "setup.sh installs $p without --test"
   sed -n '/^test_pkgs=(/,/^)/p' "$root/setup.sh" | grep -qw -- "$p" || fail "setup.sh --test does not install $p"
+done
+# The Python module is part of the product (built by the full build, imported by users).
+for p in pybind11-dev python3-dev python3-numpy; do
+  grep -qw -- "$p" <<<"$plain" || fail "setup.sh does not install $p, which the Python module needs to build and import"
 done
 set +e; bash "$root/setup.sh" --bogus 2>/tmp/front_door.$$; rc=$?; set -e
 msg=$(cat /tmp/front_door.$$); rm -f /tmp/front_door.$$

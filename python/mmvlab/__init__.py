@@ -1,0 +1,158 @@
+"""mmvlab from Python: the same studies as the `mmvlab` command, for scripts and notebooks.
+
+    import mmvlab
+    s = mmvlab.load_scene("scenes/mmv-table.yaml", set={"links.link2.E": 45e9})
+    m = mmvlab.modes(s, segments=32)
+    m.frequencies_hz          # numpy array, Hz
+    m.json                    # the dict `mmvlab modes --json` prints for the same request
+
+Every result carries the JSON document the command line prints for the same request
+(`.json`, made by the same writer) and its text report (`.text`); the typed attributes
+(numpy arrays) are read from that document. Errors raise `mmvlab.Error` subclasses with
+the CLI's message: `SceneError` (a scene value, with file:line:col), `SceneFileError`,
+`UsageError` (an argument, named as here), `NumericalError`, `UnavailableError`,
+`InternalError`. Warnings (likely unit slips, clamped modes) are Python warnings
+(`mmvlab.SceneWarning`). A long study can be interrupted with Ctrl-C
+(KeyboardInterrupt between two of its steps) and reports its steps to `progress`, a
+callable taking a list of (stage, done, total, unit) tuples, outermost first.
+See docs/python.md.
+"""
+
+import json as _json
+import warnings as _warnings
+
+import numpy as _np
+
+from . import _mmvlab
+from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene,  # noqa: F401
+                      SceneError, SceneFileError, UnavailableError, UsageError)
+
+__all__ = ["load_scene", "modes", "check", "place_sensors", "Scene", "Error", "SceneError", "SceneFileError",
+           "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning",
+           "ModesResult", "CheckResult", "PlacementResult"]
+
+
+class SceneWarning(UserWarning):
+    """A value no lab article has (a likely unit slip), or a request the model adjusted."""
+
+
+def _warn(messages):
+    for w in messages:
+        _warnings.warn(w, SceneWarning, stacklevel=3)
+
+
+def _yaml_value(key, value):
+    """A Python value as the text of `--set KEY=VALUE` (YAML)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float, _np.integer, _np.floating)):
+        return repr(float(value)) if isinstance(value, (float, _np.floating)) else str(int(value))
+    if isinstance(value, str):
+        return value
+    if isinstance(value, (list, tuple, dict)):
+        return _json.dumps(value)  # JSON is YAML's flow style
+    raise UsageError(f"set: {key}: a value of type {type(value).__name__} (give a number, a string, a bool or a list)")
+
+
+def load_scene(path=None, *, set=None, segments=0, no_gravity=False, strict=False):
+    """Reads a scene file (None: the embedded default MMV scene) with `set`, a dict of
+    scene keys to values (`{"links.link2.E": 45e9}`, as `--set` on the command line),
+    checked with their position. `segments`, `no_gravity`, `strict` as the CLI's options."""
+    sets = []
+    for key, value in (set or {}).items():
+        if not isinstance(key, str):
+            raise UsageError(f"set: keys are scene paths like 'links.link2.E' (got {key!r})")
+        sets.append(f"{key}={_yaml_value(key, value)}")
+    scene = _mmvlab.load_scene(None if path is None else str(path), sets, int(segments), bool(no_gravity), bool(strict))
+    _warn(scene.warnings)
+    return scene
+
+
+class Result:
+    """What a study returns: `.json` (the CLI's JSON document), `.text` (its report)."""
+
+    def __init__(self, json_text, text):
+        self.json = _json.loads(json_text)
+        self.text = text
+
+    def __getitem__(self, key):
+        return self.json[key]
+
+    def __repr__(self):
+        return f"<mmvlab {type(self).__name__} of {self.json.get('scene', {}).get('name', '?')}>"
+
+
+class ModesResult(Result):
+    """The system modes. Arrays: `frequencies_hz`, `modal_masses_kg`, and, for the
+    article, `shapes[mode, point, component]` at `shape_points` with `shape_components`
+    (per unit modal coordinate: m or rad per unit q; NaN where a point has no such
+    component, e.g. the rotation at a hinge between two pieces, which has two)."""
+
+    def __init__(self, json_text, text, csv):
+        super().__init__(json_text, text)
+        self.csv = csv
+        modes = self.json.get("modes", [])
+        self.frequencies_hz = _np.array([m["frequency_hz"] for m in modes], dtype=float)
+        self.modal_masses_kg = _np.array([m.get("modal_mass_kg", _np.nan) for m in modes], dtype=float)
+        shapes = [m.get("shape") for m in modes]
+        if shapes and all(shapes):
+            self.shape_points = [p["point"] for p in shapes[0]]
+            components = {}  # every component some point has, in the JSON's order
+            for p in shapes[0]:
+                components.update({k: None for k in p if k != "point"})
+            self.shape_components = list(components)
+            self.shapes = _np.array([[[p.get(k, _np.nan) for k in self.shape_components] for p in s] for s in shapes],
+                                    dtype=float)
+        else:
+            self.shape_points, self.shape_components, self.shapes = [], [], _np.zeros((len(modes), 0, 0))
+
+
+class CheckResult(Result):
+    """The feasibility report: `.lines` (dicts as in check.json), `.overall` (its verdict), `.markdown`."""
+
+    def __init__(self, json_text, text, markdown):
+        super().__init__(json_text, text)
+        self.markdown = markdown
+        self.lines = self.json["lines"]
+        self.overall = self.json["overall"]
+
+
+class PlacementResult(Result):
+    """The chosen sensors: `.chosen` (dicts as in placement.json: station, axis, position, score),
+    `.target_modes` and `.target_frequencies_hz` (arrays)."""
+
+    def __init__(self, json_text, text):
+        super().__init__(json_text, text)
+        self.chosen = self.json["chosen"]
+        self.target_modes = _np.array(self.json["target_modes"], dtype=int)
+        self.target_frequencies_hz = _np.array(self.json["target_frequencies_hz"], dtype=float)
+
+
+def modes(scene, *, segments=0, modes=12, points=(), error_estimate=True, target_error=0.0, time_budget=0.0,
+          progress=None):
+    """`mmvlab modes`: the system modes about the held equilibrium (0 modes: all)."""
+    json_text, text, csv, warns = _mmvlab.modes(scene, int(segments), int(modes), list(points), bool(error_estimate),
+                                                float(target_error), float(time_budget), progress)
+    _warn(warns)
+    return ModesResult(json_text, text, csv)
+
+
+def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):
+    """`mmvlab check`: the feasibility report (torquers, gimbal, table, modes, sensors, lab)."""
+    if len(band_hz) != 2:
+        raise UsageError(f"band_hz: expected (f_min_hz, f_max_hz) (got {band_hz!r})")
+    json_text, text, markdown, warns = _mmvlab.check(scene, int(segments), float(margin), float(band_hz[0]),
+                                                     float(band_hz[1]), progress)
+    _warn(warns)
+    return CheckResult(json_text, text, markdown)
+
+
+def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, count=8, triaxial=False, method="efi",
+                  progress=None):
+    """`mmvlab place-sensors`: sensor stations for the target modes (`modes`, 1-based,
+    or every vibration mode below `below_hz`, 50 Hz by default)."""
+    json_text, text, warns = _mmvlab.place_sensors(scene, int(segments), [int(m) for m in modes],
+                                                   None if below_hz is None else float(below_hz), float(spacing),
+                                                   int(count), bool(triaxial), str(method), progress)
+    _warn(warns)
+    return PlacementResult(json_text, text)

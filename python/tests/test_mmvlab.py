@@ -1,0 +1,241 @@
+"""The Python API against the command line and its own promises (docs/python.md).
+
+Run by ctest (python.api) with PYTHONPATH at build/python and MMVLAB_BINARY the CLI.
+"""
+import _thread
+import gc
+import json
+import os
+import subprocess
+import threading
+import time
+import warnings
+
+import numpy as np
+import pytest
+
+import mmvlab
+
+MMVLAB = os.environ["MMVLAB_BINARY"]
+SOURCE = os.environ["MMVLAB_SOURCE_DIR"]
+TIMING_KEYS = {"time_s", "seconds", "wall_time_s"}
+
+
+def cli_json(*args):
+    r = subprocess.run([MMVLAB, *args, "--json"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def without_timing(x):
+    """The document with its wall times removed (they differ between any two runs)."""
+    if isinstance(x, dict):
+        return {k: without_timing(v) for k, v in x.items() if k not in TIMING_KEYS}
+    if isinstance(x, list):
+        return [without_timing(v) for v in x]
+    return x
+
+
+def scene_path(name):
+    return os.path.join(SOURCE, "scenes", name)
+
+
+# --- every verb from Python equals the CLI's JSON for the same request ---------------
+
+def test_modes_equal_the_cli_json():
+    py = mmvlab.modes(mmvlab.load_scene(), segments=8, modes=6)
+    assert without_timing(py.json) == without_timing(cli_json("modes", "--segments", "8", "--modes", "6"))
+    assert py.frequencies_hz.shape == (6,)
+    np.testing.assert_array_equal(py.frequencies_hz, [m["frequency_hz"] for m in py.json["modes"]])
+
+
+def test_modes_with_set_points_and_a_file_equal_the_cli_json():
+    path = scene_path("mmv-table.yaml")
+    py = mmvlab.modes(mmvlab.load_scene(path, set={"materials.s_glass_epoxy.youngs_modulus": 45e9}), segments=4,
+                      modes=4, points=["link1.tip", "link2@0.5"], error_estimate=False)
+    cli = cli_json("modes", path, "--set", "materials.s_glass_epoxy.youngs_modulus=45000000000.0", "--segments", "4",
+                   "--modes", "4", "--points", "link1.tip", "--points", "link2@0.5", "--no-error-estimate")
+    assert without_timing(py.json) == without_timing(cli)
+
+
+def test_hamsas_modes_equal_the_cli_json():
+    py = mmvlab.modes(mmvlab.load_scene(scene_path("hamsas.yaml")), modes=0)
+    assert without_timing(py.json) == without_timing(cli_json("modes", scene_path("hamsas.yaml"), "--modes", "0"))
+    assert py.shapes.shape[0] == len(py.frequencies_hz)
+
+
+def test_check_equals_the_cli_json():
+    py = mmvlab.check(mmvlab.load_scene(), segments=4, margin=30, band_hz=(0.5, 40))
+    assert without_timing(py.json) == without_timing(cli_json("check", "--segments", "4", "--margin", "30",
+                                                              "--band", "0.5:40"))
+    assert py.overall == py.json["overall"]
+
+
+def test_place_sensors_equals_the_cli_json():
+    py = mmvlab.place_sensors(mmvlab.load_scene(), segments=4, count=6, modes=[1, 2, 3], method="mke")
+    cli = cli_json("place-sensors", "--segments", "4", "--count", "6", "--modes", "1-3", "--method", "mke")
+    assert without_timing(py.json) == without_timing(cli)
+    assert len(py.chosen) == 6
+
+
+# --- values checked once, named as Python spells them --------------------------------
+
+@pytest.mark.parametrize("call, name", [
+    (lambda s: mmvlab.modes(s, segments=1025), "segments"),
+    (lambda s: mmvlab.modes(s, segments=-1), "segments"),
+    (lambda s: mmvlab.modes(s, modes=-1), "modes"),
+    (lambda s: mmvlab.modes(s, target_error=1e-3, modes=0), "target_error"),
+    (lambda s: mmvlab.modes(s, points=["link9.tip"]), "points"),
+    (lambda s: mmvlab.check(s, margin=99.5), "margin"),
+    (lambda s: mmvlab.check(s, band_hz=(5, 1)), "band"),
+    (lambda s: mmvlab.place_sensors(s, count=0), "count"),
+    (lambda s: mmvlab.place_sensors(s, count=100001), "count"),
+    (lambda s: mmvlab.place_sensors(s, spacing=1e-4), "spacing"),
+    (lambda s: mmvlab.place_sensors(s, method="best"), "method"),
+    (lambda s: mmvlab.place_sensors(s, modes=[1, 2], below_hz=30), "below_hz"),
+])
+def test_a_bad_argument_is_a_usage_error_naming_it(call, name):
+    with pytest.raises(mmvlab.UsageError) as e:
+        call(mmvlab.load_scene())
+    assert str(e.value).startswith(name) or f" {name}" in str(e.value), str(e.value)
+    assert "--" not in str(e.value).split(":")[0], "named as the command line spells it"
+
+
+def test_the_documented_limits_hold_at_the_bound():
+    s = mmvlab.load_scene()
+    assert mmvlab.check(s, segments=2, margin=99).json["overall"]
+    with pytest.raises(mmvlab.UsageError, match="count 100000: there are"):  # the parser accepts it, the analysis refuses
+        mmvlab.place_sensors(s, segments=2, count=100000)
+
+
+# --- one exception class per error class ------------------------------------------------
+
+def test_a_bad_scene_value_is_a_scene_error_with_its_position(tmp_path):
+    with pytest.raises(mmvlab.SceneError, match="links.link2.E=abc"):
+        mmvlab.load_scene(set={"links.link2.E": "abc"})
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(open(scene_path("mmv.yaml")).read().replace("density: 1650", "density: -1650"))
+    with pytest.raises(mmvlab.SceneError, match=r"bad.yaml:\d+:\d+"):
+        mmvlab.load_scene(str(bad))
+
+
+def test_a_missing_file_is_a_scene_file_error():
+    with pytest.raises(mmvlab.SceneFileError):
+        mmvlab.load_scene("/nonexistent/scene.yaml")
+    with pytest.raises(mmvlab.UsageError):
+        mmvlab.load_scene("")
+
+
+def test_numbers_that_cannot_be_trusted_are_a_numerical_error(tmp_path):
+    p = tmp_path / "singular.yaml"
+    p.write_text("name: horizontal pendulum\n"
+                 "materials: {m: {density: 1000, youngs_modulus: 1e9}}\n"
+                 "sections: {s: {shape: explicit, area: 1e-4, second_moment: 1e-10}}\n"
+                 "base: {direction_deg: -90}\n"
+                 "joints: [{name: j1, parent: base, angle_deg: 90, hold: free}]\n"
+                 "links: [{name: l1, joint: j1, material: m, section: s, length: 1.0, segments: rigid}]\n")
+    with pytest.raises(mmvlab.NumericalError, match="tangent stiffness is singular"):
+        mmvlab.modes(mmvlab.load_scene(str(p)))
+
+
+def test_the_error_classes_are_one_family_and_python_s_own():
+    for cls, builtin in [(mmvlab.UsageError, ValueError), (mmvlab.SceneError, ValueError),
+                         (mmvlab.SceneFileError, OSError), (mmvlab.NumericalError, ArithmeticError),
+                         (mmvlab.UnavailableError, mmvlab.Error), (mmvlab.InternalError, mmvlab.Error)]:
+        assert issubclass(cls, mmvlab.Error) and issubclass(cls, builtin)
+
+
+def test_a_hamsas_scene_refuses_what_does_not_apply():
+    h = mmvlab.load_scene(scene_path("hamsas.yaml"))
+    with pytest.raises(mmvlab.UsageError, match="check"):
+        mmvlab.check(h)
+    with pytest.raises(mmvlab.UsageError, match="segments"):
+        mmvlab.modes(h, segments=4)
+
+
+# --- warnings -----------------------------------------------------------------------------
+
+def test_a_unit_slip_is_a_warning_and_strict_makes_it_an_error():
+    with pytest.warns(mmvlab.SceneWarning, match="likely a unit mistake"):
+        mmvlab.load_scene(set={"links.link1.length": 900})
+    with pytest.raises(mmvlab.SceneError, match="strict"):
+        mmvlab.load_scene(set={"links.link1.length": 900}, strict=True)
+
+
+# --- long runs: the GIL, Ctrl-C, progress ------------------------------------------------
+
+def long_modes(**kw):
+    return mmvlab.modes(mmvlab.load_scene(), segments=256, modes=12, **kw)
+
+
+def test_ctrl_c_interrupts_a_long_run_and_the_interpreter_goes_on():
+    long_modes()  # warm: the first call pays for loading
+    t0 = time.monotonic()
+    long_modes()
+    clean = time.monotonic() - t0
+    fired = []
+
+    def ctrl_c():
+        fired.append(time.monotonic())
+        _thread.interrupt_main()
+
+    timer = threading.Timer(clean * 0.2, ctrl_c)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        long_modes()
+    latency = time.monotonic() - fired[0]
+    timer.join()
+    # Between two steps of the study, not at its end (which is 80 % of the run away).
+    assert latency < clean * 0.5, f"stopped {latency:.3f} s after Ctrl-C, in a {clean:.3f} s run"
+    assert mmvlab.modes(mmvlab.load_scene(), segments=4, modes=3).frequencies_hz.shape == (3,)
+
+
+def test_the_gil_is_released_during_a_study():
+    ticks = []
+    done = threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks.append(1)
+            time.sleep(0.001)
+
+    t = threading.Thread(target=count)
+    t.start()
+    t0 = time.monotonic()
+    long_modes(error_estimate=False)
+    elapsed = time.monotonic() - t0
+    done.set()
+    t.join()
+    # A thread held off by the GIL would tick about once (at the start); a free one
+    # ticks every millisecond or so.
+    assert len(ticks) > 0.1 * elapsed / 0.001, f"{len(ticks)} ticks in {elapsed:.2f} s"
+
+
+def test_progress_reports_stages_and_an_exception_in_it_ends_the_run():
+    seen = []
+    long_modes(progress=lambda stages: seen.append(stages))
+    assert seen and all(isinstance(s, list) and s for s in seen)
+    assert all(s[0][0] == "python" for s in seen), seen[:3]  # outermost first
+    assert any(len(s) > 1 and ("equilibrium" in s[1][0] or "eigen" in s[1][0] or "assembling" in s[1][0]) for s in seen), seen
+
+
+    def stop(stages):
+        raise RuntimeError("enough")
+
+    with pytest.raises(RuntimeError, match="enough"):
+        long_modes(progress=stop)
+
+
+# --- arrays own their data --------------------------------------------------------------
+
+def test_arrays_own_their_data_and_outlive_the_result():
+    m = mmvlab.modes(mmvlab.load_scene(), segments=4, modes=5)
+    f, shapes = m.frequencies_hz, m.shapes
+    assert f.flags.owndata and shapes.flags.owndata
+    expected = f.copy()
+    del m
+    gc.collect()
+    for _ in range(3):
+        mmvlab.modes(mmvlab.load_scene(), segments=4, modes=5)
+    np.testing.assert_array_equal(f, expected)
+    assert np.isfinite(shapes[:, :, 0]).all()
