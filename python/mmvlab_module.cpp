@@ -5,6 +5,8 @@
 // plus the text report. While a study runs the GIL is released; at every progress step
 // (sim/core/progress.hpp) the module takes it back to run Python's signal handlers (Ctrl-C
 // raises KeyboardInterrupt between two steps) and the caller's progress callback.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
 #include "sim/app/study.hpp"
@@ -36,9 +39,13 @@ struct PyScene {
 /// turns it into one of mmvlab's errors on its way out.
 struct PythonErrorPending {};
 
-/// The callback of the study running now (None: none); set and read with the GIL held.
-py::object* g_callback = nullptr;
-std::chrono::steady_clock::time_point g_last_report;
+/// The callback of the study this thread runs (None: none); the checkpoint runs on the
+/// thread whose study records progress (the first of several running at once).
+thread_local py::object* g_callback = nullptr;
+thread_local std::chrono::steady_clock::time_point g_last_report;
+/// Studies running now, from any Python thread (changed with the GIL held): the
+/// checkpoint is installed while there is one.
+int g_running = 0;
 
 void checkpoint() {
   py::gil_scoped_acquire gil;
@@ -64,10 +71,10 @@ template <class Study>
 auto released(py::object callback, Study study) -> decltype(study()) {
   g_callback = &callback;
   g_last_report = {};
-  mmv::setProgressCheckpoint(&checkpoint);
+  if (g_running++ == 0) mmv::setProgressCheckpoint(&checkpoint);
   struct Restore {
-    ~Restore() {
-      mmv::setProgressCheckpoint(nullptr);
+    ~Restore() {  // with the GIL held again
+      if (--g_running == 0) mmv::setProgressCheckpoint(nullptr);
       g_callback = nullptr;
     }
   } restore;
@@ -143,6 +150,72 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   return py::make_tuple(s.json.dump(), s.text, warnings);
 }
 
+/// Responses H[k] (outputs x inputs) as one numpy array [frequency, output, input] that
+/// owns its copy.
+py::array_t<std::complex<double>> responses(const std::vector<Eigen::MatrixXcd>& h, Eigen::Index rows, Eigen::Index cols) {
+  py::array_t<std::complex<double>> a({static_cast<py::ssize_t>(h.size()), static_cast<py::ssize_t>(rows),
+                                       static_cast<py::ssize_t>(cols)});
+  auto v = a.mutable_unchecked<3>();
+  for (std::size_t k = 0; k < h.size(); ++k)
+    for (Eigen::Index o = 0; o < rows; ++o)
+      for (Eigen::Index i = 0; i < cols; ++i) v(k, o, i) = h[k](o, i);
+  return a;
+}
+
+py::dict stateSpace(const mmv::StateSpace& s) {
+  py::dict d;
+  d["E"] = s.E, d["A"] = s.A, d["B"] = s.B, d["C"] = s.C, d["D"] = s.D;  // Eigen matrices copied into numpy
+  d["input_names"] = s.input_names, d["input_units"] = s.input_units;
+  d["output_names"] = s.output_names, d["output_units"] = s.output_units, d["state_names"] = s.state_names;
+  return d;
+}
+
+/// frf and rom: the study, then what Python gets of it (`rom`: the romJson document).
+py::dict linear(const PyScene& scene, int segments, const std::vector<std::string>& inputs,
+                const std::vector<std::string>& outputs, std::optional<double> f_min, std::optional<double> f_max, int points,
+                int rom_modes, std::optional<std::pair<double, double>> band, bool residualize,
+                std::optional<double> damping, double rom_target, double target_error, double time_budget, bool rom,
+                py::object progress) {
+  if (!std::holds_alternative<mmv::ArticleScene>(scene.scene))
+    throw mmv::UsageError(std::string(rom ? "rom" : "frf") +
+                          " from Python takes the article's scenes; the isolator's is the command line's for now");
+  auto [sc, warnings] = withSegments(scene, segments);
+  mmv::app::LinearRequest r;
+  r.inputs = inputs;
+  r.outputs = outputs;
+  r.range_given = f_min || f_max;
+  r.f_min = f_min.value_or(r.f_min);
+  r.f_max = f_max.value_or(r.f_max);
+  r.points = points;
+  r.rom_modes = rom_modes;
+  r.band = band;
+  r.residualize = residualize;
+  r.damping_given = damping.has_value();
+  r.damping_ratio = damping.value_or(r.damping_ratio);
+  r.rom_target = rom_target;
+  r.target_error = target_error;
+  r.time_budget = time_budget;
+  r.segments_given = segments != 0;
+  r.front = Front::Python;
+  const mmv::app::LinearStudy a = released(progress, [&] { return mmv::app::runLinearStudy(std::get<mmv::ArticleScene>(sc), r); });
+  const nlohmann::ordered_json json = rom ? a.romJson() : a.frfJson();
+  mmv::app::checkResultFinite(json);
+  std::vector<Eigen::MatrixXcd> hr;
+  for (double w : a.w) hr.push_back(a.red.model.response(w));
+  py::dict d;
+  d["json"] = json.dump();
+  d["text"] = a.summaryText();
+  d["warnings"] = warnings;
+  // A VectorXd by value (not a Map of the study's vector, which dies here): numpy owns the copy.
+  d["frequencies_hz"] = Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(a.f.data(), static_cast<Eigen::Index>(a.f.size())));
+  const Eigen::Index no = a.lm.full.C.rows(), ni = a.lm.full.B.cols();
+  d["H"] = responses(a.hf, no, ni);
+  d["H_reduced"] = responses(hr, no, ni);
+  d["reduced"] = stateSpace(a.red.model);
+  if (rom) d["full"] = stateSpace(a.lm.full);
+  return d;
+}
+
 std::string sceneKind(const PyScene& s) { return std::holds_alternative<mmv::HamsasScene>(s.scene) ? "hamsas" : "article"; }
 
 }  // namespace
@@ -192,6 +265,9 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("strict"));
   m.def("modes", &modes, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("points"), py::arg("error_estimate"),
         py::arg("target_error"), py::arg("time_budget"), py::arg("progress"));
+  m.def("linear", &linear, py::arg("scene"), py::arg("segments"), py::arg("inputs"), py::arg("outputs"), py::arg("f_min"),
+        py::arg("f_max"), py::arg("points"), py::arg("rom_modes"), py::arg("band"), py::arg("residualize"), py::arg("damping"),
+        py::arg("rom_target"), py::arg("target_error"), py::arg("time_budget"), py::arg("rom"), py::arg("progress"));
   m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
         py::arg("band_max_hz"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),

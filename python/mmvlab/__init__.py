@@ -27,7 +27,7 @@ from . import _mmvlab
 from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene,  # noqa: F401
                       SceneError, SceneFileError, UnavailableError, UsageError)
 
-__all__ = ["load_scene", "modes", "check", "place_sensors", "Scene", "Error", "SceneError", "SceneFileError",
+__all__ = ["load_scene", "modes", "frf", "rom", "check", "place_sensors", "FrfResult", "RomResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning",
            "ModesResult", "CheckResult", "PlacementResult"]
 
@@ -135,6 +135,59 @@ def modes(scene, *, segments=0, modes=12, points=(), error_estimate=True, target
                                                 float(target_error), float(time_budget), progress)
     _warn(warns)
     return ModesResult(json_text, text, csv)
+
+
+class FrfResult(Result):
+    """Frequency responses: `frequencies_hz` (the grid, with every kept mode's half-power
+    band resolved), `H` and `H_reduced` (complex arrays [frequency, output, input] of the
+    full and the reduced model, in output units per input unit), `input_names`,
+    `output_names`, their units, and `reduced` (the reduced model's state-space matrices
+    E, A, B, C, D as numpy arrays: H = C (i w E - A)^-1 B + D)."""
+
+    def __init__(self, d):
+        super().__init__(d["json"], d["text"])
+        self.frequencies_hz = d["frequencies_hz"]
+        self.H = d["H"]
+        self.H_reduced = d["H_reduced"]
+        self.reduced = d["reduced"]
+        self.full = d.get("full")
+        self.input_names, self.input_units = self.reduced["input_names"], self.reduced["input_units"]
+        self.output_names, self.output_units = self.reduced["output_names"], self.reduced["output_units"]
+
+
+class RomResult(FrfResult):
+    """The reduced-order model (`rom.json` as `.json`): `reduced` and `full` hold E, A, B,
+    C, D (what rom.mat and full.mat hold), e.g. for `scipy.signal.StateSpace` after
+    `numpy.linalg.solve(E, A)`; the responses as `FrfResult`'s."""
+
+
+def _linear(scene, rom, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize, damping,
+            rom_target, target_error, time_budget, progress):
+    if band_hz is not None and len(band_hz) != 2:
+        raise UsageError(f"band_hz: expected (f_min_hz, f_max_hz) (got {band_hz!r})")
+    d = _mmvlab.linear(scene, int(segments), [str(x) for x in inputs], [str(x) for x in outputs],
+                       None if f_min_hz is None else float(f_min_hz), None if f_max_hz is None else float(f_max_hz),
+                       int(points), int(rom_modes), None if band_hz is None else (float(band_hz[0]), float(band_hz[1])),
+                       bool(residualize), None if damping is None else float(damping), float(rom_target),
+                       float(target_error), float(time_budget), rom, progress)
+    _warn(d["warnings"])
+    return RomResult(d) if rom else FrfResult(d)
+
+
+def frf(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
+        residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, progress=None):
+    """`mmvlab frf`: responses between `inputs` (table_x, torque:JOINT, force:POINT:AXIS, ...)
+    and `outputs` (POINT:AXIS[:disp|vel|acc|acc_abs]), full and reduced, from f_min_hz
+    (0.01) to f_max_hz (100). `damping`: every mode's ratio (None: the scene's, else 0.01)."""
+    return _linear(scene, False, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize,
+                   damping, rom_target, target_error, time_budget, progress)
+
+
+def rom(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
+        residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, progress=None):
+    """`mmvlab rom`: the reduced-order state-space model (and the full one) for control design."""
+    return _linear(scene, True, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize,
+                   damping, rom_target, target_error, time_budget, progress)
 
 
 def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):

@@ -64,6 +64,38 @@ def test_hamsas_modes_equal_the_cli_json():
     assert py.shapes.shape[0] == len(py.frequencies_hz)
 
 
+def test_frf_equals_the_cli_json_and_its_csv(tmp_path):
+    args = ["--segments", "8", "--input", "table_x", "--input", "force:link3a.tip:y", "--output", "link3a.tip:y",
+            "--output", "link2.tip:x:disp", "--to", "40", "--points", "120"]
+    py = mmvlab.frf(mmvlab.load_scene(), segments=8, inputs=["table_x", "force:link3a.tip:y"],
+                    outputs=["link3a.tip:y", "link2.tip:x:disp"], f_max_hz=40, points=120)
+    assert without_timing(py.json) == without_timing(cli_json("frf", *args))
+    assert py.H.shape == (len(py.frequencies_hz), 2, 2) and py.output_names == ["link3a.tip:y", "link2.tip:x:disp"]
+    # The same responses as the CSV `frf --out` writes (8 significant digits there).
+    out = tmp_path / "frf"
+    r = subprocess.run([MMVLAB, "frf", *args, "--out", str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    csv = np.genfromtxt(out / "frf_link3a.tip_y__force_link3a.tip_y.csv", delimiter=",", names=True)
+    np.testing.assert_allclose(csv["frequency_hz"], py.frequencies_hz, rtol=1e-7)
+    np.testing.assert_allclose(csv["magnitude_db"], 20 * np.log10(np.abs(py.H[:, 0, 1])), atol=1e-6)
+    np.testing.assert_allclose(csv["rom_magnitude_db"], 20 * np.log10(np.abs(py.H_reduced[:, 0, 1])), atol=1e-6)
+
+
+def test_rom_equals_the_cli_json_and_its_matrices_give_its_responses(tmp_path):
+    py = mmvlab.rom(mmvlab.load_scene(), segments=8, rom_modes=6)
+    r = subprocess.run([MMVLAB, "rom", "--segments", "8", "--rom-modes", "6", "--out", str(tmp_path / "rom"), "--json"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert without_timing(py.json) == without_timing(json.loads(r.stdout))
+    # H_reduced computed again from the matrices: C (i w E - A)^-1 B + D.
+    m = py.reduced
+    assert m["A"].shape == (12, 12) and py.full["A"].shape[0] > 12
+    for k in (0, len(py.frequencies_hz) // 2, -1):
+        w = 2 * np.pi * py.frequencies_hz[k]
+        h = m["C"] @ np.linalg.solve(1j * w * m["E"] - m["A"], m["B"]) + m["D"]
+        np.testing.assert_allclose(h, py.H_reduced[k], rtol=1e-9, atol=1e-12 * np.abs(py.H_reduced[k]).max())
+
+
 def test_check_equals_the_cli_json():
     py = mmvlab.check(mmvlab.load_scene(), segments=4, margin=30, band_hz=(0.5, 40))
     assert without_timing(py.json) == without_timing(cli_json("check", "--segments", "4", "--margin", "30",
@@ -93,6 +125,14 @@ def test_place_sensors_equals_the_cli_json():
     (lambda s: mmvlab.place_sensors(s, spacing=1e-4), "spacing"),
     (lambda s: mmvlab.place_sensors(s, method="best"), "method"),
     (lambda s: mmvlab.place_sensors(s, modes=[1, 2], below_hz=30), "below_hz"),
+    (lambda s: mmvlab.frf(s, points=1), "points"),
+    (lambda s: mmvlab.frf(s, rom_modes=0), "rom_modes"),
+    (lambda s: mmvlab.frf(s, damping=1.5), "damping"),
+    (lambda s: mmvlab.frf(s, f_min_hz=10, f_max_hz=1), "from"),
+    (lambda s: mmvlab.frf(s, inputs=["push:link1.tip"]), "input"),
+    (lambda s: mmvlab.frf(s, outputs=["link9.tip:y"]), "output"),
+    (lambda s: mmvlab.rom(s, target_error=0.6), "target_error"),
+    (lambda s: mmvlab.rom(s, segments=4, target_error=1e-2), "target_error"),
 ])
 def test_a_bad_argument_is_a_usage_error_naming_it(call, name):
     with pytest.raises(mmvlab.UsageError) as e:

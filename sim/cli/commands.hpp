@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
@@ -232,7 +233,8 @@ int runSceneCommand();
 int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
 int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
 /// --rom-modes / --band / --no-residualize as reduction options.
-ReductionOptions reductionOptions(const LinearArgs& args);
+/// The frf/rom options as the study layer's request (--band parsed; ranges checked by the study).
+app::LinearRequest linearRequest(const LinearArgs& args);
 // Shared by the command implementations.
 /// The scene (file or embedded default) with --segments and --no-gravity applied
 /// (app::loadScene; its warnings printed on stderr); the command dispatches on its kind

@@ -132,7 +132,7 @@ int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::ve
   OutputDir out(args.out, args.force);
   const HamsasModes h = analyseHamsas(scene.isolator);
   const StateSpace full = hamsasControlModel(h);
-  ReductionOptions options = reductionOptions(args);
+  ReductionOptions options = app::reductionOptions(linearRequest(args));
   options.drop_unseen = true;
   const ReducedModel red = reduceModal(full, options);
   std::vector<double> w(f);

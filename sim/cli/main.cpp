@@ -153,22 +153,19 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
                     "acceleration)");
     cmd->add_option("--from", lin.f_min, "Lowest frequency, Hz")->capture_default_str();
     cmd->add_option("--to", lin.f_max, "Highest frequency, Hz")->capture_default_str();
-    cmd->add_option("--points", lin.points, "Log-spaced frequencies")->capture_default_str()->check(CLI::Range(2, 100000));
-    cmd->add_option("--rom-modes", lin.rom_modes, "Modes kept in the reduced model")->capture_default_str()->check(CLI::Range(1, 10000));
+    cmd->add_option("--points", lin.points, "Log-spaced frequencies, 2 .. 100000")->capture_default_str();
+    cmd->add_option("--rom-modes", lin.rom_modes, "Modes kept in the reduced model, 1 .. 10000")->capture_default_str();
     cmd->add_option("--band", lin.band, "Keep the modes in F_MIN_HZ:F_MAX_HZ instead of --rom-modes");
     cmd->add_flag("--no-residualize", lin.no_residualize, "Truncate without static residualization");
-    cmd->add_option("--damping", lin.damping_ratio, "Modal damping ratio of every mode (default: the scene's damping, else 0.01)")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--damping", lin.damping_ratio, "Modal damping ratio of every mode, 0 .. 1 (default: the scene's damping, else 0.01)")->capture_default_str();
     cmd->add_flag("--json", lin.json, "Print the summary as JSON (docs/outputs.md)");
     cmd->add_option("--rom-target", lin.rom_target,
-                    "Report how many modes a reduced model needs for this FRF error relative to each pair's peak (0: skip)")
-        ->capture_default_str()
-        ->check(CLI::Range(0.0, 1.0));
+                    "Report how many modes a reduced model needs for this FRF error relative to each pair's peak, 0 .. 1 (0: skip)")
+        ->capture_default_str();
     cmd->add_option("--target-error", lin.target_error,
                     "Relative error to meet, e.g. 1e-3: the segments per link are chosen for every mode up to --to "
-                    "(as modes --target-error) and the reduced model keeps the fewest modes within it of each pair's peak")
-        ->check(CLI::Range(1e-12, 0.5));
-    cmd->add_option("--time-budget", lin.time_budget, "Wall seconds --target-error may take choosing the segments")
-        ->check(positive());
+                    "(as modes --target-error) and the reduced model keeps the fewest modes within it of each pair's peak; 1e-12 .. 0.5");
+    cmd->add_option("--time-budget", lin.time_budget, "Wall seconds --target-error may take choosing the segments");
     cmd->add_option("--out", lin.out, "Output directory");
     cmd->add_flag("--force", lin.force, "Replace files of the same names in --out");
   };

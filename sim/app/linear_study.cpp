@@ -1,0 +1,274 @@
+#include "sim/app/linear_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include <tbb/parallel_invoke.h>
+
+#include "sim/core/progress.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/linear_report.hpp"
+#include "sim/io/report.hpp"
+#include "sim/modes/system_modes.hpp"
+#include "sim/scene/stations.hpp"
+
+namespace mmv::app {
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string p; std::getline(ss, p, sep);) out.push_back(p);
+  return out;
+}
+
+/// x, y, z (0..2) and, where `rotations`, rx, ry, rz (3..5: about world x, y, z). Out of
+/// the plane (z, rx, ry) the spatial model only (checked with the model).
+int axisOf(const std::string& a, const std::string& what, bool translations, bool rotations) {
+  for (int k = translations ? 0 : 3; k < (rotations ? 6 : 3); ++k)
+    if (a == axisName(k)) return k;
+  const std::string allowed = !rotations ? "x, y or z" : !translations ? "rx, ry or rz" : "x, y, z, rx, ry or rz";
+  throw UsageError(what + ": axis must be " + allowed + " (got " + a + ")");
+}
+
+InputSpec parseInput(const std::string& text, const std::string& option) {
+  const auto p = split(text, ':');
+  const std::string what = option + " " + text;
+  if (text == "table_x" || text == "table_y" || text == "table_z")
+    return {text, InputKind::BaseAcceleration, "", text == "table_x" ? 0 : text == "table_y" ? 1 : 2};
+  if (p.size() == 2 && p[0] == "torque") return {text, InputKind::JointTorque, p[1], 0};
+  if (p.size() == 3 && p[0] == "force") return {text, InputKind::PointForce, p[1], axisOf(p[2], what, true, false)};
+  if (p.size() == 3 && p[0] == "moment") return {text, InputKind::PointMoment, p[1], axisOf(p[2], what, false, true)};
+  throw UsageError(what + ": expected table_x, table_y, table_z, torque:JOINT, force:POINT:x|y|z or moment:POINT:rx|ry|rz");
+}
+
+OutputSpec parseOutput(const std::string& text, const std::string& option) {
+  const auto p = split(text, ':');
+  const std::string what = option + " " + text;
+  if (p.size() < 2 || p.size() > 3) throw UsageError(what + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs]");
+  OutputSpec o{text, OutputKind::Acceleration, p[0], axisOf(p[1], what, true, true), true};
+  if (p.size() == 3) {
+    if (p[2] == "disp") o = {text, OutputKind::Displacement, p[0], o.axis, false};
+    else if (p[2] == "vel") o = {text, OutputKind::Velocity, p[0], o.axis, false};
+    else if (p[2] == "acc") o = {text, OutputKind::Acceleration, p[0], o.axis, false};
+    else if (p[2] != "acc_abs") throw UsageError(what + ": kind must be disp, vel, acc or acc_abs");
+  }
+  return o;
+}
+
+/// Checks the named points and joints against the scene before any model is built.
+void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, const std::vector<OutputSpec>& out,
+                const std::string& in_option, const std::string& out_option) {
+  const std::vector<std::string> points = articlePointNames(scene.article);
+  const std::string how = " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
+                          "<link>@<m>m or <link>@<fraction>)";
+  // Empty when `p` is a point or a station of the scene, else why not.
+  auto problem = [&](const std::string& p) -> std::string {
+    std::string error;
+    if (isStationName(p)) return parseStation(p, scene.article, error) ? "" : error;
+    return std::find(points.begin(), points.end(), p) != points.end() ? "" : "unknown point '" + p + "'" + how;
+  };
+  for (const auto& i : in) {
+    if ((i.kind == InputKind::PointForce || i.kind == InputKind::PointMoment) && !problem(i.target).empty())
+      throw UsageError(in_option + " " + i.name + ": " + problem(i.target));
+    if (i.kind != InputKind::JointTorque) continue;
+    const JointSpec* j = scene.article.findJoint(i.target);
+    std::string joints;
+    for (const auto& x : scene.article.joints) joints += (joints.empty() ? "" : ", ") + x.name;
+    if (!j) throw UsageError(in_option + " " + i.name + ": unknown joint '" + i.target + "' (known: " + joints + ")");
+    if (j->hold == JointHold::Locked)
+      throw UsageError(in_option + " " + i.name + ": joint '" + i.target +
+                       "' is locked (hold: locked), so a torque there moves nothing; use a free or servo joint");
+  }
+  for (const auto& o : out)
+    if (!problem(o.point).empty()) throw UsageError(out_option + " " + o.name + ": " + problem(o.point));
+}
+
+LinearModel build(const LinearRequest& r, const ArticleScene& scene, bool prepare_responses) {
+  const std::string in_option = optionName(r.front, "--input"), out_option = optionName(r.front, "--output");
+  std::vector<InputSpec> in;
+  std::vector<OutputSpec> out;
+  for (const auto& t : r.inputs) in.push_back(parseInput(t, in_option));
+  for (const auto& t : r.outputs) out.push_back(parseOutput(t, out_option));
+  checkNames(scene, in, out, in_option, out_option);
+  if (in.empty()) in = defaultInputs();
+  if (out.empty()) out = defaultOutputs(scene);
+  DampingSpec d;
+  d.modal_ratio = r.damping_ratio;
+  if (scene.damping && !r.damping_given) d = *scene.damping;
+  return buildLinearModel(scene, in, out, d, prepare_responses);
+}
+
+/// The mesh's share (LinearStudy::mesh_*): each vibration mode up to f_max, its
+/// estimated frequency error (estimateDiscretization: the scene at segments / 2 and / 4)
+/// over its damping ratio.
+void estimateMeshError(const LinearRequest& r, LinearStudy& a) {
+  const ProgressStage stage("the mesh's share of the FRF error (the modes again, and on a coarser mesh)");
+  ModesOptions mo;
+  mo.max_modes = 60;
+  mo.with_shapes = false;
+  mo.damping = a.lm.damping;
+  const ModesReport rep = runModes(a.scene, mo);
+  const DiscretizationEstimate d = estimateDiscretization(a.scene, rep);
+  if (!d.available) {
+    a.mesh_note = d.reason;
+    return;
+  }
+  a.mesh_error = 0;
+  for (std::size_t k = 0; k < rep.modes.size() && k < d.modes.size(); ++k) {
+    const ModeInfo& m = rep.modes[k];
+    if (!m.stable || m.rigid_body || !m.has_damping || m.frequency_hz > r.f_max || !d.modes[k].has_estimate) continue;
+    const double e = d.modes[k].estimated_relative_error, z = std::max(m.damping_ratio, 1e-12);
+    const double term = std::min(1.0, std::abs(e / std::complex<double>(e, z)));
+    if (term > a.mesh_error)
+      a.mesh_error = term, a.mesh_mode = m.number, a.mesh_mode_hz = m.frequency_hz, a.mesh_mode_error = e, a.mesh_mode_zeta = z;
+  }
+}
+
+void respond(const LinearRequest& r, const std::vector<double>& grid, LinearStudy& a) {
+  a.f = resolveResonances(grid, a.red.kept_frequencies_hz, a.red.kept_damping);
+  a.w = a.f;
+  for (double& x : a.w) x *= 2 * M_PI;
+  a.hf = fullResponses(a.lm.second_order, a.w);
+  a.err = compareResponses(a.hf, a.red.model, a.w);
+  const ProgressStage stage("the reduced model's error: fewest modes within the target");
+  if (r.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
+    modesForTarget(a.lm.full, reductionOptions(r), a.hf, a.w, r.rom_target,
+                   std::max(1, std::min(60, a.lm.full.numStates() / 2)), a.err);
+}
+
+/// target_error: the segments that hold every mode up to f_max within it
+/// (segmentsForTarget); the request then asks for the fewest kept modes within it.
+void chooseForTarget(LinearRequest& r, ArticleScene& scene, LinearStudy& a) {
+  const ModesSolve all = solveSceneModes(scene, {}, 0);
+  int in_band = 0;
+  for (Eigen::Index k = 0; k < all.frequencies_hz.size(); ++k) in_band += all.frequencies_hz[k] <= r.f_max;
+  a.segments = segmentsForTarget(scene, std::clamp(in_band, 1, 60), r.target_error, kMaxTargetSegments, r.time_budget);
+  overrideSegments(scene, a.segments->segments);
+  r.rom_target = r.target_error;
+  r.rom_modes = std::clamp(in_band, 1, 60);  // the candidates: the grid resolves each one's band
+}
+
+}  // namespace
+
+std::vector<double> checkLinearRequest(const LinearRequest& r) {
+  const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
+  if (!(r.f_min > 0) || !(r.f_max > r.f_min) || !std::isfinite(r.f_max))
+    throw UsageError(opt("--from") + "/" + opt("--to") + ": need 0 < FROM < TO (Hz)");
+  checkRange(r.front, "--points", r.points, 2, 100000);
+  checkRange(r.front, "--rom-modes", r.rom_modes, 1, 10000);
+  checkRange(r.front, "--damping", r.damping_ratio, 0, 1);
+  checkRange(r.front, "--rom-target", r.rom_target, 0, 1);
+  if (r.target_error != 0) checkRange(r.front, "--target-error", r.target_error, 1e-12, 0.5);
+  if (r.time_budget != 0) checkRange(r.front, "--time-budget", r.time_budget, 0, 1e9, /*open_low=*/true);
+  if (r.band && (!(r.band->first >= 0) || !(r.band->second > r.band->first) || !std::isfinite(r.band->second)))
+    throw UsageError(strf("%s: expected 0 <= F_MIN_HZ < F_MAX_HZ (got %g:%g)", opt("--band").c_str(), r.band->first,
+                          r.band->second));
+  if (r.target_error > 0) {
+    if (r.segments_given) throw UsageError(opt("--target-error") + " chooses the segments per link: drop " + opt("--segments"));
+    if (r.band) throw UsageError(opt("--target-error") + " chooses the modes kept: drop " + opt("--band"));
+  } else if (r.time_budget > 0) {
+    throw UsageError(opt("--time-budget") + " applies to " + opt("--target-error") + " only");
+  }
+  // A band alone sets the grid too: a model reduced to a band is judged there.
+  if (r.band && !r.range_given) {
+    const double from = r.band->first > 0 ? r.band->first : std::min(r.f_min, 0.01 * r.band->second);
+    return logFrequencies(from, r.band->second, r.points);
+  }
+  return logFrequencies(r.f_min, r.f_max, r.points);
+}
+
+ReductionOptions reductionOptions(const LinearRequest& r) {
+  ReductionOptions o;
+  o.modes = r.rom_modes;
+  if (r.band) {
+    std::tie(o.band_min_hz, o.band_max_hz) = *r.band;
+    o.modes = 0;
+  }
+  o.residualize = r.residualize;
+  return o;
+}
+
+LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& request) {
+  const std::vector<double> grid = checkLinearRequest(request);
+  LinearRequest r = request;
+  LinearStudy a;
+  ArticleScene scene = scene_in;
+  if (r.target_error > 0) chooseForTarget(r, scene, a);
+  a.lm = build(r, scene, false);
+  {
+    // The full model's responses are prepared (one Hessenberg reduction of the
+    // first-order matrix) on another core while the reduction runs.
+    const ProgressStage stage(strf("reducing: the state-space model's modes (%d states), the full model factorized beside it",
+                                   a.lm.full.numStates()));
+    tbb::parallel_invoke([&] { a.lm.second_order.prepare(); }, [&] { a.red = reduceModal(a.lm.full, reductionOptions(r)); });
+  }
+  a.scene = std::move(scene);
+  respond(r, grid, a);
+  estimateMeshError(r, a);
+  if (a.segments && a.err.needed.reached && a.err.needed.modes != r.rom_modes) {
+    // The fewest modes within the target, compared on the same grid (it resolves every
+    // candidate's half-power band, so the kept ones' too): no second full response.
+    r.rom_modes = a.err.needed.modes;
+    a.red = reduceModal(a.lm.full, reductionOptions(r));
+    const ModelError::ModesNeeded needed = a.err.needed;
+    a.err = compareResponses(a.hf, a.red.model, a.w);
+    a.err.needed = needed;
+  } else if (a.segments && !a.err.needed.reached) {
+    throw NumericalError(strf("%s %g: no reduced model of up to %d modes is within it of each pair's peak",
+                              optionName(r.front, "--target-error").c_str(), r.target_error, a.err.needed.modes));
+  }
+  return a;
+}
+
+std::string LinearStudy::summaryText() const {
+  std::string s = linearSummaryText(lm, red, err, f, hf);
+  if (mesh_error < 0) {
+    s += "\nThe mesh's share of the FRF error: not estimated (" + mesh_note + ")\n";
+  } else {
+    s += strf("\nThe mesh's share of the FRF error near the peaks (not in the reduced-model errors above, which compare "
+              "with the full model on this mesh; the two add): %.3g of the peak at mode %d (%.4g Hz: frequency "
+              "error %.2g over damping ratio %.3g)\n",
+              mesh_error, mesh_mode, mesh_mode_hz, mesh_mode_error, mesh_mode_zeta);
+    if (segments && mesh_error > segments->target)
+      s += strf("warning: --target-error %g holds each frequency within it, not the FRF near a lightly damped peak: mode "
+                "%d's is about %.3g of its peak off the converged response (the FRF within %g needs that mode's frequency "
+                "within %.2g); give more --segments or a larger target\n",
+                segments->target, mesh_mode, mesh_error, segments->target, segments->target * mesh_mode_zeta);
+  }
+  if (segments)
+    s += segmentsChoiceText(*segments) + strf("Reduced model for the target: %d modes kept, the fewest within %g of each pair's peak\n",
+                                              err.needed.modes, segments->target);
+  return s;
+}
+
+namespace {
+
+void addTargetAndMesh(const LinearStudy& a, nlohmann::ordered_json& j) {
+  if (a.segments) {
+    nlohmann::ordered_json t = segmentsChoiceJson(*a.segments);
+    t["rom_modes"] = a.err.needed.modes;
+    t["mesh_frf_error_within_target"] = a.mesh_error >= 0 && a.mesh_error <= a.segments->target;
+    j["target_error"] = t;
+  }
+  j["mesh_frf_error_estimate"] = a.mesh_error >= 0 ? nlohmann::ordered_json(a.mesh_error) : nlohmann::ordered_json(nullptr);
+  j["mesh_frf_error_mode"] = a.mesh_mode > 0 ? nlohmann::ordered_json(a.mesh_mode) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::ordered_json LinearStudy::frfJson() const {
+  nlohmann::ordered_json j = linearSummaryJson(lm, red, err, f, hf, scene.name);
+  addTargetAndMesh(*this, j);
+  return j;
+}
+
+nlohmann::ordered_json LinearStudy::romJson() const {
+  nlohmann::ordered_json j = mmv::romJson(lm, red, err, f);
+  addTargetAndMesh(*this, j);
+  return j;
+}
+
+}  // namespace mmv::app
