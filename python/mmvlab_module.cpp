@@ -18,9 +18,11 @@
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
+#include "sim/app/simulate_study.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
+#include "sim/core/text.hpp"
 
 namespace py = pybind11;
 
@@ -216,6 +218,51 @@ py::dict linear(const PyScene& scene, int segments, const std::vector<std::strin
   return d;
 }
 
+/// A record's rows as one [sample, column] array that owns its copy.
+py::array_t<double> table(const mmv::SimulationRecord& rec) {
+  const std::size_t n = rec.rows.size(), m = rec.columns.size();
+  py::array_t<double> a({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(m)});
+  auto v = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < m; ++j) v(i, j) = rec.rows[i][j];
+  return a;
+}
+
+py::dict simulate(const PyScene& scene, int segments, const std::string& integrator, std::optional<double> accuracy,
+                  std::optional<double> absolute_tolerance, std::optional<double> duration, std::optional<double> sample_rate,
+                  bool verify, std::optional<double> verify_target, std::optional<double> target_error,
+                  const std::vector<std::string>& points, std::optional<double> time_budget, py::object progress) {
+  auto [sc, warnings] = withSegments(scene, segments);
+  mmv::app::SimulateRequest r;
+  r.integrator = integrator;
+  r.accuracy = accuracy;
+  r.absolute_tolerance = absolute_tolerance;
+  r.duration = duration;
+  r.sample_rate = sample_rate;
+  r.verify = verify;
+  r.verify_target = verify_target;
+  r.target_error = target_error;
+  r.points = points;
+  r.time_budget = time_budget;
+  r.front = Front::Python;
+  const mmv::app::SimulateStudy s = released(progress, [&] { return mmv::app::runSimulateStudy(sc, r); });
+  py::dict d;
+  d["json"] = s.summary.dump();
+  d["text"] = s.text;
+  d["warnings"] = warnings;
+  // The column names of history.csv and states.csv, by the same function.
+  const auto csvNames = [](const std::vector<std::string>& columns) {
+    std::vector<std::string> out;
+    for (const auto& c : columns) out.push_back(mmv::csvColumnName(c));
+    return out;
+  };
+  d["columns"] = csvNames(s.result.record.columns);
+  d["history"] = table(s.result.record);
+  d["state_columns"] = csvNames(s.result.states.columns);
+  d["states"] = table(s.result.states);
+  return d;
+}
+
 std::string sceneKind(const PyScene& s) { return std::holds_alternative<mmv::HamsasScene>(s.scene) ? "hamsas" : "article"; }
 
 }  // namespace
@@ -268,6 +315,9 @@ PYBIND11_MODULE(_mmvlab, m) {
   m.def("linear", &linear, py::arg("scene"), py::arg("segments"), py::arg("inputs"), py::arg("outputs"), py::arg("f_min"),
         py::arg("f_max"), py::arg("points"), py::arg("rom_modes"), py::arg("band"), py::arg("residualize"), py::arg("damping"),
         py::arg("rom_target"), py::arg("target_error"), py::arg("time_budget"), py::arg("rom"), py::arg("progress"));
+  m.def("simulate", &simulate, py::arg("scene"), py::arg("segments"), py::arg("integrator"), py::arg("accuracy"),
+        py::arg("absolute_tolerance"), py::arg("duration"), py::arg("sample_rate"), py::arg("verify"),
+        py::arg("verify_target"), py::arg("target_error"), py::arg("points"), py::arg("time_budget"), py::arg("progress"));
   m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
         py::arg("band_max_hz"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),

@@ -27,8 +27,9 @@ from . import _mmvlab
 from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene,  # noqa: F401
                       SceneError, SceneFileError, UnavailableError, UsageError)
 
-__all__ = ["load_scene", "modes", "frf", "rom", "check", "place_sensors", "FrfResult", "RomResult", "Scene", "Error", "SceneError", "SceneFileError",
-           "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning",
+__all__ = ["load_scene", "modes", "frf", "rom", "simulate", "check", "place_sensors", "FrfResult", "RomResult",
+           "SimulateResult", "Scene", "Error", "SceneError", "SceneFileError",
+           "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
            "ModesResult", "CheckResult", "PlacementResult"]
 
 
@@ -36,9 +37,14 @@ class SceneWarning(UserWarning):
     """A value no lab article has (a likely unit slip), or a request the model adjusted."""
 
 
-def _warn(messages):
+class RunWarning(UserWarning):
+    """What a time run found worth a look (a torque over capacity, a table program past its
+    bandwidth, energy drift): the `warnings` of summary.json."""
+
+
+def _warn(messages, category=SceneWarning):
     for w in messages:
-        _warnings.warn(w, SceneWarning, stacklevel=3)
+        _warnings.warn(w, category, stacklevel=3)
 
 
 def _yaml_value(key, value):
@@ -188,6 +194,42 @@ def rom(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=Non
     """`mmvlab rom`: the reduced-order state-space model (and the full one) for control design."""
     return _linear(scene, True, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize,
                    damping, rom_target, target_error, time_budget, progress)
+
+
+class SimulateResult(Result):
+    """A time run: `.json` is summary.json; `history[column]` the sampled quantities
+    (numpy arrays, the columns of history.csv with their units in the name, e.g.
+    `time_s`, `joint2_torque_n_m`), `columns` their order, `history_array` the whole
+    [sample, column] array; `states` and `state_columns` the model's coordinates where
+    the run records them (states.csv)."""
+
+    def __init__(self, d):
+        super().__init__(d["json"], d["text"])
+        self.columns = d["columns"]
+        self.history_array = d["history"]
+        self.history = {c: self.history_array[:, k] for k, c in enumerate(self.columns)}
+        self.state_columns = d["state_columns"]
+        self.states = d["states"]
+
+
+def _optional(x):
+    return None if x is None else float(x)
+
+
+def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tolerance=None, duration=None,
+             sample_rate=None, verify=False, verify_target=None, target_error=None, points=(), time_budget=None,
+             progress=None):
+    """`mmvlab simulate`: the scene's time run (slews, table programs, free motion), or with
+    `target_error` (m) the cheapest run that meets it, chosen, run and verified. A None
+    option keeps the scene's setting; a given one is checked (0 s is not "the scene's")."""
+    d = _mmvlab.simulate(scene, int(segments), "" if integrator is None else str(integrator), _optional(accuracy),
+                         _optional(absolute_tolerance), _optional(duration), _optional(sample_rate), bool(verify),
+                         _optional(verify_target), _optional(target_error), [str(p) for p in points],
+                         _optional(time_budget), progress)
+    _warn(d["warnings"])
+    result = SimulateResult(d)
+    _warn(result.json.get("warnings", []), RunWarning)
+    return result
 
 
 def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):

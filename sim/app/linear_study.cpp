@@ -162,7 +162,7 @@ std::vector<double> checkLinearRequest(const LinearRequest& r) {
   checkRange(r.front, "--damping", r.damping_ratio, 0, 1);
   checkRange(r.front, "--rom-target", r.rom_target, 0, 1);
   if (r.target_error != 0) checkRange(r.front, "--target-error", r.target_error, 1e-12, 0.5);
-  if (r.time_budget != 0) checkRange(r.front, "--time-budget", r.time_budget, 0, 1e9, /*open_low=*/true);
+  if (r.time_budget != 0) checkRange(r.front, "--time-budget", r.time_budget, 0, kUnbounded, /*open_low=*/true);
   if (r.band && (!(r.band->first >= 0) || !(r.band->second > r.band->first) || !std::isfinite(r.band->second)))
     throw UsageError(strf("%s: expected 0 <= F_MIN_HZ < F_MAX_HZ (got %g:%g)", opt("--band").c_str(), r.band->first,
                           r.band->second));

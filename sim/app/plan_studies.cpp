@@ -35,7 +35,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
     throw UsageError(opt("--below-hz") + " and " + opt("--modes") + " both choose the target modes: give one");
   for (int m : r.modes)
     if (m < 1 || m > 100000) throw UsageError(strf("%s: mode numbers start at 1 (got %d)", opt("--modes").c_str(), m));
-  checkRange(r.front, "--below-hz", r.below_hz, 0, 1e9, /*open_low=*/true);
+  checkRange(r.front, "--below-hz", r.below_hz, 0, kUnbounded, /*open_low=*/true);
   checkRange(r.front, "--spacing", r.spacing_m, 1e-3, 100);
   checkRange(r.front, "--count", r.count, 1, 100000);
   if (!parsePlacementMethod(r.method, o.method))

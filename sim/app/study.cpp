@@ -48,9 +48,10 @@ LoadedScene loadScene(const SceneRequest& r) {
 
 void checkRange(Front front, const std::string& cli_flag, double v, double lo, double hi, bool open_low) {
   const bool ok = std::isfinite(v) && (open_low ? v > lo : v >= lo) && v <= hi;
-  if (!ok)
-    throw UsageError(strf("%s: expected %s %g and <= %g (got %g)", optionName(front, cli_flag).c_str(), open_low ? ">" : ">=",
-                          lo, hi, v));
+  if (ok) return;
+  const std::string low = strf("%s %g", open_low ? "above" : "of at least", lo);
+  throw UsageError(strf("%s: must be a finite number %s%s (got %g)", optionName(front, cli_flag).c_str(), low.c_str(),
+                        std::isfinite(hi) ? strf(" and at most %g", hi).c_str() : "", v));
 }
 
 const ArticleScene& articleOf(const Scene& scene, const std::string& verb) {

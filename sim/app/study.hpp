@@ -6,6 +6,7 @@
 /// `target_error=` in Python), runs the analysis and returns plain data with its JSON
 /// and text forms, made by the same writers whichever front end asked.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,9 @@ LoadedScene loadScene(const SceneRequest& request);
 /// else a UsageError naming the option); the notes it makes join `warnings`.
 void applySegments(Scene& scene, int segments, Front front, std::vector<std::string>& warnings);
 
-/// A number the user gave, checked against its range [lo, hi] (`open_low`: (lo, hi]);
-/// a UsageError naming the option as `front` spells it.
+/// A number the user gave, checked against its range [lo, hi] (`open_low`: (lo, hi];
+/// hi = infinity: no upper bound); a UsageError naming the option as `front` spells it.
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 void checkRange(Front front, const std::string& cli_flag, double value, double lo, double hi, bool open_low = false);
 
 /// The article of `scene`; a HAM-SAS scene is a UsageError naming `verb`.

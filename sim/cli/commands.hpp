@@ -4,6 +4,7 @@
 /// writes nothing to stdout; diagnostics go to stderr.
 
 #include <functional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ struct SceneArgs {
   bool no_gravity = false; ///< analyse without gravity (as the report's TREETOPS run).
   std::vector<std::string> sets;  ///< --set KEY=VALUE overrides of scene keys.
   bool strict = false;            ///< implausible values (sim/scene/plausibility.hpp) are errors, not warnings.
+  std::set<std::string> given;    ///< the options given on the command line ("--duration"), filled by main
 };
 
 struct ModesArgs : SceneArgs {

@@ -183,37 +183,27 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateArgs& sim) {
   CLI::App* si = app.add_subcommand("simulate", "Time run: slews, table programs, free motion; torques, energy, history");
   addSceneOptions(si, sim);
   si->add_flag("--json", sim.json, "Print the summary as JSON");
-  si->add_option("--integrator", sim.integrator, integratorHelp())->check(integratorName());
-  si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy in (0, 1) (default: the scene's)")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            double a = 0;
-            try { a = std::stod(v); } catch (...) { return std::string("not a number"); }
-            return a > 0 && a < 1 ? std::string() : std::string("a relative accuracy must be in (0, 1)");
-          },
-          "(0,1)"));
+  // Every value below is checked by the study (app::runSimulateStudy), once.
+  si->add_option("--integrator", sim.integrator, integratorHelp());
+  si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy in (0, 1) (default: the scene's)");
   si->add_option("--absolute-tolerance", sim.absolute_tolerance,
-                 "SUNDIALS integrators: absolute tolerance (m, rad, m/s, rad/s; default: the scene's, else the accuracy)")
-      ->check(positive());
-  si->add_option("--duration", sim.duration, "Seconds (default: the scene's)")->check(positive());
-  si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)")->check(positive());
+                 "SUNDIALS integrators: absolute tolerance (m, rad, m/s, rad/s; default: the scene's, else the accuracy)");
+  si->add_option("--duration", sim.duration, "Seconds (default: the scene's)");
+  si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)");
   si->add_flag("--verify", sim.verify,
               "Run the same run again at a 10x tighter tolerance and report the difference on the scored points as the "
               "run's estimated error (doubles the cost at least)");
   si->add_option("--verify-target", sim.verify_target,
-                 "Error the verification is held to, m (default 1 % of the scored points' largest motion); implies --verify")
-      ->check(positive());
+                 "Error the verification is held to, m (default 1 % of the scored points' largest motion); implies --verify");
   si->add_option("--target-error", sim.target_error,
                  "Error to meet on the scored points, m: the cheapest integrator, tolerance and segments that meet it are "
-                 "chosen on a pilot window, run and verified (docs/accuracy.md)")
-      ->check(positive());
+                 "chosen on a pilot window, run and verified (docs/accuracy.md)");
   si->add_option("--points", sim.points,
                  "Comma-separated link tips or stations --target-error is held on, e.g. link3a.tip (default: the scene's "
                  "score_points, else every tip)")
       ->delimiter(',');
   si->add_option("--time-budget", sim.time_budget,
-                 "Wall seconds --target-error may take in all (pilot, run, verification); past it the target is refused")
-      ->check(positive());
+                 "Wall seconds --target-error may take in all (pilot, run, verification); past it the target is refused");
   si->add_option("--out", sim.out, "Write history.csv and summary.json here");
   si->add_flag("--force", sim.force, "Replace files of the same names in --out");
   return si;
@@ -428,7 +418,11 @@ int main(int argc, char** argv) {
     if (sp->parsed()) return runSweepCommand(sw);
     lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
     lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
-    if (si->parsed()) return runSimulateCommand(sim);
+    if (si->parsed()) {
+      for (const CLI::Option* o : si->get_options())
+        if (o->count() > 0) sim.given.insert(o->get_name());
+      return runSimulateCommand(sim);
+    }
     if (tp->parsed()) return runTradeCommand(tr);
     if (pl->parsed()) return runPlaceSensorsCommand(ps);
     if (rn->parsed()) return mmv::figures::renderCommand(rd);

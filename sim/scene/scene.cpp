@@ -23,6 +23,10 @@ const std::string& sceneSource(const Scene& scene) {
   return std::visit([](const auto& s) -> const std::string& { return s.source; }, scene);
 }
 
+const std::string& sceneText(const Scene& scene) {
+  return std::visit([](const auto& s) -> const std::string& { return s.text; }, scene);
+}
+
 std::vector<std::string> overrideSegments(ArticleScene& scene, int n) {
   MMV_DEMAND(n >= 1 && n <= limits::kMaxSegments);  // the CLI checks --segments against the same range
   std::vector<std::string> notes;

@@ -117,6 +117,8 @@ using Scene = std::variant<ArticleScene, HamsasScene>;
 /// The name and source of either kind.
 const std::string& sceneName(const Scene& scene);
 const std::string& sceneSource(const Scene& scene);
+/// The scene file's text as read (before its --set patches), for a run's copy.
+const std::string& sceneText(const Scene& scene);
 
 
 /// Parses scene YAML text; `source_name` is used in error messages. `sets` are
