@@ -356,6 +356,21 @@ bool knownCommand(CLI::App& app, const std::string& name) {
   return false;
 }
 
+/// Every verb's --out: an empty path is refused by the parser.
+void refuseEmptyOutPaths(CLI::App& app) {
+  for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (CLI::Option* o = sub->get_option_no_throw("--out"))
+      o->check(CLI::Validator([](std::string& v) { return v.empty() ? std::string("empty path") : std::string(); }, "PATH"));
+}
+
+/// The options given on the command line ("--duration"): a study takes only those.
+std::set<std::string> givenOptions(const CLI::App* cmd) {
+  std::set<std::string> given;
+  for (const CLI::Option* o : cmd->get_options())
+    if (o->count() > 0) given.insert(o->get_name());
+  return given;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -393,9 +408,7 @@ int main(int argc, char** argv) {
   const auto [dsw, smg] = addDesignSweepCommands(app, ds, sm);
 
   app.add_subcommand("scene", "Print the embedded default scene (a starting point for your own)");
-  for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    if (CLI::Option* o = sub->get_option_no_throw("--out"))
-      o->check(CLI::Validator([](std::string& v) { return v.empty() ? std::string("empty path") : std::string(); }, "PATH"));
+  refuseEmptyOutPaths(app);
 
   if (argc > 1 && argv[1][0] != '-' && !knownCommand(app, argv[1])) return kUsage;
   try {
@@ -418,11 +431,8 @@ int main(int argc, char** argv) {
     if (sp->parsed()) return runSweepCommand(sw);
     lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
     lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
-    if (si->parsed()) {
-      for (const CLI::Option* o : si->get_options())
-        if (o->count() > 0) sim.given.insert(o->get_name());
-      return runSimulateCommand(sim);
-    }
+    sim.given = givenOptions(si);
+    if (si->parsed()) return runSimulateCommand(sim);
     if (tp->parsed()) return runTradeCommand(tr);
     if (pl->parsed()) return runPlaceSensorsCommand(ps);
     if (rn->parsed()) return mmv::figures::renderCommand(rd);
