@@ -1,0 +1,67 @@
+// The study layer's promise (sim/app/study.hpp): every option a study takes is checked
+// once, by the study, before any model is built, and a bad one is refused with the
+// option's name. The scene here cannot be built (a horizontal pendulum held by nothing:
+// its equilibrium is singular), so a refusal that came after the model would be exit 1
+// (numerical failure), not 64; each good value is shown to reach that failure.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+struct Case {
+  std::string verb, flag, bad, good;
+};
+
+TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
+  const std::string scene = write("singular.yaml", R"(name: horizontal pendulum
+materials: {m: {density: 1000, youngs_modulus: 1e9}}
+sections: {s: {shape: explicit, area: 1e-4, second_moment: 1e-10}}
+base: {direction_deg: -90}
+joints: [{name: j1, parent: base, angle_deg: 90, hold: free}]
+links: [{name: l1, joint: j1, material: m, section: s, length: 1.0, segments: 2}]
+)").string();
+  const std::vector<Case> cases = {
+      {"modes", "--modes", "-1", "3"},
+      {"modes", "--points", "l9.tip", "l1.tip"},
+      {"modes", "--target-error", "-1", ""},
+      {"check", "--margin", "100", "99"},
+      {"check", "--band", "5:1", "0:50"},
+      {"place-sensors", "--count", "0", "2"},
+      {"place-sensors", "--count", "100001", ""},
+      {"place-sensors", "--spacing", "0.0009", "0.001"},
+      {"place-sensors", "--below-hz", "0", "20"},
+      {"place-sensors", "--method", "best", "mke"},
+      {"frf", "--points", "1", "2"},
+      {"frf", "--rom-modes", "0", "1"},
+      {"frf", "--damping", "1.01", "1"},
+      {"frf", "--rom-target", "-0.1", "0"},
+      {"frf", "--target-error", "0.51", ""},
+      {"frf", "--input", "push:l1.tip", "force:l1.tip:y"},
+      {"frf", "--output", "l9.tip:y", "l1.tip:y"},
+      {"rom", "--time-budget", "-1", ""},
+      {"simulate", "--duration", "0", "0.1"},
+      {"simulate", "--sample-rate", "nan", "100"},
+      {"simulate", "--accuracy", "1", "0.001"},
+      {"simulate", "--integrator", "rk45", "rk_merson"},
+      {"simulate", "--absolute-tolerance", "-1e-6", ""},
+      {"simulate", "--verify-target", "0", ""},
+  };
+  for (const Case& c : cases) {
+    const std::string out = c.verb == "rom" ? " --out " + (dir_ / "rom").string() : "";
+    const Result bad = run(c.verb + " " + scene + " " + c.flag + " " + c.bad + out);
+    EXPECT_EQ(bad.code, 64) << c.verb << " " << c.flag << " " << c.bad << ": " << bad.err;
+    EXPECT_NE(bad.err.find(c.flag), std::string::npos) << c.verb << " " << c.flag << ": " << bad.err;
+    EXPECT_EQ(bad.err.find("numerical failure"), std::string::npos) << c.verb << " " << c.flag << ": " << bad.err;
+    if (c.good.empty()) continue;
+    const Result good = run(c.verb + " " + scene + " " + c.flag + " " + c.good + out);
+    EXPECT_EQ(good.code, 1) << c.verb << " " << c.flag << " " << c.good << " (the model is built, and fails): " << good.err;
+  }
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
