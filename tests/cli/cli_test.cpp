@@ -212,13 +212,7 @@ TEST_F(Cli, UsageErrorExits64) {
 
 TEST_F(Cli, NumericalFailureExits1AndNamesIt) {
   // A free pendulum released exactly horizontal: singular tangent stiffness.
-  const fs::path p = write("singular.yaml", R"(name: horizontal pendulum
-materials: {m: {density: 1000, youngs_modulus: 1e9}}
-sections: {s: {shape: explicit, area: 1e-4, second_moment: 1e-10}}
-base: {direction_deg: -90}
-joints: [{name: j1, parent: base, angle_deg: 90, hold: free}]
-links: [{name: l1, joint: j1, material: m, section: s, length: 1.0, segments: rigid}]
-)");
+  const fs::path p = write("singular.yaml", singularPendulumScene("rigid"));
   const Result r = run("modes --json " + p.string());
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.out, "");

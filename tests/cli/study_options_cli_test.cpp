@@ -18,13 +18,7 @@ struct Case {
 };
 
 TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
-  const std::string scene = write("singular.yaml", R"(name: horizontal pendulum
-materials: {m: {density: 1000, youngs_modulus: 1e9}}
-sections: {s: {shape: explicit, area: 1e-4, second_moment: 1e-10}}
-base: {direction_deg: -90}
-joints: [{name: j1, parent: base, angle_deg: 90, hold: free}]
-links: [{name: l1, joint: j1, material: m, section: s, length: 1.0, segments: 2}]
-)").string();
+  const std::string scene = write("singular.yaml", singularPendulumScene("2")).string();
   const std::vector<Case> cases = {
       {"modes", "--modes", "-1", "3"},
       {"modes", "--points", "l9.tip", "l1.tip"},

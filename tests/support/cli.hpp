@@ -26,6 +26,17 @@ inline std::string slurp(const fs::path& p) {
 
 /// A fresh, empty directory under the system's temporary one, private to this process
 /// and the running test: `prefix`PID_TESTNAME.
+/// A free pendulum released exactly horizontal: its tangent stiffness is singular, so
+/// every analysis fails building its equilibrium (exit 1, named). `segments`: "rigid" or N.
+inline std::string singularPendulumScene(const std::string& segments) {
+  return "name: horizontal pendulum\n"
+         "materials: {m: {density: 1000, youngs_modulus: 1e9}}\n"
+         "sections: {s: {shape: explicit, area: 1e-4, second_moment: 1e-10}}\n"
+         "base: {direction_deg: -90}\n"
+         "joints: [{name: j1, parent: base, angle_deg: 90, hold: free}]\n"
+         "links: [{name: l1, joint: j1, material: m, section: s, length: 1.0, segments: " + segments + "}]\n";
+}
+
 inline fs::path freshTestDir(const std::string& prefix) {
   const fs::path d = fs::temp_directory_path() / (prefix + std::to_string(::getpid()) + "_" +
                                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
