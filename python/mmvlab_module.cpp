@@ -19,6 +19,7 @@
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
 #include "sim/app/simulate_study.hpp"
+#include "sim/app/sweep_study.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
@@ -263,6 +264,19 @@ py::dict simulate(const PyScene& scene, int segments, const std::string& integra
   return d;
 }
 
+py::tuple sweep(const std::string& spec, const std::string& out, int jobs, std::optional<std::pair<int, int>> shard,
+                bool restart, py::object progress) {
+  mmv::app::DesignSweepRequest r;
+  r.spec = spec;
+  r.out = out;
+  r.jobs = jobs;
+  if (shard) r.shard.index = shard->first, r.shard.count = shard->second;
+  r.restart = restart;
+  r.front = Front::Python;
+  const mmv::app::DesignSweepStudy s = released(progress, [&] { return mmv::app::runDesignSweepStudy(r); });
+  return py::make_tuple(s.json.dump(), s.text, s.result.table);
+}
+
 std::string sceneKind(const PyScene& s) { return std::holds_alternative<mmv::HamsasScene>(s.scene) ? "hamsas" : "article"; }
 
 }  // namespace
@@ -318,6 +332,8 @@ PYBIND11_MODULE(_mmvlab, m) {
   m.def("simulate", &simulate, py::arg("scene"), py::arg("segments"), py::arg("integrator"), py::arg("accuracy"),
         py::arg("absolute_tolerance"), py::arg("duration"), py::arg("sample_rate"), py::arg("verify"),
         py::arg("verify_target"), py::arg("target_error"), py::arg("points"), py::arg("time_budget"), py::arg("progress"));
+  m.def("sweep", &sweep, py::arg("spec"), py::arg("out"), py::arg("jobs"), py::arg("shard"), py::arg("restart"),
+        py::arg("progress"));
   m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
         py::arg("band_max_hz"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),

@@ -18,6 +18,8 @@ callable taking a list of (stage, done, total, unit) tuples, outermost first.
 See docs/python.md.
 """
 
+import csv as _csv
+import io as _io
 import json as _json
 import warnings as _warnings
 
@@ -27,8 +29,8 @@ from . import _mmvlab
 from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene,  # noqa: F401
                       SceneError, SceneFileError, UnavailableError, UsageError)
 
-__all__ = ["load_scene", "modes", "frf", "rom", "simulate", "check", "place_sensors", "FrfResult", "RomResult",
-           "SimulateResult", "Scene", "Error", "SceneError", "SceneFileError",
+__all__ = ["load_scene", "modes", "frf", "rom", "simulate", "check", "place_sensors", "sweep", "FrfResult", "RomResult",
+           "SimulateResult", "SweepResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
            "ModesResult", "CheckResult", "PlacementResult"]
 
@@ -230,6 +232,40 @@ def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tole
     result = SimulateResult(d)
     _warn(result.json.get("warnings", []), RunWarning)
     return result
+
+
+class SweepResult(Result):
+    """A design sweep: `.json` is sweep.json; `table[column]` sweep.csv's columns (numpy
+    float arrays; text columns such as `status` and `check_overall` as lists), `columns`
+    their order, `csv` the file's text and `csv_path` where it is."""
+
+    def __init__(self, json_text, text, table):
+        super().__init__(json_text, text)
+        self.csv = table
+        self.csv_path = self.json["csv"]
+        rows = list(_csv.reader(_io.StringIO(table)))
+        self.columns = rows[0] if rows else []
+        self.table = {}
+        for k, c in enumerate(self.columns):
+            cells = [r[k] for r in rows[1:]]
+            try:
+                self.table[c] = _np.array([float(x) if x != "" else _np.nan for x in cells], dtype=float)
+            except ValueError:
+                self.table[c] = cells
+
+
+def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):
+    """`mmvlab sweep SPEC --out OUT`: the design sweep of a spec file (docs/planning.md),
+    its points on `jobs` threads (0: every core), resumable in `out` (journal.csv; a
+    journal of another sweep there is refused unless `restart`), `shard=(i, n)` for the
+    i-th of n slices. Writes journal.csv and sweep.csv into `out` (sweep.json and the
+    figures are the command line's); returns the table."""
+    if shard is not None and len(shard) != 2:
+        raise UsageError(f"shard: expected (i, n) (got {shard!r})")
+    json_text, text, table = _mmvlab.sweep(str(spec), str(out), int(jobs),
+                                           None if shard is None else (int(shard[0]), int(shard[1])), bool(restart),
+                                           progress)
+    return SweepResult(json_text, text, table)
 
 
 def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):

@@ -17,7 +17,7 @@ import pytest
 import mmvlab
 
 MMVLAB = os.environ["MMVLAB_BINARY"]
-SOURCE = os.environ["MMVLAB_SOURCE_DIR"]
+SOURCE = os.path.abspath(os.environ["MMVLAB_SOURCE_DIR"])
 TIMING_KEYS = {"time_s", "seconds", "wall_time_s"}
 
 
@@ -113,6 +113,34 @@ def test_simulate_equals_the_cli_json_and_history(tmp_path):
     for c in ("time_s", "joint2_torque_n_m", "gimbal_yaw_angle_deg"):
         k = header.index(c)
         np.testing.assert_allclose(rows[:, k], py.history[c], rtol=1e-7, atol=1e-9 * np.abs(py.history[c]).max())
+
+
+def test_sweep_equals_the_cli_sweep(tmp_path):
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(f"scene: {scene_path('mmv.yaml')}\n"
+                    "segments: 4\n"
+                    "parameters:\n"
+                    "  - {key: sections.link3_rod.radius, range: {from: 0.001, to: 0.003, samples: 3}}\n"
+                    "  - {key: links.link3.length, values: [0.5, 0.762]}\n"
+                    "design: grid\n"
+                    "outputs: [frequencies, mass, check]\n"
+                    "modes: 3\n")
+    py = mmvlab.sweep(spec, tmp_path / "py", jobs=2)
+    r = subprocess.run([MMVLAB, "sweep", str(spec), "--out", str(tmp_path / "cli"), "--jobs", "1", "--json"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    cli = json.loads(r.stdout)
+    assert (tmp_path / "py" / "sweep.csv").read_text() == (tmp_path / "cli" / "sweep.csv").read_text()
+    for k in ("fingerprint", "design", "points", "shard", "computed", "reused", "columns"):
+        assert py.json[k] == cli[k], k
+    assert py.columns == cli["columns"] and len(py.table["mode1_hz"]) == 6
+    assert py.table["status"] == ["ok"] * 6
+    again = mmvlab.sweep(spec, tmp_path / "py")  # resumed: every point already in the journal
+    assert again.json["computed"] == 0 and again.json["reused"] == 6
+    with pytest.raises(mmvlab.UsageError, match="jobs"):
+        mmvlab.sweep(spec, tmp_path / "x", jobs=-1)
+    with pytest.raises(mmvlab.UsageError, match="shard"):
+        mmvlab.sweep(spec, tmp_path / "x", shard=(3, 2))
 
 
 def test_check_equals_the_cli_json():

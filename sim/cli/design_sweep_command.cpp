@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/app/sweep_study.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/files.hpp"
 #include "sim/io/output_dir.hpp"
@@ -41,58 +42,28 @@ Shard chooseShard(const std::string& text) {
   return s;
 }
 
-nlohmann::ordered_json summary(const SweepContext& c, const SweepRun& run, const SweepRunResult& r) {
-  nlohmann::ordered_json j;
-  j["spec"] = c.spec.source;
-  j["scene"] = c.scene_source;
-  j["fingerprint"] = c.fingerprint;
-  j["design"] = c.spec.design == SweepSpec::Design::Grid ? "grid" : "latin_hypercube";
-  j["points"] = c.points.size();
-  j["shard"] = run.shard.text();
-  j["jobs"] = run.jobs;
-  j["computed"] = r.computed;
-  j["reused"] = r.reused;
-  j["seconds"] = r.seconds;
-  j["columns"] = c.header;
-  j["csv"] = r.csv;
-  return j;
-}
-
 }  // namespace
 
 int runDesignSweepCommand(const DesignSweepArgs& args) {
   return guarded([&] {
-    const SweepSpec spec = loadSweepSpec(args.spec);
-    const Shard shard = chooseShard(args.shard);
-    const SweepContext context = prepareSweep(spec);  // every key and output checked before anything is written
-    SweepRun run;
-    run.dir = shard.count > 1 ? (std::filesystem::path(args.out) / strf("shard-%d-of-%d", shard.index, shard.count)).string() : args.out;
-    run.fingerprint = context.fingerprint;
-    run.header = context.header;
-    run.total_points = static_cast<long>(context.points.size());
-    run.shard = shard;
-    run.jobs = args.jobs > 0 ? args.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    run.evaluate = [&context](long i) { return evaluateSweepPoint(context, i); };
-    const SweepRunResult r = [&] {
+    app::DesignSweepRequest r;
+    r.spec = args.spec;
+    r.out = args.out;
+    r.jobs = args.jobs;
+    r.shard = chooseShard(args.shard);
+    r.restart = args.force;
+    const app::DesignSweepStudy s = [&] {
       Progress progress("sweep, points done");
-      run.progress = [&progress](long done, long total) { progress.report(double(done), double(total)); };
-      return runSweep(run, args.force);
+      r.progress = [&progress](long done, long total) { progress.report(double(done), double(total)); };
+      return app::runDesignSweepStudy(r);
     }();
-    const nlohmann::ordered_json j = summary(context, run, r);
     // sweep.csv is the journal's table (runSweep wrote it whole); the summary and the
     // figures are one transaction on top of it: all of them replace the last run's, or none.
-    OutputDir out(run.dir, /*force=*/true);
-    out.write("sweep.json", j.dump(2) + "\n");
-    if (shard.count == 1) writeSweepPlots(r.table, out);
+    OutputDir out(s.dir, /*force=*/true);
+    out.write("sweep.json", s.json.dump(2) + "\n");
+    if (r.shard.count == 1) writeSweepPlots(s.result.table, out);
     out.commit();
-    if (args.json) {
-      emitResult(j);
-    } else {
-      emitResult(strf("sweep %s: %zu points (%s), shard %s: %ld computed, %ld already done, %.2f s on %d threads\n",
-                      spec.source.c_str(), context.points.size(), j["design"].get<std::string>().c_str(), shard.text().c_str(),
-                      r.computed, r.reused, r.seconds, run.jobs) +
-                 "wrote " + r.csv + "\n");
-    }
+    args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
   });
 }

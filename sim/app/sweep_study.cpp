@@ -1,0 +1,61 @@
+#include "sim/app/sweep_study.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <thread>
+
+#include "sim/core/progress.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/sweep_points.hpp"
+
+namespace mmv::app {
+
+DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
+  if (r.out.empty()) throw UsageError(optionName(r.front, "--out") + ": the sweep's directory is required");
+  checkRange(r.front, "--jobs", r.jobs, 0, 4096);
+  if (r.shard.count < 1 || r.shard.index < 1 || r.shard.index > r.shard.count)
+    throw UsageError(strf("%s: expected I/N with 1 <= I <= N (got %d/%d)", optionName(r.front, "--shard").c_str(),
+                          r.shard.index, r.shard.count));
+  const SweepSpec spec = loadSweepSpec(r.spec);
+  const SweepContext context = prepareSweep(spec);  // every key and output checked before anything is written
+  SweepRun run;
+  run.dir = r.shard.count > 1 ? (std::filesystem::path(r.out) / strf("shard-%d-of-%d", r.shard.index, r.shard.count)).string()
+                              : r.out;
+  run.fingerprint = context.fingerprint;
+  run.header = context.header;
+  run.total_points = static_cast<long>(context.points.size());
+  run.shard = r.shard;
+  run.jobs = r.jobs > 0 ? r.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  run.evaluate = [&context](long i) { return evaluateSweepPoint(context, i); };
+  run.progress = [&r](long done, long total) {
+    progressCount(done, total, "point");
+    if (r.progress) r.progress(done, total);
+  };
+  DesignSweepStudy s;
+  {
+    const ProgressStage stage("sweep points");
+    s.result = runSweep(run, r.restart);
+  }
+  s.dir = run.dir;
+  s.jobs = run.jobs;
+  auto& j = s.json;
+  j["spec"] = context.spec.source;
+  j["scene"] = context.scene_source;
+  j["fingerprint"] = context.fingerprint;
+  j["design"] = context.spec.design == SweepSpec::Design::Grid ? "grid" : "latin_hypercube";
+  j["points"] = context.points.size();
+  j["shard"] = run.shard.text();
+  j["jobs"] = run.jobs;
+  j["computed"] = s.result.computed;
+  j["reused"] = s.result.reused;
+  j["seconds"] = s.result.seconds;
+  j["columns"] = context.header;
+  j["csv"] = s.result.csv;
+  s.text = strf("sweep %s: %zu points (%s), shard %s: %ld computed, %ld already done, %.2f s on %d threads\n",
+                spec.source.c_str(), context.points.size(), j["design"].get<std::string>().c_str(), run.shard.text().c_str(),
+                s.result.computed, s.result.reused, s.result.seconds, run.jobs) +
+           "wrote " + s.result.csv + "\n";
+  return s;
+}
+
+}  // namespace mmv::app

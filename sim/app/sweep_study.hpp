@@ -1,0 +1,38 @@
+#pragma once
+/// `sweep`: a design sweep over scene keys (sim/scene/sweep_spec.hpp), each point's
+/// modes, check and fields evaluated by sim/io/sweep_points.hpp, run in parallel,
+/// resumably and in shards by sim/plan/sweep_runner.hpp into DIR (journal.csv,
+/// sweep.csv). (`sweep-config`, the configuration walk, is sim/modes/sweep.hpp.)
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/app/study.hpp"
+#include "sim/plan/sweep_runner.hpp"
+
+namespace mmv::app {
+
+struct DesignSweepRequest {
+  std::string spec;    ///< the sweep spec file.
+  std::string out;     ///< DIR: the journal and sweep.csv (a shard's: DIR/shard-I-of-N).
+  int jobs = 0;        ///< threads, >= 0 (0: every core).
+  Shard shard;         ///< 1/1: the whole sweep.
+  bool restart = false;  ///< a journal of another sweep in DIR is emptied (else refused)
+  std::function<void(long done, long total)> progress;
+  Front front = Front::Cli;
+};
+
+struct DesignSweepStudy {
+  SweepRunResult result;  ///< sweep.csv's path and contents
+  std::string dir;        ///< where the journal and sweep.csv are
+  int jobs = 1;
+  nlohmann::ordered_json json;  ///< sweep.json
+  std::string text;
+};
+
+DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& request);
+
+}  // namespace mmv::app
