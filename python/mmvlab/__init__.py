@@ -102,17 +102,35 @@ class ModesResult(Result):
         modes = self.json.get("modes", [])
         self.frequencies_hz = _np.array([m["frequency_hz"] for m in modes], dtype=float)
         self.modal_masses_kg = _np.array([m.get("modal_mass_kg", _np.nan) for m in modes], dtype=float)
-        shapes = [m.get("shape") for m in modes]
-        if shapes and all(shapes):
-            self.shape_points = [p["point"] for p in shapes[0]]
-            components = {}  # every component some point has, in the JSON's order
-            for p in shapes[0]:
-                components.update({k: None for k in p if k != "point"})
-            self.shape_components = list(components)
-            self.shapes = _np.array([[[p.get(k, _np.nan) for k in self.shape_components] for p in s] for s in shapes],
-                                    dtype=float)
-        else:
-            self.shape_points, self.shape_components, self.shapes = [], [], _np.zeros((len(modes), 0, 0))
+        self._shapes = None
+
+    def _read_shapes(self):
+        """The shapes as arrays, read from the document on first use (a sweep that asks
+        only for frequencies does not pay for them)."""
+        if self._shapes is None:
+            shapes = [m.get("shape") for m in self.json.get("modes", [])]
+            if shapes and all(shapes):
+                points = [p["point"] for p in shapes[0]]
+                components = {}  # every component some point has, in the JSON's order
+                for p in shapes[0]:
+                    components.update({k: None for k in p if k != "point"})
+                array = _np.array([[[p.get(k, _np.nan) for k in components] for p in s] for s in shapes], dtype=float)
+                self._shapes = (points, list(components), array)
+            else:
+                self._shapes = ([], [], _np.zeros((len(shapes), 0, 0)))
+        return self._shapes
+
+    @property
+    def shape_points(self):
+        return self._read_shapes()[0]
+
+    @property
+    def shape_components(self):
+        return self._read_shapes()[1]
+
+    @property
+    def shapes(self):
+        return self._read_shapes()[2]
 
 
 class CheckResult(Result):

@@ -285,10 +285,13 @@ def test_ctrl_c_interrupts_a_long_run_and_the_interpreter_goes_on(kind):
 
     timer = threading.Timer(clean * 0.2, ctrl_c)
     timer.start()
-    with pytest.raises(KeyboardInterrupt):
-        long_run(kind)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            long_run(kind)
+    finally:
+        timer.cancel()  # a run that failed otherwise must not interrupt the next test
+        timer.join()
     latency = time.monotonic() - fired[0]
-    timer.join()
     # Between two steps of the study, not at its end (which is 80 % of the run away).
     assert latency < clean * 0.5, f"stopped {latency:.3f} s after Ctrl-C, in a {clean:.3f} s run"
     assert mmvlab.modes(mmvlab.load_scene(), segments=4, modes=3).frequencies_hz.shape == (3,)
@@ -303,13 +306,15 @@ def test_the_gil_is_released_during_a_study():
             ticks.append(1)
             time.sleep(0.001)
 
-    t = threading.Thread(target=count)
+    t = threading.Thread(target=count, daemon=True)
     t.start()
     t0 = time.monotonic()
-    long_modes(error_estimate=False)
-    elapsed = time.monotonic() - t0
-    done.set()
-    t.join()
+    try:
+        long_modes(error_estimate=False)
+        elapsed = time.monotonic() - t0
+    finally:
+        done.set()  # a run that failed must not leave the thread counting (the interpreter would wait for it)
+        t.join()
     # A thread held off by the GIL would tick about once (at the start); a free one
     # ticks every millisecond or so.
     assert len(ticks) > 0.1 * elapsed / 0.001, f"{len(ticks)} ticks in {elapsed:.2f} s"
