@@ -113,7 +113,9 @@ std::pair<mmv::Scene, std::vector<std::string>> withSegments(const PyScene& s, i
 
 py::tuple modes(const PyScene& scene, int segments, int count, const std::vector<std::string>& points, bool error_estimate,
                 double target_error, double time_budget, py::object progress) {
-  auto [sc, warnings] = withSegments(scene, segments);
+  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
+  const mmv::Scene& sc = prepared.first;
+  const std::vector<std::string>& warnings = prepared.second;
   mmv::app::ModesRequest r;
   r.modes = count;
   r.points = points;
@@ -127,7 +129,9 @@ py::tuple modes(const PyScene& scene, int segments, int count, const std::vector
 }
 
 py::tuple check(const PyScene& scene, int segments, double margin, double band_min, double band_max, py::object progress) {
-  auto [sc, warnings] = withSegments(scene, segments);
+  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
+  const mmv::Scene& sc = prepared.first;
+  const std::vector<std::string>& warnings = prepared.second;
   mmv::app::CheckRequest r;
   r.margin_pct = margin;
   r.band_min_hz = band_min;
@@ -139,7 +143,9 @@ py::tuple check(const PyScene& scene, int segments, double margin, double band_m
 
 py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int>& target_modes, std::optional<double> below_hz,
                        double spacing, int count, bool triaxial, const std::string& method, py::object progress) {
-  auto [sc, warnings] = withSegments(scene, segments);
+  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
+  const mmv::Scene& sc = prepared.first;
+  const std::vector<std::string>& warnings = prepared.second;
   mmv::app::PlacementRequest r;
   r.modes = target_modes;
   r.below_given = below_hz.has_value();
@@ -182,7 +188,9 @@ py::dict linear(const PyScene& scene, int segments, const std::vector<std::strin
   if (!std::holds_alternative<mmv::ArticleScene>(scene.scene))
     throw mmv::UsageError(std::string(rom ? "rom" : "frf") +
                           " from Python takes the article's scenes; the isolator's is the command line's for now");
-  auto [sc, warnings] = withSegments(scene, segments);
+  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
+  const mmv::Scene& sc = prepared.first;
+  const std::vector<std::string>& warnings = prepared.second;
   mmv::app::LinearRequest r;
   r.inputs = inputs;
   r.outputs = outputs;
@@ -233,7 +241,9 @@ py::dict simulate(const PyScene& scene, int segments, const std::string& integra
                   std::optional<double> absolute_tolerance, std::optional<double> duration, std::optional<double> sample_rate,
                   bool verify, std::optional<double> verify_target, std::optional<double> target_error,
                   const std::vector<std::string>& points, std::optional<double> time_budget, py::object progress) {
-  auto [sc, warnings] = withSegments(scene, segments);
+  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
+  const mmv::Scene& sc = prepared.first;
+  const std::vector<std::string>& warnings = prepared.second;
   mmv::app::SimulateRequest r;
   r.integrator = integrator;
   r.accuracy = accuracy;
