@@ -104,18 +104,18 @@ PyScene loadScene(const std::optional<std::string>& path, const std::vector<std:
   return PyScene{std::move(l.scene), std::move(l.warnings)};
 }
 
-/// The scene a study runs on: `segments` (0: as loaded) applied to a copy.
-std::pair<mmv::Scene, std::vector<std::string>> withSegments(const PyScene& s, int segments) {
-  std::pair<mmv::Scene, std::vector<std::string>> out{s.scene, {}};
-  if (segments != 0) mmv::app::applySegments(out.first, segments, Front::Python, out.second);
+/// The scene a study runs on: `segments` (0: as loaded) applied to a copy; `warnings`
+/// holds only what applying them said (the loading's were given at load_scene).
+PyScene withSegments(const PyScene& s, int segments) {
+  PyScene out{s.scene, {}};
+  if (segments != 0) mmv::app::applySegments(out.scene, segments, Front::Python, out.warnings);
   return out;
 }
 
 py::tuple modes(const PyScene& scene, int segments, int count, const std::vector<std::string>& points, bool error_estimate,
                 double target_error, double time_budget, py::object progress) {
-  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
-  const mmv::Scene& sc = prepared.first;
-  const std::vector<std::string>& warnings = prepared.second;
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
   mmv::app::ModesRequest r;
   r.modes = count;
   r.points = points;
@@ -125,27 +125,25 @@ py::tuple modes(const PyScene& scene, int segments, int count, const std::vector
   r.segments_given = segments != 0;
   r.front = Front::Python;
   const mmv::app::ModesStudy s = released(progress, [&] { return mmv::app::runModesStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.csv, warnings);
+  return py::make_tuple(s.json.dump(), s.text, s.csv, prepared.warnings);
 }
 
 py::tuple check(const PyScene& scene, int segments, double margin, double band_min, double band_max, py::object progress) {
-  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
-  const mmv::Scene& sc = prepared.first;
-  const std::vector<std::string>& warnings = prepared.second;
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
   mmv::app::CheckRequest r;
   r.margin_pct = margin;
   r.band_min_hz = band_min;
   r.band_max_hz = band_max;
   r.front = Front::Python;
   const mmv::app::CheckStudy s = released(progress, [&] { return mmv::app::runCheckStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.markdown, warnings);
+  return py::make_tuple(s.json.dump(), s.text, s.markdown, prepared.warnings);
 }
 
 py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int>& target_modes, std::optional<double> below_hz,
                        double spacing, int count, bool triaxial, const std::string& method, py::object progress) {
-  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
-  const mmv::Scene& sc = prepared.first;
-  const std::vector<std::string>& warnings = prepared.second;
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
   mmv::app::PlacementRequest r;
   r.modes = target_modes;
   r.below_given = below_hz.has_value();
@@ -156,7 +154,7 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   r.method = method;
   r.front = Front::Python;
   const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, warnings);
+  return py::make_tuple(s.json.dump(), s.text, prepared.warnings);
 }
 
 /// Responses H[k] (outputs x inputs) as one numpy array [frequency, output, input] that
@@ -188,9 +186,8 @@ py::dict linear(const PyScene& scene, int segments, const std::vector<std::strin
   if (!std::holds_alternative<mmv::ArticleScene>(scene.scene))
     throw mmv::UsageError(std::string(rom ? "rom" : "frf") +
                           " from Python takes the article's scenes; the isolator's is the command line's for now");
-  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
-  const mmv::Scene& sc = prepared.first;
-  const std::vector<std::string>& warnings = prepared.second;
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
   mmv::app::LinearRequest r;
   r.inputs = inputs;
   r.outputs = outputs;
@@ -216,7 +213,7 @@ py::dict linear(const PyScene& scene, int segments, const std::vector<std::strin
   py::dict d;
   d["json"] = json.dump();
   d["text"] = a.summaryText();
-  d["warnings"] = warnings;
+  d["warnings"] = prepared.warnings;
   // A VectorXd by value (not a Map of the study's vector, which dies here): numpy owns the copy.
   d["frequencies_hz"] = Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(a.f.data(), static_cast<Eigen::Index>(a.f.size())));
   const Eigen::Index no = a.lm.full.C.rows(), ni = a.lm.full.B.cols();
@@ -241,9 +238,8 @@ py::dict simulate(const PyScene& scene, int segments, const std::string& integra
                   std::optional<double> absolute_tolerance, std::optional<double> duration, std::optional<double> sample_rate,
                   bool verify, std::optional<double> verify_target, std::optional<double> target_error,
                   const std::vector<std::string>& points, std::optional<double> time_budget, py::object progress) {
-  const auto prepared = withSegments(scene, segments);  // not a structured binding: a lambda captures it
-  const mmv::Scene& sc = prepared.first;
-  const std::vector<std::string>& warnings = prepared.second;
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
   mmv::app::SimulateRequest r;
   r.integrator = integrator;
   r.accuracy = accuracy;
@@ -260,7 +256,7 @@ py::dict simulate(const PyScene& scene, int segments, const std::string& integra
   py::dict d;
   d["json"] = s.summary.dump();
   d["text"] = s.text;
-  d["warnings"] = warnings;
+  d["warnings"] = prepared.warnings;
   // The column names of history.csv and states.csv, by the same function.
   const auto csvNames = [](const std::vector<std::string>& columns) {
     std::vector<std::string> out;
