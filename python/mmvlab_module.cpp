@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/app/component_studies.hpp"
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
@@ -283,6 +284,30 @@ py::tuple sweep(const std::string& spec, const std::string& out, int jobs, std::
   return py::make_tuple(s.json.dump(), s.text, s.result.table);
 }
 
+py::tuple converge(const PyScene& scene, int max_segments, int modes, py::object progress) {
+  mmv::app::ConvergeRequest r;
+  r.max_segments = max_segments;
+  r.modes = modes;
+  r.front = Front::Python;
+  const mmv::app::ConvergeStudy s = released(progress, [&] { return mmv::app::runConvergeStudy(scene.scene, r); });
+  return py::make_tuple(s.json.dump(), s.text, s.csv);
+}
+
+py::tuple compare(const PyScene& scene, int segments, const std::string& bc, const std::string& tip_mass,
+                  int component_modes, int modes, const std::vector<std::string>& topologies, py::object progress) {
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
+  mmv::app::CompareRequest r;
+  r.bc = bc;
+  r.tip_mass = tip_mass;
+  r.component_modes = component_modes;
+  r.modes = modes;
+  r.topologies = topologies;
+  r.front = Front::Python;
+  const mmv::app::CompareStudy s = released(progress, [&] { return mmv::app::runCompareStudy(sc, r); });
+  return py::make_tuple(s.json.dump(), s.text, s.markdown, prepared.warnings);
+}
+
 std::string sceneKind(const PyScene& s) { return std::holds_alternative<mmv::HamsasScene>(s.scene) ? "hamsas" : "article"; }
 
 }  // namespace
@@ -340,6 +365,9 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("verify_target"), py::arg("target_error"), py::arg("points"), py::arg("time_budget"), py::arg("progress"));
   m.def("sweep", &sweep, py::arg("spec"), py::arg("out"), py::arg("jobs"), py::arg("shard"), py::arg("restart"),
         py::arg("progress"));
+  m.def("converge", &converge, py::arg("scene"), py::arg("max_segments"), py::arg("modes"), py::arg("progress"));
+  m.def("compare", &compare, py::arg("scene"), py::arg("segments"), py::arg("bc"), py::arg("tip_mass"),
+        py::arg("component_modes"), py::arg("modes"), py::arg("topologies"), py::arg("progress"));
   m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
         py::arg("band_max_hz"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),

@@ -29,8 +29,8 @@ from . import _mmvlab
 from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene,  # noqa: F401
                       SceneError, SceneFileError, UnavailableError, UsageError)
 
-__all__ = ["load_scene", "modes", "frf", "rom", "simulate", "check", "place_sensors", "sweep", "FrfResult", "RomResult",
-           "SimulateResult", "SweepResult", "Scene", "Error", "SceneError", "SceneFileError",
+__all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate", "check", "place_sensors", "sweep",
+           "FrfResult", "RomResult", "SimulateResult", "SweepResult", "ConvergeResult", "CompareResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
            "ModesResult", "CheckResult", "PlacementResult"]
 
@@ -284,6 +284,51 @@ def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):
                                            None if shard is None else (int(shard[0]), int(shard[1])), bool(restart),
                                            progress)
     return SweepResult(json_text, text, table)
+
+
+class ConvergeResult(Result):
+    """Frequencies against segments per link: `.json` as `converge --json`; `segments`
+    (the meshes solved), `frequencies_hz[mesh, mode]` (NaN where a mesh has no such mode),
+    `richardson_hz` (the extrapolation, NaN where not estimated); `.csv` is converge.csv."""
+
+    def __init__(self, json_text, text, csv):
+        super().__init__(json_text, text)
+        self.csv = csv
+        runs = self.json.get("runs", [])
+        modes = self.json.get("modes", [])
+        self.segments = _np.array([r.get("segments") for r in runs], dtype=float)
+        f = _np.full((len(runs), len(modes)), _np.nan)
+        for j, m in enumerate(modes):
+            values = m.get("frequency_hz_by_run", [])
+            f[:len(values), j] = [_np.nan if v is None else v for v in values]
+        self.frequencies_hz = f
+        self.richardson_hz = _np.array([_np.nan if m.get("richardson_hz") is None else m["richardson_hz"]
+                                        for m in modes], dtype=float)
+
+
+class CompareResult(Result):
+    """Component modes against system modes: `.json` as `compare --json`, `.markdown` (compare.md)."""
+
+    def __init__(self, json_text, text, markdown):
+        super().__init__(json_text, text)
+        self.markdown = markdown
+
+
+def converge(scene, *, max_segments=64, modes=6, progress=None):
+    """`mmvlab converge`: each mode's frequency at 1, 2, 4, ... segments per link up to
+    `max_segments`, with its Richardson extrapolation and observed order."""
+    json_text, text, csv = _mmvlab.converge(scene, int(max_segments), int(modes), progress)
+    return ConvergeResult(json_text, text, csv)
+
+
+def compare(scene, *, segments=0, bc="clamped-free", tip_mass="torquer", component_modes=4, modes=10, topologies=(),
+            progress=None):
+    """`mmvlab compare`: component modes (each link alone, boundary condition `bc`, tip
+    mass rule or "MASS_KG[,INERTIA]") against the system modes, synthesis errors and MAC."""
+    json_text, text, markdown, warns = _mmvlab.compare(scene, int(segments), str(bc), str(tip_mass), int(component_modes),
+                                                       int(modes), [str(t) for t in topologies], progress)
+    _warn(warns)
+    return CompareResult(json_text, text, markdown)
 
 
 def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):

@@ -143,6 +143,19 @@ def test_sweep_equals_the_cli_sweep(tmp_path):
         mmvlab.sweep(spec, tmp_path / "x", shard=(3, 2))
 
 
+def test_converge_and_compare_equal_the_cli_json():
+    s = mmvlab.load_scene()
+    c = mmvlab.converge(s, max_segments=8, modes=3)
+    assert without_timing(c.json) == without_timing(cli_json("converge", "--max-segments", "8", "--modes", "3"))
+    np.testing.assert_array_equal(c.segments, [1, 2, 4, 8])
+    # The finest mesh's first frequency, a second way: modes at 8 segments.
+    assert c.frequencies_hz[-1, 0] == mmvlab.modes(s, segments=8, modes=1, error_estimate=False).frequencies_hz[0]
+    p = mmvlab.compare(s, segments=4, component_modes=3, modes=6, bc="pinned-free", tip_mass="1.5,0.01")
+    cli = cli_json("compare", "--segments", "4", "--component-modes", "3", "--modes", "6", "--bc", "pinned-free",
+                   "--tip-mass", "1.5,0.01")
+    assert without_timing(p.json) == without_timing(cli)
+
+
 def test_check_equals_the_cli_json():
     py = mmvlab.check(mmvlab.load_scene(), segments=4, margin=30, band_hz=(0.5, 40))
     assert without_timing(py.json) == without_timing(cli_json("check", "--segments", "4", "--margin", "30",
@@ -180,6 +193,12 @@ def test_place_sensors_equals_the_cli_json():
     (lambda s: mmvlab.frf(s, outputs=["link9.tip:y"]), "output"),
     (lambda s: mmvlab.rom(s, target_error=0.6), "target_error"),
     (lambda s: mmvlab.rom(s, segments=4, target_error=1e-2), "target_error"),
+    (lambda s: mmvlab.converge(s, max_segments=1025), "max_segments"),
+    (lambda s: mmvlab.converge(s, modes=0), "modes"),
+    (lambda s: mmvlab.compare(s, bc="welded"), "bc"),
+    (lambda s: mmvlab.compare(s, tip_mass="-1"), "tip_mass"),
+    (lambda s: mmvlab.compare(s, component_modes=201), "component_modes"),
+    (lambda s: mmvlab.compare(s, topologies=["ring"]), "topology"),
     (lambda s: mmvlab.simulate(s, duration=0), "duration"),
     (lambda s: mmvlab.simulate(s, duration=-1), "duration"),
     (lambda s: mmvlab.simulate(s, sample_rate=float("nan")), "sample_rate"),

@@ -1,5 +1,7 @@
 #include "sim/cli/commands.hpp"
 
+#include "sim/app/component_studies.hpp"
+
 #include "sim/core/text.hpp"
 
 #include <algorithm>
@@ -39,19 +41,7 @@ ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command)
 }
 
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {
-  if (!parseComponentBC(bc, o.bc))
-    throw UsageError("--bc: unknown boundary condition '" + bc +
-                     "' (known: clamped-free, pinned-free, free-free, clamped-pinned, pinned-pinned)");
-  if (parseTipMassRule(tip_mass, o.rule)) return;
-  // Explicit: "MASS" (kg) or "MASS,ROTARY_INERTIA" (kg, kg*m^2).
-  const auto comma = tip_mass.find(',');
-  const std::string ms = tip_mass.substr(0, comma), js = comma == std::string::npos ? "0" : tip_mass.substr(comma + 1);
-  char *e1 = nullptr, *e2 = nullptr;
-  const double m = std::strtod(ms.c_str(), &e1), j = std::strtod(js.c_str(), &e2);
-  if (ms.empty() || js.empty() || *e1 != '\0' || *e2 != '\0' || !std::isfinite(m) || !std::isfinite(j) || m < 0 || j < 0)
-    throw UsageError("--tip-mass: expected a rule (none, torquer, outboard) or MASS_KG[,ROTARY_INERTIA_KG_M2] >= 0 (got " +
-                     tip_mass + ")");
-  o.explicit_tip = LumpedMass{m, j};
+  app::parseComponentOptions(bc, tip_mass, app::Front::Cli, o);
 }
 
 int guarded(const std::function<int()>& body) {

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "sim/cli/figures.hpp"
+#include "sim/app/component_studies.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/report_compare.hpp"
@@ -28,28 +29,26 @@ void macPng(const std::string& path, const SynthesisResult& s, const std::string
 
 int runCompareCommand(const CompareArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "compare");
-    CompareOptions o;
-    parseComponentArgs(args.bc, args.tip_mass, o.component);
-    o.modes_per_link = args.component_modes;
-    o.system_modes = args.modes;
-    for (const auto& t : args.topologies) {
-      if (t != "open" && t != "closed") throw UsageError("--topology: unknown topology '" + t + "' (known: open, closed)");
-      o.topologies.push_back(t);
-    }
+    const Scene scene = loadScene(args);
+    app::CompareRequest r;
+    r.bc = args.bc;
+    r.tip_mass = args.tip_mass;
+    r.component_modes = args.component_modes;
+    r.modes = args.modes;
+    r.topologies = args.topologies;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);  // fail early, before the work
-    const CompareReport rep = runCompare(scene, o);
-    checkResultFinite(compareToJson(rep));  // before any file is committed
+    const app::CompareStudy s = app::runCompareStudy(scene, r);
+    const CompareReport& rep = s.report;
     if (out) {
-      out->write("compare.md", formatCompareMarkdown(rep));
+      out->write("compare.md", s.markdown);
       for (const auto& [name, text] : compareCsvFiles(rep)) out->write(name, text);
-      out->write("compare.json", compareToJson(rep).dump(2) + "\n");
-      macPng(out->stage("mac_assumed_modes.png"), rep.assumed, "MAC: " + rep.assumed.method + ": " + scene.name);
-      macPng(out->stage("mac_craig_bampton.png"), rep.craig_bampton, "MAC: " + rep.craig_bampton.method + ": " + scene.name);
+      out->write("compare.json", s.json.dump(2) + "\n");
+      macPng(out->stage("mac_assumed_modes.png"), rep.assumed, "MAC: " + rep.assumed.method + ": " + sceneName(scene));
+      macPng(out->stage("mac_craig_bampton.png"), rep.craig_bampton, "MAC: " + rep.craig_bampton.method + ": " + sceneName(scene));
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(compareToJson(rep)) : emitResult(formatCompareText(rep));
+    args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
   });
 }

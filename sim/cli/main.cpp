@@ -94,10 +94,9 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeArgs& conv) {
   CLI::App* c = app.add_subcommand("converge", "Frequencies against segments per link (1, 2, 4, ...), Richardson error, time");
   addSceneOptions(c, conv);
   c->add_flag("--json", conv.json, "Print JSON instead of tables");
-  c->add_option("--max-segments", conv.max_segments, "Finest segment count (a power of two is reached)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, mmv::limits::kMaxSegments));
-  c->add_option("--modes", conv.modes, "Number of modes to tabulate")->capture_default_str()->check(CLI::Range(1, 1000));
+  c->add_option("--max-segments", conv.max_segments, "Finest segment count, 1 .. 1024 (a power of two is reached)")
+      ->capture_default_str();
+  c->add_option("--modes", conv.modes, "Number of modes to tabulate, 1 .. 1000")->capture_default_str();
   c->add_option("--out", conv.out, "Also write converge.txt, converge.json, converge.csv and convergence.png here");
   c->add_flag("--force", conv.force, "Replace files of the same names in --out");
   return c;
@@ -113,10 +112,8 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& cmp) {
       ->capture_default_str();
   cp->add_option("--tip-mass", cmp.tip_mass, "Component tip mass: torquer (the report's TREETOPS choice), outboard, none, or MASS_KG[,INERTIA_KG_M2]")
       ->capture_default_str();
-  cp->add_option("--component-modes", cmp.component_modes, "Modes per link in the synthesis")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 200));
-  cp->add_option("--modes", cmp.modes, "System modes compared")->capture_default_str()->check(CLI::Range(1, 500));
+  cp->add_option("--component-modes", cmp.component_modes, "Modes per link in the synthesis, 1 .. 200")->capture_default_str();
+  cp->add_option("--modes", cmp.modes, "System modes compared, 1 .. 500")->capture_default_str();
   cp->add_option("--topology", cmp.topologies, "open, closed, or open,closed (side by side)")->delimiter(',');
   cp->add_option("--out", cmp.out, "Also write compare.md, CSV, JSON and MAC heat maps (PNG) into this directory");
   cp->add_flag("--force", cmp.force, "Replace files of the same names in --out");

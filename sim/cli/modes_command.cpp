@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "sim/app/component_studies.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/core/text.hpp"
@@ -70,22 +71,21 @@ int runModesCommand(const ModesArgs& args) {
 
 int runConvergeCommand(const ConvergeArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "converge");
+    const Scene scene = loadScene(args);
+    app::ConvergeRequest r;
+    r.max_segments = args.max_segments;
+    r.modes = args.modes;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const ConvergenceStudy c = runConvergence(scene, args.max_segments, args.modes);
-    const nlohmann::ordered_json json = convergenceToJson(c);
-    const std::string text = formatConvergenceText(c);
+    const app::ConvergeStudy s = app::runConvergeStudy(scene, r);
     if (out) {
-      checkResultFinite(json);  // before any file is committed
-      checkResultFinite(text);
-      out->write("converge.txt", text);
-      out->write("converge.json", json.dump(2) + "\n");
-      out->write("converge.csv", convergenceCsv(c));
-      convergencePlot(*out, c);
+      out->write("converge.txt", s.text);
+      out->write("converge.json", s.json.dump(2) + "\n");
+      out->write("converge.csv", s.csv);
+      convergencePlot(*out, s.study);
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(json) : emitResult(text);
+    args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
   });
 }
