@@ -139,6 +139,10 @@ def test_sweep_equals_the_cli_sweep(tmp_path):
     assert again.json["computed"] == 0 and again.json["reused"] == 6
     with pytest.raises(mmvlab.UsageError, match="jobs"):
         mmvlab.sweep(spec, tmp_path / "x", jobs=-1)
+    with pytest.raises(mmvlab.UsageError, match="jobs: must be a finite number of at least 0 and at most 1024"):
+        mmvlab.sweep(spec, tmp_path / "x", jobs=1025)
+    at_bound = mmvlab.sweep(spec, tmp_path / "bound", jobs=1024)  # the documented bound is accepted
+    assert at_bound.csv == py.csv and at_bound.json["jobs"] == 1024
     with pytest.raises(mmvlab.UsageError, match="shard"):
         mmvlab.sweep(spec, tmp_path / "x", shard=(3, 2))
 
@@ -175,6 +179,7 @@ def test_place_sensors_equals_the_cli_json():
 @pytest.mark.parametrize("call, name", [
     (lambda s: mmvlab.modes(s, segments=1025), "segments"),
     (lambda s: mmvlab.modes(s, segments=-1), "segments"),
+    (lambda s: mmvlab.modes(mmvlab.load_scene(scene_path("hamsas.yaml")), segments=-1), "segments"),
     (lambda s: mmvlab.modes(s, modes=-1), "modes"),
     (lambda s: mmvlab.modes(s, target_error=1e-3, modes=0), "target_error"),
     (lambda s: mmvlab.modes(s, points=["link9.tip"]), "points"),

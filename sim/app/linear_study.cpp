@@ -1,5 +1,7 @@
 #include "sim/app/linear_study.hpp"
 
+#include "sim/app/modes_study.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -58,21 +60,13 @@ OutputSpec parseOutput(const std::string& text, const std::string& option) {
   return o;
 }
 
-/// Checks the named points and joints against the scene before any model is built.
+/// Checks the named points and joints against the scene before any model is built
+/// (points and stations as every option naming them: checkedPoints).
 void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, const std::vector<OutputSpec>& out,
                 const std::string& in_option, const std::string& out_option) {
-  const std::vector<std::string> points = articlePointNames(scene.article);
-  const std::string how = " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
-                          "<link>@<m>m or <link>@<fraction>)";
-  // Empty when `p` is a point or a station of the scene, else why not.
-  auto problem = [&](const std::string& p) -> std::string {
-    std::string error;
-    if (isStationName(p)) return parseStation(p, scene.article, error) ? "" : error;
-    return std::find(points.begin(), points.end(), p) != points.end() ? "" : "unknown point '" + p + "'" + how;
-  };
   for (const auto& i : in) {
-    if ((i.kind == InputKind::PointForce || i.kind == InputKind::PointMoment) && !problem(i.target).empty())
-      throw UsageError(in_option + " " + i.name + ": " + problem(i.target));
+    if (i.kind == InputKind::PointForce || i.kind == InputKind::PointMoment)
+      checkedPoints({i.target}, scene.article, in_option + " " + i.name);
     if (i.kind != InputKind::JointTorque) continue;
     const JointSpec* j = scene.article.findJoint(i.target);
     std::string joints;
@@ -82,8 +76,7 @@ void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, con
       throw UsageError(in_option + " " + i.name + ": joint '" + i.target +
                        "' is locked (hold: locked), so a torque there moves nothing; use a free or servo joint");
   }
-  for (const auto& o : out)
-    if (!problem(o.point).empty()) throw UsageError(out_option + " " + o.name + ": " + problem(o.point));
+  for (const auto& o : out) checkedPoints({o.point}, scene.article, out_option + " " + o.name);
 }
 
 LinearModel build(const LinearRequest& r, const ArticleScene& scene, bool prepare_responses) {

@@ -31,7 +31,7 @@ LoadedScene loadScene(const SceneRequest& r) {
   LoadedScene out{r.path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", r.sets) : loadSceneFile(r.path, r.sets),
                   {}};
   auto* a = std::get_if<ArticleScene>(&out.scene);
-  if (!a && (r.segments > 0 || r.no_gravity))
+  if (!a && (r.segments != 0 || r.no_gravity))
     throw UsageError(optionName(r.front, "--segments") + " and " + optionName(r.front, "--no-gravity") +
                      " do not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
   if (!a) return out;

@@ -12,7 +12,7 @@ namespace mmv::app {
 
 DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
   if (r.out.empty()) throw UsageError(optionName(r.front, "--out") + ": the sweep's directory is required");
-  checkRange(r.front, "--jobs", r.jobs, 0, 4096);
+  checkRange(r.front, "--jobs", r.jobs, 0, 1024);
   if (r.shard.count < 1 || r.shard.index < 1 || r.shard.index > r.shard.count)
     throw UsageError(strf("%s: expected I/N with 1 <= I <= N (got %d/%d)", optionName(r.front, "--shard").c_str(),
                           r.shard.index, r.shard.count));

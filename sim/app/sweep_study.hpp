@@ -18,7 +18,7 @@ namespace mmv::app {
 struct DesignSweepRequest {
   std::string spec;    ///< the sweep spec file.
   std::string out;     ///< DIR: the journal and sweep.csv (a shard's: DIR/shard-I-of-N).
-  int jobs = 0;        ///< threads, >= 0 (0: every core).
+  int jobs = 0;        ///< threads, 0 .. 1024 (0: every core).
   Shard shard;         ///< 1/1: the whole sweep.
   bool restart = false;  ///< a journal of another sweep in DIR is emptied (else refused)
   std::function<void(long done, long total)> progress;

@@ -34,10 +34,7 @@ app::SceneRequest sceneRequest(const SceneArgs& args) {
 }
 
 ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command) {
-  Scene scene = loadScene(args);
-  if (auto* a = std::get_if<ArticleScene>(&scene)) return std::move(*a);
-  throw UsageError(command + ": " + sceneSource(scene) +
-                   " is a HAM-SAS isolator scene; it supports modes, frf, rom, simulate and trade (docs/hamsas.md)");
+  return app::articleOf(loadScene(args), command);
 }
 
 void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {

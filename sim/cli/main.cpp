@@ -328,7 +328,7 @@ std::pair<CLI::App*, CLI::App*> addDesignSweepCommands(CLI::App& app, DesignSwee
   CLI::App* s = app.add_subcommand("sweep", "Design sweep from a spec: parameters x outputs (modes tracked, check margins), in parallel, resumable, sharded");
   s->add_option("spec", ds.spec, "The sweep spec (YAML, docs/planning.md)")->required();
   s->add_option("--out", ds.out, "Results directory: sweep.csv, sweep.json, journal.csv (a rerun resumes it)")->required();
-  s->add_option("--jobs", ds.jobs, "Threads, 0 .. 4096 (default 0: every core)");
+  s->add_option("--jobs", ds.jobs, "Threads, 0 .. 1024 (default 0: every core)");
   s->add_option("--shard", ds.shard, "I/N: run the I-th of N deterministic slices into OUT/shard-I-of-N (default: SLURM_ARRAY_TASK_ID/COUNT when set)");
   s->add_flag("--force", ds.force, "Start over in a directory that holds another sweep's results");
   s->add_flag("--json", ds.json, "Print the summary as JSON");
