@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sim/app/component_studies.hpp"
+#include "sim/app/correlate_study.hpp"
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
@@ -139,6 +140,24 @@ py::tuple check(const PyScene& scene, int segments, double margin, double band_m
   r.front = Front::Python;
   const mmv::app::CheckStudy s = released(progress, [&] { return mmv::app::runCheckStudy(sc, r); });
   return py::make_tuple(s.json.dump(), s.text, s.markdown, prepared.warnings);
+}
+
+py::tuple correlate(const PyScene& scene, int segments, const std::string& measured, const std::vector<std::string>& pairs,
+                    double pair_distance, int count, double mac_threshold, double max_frequency_error,
+                    std::optional<double> damping, py::object progress) {
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
+  mmv::app::CorrelateRequest r;
+  r.measured = measured;
+  r.pairs = pairs;
+  r.pair_distance_m = pair_distance;
+  r.modes = count;
+  r.mac_threshold = mac_threshold;
+  r.max_frequency_error = max_frequency_error;
+  r.damping_ratio = damping;
+  r.front = Front::Python;
+  const mmv::app::CorrelateStudy s = released(progress, [&] { return mmv::app::runCorrelateStudy(sc, r); });
+  return py::make_tuple(s.json.dump(), s.text, s.mac_csv, prepared.warnings);
 }
 
 py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int>& target_modes, std::optional<double> below_hz,
@@ -370,6 +389,9 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("component_modes"), py::arg("modes"), py::arg("topologies"), py::arg("progress"));
   m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
         py::arg("band_max_hz"), py::arg("progress"));
+  m.def("correlate", &correlate, py::arg("scene"), py::arg("segments"), py::arg("measured"), py::arg("pairs"),
+        py::arg("pair_distance"), py::arg("modes"), py::arg("mac_threshold"), py::arg("max_frequency_error"),
+        py::arg("damping"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),
         py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("progress"));
 }

@@ -32,7 +32,7 @@ from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene, 
 __all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate", "check", "place_sensors", "sweep",
            "FrfResult", "RomResult", "SimulateResult", "SweepResult", "ConvergeResult", "CompareResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
-           "ModesResult", "CheckResult", "PlacementResult"]
+           "ModesResult", "CheckResult", "PlacementResult", "correlate", "CorrelateResult"]
 
 
 class SceneWarning(UserWarning):
@@ -40,8 +40,9 @@ class SceneWarning(UserWarning):
 
 
 class RunWarning(UserWarning):
-    """What a time run found worth a look (a torque over capacity, a table program past its
-    bandwidth, energy drift): the `warnings` of summary.json."""
+    """What a run found worth a look: a time run's (a torque over capacity, a table program
+    past its bandwidth, energy drift: the `warnings` of summary.json) or a correlation's
+    (model modes that stop below the test band: the `warnings` of correlation.json)."""
 
 
 def _warn(messages, category=SceneWarning):
@@ -350,3 +351,39 @@ def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, co
                                                    int(count), bool(triaxial), str(method), progress)
     _warn(warns)
     return PlacementResult(json_text, text)
+
+
+class CorrelateResult(Result):
+    """A measured test against the model (as correlation.json): `.mac` (array [test mode,
+    model mode], NaN where a shape is zero at the paired points), `.test_frequencies_hz`,
+    `.model_frequencies_hz`, `.pairs` (dicts: test, model, test_hz, model_hz,
+    frequency_error, mac), `.frequency_errors` (array, one per pair: f_model / f_test - 1),
+    `.frac` (array, one per measured function the model has: its FRAC), `.mac_csv`."""
+
+    def __init__(self, json_text, text, mac_csv):
+        super().__init__(json_text, text)
+        self.mac_csv = mac_csv
+        self.mac = _np.array([[_np.nan if v is None else v for v in row] for row in self.json["mac"]], dtype=float)
+        self.mac = self.mac.reshape(len(self.json["test_modes"]), len(self.json["model_modes"]))
+        self.test_frequencies_hz = _np.array([m["frequency_hz"] for m in self.json["test_modes"]], dtype=float)
+        self.model_frequencies_hz = _np.array([m["frequency_hz"] for m in self.json["model_modes"]], dtype=float)
+        self.pairs = self.json["pairs"]
+        self.frequency_errors = _np.array([p["frequency_error"] for p in self.pairs], dtype=float)
+        self.frac = _np.array([f["frac"] for f in self.json["frfs"] if "frac" in f], dtype=float)
+
+
+def correlate(scene, measured, *, segments=0, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,
+              max_frequency_error=0.3, damping=None, progress=None):
+    """`mmvlab correlate`: the measured UFF file `measured` (nodes, mode shapes, FRFs)
+    against the scene's model. `pairs`: "NODE=POINT" strings or a dict {node: point};
+    `damping`: every mode's ratio (None: the scene's damping, else 0.01)."""
+    if isinstance(pairs, dict):
+        pairs = [f"{node}={point}" for node, point in pairs.items()]
+    json_text, text, mac_csv, warns = _mmvlab.correlate(scene, int(segments), str(measured), [str(p) for p in pairs],
+                                                        float(pair_distance), int(modes), float(mac_threshold),
+                                                        float(max_frequency_error),
+                                                        None if damping is None else float(damping), progress)
+    _warn(warns)
+    result = CorrelateResult(json_text, text, mac_csv)
+    _warn(result.json.get("warnings", []), RunWarning)
+    return result

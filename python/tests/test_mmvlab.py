@@ -174,6 +174,47 @@ def test_place_sensors_equals_the_cli_json():
     assert len(py.chosen) == 6
 
 
+@pytest.fixture(scope="module")
+def measured_uff(tmp_path_factory):
+    """A "measured" set: the FRFs and modes `frf --out` writes with links 1 and 2 8 % stiffer."""
+    out = tmp_path_factory.mktemp("measured") / "frf"
+    r = subprocess.run([MMVLAB, "frf", "--segments", "4", "--set", "materials.carbon_carbon.youngs_modulus=44.6e9",
+                        "--out", str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return str(out / "frf.uff")
+
+
+def test_correlate_equals_the_cli_json(measured_uff):
+    s = mmvlab.load_scene()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", mmvlab.RunWarning)
+        py = mmvlab.correlate(s, measured_uff, segments=4, modes=10, mac_threshold=0.6, damping=0.02,
+                              pairs={1: "link1.root"})
+    cli = cli_json("correlate", "--measured", measured_uff, "--segments", "4", "--modes", "10", "--mac-threshold", "0.6",
+                   "--damping", "0.02", "--pair", "1=link1.root")
+    assert without_timing(py.json) == without_timing(cli)
+    assert py.mac.shape == (len(cli["test_modes"]), 10)
+    assert len(py.pairs) > 0 and py.frequency_errors.shape == (len(py.pairs),)
+    # Each pair's frequency error two ways: from the pair, and from the two frequency lists.
+    for p, e in zip(py.pairs, py.frequency_errors):
+        t, m = int(p["test"][1:]) - 1, int(p["model"][1:]) - 1
+        assert e == pytest.approx(py.model_frequencies_hz[m] / py.test_frequencies_hz[t] - 1, rel=1e-12, abs=1e-15)
+        assert py.mac[t, m] == pytest.approx(p["mac"])
+    assert py.frac.shape == (16,) and np.all((py.frac >= 0) & (py.frac <= 1))  # 4 tips x 2 axes x 2 table inputs
+
+
+def test_correlate_warns_what_the_cli_warns(measured_uff):
+    with pytest.warns(mmvlab.RunWarning, match="raise modes|raise --modes"):
+        mmvlab.correlate(mmvlab.load_scene(), measured_uff, segments=4, modes=3)
+
+
+def test_correlate_s_measured_file_errors_are_python_s():
+    with pytest.raises(mmvlab.SceneFileError, match="nonexistent.uff"):
+        mmvlab.correlate(mmvlab.load_scene(), "/nonexistent.uff", segments=2)
+    with pytest.raises(mmvlab.UsageError, match="correlate"):
+        mmvlab.correlate(mmvlab.load_scene(scene_path("hamsas.yaml")), "/nonexistent.uff")
+
+
 # --- values checked once, named as Python spells them --------------------------------
 
 @pytest.mark.parametrize("call, name", [
@@ -212,6 +253,13 @@ def test_place_sensors_equals_the_cli_json():
     (lambda s: mmvlab.simulate(s, absolute_tolerance=1e-6, integrator="rk_merson"), "absolute_tolerance"),
     (lambda s: mmvlab.simulate(s, time_budget=3), "time_budget"),
     (lambda s: mmvlab.simulate(s, target_error=1e-3, accuracy=1e-5), "target_error"),
+    (lambda s: mmvlab.correlate(s, "x.uff", pair_distance=0), "pair_distance"),
+    (lambda s: mmvlab.correlate(s, "x.uff", modes=501), "modes"),
+    (lambda s: mmvlab.correlate(s, "x.uff", mac_threshold=1.01), "mac_threshold"),
+    (lambda s: mmvlab.correlate(s, "x.uff", max_frequency_error=0), "max_frequency_error"),
+    (lambda s: mmvlab.correlate(s, "x.uff", damping=-0.01), "damping"),
+    (lambda s: mmvlab.correlate(s, "x.uff", pairs=["x=link1.tip"]), "pair"),
+    (lambda s: mmvlab.correlate(s, ""), "measured"),
 ])
 def test_a_bad_argument_is_a_usage_error_naming_it(call, name):
     with pytest.raises(mmvlab.UsageError) as e:

@@ -9,25 +9,8 @@
 #include "sim/io/report.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/plan/check.hpp"
-#include "sim/scene/stations.hpp"
 
 namespace mmv::app {
-
-std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
-                                       const std::string& option) {
-  const std::vector<std::string> points = articlePointNames(article);
-  for (const auto& n : names) {
-    std::string error;
-    if (isStationName(n)) {
-      if (!parseStation(n, article, error)) throw UsageError(option + ": " + error);
-    } else if (std::find(points.begin(), points.end(), n) == points.end()) {
-      throw UsageError(option + ": unknown point '" + n + "'" + didYouMean(n, points) +
-                       " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
-                       "<link>@<m>m or <link>@<fraction>)");
-    }
-  }
-  return names;
-}
 
 namespace {
 

@@ -33,8 +33,4 @@ struct ModesStudy {
 /// The modes of `scene` as `request` asks; every option checked here.
 ModesStudy runModesStudy(const Scene& scene, const ModesRequest& request);
 
-/// Checks named points and stations against the article (UsageError naming `option`).
-std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
-                                       const std::string& option);
-
 }  // namespace mmv::app

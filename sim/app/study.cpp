@@ -8,6 +8,7 @@
 #include "sim/core/text.hpp"
 #include "sim/io/finite_check.hpp"
 #include "sim/scene/plausibility.hpp"
+#include "sim/scene/stations.hpp"
 
 namespace mmv::app {
 
@@ -44,6 +45,22 @@ LoadedScene loadScene(const SceneRequest& r) {
                      (slips.size() > 1 ? strf("; %zu more", slips.size() - 1) : std::string()) + ")");
   for (const auto& w : slips) out.warnings.push_back("warning: " + w + " (likely a unit mistake)");
   return out;
+}
+
+std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
+                                       const std::string& option) {
+  const std::vector<std::string> points = articlePointNames(article);
+  for (const auto& n : names) {
+    std::string error;
+    if (isStationName(n)) {
+      if (!parseStation(n, article, error)) throw UsageError(option + ": " + error);
+    } else if (std::find(points.begin(), points.end(), n) == points.end()) {
+      throw UsageError(option + ": unknown point '" + n + "'" + didYouMean(n, points) +
+                       " (points are <joint>, <link>.root, <link>.tip and <link>.h1 .. <link>.h<segments>; stations "
+                       "<link>@<m>m or <link>@<fraction>)");
+    }
+  }
+  return names;
 }
 
 void checkRange(Front front, const std::string& cli_flag, double v, double lo, double hi, bool open_low) {

@@ -49,6 +49,10 @@ void applySegments(Scene& scene, int segments, Front front, std::vector<std::str
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 void checkRange(Front front, const std::string& cli_flag, double value, double lo, double hi, bool open_low = false);
 
+/// Checks named points and stations against the article (UsageError naming `option`).
+std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
+                                       const std::string& option);
+
 /// The article of `scene`; a HAM-SAS scene is a UsageError naming `verb`.
 const ArticleScene& articleOf(const Scene& scene, const std::string& verb);
 

@@ -1,56 +1,19 @@
 // mmvlab correlate: a measured modal test (UFF 58 FRFs, 55 mode shapes, 15/2411 nodes)
 // against the scene's model (sim/linear/correlation.hpp).
 #include <cmath>
-#include <fstream>
 #include <iostream>
+#include <optional>
 
+#include "sim/app/correlate_study.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/cli/figures.hpp"
-#include "sim/core/files.hpp"
-#include "sim/core/integrators.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/correlation_report.hpp"
 #include "sim/io/linear_report.hpp"
 #include "sim/io/output_dir.hpp"
-#include "sim/io/uff_read.hpp"
 
 namespace mmv::cli {
 namespace {
-
-MeasuredSet readMeasured(const std::string& path) {
-  std::string text, why;
-  if (!readInputFile(path, limits::kMaxMeasuredBytes, text, why)) throw SceneFileError(path + ": " + why);
-  const uff::File file = uff::read(text, path);
-  if (file.nodes.size() > static_cast<std::size_t>(limits::kMaxMeasuredNodes))
-    throw SceneError(strf("%s: %zu nodes, more than the %d a correlation pairs with the article", path.c_str(),
-                          file.nodes.size(), limits::kMaxMeasuredNodes));
-  return measuredSet(file, path);
-}
-
-CorrelateOptions options(const CorrelateArgs& args, const ArticleScene& scene) {
-  CorrelateOptions o;
-  o.pair_distance_m = args.pair_distance;
-  o.model_modes = args.modes;
-  o.mac_threshold = args.mac_threshold;
-  o.max_frequency_error = args.max_frequency_error;
-  o.damping.modal_ratio = args.damping_ratio;
-  if (scene.damping && !args.damping_given) o.damping = *scene.damping;
-  for (const auto& p : args.pairs) {
-    const auto eq = p.find('=');
-    int node = 0;
-    try {
-      std::size_t used = 0;
-      node = std::stoi(p.substr(0, eq), &used);
-      if (used != eq) throw std::invalid_argument(p);
-    } catch (const std::exception&) {
-      throw UsageError("--pair " + p + ": expected NODE=POINT (a node label of the file, a point or station of the scene)");
-    }
-    if (eq == std::string::npos || eq + 1 >= p.size())
-      throw UsageError("--pair " + p + ": expected NODE=POINT (a node label of the file, a point or station of the scene)");
-    o.named_pairs.push_back({node, p.substr(eq + 1)});
-  }
-  return o;
-}
 
 void writeFigures(const CorrelationResult& r, const ArticleScene& scene, OutputDir& out) {
   std::vector<std::string> rows, cols;
@@ -84,28 +47,29 @@ void writeFigures(const CorrelationResult& r, const ArticleScene& scene, OutputD
 
 int runCorrelateCommand(const CorrelateArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "correlate");
-    if (args.measured.empty()) throw UsageError("--measured: the measured UFF file is required");
-    const CorrelateOptions opt = options(args, scene);  // command-line errors before the file is read
-    const MeasuredSet test = readMeasured(args.measured);
-    std::unique_ptr<OutputDir> out;
-    if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const CorrelationResult r = correlate(scene, test, opt);
-    const nlohmann::ordered_json json = correlationJson(scene, r);
-    const std::string text = correlationText(scene, r);
-    checkResultFinite(json);
-    checkResultFinite(text);
+    const Scene scene = loadScene(args);
+    app::CorrelateRequest r;
+    r.measured = args.measured;
+    r.pair_distance_m = args.pair_distance;
+    r.pairs = args.pairs;
+    r.modes = args.modes;
+    r.mac_threshold = args.mac_threshold;
+    r.max_frequency_error = args.max_frequency_error;
+    if (args.damping_given) r.damping_ratio = args.damping_ratio;
+    std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
+    if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
+    const app::CorrelateStudy s = app::runCorrelateStudy(scene, r);
     if (out) {
-      out->write("correlation.json", json.dump(2) + "\n");
-      out->write("mac.csv", macCsv(r));
+      out->write("correlation.json", s.json.dump(2) + "\n");
+      out->write("mac.csv", s.mac_csv);
       try {
-        writeFigures(r, scene, *out);
+        writeFigures(s.result, app::articleOf(scene, "correlate"), *out);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(json) : emitResult(text);
+    args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
   });
 }

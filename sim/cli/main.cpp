@@ -303,21 +303,17 @@ CLI::App* addCorrelateCommand(CLI::App& app, CorrelateArgs& co) {
   c->add_option("--measured", co.measured, "The measured UFF file (datasets 15/2411 nodes, 55 modes, 58 functions, 164 units)")
       ->required();
   c->add_flag("--json", co.json, "Print JSON instead of tables");
-  c->add_option("--pair-distance", co.pair_distance, "A measured node farther than this from the article is not paired, m")
-      ->capture_default_str()
-      ->check(CLI::Range(1e-6, 100.0));
+  c->add_option("--pair-distance", co.pair_distance, "A measured node farther than this from the article is not paired, 1e-6 .. 100 m")
+      ->capture_default_str();
   c->add_option("--pair", co.pairs, "NODE=POINT: pair a node with a point or station by name (repeatable)");
-  c->add_option("--modes", co.modes, "Model modes compared")->capture_default_str()->check(CLI::Range(1, 500));
-  c->add_option("--mac-threshold", co.mac_threshold, "A test and a model mode pair only at or above this MAC")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+  c->add_option("--modes", co.modes, "Model modes compared, 1 .. 500")->capture_default_str();
+  c->add_option("--mac-threshold", co.mac_threshold, "A test and a model mode pair only at or above this MAC, 0 .. 1")
+      ->capture_default_str();
   c->add_option("--max-frequency-error", co.max_frequency_error,
-                "A test and a model mode pair only within this relative frequency difference, |f_model / f_test - 1|")
-      ->capture_default_str()
-      ->check(CLI::Range(1e-6, 100.0));
-  c->add_option("--damping", co.damping_ratio, "Modal damping ratio of every mode (default: the scene's damping, else 0.01)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+                "A test and a model mode pair only within this relative frequency difference, |f_model / f_test - 1|, 1e-6 .. 100")
+      ->capture_default_str();
+  c->add_option("--damping", co.damping_ratio, "Modal damping ratio of every mode, 0 .. 1 (default: the scene's damping, else 0.01)")
+      ->capture_default_str();
   c->add_option("--out", co.out, "Also write correlation.json, mac.csv, mac.png and a Bode overlay per function here");
   c->add_flag("--force", co.force, "Replace files of the same names in --out");
   return c;

@@ -105,11 +105,10 @@ std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet&
   for (const auto& named_pair : o.named_pairs) {
     const int node = named_pair.first;  // a plain variable: C++17 lambdas cannot capture a structured binding (clang)
     const std::string& point = named_pair.second;
-    const bool known = std::any_of(test.nodes.begin(), test.nodes.end(), [&](const MeasuredNode& n) { return n.label == node; });
-    if (!known) throw SceneError(test.source + ": --pair " + std::to_string(node) + "=" + point + ": the file defines no node " + std::to_string(node));
+    // Both checked by the study (sim/app/correlate_study.cpp) before any model was built.
+    MMV_DEMAND(std::any_of(test.nodes.begin(), test.nodes.end(), [&](const MeasuredNode& n) { return n.label == node; }));
     std::string error;
-    if (!PointRef::resolve(*s.model, scene.article, point, error))
-      throw SceneError(test.source + ": --pair " + std::to_string(node) + "=" + point + ": " + error);
+    MMV_DEMAND(PointRef::resolve(*s.model, scene.article, point, error));
     named[node] = point;
   }
   std::vector<NodePairing> out;

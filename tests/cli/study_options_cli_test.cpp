@@ -64,5 +64,33 @@ TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
   }
 }
 
+// correlate's options, with a measured file the default scene's frf wrote: each bad value
+// is refused by name before the file is read or the model built.
+TEST_F(Cli, EveryCorrelateOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
+  ASSERT_EQ(run("frf --segments 2 --out " + (dir_ / "measured").string()).code, 0);
+  const std::string scene = write("singular.yaml", singularPendulumScene("2")).string();
+  const std::string measured = " --measured " + (dir_ / "measured" / "frf.uff").string();
+  const std::vector<Case> cases = {
+      {"correlate", "--pair-distance", "0", "100"},       {"correlate", "--pair-distance", "100.1", ""},
+      {"correlate", "--modes", "501", "500"},             {"correlate", "--modes", "0", ""},
+      {"correlate", "--mac-threshold", "1.01", "1"},      {"correlate", "--mac-threshold", "-0.01", "0"},
+      {"correlate", "--max-frequency-error", "0", "1e-6"}, {"correlate", "--damping", "1.01", "1"},
+      {"correlate", "--pair", "1=l9.tip", "1=l1.tip"},   {"correlate", "--pair", "x=l1.tip", ""},
+      {"correlate", "--pair", "1=l1@2", "1=l1@1"},
+  };
+  for (const Case& c : cases) {
+    const Result bad = run(c.verb + " " + scene + measured + " " + c.flag + " " + c.bad);
+    EXPECT_EQ(bad.code, 64) << c.flag << " " << c.bad << ": " << bad.err;
+    EXPECT_NE(bad.err.find(c.flag), std::string::npos) << c.flag << ": " << bad.err;
+    if (c.good.empty()) continue;
+    const Result good = run(c.verb + " " + scene + measured + " " + c.flag + " " + c.good);
+    EXPECT_EQ(good.code, 1) << c.flag << " " << c.good << " (the model is built, and fails): " << good.err;
+  }
+  // A node the file does not define: refused with the file's name, before the model.
+  const Result node = run("correlate " + scene + measured + " --pair 999=l1.tip");
+  EXPECT_EQ(node.code, 65) << node.err;
+  EXPECT_NE(node.err.find("--pair 999=l1.tip: the file defines no node 999"), std::string::npos) << node.err;
+}
+
 }  // namespace
 }  // namespace mmv::cli_testing
