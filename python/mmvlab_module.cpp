@@ -350,6 +350,8 @@ PYBIND11_MODULE(_mmvlab, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const mmv::OptionError& e) {  // found by an analysis: the option as Python spells it
+      PyErr_SetString(usage, (mmv::app::optionName(Front::Python, e.option()) + e.rest()).c_str());
     } catch (const mmv::UsageError& e) {
       PyErr_SetString(usage, e.what());
     } catch (const mmv::SceneFileError& e) {

@@ -202,6 +202,60 @@ std::vector<LongFunction> longFunctions(const std::string& source, int max_lines
   return out;
 }
 
+/// User input is checked once, at the boundary (docs/architecture.md, "Checked once"):
+/// below the studies nothing throws a plain UsageError (an analysis that finds a request
+/// it cannot meet throws OptionError, which each front end names its own way) and
+/// nothing parses text, except where named here, each with its reason.
+const std::map<std::string, std::string>& boundaryFiles() {
+  static const std::map<std::string, std::string> files = {
+      {"sim/core/errors.hpp", "defines UsageError and OptionError"},
+      {"sim/scene/reader.cpp", "the scene reader: every patch (--set, Python's set=) is checked here with its key"},
+  };
+  return files;
+}
+const std::map<std::string, std::string>& parsingFiles() {
+  static const std::map<std::string, std::string> files = {
+      {"sim/scene/", "the scene reader: YAML scalars with their line and column"},
+      {"sim/io/uff_read.cpp", "the measured UFF reader, with line and column"},
+      {"sim/io/run_dir.cpp", "reads back a run directory mmvlab wrote"},
+      {"sim/io/output_dir.cpp", "reads its own staging directories' process ids"},
+      {"sim/plan/sweep_runner.cpp", "reads back its own journal and table"},
+      {"sim/modes/place_sensors.cpp", "reads back a station name it formatted (rounding past the tip)"},
+      {"facility/table_programs.cpp", "the table profile reader (a CSV file), with its line"},
+      {"renders/frame_memory.cpp", "reads /proc/meminfo"},
+  };
+  return files;
+}
+
+bool listed(const std::map<std::string, std::string>& files, const std::string& path) {
+  for (const auto& f : files)
+    if (path == f.first || (f.first.back() == '/' && path.rfind(f.first, 0) == 0)) return true;
+  return false;
+}
+
+std::vector<std::string> boundaryViolations(const std::string& path, const std::string& text) {
+  const std::string folder = folderOf(path);
+  if (folder == "sim/app" || folder == "sim/cli" || folder == "python") return {};
+  static const std::regex usage(R"(\bthrow\s+UsageError\b|\bUsageError\s*[({]|,\s*UsageError\s*,)");
+  static const std::regex parse(R"(\bsto(i|l|ll|ul|ull|f|d|ld)\s*\(|\bstrto(d|f|l|ll|ul|ull|ld)\s*\(|\bs?scanf\s*\(|\bstd::ato(i|f|l|ll)\s*\(|\bfrom_chars\s*\()");
+  std::vector<std::string> out;
+  std::istringstream lines(stripCode(text));
+  std::string line;
+  for (int n = 1; std::getline(lines, line); ++n) {
+    const std::string at = path + ":" + std::to_string(n) + ": ";
+    if (std::regex_search(line, usage) && !listed(boundaryFiles(), path))
+      out.push_back(at + "a UsageError below the studies: check the option in sim/app, or throw OptionError");
+    if (std::regex_search(line, parse) && !listed(parsingFiles(), path))
+      out.push_back(at + "parses text below the studies: parse it at the boundary (sim/app, the readers)");
+  }
+  return out;
+}
+
+TEST(Architecture, UserInputIsCheckedOnceAtTheBoundary) {
+  for (const auto& p : sources({"article", "facility", "sim", "renders"}))
+    for (const auto& v : boundaryViolations(repoPath(p), slurp(p))) ADD_FAILURE() << v;
+}
+
 TEST(Architecture, NoIncludePointsUp) {
   std::vector<std::string> bad;
   for (const auto& p : sources({"article", "facility", "sim", "renders", "python"})) {
@@ -244,6 +298,16 @@ TEST(Architecture, ChecksCatchWhatTheyShould) {
   EXPECT_EQ(layeringViolations("python/x.cpp", "#include \"renders/plot.hpp\"\n").size(), 1u);
   EXPECT_EQ(layeringViolations("python/x.cpp", "#include \"sim/cli/commands.hpp\"\n").size(), 1u);
   EXPECT_TRUE(layeringViolations("python/x.cpp", "#include \"sim/app/study.hpp\"\n").empty());
+  EXPECT_EQ(boundaryViolations("sim/modes/x.cpp", "void f() {\n  throw UsageError(\"--modes: 3\");\n}\n").size(), 1u);
+  EXPECT_EQ(boundaryViolations("sim/time/x.cpp", "MMV_THROW_UNLESS(x > 0, UsageError, \"x\");\n").size(), 1u);
+  EXPECT_EQ(boundaryViolations("sim/linear/x.cpp", "int n = std::stoi(text);\ndouble v = strtod(s, &e);\n").size(), 2u);
+  EXPECT_EQ(boundaryViolations("sim/plan/x.cpp", "std::sscanf(v, \"%d\", &n);\nint k = std::atoi(v);\n").size(), 2u);
+  EXPECT_TRUE(boundaryViolations("sim/time/x.cpp", "Impl(double a) : atol(a) {}\n").empty());  // a member named atol
+  EXPECT_TRUE(boundaryViolations("sim/modes/x.cpp", "throw OptionError(\"--modes\", \": 3\");\n"
+                                                    "catch (const UsageError& e) {}\n// throw UsageError(x)\n").empty());
+  EXPECT_TRUE(boundaryViolations("sim/app/x.cpp", "throw UsageError(std::to_string(std::stoi(x)));\n").empty());
+  EXPECT_TRUE(boundaryViolations("sim/scene/read_x.cpp", "double v = std::strtod(s, &e);\n").empty());
+  EXPECT_EQ(boundaryViolations("sim/scene/read_x.cpp", "throw UsageError(\"x\");\n").size(), 1u);
   std::string body = "namespace a {\nint f(int x) {\n";
   for (int i = 0; i < 90; ++i) body += "  x += 1;  // }\n";
   body += "  auto g = [&]() { return \"}\"; };\n  return x;\n}\nstruct S {\n  int h() { return 1; }\n};\n}\n";

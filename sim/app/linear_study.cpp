@@ -77,6 +77,13 @@ void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, con
                        "' is locked (hold: locked), so a torque there moves nothing; use a free or servo joint");
   }
   for (const auto& o : out) checkedPoints({o.point}, scene.article, out_option + " " + o.name);
+  if (scene.article.model == ArticleModel::Spatial) return;
+  const std::string planar = " is out of the plane, where the planar model does not move (model: spatial)";
+  for (const auto& i : in)
+    if (i.kind != InputKind::JointTorque && leavesThePlane(i.axis))
+      throw UsageError(in_option + " " + i.name + ": " + axisName(i.axis) + planar);
+  for (const auto& o : out)
+    if (leavesThePlane(o.axis)) throw UsageError(out_option + " " + o.name + ": " + axisName(o.axis) + planar);
 }
 
 LinearModel build(const LinearRequest& r, const ArticleScene& scene, bool prepare_responses) {

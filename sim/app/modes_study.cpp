@@ -22,6 +22,8 @@ void checkRequest(const ModesRequest& r, bool article) {
   if (!article && (r.target_error > 0 || r.time_budget > 0))
     throw UsageError(opt("--target-error") + " applies to the article's scenes (HAM-SAS has no segments)");
   if (r.target_error > 0) {
+    if (!(r.target_error < 1))
+      throw UsageError(strf("%s: a relative frequency error in (0, 1) (got %g)", opt("--target-error").c_str(), r.target_error));
     if (r.segments_given) throw UsageError(opt("--target-error") + " chooses the segments per link: drop " + opt("--segments"));
     if (r.modes == 0)
       throw UsageError(opt("--target-error") + " holds the modes shown to it: give " + opt("--modes") + " N (N >= 1), not 0");

@@ -33,6 +33,25 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A request an analysis finds it cannot meet once the model is known (a mode number the
+/// model does not have, more sensors than candidate stations). The option is kept apart
+/// from the message so that each front end names it its own way (the command line
+/// `--count`, Python `count`: the Python module's exception translator). Layers below
+/// the studies (sim/app) throw this, never a plain UsageError naming an option
+/// (tests/architecture_test.cpp).
+class OptionError : public UsageError {
+ public:
+  /// `option` as the command line spells it ("--count"); `rest` follows it in the
+  /// message (" 9: there are 8 candidate sensors", or ": no vibration mode below 5 Hz").
+  OptionError(const std::string& option, const std::string& rest)
+      : UsageError(option + rest), option_(option), rest_(rest) {}
+  const std::string& option() const { return option_; }
+  const std::string& rest() const { return rest_; }
+
+ private:
+  std::string option_, rest_;
+};
+
 /// Bad scene content (exit 65, EX_DATAERR). what(): "file:line:col: what is wrong (got X)".
 class SceneError : public std::runtime_error {
  public:

@@ -184,14 +184,9 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   step.emplace("inputs and outputs");
   SimTK::State st = lm.solved.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
-  for (const auto& in : inputs)
-    if (in.kind != InputKind::JointTorque && leavesThePlane(in.axis) && !model.isSpatial())
-      throw UsageError("input " + in.name + ": " + axisName(in.axis) +
-                       " is out of the plane, where the planar model does not move (model: spatial)");
-  for (const auto& out : outputs)
-    if (leavesThePlane(out.axis) && !model.isSpatial())
-      throw UsageError("output " + out.name + ": " + axisName(out.axis) +
-                       " is out of the plane, where the planar model does not move (model: spatial)");
+  // Out-of-plane inputs and outputs of a planar model are refused by the study (sim/app).
+  for (const auto& in : inputs) MMV_DEMAND(in.kind == InputKind::JointTorque || !leavesThePlane(in.axis) || model.isSpatial());
+  for (const auto& out : outputs) MMV_DEMAND(!leavesThePlane(out.axis) || model.isSpatial());
   const Eigen::MatrixXd Mqb = baseCoupling(model, st, dofs);
   lm.Bq = Eigen::MatrixXd::Zero(Z.cols(), inputs.size());
   for (std::size_t k = 0; k < inputs.size(); ++k)

@@ -16,7 +16,7 @@ namespace {
 ArticleScene withTopology(const ArticleScene& scene, const std::string& topology) {
   if (topology == "open") return openTopology(scene);
   if (topology == "closed" && scene.article.closures.empty())
-    throw UsageError("--topology closed: " + scene.source + " has no closures (add them under 'closures:')");
+    throw OptionError("--topology", " closed: " + scene.source + " has no closures (add them under 'closures:')");
   return scene;
 }
 

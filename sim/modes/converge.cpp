@@ -163,7 +163,7 @@ SegmentsLevel assessLevel(const std::vector<std::vector<ModeInfo>>& runs, int nu
 
 SegmentsChoice segmentsForTarget(const ArticleScene& scene, int num_modes, double target, int max_segments,
                                  double budget_s) {
-  MMV_THROW_UNLESS(target > 0 && target < 1, UsageError, strf("--target-error for modes is a relative frequency error in (0, 1) (got %g)", target));
+  MMV_DEMAND(target > 0 && target < 1);  // checked by the study (sim/app)
   SegmentsChoice c;
   c.target = target;
   const auto t0 = std::chrono::steady_clock::now();

@@ -23,13 +23,13 @@ std::vector<int> placementTargets(const ModalSolution& modes, const PlacementOpt
   if (o.modes.empty()) {
     for (int i = 0; i < n; ++i)
       if (modes.isStable(i) && !modes.isRigidBody(i) && modes.frequencyHz(i) < o.below_hz) out.push_back(i + 1);
-    if (out.empty()) throw UsageError("--below-hz: no vibration mode below " + std::to_string(o.below_hz) + " Hz");
+    if (out.empty()) throw OptionError("--below-hz", ": no vibration mode below " + std::to_string(o.below_hz) + " Hz");
     return out;
   }
   for (int m : o.modes) {
-    if (m < 1 || m > n) throw UsageError("--modes: mode " + std::to_string(m) + " does not exist (the model has " + std::to_string(n) + ")");
+    if (m < 1 || m > n) throw OptionError("--modes", ": mode " + std::to_string(m) + " does not exist (the model has " + std::to_string(n) + ")");
     if (!modes.isStable(m - 1) || modes.isRigidBody(m - 1))
-      throw UsageError("--modes: mode " + std::to_string(m) + " is not a vibration mode (rigid or unstable)");
+      throw OptionError("--modes", ": mode " + std::to_string(m) + " is not a vibration mode (rigid or unstable)");
     out.push_back(m);
   }
   return out;
@@ -39,10 +39,10 @@ void choosePlacement(PlacementStudy& study, const PlacementProblem& p, const Pla
                      const std::string& where) {
   const int blocks = static_cast<int>(study.candidates.size()), k = static_cast<int>(study.target_modes.size());
   if (o.count < 1 || o.count > blocks)
-    throw UsageError("--count " + std::to_string(o.count) + ": there are " + std::to_string(blocks) + " candidate " +
+    throw OptionError("--count", " " + std::to_string(o.count) + ": there are " + std::to_string(blocks) + " candidate " +
                      (o.triaxial ? "blocks" : "sensors") + " (" + where + ")");
   if (o.method == PlacementMethod::EffectiveIndependence && (o.triaxial ? directions * o.count : o.count) < k)
-    throw UsageError("--count " + std::to_string(o.count) + ": effective independence needs at least one measured direction per target mode (" +
+    throw OptionError("--count", " " + std::to_string(o.count) + ": effective independence needs at least one measured direction per target mode (" +
                      std::to_string(k) + ")");
   study.result = placeSensors(p, o.method, o.count);
 }

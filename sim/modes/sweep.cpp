@@ -146,7 +146,7 @@ class Walker {
 SweepResult runSweep(const ArticleScene& scene, const SweepOptions& o) {
   MMV_DEMAND(!o.axes.empty() && o.axes.size() <= 2);  // one or two axes (the CLI checks --grid)
   for (const auto& ax : o.axes)
-    if (!scene.article.findJoint(ax.joint)) throw UsageError("--grid: " + scene.source + " has no joint '" + ax.joint + "'");
+    if (!scene.article.findJoint(ax.joint)) throw OptionError("--grid", ": " + scene.source + " has no joint '" + ax.joint + "'");
   SweepResult r;
   r.axes = o.axes;
   const std::vector<double> a0 = o.axes[0].values();

@@ -262,7 +262,7 @@ SweepJournal readSweepJournal(const std::string& dir) {
 }
 
 std::string mergeSweepTables(const std::vector<std::string>& dirs) {
-  if (dirs.empty()) throw UsageError("sweep-merge: name the shard directories");
+  MMV_DEMAND(!dirs.empty());  // the command line requires at least one
   std::vector<SweepJournal> parts;
   for (const auto& d : dirs) parts.push_back(readSweepJournal(d));
   std::map<long, std::string> rows;

@@ -223,7 +223,7 @@ class TargetRunner {
 
 TargetOutcome runToTarget(const TradeProblem& problem, const TargetOptions& options,
                           const std::function<void(const std::string& stage, double fraction)>& stage) {
-  MMV_THROW_UNLESS(options.target_m > 0, UsageError, "--target-error must be > 0 m");
+  MMV_DEMAND(options.target_m > 0);  // checked by the study (sim/app/simulate_study.cpp)
   return TargetRunner(problem, options, stage).run();
 }
 

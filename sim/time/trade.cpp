@@ -21,7 +21,7 @@ TradeProblem tradeProblemBase(const std::string& scene_name, SimulationSpec simu
   TradeProblem p;
   if (duration > 0) simulation.duration = duration;
   if (simulation.duration * simulation.sample_rate_hz > limits::kMaxSamples)
-    throw UsageError(strf("--duration %g s at the scene's %g Hz is %.3g samples, above the limit of %.0f a run",
+    throw OptionError("--duration", strf(" %g s at the scene's %g Hz is %.3g samples, above the limit of %.0f a run",
                           simulation.duration, simulation.sample_rate_hz, simulation.duration * simulation.sample_rate_hz,
                           limits::kMaxSamples));
   p.scene_name = scene_name;
@@ -72,7 +72,7 @@ std::vector<std::string> scoredPoints(const TradeProblem& problem, const TradeOp
     const std::string what = error.empty() ? "'" + p + "' is not a " + problem.scorable_kind + " of the scene (known: " + known + ")"
                                            : "'" + p + "': " + error;
     if (from_scene) throw SceneError(spec0.score_where + ": simulation.score_points: " + what);
-    throw UsageError("--points: " + what);
+    throw OptionError("--points", ": " + what);
   }
   return points;
 }
