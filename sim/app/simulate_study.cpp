@@ -28,6 +28,9 @@ void checkRequest(const SimulateRequest& r) {
                                 {"--target-error", r.target_error},
                                 {"--time-budget", r.time_budget}})
     if (v) checkRange(r.front, flag, *v, 0, kUnbounded, /*open_low=*/true);
+  if (r.absolute_tolerance && !(*r.absolute_tolerance < 1))
+    throw UsageError(strf("%s: an absolute tolerance must be below 1 (got %g)", opt("--absolute-tolerance").c_str(),
+                          *r.absolute_tolerance));
   if (r.target_error) {
     if (r.accuracy) throw UsageError(opt("--target-error") + " chooses the accuracy: drop " + opt("--accuracy"));
     if (r.verify || r.verify_target)

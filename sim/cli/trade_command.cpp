@@ -103,6 +103,11 @@ int runTradeCommand(const TradeArgs& args) {
     o.cut_costlier = !args.all;  // a run past the cheapest within the target cannot be it either
     o.run_budget_s = args.run_budget;
     o.total_budget_s = args.time_budget;
+    for (const auto* list : {&o.accuracies, &o.modes_accuracies})
+      for (double a : *list)
+        if (!(a > 0 && a < 1))
+          throw UsageError(strf("%s: a relative accuracy must be in (0, 1) (got %g)",
+                                list == &o.accuracies ? "--accuracies" : "--modes-accuracies", a));
     for (const auto& name : o.integrators)
       if (!findIntegrator(name))
         throw UsageError("--integrators: unknown integrator '" + name + "'" + integratorSuggestion(name) + " (known: " +

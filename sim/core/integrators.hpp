@@ -10,12 +10,22 @@
 
 namespace mmv {
 
+/// Which integrator: what sim/time/run_integrator.cpp makes, in one exhaustive switch
+/// (a new entry that the factory does not handle is a compiler warning, an error in CI).
+enum class IntegratorId {
+  RkMerson, RkFeldberg, Rk3, Rk2, CPodes, Verlet, SemiExplicitEuler2, ExplicitEuler,  // Simbody's
+  CvodeBdf, CvodeAdams, ArkodeErk, ArkodeDirk, Ida,                                  // SUNDIALS'
+};
+
 struct IntegratorInfo {
   enum class Family { Simbody, Sundials };
   const char* name;         ///< as written in scenes and on the command line.
+  IntegratorId id;
   Family family;
   bool implicit;            ///< for stiff models (a Newton iteration per step).
   bool takes_absolute_tolerance;  ///< SUNDIALS' methods; Simbody's measure errors on the state's unit scale only.
+  bool projects_closures;   ///< holds closed loops on their constraints (Simbody's projection, IDA's DAE).
+  bool runs_modal_links;    ///< integrates links in modal coordinates (links[].modes): SUNDIALS' ODE methods.
   const char* description;  ///< one line for the help text and docs.
 };
 
@@ -23,6 +33,9 @@ struct IntegratorInfo {
 const std::vector<IntegratorInfo>& integratorTable();
 /// The entry named `name`, or nullptr.
 const IntegratorInfo* findIntegrator(const std::string& name);
+/// The entry of a name already checked (by the scene reader or a study); an unknown one
+/// is an InternalError (a name that skipped the boundary).
+const IntegratorInfo& integratorInfo(const std::string& name);
 /// True for the SUNDIALS integrators (the plugin's).
 bool isSundialsIntegrator(const std::string& name);
 /// "rk_merson, rk_feldberg, ..." (every name), for messages.

@@ -1,25 +1,51 @@
 #include "sim/time/run_integrator.hpp"
 
 #include <chrono>
-#include <map>
 
 #include "sim/core/errors.hpp"
 
 namespace mmv {
 namespace {
 
-std::unique_ptr<SimTK::Integrator> makeIntegrator(const std::string& name, const SimTK::MultibodySystem& sys,
-                                                  const std::string& source) {
-  if (name == "rk_merson") return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(sys);
-  if (name == "rk_feldberg") return std::make_unique<SimTK::RungeKuttaFeldbergIntegrator>(sys);
-  if (name == "rk3") return std::make_unique<SimTK::RungeKutta3Integrator>(sys);
-  if (name == "rk2") return std::make_unique<SimTK::RungeKutta2Integrator>(sys);
-  if (name == "cpodes") return std::make_unique<SimTK::CPodesIntegrator>(sys, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
-  if (name == "verlet") return std::make_unique<SimTK::VerletIntegrator>(sys);
-  if (name == "semi_explicit_euler2") return std::make_unique<SimTK::SemiExplicitEuler2Integrator>(sys);
-  if (name == "explicit_euler") return std::make_unique<SimTK::ExplicitEulerIntegrator>(sys);
-  throw SceneError(source + ": unknown integrator '" + name + "'" + integratorSuggestion(name) + " (known: " +
-                   integratorNames() + ")");
+/// Simbody's integrator for `id`; nullptr for SUNDIALS' (sundialsMethod). Every id is
+/// named in one of the two switches (no default: a new id unhandled is a warning).
+std::unique_ptr<SimTK::Integrator> makeSimbodyIntegrator(IntegratorId id, const SimTK::MultibodySystem& sys) {
+  switch (id) {
+    case IntegratorId::RkMerson: return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(sys);
+    case IntegratorId::RkFeldberg: return std::make_unique<SimTK::RungeKuttaFeldbergIntegrator>(sys);
+    case IntegratorId::Rk3: return std::make_unique<SimTK::RungeKutta3Integrator>(sys);
+    case IntegratorId::Rk2: return std::make_unique<SimTK::RungeKutta2Integrator>(sys);
+    case IntegratorId::CPodes:
+      return std::make_unique<SimTK::CPodesIntegrator>(sys, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
+    case IntegratorId::Verlet: return std::make_unique<SimTK::VerletIntegrator>(sys);
+    case IntegratorId::SemiExplicitEuler2: return std::make_unique<SimTK::SemiExplicitEuler2Integrator>(sys);
+    case IntegratorId::ExplicitEuler: return std::make_unique<SimTK::ExplicitEulerIntegrator>(sys);
+    case IntegratorId::CvodeBdf:
+    case IntegratorId::CvodeAdams:
+    case IntegratorId::ArkodeErk:
+    case IntegratorId::ArkodeDirk:
+    case IntegratorId::Ida: return nullptr;
+  }
+  return nullptr;
+}
+
+SundialsMethod sundialsMethod(IntegratorId id) {
+  switch (id) {
+    case IntegratorId::CvodeBdf: return SundialsMethod::CvodeBdf;
+    case IntegratorId::CvodeAdams: return SundialsMethod::CvodeAdams;
+    case IntegratorId::ArkodeErk: return SundialsMethod::ArkodeErk;
+    case IntegratorId::ArkodeDirk: return SundialsMethod::ArkodeDirk;
+    case IntegratorId::Ida: return SundialsMethod::Ida;
+    case IntegratorId::RkMerson:
+    case IntegratorId::RkFeldberg:
+    case IntegratorId::Rk3:
+    case IntegratorId::Rk2:
+    case IntegratorId::CPodes:
+    case IntegratorId::Verlet:
+    case IntegratorId::SemiExplicitEuler2:
+    case IntegratorId::ExplicitEuler: break;
+  }
+  throw InternalError("integrator id without a SUNDIALS method");
 }
 
 }  // namespace
@@ -28,29 +54,22 @@ RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::strin
                              const SimTK::State& initial, const std::string& source, double atol,
                              const ReducedCoordinates* reduced)
     : system_(sys), name_(name), accuracy_(accuracy) {
-  // Simbody asserts (and aborts) outside (0, 1); say so instead.
-  if (!(accuracy > 0 && accuracy < 1))
-    throw SceneError(source + ": simulation accuracy must be in (0, 1) (got " + std::to_string(accuracy) + ")");
-  static const std::map<std::string, SundialsMethod> kSundials{{"cvode_bdf", SundialsMethod::CvodeBdf},
-                                                               {"cvode_adams", SundialsMethod::CvodeAdams},
-                                                               {"arkode_erk", SundialsMethod::ArkodeErk},
-                                                               {"arkode_dirk", SundialsMethod::ArkodeDirk},
-                                                               {"ida", SundialsMethod::Ida}};
-  const auto it = kSundials.find(name);
-  if (reduced && (it == kSundials.end() || it->second == SundialsMethod::Ida) && findIntegrator(name))
+  // Checked where the user gave them (the scene reader, the studies, trade's options):
+  // Simbody asserts (and aborts) outside (0, 1).
+  MMV_DEMAND(accuracy > 0 && accuracy < 1);
+  const IntegratorInfo& info = integratorInfo(name);
+  if (reduced && !info.runs_modal_links)
     throw SceneError(source + ": links in modal coordinates (links[].modes) run under SUNDIALS' ODE methods "
                      "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk), not " + name);
-  if (it != kSundials.end()) {
-    if (!(atol >= 0 && atol < 1))
-      throw SceneError(source + ": simulation absolute tolerance must be in [0, 1) (got " + std::to_string(atol) + ")");
-    sundials_ = makeSundialsStepper(sys, it->second, accuracy, atol, reduced);
+  if (info.family == IntegratorInfo::Family::Sundials) {
+    MMV_DEMAND(atol >= 0 && atol < 1);
+    sundials_ = makeSundialsStepper(sys, sundialsMethod(info.id), accuracy, atol, reduced);
     std::string error;
     if (!sundials_->initialize(initial, error)) throw NumericalError(error);
     return;
   }
-  if (atol > 0)
-    throw SceneError(source + ": an absolute tolerance applies to the SUNDIALS integrators; " + name + " measures its error relative to the state's unit scale only");
-  integ_ = makeIntegrator(name, sys, source);
+  MMV_DEMAND(atol == 0);  // an absolute tolerance is SUNDIALS' only (checked with the integrator)
+  integ_ = makeSimbodyIntegrator(info.id, sys);
   integ_->setAccuracy(accuracy);
   integ_->setInternalStepLimit(1000000);
   // One internal step per call, never shortened to hit a sample: the samples are

@@ -344,7 +344,7 @@ std::string constraintDriftWarning(const SimulationResult& r, double size_m) {
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "closure drift %.3g m exceeds 1e-6 of the article's size (%.3g m): %s", r.constraint_drift_m, size_m,
-                isSundialsIntegrator(r.integrator) && r.integrator != "ida"
+                !integratorInfo(r.integrator).projects_closures
                     ? "SUNDIALS' ODE methods do not project onto the closures; use a Simbody integrator or ida"
                     : "tighten the accuracy");
   return buf;

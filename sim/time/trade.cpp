@@ -205,7 +205,7 @@ class TradeRunner {
       const TradeRun* best = cheapestRunWithinTarget();
       if (!best) return;
       accuracies = {best->accuracy};
-      if (isSundialsIntegrator(best->integrator) && best->integrator != "ida") integrator = best->integrator;
+      if (integratorInfo(best->integrator).runs_modal_links) integrator = best->integrator;
     }
     for (int k : o_.modes)
       if (k > 0 && k < problem_.finest_segments) toleranceLadder(integrator, accuracies, k);

@@ -53,6 +53,10 @@ TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
       {"simulate", "--accuracy", "1", "0.001"},
       {"simulate", "--integrator", "rk45", "rk_merson"},
       {"simulate", "--absolute-tolerance", "-1e-6", ""},
+      {"simulate --integrator cvode_bdf", "--absolute-tolerance", "1", "0.999"},
+      {"trade", "--accuracies", "1", "0.999"},
+      {"trade", "--modes-accuracies", "0", ""},
+      {"trade", "--integrators", "rk45", ""},
       {"simulate", "--verify-target", "0", ""},
   };
   for (const Case& c : cases) {
