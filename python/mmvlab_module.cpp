@@ -25,6 +25,7 @@
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
+#include "sim/io/mode_fields.hpp"
 #include "sim/core/text.hpp"
 
 namespace py = pybind11;
@@ -391,6 +392,16 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("component_modes"), py::arg("modes"), py::arg("topologies"), py::arg("progress"));
   m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
         py::arg("band_max_hz"), py::arg("progress"));
+  m.def("mode_fields", [] {
+    py::list out;
+    for (const auto& f : mmv::modeFields())
+      out.append(py::dict(py::arg("key") = f.key, py::arg("unit") = f.unit, py::arg("csv") = f.csv_format != nullptr,
+                          py::arg("applies") = f.applies == mmv::ModeField::Applies::Always    ? "always"
+                                               : f.applies == mmv::ModeField::Applies::Spatial ? "spatial"
+                                                                                               : "damped",
+                          py::arg("meaning") = f.meaning));
+    return out;
+  });
   m.def("correlate", &correlate, py::arg("scene"), py::arg("segments"), py::arg("measured"), py::arg("pairs"),
         py::arg("pair_distance"), py::arg("modes"), py::arg("mac_threshold"), py::arg("max_frequency_error"),
         py::arg("damping"), py::arg("progress"));

@@ -32,7 +32,7 @@ from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene, 
 __all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate", "check", "place_sensors", "sweep",
            "FrfResult", "RomResult", "SimulateResult", "SweepResult", "ConvergeResult", "CompareResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
-           "ModesResult", "CheckResult", "PlacementResult", "correlate", "CorrelateResult"]
+           "ModesResult", "CheckResult", "PlacementResult", "correlate", "CorrelateResult", "mode_fields"]
 
 
 class SceneWarning(UserWarning):
@@ -105,6 +105,29 @@ class ModesResult(Result):
         self.modal_masses_kg = _np.array([m.get("modal_mass_kg", _np.nan) for m in modes], dtype=float)
         self._shapes = None
 
+    def table(self):
+        """The per-mode fields as columns (numbers as numpy arrays, NaN where a mode has
+        none; text as lists), for `pandas.DataFrame(m.table())`. The article's: the columns
+        of modes.csv, every field of `mode_fields()` that applies to this model (spatial
+        fields to the spatial model, damping to a damped scene), under the same names. A
+        HAM-SAS result's: its mode records' scalar keys."""
+        modes = self.json.get("modes", [])
+        model = self.json.get("model")
+        if isinstance(model, dict):  # the article
+            kinds = {"always", "spatial" if model.get("kind") == "spatial" else None,
+                     "damped" if self.json.get("damping", {}).get("model", "none") != "none" else None}
+            keys = [f["key"] for f in mode_fields() if f["csv"] and f["applies"] in kinds]
+        else:
+            keys = [k for k, v in (modes[0] if modes else {}).items() if not isinstance(v, (dict, list))]
+        columns = {}
+        for key in keys:
+            values = [m.get(key) for m in modes]
+            if all(v is None or isinstance(v, str) for v in values) and any(isinstance(v, str) for v in values):
+                columns[key] = values
+            else:
+                columns[key] = _np.array([_np.nan if v is None else float(v) for v in values], dtype=float)
+        return columns
+
     def _read_shapes(self):
         """The shapes as arrays, read from the document on first use (a sweep that asks
         only for frequencies does not pay for them)."""
@@ -153,6 +176,14 @@ class PlacementResult(Result):
         self.chosen = self.json["chosen"]
         self.target_modes = _np.array(self.json["target_modes"], dtype=int)
         self.target_frequencies_hz = _np.array(self.json["target_frequencies_hz"], dtype=float)
+
+
+def mode_fields():
+    """The per-mode fields of `modes`, described once in the library (sim/io/mode_fields.hpp):
+    a list of dicts {key, unit, csv (a modes.csv column), applies ("always", "spatial",
+    "damped"), meaning}; modes.json's mode records, modes.csv and
+    `ModesResult.table()` are all made from it."""
+    return _mmvlab.mode_fields()
 
 
 def modes(scene, *, segments=0, modes=12, points=(), error_estimate=True, target_error=0.0, time_budget=0.0,

@@ -3,6 +3,8 @@
 Run by ctest (python.api) with PYTHONPATH at build/python and MMVLAB_BINARY the CLI.
 """
 import _thread
+import csv
+import io
 import gc
 import json
 import os
@@ -47,6 +49,31 @@ def test_modes_equal_the_cli_json():
     assert without_timing(py.json) == without_timing(cli_json("modes", "--segments", "8", "--modes", "6"))
     assert py.frequencies_hz.shape == (6,)
     np.testing.assert_array_equal(py.frequencies_hz, [m["frequency_hz"] for m in py.json["modes"]])
+
+
+def test_the_mode_table_the_csv_and_the_json_come_from_one_field_list():
+    m = mmvlab.modes(mmvlab.load_scene(scene_path("mmv-table.yaml")), segments=4, modes=8)
+    fields = mmvlab.mode_fields()
+    table = m.table()
+    header = m.csv.splitlines()[0].split(",")
+    assert list(table) == header  # the same columns in the same order
+    assert header == [f["key"] for f in fields if f["csv"] and f["key"] in header]
+    assert "damping_ratio" in header and "effective_mass_z_kg" not in header  # damped, planar
+    rows = list(csv.DictReader(io.StringIO(m.csv)))
+    for k in header:  # each column two ways: the CSV's digits and the JSON's numbers
+        for row, value, mode in zip(rows, table[k], m.json["modes"]):
+            if isinstance(value, str):
+                assert row[k] == value
+            elif np.isnan(value):
+                assert row[k] == "" and mode.get(k) is None
+            else:
+                assert float(row[k]) == pytest.approx(value, rel=1e-5, abs=1e-12), k
+    np.testing.assert_array_equal(table["frequency_hz"], m.frequencies_hz)
+    keys = {f["key"] for f in fields}
+    for mode in m.json["modes"]:
+        assert set(mode) - {"shape", "at_points"} <= keys
+    h = mmvlab.modes(mmvlab.load_scene(scene_path("hamsas.yaml")))  # its own record: its scalar keys
+    np.testing.assert_array_equal(h.table()["frequency_hz"], h.frequencies_hz)
 
 
 def test_modes_with_set_points_and_a_file_equal_the_cli_json():

@@ -6,6 +6,7 @@
 #include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/io/finite_check.hpp"
 #include "sim/io/hamsas_report.hpp"
+#include "sim/io/mode_fields.hpp"
 #include "sim/io/report.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/plan/check.hpp"

@@ -160,4 +160,10 @@ std::string didYouMean(const std::string& name, const std::vector<std::string>& 
   return out + "?)";
 }
 
+std::string csvEscape(const std::string& s) {
+  std::string out = s;
+  for (char& c : out) c = c == ',' ? ';' : c == '"' ? '\'' : c;
+  return out;
+}
+
 }  // namespace mmv

@@ -43,6 +43,10 @@ bool isValidUtf8(const std::string& s);
 /// "link3a_tip_x", "gimbal.yaw_angle_deg" -> "gimbal_yaw_angle_deg").
 std::string csvColumnName(const std::string& s);
 
+/// A text cell that every CSV reader splits right, quoted or not (numpy's genfromtxt and
+/// Octave's csvread do not honour quotes): ',' becomes ';' and '"' becomes '\''.
+std::string csvEscape(const std::string& s);
+
 /// A unit as a column-name suffix: "m/s^2" -> "m_s2", "N*m" -> "n_m", "rad/s" -> "rad_s".
 std::string unitSlug(const std::string& unit);
 

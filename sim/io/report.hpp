@@ -27,9 +27,7 @@ nlohmann::ordered_json planarityJson(const PlanarityReport& p);
 std::string formatConvergenceText(const ConvergenceStudy& c);
 nlohmann::ordered_json convergenceToJson(const ConvergenceStudy& c);
 
-/// modes.csv: one row per mode (number, frequency_hz, stable, rigid_body, damping_ratio,
-/// effective masses, geometric share, dominant links, peak point).
-std::string modesCsv(const ModesReport& r);
+/// modes.csv: sim/io/mode_fields.hpp (modesCsv), from the one list of per-mode fields.
 /// converge.csv: one row per mode and run (mode, segments, dofs, frequency_hz,
 /// relative_error against the Richardson value, richardson_hz, observed_order, check).
 std::string convergenceCsv(const ConvergenceStudy& c);

@@ -163,14 +163,6 @@ std::string render(const CompareReport& r, bool md) {
   return os.str();
 }
 
-/// A text cell that every CSV reader splits right, quoted or not (numpy's genfromtxt and
-/// Octave's csvread do not honour quotes): ',' becomes ';' and '"' becomes '\''.
-std::string csvEscape(const std::string& s) {
-  std::string out = s;
-  for (char& c : out) c = c == ',' ? ';' : c == '"' ? '\'' : c;
-  return out;
-}
-
 std::string macCsv(const SynthesisResult& s) {
   std::ostringstream os;
   os << "synthesized_mode";

@@ -1,6 +1,7 @@
 #include <cmath>
 
 #include "sim/modes/converge.hpp"
+#include "sim/io/mode_fields.hpp"
 #include "sim/io/report.hpp"
 
 namespace mmv {
@@ -20,33 +21,7 @@ json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
 /// One mode of `r` in the modes JSON.
 json modeJson(const ModesReport& r, const ModeInfo& m) {
-  json mj = {{"number", m.number},
-             {"stable", m.stable},
-             {"rigid_body", m.rigid_body},
-             {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
-             {"omega_squared_rad2_per_s2", m.omega2},
-             {"modal_mass_kg", m.modal_mass_kg},
-             {"peak_point", m.peak_point},
-             {"effective_mass_x_kg", m.effective_mass_x_kg},
-             {"effective_mass_y_kg", m.effective_mass_y_kg},
-             {"geometric_stiffness_share", m.geometric_stiffness_share},
-             {"dominant_link_kinetic", m.dominant_link_kinetic},
-             {"dominant_link_strain", m.dominant_link_strain},
-             {"kinetic_energy_share", shares(m.kinetic)},
-             {"strain_energy_share", shares(m.strain)},
-             {"kinetic_energy_share_by_link", shares(m.kinetic_by_link)},
-             {"strain_energy_share_by_link", shares(m.strain_by_link)}};
-  if (r.spatial) {
-    mj["effective_mass_z_kg"] = m.effective_mass_z_kg;
-    mj["family"] = m.family.label;
-    mj["strain_share_by_axis"] = {
-        {"in_plane", m.family.in_plane}, {"out_of_plane", m.family.out_of_plane}, {"torsion", m.family.torsion}};
-  }
-  if (!m.stable) mj["growth_rate_per_s"] = std::sqrt(-m.omega2);
-  if (r.damped && m.stable && !m.rigid_body && m.has_damping) {
-    mj["damping_ratio"] = m.damping_ratio;
-    mj["damped_natural_frequency_hz"] = m.damped_natural_hz;
-  }
+  json mj = modeFieldsJson(r, m);
   json shape = json::array();
   for (const auto& p : m.shape) {
     json pj = {{"point", p.point}, {"ux", p.ux}, {"uy", p.uy}};

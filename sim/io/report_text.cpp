@@ -210,18 +210,6 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
 
 namespace mmv {
 
-std::string modesCsv(const ModesReport& r) {
-  std::ostringstream os;
-  os << "mode,frequency_hz,stable,rigid_body,damping_ratio,effective_mass_x_kg,effective_mass_y_kg,"
-        "geometric_stiffness_share,kinetic_link,strain_link,peak_point\n";
-  for (const auto& m : r.modes)
-    os << m.number << ',' << strf("%.10g", m.stable ? m.frequency_hz : 0.0) << ',' << (m.stable ? 1 : 0) << ','
-       << (m.rigid_body ? 1 : 0) << ',' << (m.has_damping ? strf("%.6g", m.damping_ratio) : "") << ',' << strf("%.8g", m.effective_mass_x_kg) << ','
-       << strf("%.8g", m.effective_mass_y_kg) << ',' << strf("%.6g", m.geometric_stiffness_share) << ','
-       << m.dominant_link_kinetic << ',' << m.dominant_link_strain << ',' << m.peak_point << '\n';
-  return os.str();
-}
-
 std::string convergenceCsv(const ConvergenceStudy& c) {
   std::ostringstream os;
   os << "mode,segments,dofs,frequency_hz,relative_error,richardson_hz,observed_order,check\n";

@@ -1,0 +1,153 @@
+// The per-mode field list (sim/io/mode_fields.hpp) drives modes.json's mode records and
+// modes.csv: on a damped planar, a spatial and an unstable scene, each record holds
+// exactly the fields that apply (in the list's order, then the shapes), the CSV header
+// is the CSV fields that apply, and every cell read back from the CSV equals the JSON
+// value to the digits its format prints: the same number computed two ways.
+#include "sim/io/mode_fields.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "sim/core/text.hpp"
+#include "sim/io/report.hpp"
+#include "support/scenes.hpp"
+
+namespace mmv {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+/// The relative precision a printf format keeps ("%.8g": 8 significant digits).
+double precisionOf(const char* format) {
+  const std::string f = format;
+  const auto dot = f.find('.');
+  return dot == std::string::npos ? 0.0 : 0.6 * std::pow(10.0, -std::stoi(f.substr(dot + 1)) + 1);
+}
+
+void expectJsonAndCsvAgree(const ModesReport& r, const std::string& what) {
+  const json doc = modesToJson(r);
+  std::vector<std::string> keys, columns;
+  for (const auto& f : modeFields()) {
+    if (!modeFieldApplies(f, r)) continue;
+    keys.push_back(f.key);
+    if (f.csv_format) columns.push_back(f.key);
+  }
+  std::istringstream csv(modesCsv(r));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(splitCsvLine(line), columns) << what;
+  ASSERT_EQ(doc["modes"].size(), r.modes.size());
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const json& rec = doc["modes"][i];
+    std::vector<std::string> got;
+    for (const auto& [k, v] : rec.items())
+      if (k != "shape" && k != "at_points") got.push_back(k);
+    // The record's keys are the applying fields in order, less those this mode has not.
+    std::size_t at = 0;
+    for (const auto& k : got) {
+      while (at < keys.size() && keys[at] != k) ++at;
+      EXPECT_LT(at, keys.size()) << what << ": mode " << i + 1 << " key " << k << " not in the field list, or out of order";
+    }
+    ASSERT_TRUE(std::getline(csv, line)) << what;
+    const std::vector<std::string> cells = splitCsvLine(line);
+    ASSERT_EQ(cells.size(), columns.size()) << what << ": " << line;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const ModeField* f = nullptr;
+      for (const auto& x : modeFields())
+        if (columns[c] == x.key) f = &x;
+      const std::string where = what + ": mode " + std::to_string(i + 1) + " " + columns[c];
+      if (!rec.contains(columns[c]) || rec[columns[c]].is_null()) {
+        EXPECT_EQ(cells[c], "") << where;
+        continue;
+      }
+      const json& v = rec[columns[c]];
+      if (v.is_boolean()) EXPECT_EQ(cells[c], v.get<bool>() ? "1" : "0") << where;
+      else if (v.is_string()) EXPECT_EQ(cells[c], csvEscape(v.get<std::string>())) << where;
+      else if (v.is_number_integer()) EXPECT_EQ(std::stol(cells[c]), v.get<long>()) << where;
+      else EXPECT_NEAR(std::stod(cells[c]), v.get<double>(), precisionOf(f->csv_format) * std::abs(v.get<double>()) + 1e-300) << where;
+    }
+  }
+}
+
+TEST(ModeFields, JsonAndCsvComeFromOneListOnADampedPlanarScene) {
+  ArticleScene s = loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml");
+  overrideSegments(s, 4);
+  ModesOptions o;
+  o.damping = s.damping;
+  ASSERT_TRUE(o.damping.has_value());
+  const ModesReport r = runModes(s, o);
+  ASSERT_TRUE(r.damped);
+  expectJsonAndCsvAgree(r, "table scene");
+  EXPECT_NE(modesCsv(r).find(",damping_ratio,"), std::string::npos);
+  EXPECT_EQ(modesCsv(r).find("effective_mass_z_kg"), std::string::npos);  // a planar model's CSV has no z
+}
+
+TEST(ModeFields, JsonAndCsvComeFromOneListOnASpatialScene) {
+  ArticleScene s = loadDefaultScene();
+  s.article.model = ArticleModel::Spatial;
+  overrideSegments(s, 2);
+  const ModesReport r = runModes(s);
+  ASSERT_TRUE(r.spatial);
+  expectJsonAndCsvAgree(r, "spatial");
+  EXPECT_NE(modesCsv(r).find("effective_mass_z_kg"), std::string::npos);
+  EXPECT_EQ(modesCsv(r).find("damping_ratio"), std::string::npos);  // undamped: no damping column
+}
+
+TEST(ModeFields, AnUnstableModeHasAnEmptyFrequencyAndItsGrowthRate) {
+  ArticleScene s = testing::chainScene(1, 1.0, 2.0, 9.81, 0.0, 1.0);
+  s.article.base.direction = M_PI / 2;  // an upright pendulum on a free joint
+  const ModesReport r = runModes(s);
+  ASSERT_FALSE(r.modes.at(0).stable);
+  expectJsonAndCsvAgree(r, "upright pendulum");
+  const json rec = modesToJson(r)["modes"][0];
+  EXPECT_TRUE(rec["frequency_hz"].is_null());
+  EXPECT_NEAR(rec["growth_rate_per_s"].get<double>(), std::sqrt(-r.modes[0].omega2), 1e-12);
+}
+
+TEST(ModeFields, EveryFieldIsDescribed) {
+  std::set<std::string> seen;
+  for (const auto& f : modeFields()) {
+    EXPECT_TRUE(seen.insert(f.key).second) << f.key << " twice";
+    EXPECT_EQ(csvColumnName(f.key), f.key) << "a key that pandas, numpy and MATLAB keep as it is";
+    EXPECT_GT(std::string(f.meaning).size(), 10u) << f.key;
+    EXPECT_NE(f.get, nullptr) << f.key;
+  }
+}
+
+// docs/outputs.md's field table is the list, row for row (a field added, renamed or
+// re-described without the docs fails here).
+TEST(ModeFields, TheDocsTableIsTheList) {
+  std::ifstream in(std::string(MMVLAB_SOURCE_DIR) + "/docs/outputs.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string docs = text.str();
+  const auto at = docs.find("| key | unit | in modes.csv | applies | meaning |");
+  ASSERT_NE(at, std::string::npos);
+  std::istringstream rows(docs.substr(at));
+  std::string line;
+  std::getline(rows, line);
+  std::getline(rows, line);  // |---|
+  for (const auto& f : modeFields()) {
+    ASSERT_TRUE(std::getline(rows, line));
+    const char* applies = f.applies == ModeField::Applies::Always ? "always" : f.applies == ModeField::Applies::Spatial ? "spatial" : "damped";
+    EXPECT_EQ(line, strf("| `%s` | %s | %s | %s | %s |", f.key, *f.unit ? f.unit : "-", f.csv_format ? "yes" : "JSON only", applies,
+                         f.meaning));
+  }
+  ASSERT_TRUE(std::getline(rows, line));
+  EXPECT_EQ(line.rfind("|", 0), std::string::npos) << "a row the list does not have: " << line;
+}
+
+}  // namespace
+}  // namespace mmv
