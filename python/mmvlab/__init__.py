@@ -32,7 +32,8 @@ from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene, 
 __all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate", "check", "place_sensors", "sweep",
            "FrfResult", "RomResult", "SimulateResult", "SweepResult", "ConvergeResult", "CompareResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
-           "ModesResult", "CheckResult", "PlacementResult", "correlate", "CorrelateResult", "mode_fields"]
+           "ModesResult", "CheckResult", "PlacementResult", "correlate", "CorrelateResult", "mode_fields", "trade",
+           "TradeResult"]
 
 
 class SceneWarning(UserWarning):
@@ -284,6 +285,52 @@ def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tole
     return result
 
 
+def _csv_table(text):
+    """A CSV file's text as (its columns in order, {column: numpy float array, or a list
+    of strings for a text column}); an empty cell is NaN."""
+    rows = list(_csv.reader(_io.StringIO(text)))
+    columns = rows[0] if rows else []
+    table = {}
+    for k, c in enumerate(columns):
+        cells = [r[k] for r in rows[1:]]
+        try:
+            table[c] = _np.array([float(x) if x != "" else _np.nan for x in cells], dtype=float)
+        except ValueError:
+            table[c] = cells
+    return columns, table
+
+
+class TradeResult(Result):
+    """The speed-accuracy trade: `.json` is trade.json; `runs` its runs (dicts: integrator,
+    accuracy, segments, modes, status, tip_error_m, cpu_s, ...), `table[column]` trade.csv's
+    columns (`columns` their order, `csv` its text), `target_error_m`, `cheapest` (the
+    cheapest run within the target, or None)."""
+
+    def __init__(self, json_text, text, csv):
+        super().__init__(json_text, text)
+        self.csv = csv
+        self.columns, self.table = _csv_table(csv)
+        self.runs = self.json["runs"]
+        self.target_error_m = self.json["target_error_m"]
+        self.cheapest = self.json.get("cheapest_within_target")
+
+
+def trade(scene, *, segments=0, integrators=(), accuracies=(), segment_ladder=(), modes_ladder=(), modes_accuracies=(),
+          points=(), duration=None, target_error=None, all=False, run_budget=None, time_budget=None, progress=None):
+    """`mmvlab trade`: each integrator at each accuracy, the segments ladder and the modes
+    ladder against a reference run, error against cost. Empty lists and None keep the
+    command's defaults (the scene's duration, 1 % of the scored motion as the target)."""
+    def opt(x):
+        return None if x is None else float(x)
+    json_text, text, csv, warns = _mmvlab.trade(scene, int(segments), [str(i) for i in integrators],
+                                                [float(a) for a in accuracies], [int(n) for n in segment_ladder],
+                                                [int(k) for k in modes_ladder], [float(a) for a in modes_accuracies],
+                                                [str(p) for p in points], opt(duration), opt(target_error), bool(all),
+                                                opt(run_budget), opt(time_budget), progress)
+    _warn(warns)
+    return TradeResult(json_text, text, csv)
+
+
 class SweepResult(Result):
     """A design sweep: `.json` is sweep.json; `table[column]` sweep.csv's columns (numpy
     float arrays; text columns such as `status` and `check_overall` as lists), `columns`
@@ -293,15 +340,7 @@ class SweepResult(Result):
         super().__init__(json_text, text)
         self.csv = table
         self.csv_path = self.json["csv"]
-        rows = list(_csv.reader(_io.StringIO(table)))
-        self.columns = rows[0] if rows else []
-        self.table = {}
-        for k, c in enumerate(self.columns):
-            cells = [r[k] for r in rows[1:]]
-            try:
-                self.table[c] = _np.array([float(x) if x != "" else _np.nan for x in cells], dtype=float)
-            except ValueError:
-                self.table[c] = cells
+        self.columns, self.table = _csv_table(table)
 
 
 def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):

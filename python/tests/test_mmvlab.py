@@ -201,6 +201,24 @@ def test_place_sensors_equals_the_cli_json():
     assert len(py.chosen) == 6
 
 
+def test_trade_equals_the_cli_json():
+    kw = dict(segments=2, duration=0.2, integrators=["rk3", "cvode_bdf"], accuracies=[1e-3, 1e-5], segment_ladder=[1],
+              modes_ladder=[1], modes_accuracies=[1e-5], all=True)
+    py = mmvlab.trade(mmvlab.load_scene(scene_path("mmv-slew.yaml")), **kw)
+    cli = cli_json("trade", scene_path("mmv-slew.yaml"), "--segments", "2", "--duration", "0.2", "--integrators",
+                   "rk3,cvode_bdf", "--accuracies", "1e-3,1e-5", "--segment-ladder", "1", "--modes-ladder", "1",
+                   "--modes-accuracies", "1e-5", "--all")
+    strip = lambda d: {k: v for k, v in without_timing(d).items() if k not in ("runs", "total_seconds")}
+    assert strip(py.json) == strip(cli)
+    # The runs, less their wall times: the same runs with the same errors (deterministic).
+    runs = lambda d: [{k: v for k, v in r.items() if k not in ("cpu_s", "pareto", "status")} for r in d["runs"]]
+    assert runs(py.json) == runs(cli)
+    assert py.columns[0] == "integrator" and len(py.table["tip_error_m"]) == len(py.runs)
+    # Each run's error two ways: trade.csv's digits and the JSON's number.
+    for e, r in zip(py.table["tip_error_m"], py.runs):
+        assert e == pytest.approx(r["tip_error_m"], rel=1e-5)
+
+
 @pytest.fixture(scope="module")
 def measured_uff(tmp_path_factory):
     """A "measured" set: the FRFs and modes `frf --out` writes with links 1 and 2 8 % stiffer."""
@@ -287,6 +305,12 @@ def test_correlate_s_measured_file_errors_are_python_s():
     (lambda s: mmvlab.correlate(s, "x.uff", damping=-0.01), "damping"),
     (lambda s: mmvlab.correlate(s, "x.uff", pairs=["x=link1.tip"]), "pair"),
     (lambda s: mmvlab.correlate(s, ""), "measured"),
+    (lambda s: mmvlab.trade(s, integrators=["rk45"]), "integrators"),
+    (lambda s: mmvlab.trade(s, accuracies=[1.0]), "accuracies"),
+    (lambda s: mmvlab.trade(s, segment_ladder=[0]), "segment_ladder"),
+    (lambda s: mmvlab.trade(s, modes_ladder=[-1]), "modes_ladder"),
+    (lambda s: mmvlab.trade(s, duration=0), "duration"),
+    (lambda s: mmvlab.trade(s, time_budget=-1), "time_budget"),
 ])
 def test_a_bad_argument_is_a_usage_error_naming_it(call, name):
     with pytest.raises(mmvlab.UsageError) as e:

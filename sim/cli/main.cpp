@@ -204,24 +204,20 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
   tp->add_option("--integrators", tr.integrators, "Comma-separated (default rk_merson,rk3,cpodes,cvode_bdf,cvode_adams,arkode_erk,arkode_dirk)")
       ->delimiter(',');
   tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
-  tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',')->check(CLI::Range(1, mmv::limits::kMaxSegments));
+  tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
   tp->add_option("--modes-ladder", tr.modes_ladder,
                  "Comma-separated modes per link for runs with the links in modal coordinates (default 1,2,3,4; 0: none)")
-      ->delimiter(',')
-      ->check(CLI::Range(0, mmv::limits::kMaxSegments));
+      ->delimiter(',');
   tp->add_option("--modes-accuracies", tr.modes_accuracies, "Comma-separated accuracies of the modal runs (CVODE BDF; default 1e-5,1e-6,1e-7)")
       ->delimiter(',');
-  tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)")->check(positive());
+  tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)");
   tp->add_option("--points", tr.points, "Comma-separated link tips or stations the error is scored at, e.g. link3a.tip,link1@0.5 (default: every tip)")
       ->delimiter(',');
   tp->add_option("--target-error", tr.target_error,
                  "Error to meet, m (the cheapest run within it is named; default 1 % of the scored points' largest "
-                 "motion in the reference run)")
-      ->check(positive());
-  tp->add_option("--run-budget", tr.run_budget, "Wall seconds a run may take; a run over it is cut and listed (the reference runs excepted)")
-      ->check(positive());
-  tp->add_option("--time-budget", tr.time_budget, "Wall seconds for the whole trade: past it the run under way is cut and the rest are listed as not run")
-      ->check(positive());
+                 "motion in the reference run)");
+  tp->add_option("--run-budget", tr.run_budget, "Wall seconds a run may take; a run over it is cut and listed (the reference runs excepted)");
+  tp->add_option("--time-budget", tr.time_budget, "Wall seconds for the whole trade: past it the run under way is cut and the rest are listed as not run");
   tp->add_flag("--all", tr.all,
                "Run every run; by default a tolerance is skipped when a looser one of its integrator already cost more than "
                "the cheapest run within the target");
@@ -414,6 +410,7 @@ int main(int argc, char** argv) {
     lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
     lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
     sim.given = givenOptions(si);
+    tr.given = givenOptions(tp);
     if (si->parsed()) return runSimulateCommand(sim);
     if (tp->parsed()) return runTradeCommand(tr);
     if (pl->parsed()) return runPlaceSensorsCommand(ps);

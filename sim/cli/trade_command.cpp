@@ -3,42 +3,19 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <memory>
-#include <type_traits>
+#include <optional>
 
+#include "sim/app/trade_study.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/cli/progress.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/core/integrators.hpp"
-#include "sim/hamsas/hamsas_simulation.hpp"
 #include "sim/io/trade_report.hpp"
 
 namespace mmv::cli {
 namespace {
-
-/// Runs done of the trade's total (two references, the integrator grid, the segment
-/// ladder), reported to `progress` as each run starts and ends.
-void reportProgress(TradeProblem& problem, const TradeOptions& o, Progress& progress) {
-  int rungs = 0;  // the modes ladder's
-  for (int k : o.modes) rungs += problem.has_modes && k > 0 && k < problem.finest_segments;
-  const double total = 2.0 + double(o.integrators.size() * o.accuracies.size()) +
-                       (problem.has_segments ? double(o.segments.size()) : 0.0) + double(rungs * o.modes_accuracies.size());
-  auto done = std::make_shared<int>(0);
-  problem.run = [inner = problem.run, &progress, total, done](const SimulationSpec& spec, const RunFidelity& f,
-                                                               const std::function<void(double)>& cut) {
-    progress.report(*done, total,
-                    strf("%s at %g", spec.integrator.c_str(), spec.accuracy) +
-                        (f.segments > 0 ? strf(", %d segments", f.segments) : std::string()) +
-                        (f.modes > 0 ? strf(", %d modes per link", f.modes) : std::string()));
-    struct Count {  // a failed run (a trade records it) counts as done too
-      int& n;
-      ~Count() { ++n; }
-    } count{*done};
-    return inner(spec, f, cut);
-  };
-}
 
 /// Error against cost, one series per integrator (and per modes-per-link rung), with
 /// the Pareto front.
@@ -90,50 +67,36 @@ void writeTradePlot(const std::string& path, const TradeStudy& s) {
 int runTradeCommand(const TradeArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
-    TradeOptions o;
-    if (!args.integrators.empty()) o.integrators = args.integrators;
-    if (!args.accuracies.empty()) o.accuracies = args.accuracies;
-    if (!args.segments_ladder.empty()) o.segments = args.segments_ladder;
-    if (!args.modes_ladder.empty()) o.modes = args.modes_ladder;  // the ladder skips 0
-    if (!args.modes_accuracies.empty()) o.modes_accuracies = args.modes_accuracies;
-    o.duration = args.duration;
-    o.points = args.points;
-    o.target_m = args.target_error;
-    o.skip_costlier = !args.all;
-    o.cut_costlier = !args.all;  // a run past the cheapest within the target cannot be it either
-    o.run_budget_s = args.run_budget;
-    o.total_budget_s = args.time_budget;
-    for (const auto* list : {&o.accuracies, &o.modes_accuracies})
-      for (double a : *list)
-        if (!(a > 0 && a < 1))
-          throw UsageError(strf("%s: a relative accuracy must be in (0, 1) (got %g)",
-                                list == &o.accuracies ? "--accuracies" : "--modes-accuracies", a));
-    for (const auto& name : o.integrators)
-      if (!findIntegrator(name))
-        throw UsageError("--integrators: unknown integrator '" + name + "'" + integratorSuggestion(name) + " (known: " +
-                         integratorNames() + ")");
-    std::unique_ptr<OutputDir> out;
-    if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    TradeProblem problem = std::visit(
-        [&](const auto& sc) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(sc)>, HamsasScene>) return hamsasTradeProblem(sc, o.duration);
-          else return articleTradeProblem(sc, o.duration);
-        },
-        scene);
-    const TradeStudy s = [&] {
+    app::TradeRequest r;
+    r.integrators = args.integrators;
+    r.accuracies = args.accuracies;
+    r.segments = args.segments_ladder;
+    r.modes = args.modes_ladder;
+    r.modes_accuracies = args.modes_accuracies;
+    r.points = args.points;
+    const auto given = [&](const char* flag, double v) {
+      return args.given.count(flag) ? std::optional<double>(v) : std::nullopt;
+    };
+    r.duration = given("--duration", args.duration);
+    r.target_error = given("--target-error", args.target_error);
+    r.all = args.all;
+    r.run_budget = given("--run-budget", args.run_budget);
+    r.time_budget = given("--time-budget", args.time_budget);
+    std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
+    if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
+    const app::TradeStudyResult s = [&] {
       Progress progress("trade, runs done");
-      reportProgress(problem, o, progress);
-      return runTrade(problem, o);
+      return app::runTradeStudy(scene, r, [&](double done, double total, const std::string& detail) {
+        progress.report(done, total, detail);
+      });
     }();
-    const double target = s.target_m;
-    checkResultFinite(tradeJson(s, target));  // before any file is committed
     if (out) {
-      out->write("trade.csv", tradeCsv(s));
-      out->write("trade.json", tradeJson(s, target).dump(2) + "\n");
-      writeTradePlot(out->stage("trade.png"), s);
+      out->write("trade.csv", s.csv);
+      out->write("trade.json", s.json.dump(2) + "\n");
+      writeTradePlot(out->stage("trade.png"), s.study);
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(tradeJson(s, target)) : emitResult(tradeText(s, target));
+    args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
   });
 }

@@ -57,6 +57,13 @@ TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
       {"trade", "--accuracies", "1", "0.999"},
       {"trade", "--modes-accuracies", "0", ""},
       {"trade", "--integrators", "rk45", ""},
+      {"trade", "--segment-ladder", "0", "1"},
+      {"trade", "--segment-ladder", "1025", ""},
+      {"trade", "--modes-ladder", "-1", "0"},
+      {"trade", "--duration", "0", "0.1"},
+      {"trade", "--target-error", "0", "1e-3"},
+      {"trade", "--run-budget", "-1", "1"},
+      {"trade", "--time-budget", "0", ""},
       {"simulate", "--verify-target", "0", ""},
   };
   for (const Case& c : cases) {
