@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "sim/io/sweep_points.hpp"
+#include "sim/io/design_sweep_points.hpp"
 #include "sim/plan/check.hpp"
-#include "sim/plan/sweep_runner.hpp"
+#include "sim/plan/design_sweep.hpp"
 
 namespace {
 
@@ -30,24 +30,24 @@ void BM_CheckDefaultScene(benchmark::State& st) {
 BENCHMARK(BM_CheckDefaultScene)->Unit(benchmark::kMillisecond);
 
 void BM_SweepPoint(benchmark::State& st) {
-  const mmv::SweepContext c = mmv::prepareSweep(mmv::parseSweepSpec(kSpec, "bench", "."));
+  const mmv::DesignSweepContext c = mmv::prepareDesignSweep(mmv::parseSweepSpec(kSpec, "bench", "."));
   long i = 0;
-  for (auto _ : st) benchmark::DoNotOptimize(mmv::evaluateSweepPoint(c, i++ % 1000));
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::evaluateDesignSweepPoint(c, i++ % 1000));
 }
 BENCHMARK(BM_SweepPoint)->Unit(benchmark::kMillisecond);
 
 void BM_Sweep1000(benchmark::State& st) {
-  const mmv::SweepContext c = mmv::prepareSweep(mmv::parseSweepSpec(kSpec, "bench", "."));
+  const mmv::DesignSweepContext c = mmv::prepareDesignSweep(mmv::parseSweepSpec(kSpec, "bench", "."));
   const std::string dir = std::filesystem::temp_directory_path() / ("mmvlab_bench_sweep_" + std::to_string(::getpid()));
   for (auto _ : st) {
-    mmv::SweepRun run;
+    mmv::DesignSweepRun run;
     run.dir = dir;
     run.fingerprint = c.fingerprint;
     run.header = c.header;
     run.total_points = static_cast<long>(c.points.size());
     run.jobs = static_cast<int>(st.range(0));
-    run.evaluate = [&c](long p) { return mmv::evaluateSweepPoint(c, p); };
-    benchmark::DoNotOptimize(mmv::runSweep(run, /*restart=*/true));
+    run.evaluate = [&c](long p) { return mmv::evaluateDesignSweepPoint(c, p); };
+    benchmark::DoNotOptimize(mmv::runDesignSweep(run, /*restart=*/true));
   }
   std::filesystem::remove_all(dir);
 }

@@ -21,7 +21,7 @@
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
 #include "sim/app/simulate_study.hpp"
-#include "sim/app/sweep_study.hpp"
+#include "sim/app/design_sweep_study.hpp"
 #include "sim/app/trade_study.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"

@@ -219,7 +219,7 @@ const std::map<std::string, std::string>& parsingFiles() {
       {"sim/io/uff_read.cpp", "the measured UFF reader, with line and column"},
       {"sim/io/run_dir.cpp", "reads back a run directory mmvlab wrote"},
       {"sim/io/output_dir.cpp", "reads its own staging directories' process ids"},
-      {"sim/plan/sweep_runner.cpp", "reads back its own journal and table"},
+      {"sim/plan/design_sweep.cpp", "reads back its own journal and table"},
       {"sim/modes/place_sensors.cpp", "reads back a station name it formatted (rounding past the tip)"},
       {"facility/table_programs.cpp", "the table profile reader (a CSV file), with its line"},
       {"renders/frame_memory.cpp", "reads /proc/meminfo"},

@@ -79,7 +79,7 @@ struct CompareArgs : SceneArgs {
   bool force = false;
 };
 
-struct SweepArgs : SceneArgs {
+struct ConfigSweepArgs : SceneArgs {
   bool json = false;
   std::vector<std::string> grids;  ///< JOINT:FROM:TO:STEP (deg), one or two.
   int modes = 6;
@@ -213,8 +213,8 @@ int runCheckCommand(const CheckArgs& args);
 int runCorrelateCommand(const CorrelateArgs& args);
 int runDesignSweepCommand(const DesignSweepArgs& args);
 int runSweepMergeCommand(const SweepMergeArgs& args);
-/// The figures of a sweep's table (sweep.csv's text; sim/cli/sweep_plots.cpp), staged in `out`.
-void writeSweepPlots(const std::string& csv_text, OutputDir& out);
+/// The figures of a sweep's table (sweep.csv's text; sim/cli/design_sweep_plots.cpp), staged in `out`.
+void writeDesignSweepPlots(const std::string& csv_text, OutputDir& out);
 int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
 int runTradeCommand(const TradeArgs& args);
@@ -226,7 +226,7 @@ int runSimulateCommand(const SimulateArgs& args);
 void writeSimulationPlots(OutputDir& out, const SimulationResult& r, const std::string& title);
 int runFrfCommand(const LinearArgs& args);
 int runRomCommand(const LinearArgs& args);
-int runSweepCommand(const SweepArgs& args);
+int runConfigSweepCommand(const ConfigSweepArgs& args);
 int runCompareCommand(const CompareArgs& args);
 int runConvergeCommand(const ConvergeArgs& args);
 int runSceneCommand();

@@ -1,5 +1,5 @@
-// mmvlab sweep and sweep-merge: design sweeps (sim/scene/sweep_spec.hpp) evaluated by
-// sim/io/sweep_points.hpp and run by sim/plan/sweep_runner.hpp.
+// mmvlab sweep and sweep-merge: design sweeps (sim/scene/design_sweep_spec.hpp) evaluated by
+// sim/io/design_sweep_points.hpp and run by sim/plan/design_sweep.hpp.
 
 #include <cstdio>
 #include <cstdlib>
@@ -10,14 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/app/sweep_study.hpp"
+#include "sim/app/design_sweep_study.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/files.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/cli/progress.hpp"
 #include "sim/core/text.hpp"
-#include "sim/io/sweep_points.hpp"
-#include "sim/plan/sweep_runner.hpp"
+#include "sim/io/design_sweep_points.hpp"
+#include "sim/plan/design_sweep.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -57,11 +57,11 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
       r.progress = [&progress](long done, long total) { progress.report(double(done), double(total)); };
       return app::runDesignSweepStudy(r);
     }();
-    // sweep.csv is the journal's table (runSweep wrote it whole); the summary and the
+    // sweep.csv is the journal's table (runDesignSweep wrote it whole); the summary and the
     // figures are one transaction on top of it: all of them replace the last run's, or none.
     OutputDir out(s.dir, /*force=*/true);
     out.write("sweep.json", s.json.dump(2) + "\n");
-    if (r.shard.count == 1) writeSweepPlots(s.result.table, out);
+    if (r.shard.count == 1) writeDesignSweepPlots(s.result.table, out);
     out.commit();
     args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
@@ -73,7 +73,7 @@ int runSweepMergeCommand(const SweepMergeArgs& args) {
     OutputDir out(args.out, args.force);
     const std::string table = mergeSweepTables(args.shards);
     out.write("sweep.csv", table);
-    writeSweepPlots(table, out);
+    writeDesignSweepPlots(table, out);
     std::vector<std::string> figures = out.targets();
     const std::string csv = figures.front();
     figures.erase(figures.begin());

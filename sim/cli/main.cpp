@@ -111,7 +111,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& cmp) {
 }
 
 /// `mmvlab sweep-config` and its options.
-CLI::App* addSweepCommand(CLI::App& app, SweepArgs& sw) {
+CLI::App* addConfigSweepCommand(CLI::App& app, ConfigSweepArgs& sw) {
   CLI::App* sp = app.add_subcommand(
       "sweep-config", "System modes and synthesis error over a grid of joint angles, modes tracked by shape");
   addSceneOptions(sp, sw);
@@ -363,8 +363,8 @@ int main(int argc, char** argv) {
   CLI::App* c = addConvergeCommand(app, conv);
   CompareArgs cmp;
   CLI::App* cp = addCompareCommand(app, cmp);
-  SweepArgs sw;
-  CLI::App* sp = addSweepCommand(app, sw);
+  ConfigSweepArgs sw;
+  CLI::App* sp = addConfigSweepCommand(app, sw);
   LinearArgs lin;
   const auto [fr, ro] = addLinearCommands(app, lin);
   SimulateArgs sim;
@@ -406,7 +406,7 @@ int main(int argc, char** argv) {
     if (dsw->parsed()) return runDesignSweepCommand(ds);
     if (smg->parsed()) return runSweepMergeCommand(sm);
     if (cp->parsed()) return runCompareCommand(cmp);
-    if (sp->parsed()) return runSweepCommand(sw);
+    if (sp->parsed()) return runConfigSweepCommand(sw);
     lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
     lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
     sim.given = givenOptions(si);

@@ -2,7 +2,7 @@
 // bound and one past it, the refusal before anything is allocated or drawn.
 #include <cstdint>
 
-#include "sim/modes/sweep.hpp"
+#include "sim/modes/config_sweep.hpp"
 #include "support/cli.hpp"
 
 namespace mmv::cli_testing {

@@ -18,7 +18,7 @@
 #include "sim/io/run_dir.hpp"
 #include "sim/io/uff_read.hpp"
 #include "sim/scene/scene.hpp"
-#include "sim/scene/sweep_spec.hpp"
+#include "sim/scene/design_sweep_spec.hpp"
 
 #include <unistd.h>
 
@@ -62,10 +62,10 @@ std::optional<std::string> judgeNamed(std::exception_ptr p, const std::string& p
 
 std::optional<std::string> specTarget(const std::string& text) {
   try {
-    const SweepSpec spec = parseSweepSpec(text, kSource, ".");
+    const DesignSweepSpec spec = parseSweepSpec(text, kSource, ".");
     double n = 1;
-    for (const auto& p : spec.parameters) n *= spec.design == SweepSpec::Design::Grid ? static_cast<double>(p.gridValues().size()) : 1.0;
-    if (spec.design == SweepSpec::Design::LatinHypercube) n = spec.lhs_samples;
+    for (const auto& p : spec.parameters) n *= spec.design == DesignSweepSpec::Design::Grid ? static_cast<double>(p.gridValues().size()) : 1.0;
+    if (spec.design == DesignSweepSpec::Design::LatinHypercube) n = spec.lhs_samples;
     if (n <= 10000) {
       const auto points = sweepPoints(spec);
       if (static_cast<double>(points.size()) != n) return strf("%zu points where the spec makes %.0f", points.size(), n);

@@ -21,7 +21,7 @@ std::optional<std::string> readerTarget(const std::string& text);
 /// scene, numerical); else what broke it (another exception, a NaN or inf printed).
 std::optional<std::string> modesTarget(const std::string& text);
 
-/// The sweep spec reader (sim/scene/read_sweep.cpp) on `text` as fuzz.yaml, and its
+/// The sweep spec reader (sim/scene/read_design_sweep.cpp) on `text` as fuzz.yaml, and its
 /// points when there are few: a spec or a SceneError at fuzz.yaml:LINE:COL.
 std::optional<std::string> specTarget(const std::string& text);
 

@@ -26,7 +26,7 @@ struct Shard {
   std::string text() const;  ///< "I/N".
 };
 
-struct SweepRun {
+struct DesignSweepRun {
   std::string dir;
   std::string fingerprint;          ///< identifies the sweep (spec, scene, header, points).
   std::vector<std::string> header;  ///< the CSV header; the first column is "point".
@@ -39,7 +39,7 @@ struct SweepRun {
   std::function<void(long done, long total)> progress;  ///< may be empty.
 };
 
-struct SweepRunResult {
+struct DesignSweepRunResult {
   long computed = 0, reused = 0;  ///< this run's points and those the journal already had.
   double seconds = 0;
   std::string csv;  ///< the path of sweep.csv.
@@ -48,7 +48,7 @@ struct SweepRunResult {
 
 /// Runs (or resumes) the sweep. Throws OutputError when DIR holds another sweep's
 /// journal (a different fingerprint) unless `restart`, which empties it first.
-SweepRunResult runSweep(const SweepRun& run, bool restart);
+DesignSweepRunResult runDesignSweep(const DesignSweepRun& run, bool restart);
 
 /// A finished shard (or whole sweep) directory as read back for merging.
 struct SweepJournal {

@@ -1,6 +1,6 @@
-// The sweep runner (sim/plan/sweep_runner.hpp): serial, parallel and sharded runs write
+// The sweep runner (sim/plan/design_sweep.hpp): serial, parallel and sharded runs write
 // the same file; a torn or corrupt journal is cut back and resumed without a duplicate.
-#include "sim/plan/sweep_runner.hpp"
+#include "sim/plan/design_sweep.hpp"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -28,8 +28,8 @@ class SweepRunner : public ::testing::Test {
   void SetUp() override { dir_ = cli_testing::freshTestDir("mmvlab_runner_"); }
   void TearDown() override { fs::remove_all(dir_); }
 
-  SweepRun run(const std::string& sub, int jobs, Shard shard = {}) {
-    SweepRun r;
+  DesignSweepRun run(const std::string& sub, int jobs, Shard shard = {}) {
+    DesignSweepRun r;
     r.dir = (dir_ / sub).string();
     r.fingerprint = "abc";
     r.header = {"point", "square", "label"};
@@ -47,36 +47,36 @@ class SweepRunner : public ::testing::Test {
 };
 
 TEST_F(SweepRunner, SerialParallelAndShardsMergedWriteTheSameFile) {
-  const std::string serial = slurp(runSweep(run("serial", 1), false).csv);
+  const std::string serial = slurp(runDesignSweep(run("serial", 1), false).csv);
   EXPECT_EQ(serial.substr(0, 19), "point,square,label\n");
   EXPECT_EQ(std::count(serial.begin(), serial.end(), '\n'), 51);
-  EXPECT_EQ(slurp(runSweep(run("parallel", 4), false).csv), serial);
+  EXPECT_EQ(slurp(runDesignSweep(run("parallel", 4), false).csv), serial);
   for (int n : {1, 2, 3}) {
     std::vector<std::string> dirs;
     for (int i = 1; i <= n; ++i) dirs.push_back(run("s" + std::to_string(n) + "_" + std::to_string(i), 2, {i, n}).dir);
-    for (int i = 1; i <= n; ++i) runSweep(run("s" + std::to_string(n) + "_" + std::to_string(i), 2, {i, n}), false);
+    for (int i = 1; i <= n; ++i) runDesignSweep(run("s" + std::to_string(n) + "_" + std::to_string(i), 2, {i, n}), false);
     EXPECT_EQ(slurp(mergeSweepShards(dirs, (dir_ / ("merged" + std::to_string(n))).string(), false)), serial) << n << " shards";
   }
 }
 
 TEST_F(SweepRunner, ATornAndACorruptJournalAreCutBackAndResumed) {
-  const std::string whole = slurp(runSweep(run("whole", 2), false).csv);
+  const std::string whole = slurp(runDesignSweep(run("whole", 2), false).csv);
   // A run killed mid-way: 10 good rows, then a row with a missing field, then a torn line.
-  const SweepRun r = run("killed", 2);
+  const DesignSweepRun r = run("killed", 2);
   fs::create_directories(r.dir);
   const std::string journal = slurp(dir_ / "whole" / "journal.csv");
   std::size_t cut = 0;
   for (int lines = 0; lines < 12; ++lines) cut = journal.find('\n', cut) + 1;
   std::ofstream(fs::path(r.dir) / "journal.csv", std::ios::binary) << journal.substr(0, cut) << "40,1600\n41,1681,p";
   evaluated_ = 0;
-  const SweepRunResult res = runSweep(r, false);
+  const DesignSweepRunResult res = runDesignSweep(r, false);
   EXPECT_EQ(res.reused, 10);
   EXPECT_EQ(res.computed, 40);
   EXPECT_EQ(evaluated_, 40);
   EXPECT_EQ(slurp(res.csv), whole);
   // Resumed again: nothing left to compute, the same file.
   evaluated_ = 0;
-  EXPECT_EQ(runSweep(r, false).computed, 0);
+  EXPECT_EQ(runDesignSweep(r, false).computed, 0);
   EXPECT_EQ(evaluated_, 0);
   EXPECT_EQ(slurp(res.csv), whole);
 }
@@ -84,16 +84,16 @@ TEST_F(SweepRunner, ATornAndACorruptJournalAreCutBackAndResumed) {
 // A row holding nan or inf (never written by a sweep: a hand edit) is computed again,
 // not carried into sweep.csv (where it reached the figures and crashed the heat map).
 TEST_F(SweepRunner, AJournalRowHoldingANonFiniteNumberIsComputedAgain) {
-  const std::string whole = slurp(runSweep(run("whole", 2), false).csv);
+  const std::string whole = slurp(runDesignSweep(run("whole", 2), false).csv);
   for (const char* bad : {"nan", "inf", "-Infinity"}) {
-    const SweepRun r = run(std::string("bad_") + (bad[0] == '-' ? "minf" : bad), 2);
+    const DesignSweepRun r = run(std::string("bad_") + (bad[0] == '-' ? "minf" : bad), 2);
     fs::create_directories(r.dir);
     std::string journal = slurp(dir_ / "whole" / "journal.csv");
     const std::size_t at = journal.find("\n3,9,");
     ASSERT_NE(at, std::string::npos);
     journal.replace(at + 3, 1, bad);
     std::ofstream(fs::path(r.dir) / "journal.csv", std::ios::binary) << journal;
-    const SweepRunResult res = runSweep(r, false);
+    const DesignSweepRunResult res = runDesignSweep(r, false);
     EXPECT_EQ(res.reused, 3) << bad;  // rows 0-2 kept, row 3 and those after it again
     EXPECT_EQ(slurp(res.csv), whole) << bad;
   }
@@ -102,54 +102,54 @@ TEST_F(SweepRunner, AJournalRowHoldingANonFiniteNumberIsComputedAgain) {
 // The journal is read like any input file: a device or a FIFO in its place is refused
 // (a FIFO blocked the run forever, /dev/zero grew to gigabytes).
 TEST_F(SweepRunner, AJournalThatIsNotARegularFileIsRefused) {
-  const SweepRun r = run("fifo", 2);
+  const DesignSweepRun r = run("fifo", 2);
   fs::create_directories(r.dir);
   ASSERT_EQ(mkfifo((fs::path(r.dir) / "journal.csv").c_str(), 0600), 0);
   try {
-    runSweep(r, false);
+    runDesignSweep(r, false);
     FAIL() << "a FIFO journal was accepted";
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("is not a regular file"), std::string::npos) << e.what();
   }
-  const SweepRun z = run("zero", 2);
+  const DesignSweepRun z = run("zero", 2);
   fs::create_directories(z.dir);
   fs::create_symlink("/dev/zero", fs::path(z.dir) / "journal.csv");
-  EXPECT_THROW(runSweep(z, false), OutputError);
+  EXPECT_THROW(runDesignSweep(z, false), OutputError);
 }
 
 // Two sweeps on one --out at once computed every point twice into one journal; the
 // second is now refused while the first holds the directory's lock.
 TEST_F(SweepRunner, ASecondSweepOnTheSameDirectoryIsRefusedWhileTheFirstRuns) {
-  const SweepRun r = run("busy", 2);
+  const DesignSweepRun r = run("busy", 2);
   fs::create_directories(r.dir);
   const int fd = ::open((fs::path(r.dir) / ".mmvlab-sweep.lock").c_str(), O_RDWR | O_CREAT, 0644);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as a running sweep holds it
   try {
-    runSweep(r, false);
+    runDesignSweep(r, false);
     FAIL() << "ran beside another sweep";
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("is in use by another sweep"), std::string::npos) << e.what();
   }
   EXPECT_EQ(evaluated_, 0);
   ::close(fd);  // the first one ends: the directory is free again
-  EXPECT_EQ(runSweep(r, false).computed, 50);
+  EXPECT_EQ(runDesignSweep(r, false).computed, 50);
 }
 
 TEST_F(SweepRunner, AnotherSweepsDirectoryIsRefusedUnlessRestarted) {
-  runSweep(run("a", 2), false);
-  SweepRun other = run("a", 2);
+  runDesignSweep(run("a", 2), false);
+  DesignSweepRun other = run("a", 2);
   other.fingerprint = "def";
-  EXPECT_THROW(runSweep(other, false), OutputError);
-  EXPECT_EQ(runSweep(other, true).computed, 50);
-  SweepRun shard = run("a", 2, {2, 3});
+  EXPECT_THROW(runDesignSweep(other, false), OutputError);
+  EXPECT_EQ(runDesignSweep(other, true).computed, 50);
+  DesignSweepRun shard = run("a", 2, {2, 3});
   shard.fingerprint = "def";
-  EXPECT_THROW(runSweep(shard, false), OutputError);  // the directory holds shard 1/1
+  EXPECT_THROW(runDesignSweep(shard, false), OutputError);  // the directory holds shard 1/1
 }
 
 TEST_F(SweepRunner, MergeRefusesMissingAndOverlappingPointsAndWritesNothing) {
-  runSweep(run("s1", 2, {1, 3}), false);
-  runSweep(run("s2", 2, {2, 3}), false);
+  runDesignSweep(run("s1", 2, {1, 3}), false);
+  runDesignSweep(run("s2", 2, {2, 3}), false);
   try {
     mergeSweepShards({(dir_ / "s1").string(), (dir_ / "s2").string()}, (dir_ / "m").string(), false);
     FAIL() << "merged with a shard missing";

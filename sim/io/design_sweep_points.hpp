@@ -1,5 +1,5 @@
 #pragma once
-/// The rows of `mmvlab sweep` (sim/scene/sweep_spec.hpp): what each point computes and
+/// The rows of `mmvlab sweep` (sim/scene/design_sweep_spec.hpp): what each point computes and
 /// how it is written. A point's row depends on its index only (never on the order or
 /// the thread it runs in), so parallel, sharded and resumed sweeps write the same rows.
 ///
@@ -21,12 +21,12 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene/sweep_spec.hpp"
+#include "sim/scene/design_sweep_spec.hpp"
 
 namespace mmv {
 
-struct SweepContext {
-  SweepSpec spec;
+struct DesignSweepContext {
+  DesignSweepSpec spec;
   std::string scene_text, scene_source;  ///< the base scene.
   std::vector<std::vector<double>> points;
   std::vector<std::string> header;
@@ -37,8 +37,8 @@ struct SweepContext {
 
 /// Reads the base scene, checks every parameter key and output on it (SceneError at
 /// the spec's line:col), runs the nominal point, and lays out the columns.
-SweepContext prepareSweep(const SweepSpec& spec);
+DesignSweepContext prepareDesignSweep(const DesignSweepSpec& spec);
 /// The cells of point `index` after its index column. Thread-safe.
-std::vector<std::string> evaluateSweepPoint(const SweepContext& context, long index);
+std::vector<std::string> evaluateDesignSweepPoint(const DesignSweepContext& context, long index);
 
 }  // namespace mmv

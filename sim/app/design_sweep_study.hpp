@@ -1,8 +1,8 @@
 #pragma once
-/// `sweep`: a design sweep over scene keys (sim/scene/sweep_spec.hpp), each point's
-/// modes, check and fields evaluated by sim/io/sweep_points.hpp, run in parallel,
-/// resumably and in shards by sim/plan/sweep_runner.hpp into DIR (journal.csv,
-/// sweep.csv). (`sweep-config`, the configuration walk, is sim/modes/sweep.hpp.)
+/// `sweep`: a design sweep over scene keys (sim/scene/design_sweep_spec.hpp), each point's
+/// modes, check and fields evaluated by sim/io/design_sweep_points.hpp, run in parallel,
+/// resumably and in shards by sim/plan/design_sweep.hpp into DIR (journal.csv,
+/// sweep.csv). (`sweep-config`, the configuration walk, is sim/modes/config_sweep.hpp.)
 
 #include <functional>
 #include <optional>
@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/app/study.hpp"
-#include "sim/plan/sweep_runner.hpp"
+#include "sim/plan/design_sweep.hpp"
 
 namespace mmv::app {
 
@@ -26,7 +26,7 @@ struct DesignSweepRequest {
 };
 
 struct DesignSweepStudy {
-  SweepRunResult result;  ///< sweep.csv's path and contents
+  DesignSweepRunResult result;  ///< sweep.csv's path and contents
   std::string dir;        ///< where the journal and sweep.csv are
   int jobs = 1;
   nlohmann::ordered_json json;  ///< sweep.json

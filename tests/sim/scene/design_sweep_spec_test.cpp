@@ -1,7 +1,7 @@
-// Sweep specs (sim/scene/sweep_spec.hpp) and their points; bad specs are refused at
-// their line and column before anything runs (sim/io/sweep_points.hpp checks keys and
+// Sweep specs (sim/scene/design_sweep_spec.hpp) and their points; bad specs are refused at
+// their line and column before anything runs (sim/io/design_sweep_points.hpp checks keys and
 // outputs against the scene).
-#include "sim/scene/sweep_spec.hpp"
+#include "sim/scene/design_sweep_spec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,26 +9,26 @@
 
 #include "sim/core/errors.hpp"
 #include <regex>
-#include "sim/io/sweep_points.hpp"
+#include "sim/io/design_sweep_points.hpp"
 
 namespace mmv {
 namespace {
 
 const std::string kScene = std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\nsegments: 2\n";
 
-SweepSpec parse(const std::string& body) { return parseSweepSpec(kScene + body, "spec.yaml", "."); }
+DesignSweepSpec parse(const std::string& body) { return parseSweepSpec(kScene + body, "spec.yaml", "."); }
 
 std::string errorOf(const std::string& body) {
   try {
-    (void)prepareSweep(parse(body));
+    (void)prepareDesignSweep(parse(body));
   } catch (const SceneError& e) {
     return e.what();
   }
   return "";
 }
 
-TEST(SweepSpec, GridVariesTheLastParameterFastest) {
-  const SweepSpec s = parse(
+TEST(DesignSweepSpec, GridVariesTheLastParameterFastest) {
+  const DesignSweepSpec s = parse(
       "parameters:\n  - {key: links.link1.length, values: [2, 3]}\n"
       "  - {key: links.link2.length, range: {from: 1, to: 2, samples: 3}}\noutputs: [mass]\n");
   const auto p = sweepPoints(s);
@@ -39,7 +39,7 @@ TEST(SweepSpec, GridVariesTheLastParameterFastest) {
   EXPECT_EQ(pointOverrides(s, p[5]), (std::vector<std::string>{"links.link1.length=3", "links.link2.length=2"}));
 }
 
-TEST(SweepSpec, LatinHypercubePutsOnePointInEachStratumAndIsSeeded) {
+TEST(DesignSweepSpec, LatinHypercubePutsOnePointInEachStratumAndIsSeeded) {
   const std::string body =
       "parameters:\n  - {key: links.link1.length, range: {from: 1, to: 2, samples: 2}}\n"
       "  - {key: links.link2.length, range: {from: 0.1, to: 10, samples: 2, log: true}}\n"
@@ -57,7 +57,7 @@ TEST(SweepSpec, LatinHypercubePutsOnePointInEachStratumAndIsSeeded) {
   EXPECT_EQ(log.size(), 20u);
 }
 
-TEST(SweepSpec, BadSpecsNameTheirPosition) {
+TEST(DesignSweepSpec, BadSpecsNameTheirPosition) {
   const std::string tail = "outputs: [mass]\n";
   EXPECT_NE(errorOf("parameters:\n  - {key: links.link9.length, values: [1]}\n" + tail).find("spec.yaml:4:5: parameters[0] 'links.link9.length'"),
             std::string::npos)
@@ -89,10 +89,10 @@ TEST(SweepSpec, BadSpecsNameTheirPosition) {
 
 // Each of these exited 65 with no file:line:col (issue 38): the spec's position now
 // leads every message, a set: entry named as itself (not as a command-line --set).
-TEST(SweepSpec, EmptyScalarHamsasAndBadSetSpecsNameTheirPosition) {
+TEST(DesignSweepSpec, EmptyScalarHamsasAndBadSetSpecsNameTheirPosition) {
   auto message = [](const std::string& text) {
     try {
-      (void)prepareSweep(parseSweepSpec(text, "spec.yaml", "."));
+      (void)prepareDesignSweep(parseSweepSpec(text, "spec.yaml", "."));
     } catch (const SceneError& e) {
       return std::string(e.what());
     }
@@ -113,11 +113,11 @@ TEST(SweepSpec, EmptyScalarHamsasAndBadSetSpecsNameTheirPosition) {
             "spec.yaml:4:5: parameters[0] 'links.link9.length': no item 'link9' (known: link1, link2, link3)");
 }
 
-TEST(SweepSpec, PointsAreRowsOfTheirOwn) {
+TEST(DesignSweepSpec, PointsAreRowsOfTheirOwn) {
   // The same point evaluated twice (and out of order) gives the same cells.
-  const SweepContext c = prepareSweep(parse(
+  const DesignSweepContext c = prepareDesignSweep(parse(
       "parameters:\n  - {key: links.link3.length, values: [0.6, 0.9]}\noutputs: [frequencies, mass, check, \"json:modes/modes/0/effective_mass_x_kg\"]\nmodes: 3\n"));
-  const auto b1 = evaluateSweepPoint(c, 1), a = evaluateSweepPoint(c, 0), b2 = evaluateSweepPoint(c, 1);
+  const auto b1 = evaluateDesignSweepPoint(c, 1), a = evaluateDesignSweepPoint(c, 0), b2 = evaluateDesignSweepPoint(c, 1);
   EXPECT_EQ(b1, b2);
   EXPECT_NE(a, b1);
   ASSERT_EQ(a.size() + 1, c.header.size());
@@ -126,9 +126,9 @@ TEST(SweepSpec, PointsAreRowsOfTheirOwn) {
   EXPECT_EQ(c.header.back(), "modes_modes_0_effective_mass_x_kg");  // a JSON pointer as a CSV column name
 }
 
-TEST(SweepSpec, APointTheSceneRefusesIsARowWithItsReason) {
-  const SweepContext c = prepareSweep(parse("parameters:\n  - {key: links.link1.length, values: [2.44, -1]}\noutputs: [mass]\n"));
-  const auto row = evaluateSweepPoint(c, 1);
+TEST(DesignSweepSpec, APointTheSceneRefusesIsARowWithItsReason) {
+  const DesignSweepContext c = prepareDesignSweep(parse("parameters:\n  - {key: links.link1.length, values: [2.44, -1]}\noutputs: [mass]\n"));
+  const auto row = evaluateDesignSweepPoint(c, 1);
   EXPECT_NE(row[1].find("scene error"), std::string::npos) << row[1];
   EXPECT_EQ(row[2], "");  // no mass where there is no scene
 }

@@ -1,4 +1,4 @@
-#include "sim/io/sweep_report.hpp"
+#include "sim/io/config_sweep_report.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -8,7 +8,7 @@
 
 namespace mmv {
 
-std::string sweepCsv(const SweepResult& r) {
+std::string configSweepCsv(const ConfigSweepResult& r) {
   std::ostringstream os;
   for (const auto& ax : r.axes) os << ax.joint << "_deg,";
   os << "point_kind,track,sorted_mode,frequency_hz,mac_to_previous,synthesized_frequency_hz,synthesis_relative_error,"
@@ -29,7 +29,7 @@ std::string sweepCsv(const SweepResult& r) {
   return os.str();
 }
 
-std::string sweepText(const SweepResult& r) {
+std::string configSweepText(const ConfigSweepResult& r) {
   std::ostringstream os;
   os << "Configuration map: system modes tracked by shape (MAC); in parentheses the synthesis error\n"
      << "of " << r.synthesis_method << " (%; * = not 'predicted': MAC < 0.9 or |err| > 1 %)\n"
@@ -90,7 +90,7 @@ std::string sweepText(const SweepResult& r) {
   return os.str();
 }
 
-nlohmann::ordered_json sweepJson(const SweepResult& r) {
+nlohmann::ordered_json configSweepJson(const ConfigSweepResult& r) {
   nlohmann::ordered_json j;
   j["mmvlab_version"] = mmvlabVersion();
   j["command"] = "sweep-config";

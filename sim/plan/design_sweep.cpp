@@ -1,5 +1,5 @@
-// Parallel, resumable, sharded sweeps (sim/plan/sweep_runner.hpp).
-#include "sim/plan/sweep_runner.hpp"
+// Parallel, resumable, sharded sweeps (sim/plan/design_sweep.hpp).
+#include "sim/plan/design_sweep.hpp"
 
 #include "sim/core/files.hpp"
 
@@ -155,7 +155,7 @@ class JournalWriter {
 };
 
 /// The journal in `dir` for this run: read (resume) or created.
-SweepJournal openJournal(const SweepRun& run, bool restart) {
+SweepJournal openJournal(const DesignSweepRun& run, bool restart) {
   const fs::path path = fs::path(run.dir) / kJournal;
   if (fs::exists(path) && restart) fs::remove(path);
   if (!fs::exists(path)) {
@@ -206,7 +206,7 @@ class DirectoryLock {
 
 }  // namespace
 
-SweepRunResult runSweep(const SweepRun& run, bool restart) {
+DesignSweepRunResult runDesignSweep(const DesignSweepRun& run, bool restart) {
   const auto t0 = std::chrono::steady_clock::now();
   MMV_DEMAND(!run.header.empty() && run.header.front() == "point" && run.shard.count >= 1 && run.jobs >= 1);
   std::error_code ec;
@@ -221,7 +221,7 @@ SweepRunResult runSweep(const SweepRun& run, bool restart) {
       ++in_shard;
       if (!journal.rows.count(p)) todo.push_back(p);
     }
-  SweepRunResult result;
+  DesignSweepRunResult result;
   result.reused = in_shard - static_cast<long>(todo.size());
   std::atomic<long> done{result.reused};
   if (run.progress) run.progress(done, in_shard);

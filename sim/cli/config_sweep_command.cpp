@@ -7,8 +7,8 @@
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
-#include "sim/io/sweep_report.hpp"
-#include "sim/modes/sweep.hpp"
+#include "sim/io/config_sweep_report.hpp"
+#include "sim/modes/config_sweep.hpp"
 #include "sim/core/text.hpp"
 
 namespace mmv::cli {
@@ -43,7 +43,7 @@ GridAxis parseGrid(const std::string& text, const ArticleScene& scene) {
 /// A 1-D sweep's figures: the tracked modes' frequencies (log: they span decades), each
 /// mode's change from its first value (linear, so a few per cent show), and the
 /// synthesis error. Unstable shapes are rings at |f| (the growth rate / 2 pi).
-void lineSweepPlots(OutputDir& out, const SweepResult& r, std::size_t tracks, const std::string& scene_name) {
+void lineSweepPlots(OutputDir& out, const ConfigSweepResult& r, std::size_t tracks, const std::string& scene_name) {
   std::vector<render::Series> freq, change, err;
   render::Series unstable{"unstable (ring at growth rate / 2 pi)", {}, {}};
   unstable.markers_only = true;
@@ -90,7 +90,7 @@ void lineSweepPlots(OutputDir& out, const SweepResult& r, std::size_t tracks, co
                     axis, "|synthesized / full - 1| (%)", false);
 }
 
-void plots(OutputDir& out, const SweepResult& r, const std::string& scene_name) {
+void plots(OutputDir& out, const ConfigSweepResult& r, const std::string& scene_name) {
   std::size_t tracks = 0;
   for (const auto& p : r.points) tracks = std::max(tracks, p.tracks.size());
   try {
@@ -122,10 +122,10 @@ void plots(OutputDir& out, const SweepResult& r, const std::string& scene_name) 
 
 }  // namespace
 
-int runSweepCommand(const SweepArgs& args) {
+int runConfigSweepCommand(const ConfigSweepArgs& args) {
   return guarded([&] {
     const ArticleScene scene = loadArticleScene(args, "sweep-config");
-    SweepOptions o;
+    ConfigSweepOptions o;
     if (args.grids.empty() || args.grids.size() > 2) throw UsageError("--grid: give one or two grids");
     for (const auto& g : args.grids) o.axes.push_back(parseGrid(g, scene));
     if (o.axes.size() == 2 && o.axes[0].joint == o.axes[1].joint) throw UsageError("--grid: the two grids name the same joint");
@@ -137,14 +137,14 @@ int runSweepCommand(const SweepArgs& args) {
     o.synthesis.modes_per_link = args.component_modes;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const SweepResult r = runSweep(scene, o);
+    const ConfigSweepResult r = runConfigSweep(scene, o);
     if (out) {
-      out->write("sweep.csv", sweepCsv(r));
-      out->write("sweep.json", sweepJson(r).dump(2) + "\n");
+      out->write("sweep.csv", configSweepCsv(r));
+      out->write("sweep.json", configSweepJson(r).dump(2) + "\n");
       plots(*out, r, scene.name);
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(sweepJson(r)) : emitResult(sweepText(r));
+    args.json ? emitResult(configSweepJson(r)) : emitResult(configSweepText(r));
     return kOk;
   });
 }

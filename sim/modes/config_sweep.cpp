@@ -1,4 +1,4 @@
-#include "sim/modes/sweep.hpp"
+#include "sim/modes/config_sweep.hpp"
 #include "sim/core/progress.hpp"
 
 #include <cmath>
@@ -34,7 +34,7 @@ std::string anglesText(const std::vector<double>& a) {
 /// the shapes change too fast to follow.
 class Walker {
  public:
-  Walker(const ArticleScene& scene, const SweepOptions& o, SweepResult& r) : scene_(scene), o_(o), r_(r), so_(o.synthesis) {
+  Walker(const ArticleScene& scene, const ConfigSweepOptions& o, ConfigSweepResult& r) : scene_(scene), o_(o), r_(r), so_(o.synthesis) {
     so_.compare_modes = o.modes + 4;
   }
 
@@ -73,7 +73,7 @@ class Walker {
   }
 
   void fail(const std::vector<double>& angles, bool grid, const std::string& failure) {
-    SweepPoint p;
+    ConfigSweepPoint p;
     p.angles_deg = angles;
     p.solved = false;
     p.refined = !grid;
@@ -86,7 +86,7 @@ class Walker {
   }
 
   void record(const std::vector<double>& angles, bool grid, const SynthesisResult& syn) {
-    SweepPoint p;
+    ConfigSweepPoint p;
     p.angles_deg = angles;
     p.refined = !grid;
     r_.refined_points += !grid;
@@ -133,8 +133,8 @@ class Walker {
   }
 
   const ArticleScene& scene_;
-  const SweepOptions& o_;
-  SweepResult& r_;
+  const ConfigSweepOptions& o_;
+  ConfigSweepResult& r_;
   SynthesisOptions so_;
   Eigen::MatrixXd prev_;  ///< tracked shapes at the previous point.
   std::vector<double> prev_angles_;
@@ -143,11 +143,11 @@ class Walker {
 
 }  // namespace
 
-SweepResult runSweep(const ArticleScene& scene, const SweepOptions& o) {
+ConfigSweepResult runConfigSweep(const ArticleScene& scene, const ConfigSweepOptions& o) {
   MMV_DEMAND(!o.axes.empty() && o.axes.size() <= 2);  // one or two axes (the CLI checks --grid)
   for (const auto& ax : o.axes)
     if (!scene.article.findJoint(ax.joint)) throw OptionError("--grid", ": " + scene.source + " has no joint '" + ax.joint + "'");
-  SweepResult r;
+  ConfigSweepResult r;
   r.axes = o.axes;
   const std::vector<double> a0 = o.axes[0].values();
   const std::vector<double> a1 = o.axes.size() > 1 ? o.axes[1].values() : std::vector<double>{0.0};

@@ -1,5 +1,5 @@
-// The rows of `mmvlab sweep` (sim/io/sweep_points.hpp).
-#include "sim/io/sweep_points.hpp"
+// The rows of `mmvlab sweep` (sim/io/design_sweep_points.hpp).
+#include "sim/io/design_sweep_points.hpp"
 #include "sim/core/progress.hpp"
 
 #include "sim/core/files.hpp"
@@ -20,7 +20,7 @@ namespace mmv {
 
 namespace {
 
-bool wants(const SweepSpec& s, const std::string& o) { return std::find(s.outputs.begin(), s.outputs.end(), o) != s.outputs.end(); }
+bool wants(const DesignSweepSpec& s, const std::string& o) { return std::find(s.outputs.begin(), s.outputs.end(), o) != s.outputs.end(); }
 
 /// `name` is `link` or one of its branches (link3 -> link3a, link3b): a symmetric
 /// pair's modes put equal strain in both branches, so either may come out on top.
@@ -44,7 +44,7 @@ std::string withoutSetPrefix(const std::string& message, const std::string& set)
   return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
 }
 
-ArticleScene sceneAt(const SweepContext& c, const std::vector<std::string>& extra) {
+ArticleScene sceneAt(const DesignSweepContext& c, const std::vector<std::string>& extra) {
   std::vector<std::string> sets = c.spec.sets;
   sets.insert(sets.end(), extra.begin(), extra.end());
   Scene s = parseScene(c.scene_text, c.scene_source, sets);
@@ -89,7 +89,7 @@ struct PointResult {
   CheckReport check;
 };
 
-PointResult analyse(const SweepContext& c, const ArticleScene& scene) {
+PointResult analyse(const DesignSweepContext& c, const ArticleScene& scene) {
   PointResult r;
   ModesOptions mo;
   mo.with_shapes = true;
@@ -98,8 +98,8 @@ PointResult analyse(const SweepContext& c, const ArticleScene& scene) {
   return r;
 }
 
-void appendOutputs(const SweepContext& c, const PointResult* r, std::vector<std::string>& cells) {
-  const SweepSpec& s = c.spec;
+void appendOutputs(const DesignSweepContext& c, const PointResult* r, std::vector<std::string>& cells) {
+  const DesignSweepSpec& s = c.spec;
   std::optional<nlohmann::ordered_json> modes_json, check_json;  // written once per point, only when asked for
   for (const auto& o : s.outputs) {
     if (o == "frequencies") {
@@ -163,7 +163,7 @@ std::string fnv1a(const std::string& s) {
   return strf("%016llx", static_cast<unsigned long long>(h));
 }
 
-void layOut(SweepContext& c, const PointResult& nominal) {
+void layOut(DesignSweepContext& c, const PointResult& nominal) {
   c.header = {"point"};
   for (const auto& p : c.spec.parameters) c.header.push_back(p.key);
   c.header.push_back("status");
@@ -210,8 +210,8 @@ void layOut(SweepContext& c, const PointResult& nominal) {
 
 }  // namespace
 
-SweepContext prepareSweep(const SweepSpec& spec) {
-  SweepContext c;
+DesignSweepContext prepareDesignSweep(const DesignSweepSpec& spec) {
+  DesignSweepContext c;
   c.spec = spec;
   if (spec.scene_path.empty()) {
     c.scene_text = defaultSceneYaml();
@@ -226,7 +226,7 @@ SweepContext prepareSweep(const SweepSpec& spec) {
   // The scene alone (its own errors carry its own positions; a HAM-SAS scene is named
   // at the spec's scene: key), then each set: entry in turn, then each parameter alone:
   // an error points at the spec's line that caused it.
-  SweepContext bare = c;
+  DesignSweepContext bare = c;
   bare.spec.sets.clear();
   (void)sceneAt(bare, {});
   for (std::size_t i = 0; i < spec.sets.size(); ++i) {
@@ -258,7 +258,7 @@ SweepContext prepareSweep(const SweepSpec& spec) {
   return c;
 }
 
-std::vector<std::string> evaluateSweepPoint(const SweepContext& c, long index) {
+std::vector<std::string> evaluateDesignSweepPoint(const DesignSweepContext& c, long index) {
   const std::vector<double>& x = c.points.at(static_cast<std::size_t>(index));
   std::vector<std::string> cells;
   for (double v : x) cells.push_back(cell(v));

@@ -155,7 +155,7 @@ void gridMap(const SweepTable& t, OutputDir& out) {
 
 }  // namespace
 
-void writeSweepPlots(const std::string& csv_text, OutputDir& out) {
+void writeDesignSweepPlots(const std::string& csv_text, OutputDir& out) {
   const SweepTable t = readTable(csv_text);
   if (t.rows.empty()) return;
   const std::vector<int> freqs = columnsLike(t, "mode", "_hz"), margins = columnsLike(t, "", "_margin_pct");

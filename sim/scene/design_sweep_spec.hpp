@@ -37,7 +37,7 @@ struct SweepParameter {
   double at(double u) const;
 };
 
-struct SweepSpec {
+struct DesignSweepSpec {
   std::string source;      ///< the spec file.
   std::string text;        ///< the spec as read (identifies the sweep: resumes and shards must match it).
   std::string scene_path;  ///< resolved against the spec's folder; empty: the embedded default scene.
@@ -59,14 +59,14 @@ struct SweepSpec {
 constexpr long kMaxSweepPoints = 1000000;
 
 /// Reads a sweep spec. Throws SceneFileError (missing) or SceneError (file:line:col).
-SweepSpec loadSweepSpec(const std::string& path);
-SweepSpec parseSweepSpec(const std::string& text, const std::string& source, const std::string& folder);
+DesignSweepSpec loadSweepSpec(const std::string& path);
+DesignSweepSpec parseSweepSpec(const std::string& text, const std::string& source, const std::string& folder);
 /// The design's points: one value per parameter each. Grid: every combination, the
 /// last parameter varying fastest; Latin hypercube: `lhs_samples` points, each
 /// parameter's range cut into that many strata, one point in each, strata paired by a
 /// seeded shuffle (std::mt19937_64). Deterministic.
-std::vector<std::vector<double>> sweepPoints(const SweepSpec& spec);
+std::vector<std::vector<double>> sweepPoints(const DesignSweepSpec& spec);
 /// "KEY=VALUE" for each parameter at a point (the shortest text that reads back exactly).
-std::vector<std::string> pointOverrides(const SweepSpec& spec, const std::vector<double>& point);
+std::vector<std::string> pointOverrides(const DesignSweepSpec& spec, const std::vector<double>& point);
 
 }  // namespace mmv

@@ -36,7 +36,7 @@ struct GridAxis {
   std::vector<double> values() const;  ///< from, from+step, ..., up to to (inclusive within 1e-9 step).
 };
 
-struct SweepOptions {
+struct ConfigSweepOptions {
   std::vector<GridAxis> axes;  ///< one or two.
   int modes = 6;               ///< tracks.
   SynthesisOptions synthesis;  ///< compare_modes is set to modes + 4 (the tracking window).
@@ -58,7 +58,7 @@ struct TrackPoint {
   std::string state;
 };
 
-struct SweepPoint {
+struct ConfigSweepPoint {
   std::vector<double> angles_deg;  ///< one per axis.
   bool solved = true;
   std::string failure;             ///< why there is no result (e.g. a limit point of the equilibrium path).
@@ -66,10 +66,10 @@ struct SweepPoint {
   bool refined = false;            ///< inserted between grid points to follow the shapes.
 };
 
-struct SweepResult {
+struct ConfigSweepResult {
   std::vector<GridAxis> axes;
   std::string synthesis_method;
-  std::vector<SweepPoint> points;  ///< in walk order.
+  std::vector<ConfigSweepPoint> points;  ///< in walk order.
   double min_tracking_mac = 1;     ///< worst MAC between consecutive points of any track not lost.
   int failed_points = 0;
   int refined_points = 0, lost_tracks = 0;
@@ -78,6 +78,6 @@ struct SweepResult {
 /// Throws SceneError for an unknown joint. A grid point without an equilibrium (or
 /// with an ill-posed eigenproblem) is kept with solved = false and its failure; the
 /// tracks restart by frequency rank after it.
-SweepResult runSweep(const ArticleScene& scene, const SweepOptions& options);
+ConfigSweepResult runConfigSweep(const ArticleScene& scene, const ConfigSweepOptions& options);
 
 }  // namespace mmv

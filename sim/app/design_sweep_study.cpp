@@ -1,4 +1,4 @@
-#include "sim/app/sweep_study.hpp"
+#include "sim/app/design_sweep_study.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -6,7 +6,7 @@
 
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
-#include "sim/io/sweep_points.hpp"
+#include "sim/io/design_sweep_points.hpp"
 
 namespace mmv::app {
 
@@ -16,9 +16,9 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
   if (r.shard.count < 1 || r.shard.index < 1 || r.shard.index > r.shard.count)
     throw UsageError(strf("%s: expected I/N with 1 <= I <= N (got %d/%d)", optionName(r.front, "--shard").c_str(),
                           r.shard.index, r.shard.count));
-  const SweepSpec spec = loadSweepSpec(r.spec);
-  const SweepContext context = prepareSweep(spec);  // every key and output checked before anything is written
-  SweepRun run;
+  const DesignSweepSpec spec = loadSweepSpec(r.spec);
+  const DesignSweepContext context = prepareDesignSweep(spec);  // every key and output checked before anything is written
+  DesignSweepRun run;
   run.dir = r.shard.count > 1 ? (std::filesystem::path(r.out) / strf("shard-%d-of-%d", r.shard.index, r.shard.count)).string()
                               : r.out;
   run.fingerprint = context.fingerprint;
@@ -26,7 +26,7 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
   run.total_points = static_cast<long>(context.points.size());
   run.shard = r.shard;
   run.jobs = r.jobs > 0 ? r.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  run.evaluate = [&context](long i) { return evaluateSweepPoint(context, i); };
+  run.evaluate = [&context](long i) { return evaluateDesignSweepPoint(context, i); };
   run.progress = [&r](long done, long total) {
     progressCount(done, total, "point");
     if (r.progress) r.progress(done, total);
@@ -34,7 +34,7 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
   DesignSweepStudy s;
   {
     const ProgressStage stage("sweep points");
-    s.result = runSweep(run, r.restart);
+    s.result = runDesignSweep(run, r.restart);
   }
   s.dir = run.dir;
   s.jobs = run.jobs;
@@ -42,7 +42,7 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
   j["spec"] = context.spec.source;
   j["scene"] = context.scene_source;
   j["fingerprint"] = context.fingerprint;
-  j["design"] = context.spec.design == SweepSpec::Design::Grid ? "grid" : "latin_hypercube";
+  j["design"] = context.spec.design == DesignSweepSpec::Design::Grid ? "grid" : "latin_hypercube";
   j["points"] = context.points.size();
   j["shard"] = run.shard.text();
   j["jobs"] = run.jobs;

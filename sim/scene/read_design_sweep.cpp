@@ -1,4 +1,4 @@
-// The sweep spec (sim/scene/sweep_spec.hpp): read and checked key by key, then expanded
+// The sweep spec (sim/scene/design_sweep_spec.hpp): read and checked key by key, then expanded
 // into its points.
 #include <filesystem>
 #include <fstream>
@@ -9,7 +9,7 @@
 #include "sim/core/text.hpp"
 #include "sim/core/integrators.hpp"
 #include "sim/scene/reader_util.hpp"
-#include "sim/scene/sweep_spec.hpp"
+#include "sim/scene/design_sweep_spec.hpp"
 
 namespace mmv {
 
@@ -69,7 +69,7 @@ SweepParameter readParameter(const YamlReader& r, const YAML::Node& n, const std
   return p;
 }
 
-void readDesign(const YamlReader& r, const YAML::Node& n, SweepSpec& s) {
+void readDesign(const YamlReader& r, const YAML::Node& n, DesignSweepSpec& s) {
   if (n.IsScalar()) {
     if (n.Scalar() != "grid") r.fail(n.Mark(), "design: unknown design '" + n.Scalar() + "' (known: grid, {type: latin_hypercube, samples, seed})");
     return;
@@ -81,14 +81,14 @@ void readDesign(const YamlReader& r, const YAML::Node& n, SweepSpec& s) {
     return;
   }
   if (type != "latin_hypercube") r.fail(m.at("type").Mark(), "design.type: unknown design '" + type + "' (known: grid, latin_hypercube)");
-  s.design = SweepSpec::Design::LatinHypercube;
+  s.design = DesignSweepSpec::Design::LatinHypercube;
   s.lhs_samples = r.integer(r.require(m, n, "design", "samples"), "design.samples");
   if (s.lhs_samples < 1 || s.lhs_samples > kMaxSweepPoints)
     r.fail(m.at("samples").Mark(), strf("design.samples must be 1 to %ld (got %d)", kMaxSweepPoints, s.lhs_samples));
   if (m.count("seed")) s.seed = static_cast<std::uint64_t>(r.nonNegative(m.at("seed"), "design.seed", ""));
 }
 
-void readOutputs(const YamlReader& r, const YAML::Node& n, SweepSpec& s) {
+void readOutputs(const YamlReader& r, const YAML::Node& n, DesignSweepSpec& s) {
   r.sequence(n, "outputs");
   for (std::size_t i = 0; i < n.size(); ++i) {
     const std::string o = r.text(n[i], strf("outputs[%zu]", i));
@@ -104,7 +104,7 @@ void readOutputs(const YamlReader& r, const YAML::Node& n, SweepSpec& s) {
 
 }  // namespace
 
-SweepSpec parseSweepSpec(const std::string& text, const std::string& source, const std::string& folder) {
+DesignSweepSpec parseSweepSpec(const std::string& text, const std::string& source, const std::string& folder) {
   YamlReader r(source);
   YAML::Node root;
   try {
@@ -118,7 +118,7 @@ SweepSpec parseSweepSpec(const std::string& text, const std::string& source, con
     r.fail(root.Mark(), std::string("a sweep spec is a mapping (scene, parameters, design, outputs), not a ") +
                             (root.IsSequence() ? "list" : "scalar"));
   auto m = r.mapping(root, "", {"scene", "set", "segments", "parameters", "design", "outputs", "modes"});
-  SweepSpec s;
+  DesignSweepSpec s;
   s.source = source;
   s.text = text;
   s.scene_where = source;
@@ -148,7 +148,7 @@ SweepSpec parseSweepSpec(const std::string& text, const std::string& source, con
     s.modes = r.integer(m.at("modes"), "modes");
     if (s.modes < 1 || s.modes > 100) r.fail(m.at("modes").Mark(), strf("modes must be 1 to 100 (got %d)", s.modes));
   }
-  if (s.design == SweepSpec::Design::Grid) {
+  if (s.design == DesignSweepSpec::Design::Grid) {
     double n = 1;
     for (const auto& p : s.parameters) n *= static_cast<double>(p.gridValues().size());
     if (n > kMaxSweepPoints) r.fail(params.Mark(), strf("parameters: the grid has %.4g points, above the limit of %ld", n, kMaxSweepPoints));
@@ -156,17 +156,17 @@ SweepSpec parseSweepSpec(const std::string& text, const std::string& source, con
   return s;
 }
 
-SweepSpec loadSweepSpec(const std::string& path) {
+DesignSweepSpec loadSweepSpec(const std::string& path) {
   std::string text, why;
   if (!readInputFile(path, limits::kMaxSceneBytes, text, why))
     throw SceneFileError(printable(path) + ": cannot read sweep spec: " + why);
   return parseSweepSpec(text, path, std::filesystem::path(path).parent_path().string());
 }
 
-std::vector<std::vector<double>> sweepPoints(const SweepSpec& spec) {
+std::vector<std::vector<double>> sweepPoints(const DesignSweepSpec& spec) {
   std::vector<std::vector<double>> out;
   const std::size_t n = spec.parameters.size();
-  if (spec.design == SweepSpec::Design::Grid) {
+  if (spec.design == DesignSweepSpec::Design::Grid) {
     std::vector<std::vector<double>> values;
     for (const auto& p : spec.parameters) values.push_back(p.gridValues());
     std::vector<std::size_t> index(n, 0);
@@ -193,7 +193,7 @@ std::vector<std::vector<double>> sweepPoints(const SweepSpec& spec) {
   return out;
 }
 
-std::vector<std::string> pointOverrides(const SweepSpec& spec, const std::vector<double>& point) {
+std::vector<std::string> pointOverrides(const DesignSweepSpec& spec, const std::vector<double>& point) {
   std::vector<std::string> sets;
   for (std::size_t k = 0; k < point.size(); ++k) sets.push_back(spec.parameters[k].key + "=" + shortest(point[k]));
   return sets;
