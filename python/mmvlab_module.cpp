@@ -16,16 +16,19 @@
 #include <vector>
 
 #include "sim/app/component_studies.hpp"
+#include "sim/app/config_sweep_study.hpp"
 #include "sim/app/correlate_study.hpp"
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
 #include "sim/app/simulate_study.hpp"
 #include "sim/app/design_sweep_study.hpp"
+#include "sim/app/hamsas_linear_study.hpp"
 #include "sim/app/trade_study.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
+#include "sim/io/hamsas_report.hpp"
 #include "sim/io/mode_fields.hpp"
 #include "sim/core/text.hpp"
 
@@ -199,15 +202,50 @@ py::dict stateSpace(const mmv::StateSpace& s) {
   return d;
 }
 
+/// A grid (Hz) as a numpy array that owns its copy.
+Eigen::VectorXd gridCopy(const std::vector<double>& f) {
+  return Eigen::Map<const Eigen::VectorXd>(f.data(), static_cast<Eigen::Index>(f.size()));
+}
+
+/// frf on the isolator: the 6 x 6 transmissibility per frequency, [frequency, table DOF, ground DOF].
+py::dict hamsasFrf(const mmv::HamsasScene& scene, const mmv::app::LinearRequest& r, py::object progress) {
+  const mmv::app::HamsasFrfStudy s = released(progress, [&] { return mmv::app::runHamsasFrfStudy(scene, r); });
+  py::dict d;
+  d["json"] = s.json.dump();
+  d["text"] = s.text;
+  d["warnings"] = std::vector<std::string>{};
+  d["frequencies_hz"] = gridCopy(s.f);
+  d["T"] = responses(s.T, 6, 6);
+  std::vector<std::string> dofs;
+  for (int k = 0; k < 6; ++k) dofs.push_back(mmv::hamsasDofName(k));
+  d["dof_names"] = dofs;
+  return d;
+}
+
+/// rom on the isolator: the actuator-to-sensor model, its reduction and both responses.
+py::dict hamsasRom(const mmv::HamsasScene& scene, const mmv::app::LinearRequest& r, py::object progress) {
+  const mmv::app::HamsasRomStudy s = released(progress, [&] { return mmv::app::runHamsasRomStudy(scene, r); });
+  const std::vector<double> f = mmv::app::checkLinearRequest(r);
+  std::vector<Eigen::MatrixXcd> hf, hr;
+  for (double x : f) hf.push_back(s.full.response(2 * M_PI * x)), hr.push_back(s.red.model.response(2 * M_PI * x));
+  py::dict d;
+  d["json"] = s.json.dump();
+  d["text"] = s.text;
+  d["warnings"] = std::vector<std::string>{};
+  d["frequencies_hz"] = gridCopy(f);
+  d["H"] = responses(hf, s.full.C.rows(), s.full.B.cols());
+  d["H_reduced"] = responses(hr, s.full.C.rows(), s.full.B.cols());
+  d["reduced"] = stateSpace(s.red.model);
+  d["full"] = stateSpace(s.full);
+  return d;
+}
+
 /// frf and rom: the study, then what Python gets of it (`rom`: the romJson document).
 py::dict linear(const PyScene& scene, int segments, const std::vector<std::string>& inputs,
                 const std::vector<std::string>& outputs, std::optional<double> f_min, std::optional<double> f_max, int points,
                 int rom_modes, std::optional<std::pair<double, double>> band, bool residualize,
                 std::optional<double> damping, double rom_target, double target_error, double time_budget, bool rom,
-                py::object progress) {
-  if (!std::holds_alternative<mmv::ArticleScene>(scene.scene))
-    throw mmv::UsageError(std::string(rom ? "rom" : "frf") +
-                          " from Python takes the article's scenes; the isolator's is the command line's for now");
+                const std::string& vary, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   const mmv::Scene& sc = prepared.scene;
   mmv::app::LinearRequest r;
@@ -226,7 +264,9 @@ py::dict linear(const PyScene& scene, int segments, const std::vector<std::strin
   r.target_error = target_error;
   r.time_budget = time_budget;
   r.segments_given = segments != 0;
+  r.vary = vary;
   r.front = Front::Python;
+  if (const auto* h = std::get_if<mmv::HamsasScene>(&sc)) return rom ? hamsasRom(*h, r, progress) : hamsasFrf(*h, r, progress);
   const mmv::app::LinearStudy a = released(progress, [&] { return mmv::app::runLinearStudy(std::get<mmv::ArticleScene>(sc), r); });
   const nlohmann::ordered_json json = rom ? a.romJson() : a.frfJson();
   mmv::app::checkResultFinite(json);
@@ -237,7 +277,7 @@ py::dict linear(const PyScene& scene, int segments, const std::vector<std::strin
   d["text"] = a.summaryText();
   d["warnings"] = prepared.warnings;
   // A VectorXd by value (not a Map of the study's vector, which dies here): numpy owns the copy.
-  d["frequencies_hz"] = Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(a.f.data(), static_cast<Eigen::Index>(a.f.size())));
+  d["frequencies_hz"] = gridCopy(a.f);
   const Eigen::Index no = a.lm.full.C.rows(), ni = a.lm.full.B.cols();
   d["H"] = responses(a.hf, no, ni);
   d["H_reduced"] = responses(hr, no, ni);
@@ -329,6 +369,23 @@ py::tuple trade(const PyScene& scene, int segments, const std::vector<std::strin
   return py::make_tuple(s.json.dump(), s.text, s.csv, prepared.warnings);
 }
 
+py::tuple sweepConfig(const PyScene& scene, int segments, const std::vector<std::string>& grids, int count,
+                      int component_modes, const std::string& bc, const std::string& tip_mass, const std::string& method,
+                      py::object progress) {
+  const PyScene prepared = withSegments(scene, segments);
+  const mmv::Scene& sc = prepared.scene;
+  mmv::app::ConfigSweepRequest r;
+  r.grids = grids;
+  r.modes = count;
+  r.component_modes = component_modes;
+  r.bc = bc;
+  r.tip_mass = tip_mass;
+  r.method = method;
+  r.front = Front::Python;
+  const mmv::app::ConfigSweepStudy s = released(progress, [&] { return mmv::app::runConfigSweepStudy(sc, r); });
+  return py::make_tuple(s.json.dump(), s.text, s.csv, prepared.warnings);
+}
+
 py::tuple converge(const PyScene& scene, int max_segments, int modes, py::object progress) {
   mmv::app::ConvergeRequest r;
   r.max_segments = max_segments;
@@ -406,7 +463,8 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("target_error"), py::arg("time_budget"), py::arg("progress"));
   m.def("linear", &linear, py::arg("scene"), py::arg("segments"), py::arg("inputs"), py::arg("outputs"), py::arg("f_min"),
         py::arg("f_max"), py::arg("points"), py::arg("rom_modes"), py::arg("band"), py::arg("residualize"), py::arg("damping"),
-        py::arg("rom_target"), py::arg("target_error"), py::arg("time_budget"), py::arg("rom"), py::arg("progress"));
+        py::arg("rom_target"), py::arg("target_error"), py::arg("time_budget"), py::arg("rom"), py::arg("vary"),
+        py::arg("progress"));
   m.def("simulate", &simulate, py::arg("scene"), py::arg("segments"), py::arg("integrator"), py::arg("accuracy"),
         py::arg("absolute_tolerance"), py::arg("duration"), py::arg("sample_rate"), py::arg("verify"),
         py::arg("verify_target"), py::arg("target_error"), py::arg("points"), py::arg("time_budget"), py::arg("progress"));
@@ -427,6 +485,8 @@ PYBIND11_MODULE(_mmvlab, m) {
                           py::arg("meaning") = f.meaning));
     return out;
   });
+  m.def("sweep_config", &sweepConfig, py::arg("scene"), py::arg("segments"), py::arg("grids"), py::arg("modes"),
+        py::arg("component_modes"), py::arg("bc"), py::arg("tip_mass"), py::arg("method"), py::arg("progress"));
   m.def("trade", &trade, py::arg("scene"), py::arg("segments"), py::arg("integrators"), py::arg("accuracies"),
         py::arg("segment_ladder"), py::arg("modes_ladder"), py::arg("modes_accuracies"), py::arg("points"),
         py::arg("duration"), py::arg("target_error"), py::arg("all"), py::arg("run_budget"), py::arg("time_budget"),

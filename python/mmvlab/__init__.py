@@ -33,7 +33,8 @@ __all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate
            "FrfResult", "RomResult", "SimulateResult", "SweepResult", "ConvergeResult", "CompareResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
            "ModesResult", "CheckResult", "PlacementResult", "correlate", "CorrelateResult", "mode_fields", "trade",
-           "TradeResult"]
+           "TradeResult", "sweep_config", "ConfigSweepResult",
+           "TransmissibilityResult"]
 
 
 class SceneWarning(UserWarning):
@@ -220,26 +221,46 @@ class RomResult(FrfResult):
     `numpy.linalg.solve(E, A)`; the responses as `FrfResult`'s."""
 
 
+class TransmissibilityResult(Result):
+    """frf on a HAM-SAS scene: `frequencies_hz`, `T` (complex array [frequency, table DOF,
+    ground DOF]: m/m, m/rad, rad/m or rad/rad), `dof_names` (x, y, z, rx, ry, rz), and with
+    `vary`, `varied` (the parameter, its unit and each value's x and z at 10 Hz in dB)."""
+
+    def __init__(self, d):
+        super().__init__(d["json"], d["text"])
+        self.frequencies_hz = d["frequencies_hz"]
+        self.T = d["T"]
+        self.dof_names = d["dof_names"]
+        self.varied = self.json.get("varied")
+
+
 def _linear(scene, rom, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize, damping,
-            rom_target, target_error, time_budget, progress):
+            rom_target, target_error, time_budget, progress, vary=None):
     if band_hz is not None and len(band_hz) != 2:
         raise UsageError(f"band_hz: expected (f_min_hz, f_max_hz) (got {band_hz!r})")
+    if vary is not None and not isinstance(vary, str):
+        key, values = vary  # (key, values) as KEY=V1,V2,...
+        vary = f"{key}=" + ",".join(repr(float(v)) for v in values)
     d = _mmvlab.linear(scene, int(segments), [str(x) for x in inputs], [str(x) for x in outputs],
                        None if f_min_hz is None else float(f_min_hz), None if f_max_hz is None else float(f_max_hz),
                        int(points), int(rom_modes), None if band_hz is None else (float(band_hz[0]), float(band_hz[1])),
                        bool(residualize), None if damping is None else float(damping), float(rom_target),
-                       float(target_error), float(time_budget), rom, progress)
+                       float(target_error), float(time_budget), rom, vary or "", progress)
     _warn(d["warnings"])
+    if "T" in d:
+        return TransmissibilityResult(d)
     return RomResult(d) if rom else FrfResult(d)
 
 
 def frf(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
-        residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, progress=None):
+        residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, vary=None, progress=None):
     """`mmvlab frf`: responses between `inputs` (table_x, torque:JOINT, force:POINT:AXIS, ...)
     and `outputs` (POINT:AXIS[:disp|vel|acc|acc_abs]), full and reduced, from f_min_hz
-    (0.01) to f_max_hz (100). `damping`: every mode's ratio (None: the scene's, else 0.01)."""
+    (0.01) to f_max_hz (100). `damping`: every mode's ratio (None: the scene's, else 0.01).
+    On a HAM-SAS scene: its transmissibility (a `TransmissibilityResult`), optionally over
+    `vary`, one parameter's values ("KEY=V1,V2" or (key, values))."""
     return _linear(scene, False, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize,
-                   damping, rom_target, target_error, time_budget, progress)
+                   damping, rom_target, target_error, time_budget, progress, vary)
 
 
 def rom(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
@@ -298,6 +319,34 @@ def _csv_table(text):
         except ValueError:
             table[c] = cells
     return columns, table
+
+
+class ConfigSweepResult(Result):
+    """A configuration sweep: `.json` as `sweep-config --json`; `points` its grid points
+    (dicts: angles_deg, refined, solved, tracks: each tracked mode's frequency, MAC to the
+    previous point, synthesized frequency and error, verdict), `table[column]` and
+    `columns` (its sweep.csv: a row per point and track), `csv`."""
+
+    def __init__(self, json_text, text, csv):
+        super().__init__(json_text, text)
+        self.csv = csv
+        self.columns, self.table = _csv_table(csv)
+        self.points = self.json["points"]
+
+
+def sweep_config(scene, grids, *, segments=0, modes=6, component_modes=4, bc="clamped-free", tip_mass="torquer",
+                 method="assumed", progress=None):
+    """`mmvlab sweep-config`: the scene's system modes over a grid of joint angles, tracked
+    by shape, and the component synthesis (`method`: assumed or craig-bampton, with `bc`,
+    `tip_mass`, `component_modes` per link) judged at each point. `grids`: one or two
+    "JOINT:FROM_DEG:TO_DEG:STEP_DEG" (a string alone is one grid)."""
+    if isinstance(grids, str):
+        grids = [grids]
+    json_text, text, csv, warns = _mmvlab.sweep_config(scene, int(segments), [str(g) for g in grids], int(modes),
+                                                       int(component_modes), str(bc), str(tip_mass), str(method),
+                                                       progress)
+    _warn(warns)
+    return ConfigSweepResult(json_text, text, csv)
 
 
 class TradeResult(Result):

@@ -201,6 +201,46 @@ def test_place_sensors_equals_the_cli_json():
     assert len(py.chosen) == 6
 
 
+def test_sweep_config_equals_the_cli_json():
+    py = mmvlab.sweep_config(mmvlab.load_scene(), "joint2:0:20:10", segments=2, modes=3, method="craig-bampton")
+    cli = cli_json("sweep-config", "--segments", "2", "--grid", "joint2:0:20:10", "--modes", "3", "--method",
+                   "craig-bampton")
+    assert without_timing(py.json) == without_timing(cli)
+    assert len(py.points) == 3 and py.columns[0] == "joint2_deg"
+    # Each tracked frequency two ways: sweep.csv's digits and the JSON's number.
+    rows = [(p["angles_deg"][0], t["frequency_hz"]) for p in py.points for t in p["tracks"]]
+    assert len(rows) == len(py.table["frequency_hz"])
+    for (angle, f), a, g in zip(rows, py.table["joint2_deg"], py.table["frequency_hz"]):
+        assert a == angle and g == pytest.approx(f, rel=1e-7)
+
+
+def test_hamsas_frf_and_rom_equal_the_cli_json(tmp_path):
+    h = mmvlab.load_scene(scene_path("hamsas.yaml"))
+    py = mmvlab.frf(h, points=60, vary=("counterweight_mass", [0, 3.5]))
+    cli = cli_json("frf", scene_path("hamsas.yaml"), "--points", "60", "--vary", "counterweight_mass=0,3.5")
+    assert without_timing(py.json) == without_timing(cli)
+    assert py.T.shape == (60, 6, 6) and py.dof_names[0] == "x" and len(py.varied["points"]) == 2
+    # Each curve two ways: the complex array's magnitude and the JSON's dB.
+    for p in py.json["pairs"]:
+        i, j = py.dof_names.index(p["table"]), py.dof_names.index(p["ground"])
+        seen = abs(py.T[:, i, j]) > 1e-15  # an exact zero (by symmetry) is the JSON's floor, -inf here
+        np.testing.assert_allclose(20 * np.log10(abs(py.T[seen, i, j])), np.array(p["magnitude_db"])[seen], rtol=1e-9)
+    # The 10 Hz table two ways: the study's own at 10 Hz and a grid 1, 10, 100 Hz's middle.
+    t = mmvlab.frf(h, f_min_hz=1, f_max_hz=100, points=3)
+    assert t.frequencies_hz[1] == pytest.approx(10, rel=1e-12)
+    for i in range(6):
+        assert 20 * np.log10(abs(t.T[1, i, i])) == pytest.approx(t.json["at_10_hz_db"][i][i], abs=1e-6)
+    rom = mmvlab.rom(h, points=60, rom_modes=6)
+    out = tmp_path / "rom"
+    cli_rom = cli_json("rom", scene_path("hamsas.yaml"), "--points", "60", "--rom-modes", "6", "--out", str(out))
+    assert without_timing(rom.json) == without_timing(cli_rom)
+    assert rom.H.shape == (60, 8, 8) and rom.full["A"].shape[0] == rom.full["A"].shape[1]
+    # The reduced model's responses recomputed from its matrices equal the ones returned.
+    E, A, B, C, D = (rom.reduced[m] for m in "EABCD")
+    w = 2 * np.pi * rom.frequencies_hz[7]
+    np.testing.assert_allclose(C @ np.linalg.solve(1j * w * E - A, B) + D, rom.H_reduced[7], rtol=1e-9, atol=1e-12)
+
+
 def test_trade_equals_the_cli_json():
     kw = dict(segments=2, duration=0.2, integrators=["rk3", "cvode_bdf"], accuracies=[1e-3, 1e-5], segment_ladder=[1],
               modes_ladder=[1], modes_accuracies=[1e-5], all=True)
@@ -306,6 +346,14 @@ def test_correlate_s_measured_file_errors_are_python_s():
     (lambda s: mmvlab.correlate(s, "x.uff", pairs=["x=link1.tip"]), "pair"),
     (lambda s: mmvlab.correlate(s, ""), "measured"),
     (lambda s: mmvlab.trade(s, integrators=["rk45"]), "integrators"),
+    (lambda s: mmvlab.frf(mmvlab.load_scene(scene_path("hamsas.yaml")), inputs=["table_x"]), "input"),
+    (lambda s: mmvlab.frf(mmvlab.load_scene(scene_path("hamsas.yaml")), vary="mass=abc"), "vary"),
+    (lambda s: mmvlab.frf(mmvlab.load_scene(scene_path("hamsas.yaml")), target_error=0.01), "target_error"),
+    (lambda s: mmvlab.frf(s, vary="counterweight_mass=1"), "vary"),
+    (lambda s: mmvlab.sweep_config(s, "joint9:0:10:5"), "grid"),
+    (lambda s: mmvlab.sweep_config(s, []), "grid"),
+    (lambda s: mmvlab.sweep_config(s, "joint2:0:10:5", modes=0), "modes"),
+    (lambda s: mmvlab.sweep_config(s, "joint2:0:10:5", method="guyan"), "method"),
     (lambda s: mmvlab.trade(s, accuracies=[1.0]), "accuracies"),
     (lambda s: mmvlab.trade(s, segment_ladder=[0]), "segment_ladder"),
     (lambda s: mmvlab.trade(s, modes_ladder=[-1]), "modes_ladder"),

@@ -193,6 +193,7 @@ ReductionOptions reductionOptions(const LinearRequest& r) {
 
 LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& request) {
   const std::vector<double> grid = checkLinearRequest(request);
+  if (!request.vary.empty()) throw UsageError(optionName(request.front, "--vary") + " applies to HAM-SAS scenes only");
   LinearRequest r = request;
   LinearStudy a;
   ArticleScene scene = scene_in;

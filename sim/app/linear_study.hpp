@@ -33,6 +33,7 @@ struct LinearRequest {
   double target_error = 0;    ///< > 0 (<= 0.5): segments and kept modes chosen for it.
   double time_budget = 0;     ///< s; > 0: the target's choice of segments within it.
   bool segments_given = false;
+  std::string vary;           ///< HAM-SAS frf only: one parameter over values, "KEY=V1,V2,...".
   Front front = Front::Cli;
 };
 

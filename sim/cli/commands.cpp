@@ -37,10 +37,6 @@ ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command)
   return app::articleOf(loadScene(args), command);
 }
 
-void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o) {
-  app::parseComponentOptions(bc, tip_mass, app::Front::Cli, o);
-}
-
 int guarded(const std::function<int()>& body) {
   // Messages may quote the user's bytes (a scene value, a key, a path): escaped, so
   // control bytes and invalid UTF-8 never reach the terminal raw.

@@ -232,8 +232,8 @@ int runConvergeCommand(const ConvergeArgs& args);
 int runSceneCommand();
 
 // HAM-SAS isolator scenes (sim/cli/hamsas_command.cpp).
-int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
-int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& freqs_hz);
+int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene);
+int runHamsasRom(const LinearArgs& args, const HamsasScene& scene);
 /// --rom-modes / --band / --no-residualize as reduction options.
 /// The frf/rom options as the study layer's request (--band parsed; ranges checked by the study).
 app::LinearRequest linearRequest(const LinearArgs& args);
@@ -247,8 +247,6 @@ app::SceneRequest sceneRequest(const SceneArgs& args);
 /// The article scene of `command` (a HAM-SAS scene is a UsageError), planar or spatial.
 ArticleScene loadArticleScene(const SceneArgs& args, const std::string& command);
 using app::checkedPoints;
-/// --bc and --tip-mass into `o`; throws UsageError naming the known values.
-void parseComponentArgs(const std::string& bc, const std::string& tip_mass, ComponentOptions& o);
 /// --band F_MIN_HZ:F_MAX_HZ as (min, max); UsageError unless 0 <= min < max.
 std::pair<double, double> parseBand(const std::string& band);
 /// Runs `body`, turning the error classes into messages on stderr and exit codes.

@@ -2,43 +2,17 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
-#include <sstream>
+#include <optional>
 
+#include "sim/app/config_sweep_study.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/io/output_dir.hpp"
-#include "sim/io/config_sweep_report.hpp"
 #include "sim/modes/config_sweep.hpp"
 #include "sim/core/text.hpp"
 
 namespace mmv::cli {
 namespace {
-
-GridAxis parseGrid(const std::string& text, const ArticleScene& scene) {
-  // JOINT:FROM:TO:STEP, angles in degrees.
-  std::vector<std::string> parts;
-  std::stringstream ss(text);
-  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
-  const std::string form = "--grid " + text + ": expected JOINT:FROM_DEG:TO_DEG:STEP_DEG, e.g. joint2:-45:45:5";
-  if (parts.size() != 4) throw UsageError(form);
-  GridAxis ax;
-  ax.joint = parts[0];
-  if (!scene.article.findJoint(ax.joint)) {
-    std::string known;
-    for (const auto& j : scene.article.joints) known += (known.empty() ? "" : ", ") + j.name;
-    throw UsageError("--grid " + text + ": unknown joint '" + ax.joint + "' (known: " + known + ")");
-  }
-  double* v[3] = {&ax.from_deg, &ax.to_deg, &ax.step_deg};
-  for (int i = 0; i < 3; ++i) {
-    char* end = nullptr;
-    *v[i] = std::strtod(parts[i + 1].c_str(), &end);
-    if (parts[i + 1].empty() || *end != '\0' || !std::isfinite(*v[i])) throw UsageError(form);
-  }
-  if (!(ax.step_deg > 0) || ax.to_deg < ax.from_deg) throw UsageError("--grid " + text + ": need FROM <= TO and STEP > 0");
-  if (ax.count() > GridAxis::kMaxValues)
-    throw UsageError(strf("--grid %s: %.4g values on one axis, above the limit of %.0f", text.c_str(), ax.count(), GridAxis::kMaxValues));
-  return ax;
-}
 
 /// A 1-D sweep's figures: the tracked modes' frequencies (log: they span decades), each
 /// mode's change from its first value (linear, so a few per cent show), and the
@@ -124,27 +98,24 @@ void plots(OutputDir& out, const ConfigSweepResult& r, const std::string& scene_
 
 int runConfigSweepCommand(const ConfigSweepArgs& args) {
   return guarded([&] {
-    const ArticleScene scene = loadArticleScene(args, "sweep-config");
-    ConfigSweepOptions o;
-    if (args.grids.empty() || args.grids.size() > 2) throw UsageError("--grid: give one or two grids");
-    for (const auto& g : args.grids) o.axes.push_back(parseGrid(g, scene));
-    if (o.axes.size() == 2 && o.axes[0].joint == o.axes[1].joint) throw UsageError("--grid: the two grids name the same joint");
-    o.modes = args.modes;
-    parseComponentArgs(args.bc, args.tip_mass, o.synthesis.component);
-    if (args.method == "assumed") o.synthesis.method = CmsMethod::AssumedModes;
-    else if (args.method == "craig-bampton") o.synthesis.method = CmsMethod::CraigBampton;
-    else throw UsageError("--method: unknown method '" + args.method + "' (known: assumed, craig-bampton)");
-    o.synthesis.modes_per_link = args.component_modes;
-    std::unique_ptr<OutputDir> out;
-    if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const ConfigSweepResult r = runConfigSweep(scene, o);
+    const Scene scene = loadScene(args);
+    app::ConfigSweepRequest r;
+    r.grids = args.grids;
+    r.modes = args.modes;
+    r.component_modes = args.component_modes;
+    r.bc = args.bc;
+    r.tip_mass = args.tip_mass;
+    r.method = args.method;
+    std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
+    if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
+    const app::ConfigSweepStudy s = app::runConfigSweepStudy(scene, r);
     if (out) {
-      out->write("sweep.csv", configSweepCsv(r));
-      out->write("sweep.json", configSweepJson(r).dump(2) + "\n");
-      plots(*out, r, scene.name);
+      out->write("sweep.csv", s.csv);
+      out->write("sweep.json", s.json.dump(2) + "\n");
+      plots(*out, s.result, sceneName(scene));
       out->commit();  // reported as written when the command succeeds
     }
-    args.json ? emitResult(configSweepJson(r)) : emitResult(configSweepText(r));
+    args.json ? emitResult(s.json) : emitResult(s.text);
     return kOk;
   });
 }

@@ -2,8 +2,9 @@
 // sim/io/hamsas_report.hpp; the figures by renders/.
 #include <fstream>
 #include <iostream>
-#include <sstream>
+#include <optional>
 
+#include "sim/app/hamsas_linear_study.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
@@ -14,21 +15,6 @@
 
 namespace mmv::cli {
 namespace {
-
-std::pair<std::string, std::vector<double>> parseVary(const std::string& text) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0) throw UsageError("--vary " + text + ": expected KEY=V1,V2,...");
-  std::vector<double> values;
-  std::stringstream ss(text.substr(eq + 1));
-  for (std::string v; std::getline(ss, v, ',');) {
-    char* end = nullptr;
-    const double x = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end || !std::isfinite(x)) throw UsageError("--vary " + text + ": '" + v + "' is not a number");
-    values.push_back(x);
-  }
-  if (values.empty()) throw UsageError("--vary " + text + ": no values");
-  return {text.substr(0, eq), values};
-}
 
 /// The transmissibility figures: horizontal, vertical, angular, the 10 Hz heat map and
 /// the varied parameter's curves.
@@ -81,73 +67,33 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
 
 }  // namespace
 
-int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& f) {
-  if (!args.inputs.empty() || !args.outputs.empty())
-    throw UsageError("frf on a HAM-SAS scene computes the 6 x 6 ground-to-optical-table transmissibility; "
-                     "--input/--output do not apply (the actuator-to-sensor model is `mmvlab rom`)");
+int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene) {
   if (args.vary.size() > 1) throw UsageError("--vary: give one parameter");
-  std::string vary_key, vary_unit;
-  std::vector<double> vary_values;
-  if (!args.vary.empty()) std::tie(vary_key, vary_values) = parseVary(args.vary.front());
-  std::unique_ptr<OutputDir> out;
-  if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-  const HamsasModes h = analyseHamsas(scene.isolator);
-  const std::vector<Eigen::MatrixXcd> T = hamsasTransmissibility(h, f);
-  const Eigen::MatrixXcd T10 = spatialTransmissibility(h.model, h.lin, 2 * M_PI * 10.0);
-  std::string text = hamsasTransmissibilityText(scene, h, f, T, T10);
-  std::vector<HamsasVaryPoint> varied;
-  if (!vary_key.empty()) {
-    try {
-      varied = varyHamsas(scene.isolator, vary_key, vary_values, f);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError("--vary " + args.vary.front() + ": " + e.what());
-    }
-    for (const HamsasParameter& p : hamsasParameters())
-      if (vary_key == p.key) vary_unit = p.unit;
-    text += hamsasVaryText(vary_key, varied);
-  }
+  const app::LinearRequest r = linearRequest(args);
+  std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
+  if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
+  const app::HamsasFrfStudy s = app::runHamsasFrfStudy(scene, r);
   if (out) {
-    out->write("transmissibility.csv", hamsasTransmissibilityCsv(f, T));
-    writeTransmissibilityPlots(*out, scene.name, f, T, T10, vary_key, varied, vary_unit);
+    out->write("transmissibility.csv", s.csv);
+    writeTransmissibilityPlots(*out, scene.name, s.f, s.T, s.T10, s.vary_key, s.varied, s.vary_unit);
     out->commit();  // reported as written when the command succeeds
   }
-  if (args.json) {
-    nlohmann::ordered_json j = hamsasTransmissibilityJson(scene, f, T, T10);
-    if (!varied.empty()) {
-      nlohmann::ordered_json v = nlohmann::ordered_json::array();
-      for (const auto& p : varied) v.push_back({{"value", p.value}, {"x_at_10_hz_db", p.x_at_10hz_db}, {"z_at_10_hz_db", p.z_at_10hz_db}});
-      j["varied"] = {{"key", vary_key}, {"unit", vary_unit}, {"points", v}};
-    }
-    emitResult(j);
-  } else {
-    emitResult(text);
-  }
+  args.json ? emitResult(s.json) : emitResult(s.text);
   return kOk;
 }
 
-int runHamsasRom(const LinearArgs& args, const HamsasScene& scene, const std::vector<double>& f) {
-  if (!args.inputs.empty() || !args.outputs.empty())
-    throw UsageError("rom on a HAM-SAS scene is the 8 x 8 model from the spring box's actuators to its sensors; "
-                     "--input/--output do not apply");
+int runHamsasRom(const LinearArgs& args, const HamsasScene& scene) {
   OutputDir out(args.out, args.force);
-  const HamsasModes h = analyseHamsas(scene.isolator);
-  const StateSpace full = hamsasControlModel(h);
-  ReductionOptions options = app::reductionOptions(linearRequest(args));
-  options.drop_unseen = true;
-  const ReducedModel red = reduceModal(full, options);
-  std::vector<double> w(f);
-  for (double& x : w) x *= 2 * M_PI;
-  const ModelError err = compareResponses(full, red.model, w);
+  const app::HamsasRomStudy s = app::runHamsasRomStudy(scene, linearRequest(args));
   try {
-    writeStateSpaceMat(out.stage("rom.mat"), red.model);
-    writeStateSpaceMat(out.stage("full.mat"), full);
+    writeStateSpaceMat(out.stage("rom.mat"), s.red.model);
+    writeStateSpaceMat(out.stage("full.mat"), s.full);
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }
-  const nlohmann::ordered_json rom_json = hamsasRomJson(full, red, err, f);
-  out.write("rom.json", rom_json.dump(2) + "\n");
+  out.write("rom.json", s.json.dump(2) + "\n");
   out.commit();  // reported as written when the command succeeds
-  args.json ? emitResult(rom_json) : emitResult(hamsasRomText(scene, h, full, red, err, f));
+  args.json ? emitResult(s.json) : emitResult(s.text);
   return kOk;
 }
 

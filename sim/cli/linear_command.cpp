@@ -31,6 +31,7 @@ app::LinearRequest linearRequest(const LinearArgs& args) {
   r.target_error = args.target_error;
   r.time_budget = args.time_budget;
   r.segments_given = args.segments > 0;
+  if (!args.vary.empty()) r.vary = args.vary.front();
   return r;
 }
 
@@ -79,12 +80,7 @@ int runFrfCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
     const Scene loaded = loadScene(args);
     const app::LinearRequest request = linearRequest(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
-      const std::vector<double> grid = app::checkLinearRequest(request);
-      if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
-      return runHamsasFrf(args, *h, grid);
-    }
-    if (!args.vary.empty()) throw UsageError("--vary applies to HAM-SAS scenes only");
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasFrf(args, *h);
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const app::LinearStudy a = app::runLinearStudy(std::get<ArticleScene>(loaded), request);
@@ -105,11 +101,7 @@ int runRomCommand(const LinearArgs& args) {
     if (args.out.empty()) throw UsageError("rom: --out DIR is required (it writes rom.mat and full.mat)");
     const Scene loaded = loadScene(args);
     const app::LinearRequest request = linearRequest(args);
-    if (const auto* h = std::get_if<HamsasScene>(&loaded)) {
-      const std::vector<double> grid = app::checkLinearRequest(request);
-      if (args.target_error > 0) throw UsageError("--target-error applies to the article's scenes (HAM-SAS has no segments)");
-      return runHamsasRom(args, *h, grid);
-    }
+    if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h);
     OutputDir out(args.out, args.force);
     const app::LinearStudy a = app::runLinearStudy(std::get<ArticleScene>(loaded), request);
     try {

@@ -115,14 +115,14 @@ CLI::App* addConfigSweepCommand(CLI::App& app, ConfigSweepArgs& sw) {
   CLI::App* sp = app.add_subcommand(
       "sweep-config", "System modes and synthesis error over a grid of joint angles, modes tracked by shape");
   addSceneOptions(sp, sw);
-  sp->add_option("--grid", sw.grids, "JOINT:FROM_DEG:TO_DEG:STEP_DEG; give one (a line) or two (a 2-D grid)")->required();
-  sp->add_option("--modes", sw.modes, "Modes tracked")->capture_default_str()->check(CLI::Range(1, 100));
+  sp->add_option("--grid", sw.grids, "JOINT:FROM_DEG:TO_DEG:STEP_DEG; give it once (a line) or twice (a 2-D grid)")
+      ->required()
+      ->allow_extra_args(false);  // one value per --grid: a scene path after it is the scene
+  sp->add_option("--modes", sw.modes, "Modes tracked, 1 .. 100")->capture_default_str();
   sp->add_option("--method", sw.method, "Synthesis: assumed or craig-bampton")->capture_default_str();
   sp->add_option("--bc", sw.bc, "Component boundary condition (assumed modes)")->capture_default_str();
   sp->add_option("--tip-mass", sw.tip_mass, "Component tip mass: torquer, outboard, none")->capture_default_str();
-  sp->add_option("--component-modes", sw.component_modes, "Modes per link in the synthesis")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 200));
+  sp->add_option("--component-modes", sw.component_modes, "Modes per link in the synthesis, 1 .. 200")->capture_default_str();
   sp->add_flag("--json", sw.json, "Print JSON instead of tables");
   sp->add_option("--out", sw.out, "Also write sweep.csv, sweep.json and PNG plots into this directory");
   sp->add_flag("--force", sw.force, "Replace files of the same names in --out");

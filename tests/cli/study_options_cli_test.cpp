@@ -57,6 +57,13 @@ TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
       {"trade", "--accuracies", "1", "0.999"},
       {"trade", "--modes-accuracies", "0", ""},
       {"trade", "--integrators", "rk45", ""},
+      // sweep-config lists a point whose model fails and goes on (exit 0): no good value to show here.
+      {"sweep-config", "--grid", "j9:0:10:10", ""},
+      {"sweep-config", "--grid", "j1:10:0:10", ""},
+      {"sweep-config --grid j1:90:90:1", "--modes", "101", ""},
+      {"sweep-config --grid j1:90:90:1", "--component-modes", "0", ""},
+      {"sweep-config --grid j1:90:90:1", "--method", "guyan", ""},
+      {"sweep-config --grid j1:90:90:1", "--bc", "welded", ""},
       {"trade", "--segment-ladder", "0", "1"},
       {"trade", "--segment-ladder", "1025", ""},
       {"trade", "--modes-ladder", "-1", "0"},
