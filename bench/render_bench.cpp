@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "renders/frame.hpp"
-#include "sim/io/article_drawing.hpp"
-#include "sim/io/hamsas_drawing.hpp"
+#include "sim/view/article_drawing.hpp"
+#include "sim/view/hamsas_drawing.hpp"
 #include "sim/io/run_dir.hpp"
 #include "sim/io/simulation_report.hpp"
 #include "sim/model/article_builder.hpp"

@@ -34,12 +34,13 @@ const std::map<std::string, std::set<std::string>>& allowedIncludes() {
   static const std::set<std::string> hamsas = with(with(linear, time), {"sim/linear", "sim/time"});
   static const std::set<std::string> plan = with(hamsas, {"sim/hamsas"});
   static const std::set<std::string> io = with(plan, {"sim/plan"});
+  static const std::set<std::string> view = io;  // beside sim/io: neither includes the other
   static const std::set<std::string> app = with(io, {"sim/io"});
-  static const std::set<std::string> cli = with(app, {"sim/app", "renders"});
+  static const std::set<std::string> cli = with(app, {"sim/app", "renders", "sim/view"});
   static const std::map<std::string, std::set<std::string>> rules{
       {"article", {}},           {"facility", {}},          {"sim/core", core},   {"sim/scene", scene},
       {"sim/model", model},      {"sim/statics", statics},  {"sim/modes", modes}, {"sim/linear", linear},
-      {"sim/time", time},        {"sim/hamsas", hamsas},    {"sim/plan", plan},       {"sim/io", io},       {"renders", {"sim/core"}},
+      {"sim/time", time},        {"sim/hamsas", hamsas},    {"sim/plan", plan},       {"sim/io", io},       {"sim/view", view},  {"renders", {"sim/core"}},
       {"sim/app", app},          {"sim/cli", cli},          {"python", with(app, {"sim/app"})},
   };
   return rules;
@@ -295,6 +296,10 @@ TEST(Architecture, ChecksCatchWhatTheyShould) {
   EXPECT_EQ(layeringViolations("renders/x.cpp", "#include \"sim/model/model.hpp\"\n").size(), 1u);
   EXPECT_TRUE(layeringViolations("renders/x.cpp", "#include \"sim/core/drawing.hpp\"\n").empty());
   EXPECT_EQ(layeringViolations("sim/io/x.cpp", "#include \"sim/app/study.hpp\"\n").size(), 1u);
+  EXPECT_EQ(layeringViolations("sim/io/x.cpp", "#include \"sim/view/article_drawing.hpp\"\n").size(), 1u);
+  EXPECT_EQ(layeringViolations("sim/view/x.cpp", "#include \"sim/io/output_dir.hpp\"\n").size(), 1u);
+  EXPECT_EQ(layeringViolations("sim/app/x.cpp", "#include \"sim/view/article_drawing.hpp\"\n").size(), 1u);
+  EXPECT_TRUE(layeringViolations("sim/cli/x.cpp", "#include \"sim/view/hamsas_drawing.hpp\"\n").empty());
   EXPECT_EQ(layeringViolations("python/x.cpp", "#include \"renders/plot.hpp\"\n").size(), 1u);
   EXPECT_EQ(layeringViolations("python/x.cpp", "#include \"sim/cli/commands.hpp\"\n").size(), 1u);
   EXPECT_TRUE(layeringViolations("python/x.cpp", "#include \"sim/app/study.hpp\"\n").empty());

@@ -13,8 +13,8 @@
 #include "sim/cli/commands.hpp"
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_placement.hpp"
-#include "sim/io/article_drawing.hpp"
-#include "sim/io/hamsas_drawing.hpp"
+#include "sim/view/article_drawing.hpp"
+#include "sim/view/hamsas_drawing.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/placement_report.hpp"
 

@@ -1,5 +1,5 @@
-// mmvlab render: off-screen frames of the article (sim/io/article_drawing.hpp) or the
-// HAM-SAS isolator (sim/io/hamsas_drawing.hpp) drawn by renders/frame.hpp: the still
+// mmvlab render: off-screen frames of the article (sim/view/article_drawing.hpp) or the
+// HAM-SAS isolator (sim/view/hamsas_drawing.hpp) drawn by renders/frame.hpp: the still
 // scene, a mode, a contact sheet of modes, or a mode's cycle, by the output's extension.
 #include <unistd.h>
 
@@ -14,8 +14,8 @@
 #include "sim/cli/commands.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/cli/render_common.hpp"
-#include "sim/io/article_drawing.hpp"
-#include "sim/io/hamsas_drawing.hpp"
+#include "sim/view/article_drawing.hpp"
+#include "sim/view/hamsas_drawing.hpp"
 
 namespace mmv::cli {
 namespace {

@@ -12,8 +12,8 @@
 #include "sim/core/progress.hpp"
 #include "sim/cli/render_common.hpp"
 #include "sim/core/text.hpp"
-#include "sim/io/article_drawing.hpp"
-#include "sim/io/hamsas_drawing.hpp"
+#include "sim/view/article_drawing.hpp"
+#include "sim/view/hamsas_drawing.hpp"
 #include "sim/io/run_dir.hpp"
 #include "sim/model/article_builder.hpp"
 

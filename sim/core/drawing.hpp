@@ -1,6 +1,6 @@
 #pragma once
 /// A drawing list: what a 3-D frame shows, as plain data (SI units, world frame).
-/// sim/io builds one from a model and a state (sim/io/article_drawing.hpp); renders/
+/// sim/view builds one from a model and a state (sim/view/article_drawing.hpp); renders/
 /// draws it off-screen (renders/frame.hpp). Nothing here knows Simbody or OpenGL.
 
 #include <Eigen/Dense>

@@ -12,7 +12,7 @@
 #include <opencv2/videoio.hpp>
 #include <optional>
 
-#include "sim/io/article_drawing.hpp"
+#include "sim/view/article_drawing.hpp"
 #include "sim/model/stations.hpp"
 
 namespace mmv {

@@ -2,8 +2,8 @@
 // and nothing it does not name.
 #include <gtest/gtest.h>
 
-#include "sim/io/article_drawing.hpp"
-#include "sim/io/facility_drawing.hpp"
+#include "sim/view/article_drawing.hpp"
+#include "sim/view/facility_drawing.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv {

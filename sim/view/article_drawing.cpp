@@ -1,4 +1,4 @@
-#include "sim/io/article_drawing.hpp"
+#include "sim/view/article_drawing.hpp"
 
 #include "sim/modes/planarity.hpp"
 
@@ -7,7 +7,7 @@
 
 #include "article/section.hpp"
 #include "sim/core/errors.hpp"
-#include "sim/io/facility_drawing.hpp"
+#include "sim/view/facility_drawing.hpp"
 #include "sim/model/stations.hpp"
 #include "sim/modes/planarity.hpp"
 

@@ -1,4 +1,4 @@
-#include "sim/io/hamsas_drawing.hpp"
+#include "sim/view/hamsas_drawing.hpp"
 
 #include <algorithm>
 #include <cmath>

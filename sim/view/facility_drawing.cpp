@@ -1,4 +1,4 @@
-#include "sim/io/facility_drawing.hpp"
+#include "sim/view/facility_drawing.hpp"
 
 #include <cmath>
 
