@@ -1,7 +1,6 @@
 #include "sim/io/mode_fields.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "sim/core/text.hpp"
 
@@ -18,14 +17,6 @@ json shares(const std::vector<PartShare>& v) {
 }
 
 bool damped(const ModeInfo& m) { return m.stable && !m.rigid_body && m.has_damping; }
-
-std::string csvCell(const ModeField& f, const Opt& v) {
-  if (!v || v->is_null()) return "";
-  if (v->is_boolean()) return v->get<bool>() ? "1" : "0";
-  if (v->is_string()) return csvEscape(v->get<std::string>());
-  if (v->is_number_integer()) return std::to_string(v->get<long>());
-  return strf(f.csv_format, v->get<double>());
-}
 
 }  // namespace
 
@@ -94,25 +85,12 @@ bool modeFieldApplies(const ModeField& f, const ModesReport& r) {
 }
 
 json modeFieldsJson(const ModesReport& r, const ModeInfo& m) {
-  json j = json::object();
-  for (const auto& f : modeFields())
-    if (modeFieldApplies(f, r))
-      if (Opt v = f.get(m)) j[f.key] = std::move(*v);
-  return j;
+  return fieldsJson(modeFields(), m, [&](const ModeField& f) { return modeFieldApplies(f, r); });
 }
 
 std::string modesCsv(const ModesReport& r) {
-  std::vector<const ModeField*> columns;
-  for (const auto& f : modeFields())
-    if (f.csv_format && modeFieldApplies(f, r)) columns.push_back(&f);
-  std::ostringstream os;
-  for (std::size_t k = 0; k < columns.size(); ++k) os << (k ? "," : "") << columns[k]->key;
-  os << '\n';
-  for (const auto& m : r.modes) {
-    for (std::size_t k = 0; k < columns.size(); ++k) os << (k ? "," : "") << csvCell(*columns[k], columns[k]->get(m));
-    os << '\n';
-  }
-  return os.str();
+  return fieldsCsv(modeFields(), r.modes, [&](const ModeField& f) { return modeFieldApplies(f, r); });
 }
+
 
 }  // namespace mmv

@@ -4,7 +4,7 @@
 /// modes.csv), unit, meaning and how it is read from a mode. modes.json's mode records,
 /// modes.csv, the Python module's `ModesResult.table()` and the field table of
 /// docs/outputs.md all come from this list, so they cannot disagree
-/// (tests/sim/io/mode_fields_test.cpp, python/tests).
+/// (tests/sim/io/fields_test.cpp, python/tests).
 
 #include <optional>
 #include <string>
@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/io/fields.hpp"
 #include "sim/modes/system_modes.hpp"
 
 namespace mmv {

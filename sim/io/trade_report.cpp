@@ -91,21 +91,7 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
                     {"uncertainty_m", s.reference_uncertainty_m}};
   j["points"] = s.points;  // empty: every link tip
   auto runs = nlohmann::ordered_json::array();
-  for (const auto& r : s.runs) {
-    nlohmann::ordered_json x = {
-        {"integrator", r.integrator}, {"accuracy", r.accuracy}, {"segments", r.segments}, {"modes", r.modes},
-        {"ok", r.ok},                 {"status", r.status}};
-    if (r.ok) {
-      x["tip_error_m"] = r.error_m;
-      x["cpu_s"] = r.seconds;
-      x["evaluations"] = r.evaluations;
-      x["pareto"] = r.pareto;
-      x["energy_balance_ok"] = r.energy_ok;
-    } else {
-      x["failure"] = r.failure;
-    }
-    runs.push_back(x);
-  }
+  for (const auto& r : s.runs) runs.push_back(fieldsJson(tradeRunFields(), r, [](const auto&) { return true; }));
   j["runs"] = runs;
   j["total_seconds"] = s.total_seconds;
   const TradeRun* best = cheapestWithin(s, target);
@@ -118,13 +104,41 @@ nlohmann::ordered_json tradeJson(const TradeStudy& s, double target) {
 }
 
 std::string tradeCsv(const TradeStudy& s) {
-  std::ostringstream csv;
-  csv << "integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto,status,energy_balance_ok,modes\n";
-  for (const auto& r : s.runs)
-    csv << r.integrator << ',' << strf("%.3g", r.accuracy) << ',' << r.segments << ',' << r.ok << ','
-        << (r.ok ? strf("%.6g,%.6g,%ld,%d", r.error_m, r.seconds, r.evaluations, r.pareto ? 1 : 0) : std::string(",,,")) << ','
-        << r.status << ',' << (r.ok ? std::to_string(r.energy_ok ? 1 : 0) : std::string()) << ',' << r.modes << '\n';
-  return csv.str();
+  return fieldsCsv(tradeRunFields(), s.runs, [](const auto&) { return true; });
+}
+
+const std::vector<Field<TradeRun>>& tradeRunFields() {
+  using json = nlohmann::ordered_json;
+  using Opt = std::optional<json>;
+  // clang-format off
+  static const std::vector<Field<TradeRun>> fields{
+      {"integrator", "", "%s", "the integrator (the integrator table's name)",
+       [](const TradeRun& r) -> Opt { return json(r.integrator); }},
+      {"accuracy", "1", "%.3g", "its relative accuracy (tolerance)",
+       [](const TradeRun& r) -> Opt { return json(r.accuracy); }},
+      {"segments", "", "%d", "segments per flexible link (0: the scene's)",
+       [](const TradeRun& r) -> Opt { return json(r.segments); }},
+      {"modes", "", "%d", "modes per link in modal coordinates (0: every hinge)",
+       [](const TradeRun& r) -> Opt { return json(r.modes); }},
+      {"ok", "", "%d", "the run has numbers (status ok)",
+       [](const TradeRun& r) -> Opt { return json(r.ok); }},
+      {"status", "", "%s", "ok, failed, over_budget, costlier or not_run",
+       [](const TradeRun& r) -> Opt { return json(r.status); }},
+      {"tip_error_m", "m", "%.6g", "largest position error of the scored points against the reference",
+       [](const TradeRun& r) -> Opt { return r.ok ? Opt(json(r.error_m)) : Opt(); }},
+      {"cpu_s", "s", "%.6g", "the run's CPU time",
+       [](const TradeRun& r) -> Opt { return r.ok ? Opt(json(r.seconds)) : Opt(); }},
+      {"evaluations", "", "%d", "right-hand sides or realizations the integrator asked for",
+       [](const TradeRun& r) -> Opt { return r.ok ? Opt(json(r.evaluations)) : Opt(); }},
+      {"pareto", "", "%d", "on the error-cost Pareto front",
+       [](const TradeRun& r) -> Opt { return r.ok ? Opt(json(r.pareto)) : Opt(); }},
+      {"energy_balance_ok", "", "%d", "the energy balance held within 1 % of the run's energy scale",
+       [](const TradeRun& r) -> Opt { return r.ok ? Opt(json(r.energy_ok)) : Opt(); }},
+      {"failure", "", "%s", "why a run has no numbers (the diagnostic, the cut, the skip)",
+       [](const TradeRun& r) -> Opt { return r.ok ? Opt() : Opt(json(r.failure)); }},
+  };
+  // clang-format on
+  return fields;
 }
 
 }  // namespace mmv

@@ -476,7 +476,7 @@ TEST_F(Cli, TradeWritesItsStudy) {
   EXPECT_NE(r.out.find("Cheapest run within"), std::string::npos);
   EXPECT_NE(r.out.find("Error scored at: link3a.tip\n"), std::string::npos) << r.out;
   const std::string csv = slurp(out / "trade.csv");
-  EXPECT_EQ(csv.rfind("integrator,accuracy,segments,ok,tip_error_m,cpu_s,evaluations,pareto", 0), 0u);
+  EXPECT_EQ(csv.rfind("integrator,accuracy,segments,modes,ok,status,tip_error_m,cpu_s,evaluations,pareto,energy_balance_ok,failure\n", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 6);  // 4 + the modal run + the segment ladder
   EXPECT_TRUE(isPng(out / "trade.png"));
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "trade.json"));

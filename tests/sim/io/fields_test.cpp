@@ -1,4 +1,4 @@
-// The per-mode field list (sim/io/mode_fields.hpp) drives modes.json's mode records and
+// Field lists (sim/io/fields.hpp). The per-mode list (sim/io/mode_fields.hpp) drives modes.json's mode records and
 // modes.csv: on a damped planar, a spatial and an unstable scene, each record holds
 // exactly the fields that apply (in the list's order, then the shapes), the CSV header
 // is the CSV fields that apply, and every cell read back from the CSV equals the JSON
@@ -14,6 +14,7 @@
 
 #include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
+#include "sim/io/trade_report.hpp"
 #include "support/scenes.hpp"
 
 namespace mmv {
@@ -147,6 +148,43 @@ TEST(ModeFields, TheDocsTableIsTheList) {
   }
   ASSERT_TRUE(std::getline(rows, line));
   EXPECT_EQ(line.rfind("|", 0), std::string::npos) << "a row the list does not have: " << line;
+}
+
+// The trade's runs: trade.json's records and trade.csv from tradeRunFields(), on a run
+// with numbers and one without (its numbers empty in the CSV, absent in the JSON).
+TEST(TradeRunFields, JsonAndCsvComeFromOneList) {
+  TradeStudy s;
+  TradeRun ok{"rk3", 1e-5, 4, 0, true, "ok", "", 1.234567e-4, 0.5, 42, true, true};
+  TradeRun cut{"cpodes", 1e-7, 0, 2, false, "over_budget", "cut at 2 s, a \"budget\", here", 0, 0, 0, false, true};
+  s.runs = {ok, cut};
+  const json runs = tradeJson(s, 1e-3)["runs"];
+  std::istringstream csv(tradeCsv(s));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  std::vector<std::string> columns;
+  for (const auto& f : tradeRunFields()) columns.push_back(f.key);
+  EXPECT_EQ(splitCsvLine(line), columns);
+  for (std::size_t i = 0; i < s.runs.size(); ++i) {
+    ASSERT_TRUE(std::getline(csv, line));
+    const std::vector<std::string> cells = splitCsvLine(line);
+    ASSERT_EQ(cells.size(), columns.size()) << line;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const json& rec = runs[i];
+      if (!rec.contains(columns[c])) {
+        EXPECT_EQ(cells[c], "") << columns[c];
+        continue;
+      }
+      const json& v = rec[columns[c]];
+      if (v.is_boolean()) EXPECT_EQ(cells[c], v.get<bool>() ? "1" : "0") << columns[c];
+      else if (v.is_string()) EXPECT_EQ(cells[c], csvEscape(v.get<std::string>())) << columns[c];
+      else if (v.is_number_integer()) EXPECT_EQ(std::stol(cells[c]), v.get<long>()) << columns[c];
+      else EXPECT_NEAR(std::stod(cells[c]), v.get<double>(), 1e-5 * std::abs(v.get<double>())) << columns[c];
+    }
+  }
+  EXPECT_EQ(runs[0]["tip_error_m"].get<double>(), 1.234567e-4);
+  EXPECT_FALSE(runs[1].contains("tip_error_m"));
+  EXPECT_EQ(runs[1]["failure"], "cut at 2 s, a \"budget\", here");
+  EXPECT_FALSE(runs[0].contains("failure"));
 }
 
 }  // namespace

@@ -1,0 +1,57 @@
+#pragma once
+/// Field lists: a result row's quantities described once (in the style of Drake's
+/// `Serialize`): key (the JSON key and the CSV column), unit, meaning, and how the value
+/// is read. The JSON record, the CSV table and the Python table of a row type are made
+/// from its one list, so they cannot name or compute a quantity differently. The lists:
+/// modeFields() (sim/io/mode_fields.hpp), tradeRunFields() (sim/io/trade_report.hpp).
+
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace mmv {
+
+template <class Row>
+struct Field {
+  const char* key;
+  const char* unit;        ///< "Hz", "kg", "1" (a ratio), "" (text, a flag, a count, a table).
+  const char* csv_format;  ///< printf format of its CSV column (%s: text); nullptr: JSON only.
+  const char* meaning;     ///< one line, for the docs and Python.
+  /// The value; nullopt: not part of this row's record; a JSON null: defined but undefined.
+  std::optional<nlohmann::ordered_json> (*get)(const Row&);
+};
+
+/// One CSV cell: flags as 1/0, text escaped (csvEscape), an integer as it is, a number
+/// in `format`, nothing (an absent or null value) as an empty cell.
+std::string fieldCsvCell(const char* format, const std::optional<nlohmann::ordered_json>& value);
+
+/// The record of `row`: every field that `has(field)` admits and the row holds, in order.
+template <class F, class Row, class Has>
+nlohmann::ordered_json fieldsJson(const std::vector<F>& fields, const Row& row, Has has) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const auto& f : fields)
+    if (has(f))
+      if (auto v = f.get(row)) j[f.key] = std::move(*v);
+  return j;
+}
+
+/// A CSV table of `rows`: a column per field with a CSV format that `has(field)` admits.
+template <class F, class Row, class Has>
+std::string fieldsCsv(const std::vector<F>& fields, const std::vector<Row>& rows, Has has) {
+  std::vector<const F*> columns;
+  for (const auto& f : fields)
+    if (f.csv_format && has(f)) columns.push_back(&f);
+  std::ostringstream os;
+  for (std::size_t k = 0; k < columns.size(); ++k) os << (k ? "," : "") << columns[k]->key;
+  os << '\n';
+  for (const auto& row : rows) {
+    for (std::size_t k = 0; k < columns.size(); ++k) os << (k ? "," : "") << fieldCsvCell(columns[k]->csv_format, columns[k]->get(row));
+    os << '\n';
+  }
+  return os.str();
+}
+
+}  // namespace mmv
