@@ -8,23 +8,54 @@
 
 namespace mmv {
 
+const std::vector<Field<TrackPoint>>& trackFields() {
+  using json = nlohmann::ordered_json;
+  using Opt = std::optional<json>;
+  // clang-format off
+  static const std::vector<Field<TrackPoint>> fields{
+      {"sorted_mode", "", "%d", "the tracked mode's rank at this point (1-based)",
+       [](const TrackPoint& t) -> Opt { return json(t.sorted_mode); }},
+      {"frequency_hz", "Hz", "%.8g", "its frequency (null when unstable at this point)",
+       [](const TrackPoint& t) -> Opt { return t.stable ? json(t.frequency_hz) : json(nullptr); }},
+      {"mac_to_previous", "1", "%.6f", "MAC with the same track at the previous point",
+       [](const TrackPoint& t) -> Opt { return json(t.mac_to_previous); }},
+      {"synthesized_frequency_hz", "Hz", "%.8g", "the component synthesis's frequency for it",
+       [](const TrackPoint& t) -> Opt { return json(t.synth_hz); }},
+      {"synthesis_relative_error", "1", "%.6g", "synthesized / full - 1",
+       [](const TrackPoint& t) -> Opt { return json(t.synth_error); }},
+      {"synthesis_mac", "1", "%.6f", "MAC of the synthesized and the full shape",
+       [](const TrackPoint& t) -> Opt { return json(t.synth_mac); }},
+      {"verdict", "", "%s", "predicted, or why not (MAC < 0.9 or |error| > 1 %)",
+       [](const TrackPoint& t) -> Opt { return json(t.verdict); }},
+      {"strain_link", "", "%s", "the link with the most strain energy",
+       [](const TrackPoint& t) -> Opt { return json(t.strain_link); }},
+      {"state", "", "%s", "empty (followed), lost: why, or restarted: why",
+       [](const TrackPoint& t) -> Opt { return json(t.state); }},
+  };
+  // clang-format on
+  return fields;
+}
+
 std::string configSweepCsv(const ConfigSweepResult& r) {
+  const auto all = [](const auto&) { return true; };
   std::ostringstream os;
   for (const auto& ax : r.axes) os << ax.joint << "_deg,";
-  os << "point_kind,track,sorted_mode,frequency_hz,mac_to_previous,synthesized_frequency_hz,synthesis_relative_error,"
-        "synthesis_mac,verdict,strain_link,track_state\n";
+  os << "point_kind,track," << fieldsCsvHeader(trackFields(), all) << '\n';
   for (const auto& p : r.points) {
-    if (!p.solved) {  // one row saying why there is nothing
-      for (double a : p.angles_deg) os << strf("%g,", a);
-      os << (p.refined ? "refined" : "grid") << ",,,,,,,,\"no equilibrium: " << p.failure << "\",,\n";
+    std::string lead;
+    for (double a : p.angles_deg) lead += strf("%g,", a);
+    lead += p.refined ? "refined," : "grid,";
+    if (!p.solved) {  // one row saying why there is nothing: the verdict
+      const auto why = [&](const Field<TrackPoint>& f) {
+        return std::string(f.key) == "verdict" ? std::optional<nlohmann::ordered_json>("no equilibrium: " + p.failure)
+                                               : std::optional<nlohmann::ordered_json>(nullptr);
+      };
+      os << lead << ',' << fieldsCsvRow(trackFields(), TrackPoint{}, all, why) << '\n';
     }
-    for (std::size_t k = 0; k < p.tracks.size(); ++k) {
-      const TrackPoint& t = p.tracks[k];
-      for (double a : p.angles_deg) os << strf("%g,", a);
-      os << (p.refined ? "refined," : "grid,") << k + 1 << ',' << t.sorted_mode << ',' << (t.stable ? strf("%.8g", t.frequency_hz) : "") << ','
-         << strf("%.6f,%.8g,%.6g,%.6f", t.mac_to_previous, t.synth_hz, t.synth_error, t.synth_mac) << ',' << t.verdict
-         << ',' << t.strain_link << ",\"" << t.state << "\"\n";
-    }
+    for (std::size_t k = 0; k < p.tracks.size(); ++k)
+      os << lead << k + 1 << ',' << fieldsCsvRow(trackFields(), p.tracks[k], all, [](const auto&) {
+        return std::optional<nlohmann::ordered_json>();
+      }) << '\n';
   }
   return os.str();
 }
@@ -106,16 +137,7 @@ nlohmann::ordered_json configSweepJson(const ConfigSweepResult& r) {
   auto pts = nlohmann::ordered_json::array();
   for (const auto& p : r.points) {
     auto tr = nlohmann::ordered_json::array();
-    for (const auto& t : p.tracks)
-      tr.push_back({{"sorted_mode", t.sorted_mode},
-                    {"frequency_hz", t.stable ? nlohmann::ordered_json(t.frequency_hz) : nlohmann::ordered_json(nullptr)},
-                    {"mac_to_previous", t.mac_to_previous},
-                    {"synthesized_frequency_hz", t.synth_hz},
-                    {"synthesis_relative_error", t.synth_error},
-                    {"synthesis_mac", t.synth_mac},
-                    {"verdict", t.verdict},
-                    {"strain_link", t.strain_link},
-                    {"state", t.state}});
+    for (const auto& t : p.tracks) tr.push_back(fieldsJson(trackFields(), t, [](const auto&) { return true; }));
     nlohmann::ordered_json pj = {{"angles_deg", p.angles_deg}, {"refined", p.refined}, {"solved", p.solved}, {"tracks", tr}};
     if (!p.solved) pj["failure"] = p.failure;
     pts.push_back(pj);

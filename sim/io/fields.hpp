@@ -38,19 +38,37 @@ nlohmann::ordered_json fieldsJson(const std::vector<F>& fields, const Row& row, 
   return j;
 }
 
+/// The CSV header of the fields with a CSV format that `has(field)` admits ("a,b,c").
+template <class F, class Has>
+std::string fieldsCsvHeader(const std::vector<F>& fields, Has has) {
+  std::string out;
+  for (const auto& f : fields)
+    if (f.csv_format && has(f)) out += (out.empty() ? "" : ",") + std::string(f.key);
+  return out;
+}
+
+/// `row`'s cells under fieldsCsvHeader's columns ("1,2.5,,x"); `override(field)`, when it
+/// returns a value, replaces the field's own (a row that says why it has no numbers).
+template <class F, class Row, class Has, class Override>
+std::string fieldsCsvRow(const std::vector<F>& fields, const Row& row, Has has, Override override) {
+  std::string out;
+  bool first = true;
+  for (const auto& f : fields) {
+    if (!f.csv_format || !has(f)) continue;
+    const std::optional<nlohmann::ordered_json> mine = override(f);
+    out += (first ? "" : ",") + fieldCsvCell(f.csv_format, mine ? mine : f.get(row));
+    first = false;
+  }
+  return out;
+}
+
 /// A CSV table of `rows`: a column per field with a CSV format that `has(field)` admits.
 template <class F, class Row, class Has>
 std::string fieldsCsv(const std::vector<F>& fields, const std::vector<Row>& rows, Has has) {
-  std::vector<const F*> columns;
-  for (const auto& f : fields)
-    if (f.csv_format && has(f)) columns.push_back(&f);
   std::ostringstream os;
-  for (std::size_t k = 0; k < columns.size(); ++k) os << (k ? "," : "") << columns[k]->key;
-  os << '\n';
-  for (const auto& row : rows) {
-    for (std::size_t k = 0; k < columns.size(); ++k) os << (k ? "," : "") << fieldCsvCell(columns[k]->csv_format, columns[k]->get(row));
-    os << '\n';
-  }
+  os << fieldsCsvHeader(fields, has) << '\n';
+  const auto none = [](const F&) { return std::optional<nlohmann::ordered_json>(); };
+  for (const auto& row : rows) os << fieldsCsvRow(fields, row, has, none) << '\n';
   return os.str();
 }
 
