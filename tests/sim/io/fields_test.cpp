@@ -14,6 +14,7 @@
 
 #include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
+#include "sim/io/config_sweep_report.hpp"
 #include "sim/io/trade_report.hpp"
 #include "support/scenes.hpp"
 
@@ -150,6 +151,56 @@ TEST(ModeFields, TheDocsTableIsTheList) {
   EXPECT_EQ(line.rfind("|", 0), std::string::npos) << "a row the list does not have: " << line;
 }
 
+/// Each of `cells` from `first` on is record `rec`'s value under `columns`, to the
+/// printed digits (`rel` relative, `abs` for "%.6f" columns).
+void expectCellsAreTheRecord(const std::vector<std::string>& cells, std::size_t first, const std::vector<std::string>& columns,
+                             const json& rec, double rel, double abs = 1e-300) {
+  ASSERT_EQ(cells.size(), first + columns.size());
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const std::string& cell = cells[first + c];
+    if (!rec.contains(columns[c]) || rec[columns[c]].is_null()) {
+      EXPECT_EQ(cell, "") << columns[c];
+      continue;
+    }
+    const json& v = rec[columns[c]];
+    if (v.is_boolean()) EXPECT_EQ(cell, v.get<bool>() ? "1" : "0") << columns[c];
+    else if (v.is_string()) EXPECT_EQ(cell, csvEscape(v.get<std::string>())) << columns[c];
+    else if (v.is_number_integer()) EXPECT_EQ(std::stol(cell), v.get<long>()) << columns[c];
+    else EXPECT_NEAR(std::stod(cell), v.get<double>(), rel * std::abs(v.get<double>()) + abs) << columns[c];
+  }
+}
+
+// A configuration sweep's tracks: sweep.json's points[].tracks[] and sweep.csv's track
+// columns from trackFields(), on the default article over joint2.
+TEST(TrackFields, JsonAndCsvComeFromOneList) {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, 2);
+  ConfigSweepOptions o;
+  o.axes.push_back({"joint2", 0, 20, 10});
+  o.modes = 3;
+  const ConfigSweepResult r = runConfigSweep(s, o);
+  const json doc = configSweepJson(r);
+  std::istringstream csv(configSweepCsv(r));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  std::vector<std::string> columns;
+  for (const auto& f : trackFields()) columns.push_back(f.key);
+  std::vector<std::string> header = {"joint2_deg", "point_kind", "track"};
+  header.insert(header.end(), columns.begin(), columns.end());
+  EXPECT_EQ(splitCsvLine(line), header);
+  int rows = 0;
+  for (const auto& p : doc["points"])
+    for (const auto& t : p["tracks"]) {
+      ASSERT_TRUE(std::getline(csv, line));
+      const std::vector<std::string> cells = splitCsvLine(line);
+      EXPECT_EQ(std::stod(cells.at(0)), p["angles_deg"][0].get<double>());
+      expectCellsAreTheRecord(cells, 3, columns, t, 5e-6, 5e-7);
+      EXPECT_EQ(t.size(), columns.size());  // every field, no other key
+      ++rows;
+    }
+  EXPECT_EQ(rows, 9);
+}
+
 // The trade's runs: trade.json's records and trade.csv from tradeRunFields(), on a run
 // with numbers and one without (its numbers empty in the CSV, absent in the JSON).
 TEST(TradeRunFields, JsonAndCsvComeFromOneList) {
@@ -168,18 +219,7 @@ TEST(TradeRunFields, JsonAndCsvComeFromOneList) {
     ASSERT_TRUE(std::getline(csv, line));
     const std::vector<std::string> cells = splitCsvLine(line);
     ASSERT_EQ(cells.size(), columns.size()) << line;
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const json& rec = runs[i];
-      if (!rec.contains(columns[c])) {
-        EXPECT_EQ(cells[c], "") << columns[c];
-        continue;
-      }
-      const json& v = rec[columns[c]];
-      if (v.is_boolean()) EXPECT_EQ(cells[c], v.get<bool>() ? "1" : "0") << columns[c];
-      else if (v.is_string()) EXPECT_EQ(cells[c], csvEscape(v.get<std::string>())) << columns[c];
-      else if (v.is_number_integer()) EXPECT_EQ(std::stol(cells[c]), v.get<long>()) << columns[c];
-      else EXPECT_NEAR(std::stod(cells[c]), v.get<double>(), 1e-5 * std::abs(v.get<double>())) << columns[c];
-    }
+    expectCellsAreTheRecord(cells, 0, columns, runs[i], 1e-5);
   }
   EXPECT_EQ(runs[0]["tip_error_m"].get<double>(), 1.234567e-4);
   EXPECT_FALSE(runs[1].contains("tip_error_m"));
