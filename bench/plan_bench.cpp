@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "sim/io/design_sweep_points.hpp"
+#include "sim/app/design_sweep_points.hpp"
 #include "sim/plan/check.hpp"
 #include "sim/plan/design_sweep.hpp"
 

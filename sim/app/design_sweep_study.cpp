@@ -6,7 +6,7 @@
 
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
-#include "sim/io/design_sweep_points.hpp"
+#include "sim/app/design_sweep_points.hpp"
 
 namespace mmv::app {
 

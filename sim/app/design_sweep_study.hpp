@@ -1,6 +1,6 @@
 #pragma once
 /// `sweep`: a design sweep over scene keys (sim/scene/design_sweep_spec.hpp), each point's
-/// modes, check and fields evaluated by sim/io/design_sweep_points.hpp, run in parallel,
+/// modes, check and fields evaluated by sim/app/design_sweep_points.hpp, run in parallel,
 /// resumably and in shards by sim/plan/design_sweep.hpp into DIR (journal.csv,
 /// sweep.csv). (`sweep-config`, the configuration walk, is sim/modes/config_sweep.hpp.)
 

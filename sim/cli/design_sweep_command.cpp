@@ -1,5 +1,5 @@
 // mmvlab sweep and sweep-merge: design sweeps (sim/scene/design_sweep_spec.hpp) evaluated by
-// sim/io/design_sweep_points.hpp and run by sim/plan/design_sweep.hpp.
+// sim/app/design_sweep_points.hpp and run by sim/plan/design_sweep.hpp.
 
 #include <cstdio>
 #include <cstdlib>
@@ -16,7 +16,7 @@
 #include "sim/io/output_dir.hpp"
 #include "sim/cli/progress.hpp"
 #include "sim/core/text.hpp"
-#include "sim/io/design_sweep_points.hpp"
+#include "sim/app/design_sweep_points.hpp"
 #include "sim/plan/design_sweep.hpp"
 
 namespace mmv::cli {

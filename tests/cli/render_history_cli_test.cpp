@@ -11,7 +11,8 @@ TEST_F(Cli, RenderHistoryDrawsASimulateRun) {
   ::unsetenv("DISPLAY");
   const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
   const fs::path run_dir = dir_ / "run";
-  ASSERT_EQ(run("simulate " + slew + " --segments 2 --duration 0.5 --sample-rate 250 --out " + run_dir.string()).code, 0);
+  const Result sim = run("simulate " + slew + " --segments 2 --duration 0.5 --sample-rate 250 --out " + run_dir.string());
+  ASSERT_EQ(sim.code, 0) << sim.err;
   for (const char* f : {"history.csv", "states.csv", "scene.yaml", "run.json", "summary.json"})
     EXPECT_TRUE(fs::exists(run_dir / f)) << f;
   // A video: 0.5 s at 30 frames/s and speed 1 is 16 frames; at speed 0.5, 31.
@@ -24,15 +25,19 @@ TEST_F(Cli, RenderHistoryDrawsASimulateRun) {
   EXPECT_EQ(static_cast<int>(in.get(cv::CAP_PROP_FRAME_COUNT)), 16);
   EXPECT_EQ(static_cast<int>(in.get(cv::CAP_PROP_FRAME_WIDTH)), 320);
   const fs::path slow = dir_ / "slow.avi";
-  ASSERT_EQ(run("render --history " + run_dir.string() + " --speed 0.5 --size 160x120 --out " + slow.string()).code, 0);
+  const Result s = run("render --history " + run_dir.string() + " --speed 0.5 --size 160x120 --out " + slow.string());
+  ASSERT_EQ(s.code, 0) << s.err;  // stderr too: a sanitizer's report or the error that made it fail
   EXPECT_EQ(static_cast<int>(cv::VideoCapture(slow.string()).get(cv::CAP_PROP_FRAME_COUNT)), 31);
   // A still at a time; the same run and time give the same pixels.
   const fs::path a = dir_ / "a.png", b = dir_ / "b.png", end = dir_ / "end.png";
-  ASSERT_EQ(run("render --history " + run_dir.string() + " --at 0.3 --size 320x240 --out " + a.string()).code, 0);
-  ASSERT_EQ(run("render --history " + run_dir.string() + " --at 0.3 --size 320x240 --out " + b.string()).code, 0);
+  for (const fs::path& still : {a, b}) {
+    const Result r = run("render --history " + run_dir.string() + " --at 0.3 --size 320x240 --out " + still.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
   EXPECT_TRUE(isPng(a));
   EXPECT_EQ(slurp(a), slurp(b));
-  ASSERT_EQ(run("render --history " + run_dir.string() + " --size 320x240 --out " + end.string()).code, 0);
+  const Result e = run("render --history " + run_dir.string() + " --size 320x240 --out " + end.string());
+  ASSERT_EQ(e.code, 0) << e.err;
   EXPECT_NE(slurp(a), slurp(end));  // the slew moved the article between 0.3 s and the end
 }
 

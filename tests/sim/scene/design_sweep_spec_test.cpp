@@ -1,5 +1,5 @@
 // Sweep specs (sim/scene/design_sweep_spec.hpp) and their points; bad specs are refused at
-// their line and column before anything runs (sim/io/design_sweep_points.hpp checks keys and
+// their line and column before anything runs (sim/app/design_sweep_points.hpp checks keys and
 // outputs against the scene).
 #include "sim/scene/design_sweep_spec.hpp"
 
@@ -9,7 +9,7 @@
 
 #include "sim/core/errors.hpp"
 #include <regex>
-#include "sim/io/design_sweep_points.hpp"
+#include "sim/app/design_sweep_points.hpp"
 
 namespace mmv {
 namespace {

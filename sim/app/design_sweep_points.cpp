@@ -1,5 +1,5 @@
-// The rows of `mmvlab sweep` (sim/io/design_sweep_points.hpp).
-#include "sim/io/design_sweep_points.hpp"
+// The rows of `mmvlab sweep` (sim/app/design_sweep_points.hpp).
+#include "sim/app/design_sweep_points.hpp"
 #include "sim/core/progress.hpp"
 
 #include "sim/core/files.hpp"
