@@ -225,7 +225,7 @@ py::dict hamsasFrf(const mmv::HamsasScene& scene, const mmv::app::LinearRequest&
 /// rom on the isolator: the actuator-to-sensor model, its reduction and both responses.
 py::dict hamsasRom(const mmv::HamsasScene& scene, const mmv::app::LinearRequest& r, py::object progress) {
   const mmv::app::HamsasRomStudy s = released(progress, [&] { return mmv::app::runHamsasRomStudy(scene, r); });
-  const std::vector<double> f = mmv::app::checkLinearRequest(r);
+  const std::vector<double>& f = s.f;
   std::vector<Eigen::MatrixXcd> hf, hr;
   for (double x : f) hf.push_back(s.full.response(2 * M_PI * x)), hr.push_back(s.red.model.response(2 * M_PI * x));
   py::dict d;

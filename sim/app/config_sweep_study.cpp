@@ -29,9 +29,9 @@ GridAxis parseGrid(const std::string& text, const ArticleScene& scene, Front fro
   }
   double* v[3] = {&ax.from_deg, &ax.to_deg, &ax.step_deg};
   for (int i = 0; i < 3; ++i) {
-    char* end = nullptr;
-    *v[i] = std::strtod(parts[i + 1].c_str(), &end);
-    if (parts[i + 1].empty() || *end != '\0' || !std::isfinite(*v[i])) throw UsageError(form);
+    const std::optional<double> x = finiteNumber(parts[i + 1]);
+    if (!x) throw UsageError(form);
+    *v[i] = *x;
   }
   if (!(ax.step_deg > 0) || ax.to_deg < ax.from_deg) throw UsageError(option + " " + text + ": need FROM <= TO and STEP > 0");
   if (ax.count() > GridAxis::kMaxValues)

@@ -29,10 +29,9 @@ std::pair<std::string, std::vector<double>> parseVary(const std::string& text, F
   std::vector<double> values;
   std::stringstream ss(text.substr(eq + 1));
   for (std::string v; std::getline(ss, v, ',');) {
-    char* end = nullptr;
-    const double x = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end || !std::isfinite(x)) throw UsageError(option + ": '" + v + "' is not a number");
-    values.push_back(x);
+    const std::optional<double> x = finiteNumber(v);
+    if (!x) throw UsageError(option + ": '" + v + "' is not a number");
+    values.push_back(*x);
   }
   if (values.empty()) throw UsageError(option + ": no values");
   return {text.substr(0, eq), values};
@@ -71,10 +70,11 @@ HamsasFrfStudy runHamsasFrfStudy(const HamsasScene& scene, const LinearRequest& 
 }
 
 HamsasRomStudy runHamsasRomStudy(const HamsasScene& scene, const LinearRequest& r) {
-  const std::vector<double> f = checkedGrid(r, "rom", "is the 8 x 8 model from the spring box's actuators to its sensors");
+  HamsasRomStudy s;
+  s.f = checkedGrid(r, "rom", "is the 8 x 8 model from the spring box's actuators to its sensors");
+  const std::vector<double>& f = s.f;
   if (!r.vary.empty()) throw UsageError(optionName(r.front, "--vary") + " applies to frf on a HAM-SAS scene");
   const HamsasModes h = analyseHamsas(scene.isolator);
-  HamsasRomStudy s;
   s.full = hamsasControlModel(h);
   ReductionOptions options = reductionOptions(r);
   options.drop_unseen = true;

@@ -30,6 +30,7 @@ struct HamsasFrfStudy {
 HamsasFrfStudy runHamsasFrfStudy(const HamsasScene& scene, const LinearRequest& request);
 
 struct HamsasRomStudy {
+  std::vector<double> f;  ///< the grid, Hz, the error was measured on
   StateSpace full;
   ReducedModel red;
   ModelError err;

@@ -71,6 +71,13 @@ void checkRange(Front front, const std::string& cli_flag, double v, double lo, d
                         std::isfinite(hi) ? strf(" and at most %g", hi).c_str() : "", v));
 }
 
+std::optional<double> finiteNumber(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
 const ArticleScene& articleOf(const Scene& scene, const std::string& verb) {
   if (const auto* a = std::get_if<ArticleScene>(&scene)) return *a;
   throw UsageError(verb + ": " + sceneSource(scene) +

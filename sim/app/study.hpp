@@ -7,6 +7,7 @@
 /// and text forms, made by the same writers whichever front end asked.
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,11 @@ void checkRange(Front front, const std::string& cli_flag, double value, double l
 /// Checks named points and stations against the article (UsageError naming `option`).
 std::vector<std::string> checkedPoints(const std::vector<std::string>& names, const ArticleSpec& article,
                                        const std::string& option);
+
+/// A whole field of text as a finite number ("2.5", "-1e-3"); nullopt for anything else
+/// ("", "2.5x", "nan", "inf"). The one number parser of the options the studies split
+/// (--grid, --vary, --band).
+std::optional<double> finiteNumber(const std::string& text);
 
 /// The article of `scene`; a HAM-SAS scene is a UsageError naming `verb`.
 const ArticleScene& articleOf(const Scene& scene, const std::string& verb);

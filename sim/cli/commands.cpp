@@ -90,13 +90,11 @@ void emitResult(const nlohmann::ordered_json& json) {
 
 std::pair<double, double> parseBand(const std::string& band) {
   const auto colon = band.find(':');
-  char *e1 = nullptr, *e2 = nullptr;
   if (colon == std::string::npos) throw UsageError("--band: expected F_MIN_HZ:F_MAX_HZ (got '" + band + "')");
-  const std::string a = band.substr(0, colon), b = band.substr(colon + 1);
-  const double lo = std::strtod(a.c_str(), &e1), hi = std::strtod(b.c_str(), &e2);
-  if (a.empty() || b.empty() || *e1 || *e2 || !std::isfinite(hi) || !(hi > lo) || !(lo >= 0))
+  const std::optional<double> lo = app::finiteNumber(band.substr(0, colon)), hi = app::finiteNumber(band.substr(colon + 1));
+  if (!lo || !hi || !(*hi > *lo) || !(*lo >= 0))
     throw UsageError("--band: expected 0 <= F_MIN_HZ < F_MAX_HZ (got '" + band + "')");
-  return {lo, hi};
+  return {*lo, *hi};
 }
 
 int runSceneCommand() {

@@ -62,6 +62,8 @@ TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
       {"sweep-config", "--grid", "j1:10:0:10", ""},
       {"sweep-config --grid j1:90:90:1", "--modes", "101", ""},
       {"sweep-config --grid j1:90:90:1", "--component-modes", "0", ""},
+      {"sweep-config --grid j1:90:90:1", "--component-modes", "201", ""},
+      {"sweep-config --grid j1:90:90:1", "--modes", "0", ""},
       {"sweep-config --grid j1:90:90:1", "--method", "guyan", ""},
       {"sweep-config --grid j1:90:90:1", "--bc", "welded", ""},
       {"trade", "--segment-ladder", "0", "1"},
