@@ -200,7 +200,7 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
         "order: observed log2((f_N/4 - f_N/2)/(f_N/2 - f_N)) from the three finest runs;\n"
         "est_err_%: |f_N - richardson| / richardson at the finest N, in percent;\n"
         "check: ok = observed order within 0.5 of 2, so richardson and est_err_% hold; order = converging\n"
-        "at another order p > 0.5, est_err_% = |f_N - f_N/2| / (2^p - 1) / f_N; unconverged = order below\n"
+        "at another order p > 0.5, est_err_% = |f_N - f_N/2| / (2^min(p,2) - 1) / f_N; unconverged = order below\n"
         "0.5 or non-monotone (modes swapping between runs, or N far from the asymptotic range):\n"
         "est_err_% = |f_N - f_N/2| / f_N, a lower bound, and richardson is not to be trusted.\n";
   return os.str();

@@ -355,7 +355,8 @@ class Builder {
   /// spatial model three body-fixed rotations (a Simbody Gimbal, q' = u): torsion about
   /// the link (G J / h), out-of-plane bending about the in-plane normal (E I_out / h),
   /// in-plane bending about z (E I / h, the planar hinge), named <link>.h<k>.twist,
-  /// <link>.h<k>.out and <link>.h<k>; a planar link (`model: planar` on a spatial
+  /// <link>.h<k>.out and <link>.h<k>, their springs on the rotation vector
+  /// (sim/model/rotation_spring.hpp); a planar link (`model: planar` on a spatial
   /// article) keeps the pin.
   SimTK::MobilizedBodyIndex addHinge(const LinkSpec& l, const LinkDiscretization& d, std::size_t k,
                                      SimTK::MobilizedBodyIndex prev, const SimTK::Body::Rigid& body) {
@@ -371,18 +372,21 @@ class Builder {
       const Section& sec = *a_.findSection(l.section);
       const Material& mat = *a_.findMaterial(l.material);
       const double ei = mat.youngs_modulus * sectionSecondMoment(sec);
-      addHingeCoordinate(l, ix, name + ".twist", 0, k_in * mat.shear_modulus * sectionTorsionConstant(sec) / ei,
-                         HingeAxis::Torsion);
-      addHingeCoordinate(l, ix, name + ".out", 1, k_in * sectionSecondMomentOut(sec) / sectionSecondMoment(sec),
-                         HingeAxis::OutOfPlane);
+      model_.addHingeRotation(
+          {hingeCoordinate(l, ix, name + ".twist", 0, k_in * mat.shear_modulus * sectionTorsionConstant(sec) / ei,
+                           HingeAxis::Torsion),
+           hingeCoordinate(l, ix, name + ".out", 1, k_in * sectionSecondMomentOut(sec) / sectionSecondMoment(sec),
+                           HingeAxis::OutOfPlane),
+           hingeCoordinate(l, ix, name, 2, k_in, HingeAxis::InPlane)});
+    } else {
+      model_.addCoordinate(hingeCoordinate(l, ix, name, 0, k_in, HingeAxis::InPlane));
     }
-    addHingeCoordinate(l, ix, name, spatial_hinge ? 2 : 0, k_in, HingeAxis::InPlane);
     model_.addPoint({name, ix, SimTK::Vec3(0), false});
     return ix;
   }
 
-  void addHingeCoordinate(const LinkSpec& l, SimTK::MobilizedBodyIndex ix, const std::string& name, int q,
-                          double stiffness, HingeAxis axis) {
+  Coordinate hingeCoordinate(const LinkSpec& l, SimTK::MobilizedBodyIndex ix, const std::string& name, int q,
+                             double stiffness, HingeAxis axis) const {
     Coordinate coord;
     coord.name = name;
     coord.kind = CoordinateKind::Hinge;
@@ -394,7 +398,7 @@ class Builder {
     coord.stiffness = stiffness;
     if (scene_.damping && scene_.damping->kind == DampingSpec::Kind::HingeViscous)
       coord.damping = scene_.damping->hinge_beta * coord.stiffness;
-    model_.addCoordinate(coord);
+    return coord;
   }
 
   LinkDiscretization discretize(const LinkSpec& l) const {

@@ -117,12 +117,62 @@ double Model::calcDissipation(const SimTK::State& s) const {
 }
 
 void Model::addCoordinate(const Coordinate& c) {
-  MMV_DEMAND(!finalized_);
-  coords_.push_back(c);
+  registerCoordinate(c);
   if (c.stiffness > 0) {
     SimTK::Force::MobilityLinearSpring(forces_, matter_.getMobilizedBody(c.mobod),
                                        SimTK::MobilizerQIndex(c.mobilizer_q), c.stiffness, c.reference);
   }
+}
+
+namespace {
+
+/// The rotation springs of sim/model/rotation_spring.hpp, on their gimbals' angles.
+class RotationSpringForce : public SimTK::Force::Custom::Implementation {
+ public:
+  RotationSpringForce(const SimTK::SimbodyMatterSubsystem& matter, std::shared_ptr<const std::vector<RotationSpring>> springs)
+      : matter_(matter), springs_(std::move(springs)) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                 SimTK::Vector& mobility_forces) const override {
+    for (const RotationSpring& r : *springs_) {
+      const SimTK::MobilizedBody& mb = matter_.getMobilizedBody(r.mobod);
+      const SimTK::Vec3 f = rotationSpringForce(angles(s, mb), r.k);
+      for (int i = 0; i < 3; ++i) mb.applyOneMobilityForce(s, SimTK::MobilizerUIndex(i), f[i], mobility_forces);
+    }
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override {
+    double v = 0;
+    for (const RotationSpring& r : *springs_) v += rotationSpringEnergy(angles(s, matter_.getMobilizedBody(r.mobod)), r.k);
+    return v;
+  }
+
+ private:
+  static SimTK::Vec3 angles(const SimTK::State& s, const SimTK::MobilizedBody& mb) {
+    return {mb.getOneQ(s, SimTK::MobilizerQIndex(0)), mb.getOneQ(s, SimTK::MobilizerQIndex(1)),
+            mb.getOneQ(s, SimTK::MobilizerQIndex(2))};
+  }
+  const SimTK::SimbodyMatterSubsystem& matter_;
+  std::shared_ptr<const std::vector<RotationSpring>> springs_;
+};
+
+}  // namespace
+
+void Model::addHingeRotation(const std::array<Coordinate, 3>& c) {
+  RotationSpring r;
+  r.mobod = c[0].mobod;
+  for (int i = 0; i < 3; ++i) {
+    // A gimbal's angles in order, with no reference: the spring's rest is the unbent hinge.
+    MMV_DEMAND(c[i].mobod == r.mobod && c[i].mobilizer_q == i && c[i].reference == 0 && !c[i].input);
+    r.coords[i] = static_cast<int>(coords_.size());
+    r.k[i] = c[i].stiffness;
+    registerCoordinate(c[i]);
+  }
+  if (rotation_springs_->empty()) SimTK::Force::Custom(forces_, new RotationSpringForce(matter_, rotation_springs_));
+  rotation_springs_->push_back(r);
+}
+
+void Model::registerCoordinate(const Coordinate& c) {
+  MMV_DEMAND(!finalized_);
+  coords_.push_back(c);
   if (c.damping > 0) {
     SimTK::Force::MobilityLinearDamper(forces_, matter_.getMobilizedBody(c.mobod),
                                        SimTK::MobilizerUIndex(c.mobilizer_q), c.damping);

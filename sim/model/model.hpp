@@ -23,6 +23,7 @@
 
 #include "facility/table_programs.hpp"
 #include "sim/model/reduced_motions.hpp"
+#include "sim/model/rotation_spring.hpp"
 
 namespace mmv {
 
@@ -139,6 +140,13 @@ class Model {
   /// Registers a coordinate; adds a linear spring if stiffness > 0 and a viscous
   /// damper if damping > 0.
   void addCoordinate(const Coordinate& c);
+  /// Registers a spatial hinge's three coordinates (its gimbal's x, y, z angles, in that
+  /// order) with one spring on their rotation vector (sim/model/rotation_spring.hpp; each
+  /// coordinate's stiffness is its axis's k) in place of a linear spring per angle;
+  /// dampers as addCoordinate.
+  void addHingeRotation(const std::array<Coordinate, 3>& c);
+  /// The springs addHingeRotation installed.
+  const std::vector<RotationSpring>& getRotationSprings() const { return *rotation_springs_; }
   /// Installs a viscous damping force f = -C u over a set of coordinates (the scene's
   /// modal or Rayleigh damping in time runs: sim/statics/damping_matrix.hpp); its
   /// matrix is set later by setLinearDamping, once the equilibrium it is formed at is
@@ -163,8 +171,8 @@ class Model {
   /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.
   void addPointLoad(const PointLoad& load);
   void addClosure(const Closure& c);
-  /// Declares that the only forces are uniform gravity, point loads and the
-  /// coordinates' linear springs, so the closed-form stiffness of sim/statics/linearize.hpp
+  /// Declares that the only forces are uniform gravity, point loads, the coordinates'
+  /// linear springs and the hinges' rotation springs, so the closed-form stiffness of sim/statics/linearize.hpp
   /// applies. Builders that add other forces must not call this.
   void setClosedFormForces() { closed_form_forces_ = true; }
   /// Declares rotations about axes other than world z (the spatial article's Gimbal
@@ -256,6 +264,8 @@ class Model {
  private:
   /// Whether a free coordinate moves closure c's point (relative to its partner) along z.
   bool pointMovesAlongZ(const Closure& c) const;
+  /// addCoordinate without the spring.
+  void registerCoordinate(const Coordinate& c);
   SimTK::MultibodySystem system_;
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;
@@ -280,6 +290,8 @@ class Model {
   bool finalized_ = false;
   ReducedMotions reduced_motions_;
   std::shared_ptr<LinearDamping> linear_damper_;
+  /// Shared with their Simbody force element, made with the first.
+  std::shared_ptr<std::vector<RotationSpring>> rotation_springs_ = std::make_shared<std::vector<RotationSpring>>();
   std::map<SimTK::MobilizedBodyIndex, std::function<double(double)>> prescribed_udot_;
 };
 

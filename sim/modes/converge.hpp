@@ -30,7 +30,8 @@ struct ConvergenceMode {
   double observed_order = 0;
   /// At the finest run: |f_N - richardson| / richardson when the observed order is
   /// within 0.5 of 2; with an observed order p further off but above 0.5, the same with
-  /// p (|f_N - f_N/2| / (2^p - 1)); otherwise |f_N - f_N/2| / f_N, a lower bound.
+  /// p (|f_N - f_N/2| / (2^p - 1), p at most 2: a higher observed order is taken for
+  /// a mesh short of the asymptotic range); otherwise |f_N - f_N/2| / f_N, a lower bound.
   double estimated_relative_error = 0;
   /// "ok": the observed order is within 0.5 of 2, so the O(1/N^2) Richardson value and
   /// estimate hold; "order": converging at another order (the estimate uses it);
