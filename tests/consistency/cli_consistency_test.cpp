@@ -128,6 +128,148 @@ TEST_F(Consistency, TextAndJsonSayTheSame) {
   std::printf("[consistency] text against JSON: %d mode frequencies, %d check lines, all equal to the text's digits\n", modes, lines);
 }
 
+// The shapes place-sensors places by, two ways: the AutoMAC it writes for its chosen
+// triaxial blocks (automac.csv) and the AutoMAC of `modes --points` at the same
+// stations, over every translation (a triaxial block's MAC does not depend on how
+// the block is turned), on every shipped article scene and the spatial article.
+TEST_F(Consistency, PlacementShapesAreModesShapesAtTheStations) {
+  std::vector<std::string> cases;
+  for (const std::string& scene : shippedScenes())
+    if (scene.find("hamsas") == std::string::npos) cases.push_back(scene);
+  cases.push_back("--set model=spatial");
+  int compared = 0;
+  for (const std::string& c : cases) {
+    SCOPED_TRACE(c);
+    const fs::path d = dir_ / ("place" + std::to_string(compared));
+    const Result p = run("place-sensors " + c + " --triaxial --count 6 --out " + d.string());
+    ASSERT_EQ(p.code, 0) << p.err;
+    const json placement = json::parse(slurp(d / "placement.json"));
+    std::string points;
+    for (const auto& ch : placement["chosen"]) points += (points.empty() ? "" : ",") + ch["station"].get<std::string>();
+    const std::vector<int> target = placement["target_modes"].get<std::vector<int>>();
+    const int last = *std::max_element(target.begin(), target.end());
+    const Result m = run("modes " + c + " --no-error-estimate --json --modes " + std::to_string(last) + " --points " + points);
+    ASSERT_EQ(m.code, 0) << m.err;
+    const json modes = json::parse(m.out)["modes"];
+    std::vector<std::vector<double>> phi;  // per target mode, every translation at every chosen station
+    for (int t : target) {
+      std::vector<double> v;
+      for (const auto& at : modes[t - 1]["at_points"])
+        for (const char* k : {"ux_per_modal_unit", "uy_per_modal_unit", "uz_per_modal_unit"})
+          if (at.contains(k)) v.push_back(at[k].get<double>());
+      ASSERT_EQ(modes[t - 1]["number"].get<int>(), t);
+      phi.push_back(v);
+    }
+    std::stringstream csv(slurp(d / "automac.csv"));
+    std::string line;
+    std::getline(csv, line);  // header
+    for (std::size_t i = 0; i < target.size(); ++i) {
+      ASSERT_TRUE(static_cast<bool>(std::getline(csv, line)));
+      std::stringstream cells(line);
+      std::string cell;
+      std::getline(cells, cell, ',');
+      ASSERT_EQ(std::stoi(cell), target[i]) << line;
+      for (std::size_t j = 0; j < target.size(); ++j) {
+        ASSERT_TRUE(static_cast<bool>(std::getline(cells, cell, ','))) << line;
+        double ij = 0, ii = 0, jj = 0;
+        for (std::size_t k = 0; k < phi[i].size(); ++k) {
+          ij += phi[i][k] * phi[j][k];
+          ii += phi[i][k] * phi[i][k];
+          jj += phi[j][k] * phi[j][k];
+        }
+        EXPECT_NEAR(std::stod(cell), ij * ij / (ii * jj), 2e-6) << "modes " << target[i] << ", " << target[j] << " at " << points;
+      }
+    }
+    ++compared;
+  }
+  EXPECT_EQ(compared, static_cast<int>(cases.size()));
+}
+
+/// Whether `word`, a number as the text printed it, is `value` to the text's last digit.
+::testing::AssertionResult printedAs(const std::string& word, double value) {
+  const auto e = word.find_first_of("eE");
+  const std::string mantissa = word.substr(0, e);
+  const auto dot = mantissa.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+  const int exponent = e == std::string::npos ? 0 : std::stoi(word.substr(e + 1));
+  const double ulp = std::pow(10.0, exponent - decimals);
+  if (std::abs(std::stod(word) - value) <= 0.51 * ulp) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "text " << word << ", JSON " << value;
+}
+
+/// The line of `text` after `from` whose first words are `keys`, split into words.
+std::vector<std::string> rowOf(const std::string& text, const std::string& from, const std::vector<std::string>& keys) {
+  const auto at = text.find(from);
+  if (at == std::string::npos) return {};
+  std::stringstream ss(text.substr(at));
+  for (std::string line; std::getline(ss, line);) {
+    const auto w = words(line);
+    if (w.size() >= keys.size() && std::equal(keys.begin(), keys.end(), w.begin())) return w;
+  }
+  return {};
+}
+
+// The text and the JSON of simulate, frf and place-sensors say the same, row by row, to
+// the text's last digit: simulate's torques and sensors, frf's pairs, the placement.
+TEST_F(Consistency, TextAndJsonOfTheOtherCommandsSayTheSame) {
+  int values = 0;
+  const std::string slew = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml --segments 4";
+  const Result st = run("simulate " + slew), sj = run("simulate " + slew + " --json");
+  ASSERT_EQ(st.code, 0) << st.err;
+  const json sim = json::parse(sj.out);
+  for (const auto& t : sim["torques"]) {
+    const auto w = rowOf(st.out, "Torques the torquers must give", {t["joint"].get<std::string>()});
+    ASSERT_EQ(w.size(), 4u) << t;
+    EXPECT_TRUE(printedAs(w[1], t["peak_torque_n_m"].get<double>()));
+    EXPECT_TRUE(printedAs(w[2], t["capacity_n_m"].get<double>()));
+    EXPECT_EQ(w[3], t["exceeded"].get<bool>() ? "EXCEEDED" : "yes");
+    values += 3;
+  }
+  for (const auto& x : sim["sensors"]) {
+    const auto w = rowOf(st.out, "Sensors", {x["name"].get<std::string>()});
+    ASSERT_EQ(w.size(), 6u) << x;
+    EXPECT_EQ(w[1], x["type"].get<std::string>());
+    EXPECT_EQ(w[2], x["unit"].get<std::string>());
+    EXPECT_EQ(std::stoi(w[3]), x["saturated_samples"].get<int>());
+    EXPECT_EQ(std::stoi(w[5]), x["samples"].get<int>());
+    values += 4;
+  }
+  const Result ft = run("frf"), fj = run("frf --json");
+  ASSERT_EQ(ft.code, 0) << ft.err;
+  const json frf = json::parse(fj.out);
+  for (const auto& p : frf["pairs"]) {
+    const auto w = rowOf(ft.out, "peak_zeta_%", {p["output"].get<std::string>(), p["output_unit"].get<std::string>(),
+                                                 p["input"].get<std::string>(), p["input_unit"].get<std::string>()});
+    ASSERT_EQ(w.size(), 11u) << p;
+    EXPECT_TRUE(printedAs(w[4], p["peak_hz"].get<double>())) << w[0] << "/" << w[2];
+    EXPECT_TRUE(printedAs(w[5], p["peak_db"].get<double>())) << w[0] << "/" << w[2];
+    if (w[6] != "-") EXPECT_TRUE(printedAs(w[6], 100 * p["peak_half_power_damping"].get<double>())) << w[0] << "/" << w[2];
+    EXPECT_TRUE(printedAs(w[7], p["at_10_hz_db"].get<double>())) << w[0] << "/" << w[2];
+    EXPECT_TRUE(printedAs(w[8], 100 * p["rom_relative_error"].get<double>())) << w[0] << "/" << w[2];
+    EXPECT_TRUE(printedAs(w[9], 100 * p["rom_local_error"].get<double>())) << w[0] << "/" << w[2];
+    EXPECT_TRUE(printedAs(w[10], p["rom_local_error_hz"].get<double>())) << w[0] << "/" << w[2];
+    values += 7;
+  }
+  for (const char* method : {"efi", "mke"}) {
+    const Result pt = run(std::string("place-sensors --method ") + method),
+                 pj = run(std::string("place-sensors --json --method ") + method);
+    ASSERT_EQ(pt.code, 0) << pt.err;
+    const json place = json::parse(pj.out);
+    ASSERT_FALSE(place["chosen"].empty());
+    for (const auto& c : place["chosen"]) {
+      const auto w = rowOf(pt.out, "station", {c["station"].get<std::string>(), c["axis"].get<std::string>()});
+      ASSERT_EQ(w.size(), 6u) << c;
+      EXPECT_TRUE(printedAs(w[2], c["x_m"].get<double>())) << w[0];
+      EXPECT_TRUE(printedAs(w[3], c["y_m"].get<double>())) << w[0];
+      EXPECT_TRUE(printedAs(w[4], c["z_m"].get<double>())) << w[0];
+      EXPECT_NEAR(std::stod(w[5]), c["score"].get<double>(), 5e-4 * std::abs(c["score"].get<double>())) << w[0];
+      values += 4;
+    }
+  }
+  EXPECT_GT(values, 150);
+  std::printf("[consistency] text against JSON of simulate, frf and place-sensors: %d values equal to the text's digits\n", values);
+}
+
 // The docs (docs/planning.md): FAIL below 0, unless the line is advisory; never warn or
 // pass with a negative margin. Before, the table's bandwidth line read -180 % warn.
 TEST_F(Consistency, ANegativeMarginIsFailOrAdvisory) {
