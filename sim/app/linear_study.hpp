@@ -51,6 +51,10 @@ struct LinearStudy {
   std::vector<Eigen::MatrixXcd> hf;    ///< the full model's responses on it
   ModelError err;                      ///< the reduced model's against them
   std::optional<SegmentsChoice> segments;  ///< target_error: how the segments were chosen
+  /// target_error: E (of each pair's peak), the frequency error the segments hold every
+  /// mode up to f_max to for the mesh's half of it, and the least damping ratio that
+  /// set it (chooseForTarget, linear_study.cpp).
+  double frf_target = 0, frequency_target = 0, least_damping = 0;
   /// The mesh's share of the FRF error near the peaks, which `err` (reduced against full
   /// on this mesh) does not see: near its peak a mode whose frequency is off by e
   /// (relative) moves the response by about |e / (e + i zeta)| ~ e / zeta of the peak.

@@ -150,8 +150,9 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
                     "Report how many modes a reduced model needs for this FRF error relative to each pair's peak, 0 .. 1 (0: skip)")
         ->capture_default_str();
     cmd->add_option("--target-error", lin.target_error,
-                    "Relative error to meet, e.g. 1e-3: the segments per link are chosen for every mode up to --to "
-                    "(as modes --target-error) and the reduced model keeps the fewest modes within it of each pair's peak; 1e-12 .. 0.5");
+                    "FRF error to meet relative to each pair's peak, e.g. 0.05: half for the mesh (every frequency up to --to "
+                    "within half of it times the least damping ratio, at most 128 segments per link), half for the reduced "
+                    "model (the fewest modes within it); 1e-12 .. 0.5");
     cmd->add_option("--time-budget", lin.time_budget, "Wall seconds --target-error may take choosing the segments");
     cmd->add_option("--out", lin.out, "Output directory");
     cmd->add_flag("--force", lin.force, "Replace files of the same names in --out");

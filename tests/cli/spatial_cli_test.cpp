@@ -53,7 +53,8 @@ TEST_F(Cli, ModesOnTheSpatialArticleClassifiesModesAndReportsPlanarity) {
 
 // --target-error on the spatial article. simulate: the chosen run's link 3a tip (x, y, z)
 // within the target of a tight reference run computed here. frf: the segments chosen
-// hold every mode up to --to within the target of a 64-segment solution.
+// hold every mode up to --to within the frequency error the FRF target asks of them
+// (half the target times the damping ratio) of a 64-segment solution.
 TEST_F(Cli, TargetErrorMeetsItsTargetOnTheSpatialArticle) {
   const std::string sets = " --segments 2 --set model=spatial --set 'base.gimbal.roll.slew={to_deg: 10}' --set simulation.duration=0.3";
   const Result chosen = run("simulate" + sets + " --target-error 1e-3 --points link3a.tip --time-budget 60 --out " + (dir_ / "t").string());
@@ -72,9 +73,11 @@ TEST_F(Cli, TargetErrorMeetsItsTargetOnTheSpatialArticle) {
   }
   EXPECT_LT(worst, 1e-3);
 
-  const Result frf = run("frf --set model=spatial --target-error 1e-2 --input table_z --output link3a.tip:z --to 10 --json");
+  // 10 % of each peak: every frequency below 10 Hz within 0.05 x 1 % damping = 5e-4.
+  const Result frf = run("frf --set model=spatial --target-error 0.1 --input table_z --output link3a.tip:z --to 10 --json");
   ASSERT_EQ(frf.code, 0) << frf.err;
   const int segments = nlohmann::json::parse(frf.out)["target_error"]["segments"];
+  EXPECT_LT(segments, 64);
   const auto modes = [&](int n) {
     return nlohmann::json::parse(run("modes --set model=spatial --modes 12 --no-error-estimate --json --segments " + std::to_string(n)).out)["modes"];
   };
@@ -82,7 +85,7 @@ TEST_F(Cli, TargetErrorMeetsItsTargetOnTheSpatialArticle) {
   for (std::size_t i = 0; i < fine.size(); ++i) {
     const double f = fine[i]["frequency_hz"];
     if (f > 10) break;
-    EXPECT_NEAR(got[i]["frequency_hz"].get<double>(), f, 1e-2 * f) << "mode " << i + 1;
+    EXPECT_NEAR(got[i]["frequency_hz"].get<double>(), f, 5e-4 * f) << "mode " << i + 1;
   }
 }
 

@@ -358,16 +358,14 @@ TEST_F(Consistency, FrfPeaksAreTheDampedModes) {
 // frequency error over its damping ratio) and the actual difference near mode 1's peak
 // between the table scene at 16 segments and at 64 (nearly converged). Before,
 // frf reported only the reduced model against the full one on the same mesh (0.0029),
-// and --target-error 1e-2 said nothing of a response 6 % of its peak off.
+// and --target-error 1e-2 chose these 16 segments, a response 6 % of its peak off.
 TEST_F(Consistency, FrfMeshErrorEstimateIsTheActualError) {
   const std::string table = (fs::path(MMVLAB_SOURCE_DIR) / "scenes/mmv-table.yaml").string();
-  const Result r = run("frf " + table + " --target-error 1e-2 --json");
+  const Result r = run("frf " + table + " --segments 16 --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
-  ASSERT_EQ(j["target_error"]["segments"].get<int>(), 16);
   ASSERT_EQ(j["mesh_frf_error_mode"].get<int>(), 1);
   const double estimate = j["mesh_frf_error_estimate"].get<double>();
-  EXPECT_FALSE(j["target_error"]["mesh_frf_error_within_target"].get<bool>());  // and the text warns
   ArticleScene coarse = loadArticleSceneFile(table), fine = coarse;
   overrideSegments(coarse, 16);
   overrideSegments(fine, 64);  // 1/16 of the 16-segment frequency error left: converged enough for a 30 % check
@@ -383,7 +381,7 @@ TEST_F(Consistency, FrfMeshErrorEstimateIsTheActualError) {
     peak = std::max(peak, std::abs(hf));
   }
   const double actual = diff / peak;
-  EXPECT_GT(actual, 0.01);  // the target's 1e-2 is missed near the peak, as the warning says
+  EXPECT_GT(actual, 0.01);  // 1e-2 is missed near the peak: --target-error 1e-2 may not stop here
   EXPECT_NEAR(estimate / actual, 1.0, 0.3) << "estimate " << estimate << ", actual " << actual;
   std::printf("[consistency] frf mesh error near mode 1's peak, mmv-table at 16 segments: estimate %.4f, actual %.4f "
               "(against 64 segments)\n", estimate, actual);
