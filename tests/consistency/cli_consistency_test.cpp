@@ -209,8 +209,10 @@ std::vector<std::string> rowOf(const std::string& text, const std::string& from,
   return {};
 }
 
-// The text and the JSON of simulate, frf and place-sensors say the same, row by row, to
-// the text's last digit: simulate's torques and sensors, frf's pairs, the placement.
+// The text and the JSON of simulate, frf, place-sensors, compare and correlate say the
+// same, row by row, to the text's last digit: simulate's torques and sensors, frf's
+// pairs, the placement, compare's Tables 2 and 3 and its synthesis, correlate's pairs and
+// FRACs.
 TEST_F(Consistency, TextAndJsonOfTheOtherCommandsSayTheSame) {
   int values = 0;
   const std::string slew = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml --segments 4";
@@ -266,8 +268,84 @@ TEST_F(Consistency, TextAndJsonOfTheOtherCommandsSayTheSame) {
       values += 4;
     }
   }
-  EXPECT_GT(values, 150);
-  std::printf("[consistency] text against JSON of simulate, frf and place-sensors: %d values equal to the text's digits\n", values);
+  // compare: Table 2's component modes with their closed forms, Table 3's system modes,
+  // and each synthesis row (assumed modes and Craig-Bampton).
+  const Result ct = run("compare"), cj = run("compare --json");
+  ASSERT_EQ(ct.code, 0) << ct.err;
+  const json cmp = json::parse(cj.out);
+  const auto unparen = [](std::string w) { return w.substr(w.front() == '(', w.size() - (w.front() == '(') - (w.back() == ')')); };
+  for (const auto& c : cmp["component_modes"]) {
+    const auto w = rowOf(ct.out, "Table 2", {c["link"].get<std::string>()});
+    ASSERT_EQ(w.size(), 3 + 2 * c["modes"].size()) << c["link"];
+    EXPECT_TRUE(printedAs(w[1], c["tip_mass_kg"].get<double>()));
+    EXPECT_TRUE(printedAs(w[2], c["mass_ratio"].get<double>()));
+    for (std::size_t k = 0; k < c["modes"].size(); ++k) {
+      EXPECT_TRUE(printedAs(w[3 + 2 * k], c["modes"][k]["frequency_hz"].get<double>())) << c["link"] << " mode " << k + 1;
+      EXPECT_TRUE(printedAs(unparen(w[4 + 2 * k]), c["modes"][k]["closed_form_hz"].get<double>())) << c["link"] << " mode " << k + 1;
+      values += 2;
+    }
+  }
+  for (const auto& m : cmp["system_modes"]) {
+    const auto w = rowOf(ct.out, "Table 3", {std::to_string(m["mode"].get<int>())});
+    ASSERT_GE(w.size(), 10u) << m;
+    EXPECT_TRUE(printedAs(w[1], m["frequency_hz"].get<double>()));
+    EXPECT_EQ(w[2], m["strain_link"].get<std::string>());
+    EXPECT_TRUE(printedAs(w.back(), 100 * m["system_over_component_minus_1"].get<double>()));
+    values += 3;
+  }
+  const json& am = cmp["synthesis"]["assumed_modes"]["modes"];
+  const json& cb = cmp["synthesis"]["craig_bampton"]["modes"];
+  ASSERT_EQ(am.size(), cb.size());
+  for (std::size_t i = 0; i < am.size(); ++i) {
+    const auto w = rowOf(ct.out, "Synthesis from component modes", {std::to_string(am[i]["mode"].get<int>())});
+    ASSERT_EQ(w.size(), 11u) << am[i];
+    EXPECT_TRUE(printedAs(w[1], am[i]["full_frequency_hz"].get<double>()));
+    for (const auto& [row, at] : {std::pair<const json*, int>{&am[i], 3}, {&cb[i], 7}}) {
+      EXPECT_TRUE(printedAs(w[at], (*row)["synthesized_frequency_hz"].get<double>())) << w[0];
+      EXPECT_TRUE(printedAs(w[at + 1], 100 * (*row)["relative_error"].get<double>())) << w[0];
+      EXPECT_TRUE(printedAs(w[at + 2], (*row)["mac"].get<double>())) << w[0];
+      EXPECT_EQ(w[at + 3], (*row)["verdict"].get<std::string>()) << w[0];
+      values += 4;
+    }
+  }
+  // correlate: the committed measured set against the table scene, every pair and FRAC row.
+  const std::string corr = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml --measured " + MMVLAB_SOURCE_DIR +
+                           "/docs/figures/correlate/measured.uff";
+  const Result rt = run("correlate " + corr), rj = run("correlate " + corr + " --json");
+  ASSERT_EQ(rt.code, 0) << rt.err;
+  const json cor = json::parse(rj.out);
+  const auto zetaOf = [](const json& list, const std::string& label) {
+    for (const auto& m : list)
+      if (m["label"] == label) return m["damping_ratio"].get<double>();
+    return std::nan("");
+  };
+  ASSERT_FALSE(cor["pairs"].empty());
+  for (const auto& p : cor["pairs"]) {
+    const auto w = rowOf(rt.out, "freq_error_%", {p["test"].get<std::string>()});
+    ASSERT_EQ(w.size(), 8u) << p;
+    EXPECT_TRUE(printedAs(w[1], p["test_hz"].get<double>())) << w[0];
+    EXPECT_TRUE(printedAs(w[2], 100 * zetaOf(cor["test_modes"], w[0]))) << w[0];
+    EXPECT_EQ(w[3], p["model"].get<std::string>());
+    EXPECT_TRUE(printedAs(w[4], p["model_hz"].get<double>())) << w[0];
+    EXPECT_TRUE(printedAs(w[5], 100 * zetaOf(cor["model_modes"], w[3]))) << w[0];
+    EXPECT_TRUE(printedAs(w[6], 100 * p["frequency_error"].get<double>())) << w[0];
+    EXPECT_TRUE(printedAs(w[7], p["mac"].get<double>())) << w[0];
+    values += 7;
+  }
+  for (const auto& f : cor["frfs"]) {
+    const auto w = rowOf(rt.out, "FRAC of the model's", {std::to_string(f["function"].get<int>())});
+    ASSERT_EQ(w.size(), 10u) << f;  // the id is "output / input"
+    EXPECT_EQ(w[1] + " " + w[2] + " " + w[3], f["id"].get<std::string>());
+    EXPECT_EQ(w[4], f["output"].get<std::string>());
+    EXPECT_TRUE(printedAs(w[6], f["frac"].get<double>())) << w[0];
+    EXPECT_EQ(w[7], f["frac_verdict"].get<std::string>()) << w[0];
+    EXPECT_TRUE(printedAs(w[8], f["test_peak_hz"].get<double>())) << w[0];
+    EXPECT_TRUE(printedAs(w[9], f["model_peak_hz"].get<double>())) << w[0];
+    values += 6;
+  }
+  EXPECT_GT(values, 400);
+  std::printf("[consistency] text against JSON of simulate, frf, place-sensors, compare and correlate: %d values equal "
+              "to the text's digits\n", values);
 }
 
 // The docs (docs/planning.md): FAIL below 0, unless the line is advisory; never warn or

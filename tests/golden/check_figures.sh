@@ -16,8 +16,14 @@ run frf-table frf scenes/mmv-table.yaml --input table_x --output link3a.tip:x --
 run hamsas frf scenes/hamsas.yaml --vary counterweight_mass=0,2,3.37,5,7
 run sweep-joint1 sweep-config --grid joint1:-90:90:15 --modes 6
 run sweep-closed-joint2 sweep-config scenes/mmv-closed.yaml --grid joint2:-45:45:15 --modes 6
+# correlate: its report (stdout) and files against the committed measured set, which is an
+# input (written by an older frf, real mode shapes), as is link2-stiff.yaml.
+run correlate correlate scenes/mmv-table.yaml --measured docs/figures/correlate/measured.uff --modes 12
+"$bin" correlate scenes/mmv-table.yaml --measured docs/figures/correlate/measured.uff --modes 12 \
+  >"$tmp/correlate/correlate.txt" 2>&1
+cp docs/figures/correlate/measured.uff docs/figures/correlate/link2-stiff.yaml "$tmp/correlate/"
 status=0
-for dir in compare-default frf-table hamsas sweep-joint1 sweep-closed-joint2; do
+for dir in compare-default frf-table hamsas sweep-joint1 sweep-closed-joint2 correlate; do
   for f in docs/figures/$dir/*; do
     case "$f" in *.png) continue ;; esac
     new="$tmp/$dir/$(basename "$f")"
