@@ -29,6 +29,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/io/hamsas_report.hpp"
+#include "sim/io/check_report.hpp"
 #include "sim/io/mode_fields.hpp"
 #include "sim/core/text.hpp"
 
@@ -483,6 +484,12 @@ PYBIND11_MODULE(_mmvlab, m) {
                                                : f.applies == mmv::ModeField::Applies::Spatial ? "spatial"
                                                                                                : "damped",
                           py::arg("meaning") = f.meaning));
+    return out;
+  });
+  m.def("check_line_fields", [] {
+    py::list out;
+    for (const auto& f : mmv::checkLineFields())
+      out.append(py::dict(py::arg("key") = f.key, py::arg("unit") = f.unit, py::arg("meaning") = f.meaning));
     return out;
   });
   m.def("sweep_config", &sweepConfig, py::arg("scene"), py::arg("segments"), py::arg("grids"), py::arg("modes"),

@@ -32,7 +32,7 @@ from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene, 
 __all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate", "check", "place_sensors", "sweep",
            "FrfResult", "RomResult", "SimulateResult", "SweepResult", "ConvergeResult", "CompareResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
-           "ModesResult", "CheckResult", "PlacementResult", "correlate", "CorrelateResult", "mode_fields", "trade",
+           "ModesResult", "CheckResult", "check_line_fields", "PlacementResult", "correlate", "CorrelateResult", "mode_fields", "trade",
            "TradeResult", "sweep_config", "ConfigSweepResult",
            "TransmissibilityResult"]
 
@@ -168,6 +168,19 @@ class CheckResult(Result):
         self.lines = self.json["lines"]
         self.overall = self.json["overall"]
 
+    def table(self):
+        """The requirements as columns, one per field of `check_line_fields()` (the columns
+        of check.csv, under the same names): demand, capacity and margin_pct as numpy arrays
+        (NaN where a line has none), the text fields as lists. For `pandas.DataFrame(c.table())`."""
+        columns = {}
+        for f in check_line_fields():
+            values = [line.get(f["key"]) for line in self.lines]
+            if f["unit"]:
+                columns[f["key"]] = _np.array([_np.nan if v is None else v for v in values], dtype=float)
+            else:
+                columns[f["key"]] = values
+        return columns
+
 
 class PlacementResult(Result):
     """The chosen sensors: `.chosen` (dicts as in placement.json: station, axis, position, score),
@@ -178,6 +191,14 @@ class PlacementResult(Result):
         self.chosen = self.json["chosen"]
         self.target_modes = _np.array(self.json["target_modes"], dtype=int)
         self.target_frequencies_hz = _np.array(self.json["target_frequencies_hz"], dtype=float)
+
+
+def check_line_fields():
+    """The per-requirement fields of `check`, described once in the library
+    (sim/io/check_report.hpp): a list of dicts {key, unit ("" for text; "unit": the line's
+    own unit; "%"), meaning}; check.json's lines, check.csv and `CheckResult.table()` are
+    all made from it."""
+    return _mmvlab.check_line_fields()
 
 
 def mode_fields():

@@ -194,6 +194,27 @@ def test_check_equals_the_cli_json():
     assert py.overall == py.json["overall"]
 
 
+def test_check_table_is_check_csv(tmp_path):
+    """CheckResult.table() and `check --out`'s check.csv: one field list, the same columns
+    and values (the CSV's 8 significant digits)."""
+    scene = scene_path("mmv-table.yaml")
+    py = mmvlab.check(mmvlab.load_scene(scene), segments=4).table()
+    out = tmp_path / "c"
+    subprocess.run([MMVLAB, "check", scene, "--segments", "4", "--out", str(out)], check=True, capture_output=True)
+    with open(out / "check.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert list(py.keys()) == [f["key"] for f in mmvlab.check_line_fields()] == list(rows[0].keys())
+    assert len(rows) == len(py["id"]) >= 5
+    for k, f in enumerate(rows):
+        for field in mmvlab.check_line_fields():
+            key, cell = field["key"], f[field["key"]]
+            if field["unit"]:
+                got = py[key][k]
+                assert (cell == "" and np.isnan(got)) or abs(float(cell) - got) <= 1e-7 * abs(got), (key, cell, got)
+            else:
+                assert cell == py[key][k].replace(",", ";").replace('"', "'"), (key, cell)  # CSV text, escaped
+
+
 def test_place_sensors_equals_the_cli_json():
     py = mmvlab.place_sensors(mmvlab.load_scene(), segments=4, count=6, modes=[1, 2, 3], method="mke")
     cli = cli_json("place-sensors", "--segments", "4", "--count", "6", "--modes", "1-3", "--method", "mke")

@@ -3,6 +3,7 @@
 
 #include "sim/app/plan_studies.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/io/check_report.hpp"
 #include "sim/io/output_dir.hpp"
 
 namespace mmv::cli {
@@ -19,6 +20,7 @@ int runCheckCommand(const CheckArgs& args) {
     if (out) {
       out->write("check.md", s.markdown);
       out->write("check.json", s.json.dump(2) + "\n");
+      out->write("check.csv", checkCsv(s.report));
       out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(s.json) : emitResult(s.text);

@@ -54,21 +54,45 @@ nlohmann::ordered_json checkJson(const CheckReport& r) {
   j["overall"] = verdictName(r.overall);
   j["not_checked"] = r.not_checked;
   auto& lines = j["lines"] = nlohmann::ordered_json::array();
-  for (const auto& l : r.lines) {
-    nlohmann::ordered_json o;
-    o["id"] = l.id;
-    o["group"] = l.group;
-    o["requirement"] = l.requirement;
-    o["demand"] = l.unit.empty() || !std::isfinite(l.demand) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.demand);
-    o["capacity"] = l.has_capacity ? nlohmann::ordered_json(l.capacity) : nlohmann::ordered_json(nullptr);
-    o["unit"] = l.unit;
-    o["margin_pct"] = l.has_capacity ? nlohmann::ordered_json(l.margin_pct) : nlohmann::ordered_json(nullptr);
-    o["verdict"] = verdictName(l.verdict);
-    o["note"] = l.note;
-    lines.push_back(o);
-  }
+  const auto every = [](const Field<CheckLine>&) { return true; };
+  for (const auto& l : r.lines) lines.push_back(fieldsJson(checkLineFields(), l, every));
   j["seconds"] = r.seconds;
   return j;
+}
+
+namespace {
+
+using Value = std::optional<nlohmann::ordered_json>;
+Value text(const std::string& s) { return nlohmann::ordered_json(s); }
+Value numberOrNull(bool defined, double v) {
+  return defined && std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+const std::vector<Field<CheckLine>>& checkLineFields() {
+  static const std::vector<Field<CheckLine>> fields = {
+      {"id", "", "%s", "stable name of the requirement across runs of a scene (a sweep's column)",
+       [](const CheckLine& l) { return text(l.id); }},
+      {"group", "", "%s", "torquers, gimbal, table, modes, sensors, lab or plausibility",
+       [](const CheckLine& l) { return text(l.group); }},
+      {"requirement", "", "%s", "what is checked", [](const CheckLine& l) { return text(l.requirement); }},
+      {"demand", "unit", "%.8g", "what the test needs (null: a requirement with no measure)",
+       [](const CheckLine& l) { return numberOrNull(!l.unit.empty(), l.demand); }},
+      {"capacity", "unit", "%.8g", "what the equipment gives (null: not given)",
+       [](const CheckLine& l) { return numberOrNull(l.has_capacity, l.capacity); }},
+      {"unit", "", "%s", "the unit of demand and capacity", [](const CheckLine& l) { return text(l.unit); }},
+      {"margin_pct", "%", "%.8g", "(capacity - demand) / capacity x 100 (null: no capacity)",
+       [](const CheckLine& l) { return numberOrNull(l.has_capacity, l.margin_pct); }},
+      {"verdict", "", "%s", "pass, warn (below the required margin), FAIL (below 0), advisory, info or n/a",
+       [](const CheckLine& l) { return text(verdictName(l.verdict)); }},
+      {"note", "", "%s", "where the worst case is, what is assumed, what to do", [](const CheckLine& l) { return text(l.note); }},
+  };
+  return fields;
+}
+
+std::string checkCsv(const CheckReport& r) {
+  return fieldsCsv(checkLineFields(), r.lines, [](const Field<CheckLine>&) { return true; });
 }
 
 std::string checkMarkdown(const CheckReport& r) {

@@ -3,7 +3,8 @@
 /// `Serialize`): key (the JSON key and the CSV column), unit, meaning, and how the value
 /// is read. The JSON record, the CSV table and the Python table of a row type are made
 /// from its one list, so they cannot name or compute a quantity differently. The lists:
-/// modeFields() (sim/io/mode_fields.hpp), tradeRunFields() (sim/io/trade_report.hpp).
+/// modeFields() (sim/io/mode_fields.hpp), tradeRunFields() (sim/io/trade_report.hpp),
+/// trackFields() (sim/io/config_sweep_report.hpp), checkLineFields() (sim/io/check_report.hpp).
 
 #include <optional>
 #include <sstream>

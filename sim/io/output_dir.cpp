@@ -180,7 +180,9 @@ void OutputDir::write(const std::string& name, std::string_view bytes) { writeFi
 
 void OutputDir::undoCommit() {
   std::error_code ignore;
-  for (const auto& n : placed_) fs::remove(target_ / n, ignore);
+  // An old file goes back over its new one in one rename; a new file with no old one goes.
+  for (const auto& n : placed_)
+    if (std::find(aside_.begin(), aside_.end(), n) == aside_.end()) fs::remove(target_ / n, ignore);
   for (const auto& n : aside_) fs::rename(staging_ / (".old-" + n), target_ / n, ignore);
   placed_.clear();
   aside_.clear();
@@ -211,15 +213,20 @@ void OutputDir::commit() {
   created_target_ = !fs::exists(target_, ec);
   fs::create_directories(target_, ec);
   if (ec) throw OutputError(target_.string() + ": cannot create directory: " + ec.message());
-  // --force: the old files are moved aside first and put back if any new one cannot be
+  // --force: the old files are kept aside first and put back if any new one cannot be
   // placed (or anything after the commit fails, see the destructor), so a failure never
   // leaves the user with fewer files than before. A signal meanwhile waits for the end:
-  // DIR then holds the whole new output (or, after a failure, the old one).
+  // DIR then holds the whole new output (or, after a failure, the old one). Aside is a
+  // second link to the old file, so the old name stays until the new file's rename
+  // replaces it in one step: even a SIGKILL, which cannot be held, never leaves a name
+  // missing (moving the old file aside left one for a moment; the signal test saw it).
+  // A file system without hard links gets the move.
   const SignalsHeld held;
   committed_ = true;
   for (const auto& n : names_) {
     if (!fs::exists(fs::symlink_status(target_ / n, ec))) continue;
-    fs::rename(target_ / n, staging_ / (".old-" + n), ec);
+    fs::create_hard_link(target_ / n, staging_ / (".old-" + n), ec);
+    if (ec) fs::rename(target_ / n, staging_ / (".old-" + n), ec);
     if (ec) {
       undoCommit();
       committed_ = false;

@@ -14,8 +14,10 @@
 
 #include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
+#include "sim/io/check_report.hpp"
 #include "sim/io/config_sweep_report.hpp"
 #include "sim/io/trade_report.hpp"
+#include "sim/plan/check.hpp"
 #include "support/scenes.hpp"
 
 namespace mmv {
@@ -225,6 +227,35 @@ TEST(TradeRunFields, JsonAndCsvComeFromOneList) {
   EXPECT_FALSE(runs[1].contains("tip_error_m"));
   EXPECT_EQ(runs[1]["failure"], "cut at 2 s, a \"budget\", here");
   EXPECT_FALSE(runs[0].contains("failure"));
+}
+
+
+// check's lines: check.json's records and check.csv from checkLineFields(), on the
+// table scene (lines with and without a capacity; text escaped as in every CSV).
+TEST(CheckLineFields, JsonAndCsvComeFromOneList) {
+  ArticleScene s = loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml");
+  overrideSegments(s, 4);
+  const CheckReport r = runCheck(s);
+  const json lines = checkJson(r)["lines"];
+  std::istringstream csv(checkCsv(r));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  std::vector<std::string> columns;
+  for (const auto& f : checkLineFields()) columns.push_back(f.key);
+  EXPECT_EQ(splitCsvLine(line), columns);
+  ASSERT_EQ(lines.size(), r.lines.size());
+  int with_capacity = 0, without = 0;
+  for (std::size_t i = 0; i < r.lines.size(); ++i) {
+    ASSERT_TRUE(std::getline(csv, line));
+    const std::vector<std::string> cells = splitCsvLine(line);
+    expectCellsAreTheRecord(cells, 0, columns, lines[i], 1e-7);
+    EXPECT_EQ(lines[i].size(), columns.size());  // every field, no other key
+    (r.lines[i].has_capacity ? with_capacity : without) += 1;
+  }
+  EXPECT_GE(with_capacity, 5);
+  EXPECT_GT(without, 0);
+  EXPECT_FALSE(std::getline(csv, line));
+  std::printf("[fields] check: %zu lines (%d with a capacity) the same in JSON and CSV\n", r.lines.size(), with_capacity);
 }
 
 }  // namespace
