@@ -183,7 +183,8 @@ class CheckResult(Result):
 
 
 class PlacementResult(Result):
-    """The chosen sensors: `.chosen` (dicts as in placement.json: station, axis, position, score),
+    """The chosen sensors: `.chosen` (dicts as in placement.json: station, link, x_along_link_m, axis,
+    world_x_m, world_y_m, world_z_m, score: the fields of candidates.csv less `chosen`),
     `.target_modes` and `.target_frequencies_hz` (arrays)."""
 
     def __init__(self, json_text, text):

@@ -4,7 +4,8 @@
 /// is read. The JSON record, the CSV table and the Python table of a row type are made
 /// from its one list, so they cannot name or compute a quantity differently. The lists:
 /// modeFields() (sim/io/mode_fields.hpp), tradeRunFields() (sim/io/trade_report.hpp),
-/// trackFields() (sim/io/config_sweep_report.hpp), checkLineFields() (sim/io/check_report.hpp).
+/// trackFields() (sim/io/config_sweep_report.hpp), checkLineFields() (sim/io/check_report.hpp),
+/// placementFields() (sim/io/placement_report.hpp).
 
 #include <optional>
 #include <sstream>

@@ -52,6 +52,38 @@ std::string placementText(const PlacementStudy& s) {
   return os.str();
 }
 
+const std::vector<Field<PlacementRow>>& placementFields() {
+  using Value = std::optional<nlohmann::ordered_json>;
+  static const std::vector<Field<PlacementRow>> fields = {
+      {"station", "", "%s", "the station, <link>@<m>m", [](const PlacementRow& r) -> Value { return r.candidate->station; }},
+      {"link", "", "%s", "its link", [](const PlacementRow& r) -> Value { return r.candidate->link; }},
+      {"x_along_link_m", "m", "%.6g", "from the link's root, along it",
+       [](const PlacementRow& r) -> Value { return r.candidate->x_m; }},
+      {"axis", "", "%s", "axial, transverse, normal (spatial) or triaxial (a block)",
+       [](const PlacementRow& r) -> Value { return r.candidate->axis; }},
+      {"world_x_m", "m", "%.6g", "world x at the equilibrium", [](const PlacementRow& r) -> Value { return r.candidate->world_x; }},
+      {"world_y_m", "m", "%.6g", "world y at the equilibrium", [](const PlacementRow& r) -> Value { return r.candidate->world_y; }},
+      {"world_z_m", "m", "%.6g", "world z at the equilibrium", [](const PlacementRow& r) -> Value { return r.candidate->world_z; }},
+      {"chosen", "", "%d", "1 when the set keeps it", [](const PlacementRow& r) -> Value { return r.chosen ? 1 : 0; }},
+      {"score", "1", "%.6g",
+       "its score when chosen: its EfI (its rows' effective independence summed, at the end), or the method's ranking value",
+       [](const PlacementRow& r) -> Value {
+         return r.chosen ? Value(nlohmann::ordered_json(r.score)) : std::nullopt;
+       }},
+  };
+  return fields;
+}
+
+std::vector<PlacementRow> placementRows(const PlacementStudy& s) {
+  std::vector<PlacementRow> rows(s.candidates.size());
+  for (std::size_t b = 0; b < s.candidates.size(); ++b) rows[b].candidate = &s.candidates[b];
+  for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
+    rows[s.result.kept_blocks[i]].chosen = true;
+    rows[s.result.kept_blocks[i]].score = s.result.block_score[i];
+  }
+  return rows;
+}
+
 nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   nlohmann::ordered_json j;
   const PlacementResult& r = s.result;
@@ -64,10 +96,9 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   j["target_frequencies_hz"] = s.target_frequencies_hz;
   j["candidates"] = s.candidates.size();
   auto chosen = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < r.kept_blocks.size(); ++i) {
-    const PlacementCandidate& c = s.candidates[r.kept_blocks[i]];
-    chosen.push_back({{"station", c.station}, {"axis", c.axis}, {"x_m", c.world_x}, {"y_m", c.world_y}, {"z_m", c.world_z}, {"score", r.block_score[i]}});
-  }
+  const std::vector<PlacementRow> rows = placementRows(s);
+  const auto record = [](const Field<PlacementRow>& f) { return std::string(f.key) != "chosen"; };
+  for (int b : r.kept_blocks) chosen.push_back(fieldsJson(placementFields(), rows[b], record));  // in the order kept
   j["chosen"] = chosen;
   j["fisher_determinant"] = r.fisher_determinant;
   j["fisher_condition"] = std::isfinite(r.fisher_condition) ? nlohmann::ordered_json(r.fisher_condition) : nlohmann::ordered_json();
@@ -79,20 +110,7 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
 }
 
 std::string placementCandidatesCsv(const PlacementStudy& s) {
-  std::ostringstream os;
-  os << "station,link,x_along_link_m,axis,world_x_m,world_y_m,world_z_m,chosen,score\n";
-  std::vector<double> score(s.candidates.size(), 0.0);
-  std::vector<int> chosen(s.candidates.size(), 0);
-  for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
-    chosen[s.result.kept_blocks[i]] = 1;
-    score[s.result.kept_blocks[i]] = s.result.block_score[i];
-  }
-  for (std::size_t b = 0; b < s.candidates.size(); ++b) {
-    const PlacementCandidate& c = s.candidates[b];
-    os << c.station << ',' << c.link << ',' << strf("%.6g", c.x_m) << ',' << c.axis << ',' << strf("%.6g", c.world_x) << ','
-       << strf("%.6g", c.world_y) << ',' << strf("%.6g", c.world_z) << ',' << chosen[b] << ',' << (chosen[b] ? strf("%.6g", score[b]) : std::string()) << '\n';
-  }
-  return os.str();
+  return fieldsCsv(placementFields(), placementRows(s), [](const Field<PlacementRow>&) { return true; });
 }
 
 std::string placementAutoMacCsv(const PlacementStudy& s) {

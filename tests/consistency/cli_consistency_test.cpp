@@ -261,9 +261,9 @@ TEST_F(Consistency, TextAndJsonOfTheOtherCommandsSayTheSame) {
     for (const auto& c : place["chosen"]) {
       const auto w = rowOf(pt.out, "station", {c["station"].get<std::string>(), c["axis"].get<std::string>()});
       ASSERT_EQ(w.size(), 6u) << c;
-      EXPECT_TRUE(printedAs(w[2], c["x_m"].get<double>())) << w[0];
-      EXPECT_TRUE(printedAs(w[3], c["y_m"].get<double>())) << w[0];
-      EXPECT_TRUE(printedAs(w[4], c["z_m"].get<double>())) << w[0];
+      EXPECT_TRUE(printedAs(w[2], c["world_x_m"].get<double>())) << w[0];
+      EXPECT_TRUE(printedAs(w[3], c["world_y_m"].get<double>())) << w[0];
+      EXPECT_TRUE(printedAs(w[4], c["world_z_m"].get<double>())) << w[0];
       EXPECT_NEAR(std::stod(w[5]), c["score"].get<double>(), 5e-4 * std::abs(c["score"].get<double>())) << w[0];
       values += 4;
     }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "sim/io/report.hpp"
 #include "sim/io/check_report.hpp"
 #include "sim/io/config_sweep_report.hpp"
+#include "sim/io/placement_report.hpp"
 #include "sim/io/trade_report.hpp"
 #include "sim/plan/check.hpp"
 #include "support/scenes.hpp"
@@ -172,6 +174,17 @@ void expectCellsAreTheRecord(const std::vector<std::string>& cells, std::size_t 
   }
 }
 
+/// Reads the CSV's header and expects it to be `fields`' keys, in order; returns them.
+template <class Fields>
+std::vector<std::string> headerIsTheFieldKeys(std::istream& csv, const Fields& fields) {
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> columns;
+  for (const auto& f : fields) columns.push_back(f.key);
+  EXPECT_EQ(splitCsvLine(line), columns);
+  return columns;
+}
+
 // A configuration sweep's tracks: sweep.json's points[].tracks[] and sweep.csv's track
 // columns from trackFields(), on the default article over joint2.
 TEST(TrackFields, JsonAndCsvComeFromOneList) {
@@ -213,10 +226,7 @@ TEST(TradeRunFields, JsonAndCsvComeFromOneList) {
   const json runs = tradeJson(s, 1e-3)["runs"];
   std::istringstream csv(tradeCsv(s));
   std::string line;
-  ASSERT_TRUE(std::getline(csv, line));
-  std::vector<std::string> columns;
-  for (const auto& f : tradeRunFields()) columns.push_back(f.key);
-  EXPECT_EQ(splitCsvLine(line), columns);
+  const std::vector<std::string> columns = headerIsTheFieldKeys(csv, tradeRunFields());
   for (std::size_t i = 0; i < s.runs.size(); ++i) {
     ASSERT_TRUE(std::getline(csv, line));
     const std::vector<std::string> cells = splitCsvLine(line);
@@ -229,7 +239,6 @@ TEST(TradeRunFields, JsonAndCsvComeFromOneList) {
   EXPECT_FALSE(runs[0].contains("failure"));
 }
 
-
 // check's lines: check.json's records and check.csv from checkLineFields(), on the
 // table scene (lines with and without a capacity; text escaped as in every CSV).
 TEST(CheckLineFields, JsonAndCsvComeFromOneList) {
@@ -239,10 +248,7 @@ TEST(CheckLineFields, JsonAndCsvComeFromOneList) {
   const json lines = checkJson(r)["lines"];
   std::istringstream csv(checkCsv(r));
   std::string line;
-  ASSERT_TRUE(std::getline(csv, line));
-  std::vector<std::string> columns;
-  for (const auto& f : checkLineFields()) columns.push_back(f.key);
-  EXPECT_EQ(splitCsvLine(line), columns);
+  const std::vector<std::string> columns = headerIsTheFieldKeys(csv, checkLineFields());
   ASSERT_EQ(lines.size(), r.lines.size());
   int with_capacity = 0, without = 0;
   for (std::size_t i = 0; i < r.lines.size(); ++i) {
@@ -256,6 +262,43 @@ TEST(CheckLineFields, JsonAndCsvComeFromOneList) {
   EXPECT_GT(without, 0);
   EXPECT_FALSE(std::getline(csv, line));
   std::printf("[fields] check: %zu lines (%d with a capacity) the same in JSON and CSV\n", r.lines.size(), with_capacity);
+}
+
+
+// A placement's candidates: candidates.csv's rows and placement.json's chosen records from
+// placementFields(): every chosen record is its CSV row (less `chosen`), in the order kept.
+TEST(PlacementFields, JsonAndCsvComeFromOneList) {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, 4);
+  PlacementOptions o;
+  o.count = 6;
+  o.modes = {1, 2, 3};
+  const PlacementStudy p = runPlacement(s, o);
+  const json chosen = placementJson(p)["chosen"];
+  std::istringstream csv(placementCandidatesCsv(p));
+  std::string line;
+  const std::vector<std::string> columns = headerIsTheFieldKeys(csv, placementFields());
+  std::vector<std::string> record = columns;
+  record.erase(record.begin() + 7);  // `chosen`: not in a record
+  std::map<std::string, std::vector<std::string>> rows;  // chosen rows by station and axis
+  std::size_t n = 0;
+  for (; std::getline(csv, line); ++n) {
+    std::vector<std::string> cells = splitCsvLine(line);
+    ASSERT_EQ(cells.size(), columns.size()) << line;
+    if (cells[7] == "1") rows[cells[0] + " " + cells[3]] = cells;
+    else EXPECT_EQ(cells.back(), "") << line;  // no score unless chosen
+  }
+  EXPECT_EQ(n, p.candidates.size());
+  ASSERT_EQ(chosen.size(), 6u);
+  ASSERT_EQ(rows.size(), 6u);
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const json& c = chosen[i];
+    EXPECT_EQ(c.size(), record.size());
+    EXPECT_EQ(c["station"], p.candidates[p.result.kept_blocks[i]].station);  // in the order kept
+    std::vector<std::string> cells = rows.at(c["station"].get<std::string>() + " " + c["axis"].get<std::string>());
+    cells.erase(cells.begin() + 7);
+    expectCellsAreTheRecord(cells, 0, record, c, 1e-5);
+  }
 }
 
 }  // namespace
