@@ -29,8 +29,6 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/io/hamsas_report.hpp"
-#include "sim/io/check_report.hpp"
-#include "sim/io/mode_fields.hpp"
 #include "sim/core/text.hpp"
 
 namespace py = pybind11;
@@ -415,6 +413,8 @@ std::string sceneKind(const PyScene& s) { return std::holds_alternative<mmv::Ham
 
 }  // namespace
 
+void defineFieldLists(py::module_& m);
+
 PYBIND11_MODULE(_mmvlab, m) {
   m.doc() = "mmvlab's studies (the native part; use the mmvlab package)";
   // The error classes: the same split as the CLI's exit codes (docs/architecture.md).
@@ -476,22 +476,7 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("component_modes"), py::arg("modes"), py::arg("topologies"), py::arg("progress"));
   m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
         py::arg("band_max_hz"), py::arg("progress"));
-  m.def("mode_fields", [] {
-    py::list out;
-    for (const auto& f : mmv::modeFields())
-      out.append(py::dict(py::arg("key") = f.key, py::arg("unit") = f.unit, py::arg("csv") = f.csv_format != nullptr,
-                          py::arg("applies") = f.applies == mmv::ModeField::Applies::Always    ? "always"
-                                               : f.applies == mmv::ModeField::Applies::Spatial ? "spatial"
-                                                                                               : "damped",
-                          py::arg("meaning") = f.meaning));
-    return out;
-  });
-  m.def("check_line_fields", [] {
-    py::list out;
-    for (const auto& f : mmv::checkLineFields())
-      out.append(py::dict(py::arg("key") = f.key, py::arg("unit") = f.unit, py::arg("meaning") = f.meaning));
-    return out;
-  });
+  defineFieldLists(m);  // python/field_lists.cpp
   m.def("sweep_config", &sweepConfig, py::arg("scene"), py::arg("segments"), py::arg("grids"), py::arg("modes"),
         py::arg("component_modes"), py::arg("bc"), py::arg("tip_mass"), py::arg("method"), py::arg("progress"));
   m.def("trade", &trade, py::arg("scene"), py::arg("segments"), py::arg("integrators"), py::arg("accuracies"),

@@ -276,7 +276,7 @@ CLI::App* addCheckCommand(CLI::App& app, CheckArgs& ck) {
   c->add_flag("--json", ck.json, "Print JSON instead of the table");
   c->add_option("--margin", ck.margin, "Required margin, 0 .. 99 %: a smaller one is a warning")->capture_default_str();
   c->add_option("--band", ck.band, "The modes of interest, F_MIN_HZ:F_MAX_HZ (report: 0.1-50 Hz)")->capture_default_str();
-  c->add_option("--out", ck.out, "Also write check.md (Markdown) and check.json here");
+  c->add_option("--out", ck.out, "Also write check.md (Markdown), check.json and check.csv here");
   c->add_flag("--force", ck.force, "Replace files of the same names in --out");
   return c;
 }
