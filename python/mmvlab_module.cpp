@@ -41,6 +41,7 @@ using mmv::app::Front;
 struct PyScene {
   mmv::Scene scene;
   std::vector<std::string> warnings;
+  mmv::app::SceneRequest request;  ///< what was read: a study's `segments=` reads it again
 };
 
 /// Ends a study from a progress step: Python has an exception pending (its signal
@@ -102,20 +103,20 @@ PyScene loadScene(const std::optional<std::string>& path, const std::vector<std:
   r.path = path.value_or("");
   if (path && path->empty()) throw mmv::UsageError("path: an empty path (None: the embedded default scene)");
   r.sets = sets;
-  r.segments = segments;
+  if (segments != 0) r.segments = segments;  // 0: the scene's own
   r.no_gravity = no_gravity;
   r.strict = strict;
   r.front = Front::Python;
   mmv::app::LoadedScene l = mmv::app::loadScene(r);
-  return PyScene{std::move(l.scene), std::move(l.warnings)};
+  return PyScene{std::move(l.scene), std::move(l.warnings), std::move(l.request)};
 }
 
 /// The scene a study runs on: `segments` (0: as loaded) applied to a copy; `warnings`
 /// holds only what applying them said (the loading's were given at load_scene).
 PyScene withSegments(const PyScene& s, int segments) {
-  PyScene out{s.scene, {}};
-  if (segments != 0) mmv::app::applySegments(out.scene, segments, Front::Python, out.warnings);
-  return out;
+  if (segments == 0) return PyScene{s.scene, {}, s.request};
+  mmv::app::LoadedScene l = mmv::app::withSegments(mmv::app::LoadedScene{s.scene, {}, s.request}, segments);
+  return PyScene{std::move(l.scene), std::move(l.warnings), std::move(l.request)};
 }
 
 py::tuple modes(const PyScene& scene, int segments, int count, const std::vector<std::string>& points, bool error_estimate,

@@ -211,6 +211,7 @@ const std::map<std::string, std::string>& boundaryFiles() {
   static const std::map<std::string, std::string> files = {
       {"sim/core/errors.hpp", "defines UsageError and OptionError"},
       {"sim/scene/reader.cpp", "the scene reader: every patch (--set, Python's set=) is checked here with its key"},
+      {"sim/scene/reader_util.hpp", "the scene reader: a dedicated option's patch (--segments) fails as a usage error"},
   };
   return files;
 }

@@ -19,31 +19,43 @@ std::string optionName(Front front, const std::string& cli_flag) {
   return name;
 }
 
-void applySegments(Scene& scene, int segments, Front front, std::vector<std::string>& warnings) {
-  auto* a = std::get_if<ArticleScene>(&scene);
-  if (!a) throw UsageError(optionName(front, "--segments") + " does not apply to a HAM-SAS scene (rigid bodies)");
-  if (segments < 1 || segments > limits::kMaxSegments)
-    throw UsageError(strf("%s: expected 1 .. %d segments per link (got %d)", optionName(front, "--segments").c_str(),
-                          limits::kMaxSegments, segments));
-  for (const auto& note : overrideSegments(*a, segments)) warnings.push_back("mmvlab: warning: " + note);
+SceneFlags sceneFlags(std::optional<int> segments, bool no_gravity, Front front) {
+  SceneFlags f;
+  f.segments = segments;
+  f.no_gravity = no_gravity;
+  const bool cli = front == Front::Cli;
+  if (segments) f.segments_label = optionName(front, "--segments") + (cli ? " " : "=") + std::to_string(*segments);
+  f.gravity_label = cli ? "--no-gravity" : "no_gravity=True";
+  return f;
 }
 
 LoadedScene loadScene(const SceneRequest& r) {
-  LoadedScene out{r.path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", r.sets) : loadSceneFile(r.path, r.sets),
+  const SceneFlags flags = sceneFlags(r.segments, r.no_gravity, r.front);
+  std::vector<std::string> notes;
+  LoadedScene out{r.path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", r.sets, flags, &notes)
+                                 : loadSceneFile(r.path, r.sets, flags, &notes),
                   {}};
+  out.request = r;
+  for (const auto& note : notes) out.warnings.push_back("mmvlab: warning: " + note);
   auto* a = std::get_if<ArticleScene>(&out.scene);
-  if (!a && (r.segments != 0 || r.no_gravity))
-    throw UsageError(optionName(r.front, "--segments") + " and " + optionName(r.front, "--no-gravity") +
-                     " do not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
   if (!a) return out;
-  if (r.segments != 0) applySegments(out.scene, r.segments, r.front, out.warnings);
-  if (r.no_gravity) a->gravity = {0, 0, 0};
   // Values no lab article has: warned in every command, refused with --strict.
   const std::vector<std::string> slips = scenePlausibility(*a);
   if (r.strict && !slips.empty())
     throw SceneError(slips.front() + " (" + optionName(r.front, "--strict") + ": implausible values are errors" +
                      (slips.size() > 1 ? strf("; %zu more", slips.size() - 1) : std::string()) + ")");
   for (const auto& w : slips) out.warnings.push_back("warning: " + w + " (likely a unit mistake)");
+  return out;
+}
+
+LoadedScene withSegments(const LoadedScene& loaded, std::optional<int> segments) {
+  SceneRequest r = loaded.request;
+  r.segments = segments;
+  const std::string& source = std::visit([](const auto& s) -> const std::string& { return s.positions.file; }, loaded.scene);
+  std::vector<std::string> notes;
+  LoadedScene out{parseScene(sceneText(loaded.scene), source, r.sets, sceneFlags(r.segments, r.no_gravity, r.front), &notes),
+                  {}, r};
+  for (const auto& note : notes) out.warnings.push_back("mmvlab: warning: " + note);
   return out;
 }
 

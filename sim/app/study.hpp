@@ -26,7 +26,7 @@ std::string optionName(Front front, const std::string& cli_flag);
 struct SceneRequest {
   std::string path;               ///< empty: the embedded default scene.
   std::vector<std::string> sets;  ///< KEY=VALUE patches, checked by the reader with their position.
-  int segments = 0;               ///< > 0: every flexible link's segments.
+  std::optional<int> segments;    ///< every flexible link's segments (a patch, SceneFlags).
   bool no_gravity = false;
   bool strict = false;  ///< implausible values (sim/scene/plausibility.hpp) are errors, not warnings.
   Front front = Front::Cli;
@@ -35,15 +35,22 @@ struct SceneRequest {
 struct LoadedScene {
   Scene scene;
   std::vector<std::string> warnings;  ///< as the CLI prints them on stderr, one per line.
+  SceneRequest request;               ///< what was read, for withSegments.
 };
 
-/// Reads and checks the scene with its patches; `--segments`, `--no-gravity` and
-/// `--strict` applied and checked here, once.
+/// Reads and checks the scene with its patches: `--segments` and `--no-gravity` are
+/// patches the reader checks (SceneFlags), named as the front end spells them;
+/// `--strict` applied here, once.
 LoadedScene loadScene(const SceneRequest& request);
 
-/// Sets every flexible link's segments of an article scene (1 .. limits::kMaxSegments,
-/// else a UsageError naming the option); the notes it makes join `warnings`.
-void applySegments(Scene& scene, int segments, Front front, std::vector<std::string>& warnings);
+/// `loaded` read again from the same text and patches with `segments` (0: the scene's own)
+/// instead of its request's: a Python study's `segments=`, through the same reader.
+/// `warnings` holds only what the new count said.
+LoadedScene withSegments(const LoadedScene& loaded, std::optional<int> segments);
+
+/// `segments` and `no_gravity` as the scene reader's patches, labelled the way `front`
+/// spells them ("--segments 16" / "segments=16").
+SceneFlags sceneFlags(std::optional<int> segments, bool no_gravity, Front front);
 
 /// A number the user gave, checked against its range [lo, hi] (`open_low`: (lo, hi];
 /// hi = infinity: no upper bound); a UsageError naming the option as `front` spells it.

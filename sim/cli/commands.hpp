@@ -4,6 +4,7 @@
 /// writes nothing to stdout; diagnostics go to stderr.
 
 #include <functional>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -42,7 +43,7 @@ enum ExitCode : int {
 
 struct SceneArgs {
   std::string scene_path;  ///< empty: the embedded default scene.
-  int segments = 0;        ///< > 0: override every flexible link's segment count.
+  std::optional<int> segments;  ///< every flexible link's segment count (a patch the scene reader checks)
   bool no_gravity = false; ///< analyse without gravity (as the report's TREETOPS run).
   std::vector<std::string> sets;  ///< --set KEY=VALUE overrides of scene keys.
   bool strict = false;            ///< implausible values (sim/scene/plausibility.hpp) are errors, not warnings.

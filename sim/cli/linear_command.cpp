@@ -30,7 +30,7 @@ app::LinearRequest linearRequest(const LinearArgs& args) {
   r.rom_target = args.rom_target;
   r.target_error = args.target_error;
   r.time_budget = args.time_budget;
-  r.segments_given = args.segments > 0;
+  r.segments_given = args.segments.has_value();
   if (!args.vary.empty()) r.vary = args.vary.front();
   return r;
 }

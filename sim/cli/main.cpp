@@ -46,8 +46,9 @@ void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
       ->check(CLI::Validator(
           [](std::string& v) { return v.empty() ? std::string("empty scene path (omit it for the embedded default scene)") : ""; },
           "PATH"));
-  cmd->add_option("--segments", a.segments, "Segments per flexible link, overriding the scene")
-      ->check(CLI::Range(1, mmv::limits::kMaxSegments));
+  cmd->add_option("--segments", a.segments,
+                  "Segments per flexible link, 1 .. " + std::to_string(mmv::limits::kMaxSegments) +
+                      ", overriding the scene (each flexible link's segments:, checked as if in the file)");
   cmd->add_flag("--no-gravity", a.no_gravity, "Set gravity to zero (the report's TREETOPS run had none)");
   cmd->add_option("--set", a.sets,
                   "KEY=VALUE: override a scene key (repeatable), e.g. links.link1.length=2.5, joints.joint2.angle_deg=15; "

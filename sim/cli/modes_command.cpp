@@ -54,7 +54,7 @@ int runModesCommand(const ModesArgs& args) {
     r.error_estimate = !args.no_error_estimate;
     r.target_error = args.target_error;
     r.time_budget = args.time_budget;
-    r.segments_given = args.segments > 0;
+    r.segments_given = args.segments.has_value();
     std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
     if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
     const app::ModesStudy s = app::runModesStudy(scene, r);

@@ -93,7 +93,7 @@ DrawAt isolatorFrames(const RunDir& run, std::shared_ptr<HamsasModes>& h) {
 }  // namespace
 
 void renderHistory(const RenderArgs& args, const std::string& ext) {
-  if (args.segments > 0 || args.no_gravity || !args.sets.empty())
+  if (args.segments || args.no_gravity || !args.sets.empty())
     throw UsageError("render --history: the run's own segments, gravity and overrides are used (run.json); drop --segments, --no-gravity and --set");
   render::FrameOptions size, frame;
   parseSize(args.size, size, ext);

@@ -78,7 +78,7 @@ int runSimulateCommand(const SimulateArgs& args) {
       out->write("history.csv", simulationHistoryCsv(r.record));
       out->write("summary.json", s.summary.dump(2) + "\n");
       out->write("scene.yaml", sceneText(loaded));
-      out->write("run.json", runRecord(args, sceneSource(loaded), s.spec, s.segments_chosen ? s.segments_chosen : args.segments)
+      out->write("run.json", runRecord(args, sceneSource(loaded), s.spec, s.segments_chosen ? s.segments_chosen : args.segments.value_or(0))
                                  .dump(2) + "\n");
       if (!r.states.rows.empty()) out->write("states.csv", simulationHistoryCsv(r.states));
       writeSimulationPlots(*out, r, sceneName(loaded) + strf(" (%s at %g)", r.integrator.c_str(), r.accuracy));

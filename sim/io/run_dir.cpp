@@ -112,18 +112,32 @@ RunDir readRunDir(const std::string& dir, const std::string& scene_path) {
   if (!std::filesystem::is_directory(dir, ec)) throw SceneFileError(dir + ": not a directory (--history takes a `mmvlab simulate --out` directory)");
   const std::string run_json = dir + "/run.json";
   nlohmann::json run;
+  bool no_gravity = false;
   try {
     run = nlohmann::json::parse(readText(run_json));
     r.segments_override = run.at("segments_override").get<int>();
+    no_gravity = run.contains("no_gravity") && run.at("no_gravity").get<bool>();
     if (run.contains("overrides")) r.overrides = run.at("overrides").get<std::vector<std::string>>();
   } catch (const nlohmann::json::exception& e) {
     throw SceneError(run_json + ": not a run record (" + e.what() + ")");
   }
   const std::string scene_file = scene_path.empty() ? dir + "/scene.yaml" : scene_path;
-  Scene scene = scene_path.empty() ? parseScene(readText(scene_file), scene_file, r.overrides) : loadSceneFile(scene_file, r.overrides);
+  // The run's --segments through the reader as the run's own option did: a record
+  // edited to a count the reader refuses is named at run.json.
+  SceneFlags flags;
+  if (r.segments_override != 0) flags.segments = r.segments_override;  // 0: the scene's own
+  flags.segments_label = run_json + ": segments_override " + std::to_string(r.segments_override);
+  flags.no_gravity = no_gravity;
+  flags.gravity_label = run_json + ": no_gravity";
+  Scene scene;
+  try {
+    scene = scene_path.empty() ? parseScene(readText(scene_file), scene_file, r.overrides, flags)
+                               : loadSceneFile(scene_file, r.overrides, flags);
+  } catch (const UsageError& e) {
+    throw SceneError(e.what());
+  }
   if (auto* a = std::get_if<ArticleScene>(&scene)) {
     r.scene = std::move(*a);
-    if (r.segments_override > 0) overrideSegments(r.scene, r.segments_override);
   } else {
     r.isolator = std::get<HamsasScene>(std::move(scene));
   }

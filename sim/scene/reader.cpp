@@ -61,22 +61,75 @@ std::string yamlQuoted(const std::string& s) {
   return q + "\"";
 }
 
-/// Applies `--set KEY=VALUE` overrides to the document: KEY is a dotted path of
-/// mapping keys and list items (by their `name`, or index); VALUE is YAML. Missing
-/// keys are added (the section readers then check them as if they were in the file).
-/// Each override's key and value are parsed on a line of their own after the file's
-/// lines, so an error in them is reported at "--set KEY=VALUE".
-void applyOverrides(YAML::Node& root, const std::vector<std::string>& sets, int first_line) {
-  for (std::size_t k = 0; k < sets.size(); ++k) {
-    const std::string& set = sets[k];
-    const auto eq = set.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw UsageError("--set " + set + ": expected KEY=VALUE, e.g. links.link1.length=2.5");
-    const std::string key = set.substr(0, eq), value = set.substr(eq + 1);
+/// A change to the document before it is read: `key` a dotted path of mapping keys and
+/// list items (by their `name`, or index), `value` YAML; `label` is how an error in it
+/// is reported ("--set KEY=VALUE", "--segments 0").
+struct Patch {
+  std::string key, value, label;
+};
+
+/// `--set KEY=VALUE` as a patch (a UsageError if it is not KEY=VALUE).
+Patch setPatch(const std::string& set) {
+  const auto eq = set.find('=');
+  if (eq == std::string::npos || eq == 0) throw UsageError("--set " + set + ": expected KEY=VALUE, e.g. links.link1.length=2.5");
+  return {set.substr(0, eq), set.substr(eq + 1), "--set " + set};
+}
+
+/// A whole decimal integer ("12"; not "12.0", "1e1", " 3").
+bool wholeInteger(const std::string& text, long& v) {
+  char* end = nullptr;
+  v = std::strtol(text.c_str(), &end, 10);
+  return !text.empty() && end != text.c_str() && *end == '\0';
+}
+
+/// `node`'s key `key`, or an undefined node (yaml-cpp throws on asking the kind of a
+/// missing key of a const node).
+YAML::Node defined(const YAML::Node& node, const std::string& key) {
+  std::string known;
+  return node.IsMap() ? childOf(node, key, known) : YAML::Node(YAML::NodeType::Undefined);
+}
+
+/// The patches a front end's dedicated options make (SceneFlags): every flexible link's
+/// `segments` (and its `modes:` where they exceed the new hinge count, with a note),
+/// `gravity`. Links the document does not spell as a list of mappings are left to the
+/// reader's own messages.
+std::vector<Patch> flagPatches(const YAML::Node& root, const SceneFlags& flags, std::vector<std::string>* notes) {
+  std::vector<Patch> out;
+  const YAML::Node links = defined(root, "links");
+  if (flags.segments && links.IsDefined() && links.IsSequence()) {
+    const int count = *flags.segments;
+    const std::string n = std::to_string(count);
+    for (std::size_t i = 0; i < links.size(); ++i) {
+      const YAML::Node link = links[i], seg = defined(links[i], "segments"), modes = defined(links[i], "modes");
+      if (!seg.IsDefined() || (seg.IsScalar() && seg.Scalar() == "rigid")) continue;
+      const std::string at = "links." + std::to_string(i) + ".";
+      out.push_back({at + "segments", n, flags.segments_label});
+      long asked = 0;
+      if (count >= 1 && modes.IsDefined() && modes.IsScalar() && wholeInteger(modes.Scalar(), asked) && asked > count) {
+        out.push_back({at + "modes", n, flags.segments_label});
+        const YAML::Node name = defined(link, "name");
+        const std::string shown = name.IsDefined() && name.IsScalar() ? name.Scalar() : "links[" + std::to_string(i) + "]";
+        if (notes)  // a link in modal coordinates keeps at most its n hinges
+          notes->push_back("link " + shown + " in " + n + " segments keeps " + n + " of the " + std::to_string(asked) +
+                           " modes its `modes:` asks (a link has one hinge per segment)");
+      }
+    }
+  }
+  if (flags.no_gravity) out.push_back({"gravity", "[0, 0, 0]", flags.gravity_label});
+  return out;
+}
+
+/// Applies the patches to the document. Missing keys are added (the section readers
+/// then check them as if they were in the file). Each patch's key and value are parsed
+/// on a line of their own after the file's lines (`first_line` on), so an error in them
+/// is reported at the patch's label.
+void applyPatches(YAML::Node& root, const std::vector<Patch>& patches, int first_line) {
+  for (std::size_t k = 0; k < patches.size(); ++k) {
+    const Patch& p = patches[k];
     std::vector<std::string> parts;
-    std::stringstream ss(key);
+    std::stringstream ss(p.key);
     for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
-    if (std::find(parts.begin(), parts.end(), "") != parts.end()) throw UsageError("--set " + set + ": an empty part in the key");
+    if (std::find(parts.begin(), parts.end(), "") != parts.end()) throw UsageError(p.label + ": an empty part in the key");
     // The deepest part of the path the document has.
     // reset(), not operator=: assigning one YAML::Node to another rewrites the first's data.
     YAML::Node node;
@@ -88,21 +141,21 @@ void applyOverrides(YAML::Node& root, const std::vector<std::string>& sets, int 
       child.reset(childOf(node, parts[depth], known));
       if (!child.IsDefined()) {
         if (!node.IsMap())
-          throw SceneError("--set " + set + ": no item '" + parts[depth] + "' (known: " + (known.empty() ? "none" : known) + ")");
+          throw SceneError(p.label + ": no item '" + parts[depth] + "' (known: " + (known.empty() ? "none" : known) + ")");
         break;  // from here on the override brings its own sections
       }
       node.reset(child);
     }
-    if (!node.IsMap()) throw SceneError("--set " + set + ": '" + key + "' does not name a key of a mapping");
+    if (!node.IsMap()) throw SceneError(p.label + ": '" + p.key + "' does not name a key of a mapping");
     // The rest as one flow mapping on the override's own line: {"b": {"c": VALUE}}.
     std::string text = std::string(static_cast<std::size_t>(first_line) + k, '\n');
     for (std::size_t i = depth; i < parts.size(); ++i) text += std::string(i > depth ? "{" : "") + yamlQuoted(parts[i]) + ": ";
-    text += value + std::string(parts.size() - 1 - depth, '}');
+    text += p.value + std::string(parts.size() - 1 - depth, '}');
     YAML::Node doc;
     try {
       doc = YAML::Load(text);
     } catch (const YAML::ParserException& e) {
-      throw SceneError("--set " + set + ": malformed YAML value: " + e.msg);
+      throw SceneError(p.label + ": malformed YAML value: " + e.msg);
     }
     std::string known;
     if (childOf(node, parts[depth], known).IsDefined()) node.remove(parts[depth]);
@@ -113,7 +166,8 @@ void applyOverrides(YAML::Node& root, const std::vector<std::string>& sets, int 
 
 }  // namespace
 
-Scene parseScene(const std::string& yaml_text, const std::string& source_name, const std::vector<std::string>& sets) {
+Scene parseScene(const std::string& yaml_text, const std::string& source_name, const std::vector<std::string>& sets,
+                 const SceneFlags& flags, std::vector<std::string>* notes) {
   YamlReader reader(source_name);
   YAML::Node root;
   try {
@@ -123,13 +177,19 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name, c
   }
   if (!root.IsDefined() || root.IsNull())
     reader.fail(root.Mark(), "the scene is empty (expected a mapping with 'links' and 'joints')");
-  if (!sets.empty()) {
+  auto hasHamsas = [](const YAML::Node& r) { return r.IsMap() && static_cast<bool>(r["hamsas"]); };  // const: no zombie key
+  const bool isolator = hasHamsas(root);
+  const bool options = flags.segments || flags.no_gravity;
+  if (isolator && options)
+    throw UsageError((flags.segments ? flags.segments_label : flags.gravity_label) +
+                     ": does not apply to a HAM-SAS scene (rigid bodies; its preloads are gravity's)");
+  if (!sets.empty() || options) {
     if (!root.IsMap()) reader.fail(root.Mark(), "the scene must be a mapping of keys");
+    // The patches' values are read from lines after the file's own, each its own line.
     const int first_line = static_cast<int>(std::count(yaml_text.begin(), yaml_text.end(), '\n')) + 10;
-    reader.setOverrides(first_line, sets);
-    auto hasHamsas = [](const YAML::Node& r) { return r.IsMap() && static_cast<bool>(r["hamsas"]); };  // const: no zombie key
-    const bool isolator = hasHamsas(root);
-    applyOverrides(root, sets, first_line);
+    std::vector<Patch> patches;
+    for (const auto& set : sets) patches.push_back(setPatch(set));
+    applyPatches(root, patches, first_line);
     // Which kind of scene the file is (an article, or HAM-SAS by its top-level `hamsas:`)
     // is the file's to say: an override that would turn one into the other is refused
     // at the override (the reader then complained about the file's own keys instead).
@@ -139,6 +199,13 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name, c
           throw SceneError("--set " + set + ": '" + std::string(isolator ? "removing" : "adding") +
                            " hamsas' would change the scene's kind; an override changes values within " +
                            (isolator ? "the HAM-SAS scene" : "the article scene"));
+    // The options after the --set patches: `--set links.link1.segments=8 --segments 16` is 16.
+    const std::vector<Patch> option_patches = flagPatches(root, flags, notes);
+    applyPatches(root, option_patches, first_line + static_cast<int>(patches.size()));
+    std::vector<std::string> labels;
+    for (const auto& p : patches) labels.push_back(p.label);
+    for (const auto& p : option_patches) labels.push_back(p.label);
+    reader.setOverrides(first_line, labels, patches.size());
   }
   if (root.IsMap() && root["hamsas"]) {
     HamsasScene h = scene_detail::readHamsasScene(reader, root, source_name);
@@ -162,7 +229,8 @@ std::string overrideSuffix(const std::vector<std::string>& sets) {
   return out;
 }
 
-Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets) {
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets, const SceneFlags& flags,
+                    std::vector<std::string>* notes) {
   const std::string shown = printable(path);
   if (path.empty()) throw SceneFileError("empty scene path");
   std::string text, why;
@@ -173,7 +241,7 @@ Scene loadSceneFile(const std::string& path, const std::vector<std::string>& set
       throw SceneFileError(shown + ": " + why + "; a scene file is at most " + std::to_string(limits::kMaxSceneBytes) + " bytes");
     throw SceneFileError(shown + ": " + why + ", not a scene file");
   }
-  return parseScene(text, path, sets);
+  return parseScene(text, path, sets, flags, notes);
 }
 
 ArticleScene loadArticleSceneFile(const std::string& path) {

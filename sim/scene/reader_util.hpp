@@ -32,19 +32,20 @@ class YamlReader {
   explicit YamlReader(std::string file) : file_(std::move(file)) {}
   const std::string& file() const { return file_; }
 
-  /// Values from `--set KEY=VALUE` are parsed from lines at and after `first_line`
-  /// (beyond the file's own): a mark there is the override `labels[line - first_line]`.
-  void setOverrides(int first_line, std::vector<std::string> labels) {
+  /// Patched values (`--set KEY=VALUE`, a dedicated option's) are parsed from lines at
+  /// and after `first_line` (beyond the file's own): a mark there is the patch
+  /// `labels[line - first_line]` ("--set KEY=VALUE", "--segments 0"); labels from
+  /// `first_option` on are options, whose errors are UsageErrors.
+  void setOverrides(int first_line, std::vector<std::string> labels, std::size_t first_option) {
     override_line_ = first_line;
     override_labels_ = std::move(labels);
+    first_option_ = first_option;
   }
 
-  /// "file:line:col", or "--set KEY=VALUE" for a value that came from the command
-  /// line; an empty document has a null mark (-1): the start of the file.
+  /// "file:line:col", or the patch's label for a value that came from the command line
+  /// or a front end's option; an empty document has a null mark (-1): the start of the file.
   std::string position(const YAML::Mark& mark) const {
-    const int k = mark.line - override_line_;
-    if (!override_labels_.empty() && k >= 0 && k < static_cast<int>(override_labels_.size()))
-      return "--set " + override_labels_[static_cast<std::size_t>(k)];
+    if (const int k = patchIndex(mark); k >= 0) return override_labels_[static_cast<std::size_t>(k)];
     std::ostringstream os;
     os << file_ << ':' << std::max(mark.line, 0) + 1 << ':' << std::max(mark.column, 0) + 1;
     return os.str();
@@ -54,6 +55,8 @@ class YamlReader {
   SourceMap sourceMap() const { return SourceMap{file_, positions_}; }
 
   [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
+    if (const int k = patchIndex(mark); k >= 0 && static_cast<std::size_t>(k) >= first_option_)
+      throw UsageError(position(mark) + ": " + what);
     throw SceneError(position(mark) + ": " + what);
   }
 
@@ -175,9 +178,16 @@ class YamlReader {
   }
 
  private:
+  /// Which patch a mark is in; -1: the file's own text.
+  int patchIndex(const YAML::Mark& mark) const {
+    const int k = mark.line - override_line_;
+    return !override_labels_.empty() && k >= 0 && k < static_cast<int>(override_labels_.size()) ? k : -1;
+  }
+
   std::string file_;
   int override_line_ = -1;
   std::vector<std::string> override_labels_;
+  std::size_t first_option_ = 0;
   mutable std::map<std::string, std::string> positions_;  // filled by mapping(): what the reader has seen
 };
 

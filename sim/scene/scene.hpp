@@ -127,9 +127,22 @@ const std::string& sceneText(const Scene& scene);
 /// value is checked as if it were in the file; an error in one names it ("--set
 /// KEY=VALUE: ..."). The scene's source then ends with the overrides. Throws
 /// SceneError (UsageError for a malformed --set).
-Scene parseScene(const std::string& yaml_text, const std::string& source_name, const std::vector<std::string>& sets = {});
+///
+/// `flags` are a front end's dedicated options, made patches of the same document after
+/// the --set ones and checked by the same readers: an error in one is a UsageError
+/// named by the option ("--segments 0: links[0].segments must be ..."). The notes they
+/// make (a link's `modes:` lowered to its new hinge count) join `notes`.
+struct SceneFlags {
+  std::optional<int> segments;  ///< every flexible link's `segments` (a link's `modes` above it lowered)
+  std::string segments_label;  ///< how the option and its value are named ("--segments 16", "segments=16")
+  bool no_gravity = false;     ///< `gravity: [0, 0, 0]`
+  std::string gravity_label;   ///< ("--no-gravity", "no_gravity=True")
+};
+Scene parseScene(const std::string& yaml_text, const std::string& source_name, const std::vector<std::string>& sets = {},
+                 const SceneFlags& flags = {}, std::vector<std::string>* notes = nullptr);
 /// Reads and parses a scene file. Throws SceneFileError or SceneError.
-Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets = {});
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets = {}, const SceneFlags& flags = {},
+                    std::vector<std::string>* notes = nullptr);
 /// " --set A=1 --set B=2": how a source names its overrides.
 std::string overrideSuffix(const std::vector<std::string>& sets);
 /// The same for a file that must hold an article (or an isolator): SceneError
@@ -140,7 +153,8 @@ HamsasScene loadHamsasSceneFile(const std::string& path);
 const char* defaultSceneYaml();
 ArticleScene loadDefaultScene();
 
-/// Replaces the segment count of every flexible (non-rigid) link; 1 <= n <= limits::kMaxSegments.
+/// Replaces the segment count of every flexible (non-rigid) link; 1 <= n <= limits::kMaxSegments
+/// (an internal re-discretization: a user's count reaches the model through SceneFlags).
 /// A link in modal coordinates keeps min(modes, n) modes (one hinge per segment); each
 /// such clamp is returned as a note for the user ("link link1 in 2 segments keeps 2 of
 /// the 3 modes ...").

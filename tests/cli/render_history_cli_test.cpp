@@ -91,6 +91,22 @@ TEST_F(Cli, RenderHistoryRefusesWhatItCannotDraw) {
   EXPECT_EQ(run("render --history " + run_dir.string() + " --mode 1 --out " + out.string()).code, 64);
   EXPECT_EQ(run("render --history " + run_dir.string() + " --segments 4 --out " + out.string()).code, 64);
   EXPECT_EQ(run("render --traces enc1 --out " + out.string()).code, 64);
+  // The run's segments reach the model through the scene reader as the run's own
+  // --segments did: a record edited past the limit is a data error naming run.json.
+  {
+    const fs::path edited = dir_ / "edited";
+    fs::copy(run_dir, edited, fs::copy_options::recursive);
+    std::string record = slurp(edited / "run.json");
+    const std::string key = "\"segments_override\": 2";
+    ASSERT_NE(record.find(key), std::string::npos) << record;
+    record.replace(record.find(key), key.size(), "\"segments_override\": 5000");
+    std::ofstream(edited / "run.json") << record;
+    const Result r = run("render --history " + edited.string() + " --out " + out.string());
+    EXPECT_EQ(r.code, 65);
+    EXPECT_NE(r.err.find("run.json: segments_override 5000: links[0].segments must be an integer from 1 to"),
+              std::string::npos)
+        << r.err;
+  }
   // A HAM-SAS run is redrawn too, each body moved by its recorded motion; another
   // isolator's bodies are refused.
   const fs::path isolator_run = dir_ / "isolator", isolator_png = dir_ / "isolator.png";
