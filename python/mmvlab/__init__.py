@@ -32,7 +32,7 @@ from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene, 
 __all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate", "check", "place_sensors", "sweep",
            "FrfResult", "RomResult", "SimulateResult", "SweepResult", "ConvergeResult", "CompareResult", "Scene", "Error", "SceneError", "SceneFileError",
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
-           "ModesResult", "CheckResult", "check_line_fields", "PlacementResult", "correlate", "CorrelateResult", "mode_fields", "trade",
+           "ModesResult", "CheckResult", "check_line_fields", "fields", "field_list_names", "PlacementResult", "correlate", "CorrelateResult", "mode_fields", "trade",
            "TradeResult", "sweep_config", "ConfigSweepResult",
            "TransmissibilityResult"]
 
@@ -112,7 +112,7 @@ class ModesResult(Result):
         none; text as lists), for `pandas.DataFrame(m.table())`. The article's: the columns
         of modes.csv, every field of `mode_fields()` that applies to this model (spatial
         fields to the spatial model, damping to a damped scene), under the same names. A
-        HAM-SAS result's: its mode records' scalar keys."""
+        HAM-SAS result's: the columns of its modes.csv, `fields("hamsas_modes")`."""
         modes = self.json.get("modes", [])
         model = self.json.get("model")
         if isinstance(model, dict):  # the article
@@ -120,7 +120,7 @@ class ModesResult(Result):
                      "damped" if self.json.get("damping", {}).get("model", "none") != "none" else None}
             keys = [f["key"] for f in mode_fields() if f["csv"] and f["applies"] in kinds]
         else:
-            keys = [k for k, v in (modes[0] if modes else {}).items() if not isinstance(v, (dict, list))]
+            return _columns(modes, [f for f in fields("hamsas_modes") if f["csv"]])
         columns = {}
         for key in keys:
             values = [m.get(key) for m in modes]
@@ -172,14 +172,7 @@ class CheckResult(Result):
         """The requirements as columns, one per field of `check_line_fields()` (the columns
         of check.csv, under the same names): demand, capacity and margin_pct as numpy arrays
         (NaN where a line has none), the text fields as lists. For `pandas.DataFrame(c.table())`."""
-        columns = {}
-        for f in check_line_fields():
-            values = [line.get(f["key"]) for line in self.lines]
-            if f["unit"]:
-                columns[f["key"]] = _np.array([_np.nan if v is None else v for v in values], dtype=float)
-            else:
-                columns[f["key"]] = values
-        return columns
+        return _columns(self.lines, fields("check_lines"))
 
 
 class PlacementResult(Result):
@@ -192,6 +185,41 @@ class PlacementResult(Result):
         self.chosen = self.json["chosen"]
         self.target_modes = _np.array(self.json["target_modes"], dtype=int)
         self.target_frequencies_hz = _np.array(self.json["target_frequencies_hz"], dtype=float)
+
+
+def fields(name):
+    """A result's field list, described once in the library (sim/io/fields.hpp): a list of
+    dicts {key, unit, csv (a CSV column), number (numbers, else text), meaning}. The JSON
+    records, the CSV columns and the results' `table()` of that kind are all made from it.
+    `field_list_names()` gives the names ("correlation_pairs", "trade_runs", ...)."""
+    return _mmvlab.fields(str(name))
+
+
+def field_list_names():
+    """The names `fields()` takes."""
+    return _mmvlab.field_list_names()
+
+
+def _columns(records, field_list):
+    """Records (dicts as in a JSON document) as columns, one per field: numbers as numpy
+    arrays (NaN where a record has none), text as lists."""
+    columns = {}
+    for f in field_list:
+        values = [r.get(f["key"]) for r in records]
+        if f["number"]:
+            columns[f["key"]] = _np.array([_np.nan if v is None else v for v in values], dtype=float)
+        else:
+            columns[f["key"]] = values
+    return columns
+
+
+def _csv_columns(csv_text, field_list):
+    """A CSV table mmvlab wrote, as columns typed by its field list (numbers as numpy
+    arrays, NaN for an empty cell; text as lists)."""
+    rows = list(_csv.DictReader(_io.StringIO(csv_text)))
+    records = [{f["key"]: (None if r[f["key"]] == "" else float(r[f["key"]]) if f["number"] else r[f["key"]])
+                for f in field_list if f["csv"]} for r in rows]
+    return _columns(records, [f for f in field_list if f["csv"]])
 
 
 def check_line_fields():
@@ -447,6 +475,11 @@ class ConvergeResult(Result):
         self.richardson_hz = _np.array([_np.nan if m.get("richardson_hz") is None else m["richardson_hz"]
                                         for m in modes], dtype=float)
 
+    def table(self):
+        """converge.csv's columns (a row per mode and mesh: the fields of
+        `fields("convergence_points")`), for `pandas.DataFrame(c.table())`."""
+        return _csv_columns(self.csv, fields("convergence_points"))
+
 
 class CompareResult(Result):
     """Component modes against system modes: `.json` as `compare --json`, `.markdown` (compare.md)."""
@@ -498,7 +531,7 @@ class CorrelateResult(Result):
     """A measured test against the model (as correlation.json): `.mac` (array [test mode,
     model mode], NaN where a shape is zero at the paired points), `.test_frequencies_hz`,
     `.model_frequencies_hz`, `.pairs` (dicts: test, model, test_hz, model_hz,
-    frequency_error, mac), `.frequency_errors` (array, one per pair: f_model / f_test - 1),
+    frequency_error, mac, test_damping_ratio, model_damping_ratio; `.table()` as columns), `.frequency_errors` (array, one per pair: f_model / f_test - 1),
     `.frac` (array, one per measured function the model has: its FRAC), `.mac_csv`."""
 
     def __init__(self, json_text, text, mac_csv):
@@ -511,6 +544,11 @@ class CorrelateResult(Result):
         self.pairs = self.json["pairs"]
         self.frequency_errors = _np.array([p["frequency_error"] for p in self.pairs], dtype=float)
         self.frac = _np.array([f["frac"] for f in self.json["frfs"] if "frac" in f], dtype=float)
+
+    def table(self):
+        """The pairs as columns, one per field of `fields("correlation_pairs")` (pairs.csv's
+        columns, under the same names), for `pandas.DataFrame(c.table())`."""
+        return _columns(self.pairs, fields("correlation_pairs"))
 
 
 def correlate(scene, measured, *, segments=0, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "sim/core/integrators.hpp"
+#include "sim/io/convergence_fields.hpp"
 #include "sim/io/report.hpp"
 #include "sim/io/report_compare.hpp"
 

@@ -76,6 +76,7 @@ CorrelateStudy runCorrelateStudy(const Scene& scene, const CorrelateRequest& r) 
   s.json = correlationJson(article, s.result);
   s.text = correlationText(article, s.result);
   s.mac_csv = macCsv(s.result);
+  s.pairs_csv = correlationPairsCsv(s.result);
   checkResultFinite(s.json);
   checkResultFinite(s.text);
   return s;

@@ -27,7 +27,7 @@ struct CorrelateRequest {
 struct CorrelateStudy {
   CorrelationResult result;
   nlohmann::ordered_json json;
-  std::string text, mac_csv;
+  std::string text, mac_csv, pairs_csv;
 };
 
 /// Checks the request (every option before the file is read, the file before any model

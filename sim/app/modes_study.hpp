@@ -27,7 +27,7 @@ struct ModesStudy {
   std::optional<ModesReport> report;  ///< the article's (none for HAM-SAS)
   nlohmann::ordered_json json;
   std::string text;
-  std::string csv;  ///< modes.csv (the article's; empty for HAM-SAS)
+  std::string csv;  ///< modes.csv (the article's modeFields, HAM-SAS's hamsasModeFields)
 };
 
 /// The modes of `scene` as `request` asks; every option checked here.

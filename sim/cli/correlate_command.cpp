@@ -62,6 +62,7 @@ int runCorrelateCommand(const CorrelateArgs& args) {
     if (out) {
       out->write("correlation.json", s.json.dump(2) + "\n");
       out->write("mac.csv", s.mac_csv);
+      out->write("pairs.csv", s.pairs_csv);
       try {
         writeFigures(s.result, app::articleOf(scene, "correlate"), *out);
       } catch (const std::runtime_error& e) {

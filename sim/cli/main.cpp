@@ -301,7 +301,7 @@ CLI::App* addCorrelateCommand(CLI::App& app, CorrelateArgs& co) {
       ->capture_default_str();
   c->add_option("--damping", co.damping_ratio, "Modal damping ratio of every mode, 0 .. 1 (default: the scene's damping, else 0.01)")
       ->capture_default_str();
-  c->add_option("--out", co.out, "Also write correlation.json, mac.csv, mac.png and a Bode overlay per function here");
+  c->add_option("--out", co.out, "Also write correlation.json, mac.csv, pairs.csv, mac.png and a Bode overlay per function here");
   c->add_flag("--force", co.force, "Replace files of the same names in --out");
   return c;
 }

@@ -61,7 +61,7 @@ int runModesCommand(const ModesArgs& args) {
     if (out) {
       out->write("modes.txt", s.text);
       out->write("modes.json", s.json.dump(2) + "\n");
-      if (s.report) out->write("modes.csv", s.csv);
+      if (!s.csv.empty()) out->write("modes.csv", s.csv);
       out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(s.json) : emitResult(s.text);

@@ -51,13 +51,18 @@ std::string correlationText(const ArticleScene& scene, const CorrelationResult& 
   os << strf("\nModes: %zu measured, %zu of the model (damping: %s); test band %.4g-%.4g Hz; MAC over %d translations\n",
              r.test_modes.size(), r.model_modes.size(), r.model_damped ? r.damping_model.c_str() : "none in the scene",
              r.band_min_hz, r.band_max_hz, r.shape_dofs);
+  // The table's cells are the pair fields' values (correlationPairFields), in the text's units.
   Table pairs({"test", "test_Hz", "test_zeta_%", "model", "model_Hz", "model_zeta_%", "freq_error_%", "MAC"});
-  for (const auto& p : r.pairs) {
-    const MeasuredMode& t = r.test_modes[p.test];
-    const ModeInfo& m = r.model_modes[p.model];
-    pairs.add({strf("T%d", p.test + 1), strf("%.4f", t.frequency_hz), percent(t.damping_ratio), strf("M%d", m.number),
-               strf("%.4f", m.frequency_hz), r.model_damped && m.has_damping ? percent(m.damping_ratio) : "-",
-               strf("%+.2f", 100 * (m.frequency_hz - t.frequency_hz) / t.frequency_hz), strf("%.3f", p.mac)});
+  for (const auto& p : correlationPairRows(r)) {
+    const auto value = [&p](const char* key) { return fieldValue(correlationPairFields(), p, key); };
+    const auto ratio = [&value](const char* key) {
+      const auto v = value(key);
+      return v && v->is_number() ? percent(v->get<double>()) : std::string("-");
+    };
+    pairs.add({value("test")->get<std::string>(), strf("%.4f", value("test_hz")->get<double>()), ratio("test_damping_ratio"),
+               value("model")->get<std::string>(), strf("%.4f", value("model_hz")->get<double>()),
+               ratio("model_damping_ratio"), strf("%+.2f", 100 * value("frequency_error")->get<double>()),
+               strf("%.3f", value("mac")->get<double>())});
   }
   if (!pairs.empty()) os << pairs.text();
   else os << "  no test mode pairs with a model mode at the MAC threshold\n";
@@ -122,11 +127,8 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
   j["mac"] = mac;
   j["mac_translations"] = r.shape_dofs;
   json pairs = json::array();
-  for (const auto& p : r.pairs) {
-    const double ft = r.test_modes[p.test].frequency_hz, fm = r.model_modes[p.model].frequency_hz;
-    pairs.push_back({{"test", strf("T%d", p.test + 1)}, {"model", strf("M%d", r.model_modes[p.model].number)},
-                     {"test_hz", ft}, {"model_hz", fm}, {"frequency_error", (fm - ft) / ft}, {"mac", p.mac}});
-  }
+  for (const auto& p : correlationPairRows(r))
+    pairs.push_back(fieldsJson(correlationPairFields(), p, [](const auto&) { return true; }));
   j["pairs"] = pairs;
   json seen = json::array(), unpredicted = json::array();
   for (int k : r.model_not_seen) seen.push_back(strf("M%d", r.model_modes[k].number));
@@ -164,6 +166,51 @@ std::string macCsv(const CorrelationResult& r) {
          << strf("%.8g", r.model_modes[k].frequency_hz) << ','
          << (std::isnan(r.mac(i, k)) ? std::string() : strf("%.6f", r.mac(i, k))) << '\n';  // empty: undefined
   return os.str();
+}
+
+std::vector<CorrelationPairRow> correlationPairRows(const CorrelationResult& r) {
+  std::vector<CorrelationPairRow> rows;
+  for (const auto& p : r.pairs) {
+    const MeasuredMode& t = r.test_modes[p.test];
+    const ModeInfo& m = r.model_modes[p.model];
+    CorrelationPairRow row;
+    row.test = strf("T%d", p.test + 1);
+    row.model = strf("M%d", m.number);
+    row.test_hz = t.frequency_hz;
+    row.model_hz = m.frequency_hz;
+    row.mac = p.mac;
+    row.test_damping_ratio = t.damping_ratio;
+    if (r.model_damped && m.has_damping) row.model_damping_ratio = m.damping_ratio;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+const std::vector<Field<CorrelationPairRow>>& correlationPairFields() {
+  using json = nlohmann::ordered_json;
+  using Opt = std::optional<json>;
+  using Row = CorrelationPairRow;
+  // clang-format off
+  static const std::vector<Field<Row>> fields{
+      {"test", "", "%s", "the test mode (T1 is the measured set's first)", [](const Row& r) -> Opt { return json(r.test); }},
+      {"model", "", "%s", "the model mode it pairs with (M1 is the lowest)", [](const Row& r) -> Opt { return json(r.model); }},
+      {"test_hz", "Hz", "%.8g", "the test mode's frequency", [](const Row& r) -> Opt { return json(r.test_hz); }},
+      {"model_hz", "Hz", "%.8g", "the model mode's frequency", [](const Row& r) -> Opt { return json(r.model_hz); }},
+      {"frequency_error", "1", "%.6g", "model_hz / test_hz - 1",
+       [](const Row& r) -> Opt { return json((r.model_hz - r.test_hz) / r.test_hz); }},
+      {"mac", "1", "%.6f", "the modal assurance criterion of the two shapes over the paired points",
+       [](const Row& r) -> Opt { return json(r.mac); }},
+      {"test_damping_ratio", "1", "%.6g", "the test mode's damping ratio, as measured",
+       [](const Row& r) -> Opt { return json(r.test_damping_ratio); }},
+      {"model_damping_ratio", "1", "%.6g", "the model mode's damping ratio (null: the model is undamped)",
+       [](const Row& r) -> Opt { return r.model_damping_ratio ? json(*r.model_damping_ratio) : json(nullptr); }},
+  };
+  // clang-format on
+  return fields;
+}
+
+std::string correlationPairsCsv(const CorrelationResult& r) {
+  return fieldsCsv(correlationPairFields(), correlationPairRows(r), [](const auto&) { return true; });
 }
 
 }  // namespace mmv

@@ -4,8 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "sim/io/fields.hpp"
 #include "sim/io/uff.hpp"
 #include "sim/linear/correlation.hpp"
 
@@ -23,5 +26,19 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
 /// mac.csv, one row per test-model mode pair: test_mode, test_frequency_hz, model_mode,
 /// model_frequency_hz, mac (long form: read as it is by numpy, pandas, Octave).
 std::string macCsv(const CorrelationResult& r);
+
+/// A paired test and model mode, as the reports show it.
+struct CorrelationPairRow {
+  std::string test, model;  ///< "T3", "M4"
+  double test_hz = 0, model_hz = 0, mac = 0;
+  double test_damping_ratio = 0;
+  std::optional<double> model_damping_ratio;  ///< none when the model is undamped
+};
+std::vector<CorrelationPairRow> correlationPairRows(const CorrelationResult& r);
+/// The fields of a pair: correlation.json's pairs, pairs.csv's columns, the text table's
+/// values and Python's CorrelateResult.table().
+const std::vector<Field<CorrelationPairRow>>& correlationPairFields();
+/// pairs.csv: a row per pair, a column per field.
+std::string correlationPairsCsv(const CorrelationResult& r);
 
 }  // namespace mmv

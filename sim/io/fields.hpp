@@ -5,14 +5,18 @@
 /// from its one list, so they cannot name or compute a quantity differently. The lists:
 /// modeFields() (sim/io/mode_fields.hpp), tradeRunFields() (sim/io/trade_report.hpp),
 /// trackFields() (sim/io/config_sweep_report.hpp), checkLineFields() (sim/io/check_report.hpp),
-/// placementFields() (sim/io/placement_report.hpp).
+/// placementFields() (sim/io/placement_report.hpp), correlationPairFields()
+/// (sim/io/correlation_report.hpp).
 
+#include <cstring>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "sim/core/errors.hpp"
 
 namespace mmv {
 
@@ -38,6 +42,15 @@ nlohmann::ordered_json fieldsJson(const std::vector<F>& fields, const Row& row, 
     if (has(f))
       if (auto v = f.get(row)) j[f.key] = std::move(*v);
   return j;
+}
+
+/// The value of field `key` of `row` (an internal error when the list has none): a text
+/// table reads its cells through it, so it shows what the JSON and the CSV hold.
+template <class F, class Row>
+std::optional<nlohmann::ordered_json> fieldValue(const std::vector<F>& fields, const Row& row, const char* key) {
+  for (const auto& f : fields)
+    if (std::strcmp(f.key, key) == 0) return f.get(row);
+  throw InternalError(std::string("no field '") + key + "' in the list");
 }
 
 /// The CSV header of the fields with a CSV format that `has(field)` admits ("a,b,c").

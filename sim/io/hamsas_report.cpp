@@ -71,20 +71,22 @@ std::string hamsasModesText(const HamsasScene& scene, const HamsasModes& h, int 
   os << "Modes (kinetic energy by body group; elastic strain energy by element group; gravity_%: the preloads' work\n"
         "over the elastic energy, negative where gravity takes back what the elements store, as in an inverted pendulum):\n";
   Table m({"mode", "f_Hz", "label", "kinetic_energy", "elastic_strain_energy", "gravity_%"});
-  const int n = max_modes > 0 ? std::min<int>(max_modes, static_cast<int>(h.modes.size())) : static_cast<int>(h.modes.size());
-  for (int i = 0; i < n; ++i) {
-    auto top = [](const std::map<std::string, double>& shares, bool skip_dirs) {
-      std::vector<std::pair<double, std::string>> v;
-      for (const auto& [k, x] : shares)
-        if (!skip_dirs || k.find('.') == std::string::npos) v.push_back({-std::abs(x), k});
-      std::sort(v.begin(), v.end());
-      std::string out;
-      for (std::size_t j = 0; j < v.size() && j < 3 && -v[j].first >= 0.005; ++j)
-        out += (j ? " " : "") + v[j].second + strf("=%.0f%%", 100 * shares.at(v[j].second));
-      return out;
-    };
-    m.add({std::to_string(i + 1), strf("%.5g", h.modes[i].frequency_hz), h.modes[i].label, top(h.modes[i].kinetic_share, true),
-           top(h.modes[i].strain_share, false), std::abs(h.modes[i].preload_over_elastic) < 5e-4 ? "0.0" : strf("%+.1f", 100 * h.modes[i].preload_over_elastic)});
+  const auto top = [](const nlohmann::ordered_json& shares) {  // the three largest, at least 0.5 %
+    std::vector<std::pair<double, std::string>> v;
+    for (const auto& [k, x] : shares.items()) v.push_back({-std::abs(x.get<double>()), k});
+    std::sort(v.begin(), v.end());
+    std::string out;
+    for (std::size_t j = 0; j < v.size() && j < 3 && -v[j].first >= 0.005; ++j)
+      out += (j ? " " : "") + v[j].second + strf("=%.0f%%", 100 * shares[v[j].second].get<double>());
+    return out;
+  };
+  // The cells are the mode records' values (hamsasModeFields), as modes.json and modes.csv hold them.
+  for (const auto& row : hamsasModeRows(h, max_modes)) {
+    const auto rec = fieldsJson(hamsasModeFields(), row, [](const auto&) { return true; });
+    const double gravity = rec["preload_over_elastic"].get<double>();
+    m.add({std::to_string(rec["mode"].get<int>()), strf("%.5g", rec["frequency_hz"].get<double>()),
+           rec["label"].get<std::string>(), top(rec["kinetic_share"]), top(rec["strain_share"]),
+           std::abs(gravity) < 5e-4 ? "0.0" : strf("%+.1f", 100 * gravity)});
   }
   os << m.text();
   return os.str();
@@ -109,20 +111,49 @@ nlohmann::ordered_json hamsasModesJson(const HamsasScene& scene, const HamsasMod
                              {"mode", f.mode >= 0 ? nlohmann::ordered_json(f.mode + 1) : nlohmann::ordered_json()},
                              {"shape_match", f.shape_match},
                              {"rule", f.rule}});
-  const int n = max_modes > 0 ? std::min<int>(max_modes, static_cast<int>(h.modes.size())) : static_cast<int>(h.modes.size());
-  for (int i = 0; i < n; ++i) {
-    nlohmann::ordered_json m;
-    m["mode"] = i + 1;
-    m["frequency_hz"] = h.modes[i].frequency_hz;
-    m["stable"] = h.solution.isStable(i);
-    m["label"] = h.modes[i].label;
-    for (const auto& [k, v] : h.modes[i].kinetic_share)
-      if (k.find('.') == std::string::npos) m["kinetic_share"][k] = v;
-    m["strain_share"] = h.modes[i].strain_share;
-    m["preload_over_elastic"] = h.modes[i].preload_over_elastic;
-    j["modes"].push_back(m);
-  }
+  j["modes"] = nlohmann::ordered_json::array();
+  for (const auto& row : hamsasModeRows(h, max_modes))
+    j["modes"].push_back(fieldsJson(hamsasModeFields(), row, [](const auto&) { return true; }));
   return j;
+}
+
+std::vector<HamsasModeRow> hamsasModeRows(const HamsasModes& h, int max_modes) {
+  const int all = static_cast<int>(h.modes.size()), n = max_modes > 0 ? std::min(max_modes, all) : all;
+  std::vector<HamsasModeRow> rows;
+  for (int i = 0; i < n; ++i) rows.push_back({&h, i});
+  return rows;
+}
+
+const std::vector<Field<HamsasModeRow>>& hamsasModeFields() {
+  using json = nlohmann::ordered_json;
+  using Opt = std::optional<json>;
+  using Row = HamsasModeRow;
+  // clang-format off
+  static const std::vector<Field<Row>> fields{
+      {"mode", "", "%d", "the mode (1: the lowest)", [](const Row& r) -> Opt { return json(r.i + 1); }},
+      {"frequency_hz", "Hz", "%.8g", "its frequency (negative: unstable, sqrt(-omega^2) / 2 pi)",
+       [](const Row& r) -> Opt { return json(r.h->modes[r.i].frequency_hz); }},
+      {"stable", "", "%d", "a positive stiffness (omega^2 > 0)", [](const Row& r) -> Opt { return json(r.h->solution.isStable(r.i)); }},
+      {"label", "", "%s", "the body group and direction with the most kinetic energy",
+       [](const Row& r) -> Opt { return json(r.h->modes[r.i].label); }},
+      {"kinetic_share", "1", nullptr, "the kinetic energy's share by body group",
+       [](const Row& r) -> Opt {
+         json shares = json::object();
+         for (const auto& [k, v] : r.h->modes[r.i].kinetic_share)
+           if (k.find('.') == std::string::npos) shares[k] = v;  // "group.direction" entries are the label's
+         return shares;
+       }},
+      {"strain_share", "1", nullptr, "the elastic strain energy's share by element group",
+       [](const Row& r) -> Opt { return json(r.h->modes[r.i].strain_share); }},
+      {"preload_over_elastic", "1", "%.6g", "the preloads' work over the elastic strain energy (gravity_%)",
+       [](const Row& r) -> Opt { return json(r.h->modes[r.i].preload_over_elastic); }},
+  };
+  // clang-format on
+  return fields;
+}
+
+std::string hamsasModesCsv(const HamsasModes& h, int max_modes) {
+  return fieldsCsv(hamsasModeFields(), hamsasModeRows(h, max_modes), [](const auto&) { return true; });
 }
 
 std::string hamsasTransmissibilityText(const HamsasScene& scene, const HamsasModes& h, const std::vector<double>& f,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/io/fields.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv {
@@ -22,6 +23,16 @@ const char* hamsasDofName(int k);
 std::string hamsasDescription(const HamsasModes& h);
 std::string hamsasModesText(const HamsasScene& scene, const HamsasModes& h, int max_modes);
 nlohmann::ordered_json hamsasModesJson(const HamsasScene& scene, const HamsasModes& h, int max_modes);
+/// A mode of the isolator as the reports show it; the first `max_modes` (0: all).
+struct HamsasModeRow {
+  const HamsasModes* h = nullptr;
+  int i = 0;  ///< 0-based
+};
+std::vector<HamsasModeRow> hamsasModeRows(const HamsasModes& h, int max_modes);
+/// Its fields: modes.json's mode records, modes.csv's columns (the scalar ones) and the
+/// text table's values.
+const std::vector<Field<HamsasModeRow>>& hamsasModeFields();
+std::string hamsasModesCsv(const HamsasModes& h, int max_modes);
 /// The 6 x 6 transmissibility's diagonal (peaks, 10 Hz against the 70-80 dB goal) and
 /// the largest cross-coupling at 10 Hz; T at the frequencies f (Hz), T10 at 10 Hz.
 std::string hamsasTransmissibilityText(const HamsasScene& scene, const HamsasModes& h, const std::vector<double>& f,

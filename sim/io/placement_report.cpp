@@ -56,7 +56,7 @@ const std::vector<Field<PlacementRow>>& placementFields() {
   using Value = std::optional<nlohmann::ordered_json>;
   static const std::vector<Field<PlacementRow>> fields = {
       {"station", "", "%s", "the station, <link>@<m>m", [](const PlacementRow& r) -> Value { return r.candidate->station; }},
-      {"link", "", "%s", "its link", [](const PlacementRow& r) -> Value { return r.candidate->link; }},
+      {"link", "", "%s", "the link it is on", [](const PlacementRow& r) -> Value { return r.candidate->link; }},
       {"x_along_link_m", "m", "%.6g", "from the link's root, along it",
        [](const PlacementRow& r) -> Value { return r.candidate->x_m; }},
       {"axis", "", "%s", "axial, transverse, normal (spatial) or triaxial (a block)",

@@ -27,10 +27,8 @@ nlohmann::ordered_json planarityJson(const PlanarityReport& p);
 std::string formatConvergenceText(const ConvergenceStudy& c);
 nlohmann::ordered_json convergenceToJson(const ConvergenceStudy& c);
 
-/// modes.csv: sim/io/mode_fields.hpp (modesCsv), from the one list of per-mode fields.
-/// converge.csv: one row per mode and run (mode, segments, dofs, frequency_hz,
-/// relative_error against the Richardson value, richardson_hz, observed_order, check).
-std::string convergenceCsv(const ConvergenceStudy& c);
+/// modes.csv: sim/io/mode_fields.hpp (modesCsv), from the one list of per-mode fields;
+/// converge.csv: sim/io/convergence_fields.hpp (convergenceCsv).
 
 /// The version stamped into every JSON document.
 const char* mmvlabVersion();

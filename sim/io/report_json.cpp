@@ -1,6 +1,7 @@
 #include <cmath>
 
 #include "sim/modes/converge.hpp"
+#include "sim/io/convergence_fields.hpp"
 #include "sim/io/mode_fields.hpp"
 #include "sim/io/report.hpp"
 
@@ -109,16 +110,7 @@ json modesToJson(const ModesReport& r) {
 json discretizationJson(const DiscretizationEstimate& d) {
   if (!d.available) return {{"available", false}, {"reason", d.reason}};
   json modes = json::array();
-  for (const auto& m : d.modes) {
-    json f = json::array();
-    for (double x : m.frequency_hz) f.push_back(number(x));
-    modes.push_back({{"number", m.number},
-                     {"frequency_hz_by_run", f},
-                     {"richardson_hz", m.has_estimate ? json(m.extrapolated_hz) : json(nullptr)},
-                     {"estimated_relative_error", m.has_estimate ? json(m.estimated_relative_error) : json(nullptr)},
-                     {"observed_order", m.has_observed_order ? json(m.observed_order) : json(nullptr)},
-                     {"check", m.check.empty() ? json("unchecked") : json(m.check)}});
-  }
+  for (const auto& m : d.modes) modes.push_back(fieldsJson(convergenceModeFields(), m, [](const auto&) { return true; }));
   return {{"available", true}, {"segment_divisors", d.divisors}, {"wall_time_s", d.seconds}, {"modes", modes}};
 }
 
@@ -148,16 +140,12 @@ json convergenceToJson(const ConvergenceStudy& c) {
   j["runs"] = runs;
   json modes = json::array();
   for (const auto& m : c.modes) {
-    json f = json::array();
-    for (double x : m.frequency_hz) f.push_back(number(x));
-    json mj = {{"number", m.number}, {"frequency_hz_by_run", f}};
-    mj["richardson_hz"] = m.has_estimate ? json(m.extrapolated_hz) : json(nullptr);
-    mj["estimated_relative_error"] = m.has_estimate ? json(m.estimated_relative_error) : json(nullptr);
-    mj["observed_order"] = m.has_observed_order ? json(m.observed_order) : json(nullptr);
-    mj["check"] = m.check.empty() ? json(nullptr) : json(m.check);
-    json e = json::array();
-    for (double x : m.frequency_hz)
-      e.push_back(m.has_estimate ? number((x - m.extrapolated_hz) / m.extrapolated_hz) : json(nullptr));
+    json mj = fieldsJson(convergenceModeFields(), m, [](const auto&) { return true; });
+    json e = json::array();  // converge.csv's relative_error, run by run (null: the run has no such mode)
+    for (std::size_t k = 0; k < m.frequency_hz.size(); ++k)
+      e.push_back(k < c.runs.size() && std::isfinite(m.frequency_hz[k])
+                      ? *fieldValue(convergencePointFields(), ConvergencePoint{&m, &c.runs[k], k}, "relative_error")
+                      : json(nullptr));
     mj["relative_error_by_run"] = e;
     modes.push_back(mj);
   }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "sim/io/convergence_fields.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/io/report.hpp"
 #include "sim/core/text.hpp"
@@ -174,14 +175,14 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
       if (std::isfinite(f)) os << strf(" %11.5f", f);
       else os << strf(" %11s", "-");
     }
-    if (m.has_estimate) {
-      os << strf(" %12.5f", m.extrapolated_hz);
-      if (m.has_observed_order) os << strf(" %8.2f", m.observed_order);
-      else os << strf(" %8s", "-");
-      os << strf(" %12.4f  %s\n", 100 * m.estimated_relative_error, m.check.empty() ? "-" : m.check.c_str());
-    } else {
-      os << strf(" %12s %8s %12s  %s\n", "-", "-", "-", "-");
-    }
+    // The mode's record (convergenceModeFields), as converge.json and converge.csv hold it.
+    const auto rec = fieldsJson(convergenceModeFields(), m, [](const auto&) { return true; });
+    const auto cell = [&rec](const char* key, int width, int precision, double scale) {
+      return rec[key].is_number() ? strf(" %*.*f", width, precision, scale * rec[key].get<double>()) : strf(" %*s", width, "-");
+    };
+    os << cell("richardson_hz", 12, 5, 1) << cell("observed_order", 8, 2, 1) << cell("estimated_relative_error", 12, 4, 100)
+       << "  "
+       << (rec["check"] == "unchecked" ? std::string("-") : rec["check"].get<std::string>()) << '\n';
   }
   os << "\nEstimated error (%) of each run against the Richardson value: what N segments cost in accuracy\n  mode";
   for (const auto& run : c.runs) os << strf(" %11s", ("N=" + std::to_string(run.segments)).c_str());
@@ -209,20 +210,5 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
 }  // namespace mmv
 
 namespace mmv {
-
-std::string convergenceCsv(const ConvergenceStudy& c) {
-  std::ostringstream os;
-  os << "mode,segments,dofs,frequency_hz,relative_error,richardson_hz,observed_order,check\n";
-  for (const auto& m : c.modes)
-    for (std::size_t k = 0; k < c.runs.size() && k < m.frequency_hz.size(); ++k) {
-      const double f = m.frequency_hz[k];
-      if (!std::isfinite(f)) continue;  // the run has no such mode
-      os << m.number << ',' << c.runs[k].segments << ',' << c.runs[k].num_dofs << ',' << strf("%.10g", f) << ','
-         << (m.has_estimate ? strf("%.6g", (f - m.extrapolated_hz) / m.extrapolated_hz) : "") << ','
-         << (m.has_estimate ? strf("%.10g", m.extrapolated_hz) : "") << ','
-         << (m.has_observed_order ? strf("%.4g", m.observed_order) : "") << ',' << m.check << '\n';
-    }
-  return os.str();
-}
 
 }  // namespace mmv

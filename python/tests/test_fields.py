@@ -1,0 +1,87 @@
+"""Results' tables from the library's field lists: each `table()` equals the CSV file the
+command line writes for the same request, column for column (docs/python.md)."""
+import csv
+import os
+import subprocess
+import warnings
+
+import numpy as np
+import pytest
+
+import mmvlab
+
+MMVLAB = os.environ["MMVLAB_BINARY"]
+SOURCE = os.path.abspath(os.environ["MMVLAB_SOURCE_DIR"])
+
+
+def cli_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], rows[1:]
+
+
+def expect_table_is_the_csv(table, path, field_list):
+    header, rows = cli_csv(path)
+    assert header == [f["key"] for f in field_list if f["csv"]]
+    assert list(table) == header
+    for j, f in enumerate(f for f in field_list if f["csv"]):
+        column = [r[j] for r in rows]
+        if f["number"]:
+            want = np.array([np.nan if c == "" else float(c) for c in column])
+            np.testing.assert_allclose(table[f["key"]], want, rtol=1e-5, atol=1e-9, equal_nan=True, err_msg=f["key"])
+        else:
+            assert [c.replace(";", ",") for c in column] == [str(v).replace(";", ",") for v in table[f["key"]]], f["key"]
+
+
+def test_every_named_list_is_described():
+    names = mmvlab.field_list_names()
+    assert {"check_lines", "convergence_points", "correlation_pairs", "hamsas_modes"} <= set(names)
+    for name in names:
+        fields = mmvlab.fields(name)
+        assert len({f["key"] for f in fields}) == len(fields), name
+        assert all(len(f["meaning"]) > 10 for f in fields), name
+    with pytest.raises(mmvlab.UsageError, match="no field list 'nope'"):
+        mmvlab.fields("nope")
+
+
+def test_correlate_s_table_is_pairs_csv(tmp_path):
+    measured = tmp_path / "measured"
+    r = subprocess.run([MMVLAB, "frf", "--segments", "4", "--set", "materials.carbon_carbon.youngs_modulus=44.6e9",
+                        "--out", str(measured)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    out = tmp_path / "correlate"
+    r = subprocess.run([MMVLAB, "correlate", "--measured", str(measured / "frf.uff"), "--segments", "4", "--modes", "10",
+                        "--damping", "0.02", "--out", str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", mmvlab.RunWarning)
+        py = mmvlab.correlate(mmvlab.load_scene(), str(measured / "frf.uff"), segments=4, modes=10, damping=0.02)
+    table = py.table()
+    assert len(table["test"]) == len(py.pairs) > 0
+    expect_table_is_the_csv(table, out / "pairs.csv", mmvlab.fields("correlation_pairs"))
+    np.testing.assert_allclose(table["frequency_error"], table["model_hz"] / table["test_hz"] - 1, rtol=1e-9)
+    np.testing.assert_allclose(table["model_damping_ratio"], 0.02, rtol=1e-12)  # --damping: every mode's ratio
+
+
+def test_converge_s_table_is_converge_csv(tmp_path):
+    out = tmp_path / "converge"
+    r = subprocess.run([MMVLAB, "converge", "--max-segments", "4", "--modes", "3", "--out", str(out)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    c = mmvlab.converge(mmvlab.load_scene(), max_segments=4, modes=3)
+    table = c.table()
+    expect_table_is_the_csv(table, out / "converge.csv", mmvlab.fields("convergence_points"))
+    # Each row's frequency two ways: the table's long form, the result's [mesh, mode] array.
+    for mode, segments, f in zip(table["mode"], table["segments"], table["frequency_hz"]):
+        assert f == pytest.approx(c.frequencies_hz[list(c.segments).index(segments), int(mode) - 1], rel=1e-9)
+
+
+def test_a_hamsas_modes_table_is_its_modes_csv(tmp_path):
+    scene = os.path.join(SOURCE, "scenes", "hamsas.yaml")
+    out = tmp_path / "hamsas"
+    r = subprocess.run([MMVLAB, "modes", scene, "--modes", "8", "--out", str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    m = mmvlab.modes(mmvlab.load_scene(scene), modes=8)
+    table = m.table()
+    expect_table_is_the_csv(table, out / "modes.csv", mmvlab.fields("hamsas_modes"))
+    np.testing.assert_array_equal(table["frequency_hz"], m.frequencies_hz)
