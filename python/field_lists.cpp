@@ -9,6 +9,7 @@
 
 #include "sim/core/errors.hpp"
 #include "sim/io/check_report.hpp"
+#include "sim/io/compare_fields.hpp"
 #include "sim/io/config_sweep_report.hpp"
 #include "sim/io/convergence_fields.hpp"
 #include "sim/io/hamsas_report.hpp"
@@ -39,6 +40,8 @@ py::list describe(const std::vector<mmv::Field<Row>>& fields) {
 const std::map<std::string, std::function<py::list()>>& namedLists() {
   static const std::map<std::string, std::function<py::list()>> lists{
       {"check_lines", [] { return describe(mmv::checkLineFields()); }},
+      {"compare_synthesis", [] { return describe(mmv::synthesisFields()); }},
+      {"compare_system_modes", [] { return describe(mmv::systemModeFields()); }},
       {"convergence_modes", [] { return describe(mmv::convergenceModeFields()); }},
       {"convergence_points", [] { return describe(mmv::convergencePointFields()); }},
       {"correlation_pairs", [] { return describe(mmv::correlationPairFields()); }},

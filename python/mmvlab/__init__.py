@@ -488,6 +488,17 @@ class CompareResult(Result):
         super().__init__(json_text, text)
         self.markdown = markdown
 
+    def table(self):
+        """The system modes as columns (system_modes.csv's, `fields("compare_system_modes")`),
+        for `pandas.DataFrame(c.table())`."""
+        return _columns(self.json["system_modes"], [f for f in fields("compare_system_modes") if f["csv"]])
+
+    def synthesis_table(self):
+        """The synthesized modes of both methods as columns (synthesis.csv's,
+        `fields("compare_synthesis")`: the method first)."""
+        records = [dict(row, method=s["method"]) for s in self.json["synthesis"].values() for row in s["modes"]]
+        return _columns(records, [f for f in fields("compare_synthesis") if f["csv"]])
+
 
 def converge(scene, *, max_segments=64, modes=6, progress=None):
     """`mmvlab converge`: each mode's frequency at 1, 2, 4, ... segments per link up to

@@ -76,6 +76,16 @@ def test_converge_s_table_is_converge_csv(tmp_path):
         assert f == pytest.approx(c.frequencies_hz[list(c.segments).index(segments), int(mode) - 1], rel=1e-9)
 
 
+def test_compare_s_tables_are_its_csv_files(tmp_path):
+    out = tmp_path / "compare"
+    r = subprocess.run([MMVLAB, "compare", "--set", "model=spatial", "--segments", "2", "--modes", "6", "--out", str(out)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    c = mmvlab.compare(mmvlab.load_scene(set={"model": "spatial"}), segments=2, modes=6)
+    expect_table_is_the_csv(c.table(), out / "system_modes.csv", mmvlab.fields("compare_system_modes"))
+    expect_table_is_the_csv(c.synthesis_table(), out / "synthesis.csv", mmvlab.fields("compare_synthesis"))
+
+
 def test_a_hamsas_modes_table_is_its_modes_csv(tmp_path):
     scene = os.path.join(SOURCE, "scenes", "hamsas.yaml")
     out = tmp_path / "hamsas"

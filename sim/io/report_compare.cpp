@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sim/io/compare_fields.hpp"
 #include "sim/io/report.hpp"
 #include "sim/core/text.hpp"
 
@@ -44,12 +45,18 @@ Table systemTable(const std::vector<SystemModeRow>& rows, bool spatial) {
                                 "nearest component mode of that link", "system/component-1_%"};
   if (spatial) head.insert(head.begin() + 2, "family");
   Table t(head);
-  for (const auto& m : rows) {
-    std::vector<std::string> row{strf("%d", m.mode), frequency(m), strf("%s (%.0f %%)", m.strain_link.c_str(), 100 * m.strain_share),
-                                 strf("%s (%.0f %%)", m.kinetic_link.c_str(), 100 * m.kinetic_share),
-                                 m.component_mode ? strf("%s #%d %.4f Hz", m.strain_link.c_str(), m.component_mode, m.component_hz) : "-",
-                                 m.component_mode ? pct(m.component_difference) : "-"};
-    if (spatial) row.insert(row.begin() + 2, familyTag(m.family));
+  for (const auto& m : rows) {  // the cells are the records' values (systemModeFields), as JSON and CSV hold them
+    const auto rec = fieldsJson(systemModeFields(), m, [](const auto&) { return true; });
+    const std::string strain = rec["strain_link"], kinetic = rec["kinetic_link"];
+    const int component = rec["nearest_component_mode"];
+    std::vector<std::string> row{
+        std::to_string(rec["mode"].get<int>()),
+        rec["frequency_hz"].is_number() ? strf("%.4f", rec["frequency_hz"].get<double>()) : "UNSTABLE",
+        strf("%s (%.0f %%)", strain.c_str(), 100 * rec["strain_share"].get<double>()),
+        strf("%s (%.0f %%)", kinetic.c_str(), 100 * rec["kinetic_share"].get<double>()),
+        component ? strf("%s #%d %.4f Hz", strain.c_str(), component, rec["nearest_component_frequency_hz"].get<double>()) : "-",
+        component ? pct(rec["system_over_component_minus_1"].get<double>()) : "-"};
+    if (spatial) row.insert(row.begin() + 2, familyTag(rec.value("family", std::string())));
     t.add(row);
   }
   return t;
@@ -59,15 +66,23 @@ Table synthesisTable(const CompareReport& r) {
   std::vector<std::string> head{"mode", "full_Hz", "link", "assumed_Hz", "err_%", "MAC", "verdict", "CB_Hz", "err_%", "MAC", "verdict"};
   if (r.spatial) head.insert(head.begin() + 3, "family");
   Table t(head);
+  // The cells are the rows' records (synthesisFields), as JSON and CSV hold them.
+  const auto record = [](const SynthesisResult& s, std::size_t i) {
+    return fieldsJson(synthesisFields(), SynthesisRowView{&s, &s.rows[i]}, [](const auto&) { return true; });
+  };
+  const auto cells = [](const nlohmann::ordered_json& rec) {
+    return std::vector<std::string>{strf("%.4f", rec["synthesized_frequency_hz"].get<double>()),
+                                    pct(rec["relative_error"].get<double>()), strf("%.3f", rec["mac"].get<double>()),
+                                    rec["verdict"].get<std::string>()};
+  };
   for (std::size_t i = 0; i < r.assumed.rows.size(); ++i) {
-    const auto& a = r.assumed.rows[i];
-    std::vector<std::string> row{strf("%d", a.mode), strf("%.4f", a.full_hz), a.dominant_link, strf("%.4f", a.synth_hz),
-                                 pct(a.relative_error), strf("%.3f", a.mac), a.verdict};
-    if (r.spatial) row.insert(row.begin() + 3, familyTag(a.family));
-    if (i < r.craig_bampton.rows.size()) {
-      const auto& c = r.craig_bampton.rows[i];
-      row.insert(row.end(), {strf("%.4f", c.synth_hz), pct(c.relative_error), strf("%.3f", c.mac), c.verdict});
-    }
+    const auto a = record(r.assumed, i);
+    std::vector<std::string> row{std::to_string(a["mode"].get<int>()), strf("%.4f", a["full_frequency_hz"].get<double>()),
+                                 a["dominant_link"].get<std::string>()};
+    for (auto& c : cells(a)) row.push_back(c);
+    if (r.spatial) row.insert(row.begin() + 3, familyTag(a.value("family", std::string())));
+    if (i < r.craig_bampton.rows.size())
+      for (auto& c : cells(record(r.craig_bampton, i))) row.push_back(c);
     t.add(row);
   }
   return t;
@@ -182,17 +197,8 @@ nlohmann::ordered_json synthesisJson(const SynthesisResult& s) {
   j["full_dofs"] = s.full_dofs;
   j["reduced_dofs"] = s.reduced_dofs;
   auto rows = nlohmann::ordered_json::array();
-  for (const auto& r : s.rows)
-    rows.push_back({{"mode", r.mode},
-                    {"full_frequency_hz", r.full_hz},
-                    {"synthesized_mode", r.synth_mode},
-                    {"synthesized_frequency_hz", r.synth_hz},
-                    {"relative_error", r.relative_error},
-                    {"mac", r.mac},
-                    {"verdict", r.verdict},
-                    {"dominant_link", r.dominant_link}});
-  for (std::size_t i = 0; i < s.rows.size(); ++i)
-    if (!s.rows[i].family.empty()) rows[i]["family"] = s.rows[i].family;
+  const auto record = [](const auto& f) { return std::string(f.key) != "method"; };  // the rows sit under it
+  for (const auto& r : s.rows) rows.push_back(fieldsJson(synthesisFields(), SynthesisRowView{&s, &r}, record));
   j["modes"] = rows;
   auto mac = nlohmann::ordered_json::array();
   for (Eigen::Index i = 0; i < s.mac.rows(); ++i) {
@@ -206,19 +212,7 @@ nlohmann::ordered_json synthesisJson(const SynthesisResult& s) {
 
 nlohmann::ordered_json systemJson(const std::vector<SystemModeRow>& rows) {
   auto a = nlohmann::ordered_json::array();
-  for (const auto& m : rows) {
-    a.push_back({{"mode", m.mode},
-                 {"stable", m.stable},
-                 {"frequency_hz", m.stable ? nlohmann::ordered_json(m.frequency_hz) : nlohmann::ordered_json(nullptr)},
-                 {"strain_link", m.strain_link},
-                 {"strain_share", m.strain_share},
-                 {"kinetic_link", m.kinetic_link},
-                 {"kinetic_share", m.kinetic_share},
-                 {"nearest_component_mode", m.component_mode},
-                 {"nearest_component_frequency_hz", m.component_hz},
-                 {"system_over_component_minus_1", m.component_difference}});
-    if (!m.family.empty()) a.back()["family"] = m.family;
-  }
+  for (const auto& m : rows) a.push_back(fieldsJson(systemModeFields(), m, [](const auto&) { return true; }));
   return a;
 }
 
@@ -282,18 +276,13 @@ std::vector<std::pair<std::string, std::string>> compareCsvFiles(const CompareRe
       comp << csvEscape(c.link) << ',' << componentBCName(r.component.bc) << ',' << c.tip_rule << ','
            << strf("%.6g,%.6g,%zu,%.8g,", c.tip.mass, c.mass_ratio, k + 1, c.modes[k].frequency_hz)
            << (c.modes[k].has_closed_form ? strf("%.8g", c.modes[k].closed_form_hz) : "") << family(c.modes[k].family) << '\n';
-  sys << "mode,frequency_hz,strain_link,strain_share,kinetic_link,kinetic_share,nearest_component_mode,"
-         "nearest_component_frequency_hz,system_over_component_minus_1" << family("family") << '\n';
-  for (const auto& m : r.system)
-    sys << m.mode << ',' << (m.stable ? strf("%.8g", m.frequency_hz) : "") << ',' << csvEscape(m.strain_link) << ','
-        << strf("%.6f", m.strain_share) << ',' << csvEscape(m.kinetic_link) << ',' << strf("%.6f", m.kinetic_share) << ','
-        << m.component_mode << ',' << strf("%.8g,%.6g", m.component_hz, m.component_difference) << family(m.family) << '\n';
-  syn << "method,mode,full_frequency_hz,synthesized_mode,synthesized_frequency_hz,relative_error,mac,verdict,dominant_link\n";
+  // The spatial model's system modes have a family column; the planar model's none.
+  const auto planar_less_family = [&](const auto& f) { return r.spatial || std::string(f.key) != "family"; };
+  sys << fieldsCsv(systemModeFields(), r.system, planar_less_family);
+  std::vector<SynthesisRowView> synthesized;
   for (const SynthesisResult* s : {&r.assumed, &r.craig_bampton})
-    for (const auto& row : s->rows)
-      syn << csvEscape(s->method) << ',' << row.mode << ',' << strf("%.8g", row.full_hz) << ',' << row.synth_mode << ','
-          << strf("%.8g,%.6g,%.6f", row.synth_hz, row.relative_error, row.mac) << ',' << row.verdict << ','
-          << csvEscape(row.dominant_link) << '\n';
+    for (const auto& row : s->rows) synthesized.push_back({s, &row});
+  syn << fieldsCsv(synthesisFields(), synthesized, [](const auto&) { return true; });
   return {{"component_modes.csv", comp.str()},
           {"system_modes.csv", sys.str()},
           {"synthesis.csv", syn.str()},

@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <iterator>
 #include <map>
 #include <fstream>
 #include <set>
@@ -18,34 +17,16 @@
 #include "sim/io/report.hpp"
 #include "sim/io/check_report.hpp"
 #include "sim/io/config_sweep_report.hpp"
-#include "sim/io/convergence_fields.hpp"
-#include "sim/io/correlation_report.hpp"
-#include "sim/io/hamsas_report.hpp"
 #include "sim/io/placement_report.hpp"
 #include "sim/io/trade_report.hpp"
-#include "sim/modes/converge.hpp"
 #include "sim/plan/check.hpp"
+#include "support/field_checks.hpp"
 #include "support/scenes.hpp"
 
 namespace mmv {
 namespace {
 
-using json = nlohmann::ordered_json;
-
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
-
-/// The relative precision a printf format keeps ("%.8g": 8 significant digits).
-double precisionOf(const char* format) {
-  const std::string f = format;
-  const auto dot = f.find('.');
-  return dot == std::string::npos ? 0.0 : 0.6 * std::pow(10.0, -std::stoi(f.substr(dot + 1)) + 1);
-}
+using namespace field_checks;
 
 void expectJsonAndCsvAgree(const ModesReport& r, const std::string& what) {
   const json doc = modesToJson(r);
@@ -158,36 +139,6 @@ TEST(ModeFields, TheDocsTableIsTheList) {
   }
   ASSERT_TRUE(std::getline(rows, line));
   EXPECT_EQ(line.rfind("|", 0), std::string::npos) << "a row the list does not have: " << line;
-}
-
-/// Each of `cells` from `first` on is record `rec`'s value under `columns`, to the
-/// printed digits (`rel` relative, `abs` for "%.6f" columns).
-void expectCellsAreTheRecord(const std::vector<std::string>& cells, std::size_t first, const std::vector<std::string>& columns,
-                             const json& rec, double rel, double abs = 1e-300) {
-  ASSERT_EQ(cells.size(), first + columns.size());
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    const std::string& cell = cells[first + c];
-    if (!rec.contains(columns[c]) || rec[columns[c]].is_null()) {
-      EXPECT_EQ(cell, "") << columns[c];
-      continue;
-    }
-    const json& v = rec[columns[c]];
-    if (v.is_boolean()) EXPECT_EQ(cell, v.get<bool>() ? "1" : "0") << columns[c];
-    else if (v.is_string()) EXPECT_EQ(cell, csvEscape(v.get<std::string>())) << columns[c];
-    else if (v.is_number_integer()) EXPECT_EQ(std::stol(cell), v.get<long>()) << columns[c];
-    else EXPECT_NEAR(std::stod(cell), v.get<double>(), rel * std::abs(v.get<double>()) + abs) << columns[c];
-  }
-}
-
-/// Reads the CSV's header and expects it to be `fields`' keys, in order; returns them.
-template <class Fields>
-std::vector<std::string> headerIsTheFieldKeys(std::istream& csv, const Fields& fields) {
-  std::string line;
-  std::getline(csv, line);
-  std::vector<std::string> columns;
-  for (const auto& f : fields) columns.push_back(f.key);
-  EXPECT_EQ(splitCsvLine(line), columns);
-  return columns;
 }
 
 // A configuration sweep's tracks: sweep.json's points[].tracks[] and sweep.csv's track
@@ -306,121 +257,6 @@ TEST(PlacementFields, JsonAndCsvComeFromOneList) {
   }
 }
 
-
-/// The keys of `fields` that have a CSV column.
-template <class Fields>
-std::vector<std::string> csvKeys(const Fields& fields) {
-  std::vector<std::string> keys;
-  for (const auto& f : fields)
-    if (f.csv_format) keys.push_back(f.key);
-  return keys;
-}
-
-// correlate's pairs: correlation.json's pairs, pairs.csv and the text table from
-// correlationPairFields(), on a damped model (a model damping ratio) and a pair whose
-// model mode has none (null in JSON, empty in the CSV, "-" in the text).
-TEST(CorrelationPairFields, JsonCsvAndTextComeFromOneList) {
-  CorrelationResult r;
-  r.test_modes = {{1, 2.0, 0.02, {}, {}}, {2, 5.0, 0.01, {}, {}}};
-  ModeInfo m1, m2;
-  m1.number = 1, m1.frequency_hz = 2.04, m1.has_damping = true, m1.damping_ratio = 0.015;
-  m2.number = 3, m2.frequency_hz = 4.9, m2.has_damping = false;
-  r.model_modes = {m1, m2};
-  r.model_damped = true;
-  r.damping_model = "modal";
-  r.mac = Eigen::MatrixXd::Identity(2, 2);
-  r.pairs = {{0, 0, 0.987654}, {1, 1, 0.912345}};
-  ArticleScene scene = loadDefaultScene();
-  const json pairs = correlationJson(scene, r)["pairs"];
-  std::istringstream csv(correlationPairsCsv(r));
-  const std::vector<std::string> columns = headerIsTheFieldKeys(csv, correlationPairFields());
-  std::string line;
-  ASSERT_EQ(pairs.size(), 2u);
-  for (const auto& rec : pairs) {
-    ASSERT_TRUE(std::getline(csv, line));
-    expectCellsAreTheRecord(splitCsvLine(line), 0, columns, rec, 1e-5, 1e-6);
-    EXPECT_EQ(rec.size(), columns.size());
-  }
-  EXPECT_NEAR(pairs[0]["frequency_error"].get<double>(), 0.02, 1e-12);  // 2.04 / 2 - 1
-  EXPECT_NEAR(pairs[1]["frequency_error"].get<double>(), -0.02, 1e-12);
-  EXPECT_NEAR(pairs[0]["model_damping_ratio"].get<double>(), 0.015, 1e-15);
-  EXPECT_TRUE(pairs[1]["model_damping_ratio"].is_null());
-  // The text table's rows, cell by cell: the same values in the text's units (%).
-  std::istringstream text(correlationText(scene, r));
-  std::vector<std::vector<std::string>> rows;
-  for (std::string l; std::getline(text, l);) {
-    std::istringstream words(l);
-    std::vector<std::string> cells{std::istream_iterator<std::string>(words), {}};
-    if (!cells.empty() && (cells[0] == "T1" || cells[0] == "T2")) rows.push_back(cells);
-  }
-  ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"T1", "2.0000", "2", "M1", "2.0400", "1.5", "+2.00", "0.988"}));
-  EXPECT_EQ(rows[1], (std::vector<std::string>{"T2", "5.0000", "1", "M3", "4.9000", "-", "-2.00", "0.912"}));
-}
-
-// converge's ladder: converge.csv's rows carry each mode's record (converge.json) and
-// the record's per-run values; the discretization estimate of `modes` writes the same
-// record (one list, one "unchecked" for a mode without an estimate).
-TEST(ConvergenceFields, CsvRowsAreTheModeRecordsRunByRun) {
-  ArticleScene s = loadDefaultScene();
-  const ConvergenceStudy c = runConvergence(s, 4, 3);
-  const json doc = convergenceToJson(c);
-  std::istringstream csv(convergenceCsv(c));
-  const std::vector<std::string> columns = headerIsTheFieldKeys(csv, convergencePointFields());
-  std::string line;
-  int rows = 0;
-  for (const auto& rec : doc["modes"])
-    for (std::size_t k = 0; k < c.runs.size(); ++k) {
-      ASSERT_TRUE(std::getline(csv, line));
-      const std::vector<std::string> cells = splitCsvLine(line);
-      json point = {{"mode", rec["number"]},
-                    {"segments", doc["runs"][k]["segments"]},
-                    {"dofs", doc["runs"][k]["dofs"]},
-                    {"frequency_hz", rec["frequency_hz_by_run"][k]},
-                    {"relative_error", rec["relative_error_by_run"][k]},
-                    {"richardson_hz", rec["richardson_hz"]},
-                    {"observed_order", rec["observed_order"]},
-                    {"check", rec["check"]}};
-      expectCellsAreTheRecord(cells, 0, columns, point, 2e-4, 1e-6);  // observed_order keeps 4 digits
-      ++rows;
-    }
-  EXPECT_EQ(rows, 9);  // 3 modes at 1, 2 and 4 segments
-  EXPECT_FALSE(std::getline(csv, line));
-  std::vector<std::string> keys;
-  for (const auto& f : convergenceModeFields()) keys.push_back(f.key);
-  keys.push_back("relative_error_by_run");
-  std::vector<std::string> got;
-  for (const auto& [k, v] : doc["modes"][0].items()) got.push_back(k);
-  EXPECT_EQ(got, keys);
-  DiscretizationEstimate d;
-  d.available = true;
-  d.modes = {assessLadder(1, {1.0})};  // one run: no estimate
-  const json est = discretizationJson(d)["modes"][0];
-  EXPECT_EQ(est["check"], "unchecked");
-  EXPECT_EQ(est.size(), convergenceModeFields().size());
-}
-
-// HAM-SAS's modes: modes.json's records and modes.csv from hamsasModeFields().
-TEST(HamsasModeFields, JsonAndCsvComeFromOneList) {
-  const HamsasScene h = loadHamsasSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/hamsas.yaml");
-  const HamsasModes m = analyseHamsas(h.isolator);
-  const json modes = hamsasModesJson(h, m, 8)["modes"];
-  std::istringstream csv(hamsasModesCsv(m, 8));
-  std::string line;
-  ASSERT_TRUE(std::getline(csv, line));
-  const std::vector<std::string> columns = csvKeys(hamsasModeFields());
-  EXPECT_EQ(splitCsvLine(line), columns);
-  ASSERT_EQ(modes.size(), 8u);
-  for (const auto& rec : modes) {
-    ASSERT_TRUE(std::getline(csv, line));
-    expectCellsAreTheRecord(splitCsvLine(line), 0, columns, rec, 1e-7, 1e-6);
-    EXPECT_EQ(rec.size(), hamsasModeFields().size());
-    double kinetic = 0;
-    for (const auto& [k, v] : rec["kinetic_share"].items()) kinetic += v.get<double>();
-    EXPECT_NEAR(kinetic, 1.0, 1e-6);  // the groups' shares (not the directions') sum to one
-  }
-  EXPECT_FALSE(std::getline(csv, line));
-}
 
 }  // namespace
 }  // namespace mmv
