@@ -16,6 +16,7 @@
 #include "sim/io/correlation_report.hpp"
 #include "sim/io/mode_fields.hpp"
 #include "sim/io/placement_report.hpp"
+#include "sim/io/simulation_report.hpp"
 #include "sim/io/trade_report.hpp"
 
 namespace py = pybind11;
@@ -47,6 +48,8 @@ const std::map<std::string, std::function<py::list()>>& namedLists() {
       {"correlation_pairs", [] { return describe(mmv::correlationPairFields()); }},
       {"hamsas_modes", [] { return describe(mmv::hamsasModeFields()); }},
       {"placement_candidates", [] { return describe(mmv::placementFields()); }},
+      {"simulate_sensors", [] { return describe(mmv::sensorSummaryFields()); }},
+      {"simulate_torques", [] { return describe(mmv::jointTorqueFields()); }},
       {"sweep_config_tracks", [] { return describe(mmv::trackFields()); }},
       {"trade_runs", [] { return describe(mmv::tradeRunFields()); }},
   };

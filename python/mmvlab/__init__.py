@@ -335,6 +335,16 @@ class SimulateResult(Result):
         self.state_columns = d["state_columns"]
         self.states = d["states"]
 
+    def torques_table(self):
+        """summary.json's torques as columns (`fields("simulate_torques")`): joint,
+        peak_torque_n_m, capacity_n_m (NaN: no rating), exceeded."""
+        return _columns(self.json.get("torques", []), fields("simulate_torques"))
+
+    def sensors_table(self):
+        """summary.json's sensors as columns (`fields("simulate_sensors")`): name, type,
+        unit, saturated_samples, samples."""
+        return _columns(self.json.get("sensors", []), fields("simulate_sensors"))
+
 
 def _optional(x):
     return None if x is None else float(x)

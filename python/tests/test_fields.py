@@ -86,6 +86,24 @@ def test_compare_s_tables_are_its_csv_files(tmp_path):
     expect_table_is_the_csv(c.synthesis_table(), out / "synthesis.csv", mmvlab.fields("compare_synthesis"))
 
 
+def test_simulate_s_tables_are_its_summary_and_text():
+    scene = mmvlab.load_scene(os.path.join(SOURCE, "scenes", "mmv-slew.yaml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = mmvlab.simulate(scene, segments=2, duration=0.5)
+    torques, sensors = r.torques_table(), r.sensors_table()
+    assert len(torques["joint"]) == len(r.json["torques"]) > 0 and len(sensors["name"]) == len(r.json["sensors"]) > 0
+    # Each peak torque two ways: the table, and the text report's row for that joint.
+    rows = {line.split()[0]: line.split() for line in r.text.splitlines() if line.split()[:1] and line.split()[0] in torques["joint"]}
+    for joint, peak in zip(torques["joint"], torques["peak_torque_n_m"]):
+        assert float(rows[joint][1]) == pytest.approx(peak, abs=5e-5)
+        # and the history's own largest |torque| of that joint, where the run records it
+        column = f"{joint}_torque_n_m"
+        if column in r.history:
+            assert np.max(np.abs(r.history[column])) <= peak * (1 + 1e-9) + 1e-12
+    assert all(s <= n for s, n in zip(sensors["saturated_samples"], sensors["samples"]))
+
+
 def test_a_hamsas_modes_table_is_its_modes_csv(tmp_path):
     scene = os.path.join(SOURCE, "scenes", "hamsas.yaml")
     out = tmp_path / "hamsas"

@@ -48,18 +48,13 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
                        {"first_dropped_hz", m.first_dropped_hz > 0 ? nlohmann::ordered_json(m.first_dropped_hz) : nlohmann::ordered_json(nullptr)}});
     j["modal_links"] = links;
   }
+  const auto all = [](const auto&) { return true; };
   auto torques = nlohmann::ordered_json::array();
-  for (const auto& t : r.torques)
-    torques.push_back({{"joint", t.joint},
-                       {"peak_torque_n_m", t.peak_torque_nm},
-                       {"capacity_n_m", t.capacity_nm > 0 ? nlohmann::ordered_json(t.capacity_nm) : nlohmann::ordered_json(nullptr)},
-                       {"exceeded", t.exceeded}});
+  for (const auto& t : r.torques) torques.push_back(fieldsJson(jointTorqueFields(), t, all));
   j["torques"] = torques;
   for (const auto& [name, peak] : peakDisplacements(r.record)) j["peak_displacement_m"][name] = peak;
   auto sensors = nlohmann::ordered_json::array();
-  for (const auto& s : r.sensors)
-    sensors.push_back({{"name", s.name}, {"type", s.type}, {"unit", s.unit}, {"saturated_samples", s.saturated_samples},
-                       {"samples", s.samples}});
+  for (const auto& s : r.sensors) sensors.push_back(fieldsJson(sensorSummaryFields(), s, all));
   j["sensors"] = sensors;
   j["energy"] = {{"initial_j", r.initial_energy_j},
                  {"final_j", r.final_energy_j},
@@ -115,9 +110,14 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
     os << "\n";
   }
   Table t({"joint", "peak_torque_N*m", "capacity_N*m", "within"});
-  for (const auto& q : r.torques)
-    t.add({q.joint, strf("%.4f", q.peak_torque_nm), q.capacity_nm > 0 ? strf("%.4g", q.capacity_nm) : "-",
-           q.capacity_nm > 0 ? (q.exceeded ? "EXCEEDED" : "yes") : "-"});
+  const auto all = [](const auto&) { return true; };
+  for (const auto& q : r.torques) {  // the cells are the records' values (jointTorqueFields)
+    const auto rec = fieldsJson(jointTorqueFields(), q, all);
+    const bool rated = rec["capacity_n_m"].is_number();
+    t.add({rec["joint"].get<std::string>(), strf("%.4f", rec["peak_torque_n_m"].get<double>()),
+           rated ? strf("%.4g", rec["capacity_n_m"].get<double>()) : "-",
+           rated ? (rec["exceeded"].get<bool>() ? "EXCEEDED" : "yes") : "-"});
+  }
   if (!r.torques.empty()) os << "Torques the torquers must give\n" << t.text();
   Table d({"point", "peak_displacement_m"});
   for (const auto& [name, peak] : peakDisplacements(r.record)) d.add({name, strf("%.4g", peak)});
@@ -127,8 +127,11 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
                r.carried_weight_n, facility::TableSpec{}.payload_n);
   if (!r.sensors.empty()) {
     Table st({"sensor", "type", "unit", "saturated_samples"});
-    for (const auto& s : r.sensors)
-      st.add({s.name, s.type, s.unit, strf("%d of %d", s.saturated_samples, s.samples)});
+    for (const auto& s : r.sensors) {  // the cells are the records' values (sensorSummaryFields)
+      const auto rec = fieldsJson(sensorSummaryFields(), s, all);
+      st.add({rec["name"].get<std::string>(), rec["type"].get<std::string>(), rec["unit"].get<std::string>(),
+              strf("%d of %d", rec["saturated_samples"].get<int>(), rec["samples"].get<int>())});
+    }
     os << "\nSensors\n" << st.text();
   }
   os << strf("\nEnergy: E(0) %.6g J, E(end) %.6g J, work of the commanded motions %.6g J, dissipated %.6g J;\n"
@@ -213,6 +216,40 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
   j["attempts"] = attempts;
   j["total_wall_time_s"] = t.total_seconds;
   return j;
+}
+
+const std::vector<Field<JointTorqueSummary>>& jointTorqueFields() {
+  using json = nlohmann::ordered_json;
+  using Opt = std::optional<json>;
+  using T = JointTorqueSummary;
+  // clang-format off
+  static const std::vector<Field<T>> fields{
+      {"joint", "", nullptr, "the joint (a torquer, or a gimbal axis)", [](const T& t) -> Opt { return json(t.joint); }},
+      {"peak_torque_n_m", "N*m", nullptr, "the largest torque it had to give over the run",
+       [](const T& t) -> Opt { return json(t.peak_torque_nm); }},
+      {"capacity_n_m", "N*m", nullptr, "its torquer's rating (null: none given)",
+       [](const T& t) -> Opt { return t.capacity_nm > 0 ? json(t.capacity_nm) : json(nullptr); }},
+      {"exceeded", "", nullptr, "the peak is above the rating", [](const T& t) -> Opt { return json(t.exceeded); }},
+  };
+  // clang-format on
+  return fields;
+}
+
+const std::vector<Field<SensorSummary>>& sensorSummaryFields() {
+  using json = nlohmann::ordered_json;
+  using Opt = std::optional<json>;
+  using S = SensorSummary;
+  // clang-format off
+  static const std::vector<Field<S>> fields{
+      {"name", "", nullptr, "the sensor (the scene's name)", [](const S& s) -> Opt { return json(s.name); }},
+      {"type", "", nullptr, "encoder, gyro, accelerometer, ...", [](const S& s) -> Opt { return json(s.type); }},
+      {"unit", "", nullptr, "the unit of its history.csv column", [](const S& s) -> Opt { return json(s.unit); }},
+      {"saturated_samples", "", nullptr, "samples at or beyond its range",
+       [](const S& s) -> Opt { return json(s.saturated_samples); }},
+      {"samples", "", nullptr, "samples in the run", [](const S& s) -> Opt { return json(s.samples); }},
+  };
+  // clang-format on
+  return fields;
 }
 
 std::string simulationHistoryCsv(const SimulationRecord& rec) {

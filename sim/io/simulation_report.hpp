@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/io/fields.hpp"
 #include "sim/time/simulation.hpp"
 #include "sim/time/target.hpp"
 
@@ -22,6 +23,11 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
 /// `simulate --target-error`: what the pilot found, each whole run verified, the cost.
 std::string targetText(const TargetOutcome& t);
 nlohmann::ordered_json targetJson(const TargetOutcome& t);
+/// The summary's per-joint and per-sensor rows (summary.json's torques and sensors, the
+/// text tables' values, Python's SimulateResult.torques_table() and sensors_table()).
+/// JSON only: a run's CSV is its history.
+const std::vector<Field<JointTorqueSummary>>& jointTorqueFields();
+const std::vector<Field<SensorSummary>>& sensorSummaryFields();
 /// history.csv: one header row (names with units), one row per sample, %.10g.
 std::string simulationHistoryCsv(const SimulationRecord& rec);
 
