@@ -9,6 +9,7 @@
 #include "renders/frame.hpp"
 #include "sim/view/article_drawing.hpp"
 #include "sim/view/hamsas_drawing.hpp"
+#include "sim/view/run_pose.hpp"
 #include "sim/io/run_dir.hpp"
 #include "sim/io/simulation_report.hpp"
 #include "sim/model/article_builder.hpp"
@@ -71,14 +72,14 @@ void BM_RenderHistoryFrame(benchmark::State& st) {
   std::vector<mmv::render::Trace> traces(2);
   for (const auto& row : r.record.rows)
     for (int k = 0; k < 2; ++k) traces[k].t.push_back(row[0]), traces[k].v.push_back(row[row.size() - 1 - k]);
-  mmv::setRunCoordinates(run.states, 0.0, *model, s);
+  mmv::setRunPose(mmv::rowAt(run.states, 0.0), 0.0, *model, s);
   mmv::Camera c;
   mmv::presetCamera("front", mmv::drawArticle(scene, *model, s).bounds(), c);
   const mmv::render::FrameOptions o{768, 720, 3};
   double t = 0;
   for (auto _ : st) {
     t = std::fmod(t + 1.0 / 30, 1.0);
-    mmv::setRunCoordinates(run.states, t, *model, s);
+    mmv::setRunPose(mmv::rowAt(run.states, t), t, *model, s);
     cv::Mat img;
     cv::hconcat(mmv::render::renderFrame(mmv::drawArticle(scene, *model, s), c, o), mmv::render::tracePanel(traces, t, {512, 720}), img);
     benchmark::DoNotOptimize(img);

@@ -276,6 +276,26 @@ TEST(Architecture, PlainDataHasNoSimbody) {
   }
 }
 
+/// sim/io holds readers and writers of plain results: a line that asks a Simbody model
+/// or state for something (a computation a study owes its writers) is reported.
+std::vector<std::string> writerViolations(const std::string& path, const std::string& text) {
+  if (folderOf(path) != "sim/io") return {};
+  static const std::regex simbody(R"(\bSimTK::|\brealize\s*\(|\bgetSystem\s*\()");
+  std::vector<std::string> out;
+  std::istringstream lines(stripCode(text));
+  std::string line;
+  for (int n = 1; std::getline(lines, line); ++n)
+    if (std::regex_search(line, simbody))
+      out.push_back(path + ":" + std::to_string(n) + ": sim/io asks Simbody: compute it in the study (sim/app) or a "
+                    "lower layer and hand the writer plain data");
+  return out;
+}
+
+TEST(Architecture, WritersTakePlainData) {
+  for (const auto& p : sources({"sim/io"}))
+    for (const auto& v : writerViolations(repoPath(p), slurp(p))) ADD_FAILURE() << v;
+}
+
 TEST(Architecture, FilesAndFunctionsStaySmall) {
   for (const auto& p : sources({"sim"})) {
     const std::string text = slurp(p);
@@ -314,6 +334,9 @@ TEST(Architecture, ChecksCatchWhatTheyShould) {
   EXPECT_TRUE(boundaryViolations("sim/app/x.cpp", "throw UsageError(std::to_string(std::stoi(x)));\n").empty());
   EXPECT_TRUE(boundaryViolations("sim/scene/read_x.cpp", "double v = std::strtod(s, &e);\n").empty());
   EXPECT_EQ(boundaryViolations("sim/scene/read_x.cpp", "throw UsageError(\"x\");\n").size(), 1u);
+  EXPECT_EQ(writerViolations("sim/io/x.cpp", "SimTK::State st = s;\nmodel.getSystem().realize(st, x);\n").size(), 2u);
+  EXPECT_TRUE(writerViolations("sim/view/x.cpp", "SimTK::State st = s;\n").empty());
+  EXPECT_TRUE(writerViolations("sim/io/x.cpp", "// SimTK::State in a comment\nconst char* t = \"realize(\";\n").empty());
   std::string body = "namespace a {\nint f(int x) {\n";
   for (int i = 0; i < 90; ++i) body += "  x += 1;  // }\n";
   body += "  auto g = [&]() { return \"}\"; };\n  return x;\n}\nstruct S {\n  int h() { return 1; }\n};\n}\n";

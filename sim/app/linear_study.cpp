@@ -246,6 +246,7 @@ LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& re
     tbb::parallel_invoke([&] { a.lm.second_order.prepare(); }, [&] { a.red = reduceModal(a.lm.full, reductionOptions(r)); });
   }
   a.scene = std::move(scene);
+  a.geometry = linearTestGeometry(a.lm, a.scene, kLinearModelModes);
   respond(r, grid, a);
   estimateMeshError(r, a);
   if (a.segments && a.err.needed.reached && a.err.needed.modes != r.rom_modes) {

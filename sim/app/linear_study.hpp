@@ -14,6 +14,7 @@
 
 #include "sim/app/study.hpp"
 #include "sim/linear/state_space.hpp"
+#include "sim/linear/test_geometry.hpp"
 #include "sim/modes/converge.hpp"
 
 namespace mmv::app {
@@ -63,6 +64,7 @@ struct LinearStudy {
   int mesh_mode = 0;
   double mesh_mode_hz = 0, mesh_mode_error = 0, mesh_mode_zeta = 0;
   std::string mesh_note;  ///< why not estimated
+  TestGeometry geometry;  ///< nodes, trace lines and the first kLinearModelModes shapes (frf.uff)
 
   std::string summaryText() const;                ///< frf's and rom's text report
   nlohmann::ordered_json frfJson() const;         ///< `frf --json`

@@ -71,7 +71,7 @@ void writeFrfFiles(const LinearArgs& args, const app::LinearStudy& a, OutputDir&
         throw OutputError(e.what());
       }
     }
-  out.write("frf.uff", frfUff(a.lm, a.scene, a.f, a.hf));
+  out.write("frf.uff", frfUff(a.lm, a.geometry, a.scene, a.f, a.hf));
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "sim/core/text.hpp"
 #include "sim/view/article_drawing.hpp"
 #include "sim/view/hamsas_drawing.hpp"
+#include "sim/view/run_pose.hpp"
 #include "sim/io/run_dir.hpp"
 #include "sim/model/article_builder.hpp"
 
@@ -57,7 +58,7 @@ DrawAt articleFrames(const RunDir& run, std::shared_ptr<Model>& model) {
   checkRunModel(run, *model);
   auto state = std::make_shared<SimTK::State>(model->getReferenceState());
   return [&run, model, state](double t) {
-    setRunCoordinates(run.states, t, *model, *state);
+    setRunPose(rowAt(run.states, t), t, *model, *state);  // between the samples around t
     DrawList d = drawArticle(run.scene, *model, *state);
     d.title += strf("  t = %.3f s", t);
     return d;

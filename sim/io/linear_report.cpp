@@ -15,7 +15,6 @@
 
 namespace mmv {
 
-const char* const kBaseNode = "base";
 
 std::string safeFileName(std::string s) {
   for (char& c : s)
@@ -192,77 +191,28 @@ void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::v
 
 }  // namespace
 
-/// The UFF file for a linear model: nodes at the equilibrium's named points, a trace
-/// line per link, the first mode shapes, and every FRF (or transmissibility) pair.
-std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
+/// The UFF file for a linear model: its test geometry (nodes, a trace line per link, the
+/// first mode shapes) and every FRF (or transmissibility) pair.
+std::string frfUff(const LinearModel& lm, const TestGeometry& g, const ArticleScene& scene, const std::vector<double>& f,
                    const std::vector<Eigen::MatrixXcd>& h) {
-  const Model& model = *lm.solved.model;
   uff::File file;
   file.model_name = scene.name;
   file.description = "mmvlab frf: " + scene.source;
   stampNow(file);
-  std::map<std::string, int> label;
-  SimTK::State st = lm.solved.equilibrium.state;
-  model.getSystem().realize(st, SimTK::Stage::Position);
-  for (const auto& p : model.getPoints()) {
-    const SimTK::Vec3 x = model.findPointLocation(st, p);
-    const int id = static_cast<int>(file.nodes.size()) + 1;
-    label[p.name] = id;
-    file.nodes.push_back({id, {x[0], x[1], x[2]}});
-  }
-  // Stations the functions refer to are nodes too, after the mesh's points.
-  std::vector<std::string> used;
-  for (const auto& out : lm.outputs) used.push_back(out.point);
-  for (const auto& in : lm.inputs)
-    if (in.kind == InputKind::PointForce || in.kind == InputKind::PointMoment) used.push_back(in.target);
-  for (const auto& name : used) {
-    std::string error;
-    if (label.count(name)) continue;
-    const std::optional<PointRef> p = PointRef::resolve(model, scene.article, name, error);
-    MMV_DEMAND(p.has_value());  // the linear model resolved it already
-    const SimTK::Vec3 x = p->position(st);
-    const int id = static_cast<int>(file.nodes.size()) + 1;
-    label[name] = id;
-    file.nodes.push_back({id, {x[0], x[1], x[2]}});
-  }
-  {  // the base (the table's top, where a base input is measured): the reference of table inputs
-    const int id = static_cast<int>(file.nodes.size()) + 1;
-    label[kBaseNode] = id;
-    const auto& b = scene.article.base.position;
-    file.nodes.push_back({id, {b[0], b[1], b[2]}});
-  }
-  int trace = 1;
-  for (const auto& l : scene.article.links) {
-    uff::TraceLine t{trace++, l.name, {}};
-    t.nodes.push_back(label[l.name + ".root"]);
-    for (int k = 1; !l.rigid && k <= l.segments; ++k) t.nodes.push_back(label[l.name + ".h" + std::to_string(k)]);
-    t.nodes.push_back(label[l.name + ".tip"]);
-    file.trace_lines.push_back(t);
-  }
-  const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
-  const std::size_t d = model.isSpatial() ? 3 : 2;
-  // 6 DOF per node: each point's body rotation too (about z only on the planar model).
-  std::vector<SimTK::MobilizedBodyIndex> bodies;
-  for (const auto& p : model.getPoints()) bodies.push_back(p.mobod);
-  const Eigen::MatrixXd Jp = model.calcFrameJacobians(st, bodies, std::vector<SimTK::Vec3>(bodies.size(), SimTK::Vec3(0)),
-                                                      lm.solved.linearized.dofs);
-  const ModalSolution& modes = lm.solved.modes;
-  const int count = std::min<int>(kLinearModelModes, static_cast<int>(modes.omega2.size()));
-  const ModalDamping damping = modalDamping(model, lm.solved.linearized, modes, lm.damping, count);
-  for (int k = 0; k < count; ++k) {
+  for (const auto& n : g.nodes) file.nodes.push_back({n.id, n.xyz});
+  for (const auto& t : g.traces) file.trace_lines.push_back({t.id, t.name, t.nodes});
+  for (const auto& s : g.modes) {
     uff::ModeShape m;
-    m.mode = k + 1;
-    m.frequency_hz = modes.frequencyHz(k);
+    m.mode = s.mode;
+    m.frequency_hz = s.frequency_hz;
     m.modal_mass = 1.0;
-    m.damping_ratio = k < static_cast<int>(damping.ratio.size()) ? damping.ratio[k] : 0.0;
-    const Eigen::VectorXd u = P * modes.shapes.col(k), w = Jp * modes.shapes.col(k);
-    for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
-      m.nodes.push_back(static_cast<int>(p) + 1);
-      m.translations.push_back({u[d * p], u[d * p + 1], d == 3 ? u[d * p + 2] : 0.0});
-      m.rotations.push_back({w[6 * p], w[6 * p + 1], w[6 * p + 2]});
-    }
+    m.damping_ratio = s.damping_ratio;
+    for (std::size_t p = 0; p < s.translation.size(); ++p) m.nodes.push_back(static_cast<int>(p) + 1);
+    m.translations = s.translation;
+    m.rotations = s.rotation;
     file.modes.push_back(m);
   }
+  std::map<std::string, int> label = g.id_of;
   addFunctions(lm, scene, f, h, label, file);
   return uff::write(file);
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim/linear/state_space.hpp"
+#include "sim/linear/test_geometry.hpp"
 
 namespace mmv {
 
@@ -29,14 +30,11 @@ std::string linearSummaryText(const LinearModel& lm, const ReducedModel& red, co
 nlohmann::ordered_json linearSummaryJson(const LinearModel& lm, const ReducedModel& red, const ModelError& err,
                                          const std::vector<double>& f, const std::vector<Eigen::MatrixXcd>& hf,
                                          const std::string& scene_name);
-/// The name of the UFF node at the article's base (scene base.position): the reference
-/// node of every function whose input is the table's acceleration.
-extern const char* const kBaseNode;
-/// The UFF file: nodes at the equilibrium's named points and the base, a trace line per
-/// link, the first 12 mode shapes with their damping ratios under the model's damping
-/// (sim/modes/damping.hpp), and every FRF (or transmissibility) pair of `h` at f (Hz),
-/// each referred to a node the file defines.
-std::string frfUff(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
+/// The UFF file: the test geometry `g` (sim/linear/test_geometry.hpp: nodes at the
+/// equilibrium's named points and the base, a trace line per link, the first mode shapes
+/// with their damping ratios under the model's damping), and every FRF (or
+/// transmissibility) pair of `h` at f (Hz), each referred to a node the file defines.
+std::string frfUff(const LinearModel& lm, const TestGeometry& g, const ArticleScene& scene, const std::vector<double>& f,
                    const std::vector<Eigen::MatrixXcd>& h);
 /// frf_<output>__<input>.csv: magnitude (dB and in units), phase, and the reduced model's.
 std::string frfCsv(const StateSpace& s, Eigen::Index o, Eigen::Index i, const std::vector<double>& f,

@@ -98,12 +98,6 @@ std::vector<double> rowAt(const CsvTable& table, double t) {
   return out;
 }
 
-void setRunCoordinates(const CsvTable& states, double t, const Model& model, SimTK::State& s) {
-  const std::vector<double> row = rowAt(states, t);
-  for (int i = 0; i < model.getNumCoordinates(); ++i) s.updQ()[model.getQIndex(i)] = row[static_cast<std::size_t>(i) + 1];
-  s.setTime(t);
-  model.getSystem().realize(s, SimTK::Stage::Position);
-}
 
 RunDir readRunDir(const std::string& dir, const std::string& scene_path) {
   RunDir r;

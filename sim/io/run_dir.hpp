@@ -46,8 +46,4 @@ void checkRunModel(const RunDir& run, const Model& model);
 /// The row of `table` at time t: linear between the samples around it, held at the ends.
 std::vector<double> rowAt(const CsvTable& table, double t);
 
-/// The run's coordinates at time t (linear between the samples around it; held at the
-/// ends) into `s`, realized to Position.
-void setRunCoordinates(const CsvTable& states, double t, const Model& model, SimTK::State& s);
-
 }  // namespace mmv

@@ -6,6 +6,7 @@
 
 #include "sim/io/run_dir.hpp"
 #include "sim/io/simulation_report.hpp"
+#include "sim/view/run_pose.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
 #include "sim/model/article_builder.hpp"
 
@@ -28,7 +29,7 @@ TEST(RunDir, RecordedCoordinatesPutTheTipsWhereTheRunHadThem) {
   SimTK::State s = model->getReferenceState();
   int checked = 0;
   for (std::size_t k = 0; k < run.history.rows.size(); k += 10) {
-    setRunCoordinates(run.states, run.history.rows[k][0], *model, s);
+    setRunPose(rowAt(run.states, run.history.rows[k][0]), run.history.rows[k][0], *model, s);
     for (const char* tip : {"link2.tip", "link3a.tip"}) {
       const SimTK::Vec3 x = model->findPointLocation(s, *model->findPoint(tip));
       const int cx = run.history.column(csvColumnName(std::string(tip) + "_x_m")),
@@ -42,7 +43,7 @@ TEST(RunDir, RecordedCoordinatesPutTheTipsWhereTheRunHadThem) {
   EXPECT_GE(checked, 20);
   // Between two samples: the coordinates halfway.
   const auto& a = run.states.rows[3], &b = run.states.rows[4];
-  setRunCoordinates(run.states, 0.5 * (a[0] + b[0]), *model, s);
+  setRunPose(rowAt(run.states, 0.5 * (a[0] + b[0])), 0.5 * (a[0] + b[0]), *model, s);
   for (int i = 0; i < model->getNumCoordinates(); ++i)
     EXPECT_NEAR(s.getQ()[model->getQIndex(i)], 0.5 * (a[i + 1] + b[i + 1]), 1e-15);
   // Another mesh is another model: refused.
