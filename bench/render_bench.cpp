@@ -33,7 +33,7 @@ BENCHMARK(BM_RenderArticleFrame)->Args({1280, 720})->Args({1920, 1080})->Unit(be
 void BM_RenderModeFrame(benchmark::State& st) {
   const mmv::ArticleScene scene = mmv::loadDefaultScene();
   const mmv::SolvedScene solved = mmv::solveScene(scene);
-  const mmv::ModeFrames frames(scene, solved, 0, 0.0);
+  const mmv::ModeFrames frames(scene, solved, mmv::ModeNumber(1), 0.0);
   mmv::Camera c;
   mmv::presetCamera("front", frames.frame(1.0).bounds(), c);
   const mmv::render::FrameOptions o{static_cast<int>(st.range(0)), static_cast<int>(st.range(1)), 3};

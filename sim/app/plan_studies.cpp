@@ -40,7 +40,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   checkRange(r.front, "--count", r.count, 1, 100000);
   if (!parsePlacementMethod(r.method, o.method))
     throw UsageError(opt("--method") + ": unknown method '" + r.method + "' (known: efi, mke, dpr)");
-  o.modes = r.modes;
+  o.modes = modeNumbers(r.modes);  // the front end's numbers, checked above
   o.below_hz = r.below_hz;
   o.spacing_m = r.spacing_m;
   o.triaxial = r.triaxial;

@@ -40,9 +40,9 @@ std::vector<int> parseModeList(const std::string& text) {
 
 /// The review renders, for either kind of scene: the still drawing (`still`) with the
 /// chosen sensors coloured by their score, and a contact sheet of the target modes
-/// (`mode(m)`, 1-based) with the sensors on them, seen from preset `view`.
+/// (`mode(m)`) with the sensors on them, seen from preset `view`.
 void writeReviewRenders(OutputDir& out, const PlacementStudy& s, const std::string& scene_name, DrawList d,
-                        const std::function<DrawList(int)>& mode, const std::string& view) {
+                        const std::function<DrawList(ModeNumber)>& mode, const std::string& view) {
   std::vector<Eigen::Vector3d> at;
   std::vector<std::string> names;
   std::vector<double> scores;
@@ -61,7 +61,7 @@ void writeReviewRenders(OutputDir& out, const PlacementStudy& s, const std::stri
   figures::framePng(out.stage("review_sensors.png"), d, camera, {1280, 720, 3});
   std::vector<DrawList> tiles;
   std::vector<Camera> cameras;
-  for (int m : s.target_modes) {
+  for (const ModeNumber m : s.target_modes) {
     DrawList md = mode(m);
     addSensorMarks(md, at, std::vector<std::string>(at.size()));
     Camera c;
@@ -77,7 +77,7 @@ void writeArticleReviewRenders(OutputDir& out, const ArticleScene& scene, const 
   SimTK::State st = solved.equilibrium.state;
   solved.model->getSystem().realize(st, SimTK::Stage::Position);
   writeReviewRenders(out, s, scene.name, drawArticle(scene, *solved.model, st),
-                     [&](int m) { return ModeFrames(scene, solved, m - 1, 0.0).frame(1.0, true); },
+                     [&](ModeNumber m) { return ModeFrames(scene, solved, m, 0.0).frame(1.0, true); },
                      scene.article.model == ArticleModel::Spatial ? "iso" : "front");  // the front view hides z
 }
 
@@ -87,7 +87,7 @@ void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const Ha
     return d;
   };
   writeReviewRenders(out, s, scene.name, bare(drawHamsas(scene, h)),
-                     [&](int m) { return bare(drawHamsas(scene, h, m - 1, 1.0, 0.0, true)); }, "iso");
+                     [&](ModeNumber m) { return bare(drawHamsas(scene, h, m, 1.0, 0.0, true)); }, "iso");
 }
 
 }  // namespace
@@ -114,8 +114,8 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       out->write("automac.csv", placementAutoMacCsv(s));
       std::vector<std::string> rows, cols;
       for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
-        rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j], s.target_frequencies_hz[j]));
-        cols.push_back(strf("%d %.3g Hz", s.target_modes[j], s.target_frequencies_hz[j]));  // two lines under the column
+        rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j].number(), s.target_frequencies_hz[j]));
+        cols.push_back(strf("%d %.3g Hz", s.target_modes[j].number(), s.target_frequencies_hz[j]));  // two lines under the column
       }
       try {
         figures::heatmap(out->stage("automac.png"), s.result.automac, rows, cols,

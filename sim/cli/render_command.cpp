@@ -48,7 +48,7 @@ std::string extensionOf(const std::string& path) {
 struct Drawings {
   int modes = 0;
   std::function<DrawList()> still;
-  std::function<DrawList(int mode, double phase, bool short_title)> mode;
+  std::function<DrawList(ModeNumber mode, double phase, bool short_title)> mode;
 };
 
 void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings& dr, const std::vector<CameraView>& views) {
@@ -70,7 +70,7 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
     const ProgressStage stage("drawing the modes");
     for (int m : modes) {
       progressCount(static_cast<long>(tiles.size()) + 1, static_cast<long>(modes.size()), "mode");
-      const DrawList d = dr.mode(m - 1, 1.0, modes.size() > 1);
+      const DrawList d = dr.mode(ModeNumber(m), 1.0, modes.size() > 1);
       tiles.push_back(render::renderFrame(d, cameraFor(d), frame));
     }
     const cv::Mat img = tiles.size() == 1 ? tiles[0] : render::contactSheet(tiles, std::min<int>(3, tiles.size()));
@@ -78,13 +78,13 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
     return;
   }
   if (modes.size() != 1) throw UsageError("--mode " + args.mode + ": a video shows one mode's cycle");
-  const Camera cam = cameraFor(dr.mode(modes[0] - 1, 1.0, false));  // one camera for every frame
+  const Camera cam = cameraFor(dr.mode(ModeNumber(modes[0]), 1.0, false));  // one camera for every frame
   writeAtomically(args.out, args.force, [&](const std::string& p) {
     render::VideoSink video(p, 24.0, cv::Size(frame.width, frame.height));
     const ProgressStage stage("drawing the mode's cycle");
     for (int i = 0; i < 48; ++i) {
       progressCount(i + 1, 48, "frame");
-      video.write(render::renderFrame(dr.mode(modes[0] - 1, std::sin(2 * M_PI * i / 48), false), cam, frame));
+      video.write(render::renderFrame(dr.mode(ModeNumber(modes[0]), std::sin(2 * M_PI * i / 48), false), cam, frame));
     }
     video.close();
   });
@@ -115,12 +115,14 @@ int runRenderCommand(const RenderArgs& given) {
       const HamsasModes modes = analyseHamsas(h->isolator);
       dr.modes = static_cast<int>(modes.modes.size());
       dr.still = [&] { return drawHamsas(*h, modes); };
-      dr.mode = [&](int m, double phase, bool short_title) { return drawHamsas(*h, modes, m, phase, args.scale, short_title); };
+      dr.mode = [&](ModeNumber m, double phase, bool short_title) {
+        return drawHamsas(*h, modes, m, phase, args.scale, short_title);
+      };
       writeFrames(args, ext, dr, {});
     } else {
       const ArticleScene& scene = std::get<ArticleScene>(loaded);
       const SolvedScene solved = solveScene(scene);
-      std::map<int, std::unique_ptr<ModeFrames>> cache;  // each mode's shape computed once
+      std::map<ModeNumber, std::unique_ptr<ModeFrames>> cache;  // each mode's shape computed once
       dr.modes = static_cast<int>(solved.modes.omega2.size());
       dr.still = [&] {
         SimTK::State st = solved.equilibrium.state;
@@ -129,7 +131,7 @@ int runRenderCommand(const RenderArgs& given) {
         d.title += "  (static equilibrium)";
         return d;
       };
-      dr.mode = [&](int m, double phase, bool short_title) {
+      dr.mode = [&](ModeNumber m, double phase, bool short_title) {
         auto& f = cache[m];
         if (!f) f = std::make_unique<ModeFrames>(scene, solved, m, args.scale);
         return f->frame(phase, short_title);

@@ -6,12 +6,12 @@
 
 namespace mmv {
 
-PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<int>& targets, bool triaxial,
+PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,
                                   std::vector<PlacementCandidate>& candidates) {
   const int k = static_cast<int>(targets.size());
   PlacementProblem p;
   p.omega.resize(k);
-  for (int j = 0; j < k; ++j) p.omega[j] = 2 * M_PI * h.solution.frequencyHz(targets[j] - 1);
+  for (int j = 0; j < k; ++j) p.omega[j] = 2 * M_PI * h.solution.frequencyHz(targets[j].index());
   std::vector<Eigen::RowVectorXd> rows;
   std::vector<double> masses;
   const char* axes[3] = {"x", "y", "z"};
@@ -28,7 +28,7 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<int>& 
       // Each target mode's translation there: the body's translation plus its small rotation x offset.
       Eigen::MatrixXd u(3, k);
       for (int j = 0; j < k; ++j) {
-        const Eigen::VectorXd phi = h.solution.shapes.col(targets[j] - 1);
+        const Eigen::VectorXd phi = h.solution.shapes.col(targets[j].index());
         u.col(j) = phi.segment<3>(r) + phi.segment<3>(r + 3).cross(offset);
       }
       for (int a = 0; a < 3; ++a) {
@@ -51,7 +51,7 @@ PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h
   study.method = placementMethodName(o.method);
   study.triaxial = o.triaxial;
   study.target_modes = placementTargets(h.solution, o);
-  for (int m : study.target_modes) study.target_frequencies_hz.push_back(h.solution.frequencyHz(m - 1));
+  for (const ModeNumber m : study.target_modes) study.target_frequencies_hz.push_back(h.solution.frequencyHz(m.index()));
   const PlacementProblem p = hamsasCandidates(h, study.target_modes, o.triaxial, study.candidates);
   choosePlacement(study, p, o, 3, "the centre and 8 corners of each of " + std::to_string(h.model.bodies.size() - 1) + " bodies");
   return study;

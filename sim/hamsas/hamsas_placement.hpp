@@ -15,8 +15,8 @@
 namespace mmv {
 
 /// The candidates (one per block, appended to `candidates`) and their rows of the
-/// target modes' shapes (1-based `targets`).
-PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<int>& targets, bool triaxial,
+/// target modes' shapes.
+PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,
                                   std::vector<PlacementCandidate>& candidates);
 
 /// As runPlacement for an article; `options.spacing_m` does not apply (the points are

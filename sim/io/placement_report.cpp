@@ -20,7 +20,7 @@ std::vector<std::pair<int, int>> indistinguishableModes(const PlacementStudy& s)
   const Eigen::MatrixXd& mac = s.result.automac;
   for (Eigen::Index i = 0; i < mac.rows(); ++i)
     for (Eigen::Index j = i + 1; j < mac.cols(); ++j)
-      if (mac(i, j) > kIndistinguishable) out.push_back({s.target_modes[i], s.target_modes[j]});
+      if (mac(i, j) > kIndistinguishable) out.push_back({s.target_modes[i].number(), s.target_modes[j].number()});
   return out;
 }
 
@@ -31,7 +31,7 @@ std::string placementText(const PlacementStudy& s) {
      << s.method << " from " << s.candidates.size() << " candidates\n";
   os << "Target modes (Hz):";
   for (std::size_t j = 0; j < s.target_modes.size(); ++j)
-    os << strf(" %d (%.4g)", s.target_modes[j], s.target_frequencies_hz[j]);
+    os << strf(" %d (%.4g)", s.target_modes[j].number(), s.target_frequencies_hz[j]);
   os << "\n\n";
   Table t({"station", "axis", "x_m", "y_m", "z_m", s.method == "effective independence" ? "EfI" : "score"});
   for (std::size_t i = 0; i < r.kept_blocks.size(); ++i) {
@@ -92,7 +92,8 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   j["scene"] = s.scene_name;
   j["method"] = s.method;
   j["sensor"] = s.triaxial ? "triaxial" : "uniaxial";
-  j["target_modes"] = s.target_modes;
+  j["target_modes"] = nlohmann::ordered_json::array();
+  for (const ModeNumber m : s.target_modes) j["target_modes"].push_back(m.number());
   j["target_frequencies_hz"] = s.target_frequencies_hz;
   j["candidates"] = s.candidates.size();
   auto chosen = nlohmann::ordered_json::array();
@@ -116,10 +117,10 @@ std::string placementCandidatesCsv(const PlacementStudy& s) {
 std::string placementAutoMacCsv(const PlacementStudy& s) {
   std::ostringstream os;
   os << "mode";
-  for (int m : s.target_modes) os << ",mode_" << m;
+  for (const ModeNumber m : s.target_modes) os << ",mode_" << m.number();
   os << '\n';
   for (Eigen::Index i = 0; i < s.result.automac.rows(); ++i) {
-    os << s.target_modes[i];
+    os << s.target_modes[i].number();
     for (Eigen::Index j = 0; j < s.result.automac.cols(); ++j) os << ',' << strf("%.6f", s.result.automac(i, j));
     os << '\n';
   }

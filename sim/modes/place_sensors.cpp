@@ -17,19 +17,21 @@ namespace {
 
 }  // namespace
 
-std::vector<int> placementTargets(const ModalSolution& modes, const PlacementOptions& o) {
-  std::vector<int> out;
+std::vector<ModeNumber> placementTargets(const ModalSolution& modes, const PlacementOptions& o) {
+  std::vector<ModeNumber> out;
   const int n = static_cast<int>(modes.omega2.size());
   if (o.modes.empty()) {
     for (int i = 0; i < n; ++i)
-      if (modes.isStable(i) && !modes.isRigidBody(i) && modes.frequencyHz(i) < o.below_hz) out.push_back(i + 1);
+      if (modes.isStable(i) && !modes.isRigidBody(i) && modes.frequencyHz(i) < o.below_hz) out.push_back(ModeNumber::atIndex(i));
     if (out.empty()) throw OptionError("--below-hz", ": no vibration mode below " + std::to_string(o.below_hz) + " Hz");
     return out;
   }
-  for (int m : o.modes) {
-    if (m < 1 || m > n) throw OptionError("--modes", ": mode " + std::to_string(m) + " does not exist (the model has " + std::to_string(n) + ")");
-    if (!modes.isStable(m - 1) || modes.isRigidBody(m - 1))
-      throw OptionError("--modes", ": mode " + std::to_string(m) + " is not a vibration mode (rigid or unstable)");
+  for (const ModeNumber m : o.modes) {
+    const std::string named = ": mode " + std::to_string(m.number());
+    if (m.index() < 0 || m.index() >= n)
+      throw OptionError("--modes", named + " does not exist (the model has " + std::to_string(n) + ")");
+    if (!modes.isStable(m.index()) || modes.isRigidBody(m.index()))
+      throw OptionError("--modes", named + " is not a vibration mode (rigid or unstable)");
     out.push_back(m);
   }
   return out;
@@ -75,8 +77,8 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   PlacementProblem p;
   p.omega.resize(k);
   for (int j = 0; j < k; ++j) {
-    shapes.col(j) = s.modes.shapes.col(study.target_modes[j] - 1);
-    study.target_frequencies_hz.push_back(s.modes.frequencyHz(study.target_modes[j] - 1));
+    shapes.col(j) = s.modes.shapes.col(study.target_modes[j].index());
+    study.target_frequencies_hz.push_back(s.modes.frequencyHz(study.target_modes[j].index()));
     p.omega[j] = 2 * M_PI * study.target_frequencies_hz.back();
   }
   std::vector<Eigen::RowVectorXd> rows;

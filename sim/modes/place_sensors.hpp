@@ -17,13 +17,14 @@
 #include <vector>
 
 #include "sim/modes/modal.hpp"
+#include "sim/core/mode_number.hpp"
 #include "sim/modes/sensor_placement.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv {
 
 struct PlacementOptions {
-  std::vector<int> modes;     ///< target modes, 1-based; empty: every mode below `below_hz`.
+  std::vector<ModeNumber> modes;  ///< target modes; empty: every mode below `below_hz`.
   double below_hz = 50;       ///< Hz (the report's 0.1-50 Hz band).
   double spacing_m = 0.1;     ///< m between candidate stations.
   bool triaxial = false;
@@ -47,7 +48,7 @@ struct PlacementStudy {
   std::string scene_name;
   std::string method;
   bool triaxial = false;
-  std::vector<int> target_modes;             ///< 1-based.
+  std::vector<ModeNumber> target_modes;
   std::vector<double> target_frequencies_hz;
   std::vector<PlacementCandidate> candidates;  ///< one per block.
   PlacementResult result;
@@ -58,9 +59,9 @@ struct PlacementStudy {
 /// modes analysis or when the candidates cannot see every target mode.
 PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& options);
 
-/// What every kind of placement shares. The target modes (1-based): `options.modes`, or
-/// every vibration mode below `options.below_hz` (UsageError as runPlacement).
-std::vector<int> placementTargets(const ModalSolution& modes, const PlacementOptions& options);
+/// What every kind of placement shares. The target modes: `options.modes`, or every
+/// vibration mode below `options.below_hz` (UsageError as runPlacement).
+std::vector<ModeNumber> placementTargets(const ModalSolution& modes, const PlacementOptions& options);
 /// Checks the count against `study.candidates` (one per block; `directions` rows per
 /// triaxial block; `where` says what the candidates are, for the message) and fills
 /// `study.result` from `p`.

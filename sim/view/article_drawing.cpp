@@ -185,13 +185,13 @@ DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK:
   return d;
 }
 
-ModeFrames::ModeFrames(const ArticleScene& scene, const SolvedScene& solved, int mode, double scale)
+ModeFrames::ModeFrames(const ArticleScene& scene, const SolvedScene& solved, ModeNumber mode, double scale)
     : scene_(scene), solved_(solved), mode_(mode) {
   const Model& model = *solved.model;
-  MMV_DEMAND(mode >= 0 && mode < solved.modes.omega2.size());
+  MMV_DEMAND(mode.index() >= 0 && mode.index() < solved.modes.omega2.size());
   SimTK::State eq = solved.equilibrium.state;
   model.getSystem().realize(eq, SimTK::Stage::Position);
-  const Eigen::VectorXd phi = solved.modes.shapes.col(mode);
+  const Eigen::VectorXd phi = solved.modes.shapes.col(mode.index());
   const std::vector<int>& dofs = solved.linearized.dofs;
   // The shape as the linear model has it: every centreline point displaced by its
   // translation per unit modal coordinate (the stations' Jacobians times phi), scaled
@@ -232,17 +232,17 @@ DrawList ModeFrames::frame(double phase, bool short_title) const {
   d.color_bar = {"|u| (m, drawn shape)", 0.0, peak_};
   d.legend.push_back({"equilibrium (ghost)", {0.6f, 0.6f, 0.6f, 1}});
   char title[256];
-  const double hz = solved_.modes.frequencyHz(mode_);
+  const double hz = solved_.modes.frequencyHz(mode_.index());
   if (short_title)
-    std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s (x %.3g)", mode_ + 1, hz, dominant_.c_str(), scale_);
+    std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s (x %.3g)", mode_.number(), hz, dominant_.c_str(), scale_);
   else
     std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz, most strain in %s, shape x %.3g (largest translation %.3g m)",
-                  scene_.name.c_str(), mode_ + 1, hz, dominant_.c_str(), scale_, peak_);
+                  scene_.name.c_str(), mode_.number(), hz, dominant_.c_str(), scale_, peak_);
   d.title = title;
   return d;
 }
 
-DrawList drawMode(const ArticleScene& scene, const SolvedScene& solved, int mode, double phase, double scale,
+DrawList drawMode(const ArticleScene& scene, const SolvedScene& solved, ModeNumber mode, double phase, double scale,
                   double* used_scale, bool short_title) {
   const ModeFrames frames(scene, solved, mode, scale);
   if (used_scale) *used_scale = frames.scale();

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "sim/core/drawing.hpp"
+#include "sim/core/mode_number.hpp"
 #include "sim/modes/system_modes.hpp"
 
 namespace mmv {
@@ -36,12 +37,12 @@ DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK:
 void addSensorMarks(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
                     const std::vector<double>& values = {});
 
-/// The frames of one mode (0-based): the shape is computed once, each frame only
+/// The frames of one mode: the shape is computed once, each frame only
 /// displaces it (an animation's 48 frames cost one Jacobian pass). `scale` > 0: metres
 /// of drawing per unit modal coordinate; 0: automatic.
 class ModeFrames {
  public:
-  ModeFrames(const ArticleScene& scene, const SolvedScene& solved, int mode, double scale);
+  ModeFrames(const ArticleScene& scene, const SolvedScene& solved, ModeNumber mode, double scale);
   /// The mode at `phase` (-1..1: the shape's sign and size).
   DrawList frame(double phase, bool short_title = false) const;
   double scale() const { return scale_; }
@@ -49,17 +50,17 @@ class ModeFrames {
  private:
   const ArticleScene& scene_;
   const SolvedScene& solved_;
-  int mode_;
+  ModeNumber mode_;
   double scale_ = 1, peak_ = 0;  ///< peak_: the largest drawn translation, m.
   std::string dominant_;         ///< the link holding most of the mode's strain energy.
   std::vector<std::vector<Eigen::Vector3d>> rest_, shape_;
   DrawList hardware_;
 };
 
-/// Mode `mode` (0-based) of a solved scene at phase `phase` (-1..1: the shape's sign and
+/// Mode `mode` of a solved scene at phase `phase` (-1..1: the shape's sign and
 /// size). `scale` > 0: metres of drawing per unit modal coordinate; 0: automatic.
 /// Returns the list; `used_scale` receives the scale drawn.
-DrawList drawMode(const ArticleScene& scene, const SolvedScene& solved, int mode, double phase, double scale,
+DrawList drawMode(const ArticleScene& scene, const SolvedScene& solved, ModeNumber mode, double phase, double scale,
                   double* used_scale = nullptr, bool short_title = false);
 
 }  // namespace mmv

@@ -97,7 +97,9 @@ void addPoints(DrawList& d, const SpatialSpec& s) {
 
 }  // namespace
 
-DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, double phase, double scale, bool short_title) {
+DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, std::optional<ModeNumber> shown, double phase,
+                    double scale, bool short_title) {
+  const int mode = shown ? shown->index() : -1;  // -1: at rest
   const SpatialSpec& s = h.model;
   DrawList d;
   d.up = Eigen::Vector3d::UnitZ();
@@ -130,9 +132,10 @@ DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode, do
     d.color_bar = {"|u| (m, drawn shape)", 0.0, k * peak};
     d.legend.push_back({"design configuration (ghost)", {0.6f, 0.6f, 0.6f, 1}});
     if (short_title)
-      std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s", mode + 1, h.modes[mode].frequency_hz, h.modes[mode].label.c_str());
+      std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s", shown->number(), h.modes[mode].frequency_hz,
+                    h.modes[mode].label.c_str());
     else
-      std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz (%s), shape x %.3g", scene.name.c_str(), mode + 1,
+      std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz (%s), shape x %.3g", scene.name.c_str(), shown->number(),
                     h.modes[mode].frequency_hz, h.modes[mode].label.c_str(), k);
   }
   d.title = title;

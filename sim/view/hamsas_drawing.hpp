@@ -9,7 +9,10 @@
 /// translation is 10 % of the isolator's extent unless given), coloured by that
 /// translation, over a translucent ghost.
 
+#include <optional>
+
 #include "sim/core/drawing.hpp"
+#include "sim/core/mode_number.hpp"
 #include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/scene/scene.hpp"
 
@@ -24,9 +27,9 @@ using BodyMotion = Eigen::Matrix<double, 6, 1>;
 DrawList drawHamsasMoved(const HamsasScene& scene, const HamsasModes& h, const std::vector<BodyMotion>& motion, double scale,
                          const std::string& title);
 
-/// The isolator at rest (mode < 0) or mode `mode` (0-based) at `phase` (-1..1).
+/// The isolator at rest (no mode) or mode `mode` at `phase` (-1..1).
 /// `scale` > 0: metres of drawing per unit modal coordinate; 0: automatic.
-DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, int mode = -1, double phase = 1.0, double scale = 0,
-                    bool short_title = false);
+DrawList drawHamsas(const HamsasScene& scene, const HamsasModes& h, std::optional<ModeNumber> mode = std::nullopt,
+                    double phase = 1.0, double scale = 0, bool short_title = false);
 
 }  // namespace mmv

@@ -80,8 +80,8 @@ TEST_F(Frame, ModeShapeMovesWhereTheShapeSaysAndNotAtNodes) {
   const ArticleScene scene = loadDefaultScene();
   const SolvedScene solved = solveScene(scene);
   double k = 0;
-  const DrawList plus = drawMode(scene, solved, 0, 1.0, 0.0, &k);
-  const DrawList minus = drawMode(scene, solved, 0, -1.0, k);
+  const DrawList plus = drawMode(scene, solved, ModeNumber(1), 1.0, 0.0, &k);
+  const DrawList minus = drawMode(scene, solved, ModeNumber(1), -1.0, k);
   Camera c;
   ASSERT_TRUE(presetCamera("front", plus.bounds(), c));
   const render::FrameOptions o{640, 480, 2};

@@ -34,3 +34,23 @@ TEST(Text, PrintableEscapesControlAndInvalidBytesOnly) {
 
 }  // namespace
 }  // namespace mmv
+
+// ModeNumber (sim/core/mode_number.hpp): the one place a mode's number and its position
+// in a frequency-ordered list are converted.
+#include "sim/core/mode_number.hpp"
+
+namespace mmv {
+namespace {
+
+TEST(ModeNumber, NumberAndIndexAreOneApart) {
+  EXPECT_EQ(ModeNumber(1).index(), 0);
+  EXPECT_EQ(ModeNumber::atIndex(0), ModeNumber(1));
+  EXPECT_EQ(ModeNumber::atIndex(11).number(), 12);
+  EXPECT_TRUE(ModeNumber(2) < ModeNumber(3));
+  const std::vector<ModeNumber> m = modeNumbers({2, 4, 6});
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[1].index(), 3);
+}
+
+}  // namespace
+}  // namespace mmv

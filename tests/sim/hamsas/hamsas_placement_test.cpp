@@ -16,14 +16,14 @@ const HamsasScene& isolator() {
 
 TEST(HamsasPlacement, RowsAreThePointJacobianTimesTheShapes) {
   const HamsasModes h = analyseHamsas(isolator().isolator);
-  const std::vector<int> targets{1, 4, 5, 7, 9};
+  const std::vector<ModeNumber> targets = modeNumbers({1, 4, 5, 7, 9});
   std::vector<PlacementCandidate> candidates;
   const PlacementProblem p = hamsasCandidates(h, targets, false, candidates);
   const int bodies = static_cast<int>(h.model.bodies.size());
   ASSERT_EQ(static_cast<int>(candidates.size()), 27 * (bodies - 1));  // 9 points x 3 axes per moving body
   ASSERT_EQ(p.phi.rows(), static_cast<Eigen::Index>(candidates.size()));
   Eigen::MatrixXd shapes(h.solution.shapes.rows(), static_cast<Eigen::Index>(targets.size()));
-  for (std::size_t j = 0; j < targets.size(); ++j) shapes.col(static_cast<Eigen::Index>(j)) = h.solution.shapes.col(targets[j] - 1);
+  for (std::size_t j = 0; j < targets.size(); ++j) shapes.col(static_cast<Eigen::Index>(j)) = h.solution.shapes.col(targets[j].index());
   double worst = 0, scale = 0;
   for (Eigen::Index r = 0; r < p.phi.rows(); r += 3) {
     const PlacementCandidate& c = candidates[static_cast<std::size_t>(r)];

@@ -228,7 +228,7 @@ TEST(PlacementFields, JsonAndCsvComeFromOneList) {
   overrideSegments(s, 4);
   PlacementOptions o;
   o.count = 6;
-  o.modes = {1, 2, 3};
+  o.modes = modeNumbers({1, 2, 3});
   const PlacementStudy p = runPlacement(s, o);
   const json chosen = placementJson(p)["chosen"];
   std::istringstream csv(placementCandidatesCsv(p));

@@ -152,7 +152,7 @@ TEST(SensorPlacement, RankingsKeepTheLargestScores) {
 TEST(SensorPlacement, TributaryMassesSumToTheLinkAndWhatItCarries) {
   ArticleScene s = loadDefaultScene();
   PlacementOptions o;
-  o.modes = {1, 2};
+  o.modes = modeNumbers({1, 2});
   o.count = 2;
   o.spacing_m = 0.1;
   o.method = PlacementMethod::ModalKineticEnergy;
@@ -187,10 +187,10 @@ TEST(SensorPlacement, SpatialCandidatesHaveANormalAxisThatOutOfPlaneModesNeed) {
   ArticleScene spatial = planar;
   spatial.article.model = ArticleModel::Spatial;
   PlacementOptions o;
-  o.modes = {1};
+  o.modes = modeNumbers({1});
   o.count = 1;
   const std::size_t planar_candidates = runPlacement(planar, o).candidates.size();
-  o.modes = {2, 4, 6};  // link 1's and link 3's out-of-plane modes (3.05, 3.33, 3.45 Hz)
+  o.modes = modeNumbers({2, 4, 6});  // link 1's and link 3's out-of-plane modes (3.05, 3.33, 3.45 Hz)
   o.count = 3;
   const PlacementStudy s = runPlacement(spatial, o);
   EXPECT_EQ(s.candidates.size(), planar_candidates / 2 * 3);

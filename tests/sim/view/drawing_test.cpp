@@ -93,7 +93,7 @@ namespace {
 
 /// The largest motion of the drawn items along world axis `axis` between the two
 /// extremes of mode `mode`'s cycle.
-double drawnSwing(const ArticleScene& scene, const SolvedScene& solved, int mode, int axis) {
+double drawnSwing(const ArticleScene& scene, const SolvedScene& solved, ModeNumber mode, int axis) {
   const DrawList up = drawMode(scene, solved, mode, 1.0, 0.0), down = drawMode(scene, solved, mode, -1.0, 0.0);
   EXPECT_EQ(up.items.size(), down.items.size());
   double swing = 0;
@@ -109,11 +109,11 @@ TEST(Drawing, SpatialModesLeaveThePlaneAsTheyBend) {
   ArticleScene scene = loadDefaultScene();
   scene.article.model = ArticleModel::Spatial;
   const SolvedScene solved = solveScene(scene);
-  EXPECT_GT(drawnSwing(scene, solved, 1, 2), 0.05);
-  EXPECT_LT(drawnSwing(scene, solved, 1, 0), 1e-9);
-  EXPECT_GT(drawnSwing(scene, solved, 0, 0), 0.05);
-  EXPECT_LT(drawnSwing(scene, solved, 0, 2), 1e-9);
-  EXPECT_NE(drawMode(scene, solved, 1, 1.0, 0.0).title.find("out-of-plane"), std::string::npos);
+  EXPECT_GT(drawnSwing(scene, solved, ModeNumber(2), 2), 0.05);
+  EXPECT_LT(drawnSwing(scene, solved, ModeNumber(2), 0), 1e-9);
+  EXPECT_GT(drawnSwing(scene, solved, ModeNumber(1), 0), 0.05);
+  EXPECT_LT(drawnSwing(scene, solved, ModeNumber(1), 2), 1e-9);
+  EXPECT_NE(drawMode(scene, solved, ModeNumber(2), 1.0, 0.0).title.find("out-of-plane"), std::string::npos);
 }
 
 }  // namespace
