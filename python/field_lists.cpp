@@ -17,6 +17,7 @@
 #include "sim/io/mode_fields.hpp"
 #include "sim/io/placement_report.hpp"
 #include "sim/io/simulation_report.hpp"
+#include "sim/io/tam_report.hpp"
 #include "sim/io/trade_report.hpp"
 
 namespace py = pybind11;
@@ -51,6 +52,7 @@ const std::map<std::string, std::function<py::list()>>& namedLists() {
       {"simulate_sensors", [] { return describe(mmv::sensorSummaryFields()); }},
       {"simulate_torques", [] { return describe(mmv::jointTorqueFields()); }},
       {"sweep_config_tracks", [] { return describe(mmv::trackFields()); }},
+      {"tam_modes", [] { return describe(mmv::tamModeFields()); }},
       {"trade_runs", [] { return describe(mmv::tradeRunFields()); }},
   };
   return lists;

@@ -166,7 +166,8 @@ py::tuple correlate(const PyScene& scene, int segments, const std::string& measu
 }
 
 py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int>& target_modes, std::optional<double> below_hz,
-                       double spacing, int count, bool triaxial, const std::string& method, py::object progress) {
+                       double spacing, int count, bool triaxial, const std::string& method, const std::vector<std::string>& tam,
+                       py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   const mmv::Scene& sc = prepared.scene;
   mmv::app::PlacementRequest r;
@@ -177,9 +178,10 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   r.count = count;
   r.triaxial = triaxial;
   r.method = method;
+  r.tam = tam;
   r.front = Front::Python;
   const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, prepared.warnings);
+  return py::make_tuple(s.json.dump(), s.text, s.tam_csv, prepared.warnings);
 }
 
 /// Responses H[k] (outputs x inputs) as one numpy array [frequency, output, input] that
@@ -488,5 +490,5 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("pair_distance"), py::arg("modes"), py::arg("mac_threshold"), py::arg("max_frequency_error"),
         py::arg("damping"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),
-        py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("progress"));
+        py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("tam"), py::arg("progress"));
 }

@@ -178,13 +178,22 @@ class CheckResult(Result):
 class PlacementResult(Result):
     """The chosen sensors: `.chosen` (dicts as in placement.json: station, link, x_along_link_m, axis,
     world_x_m, world_y_m, world_z_m, score: the fields of candidates.csv less `chosen`),
-    `.target_modes` and `.target_frequencies_hz` (arrays)."""
+    `.target_modes` and `.target_frequencies_hz` (arrays); with `tam=`, `.tams` (placement.json's
+    test-analysis models: method, pass, self and cross orthogonality, per-mode checks),
+    `tam_table()` (tam.csv's columns, `fields("tam_modes")`) and `.tam_csv`."""
 
-    def __init__(self, json_text, text):
+    def __init__(self, json_text, text, tam_csv=""):
         super().__init__(json_text, text)
+        self.tam_csv = tam_csv
         self.chosen = self.json["chosen"]
         self.target_modes = _np.array(self.json["target_modes"], dtype=int)
         self.target_frequencies_hz = _np.array(self.json["target_frequencies_hz"], dtype=float)
+        self.tams = self.json.get("tam", {}).get("models", [])
+
+    def tam_table(self):
+        """Every TAM's per-mode checks as columns (tam.csv's, `fields("tam_modes")`: method first)."""
+        records = [dict(m, method=t["method"]) for t in self.tams for m in t["modes"]]
+        return _columns(records, [f for f in fields("tam_modes") if f["csv"]])
 
 
 def fields(name):
@@ -538,14 +547,18 @@ def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None)
 
 
 def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, count=8, triaxial=False, method="efi",
-                  progress=None):
+                  tam=(), progress=None):
     """`mmvlab place-sensors`: sensor stations for the target modes (`modes`, 1-based,
-    or every vibration mode below `below_hz`, 50 Hz by default)."""
-    json_text, text, warns = _mmvlab.place_sensors(scene, int(segments), [int(m) for m in modes],
-                                                   None if below_hz is None else float(below_hz), float(spacing),
-                                                   int(count), bool(triaxial), str(method), progress)
+    or every vibration mode below `below_hz`, 50 Hz by default); `tam`: test-analysis
+    models to build on them ("guyan", "irs", "serep" or "all")."""
+    if isinstance(tam, str):
+        tam = [tam]
+    json_text, text, tam_csv, warns = _mmvlab.place_sensors(scene, int(segments), [int(m) for m in modes],
+                                                            None if below_hz is None else float(below_hz), float(spacing),
+                                                            int(count), bool(triaxial), str(method), [str(t) for t in tam],
+                                                            progress)
     _warn(warns)
-    return PlacementResult(json_text, text)
+    return PlacementResult(json_text, text, tam_csv)
 
 
 class CorrelateResult(Result):

@@ -1,11 +1,13 @@
 #include "sim/app/plan_studies.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_placement.hpp"
 #include "sim/io/check_report.hpp"
 #include "sim/io/placement_report.hpp"
+#include "sim/io/tam_report.hpp"
 #include "sim/modes/sensor_placement.hpp"
 
 namespace mmv::app {
@@ -45,6 +47,18 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   o.spacing_m = r.spacing_m;
   o.triaxial = r.triaxial;
   o.count = r.count;
+  for (const auto& name : r.tam) {
+    if (name == "all") {
+      o.tam = {TamMethod::Guyan, TamMethod::Irs, TamMethod::Serep};
+      continue;
+    }
+    TamMethod m;
+    if (!parseTamMethod(name, m))
+      throw UsageError(opt("--tam") + ": unknown test-analysis model '" + name + "' (known: guyan, irs, serep, all)");
+    if (std::find(o.tam.begin(), o.tam.end(), m) == o.tam.end()) o.tam.push_back(m);
+  }
+  if (!o.tam.empty() && !std::holds_alternative<ArticleScene>(scene))
+    throw UsageError(opt("--tam") + " applies to the article's scenes (the isolator's TAM is not built yet)");
   PlacementStudyResult s;
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {
     s.study = runPlacement(*article, o);
@@ -55,6 +69,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   }
   s.json = placementJson(s.study);
   s.text = placementText(s.study);
+  if (!s.study.tams.empty()) s.tam_csv = tamCsv(s.study);
   checkResultFinite(s.json);  // before any file is committed
   return s;
 }

@@ -37,6 +37,7 @@ struct PlacementRequest {
   bool triaxial = false;
   std::string method = "efi";  ///< efi, mke or dpr.
   bool below_given = false;    ///< `below_hz` was given (then not `modes` too).
+  std::vector<std::string> tam;  ///< guyan, irs, serep (or all): test-analysis models on the chosen sensors
   Front front = Front::Cli;
 };
 
@@ -45,6 +46,7 @@ struct PlacementStudyResult {
   std::optional<HamsasModes> isolator_modes;  ///< a HAM-SAS scene's (its review renders draw them)
   nlohmann::ordered_json json;
   std::string text;
+  std::string tam_csv;  ///< tam.csv (empty without TAMs)
 };
 
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& request);

@@ -151,6 +151,7 @@ struct PlaceSensorsArgs : SceneArgs {
   int count = 8;
   bool triaxial = false;
   std::string method = "efi";
+  std::vector<std::string> tam;  ///< guyan, irs, serep, all; empty: none
   std::string out;
   bool force = false;
 };

@@ -245,7 +245,12 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   p->add_flag("--triaxial", ps.triaxial, "Place triaxial blocks (kept or removed whole) instead of uniaxial sensors");
   p->add_option("--method", ps.method, "efi (effective independence), mke (modal kinetic energy) or dpr (driving-point residue)")
       ->capture_default_str();
-  p->add_option("--out", ps.out, "Write placement.json, candidates.csv, automac.csv, automac.png and the review renders here");
+  p->add_option("--tam", ps.tam,
+                "Test-analysis models on the chosen sensors, with self- and cross-orthogonality against NASA-STD-5002's "
+                "criteria: guyan, irs, serep or all, comma-separated")
+      ->delimiter(',');
+  p->add_option("--out", ps.out,
+                "Write placement.json, candidates.csv, automac.csv (tam.csv with --tam), automac.png and the review renders here");
   p->add_flag("--force", ps.force, "Replace files of the same names in --out");
   return p;
 }

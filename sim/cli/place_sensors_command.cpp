@@ -102,6 +102,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.triaxial = args.triaxial;
     r.count = args.count;
     r.method = args.method;
+    r.tam = args.tam;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const auto* article = std::get_if<ArticleScene>(&loaded);
@@ -112,6 +113,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       out->write("placement.json", study.json.dump(2) + "\n");
       out->write("candidates.csv", placementCandidatesCsv(s));
       out->write("automac.csv", placementAutoMacCsv(s));
+      if (!study.tam_csv.empty()) out->write("tam.csv", study.tam_csv);
       std::vector<std::string> rows, cols;
       for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
         rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j].number(), s.target_frequencies_hz[j]));

@@ -1,4 +1,5 @@
 #include "sim/io/placement_report.hpp"
+#include "sim/io/tam_report.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -49,6 +50,7 @@ std::string placementText(const PlacementStudy& s) {
     for (const auto& [a, b] : alike) os << " " << a << "&" << b;
     os << "\n";
   }
+  os << tamText(s);
   return os.str();
 }
 
@@ -107,6 +109,7 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   auto alike = nlohmann::ordered_json::array();
   for (const auto& [a, b] : indistinguishableModes(s)) alike.push_back({a, b});
   j["indistinguishable_mode_pairs"] = alike;
+  if (!s.tams.empty()) j["tam"] = tamJson(s);
   return j;
 }
 

@@ -61,6 +61,33 @@ std::vector<double> stationsAlong(double length, double spacing) {
 
 }  // namespace
 
+namespace {
+
+/// The TAMs on the chosen sensor directions (the kept blocks' rows, in row order), over
+/// the model's admissible coordinates (Z: a closed loop's; the identity for a tree).
+void buildPlacementTams(PlacementStudy& study, const SolvedScene& s, const Eigen::MatrixXd& shapes,
+                        const std::vector<int>& block, const std::vector<Eigen::RowVectorXd>& readings,
+                        const std::vector<std::string>& names, const std::vector<TamMethod>& methods) {
+  const ProgressStage stage("test-analysis models on the chosen sensors");
+  std::vector<char> kept(study.candidates.size(), 0);
+  for (int b : study.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
+  std::vector<Eigen::Index> chosen;
+  for (std::size_t r = 0; r < readings.size(); ++r)
+    if (kept[static_cast<std::size_t>(block[r])]) chosen.push_back(static_cast<Eigen::Index>(r)), study.channels.push_back(names[r]);
+  const LinearizedModel& lin = s.linearized;
+  const Eigen::Index n = lin.M.rows();
+  const Eigen::MatrixXd Z = lin.Z.size() ? lin.Z : Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd P(static_cast<Eigen::Index>(chosen.size()), n);
+  for (std::size_t i = 0; i < chosen.size(); ++i) P.row(static_cast<Eigen::Index>(i)) = readings[static_cast<std::size_t>(chosen[i])];
+  TamInput in{Z.transpose() * lin.M * Z, Z.transpose() * lin.K * Z, P * Z, Z.transpose() * shapes, {}};
+  in.omega2.resize(static_cast<Eigen::Index>(study.target_modes.size()));
+  for (std::size_t j = 0; j < study.target_modes.size(); ++j)
+    in.omega2[static_cast<Eigen::Index>(j)] = s.modes.omega2[study.target_modes[j].index()];
+  for (const TamMethod m : methods) study.tams.push_back(buildTam(in, m));
+}
+
+}  // namespace
+
 PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {
   MMV_DEMAND(o.spacing_m > 0);
   const SolvedScene s = solveScene(scene);
@@ -81,7 +108,8 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
     study.target_frequencies_hz.push_back(s.modes.frequencyHz(study.target_modes[j].index()));
     p.omega[j] = 2 * M_PI * study.target_frequencies_hz.back();
   }
-  std::vector<Eigen::RowVectorXd> rows;
+  std::vector<Eigen::RowVectorXd> rows, readings;  // per candidate direction: over the target modes, over the coordinates
+  std::vector<std::string> row_names;
   std::vector<double> masses;
   // The spatial model adds each station's normal axis (out of the plane).
   const int directions = model.isSpatial() ? 3 : 2;
@@ -111,13 +139,16 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
       const std::optional<PointRef> ref = PointRef::resolve(model, scene.article, name, error);
       MMV_DEMAND(ref.has_value());
       // directions x k: the world translations
-      const Eigen::MatrixXd u = ref->translationJacobian(st, s.linearized.dofs, directions) * shapes;
+      const Eigen::MatrixXd J = ref->translationJacobian(st, s.linearized.dofs, directions), u = J * shapes;
       const SimTK::Vec3 pos = ref->position(st);
       for (int a = 0; a < directions; ++a) {
         const SimTK::Vec3 e = ref->localAxis(st, a);
         Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(k);
-        for (int c = 0; c < directions; ++c) row += e[c] * u.row(c);
+        Eigen::RowVectorXd reading = Eigen::RowVectorXd::Zero(J.cols());
+        for (int c = 0; c < directions; ++c) row += e[c] * u.row(c), reading += e[c] * J.row(c);
         rows.push_back(row);
+        readings.push_back(reading);
+        row_names.push_back(std::string(name) + " " + axis_names[a]);
         masses.push_back(mass);
         if (!o.triaxial || a == 0)
           study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : axis_names[a], pos[0], pos[1], pos[2], mass});
@@ -129,6 +160,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   for (std::size_t r = 0; r < rows.size(); ++r) p.phi.row(r) = rows[r];
   p.row_mass = Eigen::Map<Eigen::VectorXd>(masses.data(), masses.size());
   choosePlacement(study, p, o, directions, "spacing " + std::to_string(o.spacing_m) + " m");
+  if (!o.tam.empty()) buildPlacementTams(study, s, shapes, p.block, readings, row_names, o.tam);
   return study;
 }
 

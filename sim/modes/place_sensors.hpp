@@ -19,6 +19,7 @@
 #include "sim/modes/modal.hpp"
 #include "sim/core/mode_number.hpp"
 #include "sim/modes/sensor_placement.hpp"
+#include "sim/modes/tam.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv {
@@ -29,6 +30,7 @@ struct PlacementOptions {
   double spacing_m = 0.1;     ///< m between candidate stations.
   bool triaxial = false;
   PlacementMethod method = PlacementMethod::EffectiveIndependence;
+  std::vector<TamMethod> tam;  ///< test-analysis models to build on the chosen sensors (the article's)
   int count = 8;              ///< sensors (uniaxial) or blocks (triaxial) to keep.
 };
 
@@ -52,6 +54,8 @@ struct PlacementStudy {
   std::vector<double> target_frequencies_hz;
   std::vector<PlacementCandidate> candidates;  ///< one per block.
   PlacementResult result;
+  std::vector<std::string> channels;  ///< the chosen sensor directions, "station axis", in the TAMs' order
+  std::vector<TamResult> tams;        ///< one per options.tam, on `channels`
 };
 
 /// Throws UsageError for target modes that do not exist or are not vibration modes

@@ -74,10 +74,10 @@ MatrixXd condensation(const TamInput& in, TamMethod method) {
 MatrixXd serep(const TamInput& in) {
   const MatrixXd phi_a = in.P * in.phi;
   const Eigen::Index a = phi_a.rows(), m = phi_a.cols();
-  if (a < m)
-    throw NumericalError(strf("TAM (serep): %ld sensor directions for %ld target modes: SEREP needs at least as many "
-                              "directions as modes",
-                              static_cast<long>(a), static_cast<long>(m)));
+  if (a < m)  // a request that cannot be met, named by the option that asked for it
+    throw OptionError("--tam", strf(" serep: %ld sensor directions for %ld target modes: SEREP needs at least as many "
+                                    "directions as modes (raise --count or use --triaxial)",
+                                    static_cast<long>(a), static_cast<long>(m)));
   const Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod(phi_a);
   if (cod.rank() < m)
     throw NumericalError(strf("TAM (serep): the sensors cannot tell the %ld target modes apart (their shapes at the "
@@ -141,7 +141,7 @@ void check(const TamInput& in, TamResult& r) {
 TamResult buildTam(const TamInput& in, TamMethod method) {
   const Eigen::Index n = in.M.rows();
   MMV_DEMAND(in.M.cols() == n && in.K.rows() == n && in.K.cols() == n && in.P.cols() == n && in.phi.rows() == n &&
-             in.omega2.size() == in.phi.cols() && in.P.rows() >= 1 && in.P.rows() <= n);
+             in.omega2.size() == in.phi.cols() && in.P.rows() >= 1);  // more rows than coordinates: dependent (named)
   TamResult r;
   r.method = method;
   r.sensors = static_cast<int>(in.P.rows());

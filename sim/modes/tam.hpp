@@ -67,8 +67,8 @@ struct TamResult {
 
 /// Builds the TAM and its checks. Throws NumericalError naming the cause: dependent
 /// sensor directions (P of rank < a), an o-set stiffness that is singular (a motion the
-/// sensors do not see and nothing resists), fewer sensors than targets or targets the
-/// sensors cannot tell apart (SEREP).
+/// sensors do not see and nothing resists), targets the sensors cannot tell apart
+/// (SEREP); OptionError (--tam) for fewer sensor directions than targets (SEREP).
 TamResult buildTam(const TamInput& in, TamMethod method);
 
 }  // namespace mmv

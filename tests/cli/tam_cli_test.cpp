@@ -1,0 +1,66 @@
+// place-sensors --tam: test-analysis models on the chosen sensors of the article, their
+// numbers against the modes computed another way, and the requests refused by name.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+TEST_F(Cli, PlaceSensorsBuildsTheTamsAndTheirChecks) {
+  const fs::path out = dir_ / "tam";
+  const Result r = run("place-sensors --segments 8 --modes 1-6 --count 8 --tam all --json --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  const auto& tam = doc.at("tam");
+  ASSERT_EQ(tam.at("models").size(), 3u);
+  EXPECT_EQ(tam.at("channels").size(), 8u);
+  // The target frequencies two ways: the TAM records', and `modes` on the same scene.
+  const auto modes = nlohmann::json::parse(run("modes --segments 8 --modes 6 --no-error-estimate --json").out).at("modes");
+  std::map<std::string, const nlohmann::json*> by_method;
+  for (const auto& m : tam.at("models")) by_method[m.at("method")] = &m;
+  for (std::size_t j = 0; j < 6; ++j) {
+    const auto& serep = by_method.at("serep")->at("modes").at(j);
+    EXPECT_NEAR(serep.at("frequency_hz").get<double>(), modes.at(j).at("frequency_hz").get<double>(), 1e-9);
+    // SEREP holds the target modes exactly at any set that tells them apart.
+    EXPECT_NEAR(serep.at("frequency_error").get<double>(), 0.0, 1e-8);
+    EXPECT_NEAR(serep.at("cross_diagonal").get<double>(), 1.0, 1e-8);
+    // IRS restores the omitted inertia: never further off than Guyan on these modes.
+    const double guyan = std::abs(by_method.at("guyan")->at("modes").at(j).at("frequency_error").get<double>());
+    const double irs = std::abs(by_method.at("irs")->at("modes").at(j).at("frequency_error").get<double>());
+    EXPECT_LE(irs, guyan + 1e-12) << "mode " << j + 1;
+    // A static reduction is a Ritz model: no TAM frequency below the mode it pairs with.
+    EXPECT_GE(by_method.at("guyan")->at("modes").at(j).at("frequency_error").get<double>(), -1e-9) << "mode " << j + 1;
+  }
+  EXPECT_TRUE(by_method.at("serep")->at("pass").get<bool>());
+  // tam.csv: a row per model and target mode, the records' values.
+  const std::string csv = slurp(out / "tam.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "method,mode,frequency_hz,tam_mode,tam_frequency_hz,frequency_error,self_diagonal,self_off_diagonal,"
+            "cross_diagonal,cross_off_diagonal,pass,reason");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 6);
+}
+
+TEST_F(Cli, PlaceSensorsRefusesATamItCannotBuildByName) {
+  const Result unknown = run("place-sensors --segments 4 --tam craig");
+  EXPECT_EQ(unknown.code, 64);
+  EXPECT_NE(unknown.err.find("--tam: unknown test-analysis model 'craig' (known: guyan, irs, serep, all)"), std::string::npos)
+      << unknown.err;
+  const Result isolator = run("place-sensors " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --tam irs");
+  EXPECT_EQ(isolator.code, 64);
+  EXPECT_NE(isolator.err.find("--tam applies to the article's scenes"), std::string::npos) << isolator.err;
+  // Two sensors (ranked by kinetic energy: EfI refuses fewer than the modes itself) for
+  // four target modes: SEREP needs one per mode; named, no output.
+  const fs::path out = dir_ / "few";
+  const Result few = run("place-sensors --segments 4 --modes 1-4 --count 2 --method mke --tam serep --out " + out.string());
+  EXPECT_EQ(few.code, 64);
+  EXPECT_NE(few.err.find("--tam serep: 2 sensor directions for 4 target modes"), std::string::npos) << few.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
