@@ -7,6 +7,7 @@
 #include "sim/hamsas/hamsas_placement.hpp"
 #include "sim/io/check_report.hpp"
 #include "sim/io/placement_report.hpp"
+#include "sim/io/placement_geometry.hpp"
 #include "sim/io/tam_report.hpp"
 #include "sim/modes/sensor_placement.hpp"
 
@@ -70,6 +71,12 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   s.json = placementJson(s.study);
   s.text = placementText(s.study);
   if (!s.study.tams.empty()) s.tam_csv = tamCsv(s.study);
+  if (const auto* article = std::get_if<ArticleScene>(&scene)) {  // the isolator's test geometry: not yet
+    s.channels_csv = placementChannelsCsv(s.study);
+    uff::File geometry = placementGeometry(s.study, article->name);
+    uff::stampNow(geometry);
+    s.geometry_uff = uff::write(geometry);
+  }
   checkResultFinite(s.json);  // before any file is committed
   return s;
 }

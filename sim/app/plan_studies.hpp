@@ -47,6 +47,7 @@ struct PlacementStudyResult {
   nlohmann::ordered_json json;
   std::string text;
   std::string tam_csv;  ///< tam.csv (empty without TAMs)
+  std::string channels_csv, geometry_uff;  ///< the article's test geometry: channels.csv, test_geometry.uff
 };
 
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& request);

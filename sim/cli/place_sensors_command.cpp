@@ -114,6 +114,8 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       out->write("candidates.csv", placementCandidatesCsv(s));
       out->write("automac.csv", placementAutoMacCsv(s));
       if (!study.tam_csv.empty()) out->write("tam.csv", study.tam_csv);
+      if (!study.channels_csv.empty()) out->write("channels.csv", study.channels_csv);
+      if (!study.geometry_uff.empty()) out->write("test_geometry.uff", study.geometry_uff);
       std::vector<std::string> rows, cols;
       for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
         rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j].number(), s.target_frequencies_hz[j]));

@@ -46,7 +46,7 @@ std::string correlationText(const ArticleScene& scene, const CorrelationResult& 
   Table nodes({"node", "x_m", "y_m", "z_m", "station", "distance_mm", "by"});
   for (const auto& n : r.nodes)
     nodes.add({std::to_string(n.node), strf("%.4f", n.xyz[0]), strf("%.4f", n.xyz[1]), strf("%.4f", n.xyz[2]),
-               n.station.empty() ? "-" : n.station, strf("%.2f", 1e3 * n.distance_m), n.by_name ? "name" : "position"});
+               n.station.empty() ? "-" : n.station, strf("%.2f", 1e3 * n.distance_m), n.by_name ? "name" : n.by_number ? "number" : "position"});
   os << nodes.text();
   os << strf("\nModes: %zu measured, %zu of the model (damping: %s); test band %.4g-%.4g Hz; MAC over %d translations\n",
              r.test_modes.size(), r.model_modes.size(), r.model_damped ? r.damping_model.c_str() : "none in the scene",
@@ -99,7 +99,7 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
   j["scene"] = {{"name", scene.name}, {"source", scene.source}};
   json nodes = json::array();
   for (const auto& n : r.nodes) {
-    json nj = {{"node", n.node}, {"xyz_m", n.xyz}, {"distance_m", n.distance_m}, {"by_name", n.by_name}};
+    json nj = {{"node", n.node}, {"xyz_m", n.xyz}, {"distance_m", n.distance_m}, {"by_name", n.by_name}, {"by_number", n.by_number}};
     nj["station"] = n.station.empty() ? json(nullptr) : json(n.station);
     nodes.push_back(nj);
   }

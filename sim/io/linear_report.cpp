@@ -138,18 +138,6 @@ nlohmann::ordered_json linearSummaryJson(const LinearModel& lm, const ReducedMod
 
 namespace {
 
-/// The file's date and time fields: now (UTC), as DD-MMM-YY and HH:MM:SS.
-void stampNow(uff::File& file) {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char d[16], t[16];
-  std::strftime(d, sizeof d, "%d-%b-%y", &tm);
-  std::strftime(t, sizeof t, "%H:%M:%S", &tm);
-  file.date = d;
-  for (char& c : file.date) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  file.time = t;
-}
 
 /// One dataset 58 per output-input pair: FRF (type 4) or transmissibility (type 5).
 void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
@@ -198,7 +186,7 @@ std::string frfUff(const LinearModel& lm, const TestGeometry& g, const ArticleSc
   uff::File file;
   file.model_name = scene.name;
   file.description = "mmvlab frf: " + scene.source;
-  stampNow(file);
+  uff::stampNow(file);
   for (const auto& n : g.nodes) file.nodes.push_back({n.id, n.xyz});
   for (const auto& t : g.traces) file.trace_lines.push_back({t.id, t.name, t.nodes});
   for (const auto& s : g.modes) {

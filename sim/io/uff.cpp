@@ -2,9 +2,11 @@
 
 #include "sim/core/text.hpp"
 
+#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <sstream>
 #include <stdexcept>
 
@@ -98,5 +100,17 @@ std::string write(const File& file) {
   return os.str();
 }
 
+
+void stampNow(File& file) {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char d[16], t[16];
+  std::strftime(d, sizeof d, "%d-%b-%y", &tm);
+  std::strftime(t, sizeof t, "%H:%M:%S", &tm);
+  file.date = d;
+  for (char& c : file.date) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  file.time = t;
+}
 
 }  // namespace mmv::uff

@@ -67,5 +67,7 @@ struct File {
 };
 
 std::string write(const File& f);
+/// The file's date and time fields: now (UTC), as DD-MMM-YY and HH:MM:SS.
+void stampNow(File& f);
 
 }  // namespace mmv::uff

@@ -14,6 +14,15 @@
 
 namespace mmv {
 
+std::string stationOfNode(const ArticleSpec& article, int node) {
+  const int link = node / 100000, mm = node % 100000;
+  if (node <= 0 || link < 1 || link > static_cast<int>(article.links.size())) return "";
+  const LinkSpec& l = article.links[static_cast<std::size_t>(link - 1)];
+  if (mm > std::lround(1e3 * l.length)) return "";
+  return mm == std::lround(1e3 * l.length) ? l.name + ".tip" : strf("%s@%.3fm", l.name.c_str(), 1e-3 * mm);
+}
+
+
 double modalAssurance(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
   MMV_DEMAND(a.size() == b.size());
   const double na = a.squaredNorm(), nb = b.squaredNorm();
@@ -113,12 +122,20 @@ std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet&
   }
   std::vector<NodePairing> out;
   for (const auto& n : test.nodes) {
-    NodePairing p{n.label, n.xyz, "", 0, false};
+    NodePairing p{n.label, n.xyz, "", 0, false, false};
+    std::string error;
+    const std::string numbered = stationOfNode(scene.article, n.label);
+    const std::optional<PointRef> at_number =
+        numbered.empty() ? std::nullopt : PointRef::resolve(*s.model, scene.article, numbered, error);
     if (const auto it = named.find(n.label); it != named.end()) {
-      std::string error;
       p.station = it->second;
       p.by_name = true;
       p.distance_m = distance(PointRef::resolve(*s.model, scene.article, it->second, error)->position(st), n.xyz);
+    } else if (at_number && distance(at_number->position(st), n.xyz) <= o.pair_distance_m) {
+      // mmvlab's own test geometry: the number says which station, the position confirms it
+      p.station = numbered;
+      p.by_number = true;
+      p.distance_m = distance(at_number->position(st), n.xyz);
     } else {
       const auto [station, d] = nearestStation(*s.model, st, scene.article, n.xyz);
       p.distance_m = d;

@@ -95,7 +95,12 @@ struct NodePairing {
   std::string station;   ///< empty: not paired.
   double distance_m = 0; ///< from the node to its station at the equilibrium.
   bool by_name = false;  ///< named by the user.
+  bool by_number = false;  ///< its number is a station's in mmvlab's test geometry (placement's nodes), confirmed by position
 };
+
+/// The station a test-geometry node number names (PlacementCandidate::node: link position
+/// x 100000 + mm from the root), or "" when it names none of `article`'s.
+std::string stationOfNode(const ArticleSpec& article, int node);
 
 struct ModePair {
   int test = -1, model = -1;  ///< indices into the test and model mode lists.

@@ -63,17 +63,70 @@ std::vector<double> stationsAlong(double length, double spacing) {
 
 namespace {
 
+/// Every candidate direction's rows, as the stations add them.
+struct StationRows {
+  std::vector<Eigen::RowVectorXd> rows;      ///< over the target modes
+  std::vector<Eigen::RowVectorXd> readings;  ///< over the coordinates
+  std::vector<std::string> names;            ///< "station axis"
+  std::vector<double> masses;
+};
+
+/// What a station's rows are computed from.
+struct StationView {
+  const PointRef& ref;
+  const SimTK::State& st;
+  const std::vector<int>& dofs;
+  const Eigen::MatrixXd& shapes;  ///< coordinates x target modes
+  int directions;
+  bool triaxial;
+};
+
+/// Adds station `c` (its name, link, x, mass and node set): its candidate(s), one row per
+/// measuring direction (axial, transverse, and normal on the spatial model).
+void addStation(PlacementStudy& study, PlacementProblem& p, StationRows& acc, const StationView& v, PlacementCandidate c) {
+  static const char* const axis_names[] = {"axial", "transverse", "normal"};
+  // directions x k: the world translations
+  const Eigen::MatrixXd J = v.ref.translationJacobian(v.st, v.dofs, v.directions), u = J * v.shapes;
+  const SimTK::Vec3 pos = v.ref.position(v.st);
+  c.world_x = pos[0], c.world_y = pos[1], c.world_z = pos[2];
+  for (Eigen::Index j = 0; j < u.cols(); ++j) c.shape.push_back({u(0, j), u(1, j), v.directions == 3 ? u(2, j) : 0.0});
+  for (int a = 0; a < v.directions; ++a) {
+    const SimTK::Vec3 e = v.ref.localAxis(v.st, a);
+    Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(u.cols()), reading = Eigen::RowVectorXd::Zero(J.cols());
+    for (int d = 0; d < v.directions; ++d) row += e[d] * u.row(d), reading += e[d] * J.row(d);
+    acc.rows.push_back(row);
+    acc.readings.push_back(reading);
+    acc.names.push_back(c.station + " " + axis_names[a]);
+    acc.masses.push_back(c.mass_kg);
+    if (!v.triaxial || a == 0) {
+      c.axis = v.triaxial ? "triaxial" : axis_names[a];
+      study.candidates.push_back(c);
+    }
+    const int block = static_cast<int>(study.candidates.size()) - 1;
+    p.block.push_back(block);
+    study.directions.push_back({block, axis_names[a], {e[0], e[1], e[2]}});
+  }
+}
+
+/// The chosen sensor directions (the kept blocks' rows, in row order).
+void chosenChannels(PlacementStudy& study, const std::vector<int>& block, const std::vector<std::string>& names) {
+  std::vector<char> kept(study.candidates.size(), 0);
+  for (int b : study.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
+  for (std::size_t r = 0; r < names.size(); ++r)
+    if (kept[static_cast<std::size_t>(block[r])]) study.channels.push_back(names[r]);
+}
+
 /// The TAMs on the chosen sensor directions (the kept blocks' rows, in row order), over
 /// the model's admissible coordinates (Z: a closed loop's; the identity for a tree).
 void buildPlacementTams(PlacementStudy& study, const SolvedScene& s, const Eigen::MatrixXd& shapes,
                         const std::vector<int>& block, const std::vector<Eigen::RowVectorXd>& readings,
-                        const std::vector<std::string>& names, const std::vector<TamMethod>& methods) {
+                        const std::vector<TamMethod>& methods) {
   const ProgressStage stage("test-analysis models on the chosen sensors");
   std::vector<char> kept(study.candidates.size(), 0);
   for (int b : study.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
   std::vector<Eigen::Index> chosen;
   for (std::size_t r = 0; r < readings.size(); ++r)
-    if (kept[static_cast<std::size_t>(block[r])]) chosen.push_back(static_cast<Eigen::Index>(r)), study.channels.push_back(names[r]);
+    if (kept[static_cast<std::size_t>(block[r])]) chosen.push_back(static_cast<Eigen::Index>(r));
   const LinearizedModel& lin = s.linearized;
   const Eigen::Index n = lin.M.rows();
   const Eigen::MatrixXd Z = lin.Z.size() ? lin.Z : Eigen::MatrixXd::Identity(n, n);
@@ -108,14 +161,12 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
     study.target_frequencies_hz.push_back(s.modes.frequencyHz(study.target_modes[j].index()));
     p.omega[j] = 2 * M_PI * study.target_frequencies_hz.back();
   }
-  std::vector<Eigen::RowVectorXd> rows, readings;  // per candidate direction: over the target modes, over the coordinates
-  std::vector<std::string> row_names;
-  std::vector<double> masses;
+  StationRows acc;
   // The spatial model adds each station's normal axis (out of the plane).
   const int directions = model.isSpatial() ? 3 : 2;
-  const char* axis_names[] = {"axial", "transverse", "normal"};
   const ProgressStage stage("candidate stations: their mode shapes");
-  for (const auto& link : scene.article.links) {
+  for (std::size_t li = 0; li < scene.article.links.size(); ++li) {
+    const LinkSpec& link = scene.article.links[li];
     const Material& mat = *scene.article.findMaterial(link.material);
     const double rho_a = mat.density * sectionArea(*scene.article.findSection(link.section));
     // The lumped masses at the link's tip: its tip mass and the torquers of the joints it carries.
@@ -138,29 +189,18 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
       std::string error;
       const std::optional<PointRef> ref = PointRef::resolve(model, scene.article, name, error);
       MMV_DEMAND(ref.has_value());
-      // directions x k: the world translations
-      const Eigen::MatrixXd J = ref->translationJacobian(st, s.linearized.dofs, directions), u = J * shapes;
-      const SimTK::Vec3 pos = ref->position(st);
-      for (int a = 0; a < directions; ++a) {
-        const SimTK::Vec3 e = ref->localAxis(st, a);
-        Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(k);
-        Eigen::RowVectorXd reading = Eigen::RowVectorXd::Zero(J.cols());
-        for (int c = 0; c < directions; ++c) row += e[c] * u.row(c), reading += e[c] * J.row(c);
-        rows.push_back(row);
-        readings.push_back(reading);
-        row_names.push_back(std::string(name) + " " + axis_names[a]);
-        masses.push_back(mass);
-        if (!o.triaxial || a == 0)
-          study.candidates.push_back({name, link.name, x, o.triaxial ? "triaxial" : axis_names[a], pos[0], pos[1], pos[2], mass});
-        p.block.push_back(static_cast<int>(study.candidates.size()) - 1);
-      }
+      PlacementCandidate c{name, link.name, x, "", 0, 0, 0, mass, static_cast<int>(li + 1) * 100000 + static_cast<int>(std::lround(1e3 * x)), {}};
+      addStation(study, p, acc, {*ref, st, s.linearized.dofs, shapes, directions, o.triaxial}, c);
     }
   }
+  const std::vector<Eigen::RowVectorXd>& rows = acc.rows;
+  const std::vector<double>& masses = acc.masses;
   p.phi.resize(rows.size(), k);
   for (std::size_t r = 0; r < rows.size(); ++r) p.phi.row(r) = rows[r];
-  p.row_mass = Eigen::Map<Eigen::VectorXd>(masses.data(), masses.size());
+  p.row_mass = Eigen::Map<const Eigen::VectorXd>(masses.data(), static_cast<Eigen::Index>(masses.size()));
   choosePlacement(study, p, o, directions, "spacing " + std::to_string(o.spacing_m) + " m");
-  if (!o.tam.empty()) buildPlacementTams(study, s, shapes, p.block, readings, row_names, o.tam);
+  chosenChannels(study, p.block, acc.names);
+  if (!o.tam.empty()) buildPlacementTams(study, s, shapes, p.block, acc.readings, o.tam);
   return study;
 }
 

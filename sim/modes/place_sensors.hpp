@@ -13,6 +13,7 @@
 /// equilibrium (sim/modes/system_modes.hpp), evaluated at stations with the beam's
 /// shape functions (sim/model/stations.hpp), so the choice does not depend on the mesh.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,19 @@ struct PlacementCandidate {
   /// its neighbours (from the root, to the tip), plus the tip mass and the torquers the
   /// link carries at the last station. A link's stations sum to all of it.
   double mass_kg = 0;
+  /// The station's test-geometry node: (link's position in the scene + 1) x 100000 + its
+  /// distance from the link's root in mm (link1@2.44m: 102440), the same in every run.
+  int node = 0;
+  /// Its world translation in each target mode (m per unit modal coordinate; z = 0 on
+  /// the planar model), for the test geometry's predicted shapes.
+  std::vector<std::array<double, 3>> shape;
+};
+
+/// A candidate's measuring direction (a row of the placement problem).
+struct PlacementDirection {
+  int block = 0;            ///< its candidate
+  std::string axis;         ///< axial, transverse, normal
+  std::array<double, 3> world{};  ///< unit vector, world frame
 };
 
 struct PlacementStudy {
@@ -54,7 +68,8 @@ struct PlacementStudy {
   std::vector<double> target_frequencies_hz;
   std::vector<PlacementCandidate> candidates;  ///< one per block.
   PlacementResult result;
-  std::vector<std::string> channels;  ///< the chosen sensor directions, "station axis", in the TAMs' order
+  std::vector<PlacementDirection> directions;  ///< every row, in order
+  std::vector<std::string> channels;  ///< the chosen sensor directions, "station axis", in row order (the TAMs' and channels.csv's)
   std::vector<TamResult> tams;        ///< one per options.tam, on `channels`
 };
 

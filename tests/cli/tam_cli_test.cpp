@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include "support/cli.hpp"
 
@@ -60,6 +61,53 @@ TEST_F(Cli, PlaceSensorsRefusesATamItCannotBuildByName) {
   EXPECT_EQ(few.code, 64);
   EXPECT_NE(few.err.find("--tam serep: 2 sensor directions for 4 target modes"), std::string::npos) << few.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
+
+namespace mmv::cli_testing {
+namespace {
+
+// The test geometry place-sensors writes (test_geometry.uff, channels.csv) read back by
+// correlate: every node pairs by its number to its own station (the position confirms
+// it), and the predicted shapes pair with the model's modes at MAC 1 and no frequency
+// error: the package closes on itself. A station keeps its node number in another run.
+TEST_F(Cli, TheTestGeometryClosesOnCorrelate) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  ASSERT_EQ(run("place-sensors --segments 16 --count 12 --out " + a.string()).code, 0);
+  ASSERT_EQ(run("place-sensors --segments 16 --count 8 --out " + b.string()).code, 0);
+  const Result r = run("correlate --segments 16 --modes 10 --json --measured " + (a / "test_geometry.uff").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_GE(doc.at("nodes").size(), 6u);
+  for (const auto& n : doc.at("nodes")) {
+    EXPECT_TRUE(n.at("by_number").get<bool>()) << n.dump();
+    EXPECT_LT(n.at("distance_m").get<double>(), 1e-4) << n.dump();  // the UFF keeps 6 digits of each coordinate
+  }
+  ASSERT_EQ(doc.at("pairs").size(), doc.at("test_modes").size());
+  for (const auto& p : doc.at("pairs")) {
+    EXPECT_GT(p.at("mac").get<double>(), 0.9999) << p.dump();
+    EXPECT_LT(std::abs(p.at("frequency_error").get<double>()), 1e-5) << p.dump();
+  }
+  // channels.csv: station -> node the same in both runs; unit measuring axes.
+  std::map<std::string, std::string> node_of;
+  for (const fs::path& dir : {a, b}) {
+    std::istringstream csv(slurp(dir / "channels.csv"));
+    std::string line;
+    std::getline(csv, line);
+    ASSERT_EQ(line.rfind("channel,node,station,link,axis,direction_x,direction_y,direction_z,", 0), 0u) << line;
+    while (std::getline(csv, line)) {
+      std::vector<std::string> c;
+      std::stringstream cells(line);
+      for (std::string cell; std::getline(cells, cell, ',');) c.push_back(cell);
+      ASSERT_GE(c.size(), 8u) << line;
+      const auto [it, fresh] = node_of.emplace(c[2], c[1]);
+      EXPECT_EQ(it->second, c[1]) << c[2] << " changed its node between runs";
+      const double x = std::stod(c[5]), y = std::stod(c[6]), z = std::stod(c[7]);
+      EXPECT_NEAR(x * x + y * y + z * z, 1.0, 1e-5) << line;
+    }
+  }
 }
 
 }  // namespace
