@@ -105,6 +105,9 @@ struct LinkSpec {
   /// in-plane normal, after mount_angle: branches spread out of the plane (spatial model).
   double tilt = 0;
   std::optional<LumpedMass> tip_mass;  ///< rigidly attached at the tip.
+  /// Point masses welded on the link's axis at distances from its root (m, kg): the
+  /// sensors a placement adds (place-sensors --sensor-mass), not a scene key.
+  std::vector<std::pair<double, double>> station_masses;
   std::string key;  ///< the scene entry it was read from ("links[2]"; a branch shares its link's), for messages.
   /// How this link bends (ArticleSpec::linkModel): none takes the article's model. A
   /// planar link of a spatial article bends in its plane only (pin hinges: rigid out of

@@ -14,6 +14,7 @@
 #include "sim/io/convergence_fields.hpp"
 #include "sim/io/hamsas_report.hpp"
 #include "sim/io/correlation_report.hpp"
+#include "sim/io/loading_report.hpp"
 #include "sim/io/mode_fields.hpp"
 #include "sim/io/placement_report.hpp"
 #include "sim/io/simulation_report.hpp"
@@ -48,6 +49,7 @@ const std::map<std::string, std::function<py::list()>>& namedLists() {
       {"convergence_points", [] { return describe(mmv::convergencePointFields()); }},
       {"correlation_pairs", [] { return describe(mmv::correlationPairFields()); }},
       {"hamsas_modes", [] { return describe(mmv::hamsasModeFields()); }},
+      {"mass_loading_modes", [] { return describe(mmv::loadingModeFields()); }},
       {"placement_candidates", [] { return describe(mmv::placementFields()); }},
       {"simulate_sensors", [] { return describe(mmv::sensorSummaryFields()); }},
       {"simulate_torques", [] { return describe(mmv::jointTorqueFields()); }},

@@ -167,7 +167,7 @@ py::tuple correlate(const PyScene& scene, int segments, const std::string& measu
 
 py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int>& target_modes, std::optional<double> below_hz,
                        double spacing, int count, bool triaxial, const std::string& method, const std::vector<std::string>& tam,
-                       py::object progress) {
+                       double sensor_mass, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   const mmv::Scene& sc = prepared.scene;
   mmv::app::PlacementRequest r;
@@ -179,6 +179,7 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   r.triaxial = triaxial;
   r.method = method;
   r.tam = tam;
+  r.sensor_mass_kg = sensor_mass;
   r.front = Front::Python;
   const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(sc, r); });
   return py::make_tuple(s.json.dump(), s.text, s.tam_csv, prepared.warnings);
@@ -490,5 +491,6 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("pair_distance"), py::arg("modes"), py::arg("mac_threshold"), py::arg("max_frequency_error"),
         py::arg("damping"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),
-        py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("tam"), py::arg("progress"));
+        py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("tam"), py::arg("sensor_mass"),
+        py::arg("progress"));
 }

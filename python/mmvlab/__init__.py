@@ -547,16 +547,17 @@ def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None)
 
 
 def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, count=8, triaxial=False, method="efi",
-                  tam=(), progress=None):
+                  tam=(), sensor_mass=0.0, progress=None):
     """`mmvlab place-sensors`: sensor stations for the target modes (`modes`, 1-based,
     or every vibration mode below `below_hz`, 50 Hz by default); `tam`: test-analysis
-    models to build on them ("guyan", "irs", "serep" or "all")."""
+    models to build on them ("guyan", "irs", "serep" or "all"); `sensor_mass`: each sensor's
+    mass, kg, welded on and the modes solved again (placement.json's `mass_loading`)."""
     if isinstance(tam, str):
         tam = [tam]
     json_text, text, tam_csv, warns = _mmvlab.place_sensors(scene, int(segments), [int(m) for m in modes],
                                                             None if below_hz is None else float(below_hz), float(spacing),
                                                             int(count), bool(triaxial), str(method), [str(t) for t in tam],
-                                                            progress)
+                                                            float(sensor_mass), progress)
     _warn(warns)
     return PlacementResult(json_text, text, tam_csv)
 

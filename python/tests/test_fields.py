@@ -113,6 +113,10 @@ def test_place_sensors_tam_table_is_tam_csv(tmp_path):
     assert [t["method"] for t in p.tams] == ["guyan", "serep"]
     expect_table_is_the_csv(p.tam_table(), out / "tam.csv", mmvlab.fields("tam_modes"))
     assert p.tam_csv == (out / "tam.csv").read_text()
+    loaded = mmvlab.place_sensors(mmvlab.load_scene(), segments=8, count=8, sensor_mass=1e-6)
+    assert len(loaded.json["mass_loading"]["modes"]) == len(loaded.target_modes)
+    with pytest.raises(mmvlab.UsageError, match="sensor_mass"):
+        mmvlab.place_sensors(mmvlab.load_scene(), segments=4, sensor_mass=101)
     with pytest.raises(mmvlab.UsageError, match="^tam: unknown test-analysis model 'craig'"):
         mmvlab.place_sensors(mmvlab.load_scene(), segments=4, tam="craig")
 

@@ -60,6 +60,10 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   }
   if (!o.tam.empty() && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--tam") + " applies to the article's scenes (the isolator's TAM is not built yet)");
+  checkRange(r.front, "--sensor-mass", r.sensor_mass_kg, 0, 100);
+  o.sensor_mass_kg = r.sensor_mass_kg;
+  if (o.sensor_mass_kg > 0 && !std::holds_alternative<ArticleScene>(scene))
+    throw UsageError(opt("--sensor-mass") + " applies to the article's scenes (the isolator's loading is not built yet)");
   PlacementStudyResult s;
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {
     s.study = runPlacement(*article, o);

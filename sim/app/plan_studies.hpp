@@ -38,6 +38,7 @@ struct PlacementRequest {
   std::string method = "efi";  ///< efi, mke or dpr.
   bool below_given = false;    ///< `below_hz` was given (then not `modes` too).
   std::vector<std::string> tam;  ///< guyan, irs, serep (or all): test-analysis models on the chosen sensors
+  double sensor_mass_kg = 0;     ///< 0 .. 100 kg: each chosen sensor's mass, the modes solved again with them (0: not)
   Front front = Front::Cli;
 };
 

@@ -152,6 +152,7 @@ struct PlaceSensorsArgs : SceneArgs {
   bool triaxial = false;
   std::string method = "efi";
   std::vector<std::string> tam;  ///< guyan, irs, serep, all; empty: none
+  double sensor_mass = 0;        ///< kg per sensor; 0: the sensors' masses left out
   std::string out;
   bool force = false;
 };

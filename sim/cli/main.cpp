@@ -245,6 +245,9 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   p->add_flag("--triaxial", ps.triaxial, "Place triaxial blocks (kept or removed whole) instead of uniaxial sensors");
   p->add_option("--method", ps.method, "efi (effective independence), mke (modal kinetic energy) or dpr (driving-point residue)")
       ->capture_default_str();
+  p->add_option("--sensor-mass", ps.sensor_mass,
+                "Each chosen sensor's mass, kg (0 .. 100; a triaxial block counts one): welded at its station and the "
+                "modes solved again, each target's shift beside first-order perturbation theory");
   p->add_option("--tam", ps.tam,
                 "Test-analysis models on the chosen sensors, with self- and cross-orthogonality against NASA-STD-5002's "
                 "criteria: guyan, irs, serep or all, comma-separated")

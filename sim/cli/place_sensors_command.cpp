@@ -103,6 +103,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.count = args.count;
     r.method = args.method;
     r.tam = args.tam;
+    r.sensor_mass_kg = args.sensor_mass;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const auto* article = std::get_if<ArticleScene>(&loaded);

@@ -1,4 +1,5 @@
 #include "sim/io/placement_report.hpp"
+#include "sim/io/loading_report.hpp"
 #include "sim/io/tam_report.hpp"
 
 #include <cmath>
@@ -50,6 +51,7 @@ std::string placementText(const PlacementStudy& s) {
     for (const auto& [a, b] : alike) os << " " << a << "&" << b;
     os << "\n";
   }
+  if (s.loading) os << loadingText(*s.loading);
   os << tamText(s);
   return os.str();
 }
@@ -110,6 +112,7 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   for (const auto& [a, b] : indistinguishableModes(s)) alike.push_back({a, b});
   j["indistinguishable_mode_pairs"] = alike;
   if (!s.tams.empty()) j["tam"] = tamJson(s);
+  if (s.loading) j["mass_loading"] = loadingJson(*s.loading);
   return j;
 }
 

@@ -271,7 +271,23 @@ class Builder {
       SimTK::MobilizedBody::Weld w(matter.updMobilizedBody(prev), X_tip, lumpedBody(*l.tip_mass), SimTK::Transform());
       model_.addBody(w.getMobilizedBodyIndex(), tip_part, false);
     }
+    addStationMasses(l, axis);
     tips_[l.name] = Frame{prev, X_tip, false};
+  }
+
+  /// The link's station masses, each welded to the piece it lies on at its distance from
+  /// the piece's start (a piece's frame starts at its hinge, x along the link).
+  void addStationMasses(const LinkSpec& l, const LinkAxis& axis) {
+    for (const auto& [x, mass] : l.station_masses) {
+      MMV_DEMAND(x >= 0 && x <= l.length && mass > 0);
+      std::size_t k = 0;  // the last axis point at or before x: its right-hand piece carries it
+      while (k + 2 < axis.x.size() && axis.x[k + 1] <= x) ++k;
+      const int part = model_.addPart(l.name + ".station_mass", Part::Kind::TipMass, l.name);
+      SimTK::MobilizedBody::Weld w(model_.updMatter().updMobilizedBody(axis.right[k]),
+                                   SimTK::Transform(SimTK::Vec3(x - axis.x[k], 0, 0)), lumpedBody(LumpedMass{mass, 0, {0, 0}}),
+                                   SimTK::Transform());
+      model_.addBody(w.getMobilizedBodyIndex(), part, false);
+    }
   }
 
   /// The spatial model's stage across the plane (world z, the report's table y axis) on

@@ -10,6 +10,7 @@
 #include "article/section.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/model/stations.hpp"
+#include "sim/modes/sensor_loading.hpp"
 #include "sim/modes/system_modes.hpp"
 
 namespace mmv {
@@ -201,6 +202,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   choosePlacement(study, p, o, directions, "spacing " + std::to_string(o.spacing_m) + " m");
   chosenChannels(study, p.block, acc.names);
   if (!o.tam.empty()) buildPlacementTams(study, s, shapes, p.block, acc.readings, o.tam);
+  if (o.sensor_mass_kg > 0) study.loading = sensorLoading(scene, s, shapes, study, o.sensor_mass_kg);
   return study;
 }
 

@@ -14,6 +14,7 @@
 /// shape functions (sim/model/stations.hpp), so the choice does not depend on the mesh.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct PlacementOptions {
   bool triaxial = false;
   PlacementMethod method = PlacementMethod::EffectiveIndependence;
   std::vector<TamMethod> tam;  ///< test-analysis models to build on the chosen sensors (the article's)
+  double sensor_mass_kg = 0;   ///< > 0: each chosen sensor's mass, welded on and the modes solved again (the article's)
   int count = 8;              ///< sensors (uniaxial) or blocks (triaxial) to keep.
 };
 
@@ -53,6 +55,30 @@ struct PlacementCandidate {
   std::vector<std::array<double, 3>> shape;
 };
 
+/// What the chosen sensors' own masses do to the article's modes: each sensor welded at
+/// its station as a point mass, the loaded model solved again, each target mode followed
+/// by MAC, and its frequency shift set beside first-order perturbation theory
+/// (d omega / omega = -1/2 sum m_s |u_s|^2 for a mass-normalised shape u at the
+/// sensors' stations).
+struct SensorLoading {
+  double sensor_mass_kg = 0;  ///< each sensor (a triaxial block counts one)
+  int sensors = 0;
+  double added_kg = 0;
+  struct Mode {
+    ModeNumber mode{1};           ///< the target, unloaded
+    ModeNumber loaded_mode{1};    ///< the loaded model's mode it follows (largest MAC)
+    double frequency_hz = 0, loaded_hz = 0;
+    double shift = 0;             ///< loaded / unloaded - 1
+    double first_order = 0;       ///< -1/2 sum m |u|^2
+    double mac = 0;               ///< mass-weighted (the unloaded M), over the coordinates
+    /// The exact shift differs from first order by more than a fifth of itself: the
+    /// sensors are heavy against the mode's modal mass, their effect is not a small correction.
+    bool beyond_first_order = false;
+    bool shared = false;          ///< another target follows the same loaded mode: the shapes changed
+  };
+  std::vector<Mode> modes;
+};
+
 /// A candidate's measuring direction (a row of the placement problem).
 struct PlacementDirection {
   int block = 0;            ///< its candidate
@@ -71,6 +97,7 @@ struct PlacementStudy {
   std::vector<PlacementDirection> directions;  ///< every row, in order
   std::vector<std::string> channels;  ///< the chosen sensor directions, "station axis", in row order (the TAMs' and channels.csv's)
   std::vector<TamResult> tams;        ///< one per options.tam, on `channels`
+  std::optional<SensorLoading> loading;  ///< options.sensor_mass_kg > 0
 };
 
 /// Throws UsageError for target modes that do not exist or are not vibration modes

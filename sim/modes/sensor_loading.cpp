@@ -1,0 +1,57 @@
+#include "sim/modes/sensor_loading.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/core/errors.hpp"
+#include "sim/core/progress.hpp"
+
+namespace mmv {
+
+SensorLoading sensorLoading(const ArticleScene& scene, const SolvedScene& s, const Eigen::MatrixXd& shapes,
+                            const PlacementStudy& study, double sensor_mass_kg) {
+  MMV_DEMAND(sensor_mass_kg > 0 && shapes.cols() == static_cast<Eigen::Index>(study.target_modes.size()));
+  const ProgressStage stage("the sensors' masses on the model: its modes again");
+  SensorLoading out;
+  out.sensor_mass_kg = sensor_mass_kg;
+  ArticleScene loaded = scene;
+  std::vector<double> first_order(study.target_modes.size(), 0.0);
+  for (int b : study.result.kept_blocks) {
+    const PlacementCandidate& c = study.candidates[static_cast<std::size_t>(b)];
+    auto link = std::find_if(loaded.article.links.begin(), loaded.article.links.end(), [&](const LinkSpec& l) { return l.name == c.link; });
+    MMV_DEMAND(link != loaded.article.links.end());
+    link->station_masses.push_back({c.x_m, sensor_mass_kg});
+    ++out.sensors;
+    for (std::size_t j = 0; j < first_order.size(); ++j) {
+      const auto& u = c.shape[j];
+      first_order[j] -= 0.5 * sensor_mass_kg * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    }
+  }
+  out.added_kg = sensor_mass_kg * out.sensors;
+  int highest = 0;
+  for (const ModeNumber m : study.target_modes) highest = std::max(highest, m.number());
+  const SolvedScene l = solveScene(loaded, {}, std::min<int>(highest + 6, static_cast<int>(s.modes.omega2.size())));
+  MMV_DEMAND(l.linearized.dofs == s.linearized.dofs);  // welded masses add no coordinate
+  for (std::size_t j = 0; j < study.target_modes.size(); ++j) {
+    SensorLoading::Mode m;
+    m.mode = study.target_modes[j];
+    m.frequency_hz = s.modes.frequencyHz(m.mode.index());
+    const Eigen::VectorXd phi = shapes.col(static_cast<Eigen::Index>(j)), Mphi = s.linearized.M * phi;
+    for (Eigen::Index k = 0; k < l.modes.shapes.cols(); ++k) {
+      const Eigen::VectorXd psi = l.modes.shapes.col(k);
+      const double mac = std::pow(Mphi.dot(psi), 2) / (phi.dot(Mphi) * psi.dot(s.linearized.M * psi));
+      if (mac > m.mac) m.mac = mac, m.loaded_mode = ModeNumber::atIndex(static_cast<int>(k));
+    }
+    m.loaded_hz = l.modes.frequencyHz(m.loaded_mode.index());
+    m.shift = m.loaded_hz / m.frequency_hz - 1;
+    m.first_order = first_order[j];
+    m.beyond_first_order = std::abs(m.shift - m.first_order) > 0.2 * std::abs(m.shift) + 1e-6;
+    out.modes.push_back(m);
+  }
+  for (auto& a : out.modes)
+    for (const auto& b : out.modes)
+      if (&a != &b && a.loaded_mode == b.loaded_mode) a.shared = true;
+  return out;
+}
+
+}  // namespace mmv
