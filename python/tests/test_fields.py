@@ -1,6 +1,7 @@
 """Results' tables from the library's field lists: each `table()` equals the CSV file the
 command line writes for the same request, column for column (docs/python.md)."""
 import csv
+import json
 import os
 import subprocess
 import warnings
@@ -115,6 +116,13 @@ def test_place_sensors_tam_table_is_tam_csv(tmp_path):
     assert p.tam_csv == (out / "tam.csv").read_text()
     loaded = mmvlab.place_sensors(mmvlab.load_scene(), segments=8, count=8, sensor_mass=1e-6)
     assert len(loaded.json["mass_loading"]["modes"]) == len(loaded.target_modes)
+    spread = mmvlab.place_sensors(mmvlab.load_scene(), segments=16, count=24, min_separation=0.15)
+    cli = subprocess.run([MMVLAB, "place-sensors", "--segments", "16", "--count", "24", "--min-separation", "0.15", "--json"],
+                         capture_output=True, text=True)
+    assert [c["station"] for c in spread.chosen] == [c["station"] for c in json.loads(cli.stdout)["chosen"]]
+    with pytest.raises(mmvlab.UsageError, match="^keep_out link1:0:2.44: covers the whole link"):
+        mmvlab.place_sensors(mmvlab.load_scene(), segments=4, keep_out="link1:0:2.44")
+    assert len(mmvlab.place_sensors(mmvlab.load_scene(), segments=8, channels=12, triaxial=True).chosen) == 4
     with pytest.raises(mmvlab.UsageError, match="sensor_mass"):
         mmvlab.place_sensors(mmvlab.load_scene(), segments=4, sensor_mass=101)
     with pytest.raises(mmvlab.UsageError, match="^tam: unknown test-analysis model 'craig'"):

@@ -31,6 +31,38 @@ CheckStudy runCheckStudy(const Scene& scene, const CheckRequest& r) {
   return s;
 }
 
+namespace {
+
+/// --keep-out LINK:FROM:TO, each checked against the article: a link it has, 0 <= FROM <
+/// TO <= its length, not all of it.
+std::vector<PlacementOptions::KeepOut> keepOuts(const Scene& scene, const PlacementRequest& r) {
+  const std::string flag = optionName(r.front, "--keep-out");
+  std::vector<PlacementOptions::KeepOut> out;
+  if (r.keep_out.empty()) return out;
+  const auto* article = std::get_if<ArticleScene>(&scene);
+  if (!article) throw UsageError(flag + " applies to the article's scenes (its links)");
+  for (const auto& text : r.keep_out) {
+    const auto a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
+    const std::optional<double> from = b == std::string::npos ? std::nullopt : finiteNumber(text.substr(a + 1, b - a - 1));
+    const std::optional<double> to = b == std::string::npos ? std::nullopt : finiteNumber(text.substr(b + 1));
+    if (!from || !to) throw UsageError(flag + " " + text + ": expected LINK:FROM_M:TO_M, e.g. link1:2.3:2.44");
+    const std::string link = text.substr(0, a);
+    std::vector<std::string> names;
+    for (const auto& l : article->article.links) names.push_back(l.name);
+    const auto it = std::find(names.begin(), names.end(), link);
+    if (it == names.end()) throw UsageError(flag + " " + text + ": no link '" + link + "'" + didYouMean(link, names));
+    const double length = article->article.links[static_cast<std::size_t>(it - names.begin())].length;
+    if (!(*from >= 0 && *from < *to && *to <= length))
+      throw UsageError(strf("%s %s: expected 0 <= FROM < TO <= %g m (the link's length)", flag.c_str(), text.c_str(), length));
+    if (*from <= 0 && *to >= length)
+      throw UsageError(flag + " " + text + ": covers the whole link, so no sensor could see it; narrow it to the stretch to avoid");
+    out.push_back({link, *from, *to});
+  }
+  return out;
+}
+
+}  // namespace
+
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& r) {
   const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
   PlacementOptions o;
@@ -61,6 +93,15 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   if (!o.tam.empty() && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--tam") + " applies to the article's scenes (the isolator's TAM is not built yet)");
   checkRange(r.front, "--sensor-mass", r.sensor_mass_kg, 0, 100);
+  checkRange(r.front, "--min-separation", r.min_separation_m, 0, 100);
+  o.min_separation_m = r.min_separation_m;
+  if (r.channels != 0) {
+    checkRange(r.front, "--channels", r.channels, 1, 300000);
+    o.count = r.triaxial ? r.channels / 3 : r.channels;
+    if (o.count < 1)
+      throw UsageError(strf("%s %d: a triaxial block takes 3 channels", opt("--channels").c_str(), r.channels));
+  }
+  o.keep_out = keepOuts(scene, r);
   o.sensor_mass_kg = r.sensor_mass_kg;
   if (o.sensor_mass_kg > 0 && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--sensor-mass") + " applies to the article's scenes (the isolator's loading is not built yet)");

@@ -39,6 +39,9 @@ struct PlacementRequest {
   bool below_given = false;    ///< `below_hz` was given (then not `modes` too).
   std::vector<std::string> tam;  ///< guyan, irs, serep (or all): test-analysis models on the chosen sensors
   double sensor_mass_kg = 0;     ///< 0 .. 100 kg: each chosen sensor's mass, the modes solved again with them (0: not)
+  double min_separation_m = 0;   ///< 0 .. 100 m between chosen stations (0: none)
+  std::vector<std::string> keep_out;  ///< LINK:FROM_M:TO_M, stretches no sensor may go on
+  int channels = 0;              ///< > 0: the budget in channels, which sets `count` (a triaxial block costs 3)
   Front front = Front::Cli;
 };
 

@@ -153,6 +153,9 @@ struct PlaceSensorsArgs : SceneArgs {
   std::string method = "efi";
   std::vector<std::string> tam;  ///< guyan, irs, serep, all; empty: none
   double sensor_mass = 0;        ///< kg per sensor; 0: the sensors' masses left out
+  double min_separation = 0;     ///< m; 0: none
+  std::vector<std::string> keep_out;  ///< LINK:FROM:TO
+  int channels = 0;              ///< the budget; 0: --count decides
   std::string out;
   bool force = false;
 };

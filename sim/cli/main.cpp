@@ -245,6 +245,11 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   p->add_flag("--triaxial", ps.triaxial, "Place triaxial blocks (kept or removed whole) instead of uniaxial sensors");
   p->add_option("--method", ps.method, "efi (effective independence), mke (modal kinetic energy) or dpr (driving-point residue)")
       ->capture_default_str();
+  p->add_option("--min-separation", ps.min_separation,
+                "No two chosen stations closer than this, m (0 .. 100; one station's directions excepted)");
+  p->add_option("--keep-out", ps.keep_out, "LINK:FROM_M:TO_M: a stretch of a link no sensor may go on (repeatable)");
+  p->add_option("--channels", ps.channels,
+                "The budget in channels: sets --count (a triaxial block takes 3)");
   p->add_option("--sensor-mass", ps.sensor_mass,
                 "Each chosen sensor's mass, kg (0 .. 100; a triaxial block counts one): welded at its station and the "
                 "modes solved again, each target's shift beside first-order perturbation theory");

@@ -104,6 +104,9 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.method = args.method;
     r.tam = args.tam;
     r.sensor_mass_kg = args.sensor_mass;
+    r.min_separation_m = args.min_separation;
+    r.keep_out = args.keep_out;
+    r.channels = args.channels;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const auto* article = std::get_if<ArticleScene>(&loaded);

@@ -1,6 +1,7 @@
 #include "sim/modes/place_sensors.hpp"
 #include "sim/core/progress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -106,7 +107,14 @@ void addStation(PlacementStudy& study, PlacementProblem& p, StationRows& acc, co
     const int block = static_cast<int>(study.candidates.size()) - 1;
     p.block.push_back(block);
     study.directions.push_back({block, axis_names[a], {e[0], e[1], e[2]}});
+    if (p.block_at.size() < study.candidates.size()) p.block_at.push_back(Eigen::Vector3d(pos[0], pos[1], pos[2]));
   }
+}
+
+/// Whether station x of `link` lies in one of the keep-out stretches.
+bool keptOut(const PlacementOptions& o, const std::string& link, double x) {
+  return std::any_of(o.keep_out.begin(), o.keep_out.end(),
+                     [&](const PlacementOptions::KeepOut& k) { return k.link == link && x >= k.from_m && x <= k.to_m; });
 }
 
 /// The chosen sensor directions (the kept blocks' rows, in row order).
@@ -177,6 +185,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
     const std::vector<double> xs = stationsAlong(link.length, o.spacing_m);
     for (std::size_t i = 0; i < xs.size(); ++i) {
       const double x = xs[i];
+      if (keptOut(o, link.name, x)) continue;
       // Each station's tributary mass (modal kinetic energy): the link between the
       // midpoints to its neighbours (the first from the root, the last to the tip), and
       // the tip's lumped masses at the last. Before, every station had rho A spacing and
@@ -194,6 +203,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
       addStation(study, p, acc, {*ref, st, s.linearized.dofs, shapes, directions, o.triaxial}, c);
     }
   }
+  p.min_separation = o.min_separation_m;
   const std::vector<Eigen::RowVectorXd>& rows = acc.rows;
   const std::vector<double>& masses = acc.masses;
   p.phi.resize(rows.size(), k);

@@ -34,6 +34,13 @@ struct PlacementOptions {
   PlacementMethod method = PlacementMethod::EffectiveIndependence;
   std::vector<TamMethod> tam;  ///< test-analysis models to build on the chosen sensors (the article's)
   double sensor_mass_kg = 0;   ///< > 0: each chosen sensor's mass, welded on and the modes solved again (the article's)
+  double min_separation_m = 0;  ///< > 0: no two chosen stations closer (a station's directions excepted)
+  /// Stretches of a link no sensor may go on (torquer housings, clamps): link, from, to (m from its root).
+  struct KeepOut {
+    std::string link;
+    double from_m = 0, to_m = 0;
+  };
+  std::vector<KeepOut> keep_out;
   int count = 8;              ///< sensors (uniaxial) or blocks (triaxial) to keep.
 };
 

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv {
 
@@ -60,12 +61,29 @@ std::vector<std::vector<Eigen::Index>> blockRows(const PlacementProblem& p) {
   return rows;
 }
 
+/// Pairs of blocks too close to be kept together (apart, closer than the separation).
+std::vector<std::vector<int>> conflicts(const PlacementProblem& p) {
+  std::vector<std::vector<int>> out(p.block_at.size());
+  if (p.min_separation <= 0) return out;
+  for (std::size_t a = 0; a < p.block_at.size(); ++a)
+    for (std::size_t b = a + 1; b < p.block_at.size(); ++b) {
+      const double d = (p.block_at[a] - p.block_at[b]).norm();
+      if (d > 1e-9 && d < p.min_separation) out[a].push_back(static_cast<int>(b)), out[b].push_back(static_cast<int>(a));
+    }
+  return out;
+}
+
 /// Iterative deletion: returns the kept blocks and fills the deletion order and the
-/// kept blocks' EfI values.
+/// kept blocks' EfI values. With a minimum separation, while two kept blocks are too
+/// close the deletion chooses among those in conflict (the one whose loss costs the
+/// least information), so the kept set ends with none; it may then hold fewer than
+/// `count` blocks (the separation leaves no more), and never fewer rows than modes.
 std::vector<int> effectiveIndependence(const PlacementProblem& p, int count, PlacementResult& r) {
   const auto rows = blockRows(p);
-  std::vector<int> kept(rows.size());
+  const auto near = conflicts(p);
+  std::vector<int> kept(rows.size()), clashes(rows.size(), 0);  // clashes: kept blocks too close to this one
   std::iota(kept.begin(), kept.end(), 0);
+  for (std::size_t b = 0; b < near.size(); ++b) clashes[b] = static_cast<int>(near[b].size());
   auto projector = [&](const std::vector<int>& blocks, Eigen::MatrixXd& Qinv) {
     const Eigen::MatrixXd A = rowsOfBlocks(p, blocks);
     const Eigen::MatrixXd Q = A.transpose() * A;
@@ -74,25 +92,49 @@ std::vector<int> effectiveIndependence(const PlacementProblem& p, int count, Pla
       throw NumericalError("sensor placement: the candidates cannot tell every target mode apart (Fisher information singular)");
     Qinv = lu.inverse();
   };
+  auto clashing = [&] { return std::any_of(kept.begin(), kept.end(), [&](int b) { return clashes[static_cast<std::size_t>(b)] > 0; }); };
   Eigen::MatrixXd Qinv;
   projector(kept, Qinv);
   const ProgressStage stage("effective independence: deleting candidates");
   const long to_delete = static_cast<long>(kept.size()) - count;
-  while (static_cast<int>(kept.size()) > count) {
-    progressCount(to_delete - (static_cast<long>(kept.size()) - count) + 1, to_delete, "deletion");
+  while (static_cast<int>(kept.size()) > count || (!near.empty() && clashing())) {
+    progressCount(std::min(to_delete, to_delete - (static_cast<long>(kept.size()) - count) + 1), to_delete, "deletion");
+    // Resolving the separation: the block in the most conflicts goes first (removing a
+    // crowded station frees its neighbours; by information alone the deletion eats a
+    // chain of close stations from one end and frees none), the least informative of them.
+    const bool separate = !near.empty() && clashing();
     double best = -1;
+    int most = 0;
     std::size_t best_i = 0;
     for (std::size_t i = 0; i < kept.size(); ++i) {
+      const int c = separate ? clashes[static_cast<std::size_t>(kept[i])] : 0;
+      if (separate && (c == 0 || c < most)) continue;
       const auto& rb = rows[kept[i]];
       Eigen::MatrixXd B(rb.size(), p.phi.cols());
       for (std::size_t j = 0; j < rb.size(); ++j) B.row(j) = p.phi.row(rb[j]);
       const Eigen::MatrixXd E = B * Qinv * B.transpose();
       const double keep = (Eigen::MatrixXd::Identity(rb.size(), rb.size()) - E).determinant();  // det(Q') / det(Q)
-      if (keep > best) best = keep, best_i = i;
+      if (c > most || keep > best) best = keep, best_i = i, most = c;
     }
-    r.deletion_order.push_back(kept[best_i]);
+    const int gone = kept[best_i];
+    Eigen::Index left = 0;
+    for (int b : kept) left += b == gone ? 0 : static_cast<Eigen::Index>(rows[static_cast<std::size_t>(b)].size());
+    if (left < p.phi.cols())
+      throw OptionError("--min-separation", strf(" %g m: the candidates it leaves cannot tell every target mode apart (%ld "
+                                                 "measured directions for %ld modes); lower it or place more densely",
+                                                 p.min_separation, static_cast<long>(left), static_cast<long>(p.phi.cols())));
+    if (!near.empty())
+      for (int n : near[static_cast<std::size_t>(gone)]) --clashes[static_cast<std::size_t>(n)];
+    r.deletion_order.push_back(gone);
     kept.erase(kept.begin() + static_cast<long>(best_i));
-    projector(kept, Qinv);
+    try {
+      projector(kept, Qinv);
+    } catch (const NumericalError&) {
+      if (!separate) throw;
+      throw OptionError("--min-separation", strf(" %g m: the candidates it leaves cannot tell every target mode apart "
+                                                 "(Fisher information singular); lower it or place more densely",
+                                                 p.min_separation));
+    }
   }
   r.block_score.resize(kept.size());
   for (std::size_t i = 0; i < kept.size(); ++i) {
@@ -112,7 +154,18 @@ std::vector<int> ranking(const PlacementProblem& p, const Eigen::VectorXd& row_s
   std::vector<int> order(rows.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return score[a] > score[b]; });
-  std::vector<int> kept(order.begin(), order.begin() + count);
+  // In score order, each block kept unless it is too close to one kept before it.
+  const auto near = conflicts(p);
+  std::vector<int> kept;
+  std::vector<char> taken(rows.size(), 0);
+  for (int b : order) {
+    if (static_cast<int>(kept.size()) == count) break;
+    if (!near.empty() && std::any_of(near[static_cast<std::size_t>(b)].begin(), near[static_cast<std::size_t>(b)].end(),
+                                     [&](int n) { return taken[static_cast<std::size_t>(n)] != 0; }))
+      continue;
+    kept.push_back(b);
+    taken[static_cast<std::size_t>(b)] = 1;
+  }
   std::sort(kept.begin(), kept.end());
   r.block_score.resize(kept.size());
   for (std::size_t i = 0; i < kept.size(); ++i) r.block_score[i] = score[kept[i]];

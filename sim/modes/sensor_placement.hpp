@@ -39,6 +39,11 @@ struct PlacementProblem {
   Eigen::MatrixXd phi;               ///< rows: candidate directions, columns: target modes (m per unit modal coordinate).
   std::vector<int> block;            ///< per row: its block (0..blocks-1); rows of a block are kept or removed together.
   Eigen::VectorXd row_mass;          ///< per row, kg (modal kinetic energy ranking).
+  /// Minimum separation: per block its world position (m); two kept blocks closer than
+  /// `min_separation` (and apart: one station's directions may share it) are not kept
+  /// together. Empty or 0: no constraint.
+  std::vector<Eigen::Vector3d> block_at;
+  double min_separation = 0;
   Eigen::VectorXd omega;             ///< per target mode, rad/s (> 0; driving-point residue ranking).
 };
 

@@ -1,4 +1,5 @@
-// place-sensors --tam: test-analysis models on the chosen sensors of the article, their
+// place-sensors as a pre-test analysis: test-analysis models (--tam), the sensors' masses,
+// the test geometry, the constraints. The TAMs on the chosen sensors of the article, their
 // numbers against the modes computed another way, and the requests refused by name.
 #include <nlohmann/json.hpp>
 
@@ -144,6 +145,39 @@ TEST_F(Cli, SensorMassIsCheckedAndItsLoadingReported) {
     // the loaded frequency two ways: its own, and the unloaded one times (1 + shift)
     EXPECT_NEAR(m.at("loaded_hz").get<double>(), m.at("frequency_hz").get<double>() * (1 + m.at("shift").get<double>()), 1e-9);
   }
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
+
+namespace mmv::cli_testing {
+namespace {
+
+// The constraints as a user gives them: each refused by its option's name with the fix,
+// nothing written; a budget in channels sets the count (a triaxial block takes three).
+TEST_F(Cli, PlacementConstraintsAreCheckedByName) {
+  const fs::path out = dir_ / "c";
+  const std::vector<std::pair<std::string, std::string>> bad{
+      {"--keep-out link9:0:1", "--keep-out link9:0:1: no link 'link9'"},
+      {"--keep-out link1:0:2.44", "covers the whole link"},
+      {"--keep-out link1:1:0.5", "expected 0 <= FROM < TO <= 2.44 m"},
+      {"--keep-out link1:x", "expected LINK:FROM_M:TO_M"},
+      {"--min-separation 100.01", "--min-separation: must be a finite number"},
+      {"--min-separation 3", "--min-separation 3 m: the candidates it leaves cannot tell every target mode apart"},
+      {"--channels 2 --triaxial", "--channels 2: a triaxial block takes 3 channels"},
+  };
+  for (const auto& [args, message] : bad) {
+    const Result r = run("place-sensors --segments 4 " + args + " --out " + out.string());
+    EXPECT_EQ(r.code, 64) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+  EXPECT_EQ(run("place-sensors --segments 4 --min-separation 100").code, 64);  // the bound: accepted, then too far for 8 modes
+  const auto doc = [&](const std::string& args) { return nlohmann::json::parse(run("place-sensors --segments 8 --json " + args).out); };
+  EXPECT_EQ(doc("--channels 12 --triaxial").at("chosen").size(), 4u);
+  EXPECT_EQ(doc("--channels 12").at("chosen").size(), 12u);
+  for (const auto& c : doc("--channels 12 --keep-out link1:2:2.44").at("chosen"))
+    EXPECT_FALSE(c.at("link") == "link1" && c.at("x_along_link_m").get<double>() >= 2.0) << c.dump();
 }
 
 }  // namespace
