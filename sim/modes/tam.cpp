@@ -45,7 +45,8 @@ MatrixXd condensation(const TamInput& in, TamMethod method) {
   for (Eigen::Index j = 0; j < o; ++j) PO.col(j) = in.P.col(perm[a + j]);
   const Eigen::PartialPivLU<MatrixXd> lu(PR);
   MatrixXd T0 = MatrixXd::Zero(n, n);  // q = T0 [u; q_o]
-  const MatrixXd inv = lu.inverse(), coupling = -lu.solve(PO);
+  const MatrixXd inv = lu.inverse();
+  const MatrixXd coupling = o > 0 ? MatrixXd(-lu.solve(PO)) : MatrixXd(a, 0);  // Eigen's solve of an empty block is UB
   for (Eigen::Index j = 0; j < a; ++j) {
     T0.row(perm[j]).head(a) = inv.row(j);
     T0.row(perm[j]).tail(o) = coupling.row(j);

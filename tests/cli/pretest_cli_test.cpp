@@ -176,7 +176,8 @@ TEST_F(Cli, PlacementConstraintsAreCheckedByName) {
   const auto doc = [&](const std::string& args) { return nlohmann::json::parse(run("place-sensors --segments 8 --json " + args).out); };
   EXPECT_EQ(doc("--channels 12 --triaxial").at("chosen").size(), 4u);
   EXPECT_EQ(doc("--channels 12").at("chosen").size(), 12u);
-  for (const auto& c : doc("--channels 12 --keep-out link1:2:2.44").at("chosen"))
+  const auto kept = doc("--channels 12 --keep-out link1:2:2.44");  // a named document: a range-for over a temporary's member dangles
+  for (const auto& c : kept.at("chosen"))
     EXPECT_FALSE(c.at("link") == "link1" && c.at("x_along_link_m").get<double>() >= 2.0) << c.dump();
 }
 
