@@ -186,15 +186,28 @@ TEST_F(Faults, CorrelateAndRenderLeaveOutAsItWas) {
 // SIGKILL (not caught: the next run on the same --out removes what it left). After
 // each, --out holds either what it held before or a whole new output (a kill after the
 // commit), never a mix, and after the next run no staging is left anywhere.
+//
+// Under the sanitizers the runs here check no leaks (detect_leaks=0, as the write-fault
+// harness above): a clean render once exited 1 here on CI with no finding of ours to
+// show (LeakSanitizer's stop-the-world tracer is known to die intermittently, "Tracer
+// caught signal 11", google/sanitizers#1353, and a render has Mesa's threads). Leaks are
+// checked by the rest of the sanitized suite, which runs the same verbs; what a run here
+// printed is shown with any unexpected exit code.
 class Signals : public Faults {
  protected:
+  void SetUp() override {
+    Faults::SetUp();
+    const char* asan = std::getenv("ASAN_OPTIONS");
+    ::setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + (asan && *asan ? ":" : "") + "detect_leaks=0").c_str(), 1);
+  }
   void killAtMoments(const Verb& v) {
     const fs::path home = dir_ / v.name;
     fs::create_directories(home);
     const fs::path out = !v.file.empty() ? home / v.file : home / "out";
     const std::string args = with(v.args, out) + " --force";
     const auto t0 = std::chrono::steady_clock::now();
-    ASSERT_EQ(run(args).code, 0) << v.name;
+    const Result first = run(args);
+    ASSERT_EQ(first.code, 0) << v.name << ": " << first.err;
     const double clean = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (v.file.empty()) std::ofstream(out / "notes-of-mine.txt") << "the user's own file\n";
     const Tree whole = snapshot(!v.file.empty() ? home : out);
@@ -232,7 +245,8 @@ class Signals : public Faults {
       else
         for (const char* prefix : {"/.mmvlab-staging-", "/.mmvlab-"}) killed_staging.push_back(prefix + std::to_string(pid) + "-");
     }
-    ASSERT_EQ(run(args).code, 0) << v.name << ": the run after the kills";
+    const Result last = run(args);
+    ASSERT_EQ(last.code, 0) << v.name << ": the run after the kills: " << last.err;
     EXPECT_EQ(leftovers(out), std::vector<std::string>{}) << v.name << ": a SIGKILL's staging outlived the next run";
   }
 };
