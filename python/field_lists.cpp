@@ -19,6 +19,7 @@
 #include "sim/io/placement_report.hpp"
 #include "sim/io/simulation_report.hpp"
 #include "sim/io/tam_report.hpp"
+#include "sim/io/exciter_report.hpp"
 #include "sim/io/trade_report.hpp"
 
 namespace py = pybind11;
@@ -48,6 +49,8 @@ const std::map<std::string, std::function<py::list()>>& namedLists() {
       {"convergence_modes", [] { return describe(mmv::convergenceModeFields()); }},
       {"convergence_points", [] { return describe(mmv::convergencePointFields()); }},
       {"correlation_pairs", [] { return describe(mmv::correlationPairFields()); }},
+      {"exciter_modes", [] { return describe(mmv::exciterModeFields()); }},
+      {"exciter_ranking", [] { return describe(mmv::exciterCandidateFields()); }},
       {"hamsas_modes", [] { return describe(mmv::hamsasModeFields()); }},
       {"mass_loading_modes", [] { return describe(mmv::loadingModeFields()); }},
       {"placement_candidates", [] { return describe(mmv::placementFields()); }},

@@ -180,7 +180,10 @@ class PlacementResult(Result):
     world_x_m, world_y_m, world_z_m, score: the fields of candidates.csv less `chosen`),
     `.target_modes` and `.target_frequencies_hz` (arrays); with `tam=`, `.tams` (placement.json's
     test-analysis models: method, pass, self and cross orthogonality, per-mode checks),
-    `tam_table()` (tam.csv's columns, `fields("tam_modes")`) and `.tam_csv`."""
+    `tam_table()` (tam.csv's columns, `fields("tam_modes")`) and `.tam_csv`; on a scene with a
+    `shaker:`, `.exciter` (placement.json's "exciter": the attachment, per-mode levels, the
+    random run, the first ten of the ranking), `exciter_table()` (exciter.csv's columns,
+    `fields("exciter_modes")`) and `exciter_ranking_table()` (`fields("exciter_ranking")`)."""
 
     def __init__(self, json_text, text, tam_csv=""):
         super().__init__(json_text, text)
@@ -189,6 +192,15 @@ class PlacementResult(Result):
         self.target_modes = _np.array(self.json["target_modes"], dtype=int)
         self.target_frequencies_hz = _np.array(self.json["target_frequencies_hz"], dtype=float)
         self.tams = self.json.get("tam", {}).get("models", [])
+        self.exciter = self.json.get("exciter")
+
+    def exciter_table(self):
+        """The shaker's per-mode levels as columns (exciter.csv's); empty without a shaker."""
+        return _columns(self.exciter["modes"] if self.exciter else [], [f for f in fields("exciter_modes") if f["csv"]])
+
+    def exciter_ranking_table(self):
+        """The first ten attachments of the ranking as columns (exciter_ranking.csv's first rows)."""
+        return _columns(self.exciter["ranking"] if self.exciter else [], [f for f in fields("exciter_ranking") if f["csv"]])
 
     def tam_table(self):
         """Every TAM's per-mode checks as columns (tam.csv's, `fields("tam_modes")`: method first)."""

@@ -138,3 +138,20 @@ def test_a_hamsas_modes_table_is_its_modes_csv(tmp_path):
     table = m.table()
     expect_table_is_the_csv(table, out / "modes.csv", mmvlab.fields("hamsas_modes"))
     np.testing.assert_array_equal(table["frequency_hz"], m.frequencies_hz)
+
+
+def test_place_sensors_exciter_tables_are_its_csvs(tmp_path):
+    out = tmp_path / "shaker"
+    args = [MMVLAB, "place-sensors", "--segments", "8", "--count", "12", "--out", str(out),
+            "--set", "shaker.at=link2@1.2m", "--set", "shaker.direction=[0, 1, 0]"]
+    r = subprocess.run(args, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    p = mmvlab.place_sensors(mmvlab.load_scene(set={"shaker.at": "link2@1.2m", "shaker.direction": [0, 1, 0]}), segments=8, count=12)
+    assert p.exciter["at"] == "link2@1.2m"
+    expect_table_is_the_csv(p.exciter_table(), out / "exciter.csv", mmvlab.fields("exciter_modes"))
+    ranking = p.exciter_ranking_table()
+    header, rows = cli_csv(out / "exciter_ranking.csv")
+    assert list(ranking) == header
+    assert ranking["station"] == [row[header.index("station")] for row in rows[:10]]
+    np.testing.assert_allclose(ranking["score"], [float(row[header.index("score")]) for row in rows[:10]], rtol=1e-5)
+    assert mmvlab.place_sensors(mmvlab.load_scene(), segments=8, count=12).exciter is None

@@ -6,6 +6,7 @@
 #include "sim/core/text.hpp"
 #include "sim/hamsas/hamsas_placement.hpp"
 #include "sim/io/check_report.hpp"
+#include "sim/io/exciter_report.hpp"
 #include "sim/io/placement_report.hpp"
 #include "sim/io/placement_geometry.hpp"
 #include "sim/io/tam_report.hpp"
@@ -121,6 +122,13 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
     uff::File geometry = placementGeometry(s.study, article->name);
     uff::stampNow(geometry);
     s.geometry_uff = uff::write(geometry);
+    if (article->shaker) {
+      s.exciter = runExciter(*article, s.study);
+      s.json["exciter"] = exciterJson(*s.exciter);
+      s.text += exciterText(*s.exciter);
+      s.exciter_csv = exciterCsv(*s.exciter);
+      s.exciter_ranking_csv = exciterRankingCsv(*s.exciter);
+    }
   }
   checkResultFinite(s.json);  // before any file is committed
   return s;

@@ -231,7 +231,8 @@ CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
 /// `mmvlab place-sensors` and its options.
 CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   CLI::App* p = app.add_subcommand("place-sensors",
-                                   "Sensor stations for the target modes: effective independence, kinetic energy or residue");
+                                   "Sensor stations for the target modes: effective independence, kinetic energy or residue; "
+                                   "on a scene with a shaker: its attachment, armature loading and levels (docs/pretest.md)");
   addSceneOptions(p, ps);
   p->add_flag("--json", ps.json, "Print JSON instead of tables");
   CLI::Option* target_modes =

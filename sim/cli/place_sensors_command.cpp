@@ -120,6 +120,8 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       if (!study.tam_csv.empty()) out->write("tam.csv", study.tam_csv);
       if (!study.channels_csv.empty()) out->write("channels.csv", study.channels_csv);
       if (!study.geometry_uff.empty()) out->write("test_geometry.uff", study.geometry_uff);
+      if (!study.exciter_csv.empty()) out->write("exciter.csv", study.exciter_csv);
+      if (!study.exciter_ranking_csv.empty()) out->write("exciter_ranking.csv", study.exciter_ranking_csv);
       std::vector<std::string> rows, cols;
       for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
         rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j].number(), s.target_frequencies_hz[j]));

@@ -2,11 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
 
 namespace mmv {
+
+std::pair<ModeNumber, double> followMode(const Eigen::MatrixXd& M, const Eigen::VectorXd& phi, const Eigen::MatrixXd& loaded) {
+  const Eigen::VectorXd Mphi = M * phi;
+  std::pair<ModeNumber, double> best{ModeNumber(1), 0.0};
+  for (Eigen::Index k = 0; k < loaded.cols(); ++k) {
+    const Eigen::VectorXd psi = loaded.col(k);
+    const double mac = std::pow(Mphi.dot(psi), 2) / (phi.dot(Mphi) * psi.dot(M * psi));
+    if (mac > best.second) best = {ModeNumber::atIndex(static_cast<int>(k)), mac};
+  }
+  return best;
+}
 
 SensorLoading sensorLoading(const ArticleScene& scene, const SolvedScene& s, const Eigen::MatrixXd& shapes,
                             const PlacementStudy& study, double sensor_mass_kg) {
@@ -36,12 +48,7 @@ SensorLoading sensorLoading(const ArticleScene& scene, const SolvedScene& s, con
     SensorLoading::Mode m;
     m.mode = study.target_modes[j];
     m.frequency_hz = s.modes.frequencyHz(m.mode.index());
-    const Eigen::VectorXd phi = shapes.col(static_cast<Eigen::Index>(j)), Mphi = s.linearized.M * phi;
-    for (Eigen::Index k = 0; k < l.modes.shapes.cols(); ++k) {
-      const Eigen::VectorXd psi = l.modes.shapes.col(k);
-      const double mac = std::pow(Mphi.dot(psi), 2) / (phi.dot(Mphi) * psi.dot(s.linearized.M * psi));
-      if (mac > m.mac) m.mac = mac, m.loaded_mode = ModeNumber::atIndex(static_cast<int>(k));
-    }
+    std::tie(m.loaded_mode, m.mac) = followMode(s.linearized.M, shapes.col(static_cast<Eigen::Index>(j)), l.modes.shapes);
     m.loaded_hz = l.modes.frequencyHz(m.loaded_mode.index());
     m.shift = m.loaded_hz / m.frequency_hz - 1;
     m.first_order = first_order[j];

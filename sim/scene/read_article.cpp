@@ -39,7 +39,7 @@ class SceneParser {
   ArticleScene parse(const YAML::Node& root, const std::string& source) {
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
                                      "links", "closures", "loads", "damping", "simulation", "sensors", "views", "lab",
-                                     "model"});
+                                     "shaker", "model"});
     ArticleScene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -65,6 +65,7 @@ class SceneParser {
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
     if (top.count("views")) readViews(r_, top.at("views"), scene);
     if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));
+    if (top.count("shaker")) scene.shaker = readShaker(r_, top.at("shaker"), a);
     if (a.base.motion) checkStroke(*a.base.motion, scene.simulation.duration, motion_mark_, "base.motion");
     if (a.base.motion_z) {
       checkStroke(*a.base.motion_z, scene.simulation.duration, *motion_z_mark_, "base.motion_z");

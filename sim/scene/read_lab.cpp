@@ -5,6 +5,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 
+#include "sim/scene/stations.hpp"
+
 namespace mmv::scene_detail {
 
 facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n) {
@@ -52,6 +54,48 @@ facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n) {
   need(lab.platform_width <= lab.floor_width, "platform_width_m",
        strf("the platform (%g m) must fit over the floor (%g m)", lab.platform_width, lab.floor_width));
   return lab;
+}
+
+ShakerSceneSpec readShaker(const YamlReader& r, const YAML::Node& n, const ArticleSpec& article) {
+  const auto m = r.mapping(n, "shaker", {"at", "direction", "force_limit_n", "stroke_m", "armature_mass_kg", "crest_factor"});
+  ShakerSceneSpec s;
+  const YAML::Node& at = r.require(m, n, "shaker", "at");
+  s.at = r.text(at, "shaker.at");
+  if (!s.autoAt()) {
+    std::string error;
+    const std::optional<StationSpec> st = parseStation(s.at, article, error);
+    if (!st)
+      r.fail(at.Mark(), "shaker.at: the shaker must be attached to the article at a station, LINK@DISTm or LINK@FRACTION "
+                        "(e.g. link2@1.2m), or 'auto' for the best-ranked one: " + (isStationName(s.at) ? error : "got '" + s.at + "'"));
+    if (st->offset != 0 || st->offset_z != 0)
+      r.fail(at.Mark(), "shaker.at: the stinger attaches on the link's axis: give the station without an offset (got '" + s.at + "')");
+  }
+  const YAML::Node& dir = r.require(m, n, "shaker", "direction");
+  if (dir.IsScalar() && dir.Scalar() == "auto") {
+    s.auto_direction = true;
+  } else {
+    s.direction = r.vec3(dir, "shaker.direction");
+    const Eigen::Vector3d d(s.direction[0], s.direction[1], s.direction[2]);
+    if (!(d.norm() > 1e-12)) r.fail(dir.Mark(), "shaker.direction must not be zero: give the force's direction in the world, e.g. [0, 1, 0], or 'auto'");
+    if (d[2] != 0 && article.model != ArticleModel::Spatial)
+      r.fail(dir.Mark(), "shaker.direction leaves the plane of motion (z = " + dir[2].Scalar() + "): it needs model: spatial");
+    const Eigen::Vector3d u = d.normalized();
+    s.direction = {u[0], u[1], u[2]};
+  }
+  if (s.autoAt() != s.auto_direction)
+    r.fail(dir.Mark(), "shaker: 'auto' chooses the station and the direction together: give both as 'auto', or neither");
+  auto within = [&](const char* key, double lo, double hi, const char* unit, double& field) {
+    if (!m.count(key)) return;
+    const double v = r.number(m.at(key), std::string("shaker.") + key);
+    if (!(v >= lo && v <= hi))
+      r.fail(m.at(key).Mark(), strf("shaker.%s must be between %g and %g%s (got %s)", key, lo, hi, unit, m.at(key).Scalar().c_str()));
+    field = v;
+  };
+  within("force_limit_n", 1e-3, 1e6, " N", s.hardware.force_limit);
+  within("stroke_m", 1e-6, 10, " m", s.hardware.stroke);
+  within("armature_mass_kg", 0, 1000, " kg", s.hardware.armature_mass);
+  within("crest_factor", 1, 10, "", s.hardware.crest_factor);
+  return s;
 }
 
 /// views: {NAME: {eye: [x, y, z], target: [x, y, z], up: [x, y, z], fov_deg: F}}.

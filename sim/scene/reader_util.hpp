@@ -209,6 +209,9 @@ DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
 Section readSection(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
 Material readMaterial(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
 facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n);
+/// shaker: {at: STATION | auto, direction: [x, y, z] | auto, force_limit_n, stroke_m,
+/// armature_mass_kg, crest_factor}; after the links and the model are read.
+ShakerSceneSpec readShaker(const YamlReader& r, const YAML::Node& n, const ArticleSpec& article);
 /// views: {NAME: {eye: [x, y, z], target: [x, y, z], up: [x, y, z], fov_deg: F}} (sim/scene/read_lab.cpp).
 void readViews(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
 /// Every key of a name->item mapping (each allowed; duplicates are still caught).

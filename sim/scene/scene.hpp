@@ -19,6 +19,7 @@
 #include "article/article_spec.hpp"
 #include "article/hamsas.hpp"
 #include "facility/lab.hpp"
+#include "facility/shaker.hpp"
 #include "sim/core/errors.hpp"
 
 namespace mmv {
@@ -83,6 +84,17 @@ struct SourceMap {
   std::string where(const std::string& key) const;
 };
 
+/// `shaker:`: the extra shaker (facility/shaker.hpp) where it is attached. A scene
+/// without one builds none; `place-sensors` then plans no excitation.
+struct ShakerSceneSpec {
+  std::string at;  ///< a station of the article (sim/scene/stations.hpp), or "auto": the best-ranked candidate
+  /// The force's direction (world, unit); `auto_direction`: the best-ranked candidate's.
+  std::array<double, 3> direction{0, 1, 0};
+  bool auto_direction = false;
+  facility::ShakerSpec hardware;
+  bool autoAt() const { return at == "auto"; }
+};
+
 struct ArticleScene {
   std::string name;
   std::string source;  ///< file the scene came from, or "<default scene>".
@@ -95,6 +107,7 @@ struct ArticleScene {
   std::vector<SensorSceneSpec> sensors;
   std::vector<CameraView> views;  ///< named camera poses for `mmvlab render --view NAME`.
   std::optional<facility::LabSpec> lab;  ///< `lab:`: the room, drawn by renders (none: the article alone).
+  std::optional<ShakerSceneSpec> shaker;  ///< `shaker:`: the extra shaker (none: the table is the only exciter).
   SourceMap positions;  ///< where each key was read.
 };
 

@@ -183,3 +183,81 @@ TEST_F(Cli, PlacementConstraintsAreCheckedByName) {
 
 }  // namespace
 }  // namespace mmv::cli_testing
+
+namespace mmv::cli_testing {
+namespace {
+
+// The scene's shaker (`shaker:`, here by --set on the default scene): its analysis in
+// placement.json, exciter.csv and exciter_ranking.csv from the field lists; none of it
+// without a shaker.
+TEST_F(Cli, TheScenesShakerIsPlannedOnTheChosenSensors) {
+  const std::string shaker = " --set shaker.at=link2@1.2m --set 'shaker.direction=[0, 1, 0]'";
+  const fs::path out = dir_ / "shaker";
+  const Result r = run("place-sensors --segments 8 --count 12" + shaker + " --json --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  const auto& e = doc.at("exciter");
+  EXPECT_EQ(e.at("at"), "link2@1.2m");
+  EXPECT_FALSE(e.at("chosen_by_ranking").get<bool>());
+  const auto& targets = doc.at("target_frequencies_hz");
+  ASSERT_EQ(e.at("modes").size(), targets.size());
+  for (std::size_t j = 0; j < targets.size(); ++j) {
+    const auto& m = e.at("modes").at(j);
+    EXPECT_NEAR(m.at("frequency_hz").get<double>(), targets.at(j).get<double>(), 1e-9 * targets.at(j).get<double>());
+    EXPECT_LE(m.at("loaded_hz").get<double>(), m.at("frequency_hz").get<double>() * (1 + 1e-9));  // the armature adds mass
+    EXPECT_LE(m.at("sine_force_n").get<double>(), 30 * 4.4482216152605 * (1 + 1e-12));
+    EXPECT_LE(m.at("sine_stroke_m").get<double>(), 0.075 * (1 + 1e-12));
+    EXPECT_LE(m.at("sine_acc").get<double>(), 5 * 9.80665 * (1 + 1e-12));
+    EXPECT_EQ(m.at("seen").get<bool>(), m.at("sine_snr_db").get<double>() >= 20);
+  }
+  std::string csv = slurp(out / "exciter.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "mode,frequency_hz,loaded_mode,loaded_hz,shift,mac,zeta,sine_force_n,sine_limit,sine_acc,best_channel,sine_snr_db,"
+            "channels_seen,sine_stroke_m,random_snr_db,seen");
+  EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), 1 + targets.size());
+  csv = slurp(out / "exciter_ranking.csv");
+  EXPECT_EQ(static_cast<long>(std::count(csv.begin(), csv.end(), '\n')), 1 + e.at("candidates").get<long>());
+  // The text report says where and what it found.
+  const Result text = run("place-sensors --segments 8 --count 12" + shaker);
+  EXPECT_NE(text.out.find("Shaker (133.4 N, +-0.075 m stroke, 0.5 kg armature) at link2@1.2m"), std::string::npos) << text.out;
+  // Without a shaker: no analysis, no files.
+  const fs::path bare = dir_ / "bare";
+  const Result none = run("place-sensors --segments 8 --count 12 --json --out " + bare.string());
+  ASSERT_EQ(none.code, 0) << none.err;
+  EXPECT_FALSE(nlohmann::json::parse(none.out).contains("exciter"));
+  EXPECT_FALSE(fs::exists(bare / "exciter.csv"));
+}
+
+// The shaker's limits as the docs state them, at each bound and one past it; an
+// attachment off the article; the fix named, exit 65 and nothing written.
+TEST_F(Cli, TheShakersValuesAreCheckedAtTheirBounds) {
+  const std::string at = " --set shaker.at=link1@1m --set 'shaker.direction=[0, 1, 0]'";
+  struct Bound {
+    std::string key, ok, past;
+  };
+  for (const Bound& b : {Bound{"force_limit_n", "1e-3", "0.99e-3"}, Bound{"force_limit_n", "1e6", "1.01e6"},
+                         Bound{"stroke_m", "1e-6", "0.99e-6"}, Bound{"stroke_m", "10", "10.1"},
+                         Bound{"armature_mass_kg", "0", "-1e-9"}, Bound{"armature_mass_kg", "1000", "1000.1"},
+                         Bound{"crest_factor", "1", "0.99"}, Bound{"crest_factor", "10", "10.1"}}) {
+    const Result ok = run("place-sensors --segments 4 --count 8" + at + " --set shaker." + b.key + "=" + b.ok);
+    EXPECT_EQ(ok.code, 0) << b.key << "=" << b.ok << ": " << ok.err;
+    const fs::path out = dir_ / ("past-" + b.key);
+    const Result past = run("place-sensors --segments 4 --count 8" + at + " --set shaker." + b.key + "=" + b.past + " --out " + out.string());
+    EXPECT_EQ(past.code, 65) << b.key << "=" << b.past;
+    EXPECT_NE(past.err.find("shaker." + b.key + " must be between"), std::string::npos) << past.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  const Result off = run("place-sensors --segments 4 --set shaker.at=link2@2m --set 'shaker.direction=[0, 1, 0]'");
+  EXPECT_EQ(off.code, 65);
+  EXPECT_NE(off.err.find("shaker.at: the shaker must be attached to the article at a station"), std::string::npos) << off.err;
+  EXPECT_NE(off.err.find("outside link2 (0 to 1.52 m)"), std::string::npos) << off.err;
+  const Result flat = run("place-sensors --segments 4 --set shaker.at=link2@1m --set 'shaker.direction=[0, 0, 1]'");
+  EXPECT_EQ(flat.code, 65);
+  EXPECT_NE(flat.err.find("shaker.direction leaves the plane of motion (z = 1): it needs model: spatial"), std::string::npos) << flat.err;
+  const Result half = run("place-sensors --segments 4 --set shaker.at=auto --set 'shaker.direction=[0, 1, 0]'");
+  EXPECT_EQ(half.code, 65);
+  EXPECT_NE(half.err.find("give both as 'auto', or neither"), std::string::npos) << half.err;
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
