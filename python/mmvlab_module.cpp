@@ -168,7 +168,7 @@ py::tuple correlate(const PyScene& scene, int segments, const std::string& measu
 py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int>& target_modes, std::optional<double> below_hz,
                        double spacing, int count, bool triaxial, const std::string& method, const std::vector<std::string>& tam,
                        double sensor_mass, double min_separation, const std::vector<std::string>& keep_out, int channels,
-                       py::object progress) {
+                       bool keep_scene_sensors, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   const mmv::Scene& sc = prepared.scene;
   mmv::app::PlacementRequest r;
@@ -184,6 +184,7 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   r.min_separation_m = min_separation;
   r.keep_out = keep_out;
   r.channels = channels;
+  r.keep_scene_sensors = keep_scene_sensors;
   r.front = Front::Python;
   const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(sc, r); });
   return py::make_tuple(s.json.dump(), s.text, s.tam_csv, prepared.warnings);
@@ -496,5 +497,5 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("damping"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),
         py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("tam"), py::arg("sensor_mass"),
-        py::arg("min_separation"), py::arg("keep_out"), py::arg("channels"), py::arg("progress"));
+        py::arg("min_separation"), py::arg("keep_out"), py::arg("channels"), py::arg("keep_scene_sensors"), py::arg("progress"));
 }

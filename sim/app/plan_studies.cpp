@@ -103,6 +103,11 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
       throw UsageError(strf("%s %d: a triaxial block takes 3 channels", opt("--channels").c_str(), r.channels));
   }
   o.keep_out = keepOuts(scene, r);
+  o.keep_scene_sensors = r.keep_scene_sensors;
+  if (r.keep_scene_sensors && r.triaxial)
+    throw UsageError(opt("--keep-scene-sensors") + " keeps uniaxial sensors: it is not built for --triaxial blocks yet");
+  if (r.keep_scene_sensors && !std::holds_alternative<ArticleScene>(scene))
+    throw UsageError(opt("--keep-scene-sensors") + " applies to the article's scenes (the isolator's sensors are not scene data)");
   o.sensor_mass_kg = r.sensor_mass_kg;
   if (o.sensor_mass_kg > 0 && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--sensor-mass") + " applies to the article's scenes (the isolator's loading is not built yet)");

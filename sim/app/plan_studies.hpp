@@ -43,6 +43,7 @@ struct PlacementRequest {
   double min_separation_m = 0;   ///< 0 .. 100 m between chosen stations (0: none)
   std::vector<std::string> keep_out;  ///< LINK:FROM_M:TO_M, stretches no sensor may go on
   int channels = 0;              ///< > 0: the budget in channels, which sets `count` (a triaxial block costs 3)
+  bool keep_scene_sensors = false;  ///< the scene's accelerometers kept in advance, counted in the budget
   Front front = Front::Cli;
 };
 

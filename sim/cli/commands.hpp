@@ -156,6 +156,7 @@ struct PlaceSensorsArgs : SceneArgs {
   double min_separation = 0;     ///< m; 0: none
   std::vector<std::string> keep_out;  ///< LINK:FROM:TO
   int channels = 0;              ///< the budget; 0: --count decides
+  bool keep_scene_sensors = false;  ///< --keep-scene-sensors
   std::string out;
   bool force = false;
 };

@@ -251,6 +251,9 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   p->add_option("--keep-out", ps.keep_out, "LINK:FROM_M:TO_M: a stretch of a link no sensor may go on (repeatable)");
   p->add_option("--channels", ps.channels,
                 "The budget in channels: sets --count (a triaxial block takes 3)");
+  p->add_flag("--keep-scene-sensors", ps.keep_scene_sensors,
+              "Keep the scene's own accelerometers (at stations, or links' roots and tips), counted in --count, and choose "
+              "the others around them");
   p->add_option("--sensor-mass", ps.sensor_mass,
                 "Each chosen sensor's mass, kg (0 .. 100; a triaxial block counts one): welded at its station and the "
                 "modes solved again, each target's shift beside first-order perturbation theory");

@@ -107,6 +107,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.min_separation_m = args.min_separation;
     r.keep_out = args.keep_out;
     r.channels = args.channels;
+    r.keep_scene_sensors = args.keep_scene_sensors;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const auto* article = std::get_if<ArticleScene>(&loaded);

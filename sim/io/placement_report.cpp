@@ -38,7 +38,7 @@ std::string placementText(const PlacementStudy& s) {
   Table t({"station", "axis", "x_m", "y_m", "z_m", s.method == "effective independence" ? "EfI" : "score"});
   for (std::size_t i = 0; i < r.kept_blocks.size(); ++i) {
     const PlacementCandidate& c = s.candidates[r.kept_blocks[i]];
-    t.add({c.station, c.axis, strf("%.4f", c.world_x), strf("%.4f", c.world_y), strf("%.4f", c.world_z), strf("%.4g", r.block_score[i])});
+    t.add({c.fixed ? c.station + " (scene's)" : c.station, c.axis, strf("%.4f", c.world_x), strf("%.4f", c.world_y), strf("%.4f", c.world_z), strf("%.4g", r.block_score[i])});
   }
   os << t.text();
   os << strf("\nFisher information: det %.4g, condition number %s; largest off-diagonal AutoMAC %.4f\n",
@@ -74,6 +74,8 @@ const std::vector<Field<PlacementRow>>& placementFields() {
        [](const PlacementRow& r) -> Value {
          return r.chosen ? Value(nlohmann::ordered_json(r.score)) : std::nullopt;
        }},
+      {"fixed", "", "%d", "1 for a scene accelerometer kept in advance (--keep-scene-sensors)",
+       [](const PlacementRow& r) -> Value { return r.candidate->fixed ? 1 : 0; }},
   };
   return fields;
 }

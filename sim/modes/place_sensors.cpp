@@ -10,9 +10,11 @@
 
 #include "article/section.hpp"
 #include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
 #include "sim/model/stations.hpp"
 #include "sim/modes/sensor_loading.hpp"
 #include "sim/modes/system_modes.hpp"
+#include "sim/scene/stations.hpp"
 
 namespace mmv {
 namespace {
@@ -148,6 +150,57 @@ void buildPlacementTams(PlacementStudy& study, const SolvedScene& s, const Eigen
   for (const TamMethod m : methods) study.tams.push_back(buildTam(in, m));
 }
 
+/// Where a scene accelerometer sits along its link: a station, or a link's root or tip;
+/// nothing (with the reason) for a point of the mesh (a hinge, a joint).
+std::optional<std::pair<std::string, double>> sensorStation(const ArticleSpec& a, const std::string& target, std::string& why) {
+  if (isStationName(target)) {
+    const std::optional<StationSpec> st = parseStation(target, a, why);
+    if (st) return std::make_pair(st->link, st->x);
+    return std::nullopt;
+  }
+  const auto dot = target.rfind('.');
+  const LinkSpec* link = dot == std::string::npos ? nullptr : a.findLink(target.substr(0, dot));
+  const std::string end = dot == std::string::npos ? "" : target.substr(dot + 1);
+  if (link && (end == "tip" || end == "root")) return std::make_pair(link->name, end == "tip" ? link->length : 0.0);
+  why = "'" + target + "' is a point of the mesh, which moves along the link when the segments change: give it as a station";
+  return std::nullopt;
+}
+
+/// The scene's own accelerometers, fixed in advance (`keep_scene_sensors`): each one's
+/// direction at a candidate station already there (same link, same distance), else at a
+/// station of its own added with its other directions as candidates.
+void fixScenesSensors(const ArticleScene& scene, const Model& model, const SimTK::State& st, const SolvedScene& s,
+                      const Eigen::MatrixXd& shapes, PlacementStudy& study, PlacementProblem& p, StationRows& acc) {
+  static const char* const axis_names[] = {"axial", "transverse", "normal"};
+  int fixed = 0;
+  for (const auto& sensor : scene.sensors) {
+    if (sensor.type != "accelerometer") continue;
+    std::string why;
+    const auto at = sensorStation(scene.article, sensor.target, why);
+    if (!at) throw OptionError("--keep-scene-sensors", ": sensor " + sensor.name + " (" + sensor.where + "): " + why);
+    auto same = [&](const PlacementCandidate& c) { return c.link == at->first && std::abs(c.x_m - at->second) < 1e-9; };
+    if (std::none_of(study.candidates.begin(), study.candidates.end(), same)) {
+      std::string error;
+      const std::optional<PointRef> ref = PointRef::resolve(model, scene.article, sensor.target, error);
+      MMV_DEMAND(ref.has_value());  // the reader resolved it
+      const auto li = std::find_if(scene.article.links.begin(), scene.article.links.end(), [&](const LinkSpec& l) { return l.name == at->first; });
+      const int node = static_cast<int>(li - scene.article.links.begin() + 1) * 100000 + static_cast<int>(std::lround(1e3 * at->second));
+      addStation(study, p, acc, {*ref, st, s.linearized.dofs, shapes, model.isSpatial() ? 3 : 2, false},
+                 PlacementCandidate{sensor.target, at->first, at->second, "", 0, 0, 0, 0.0, node, {}});
+    }
+    for (std::size_t r = 0; r < study.directions.size(); ++r) {
+      const PlacementDirection& d = study.directions[r];
+      if (!same(study.candidates[static_cast<std::size_t>(d.block)]) || d.axis != axis_names[sensor.axis]) continue;
+      p.fixed_block.resize(study.candidates.size(), 0);
+      fixed += !p.fixed_block[static_cast<std::size_t>(d.block)];
+      p.fixed_block[static_cast<std::size_t>(d.block)] = 1;
+      study.candidates[static_cast<std::size_t>(d.block)].fixed = true;
+    }
+  }
+  if (fixed == 0) throw OptionError("--keep-scene-sensors", ": the scene has no accelerometer to keep (sensors: of type accelerometer)");
+  p.fixed_block.resize(study.candidates.size(), 0);
+}
+
 }  // namespace
 
 PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {
@@ -202,6 +255,12 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
       PlacementCandidate c{name, link.name, x, "", 0, 0, 0, mass, static_cast<int>(li + 1) * 100000 + static_cast<int>(std::lround(1e3 * x)), {}};
       addStation(study, p, acc, {*ref, st, s.linearized.dofs, shapes, directions, o.triaxial}, c);
     }
+  }
+  if (o.keep_scene_sensors) {
+    fixScenesSensors(scene, model, st, s, shapes, study, p, acc);
+    const long fixed = std::count(p.fixed_block.begin(), p.fixed_block.end(), 1);
+    if (o.count < fixed)
+      throw OptionError("--count", strf(" %d: below the %ld accelerometers of the scene that --keep-scene-sensors keeps", o.count, fixed));
   }
   p.min_separation = o.min_separation_m;
   const std::vector<Eigen::RowVectorXd>& rows = acc.rows;

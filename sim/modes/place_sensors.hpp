@@ -42,6 +42,9 @@ struct PlacementOptions {
   };
   std::vector<KeepOut> keep_out;
   int count = 8;              ///< sensors (uniaxial) or blocks (triaxial) to keep.
+  /// The scene's own accelerometers (at stations, or links' roots and tips) kept, each
+  /// counted in `count`, the others chosen around them (uniaxial placement).
+  bool keep_scene_sensors = false;
 };
 
 struct PlacementCandidate {
@@ -60,6 +63,7 @@ struct PlacementCandidate {
   /// Its world translation in each target mode (m per unit modal coordinate; z = 0 on
   /// the planar model), for the test geometry's predicted shapes.
   std::vector<std::array<double, 3>> shape;
+  bool fixed = false;  ///< a scene accelerometer kept in advance (keep_scene_sensors)
 };
 
 /// What the chosen sensors' own masses do to the article's modes: each sensor welded at

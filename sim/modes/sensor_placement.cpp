@@ -68,6 +68,7 @@ std::vector<std::vector<int>> conflicts(const PlacementProblem& p) {
   for (std::size_t a = 0; a < p.block_at.size(); ++a)
     for (std::size_t b = a + 1; b < p.block_at.size(); ++b) {
       const double d = (p.block_at[a] - p.block_at[b]).norm();
+      if (p.fixed(static_cast<int>(a)) && p.fixed(static_cast<int>(b))) continue;  // both the user's: as they are
       if (d > 1e-9 && d < p.min_separation) out[a].push_back(static_cast<int>(b)), out[b].push_back(static_cast<int>(a));
     }
   return out;
@@ -106,7 +107,9 @@ std::vector<int> effectiveIndependence(const PlacementProblem& p, int count, Pla
     double best = -1;
     int most = 0;
     std::size_t best_i = 0;
+    bool found = false;
     for (std::size_t i = 0; i < kept.size(); ++i) {
+      if (p.fixed(kept[i])) continue;  // fixed in advance: never deleted
       const int c = separate ? clashes[static_cast<std::size_t>(kept[i])] : 0;
       if (separate && (c == 0 || c < most)) continue;
       const auto& rb = rows[kept[i]];
@@ -114,8 +117,9 @@ std::vector<int> effectiveIndependence(const PlacementProblem& p, int count, Pla
       for (std::size_t j = 0; j < rb.size(); ++j) B.row(j) = p.phi.row(rb[j]);
       const Eigen::MatrixXd E = B * Qinv * B.transpose();
       const double keep = (Eigen::MatrixXd::Identity(rb.size(), rb.size()) - E).determinant();  // det(Q') / det(Q)
-      if (c > most || keep > best) best = keep, best_i = i, most = c;
+      if (c > most || keep > best) best = keep, best_i = i, most = c, found = true;
     }
+    MMV_DEMAND(found);  // count >= the fixed blocks, and a fixed pair never clashes
     const int gone = kept[best_i];
     Eigen::Index left = 0;
     for (int b : kept) left += b == gone ? 0 : static_cast<Eigen::Index>(rows[static_cast<std::size_t>(b)].size());
@@ -158,7 +162,10 @@ std::vector<int> ranking(const PlacementProblem& p, const Eigen::VectorXd& row_s
   const auto near = conflicts(p);
   std::vector<int> kept;
   std::vector<char> taken(rows.size(), 0);
+  for (int b = 0; b < static_cast<int>(rows.size()); ++b)  // the fixed ones first, whatever their score
+    if (p.fixed(b)) kept.push_back(b), taken[static_cast<std::size_t>(b)] = 1;
   for (int b : order) {
+    if (taken[static_cast<std::size_t>(b)]) continue;
     if (static_cast<int>(kept.size()) == count) break;
     if (!near.empty() && std::any_of(near[static_cast<std::size_t>(b)].begin(), near[static_cast<std::size_t>(b)].end(),
                                      [&](int n) { return taken[static_cast<std::size_t>(n)] != 0; }))
@@ -178,6 +185,7 @@ PlacementResult placeSensors(const PlacementProblem& p, PlacementMethod method, 
   const int blocks = blockCount(p);
   MMV_DEMAND(static_cast<Eigen::Index>(p.block.size()) == p.phi.rows());
   MMV_DEMAND(count >= 1 && count <= blocks);  // the CLI checks --count against the candidates
+  MMV_DEMAND(count >= static_cast<int>(std::count(p.fixed_block.begin(), p.fixed_block.end(), 1)));
   PlacementResult r;
   const Eigen::Index k = p.phi.cols();
   if (method == PlacementMethod::EffectiveIndependence) {

@@ -44,6 +44,10 @@ struct PlacementProblem {
   /// together. Empty or 0: no constraint.
   std::vector<Eigen::Vector3d> block_at;
   double min_separation = 0;
+  /// Per block: 1 for a sensor fixed in advance (the scene's own): always kept, counted
+  /// in `count`; two fixed blocks may be closer than the separation. Empty: none.
+  std::vector<char> fixed_block;
+  bool fixed(int block) const { return static_cast<std::size_t>(block) < fixed_block.size() && fixed_block[static_cast<std::size_t>(block)]; }
   Eigen::VectorXd omega;             ///< per target mode, rad/s (> 0; driving-point residue ranking).
 };
 
@@ -57,8 +61,8 @@ struct PlacementResult {
   double max_offdiagonal_mac = 0;
 };
 
-/// Chooses `count` blocks (1 <= count <= blocks; at least one row per target mode for
-/// EfI so Q is invertible). Throws NumericalError when the candidates cannot see every
+/// Chooses `count` blocks (1 <= count <= blocks, and no fewer than the fixed ones; at
+/// least one row per target mode for EfI so Q is invertible), every fixed block among them. Throws NumericalError when the candidates cannot see every
 /// target mode (Q singular from the start).
 PlacementResult placeSensors(const PlacementProblem& p, PlacementMethod method, int count);
 

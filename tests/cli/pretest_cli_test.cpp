@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "support/cli.hpp"
@@ -257,6 +259,46 @@ TEST_F(Cli, TheShakersValuesAreCheckedAtTheirBounds) {
   const Result half = run("place-sensors --segments 4 --set shaker.at=auto --set 'shaker.direction=[0, 1, 0]'");
   EXPECT_EQ(half.code, 65);
   EXPECT_NE(half.err.find("give both as 'auto', or neither"), std::string::npos) << half.err;
+}
+
+// --keep-scene-sensors: the slew scene's two accelerometers (link 2's tip, transverse;
+// link 3a's tip, transverse) kept and counted; the refusals named, nothing written.
+TEST_F(Cli, TheScenesOwnSensorsAreKeptAndCounted) {
+  const std::string slew = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const fs::path out = dir_ / "kept";
+  const Result r = run("place-sensors " + slew + " --segments 8 --count 8 --method dpr --keep-scene-sensors --json --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_EQ(doc.at("chosen").size(), 8u);
+  std::set<std::string> fixed;
+  for (const auto& c : doc.at("chosen"))
+    if (c.at("fixed").get<int>() == 1) fixed.insert(c.at("station").get<std::string>() + " " + c.at("axis").get<std::string>());
+  EXPECT_EQ(fixed, (std::set<std::string>{"link2@1.52m transverse", "link3a@0.762m transverse"}));
+  const std::string csv = slurp(out / "candidates.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "station,link,x_along_link_m,axis,world_x_m,world_y_m,world_z_m,chosen,score,fixed");
+  struct Refusal {
+    std::string args, message;
+    int code;
+  };
+  for (const Refusal& b : {Refusal{slew + " --segments 4 --count 1", "--count 1: below the 2 accelerometers of the scene", 64},
+                           Refusal{"--segments 4", "--keep-scene-sensors: the scene has no accelerometer to keep", 64},
+                           Refusal{slew + " --segments 4 --triaxial", "it is not built for --triaxial blocks yet", 64},
+                           Refusal{(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string(), "applies to the article's scenes", 64}}) {
+    const fs::path none = dir_ / "refused";
+    const Result e = run("place-sensors " + b.args + " --keep-scene-sensors --out " + none.string());
+    EXPECT_EQ(e.code, b.code) << b.args;
+    EXPECT_NE(e.err.find(b.message), std::string::npos) << e.err;
+    EXPECT_FALSE(fs::exists(none));
+  }
+  // A sensor at a point of the mesh moves with the segments: refused, with its position.
+  std::string text = slurp(slew);
+  text.replace(text.find("point: link2.tip"), 16, "point: link2.h3");
+  const fs::path scene = dir_ / "mesh-point.yaml";
+  std::ofstream(scene) << text;
+  const Result mesh = run("place-sensors " + scene.string() + " --segments 4 --keep-scene-sensors");
+  EXPECT_EQ(mesh.code, 64);
+  EXPECT_NE(mesh.err.find("sensor acc_link2_tip (" + scene.string() + ":65:5): 'link2.h3' is a point of the mesh"), std::string::npos)
+      << mesh.err;
 }
 
 }  // namespace

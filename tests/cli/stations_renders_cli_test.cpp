@@ -76,7 +76,7 @@ TEST_F(Cli, PlaceSensorsOnTheDefaultArticle) {
   for (const char* f : {"placement.json", "candidates.csv", "automac.csv", "automac.png", "review_sensors.png", "review_modes.png"})
     EXPECT_TRUE(isPng(out / f) || std::string(f).find(".png") == std::string::npos) << f;
   const std::string csv = slurp(out / "candidates.csv");
-  EXPECT_EQ(csv.rfind("station,link,x_along_link_m,axis,world_x_m,world_y_m,world_z_m,chosen,score\n", 0), 0u);
+  EXPECT_EQ(csv.rfind("station,link,x_along_link_m,axis,world_x_m,world_y_m,world_z_m,chosen,score,fixed\n", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + static_cast<long>(j["candidates"].get<int>()));
   // Triaxial blocks and the other rankings run too.
   EXPECT_EQ(run("place-sensors --count 5 --triaxial").code, 0);

@@ -4,9 +4,14 @@
 // keep-out stretch, for every method; a request that cannot be met is an OptionError.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <random>
+#include <set>
+
+#include "sim/core/text.hpp"
 
 #include "sim/core/errors.hpp"
 #include "sim/modes/place_sensors.hpp"
@@ -82,6 +87,77 @@ TEST(PlacementConstraints, SeparationKeepsTheCountWhenTheGridAllows) {
   const PlacementStudy s = runPlacement(scene, o);
   EXPECT_EQ(s.result.kept_blocks.size(), 24u);
   EXPECT_GE(closest(s), 0.15);
+}
+
+// The scene's own accelerometers (--keep-scene-sensors) over seeded random requests:
+// every one kept by every method, in its own direction, counted in the count; the
+// separation and the keep-outs hold for every other chosen station (two of the user's
+// may be closer, and one may sit in a keep-out: they are on the article already).
+TEST(PlacementConstraints, TheScenesSensorsAreAlwaysKept) {
+  ArticleScene base = loadDefaultScene();
+  overrideSegments(base, 4);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const char* const axes[] = {"axial", "transverse"};
+  int runs = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    ArticleScene scene = base;
+    const int own = 1 + trial % 3;
+    for (int k = 0; k < own; ++k) {
+      const auto& l = scene.article.links[static_cast<std::size_t>(unit(rng) * scene.article.links.size())];
+      // On the 0.1 m grid, off it, or at the tip.
+      const double x = k == 0 ? l.length : k == 1 ? std::min(std::round(10 * unit(rng) * l.length) / 10, l.length) : unit(rng) * l.length;
+      char target[64];
+      std::snprintf(target, sizeof target, "%s@%.6fm", l.name.c_str(), std::max(x, 1e-3));
+      scene.sensors.push_back({"own" + std::to_string(k), "accelerometer", target, static_cast<int>(unit(rng) * 2), 0, 1, "test"});
+    }
+    PlacementOptions o;
+    o.method = static_cast<PlacementMethod>(trial % 3);
+    o.count = own + 4 + static_cast<int>(unit(rng) * 8);
+    o.modes = modeNumbers({1, 2, 3, 4});
+    o.min_separation_m = unit(rng) < 0.3 ? 0.0 : 0.05 + 0.2 * unit(rng);
+    o.keep_scene_sensors = true;
+    PlacementStudy s;
+    try {
+      s = runPlacement(scene, o);
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "--min-separation") << e.what();
+      continue;
+    }
+    ++runs;
+    std::vector<char> kept(s.candidates.size(), 0);
+    for (int b : s.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
+    int fixed = 0;
+    for (std::size_t b = 0; b < s.candidates.size(); ++b) {
+      const auto& c = s.candidates[b];
+      if (!c.fixed) continue;
+      ++fixed;
+      EXPECT_TRUE(kept[b]) << "trial " << trial << ": the scene's " << c.station << " " << c.axis << " dropped";
+    }
+    // Each of the scene's sensors is one fixed direction, at its place along its axis
+    // (two at one station and axis are one).
+    std::set<std::string> distinct;
+    for (const auto& sensor : scene.sensors) {
+      const double x = std::strtod(sensor.target.c_str() + sensor.target.find('@') + 1, nullptr);
+      const std::string link = sensor.target.substr(0, sensor.target.find('@'));
+      distinct.insert(link + strf("%.6f", x) + axes[sensor.axis]);
+      EXPECT_TRUE(std::any_of(s.candidates.begin(), s.candidates.end(), [&](const PlacementCandidate& c) {
+        return c.fixed && c.link == link && std::abs(c.x_m - x) < 1e-9 && c.axis == axes[sensor.axis];
+      })) << "trial " << trial << ": " << sensor.target;
+    }
+    EXPECT_EQ(fixed, static_cast<int>(distinct.size())) << "trial " << trial;
+    EXPECT_LE(static_cast<int>(s.result.kept_blocks.size()), o.count);
+    if (o.min_separation_m == 0) EXPECT_EQ(static_cast<int>(s.result.kept_blocks.size()), o.count);
+    for (int a : s.result.kept_blocks)
+      for (int b : s.result.kept_blocks) {
+        const auto &p = s.candidates[static_cast<std::size_t>(a)], &q = s.candidates[static_cast<std::size_t>(b)];
+        if (p.fixed && q.fixed) continue;
+        const double d = std::hypot(p.world_x - q.world_x, p.world_y - q.world_y, p.world_z - q.world_z);
+        if (d > 1e-9) EXPECT_GE(d, o.min_separation_m) << "trial " << trial << ": " << p.station << " and " << q.station;
+      }
+  }
+  EXPECT_GE(runs, 20);
+  std::printf("[constraints] %d of 30 requests with the scene's sensors placed\n", runs);
 }
 
 }  // namespace
