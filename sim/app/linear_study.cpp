@@ -46,10 +46,43 @@ InputSpec parseInput(const std::string& text, const std::string& option) {
   throw UsageError(what + ": expected table_x, table_y, table_z, torque:JOINT, force:POINT:x|y|z or moment:POINT:rx|ry|rz");
 }
 
-OutputSpec parseOutput(const std::string& text, const std::string& option) {
+/// strain:A:B, two stations of one link (sim/linear/state_space.hpp, OutputSpec::span_end):
+/// the span and the face's distance from the neutral axis, from the scene.
+OutputSpec strainOutput(const ArticleScene& scene, const std::string& text, const std::string& a, const std::string& b,
+                        const std::string& what) {
+  if (scene.article.model != ArticleModel::Planar)
+    throw UsageError(what + ": a strain output is built for the planar model only (its in-plane bending)");
+  std::string error;
+  std::optional<StationSpec> sa, sb;
+  for (const auto& [name, spec] : {std::pair{&a, &sa}, std::pair{&b, &sb}}) {
+    if (!isStationName(*name)) throw UsageError(what + ": a strain spans two stations of one link, e.g. strain:link3a@0.1m:link3a@0.3m (got '" + *name + "')");
+    *spec = parseStation(*name, scene.article, error);
+    if (!*spec) throw UsageError(what + ": " + error);
+    if ((*spec)->offset != 0 || (*spec)->offset_z != 0) throw UsageError(what + ": give the stations on the link's axis, without an offset ('" + *name + "'); the face is the section's");
+  }
+  if (sa->link != sb->link) throw UsageError(what + ": both stations must be on one link (got " + sa->link + " and " + sb->link + ")");
+  if (std::abs(sb->x - sa->x) < 1e-6) throw UsageError(what + ": the span is empty: give two different stations");
+  const LinkSpec& link = *scene.article.findLink(sa->link);
+  if (link.rigid) throw UsageError(what + ": " + link.name + " is rigid (segments: rigid): it does not bend");
+  const Section& s = *scene.article.findSection(link.section);
+  const double c = s.shape == SectionShape::RoundRod ? s.radius : s.shape == SectionShape::Explicit ? 0.0 : 0.5 * s.h;
+  if (!(c > 0)) throw UsageError(what + ": section '" + s.name + "' of " + link.name + " gives no depth (an explicit section): give its shape");
+  OutputSpec o{text, OutputKind::Displacement, a, 5, false};
+  o.span_end = b;
+  o.surface_m = c;
+  o.span_m = sb->x - sa->x;
+  return o;
+}
+
+OutputSpec parseOutput(const std::string& text, const std::string& option, const ArticleScene& scene) {
   const auto p = split(text, ':');
   const std::string what = option + " " + text;
-  if (p.size() < 2 || p.size() > 3) throw UsageError(what + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs]");
+  if (p[0] == "strain") {
+    if (p.size() != 3) throw UsageError(what + ": expected strain:STATION:STATION, two stations of one link, e.g. strain:link3a@0.1m:link3a@0.3m");
+    return strainOutput(scene, text, p[1], p[2], what);
+  }
+  if (p.size() < 2 || p.size() > 3)
+    throw UsageError(what + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] or strain:STATION:STATION");
   OutputSpec o{text, OutputKind::Acceleration, p[0], axisOf(p[1], what, true, true), true};
   if (p.size() == 3) {
     if (p[2] == "disp") o = {text, OutputKind::Displacement, p[0], o.axis, false};
@@ -76,7 +109,7 @@ void checkNames(const ArticleScene& scene, const std::vector<InputSpec>& in, con
       throw UsageError(in_option + " " + i.name + ": joint '" + i.target +
                        "' is locked (hold: locked), so a torque there moves nothing; use a free or servo joint");
   }
-  for (const auto& o : out) checkedPoints({o.point}, scene.article, out_option + " " + o.name);
+  for (const auto& o : out) checkedPoints({o.point}, scene.article, out_option + " " + o.name);  // a strain's: stations, checked
   if (scene.article.model == ArticleModel::Spatial) return;
   const std::string planar = " is out of the plane, where the planar model does not move (model: spatial)";
   for (const auto& i : in)
@@ -100,7 +133,7 @@ LinearModel build(const LinearRequest& r, const ArticleScene& scene, bool prepar
   std::vector<InputSpec> in;
   std::vector<OutputSpec> out;
   for (const auto& t : r.inputs) in.push_back(parseInput(t, in_option));
-  for (const auto& t : r.outputs) out.push_back(parseOutput(t, out_option));
+  for (const auto& t : r.outputs) out.push_back(parseOutput(t, out_option, scene));
   checkNames(scene, in, out, in_option, out_option);
   if (in.empty()) in = defaultInputs();
   if (out.empty()) out = defaultOutputs(scene);

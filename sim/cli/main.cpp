@@ -138,7 +138,8 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
                     "table_x, table_y)");
     cmd->add_option("--output", lin.outputs,
                     "POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] (z, rx, ry: spatial model; default: every link tip, absolute "
-                    "acceleration)");
+                    "acceleration), or strain:STATION:STATION, the mean bending strain over a span of one link (a gauge or "
+                    "piezo film; planar model)");
     cmd->add_option("--from", lin.f_min, "Lowest frequency, Hz")->capture_default_str();
     cmd->add_option("--to", lin.f_max, "Highest frequency, Hz")->capture_default_str();
     cmd->add_option("--points", lin.points, "Log-spaced frequencies, 2 .. 100000")->capture_default_str();

@@ -155,12 +155,12 @@ void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::v
       fn.id1 = s.output_names[o] + " / " + s.input_names[i];
       fn.id2 = scene.name;
       fn.response_node = label[out.point];
-      fn.response_direction = out.axis + 1;
+      fn.response_direction = out.isStrain() ? 0 : out.axis + 1;  // a strain is a scalar at its span's start
       // The table's acceleration is referred to the base node, which the file defines.
       fn.reference_node = in.kind == InputKind::BaseAcceleration ? label.at(kBaseNode) : label.at(in.target);
       fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis + 1;
-      fn.ordinate_type = spec_out[static_cast<int>(out.kind)];
-      fn.ordinate_length_exp = isRotationAxis(out.axis) ? 0 : 1;  // rad: no length
+      fn.ordinate_type = out.isStrain() ? 3 : spec_out[static_cast<int>(out.kind)];  // 3: strain
+      fn.ordinate_length_exp = isRotationAxis(out.axis) ? 0 : 1;  // rad, m/m: no length
       fn.ordinate_label = s.output_names[o];
       fn.ordinate_units = s.output_units[o];
       fn.denominator_type = spec_in[static_cast<int>(in.kind)];

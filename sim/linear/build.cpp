@@ -98,6 +98,13 @@ void outputMatrices(const ArticleScene& scene, const Model& model, const SimTK::
   for (const auto& in : inputs) base_input = base_input || in.kind == InputKind::BaseAcceleration;
   for (Eigen::Index r = 0; r < no; ++r) {
     const OutputSpec& out = outputs[r];
+    if (out.isStrain()) {  // the mean curvature between two stations, at the face
+      MMV_DEMAND(out.kind == OutputKind::Displacement && out.axis == 5 && out.span_m != 0 && out.surface_m > 0);
+      const Eigen::RowVectorXd a = pointRow(scene, model, st, dofs, out.point, 5, "output " + out.name),
+                               b = pointRow(scene, model, st, dofs, out.span_end, 5, "output " + out.name);
+      so.Cd.row(r) = -out.surface_m / out.span_m * (b - a) * Z;
+      continue;
+    }
     const Eigen::RowVectorXd P = pointRow(scene, model, st, dofs, out.point, out.axis, "output " + out.name) * Z;
     if (out.absolute && out.kind != OutputKind::Acceleration && base_input)
       throw SceneError(scene.source + ": output " + out.name +
@@ -126,7 +133,7 @@ void nameSignals(const Model& model, const LinearizedModel& lin, const std::vect
   const char* rotation_units[] = {"rad", "rad/s", "rad/s^2"};
   for (const auto& out : outputs) {
     ss.output_names.push_back(out.name);
-    ss.output_units.push_back((isRotationAxis(out.axis) ? rotation_units : out_units)[static_cast<int>(out.kind)]);
+    ss.output_units.push_back(out.isStrain() ? "m/m" : (isRotationAxis(out.axis) ? rotation_units : out_units)[static_cast<int>(out.kind)]);
   }
   const bool open = lin.G.rows() == 0;
   const int nz = static_cast<int>(lin.Z.cols());

@@ -271,6 +271,10 @@ FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes, b
     m.skipped = strf("function type %d is not a frequency response (4) or a transmissibility (5)", f.function_type);
     return m;
   }
+  if (f.ordinate_type == 3) {  // frf writes a strain gauge's or film's response so, direction 0 (a scalar)
+    m.skipped = "a strain (ordinate type 3): correlate pairs the motions of nodes, not strains";
+    return m;
+  }
   const int rd = std::abs(f.response_direction), fd = std::abs(f.reference_direction);
   if (!modelled(rd) || !modelled(fd)) {
     m.skipped = strf("direction %d/%d: %s outside the %s model", f.response_direction, f.reference_direction,
