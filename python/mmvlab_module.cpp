@@ -149,7 +149,7 @@ py::tuple check(const PyScene& scene, int segments, double margin, double band_m
 
 py::tuple correlate(const PyScene& scene, int segments, const std::string& measured, const std::vector<std::string>& pairs,
                     double pair_distance, int count, double mac_threshold, double max_frequency_error,
-                    std::optional<double> damping, py::object progress) {
+                    std::optional<double> damping, const std::string& tam, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   const mmv::Scene& sc = prepared.scene;
   mmv::app::CorrelateRequest r;
@@ -160,6 +160,7 @@ py::tuple correlate(const PyScene& scene, int segments, const std::string& measu
   r.mac_threshold = mac_threshold;
   r.max_frequency_error = max_frequency_error;
   r.damping_ratio = damping;
+  r.tam = tam;
   r.front = Front::Python;
   const mmv::app::CorrelateStudy s = released(progress, [&] { return mmv::app::runCorrelateStudy(sc, r); });
   return py::make_tuple(s.json.dump(), s.text, s.mac_csv, prepared.warnings);
@@ -494,7 +495,7 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("progress"));
   m.def("correlate", &correlate, py::arg("scene"), py::arg("segments"), py::arg("measured"), py::arg("pairs"),
         py::arg("pair_distance"), py::arg("modes"), py::arg("mac_threshold"), py::arg("max_frequency_error"),
-        py::arg("damping"), py::arg("progress"));
+        py::arg("damping"), py::arg("tam"), py::arg("progress"));
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),
         py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("tam"), py::arg("sensor_mass"),
         py::arg("min_separation"), py::arg("keep_out"), py::arg("channels"), py::arg("keep_scene_sensors"), py::arg("progress"));

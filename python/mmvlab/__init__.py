@@ -608,16 +608,19 @@ class CorrelateResult(Result):
 
 
 def correlate(scene, measured, *, segments=0, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,
-              max_frequency_error=0.3, damping=None, progress=None):
+              max_frequency_error=0.3, damping=None, tam="", progress=None):
     """`mmvlab correlate`: the measured UFF file `measured` (nodes, mode shapes, FRFs)
     against the scene's model. `pairs`: "NODE=POINT" strings or a dict {node: point};
-    `damping`: every mode's ratio (None: the scene's damping, else 0.01)."""
+    `damping`: every mode's ratio (None: the scene's damping, else 0.01); `tam`:
+    "FILE[:METHOD]", a tam.mat of place_sensors' --out for the measured modes' test
+    orthogonality (`.json["test_orthogonality"]`)."""
     if isinstance(pairs, dict):
         pairs = [f"{node}={point}" for node, point in pairs.items()]
     json_text, text, mac_csv, warns = _mmvlab.correlate(scene, int(segments), str(measured), [str(p) for p in pairs],
                                                         float(pair_distance), int(modes), float(mac_threshold),
                                                         float(max_frequency_error),
-                                                        None if damping is None else float(damping), progress)
+                                                        None if damping is None else float(damping), str(tam),
+                                                        progress)
     _warn(warns)
     result = CorrelateResult(json_text, text, mac_csv)
     _warn(result.json.get("warnings", []), RunWarning)

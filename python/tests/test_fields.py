@@ -155,3 +155,14 @@ def test_place_sensors_exciter_tables_are_its_csvs(tmp_path):
     assert ranking["station"] == [row[header.index("station")] for row in rows[:10]]
     np.testing.assert_allclose(ranking["score"], [float(row[header.index("score")]) for row in rows[:10]], rtol=1e-5)
     assert mmvlab.place_sensors(mmvlab.load_scene(), segments=8, count=12).exciter is None
+
+
+def test_correlate_tam_test_orthogonality(tmp_path):
+    out = tmp_path / "pretest"
+    p = subprocess.run([MMVLAB, "place-sensors", "--segments", "8", "--modes", "1-6", "--count", "8", "--tam", "serep",
+                        "--out", str(out)], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    c = mmvlab.correlate(mmvlab.load_scene(), str(out / "test_geometry.uff"), segments=8, modes=8, tam=str(out / "tam.mat"))
+    t = c.json["test_orthogonality"]
+    assert t["method"] == "serep" and t["pass"]
+    np.testing.assert_allclose(np.array(t["matrix"]), np.eye(6), atol=1e-5)

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/linear/test_orthogonality.hpp"
+
 #include "sim/app/study.hpp"
 #include "sim/linear/correlation.hpp"
 
@@ -21,11 +23,15 @@ struct CorrelateRequest {
   double mac_threshold = 0.7;       ///< 0 .. 1.
   double max_frequency_error = 0.3; ///< 1e-6 .. 100: |f_model / f_test - 1| above it is not a pair.
   std::optional<double> damping_ratio;  ///< 0 .. 1 for every mode; empty: the scene's damping, else 0.01.
+  /// FILE[:METHOD]: a TAM from `place-sensors --tam --out` (tam.mat) for the measured
+  /// modes' test orthogonality; METHOD (guyan, irs, serep) when the file holds several.
+  std::string tam;
   Front front = Front::Cli;
 };
 
 struct CorrelateStudy {
   CorrelationResult result;
+  std::optional<TestOrthogonality> test_orthogonality;  ///< with a TAM
   nlohmann::ordered_json json;
   std::string text, mac_csv, pairs_csv;
 };

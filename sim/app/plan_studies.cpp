@@ -121,7 +121,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   }
   s.json = placementJson(s.study);
   s.text = placementText(s.study);
-  if (!s.study.tams.empty()) s.tam_csv = tamCsv(s.study);
+  if (!s.study.tams.empty()) s.tam_csv = tamCsv(s.study), s.tam_mat = tamMat(s.study);
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {  // the isolator's test geometry: not yet
     s.channels_csv = placementChannelsCsv(s.study);
     uff::File geometry = placementGeometry(s.study, article->name);

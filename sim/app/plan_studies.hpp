@@ -9,6 +9,7 @@
 
 #include "sim/app/study.hpp"
 #include "sim/hamsas/hamsas_modes.hpp"
+#include "sim/io/mat_file.hpp"
 #include "sim/linear/exciter.hpp"
 #include "sim/modes/place_sensors.hpp"
 #include "sim/plan/check.hpp"
@@ -53,6 +54,7 @@ struct PlacementStudyResult {
   nlohmann::ordered_json json;
   std::string text;
   std::string tam_csv;  ///< tam.csv (empty without TAMs)
+  std::optional<MatContents> tam_mat;  ///< tam.mat (none without TAMs)
   std::string channels_csv, geometry_uff;  ///< the article's test geometry: channels.csv, test_geometry.uff
   std::optional<ExciterStudy> exciter;     ///< the scene's shaker (`shaker:`), on the chosen sensors
   std::string exciter_csv, exciter_ranking_csv;  ///< exciter.csv, exciter_ranking.csv (empty without a shaker)

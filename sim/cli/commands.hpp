@@ -184,6 +184,7 @@ struct CheckArgs : SceneArgs {
 
 struct CorrelateArgs : SceneArgs {
   std::string measured;            ///< the measured UFF file.
+  std::string tam;                 ///< --tam FILE[:METHOD]
   bool json = false;
   double pair_distance = 0.05;     ///< m: farther nodes are not paired.
   std::vector<std::string> pairs;  ///< NODE=POINT, by the user.

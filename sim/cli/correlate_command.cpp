@@ -50,6 +50,7 @@ int runCorrelateCommand(const CorrelateArgs& args) {
     const Scene scene = loadScene(args);
     app::CorrelateRequest r;
     r.measured = args.measured;
+    r.tam = args.tam;
     r.pair_distance_m = args.pair_distance;
     r.pairs = args.pairs;
     r.modes = args.modes;

@@ -308,6 +308,9 @@ CLI::App* addCorrelateCommand(CLI::App& app, CorrelateArgs& co) {
   c->add_option("--measured", co.measured, "The measured UFF file (datasets 15/2411 nodes, 55 modes, 58 functions, 164 units)")
       ->required();
   c->add_flag("--json", co.json, "Print JSON instead of tables");
+  c->add_option("--tam", co.tam,
+                "FILE[:guyan|irs|serep]: a TAM written by place-sensors --tam --out (tam.mat): the measured modes' test "
+                "orthogonality under its mass at its channels (the nodes of place-sensors' test geometry)");
   c->add_option("--pair-distance", co.pair_distance, "A measured node farther than this from the article is not paired, 1e-6 .. 100 m")
       ->capture_default_str();
   c->add_option("--pair", co.pairs, "NODE=POINT: pair a node with a point or station by name (repeatable)");

@@ -119,6 +119,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       out->write("candidates.csv", placementCandidatesCsv(s));
       out->write("automac.csv", placementAutoMacCsv(s));
       if (!study.tam_csv.empty()) out->write("tam.csv", study.tam_csv);
+      if (study.tam_mat) writeMat(out->stage("tam.mat"), *study.tam_mat);
       if (!study.channels_csv.empty()) out->write("channels.csv", study.channels_csv);
       if (!study.geometry_uff.empty()) out->write("test_geometry.uff", study.geometry_uff);
       if (!study.exciter_csv.empty()) out->write("exciter.csv", study.exciter_csv);

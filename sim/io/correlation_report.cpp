@@ -5,6 +5,7 @@
 
 #include "sim/core/text.hpp"
 #include "sim/io/report.hpp"
+#include "sim/modes/tam.hpp"
 
 namespace mmv {
 
@@ -211,6 +212,44 @@ const std::vector<Field<CorrelationPairRow>>& correlationPairFields() {
 
 std::string correlationPairsCsv(const CorrelationResult& r) {
   return fieldsCsv(correlationPairFields(), correlationPairRows(r), [](const auto&) { return true; });
+}
+
+nlohmann::ordered_json testOrthogonalityJson(const TestOrthogonality& t) {
+  nlohmann::ordered_json j;
+  j["tam"] = t.source;
+  j["method"] = t.method;
+  j["channels"] = t.channels;
+  j["criterion_off_diagonal_max"] = kTamOffDiagonalMax;
+  j["pass"] = t.all_pass;
+  j["modes"] = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < t.modes.size(); ++i)
+    j["modes"].push_back({{"test_mode", t.modes[i]},
+                          {"frequency_hz", t.frequencies_hz[i]},
+                          {"max_off_diagonal", t.max_off_diagonal[i]},
+                          {"pass", t.pass[i] != 0}});
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < t.matrix.rows(); ++i) {
+    nlohmann::ordered_json row = nlohmann::ordered_json::array();
+    for (Eigen::Index k = 0; k < t.matrix.cols(); ++k) row.push_back(t.matrix(i, k));
+    rows.push_back(row);
+  }
+  j["matrix"] = rows;
+  j["left_out"] = t.left_out;
+  return j;
+}
+
+std::string testOrthogonalityText(const TestOrthogonality& t) {
+  int failing = 0;
+  for (char p : t.pass) failing += !p;
+  std::string out = strf("\nTest orthogonality under the %s TAM of %s (%d channels; criterion: off-diagonal <= %.1f): %s\n",
+                         t.method.c_str(), t.source.c_str(), t.channels, kTamOffDiagonalMax,
+                         t.all_pass ? "every measured mode passes" : strf("%d of %zu measured modes FAIL", failing, t.modes.size()).c_str());
+  Table table({"test_mode", "f_Hz", "max_off_diagonal", "verdict"});
+  for (std::size_t i = 0; i < t.modes.size(); ++i)
+    table.add({std::to_string(t.modes[i]), strf("%.4f", t.frequencies_hz[i]), strf("%.3f", t.max_off_diagonal[i]), t.pass[i] ? "pass" : "FAIL"});
+  out += table.text();
+  for (const auto& l : t.left_out) out += "  left out: " + l + "\n";
+  return out;
 }
 
 }  // namespace mmv

@@ -11,6 +11,7 @@
 #include "sim/io/fields.hpp"
 #include "sim/io/uff.hpp"
 #include "sim/linear/correlation.hpp"
+#include "sim/linear/test_orthogonality.hpp"
 
 namespace mmv {
 
@@ -40,5 +41,11 @@ std::vector<CorrelationPairRow> correlationPairRows(const CorrelationResult& r);
 const std::vector<Field<CorrelationPairRow>>& correlationPairFields();
 /// pairs.csv: a row per pair, a column per field.
 std::string correlationPairsCsv(const CorrelationResult& r);
+
+/// correlation.json's "test_orthogonality" (`correlate --tam`): {tam, method, channels,
+/// criterion_off_diagonal_max, pass, modes: [{test_mode, frequency_hz,
+/// max_off_diagonal, pass}], matrix (normalised), left_out}; and its text section.
+nlohmann::ordered_json testOrthogonalityJson(const TestOrthogonality& t);
+std::string testOrthogonalityText(const TestOrthogonality& t);
 
 }  // namespace mmv

@@ -3,6 +3,8 @@
 #include "sim/core/errors.hpp"
 #include <matio.h>
 
+#include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -61,31 +63,65 @@ void checkMatrix(mat_t* mat, const std::string& path, const char* name, const Ei
 
 }  // namespace
 
-void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
+void writeMat(const std::string& path, const MatContents& c) {
   MatFile mat(Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5));
   if (!mat) throw OutputError(path + ": cannot create .mat file");
-  const StateSpace s = d.standardForm();
-  writeMatrix(mat.get(), "A", s.A);
-  writeMatrix(mat.get(), "B", s.B);
-  writeMatrix(mat.get(), "C", s.C);
-  writeMatrix(mat.get(), "D", s.D);
-  writeMatrix(mat.get(), "E", s.E);
-  writeMatrix(mat.get(), "Ad", d.A);
-  writeMatrix(mat.get(), "Bd", d.B);
-  writeMatrix(mat.get(), "Ed", d.E);
-  writeStrings(mat.get(), "InputName", d.input_names);
-  writeStrings(mat.get(), "OutputName", d.output_names);
-  writeStrings(mat.get(), "StateName", d.state_names);
-  writeStrings(mat.get(), "InputUnit", d.input_units);
-  writeStrings(mat.get(), "OutputUnit", d.output_units);
+  for (const auto& [name, m] : c.matrices) writeMatrix(mat.get(), name.c_str(), m);
+  for (const auto& [name, items] : c.strings) writeStrings(mat.get(), name.c_str(), items);
   if (Mat_Close(mat.release()) != 0) throw OutputError(path + ": cannot write the .mat file (disk full?)");
   MatFile back(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!back) throw OutputError(path + ": the .mat file written does not open (disk full?)");
-  const std::pair<const char*, const Eigen::MatrixXd*> written[] = {{"A", &s.A}, {"B", &s.B}, {"C", &s.C}, {"D", &s.D},
-                                                                    {"E", &s.E}, {"Ad", &d.A}, {"Bd", &d.B}, {"Ed", &d.E}};
-  for (const auto& [name, m] : written) checkMatrix(back.get(), path, name, *m);
-  for (const char* name : {"InputName", "OutputName", "StateName", "InputUnit", "OutputUnit"})
-    if (!MatVar(Mat_VarReadInfo(back.get(), name))) throw OutputError(path + ": " + name + " did not write whole (disk full?)");
+  for (const auto& [name, m] : c.matrices) checkMatrix(back.get(), path, name.c_str(), m);
+  for (const auto& [name, items] : c.strings)
+    if (!MatVar(Mat_VarReadInfo(back.get(), name.c_str()))) throw OutputError(path + ": " + name + " did not write whole (disk full?)");
+}
+
+MatContents readMat(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw SceneFileError(path + ": no such file (or not a regular file)");
+  MatFile mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
+  if (!mat) throw SceneFileError(path + ": cannot open as a .mat file (MAT 5)");
+  MatContents c;
+  while (matvar_t* raw = Mat_VarReadNext(mat.get())) {
+    MatVar v(raw);
+    const std::string name = v->name ? v->name : "";
+    if (v->class_type == MAT_C_DOUBLE && v->rank == 2 && !v->isComplex && v->data_type == MAT_T_DOUBLE) {
+      c.matrices.emplace_back(name, Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(v->data), static_cast<Eigen::Index>(v->dims[0]),
+                                                                      static_cast<Eigen::Index>(v->dims[1])));
+    } else if (v->class_type == MAT_C_CELL && v->rank == 2) {
+      std::vector<std::string> items;
+      const std::size_t n = v->dims[0] * v->dims[1];
+      for (std::size_t i = 0; i < n; ++i) {
+        const matvar_t* e = Mat_VarGetCell(v.get(), static_cast<int>(i));
+        const std::size_t len = e ? e->dims[0] * e->dims[1] : 0;
+        if (!e || e->class_type != MAT_C_CHAR || (len > 0 && !e->data))
+          throw SceneError(path + ": " + name + ": a cell that is not a string (mmvlab writes strings only)");
+        std::string text;
+        if (e->data_type == MAT_T_UINT16 || e->data_type == MAT_T_UTF16) {  // MATLAB's and matio's own reading of char
+          for (std::size_t k = 0; k < len; ++k) text += static_cast<char>(static_cast<const std::uint16_t*>(e->data)[k] & 0x7f);
+        } else if (e->data_type == MAT_T_UINT8 || e->data_type == MAT_T_UTF8 || e->data_type == MAT_T_INT8) {
+          text.assign(static_cast<const char*>(e->data), len);
+        } else {
+          throw SceneError(path + ": " + name + ": a string of an encoding mmvlab does not read");
+        }
+        items.push_back(text);
+      }
+      c.strings.emplace_back(name, items);
+    } else {
+      throw SceneError(path + ": variable " + name + " is neither a real double matrix nor a cell of strings");
+    }
+  }
+  return c;
+}
+
+void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
+  const StateSpace s = d.standardForm();
+  writeMat(path, {{{"A", s.A}, {"B", s.B}, {"C", s.C}, {"D", s.D}, {"E", s.E}, {"Ad", d.A}, {"Bd", d.B}, {"Ed", d.E}},
+                  {{"InputName", d.input_names},
+                   {"OutputName", d.output_names},
+                   {"StateName", d.state_names},
+                   {"InputUnit", d.input_units},
+                   {"OutputUnit", d.output_units}}});
 }
 
 }  // namespace mmv

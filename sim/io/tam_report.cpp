@@ -107,4 +107,43 @@ std::string tamCsv(const PlacementStudy& s) {
   return fieldsCsv(tamModeFields(), tamModeRows(s), [](const auto&) { return true; });
 }
 
+MatContents tamMat(const PlacementStudy& s) {
+  MatContents c;
+  std::vector<std::string> methods;
+  for (const auto& t : s.tams) {
+    const std::string m = tamMethodName(t.method);
+    methods.push_back(m);
+    c.matrices.emplace_back("M_" + m, t.M_tam);
+    c.matrices.emplace_back("K_" + m, t.K_tam);
+    c.matrices.emplace_back("T_" + m, t.T);
+  }
+  std::vector<char> kept(s.candidates.size(), 0);
+  for (int b : s.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
+  const Eigen::Index k = static_cast<Eigen::Index>(s.target_modes.size());
+  std::vector<Eigen::Index> rows;
+  for (std::size_t r = 0; r < s.directions.size(); ++r)
+    if (kept[static_cast<std::size_t>(s.directions[r].block)]) rows.push_back(static_cast<Eigen::Index>(r));
+  const Eigen::Index a = static_cast<Eigen::Index>(rows.size());
+  Eigen::MatrixXd node(a, 1), dir(a, 3), phi(a, k), modes(1, k), hz(1, k);
+  for (Eigen::Index i = 0; i < a; ++i) {
+    const PlacementDirection& d = s.directions[static_cast<std::size_t>(rows[static_cast<std::size_t>(i)])];
+    const PlacementCandidate& cand = s.candidates[static_cast<std::size_t>(d.block)];
+    node(i, 0) = cand.node;
+    for (int x = 0; x < 3; ++x) dir(i, x) = d.world[static_cast<std::size_t>(x)];
+    for (Eigen::Index j = 0; j < k; ++j) {
+      const auto& u = cand.shape[static_cast<std::size_t>(j)];
+      phi(i, j) = u[0] * d.world[0] + u[1] * d.world[1] + u[2] * d.world[2];
+    }
+  }
+  for (Eigen::Index j = 0; j < k; ++j) modes(0, j) = s.target_modes[static_cast<std::size_t>(j)].number(), hz(0, j) = s.target_frequencies_hz[static_cast<std::size_t>(j)];
+  c.matrices.emplace_back("ChannelNode", node);
+  c.matrices.emplace_back("ChannelDirection", dir);
+  c.matrices.emplace_back("TargetMode", modes);
+  c.matrices.emplace_back("TargetFrequencyHz", hz);
+  c.matrices.emplace_back("PhiA", phi);
+  c.strings.emplace_back("Method", methods);
+  c.strings.emplace_back("Channel", s.channels);
+  return c;
+}
+
 }  // namespace mmv

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/io/fields.hpp"
+#include "sim/io/mat_file.hpp"
 #include "sim/modes/place_sensors.hpp"
 
 namespace mmv {
@@ -32,5 +33,14 @@ nlohmann::ordered_json tamJson(const PlacementStudy& s);
 std::string tamText(const PlacementStudy& s);
 /// tam.csv: a row per model and target mode.
 std::string tamCsv(const PlacementStudy& s);
+
+/// tam.mat: the TAMs for the lab's correlation tools and for `correlate --tam`:
+///   Method (cell: guyan, irs, serep as built), M_<method>, K_<method> (a x a, over the
+///   channels), T_<method> (n x a: the model's coordinates per channel reading);
+///   Channel (cell: "station axis"), ChannelNode (a x 1: test-geometry node numbers),
+///   ChannelDirection (a x 3: world unit vectors), TargetMode (1 x m),
+///   TargetFrequencyHz (1 x m), PhiA (a x m: the mass-normalised target modes at the
+///   channels).
+MatContents tamMat(const PlacementStudy& s);
 
 }  // namespace mmv

@@ -333,5 +333,53 @@ TEST_F(Cli, StrainOutputsMeetTheBeamAndAreRefusedByName) {
             std::string::npos);
 }
 
+// The TAM exported (tam.mat) and used by correlate: the predicted modes of the placement's
+// own test geometry are the target modes at the channels, so their test orthogonality
+// under SEREP is the identity, and under Guyan it is the TAM's self-orthogonality that
+// place-sensors reported (two ways: from the model, and from the file through correlate).
+TEST_F(Cli, TheTamIsExportedAndGivesCorrelateTestOrthogonality) {
+  const fs::path p = dir_ / "pretest";
+  const Result placed = run("place-sensors --segments 8 --modes 1-6 --count 8 --tam all --json --out " + p.string());
+  ASSERT_EQ(placed.code, 0) << placed.err;
+  std::map<std::string, nlohmann::json> self;
+  const auto placement = nlohmann::json::parse(placed.out);  // named: a range-for over a temporary's member dangles
+  for (const auto& m : placement.at("tam").at("models")) self[m.at("method").get<std::string>()] = m;
+  const std::string base = "correlate --segments 8 --modes 6 --json --measured " + (p / "test_geometry.uff").string() + " --tam " +
+                           (p / "tam.mat").string();
+  const Result serep = run(base + ":serep");
+  ASSERT_EQ(serep.code, 0) << serep.err;
+  const auto s = nlohmann::json::parse(serep.out).at("test_orthogonality");
+  EXPECT_EQ(s.at("channels"), 8);
+  EXPECT_TRUE(s.at("pass").get<bool>());
+  ASSERT_EQ(s.at("matrix").size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = 0; j < 6; ++j)
+      EXPECT_NEAR(s.at("matrix").at(i).at(j).get<double>(), i == j ? 1.0 : 0.0, 1e-5) << i << "," << j;  // the file's 6 digits
+  const Result guyan = run(base + ":guyan");
+  ASSERT_EQ(guyan.code, 0) << guyan.err;
+  const auto g = nlohmann::json::parse(guyan.out).at("test_orthogonality");
+  for (std::size_t i = 0; i < 6; ++i)
+    EXPECT_NEAR(g.at("modes").at(i).at("max_off_diagonal").get<double>(),
+                self.at("guyan").at("modes").at(i).at("self_off_diagonal").get<double>(), 1e-4)
+        << "mode " << i + 1;
+  // Refused by name: several TAMs and none named, one the file lacks, a file that is not a TAM's or not there.
+  const Result several = run(base);
+  EXPECT_EQ(several.code, 64);
+  EXPECT_NE(several.err.find("the file holds 3 TAMs (guyan, irs, serep): name one"), std::string::npos) << several.err;
+  const fs::path one = dir_ / "one";
+  ASSERT_EQ(run("place-sensors --segments 8 --modes 1-6 --count 8 --tam guyan --out " + one.string()).code, 0);
+  const Result lacks = run("correlate --segments 8 --measured " + (p / "test_geometry.uff").string() + " --tam " + (one / "tam.mat").string() + ":irs");
+  EXPECT_EQ(lacks.code, 64);
+  EXPECT_NE(lacks.err.find("the file holds no irs TAM (it holds guyan)"), std::string::npos) << lacks.err;
+  const fs::path rom = dir_ / "rom";
+  ASSERT_EQ(run("rom --segments 4 --out " + rom.string()).code, 0);
+  const Result other = run("correlate --segments 8 --measured " + (p / "test_geometry.uff").string() + " --tam " + (rom / "full.mat").string());
+  EXPECT_EQ(other.code, 65);
+  EXPECT_NE(other.err.find("no Method: not a TAM file of place-sensors --tam --out"), std::string::npos) << other.err;
+  const Result none = run("correlate --segments 8 --measured " + (p / "test_geometry.uff").string() + " --tam " + (dir_ / "nope.mat").string());
+  EXPECT_EQ(none.code, 66);
+  EXPECT_NE(none.err.find("no such file"), std::string::npos) << none.err;
+}
+
 }  // namespace
 }  // namespace mmv::cli_testing

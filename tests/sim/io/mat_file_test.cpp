@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 namespace mmv {
 namespace {
 
@@ -75,6 +77,33 @@ TEST(MatFile, OctaveBuildsAWorkingSsObject) {
   EXPECT_EQ(names[0], "table_x");
   EXPECT_EQ(names[1], red.model.output_names[0]);
   EXPECT_EQ(names[2], "m/s^2");
+  fs::remove_all(dir);
+}
+
+// What writeMat writes, readMat reads back: every matrix to the bit, every string, in
+// order; a file that is not there is a SceneFileError.
+TEST(MatFile, WhatIsWrittenIsReadBack) {
+  const fs::path dir = fs::temp_directory_path() / ("mmvlab_mat_roundtrip_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  MatContents c;
+  c.matrices.emplace_back("M", Eigen::MatrixXd::Random(4, 3));
+  c.matrices.emplace_back("Empty", Eigen::MatrixXd(0, 3));
+  c.matrices.emplace_back("Node", (Eigen::MatrixXd(2, 1) << 102440, 300762).finished());
+  c.strings.emplace_back("Channel", std::vector<std::string>{"link1@2.44m transverse", "", "link3a@0.762m axial"});
+  const std::string path = (dir / "t.mat").string();
+  writeMat(path, c);
+  const MatContents back = readMat(path);
+  ASSERT_EQ(back.matrices.size(), c.matrices.size());
+  for (std::size_t i = 0; i < c.matrices.size(); ++i) {
+    EXPECT_EQ(back.matrices[i].first, c.matrices[i].first);
+    ASSERT_EQ(back.matrices[i].second.rows(), c.matrices[i].second.rows());
+    ASSERT_EQ(back.matrices[i].second.cols(), c.matrices[i].second.cols());
+    EXPECT_TRUE(back.matrices[i].second == c.matrices[i].second) << c.matrices[i].first;
+  }
+  ASSERT_EQ(back.strings.size(), 1u);
+  EXPECT_EQ(back.strings[0].first, "Channel");
+  EXPECT_EQ(back.strings[0].second, c.strings[0].second);
+  EXPECT_THROW(readMat((dir / "absent.mat").string()), SceneFileError);
   fs::remove_all(dir);
 }
 
