@@ -35,15 +35,25 @@ int axisOf(const std::string& a, const std::string& what, bool translations, boo
   throw UsageError(what + ": axis must be " + allowed + " (got " + a + ")");
 }
 
-InputSpec parseInput(const std::string& text, const std::string& option) {
+InputSpec parseInput(const std::string& text, const std::string& option, const ArticleScene& scene) {
   const auto p = split(text, ':');
   const std::string what = option + " " + text;
+  if (text == "shaker") {
+    if (!scene.shaker) throw UsageError(what + ": the scene has no shaker: add `shaker:` (docs/scene-format.md) with its station and direction");
+    if (scene.shaker->autoAt())
+      throw UsageError(what + ": the scene's shaker.at is 'auto', which place-sensors chooses: give the station and direction "
+                              "it ranked first (or another)");
+    InputSpec in{text, InputKind::PointForce, scene.shaker->at, -1};
+    in.direction = scene.shaker->direction;
+    in.armature_kg = scene.shaker->hardware.armature_mass;
+    return in;
+  }
   if (text == "table_x" || text == "table_y" || text == "table_z")
     return {text, InputKind::BaseAcceleration, "", text == "table_x" ? 0 : text == "table_y" ? 1 : 2};
   if (p.size() == 2 && p[0] == "torque") return {text, InputKind::JointTorque, p[1], 0};
   if (p.size() == 3 && p[0] == "force") return {text, InputKind::PointForce, p[1], axisOf(p[2], what, true, false)};
   if (p.size() == 3 && p[0] == "moment") return {text, InputKind::PointMoment, p[1], axisOf(p[2], what, false, true)};
-  throw UsageError(what + ": expected table_x, table_y, table_z, torque:JOINT, force:POINT:x|y|z or moment:POINT:rx|ry|rz");
+  throw UsageError(what + ": expected table_x, table_y, table_z, torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz or shaker");
 }
 
 /// strain:A:B, two stations of one link (sim/linear/state_space.hpp, OutputSpec::span_end):
@@ -132,7 +142,9 @@ LinearModel build(const LinearRequest& r, const ArticleScene& scene, bool prepar
   const std::string in_option = optionName(r.front, "--input"), out_option = optionName(r.front, "--output");
   std::vector<InputSpec> in;
   std::vector<OutputSpec> out;
-  for (const auto& t : r.inputs) in.push_back(parseInput(t, in_option));
+  for (const auto& t : r.inputs) in.push_back(parseInput(t, in_option, scene));
+  if (std::count(r.inputs.begin(), r.inputs.end(), std::string("shaker")) > 1)
+    throw UsageError(in_option + " shaker: given twice (the scene has one shaker, and its armature would count twice)");
   for (const auto& t : r.outputs) out.push_back(parseOutput(t, out_option, scene));
   checkNames(scene, in, out, in_option, out_option);
   if (in.empty()) in = defaultInputs();

@@ -134,8 +134,8 @@ CLI::App* addConfigSweepCommand(CLI::App& app, ConfigSweepArgs& sw) {
 std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin) {
   auto addLinear = [&](CLI::App* cmd) {
     addSceneOptions(cmd, lin);
-    cmd->add_option("--input", lin.inputs, "table_x, table_y, table_z (spatial model), torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz (default: "
-                    "table_x, table_y)");
+    cmd->add_option("--input", lin.inputs, "table_x, table_y, table_z (spatial model), torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz, "
+                    "shaker (the scene's, with its armature) (default: table_x, table_y)");
     cmd->add_option("--output", lin.outputs,
                     "POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] (z, rx, ry: spatial model; default: every link tip, absolute "
                     "acceleration), or strain:STATION:STATION, the mean bending strain over a span of one link (a gauge or "

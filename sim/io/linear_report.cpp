@@ -139,6 +139,14 @@ nlohmann::ordered_json linearSummaryJson(const LinearModel& lm, const ReducedMod
 namespace {
 
 
+/// A force along a direction (the shaker) in UFF's terms: +-1..3 along a world axis, else
+/// 0 (a direction UFF cannot name without a local coordinate system).
+int shakerDirection(const InputSpec& in) {
+  for (int a = 0; a < 3; ++a)
+    if (std::abs(std::abs(in.direction[static_cast<std::size_t>(a)]) - 1) < 1e-12) return in.direction[static_cast<std::size_t>(a)] > 0 ? a + 1 : -(a + 1);
+  return 0;
+}
+
 /// One dataset 58 per output-input pair: FRF (type 4) or transmissibility (type 5).
 void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::vector<double>& f,
                   const std::vector<Eigen::MatrixXcd>& h, std::map<std::string, int>& label, uff::File& file) {
@@ -158,7 +166,7 @@ void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::v
       fn.response_direction = out.isStrain() ? 0 : out.axis + 1;  // a strain is a scalar at its span's start
       // The table's acceleration is referred to the base node, which the file defines.
       fn.reference_node = in.kind == InputKind::BaseAcceleration ? label.at(kBaseNode) : label.at(in.target);
-      fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis + 1;
+      fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis >= 0 ? in.axis + 1 : shakerDirection(in);
       fn.ordinate_type = out.isStrain() ? 3 : spec_out[static_cast<int>(out.kind)];  // 3: strain
       fn.ordinate_length_exp = isRotationAxis(out.axis) ? 0 : 1;  // rad, m/m: no length
       fn.ordinate_label = s.output_names[o];

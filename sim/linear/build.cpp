@@ -66,6 +66,13 @@ Eigen::VectorXd inputForce(const ArticleScene& scene, const Model& model, const 
   switch (in.kind) {
     case InputKind::BaseAcceleration: return -Mqb.col(in.axis);
     case InputKind::PointForce:
+      if (in.axis < 0) {  // along a direction: the rows' combination
+        for (int a = 0; a < 3; ++a)
+          if (in.direction[static_cast<std::size_t>(a)] != 0)
+            g += in.direction[static_cast<std::size_t>(a)] * pointRow(scene, model, st, dofs, in.target, a, "input " + in.name).transpose();
+        return g;
+      }
+      [[fallthrough]];
     case InputKind::PointMoment:  // J_v^T f, or J_w^T m
       return pointRow(scene, model, st, dofs, in.target, in.axis, "input " + in.name).transpose();
     case InputKind::JointTorque: {
@@ -198,6 +205,18 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   lm.Bq = Eigen::MatrixXd::Zero(Z.cols(), inputs.size());
   for (std::size_t k = 0; k < inputs.size(); ++k)
     lm.Bq.col(k) = Z.transpose() * inputForce(scene, model, st, dofs, Mqb, inputs[k]);
+  bool armature = false;  // a shaker's armature moves with its point along its force: M + m b b^T
+  for (std::size_t k = 0; k < inputs.size(); ++k)
+    if (inputs[k].armature_kg > 0) {
+      const Eigen::VectorXd b = lm.Bq.col(static_cast<Eigen::Index>(k));
+      lm.Mz += inputs[k].armature_kg * b * b.transpose();
+      armature = true;
+    }
+  if (armature) {  // the damping of the article as it is tested: with the armature on it
+    lm.Cz = dampingMatrix(lm, model, dofs, damping);
+    symmetrize(lm.Mz);
+    symmetrize(lm.Cz);
+  }
   SecondOrderResponse& so = lm.second_order;
   outputMatrices(scene, model, st, dofs, Z, inputs, outputs, so);
   so.M = lm.Mz;

@@ -42,28 +42,21 @@ struct Loaded {
   std::vector<double> zeta;
 };
 
-/// The article with the armature on it: the stinger is stiff along its axis and free
-/// across it, so the armature's mass m_a moves with the driving point's motion along
-/// the direction only, M + m_a b b^T with b the generalized force of a unit force
-/// there (the Jacobian row along the direction); its weight stays on the shaker's
-/// flexures, not on the article.
+/// The article with the armature on it (buildLinearModel: the stinger is stiff along its
+/// axis and free across it, so the armature's mass moves with the driving point along
+/// the direction only; its weight stays on the shaker's flexures).
 Loaded loadedModel(const ArticleScene& scene, const ExciterStudy& e, const std::vector<Channel>& channels) {
-  const bool spatial = scene.article.model == ArticleModel::Spatial;
-  const int axes = spatial ? 3 : 2;
-  std::vector<InputSpec> inputs;
-  for (int a = 0; a < axes; ++a) inputs.push_back({"shaker " + std::string(axisName(a)), InputKind::PointForce, e.at, a});
+  const int axes = scene.article.model == ArticleModel::Spatial ? 3 : 2;
+  InputSpec shaker{"shaker", InputKind::PointForce, e.at, -1};
+  shaker.direction = e.direction;
+  shaker.armature_kg = e.hardware.armature_mass;
   std::vector<OutputSpec> outputs;
   for (const auto& c : channels)
     for (int a = 0; a < axes; ++a) outputs.push_back({c.name + " " + axisName(a), OutputKind::Acceleration, c.station, a, true});
   for (int a = 0; a < axes; ++a) outputs.push_back({"driving point " + std::string(axisName(a)), OutputKind::Displacement, e.at, a, false});
   DampingSpec damping;  // frf's default: 1 % in every mode, unless the scene says otherwise
   if (scene.damping) damping = *scene.damping;
-  Loaded l{buildLinearModel(scene, inputs, outputs, damping, /*prepare_responses=*/false), {}, {}};
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(l.lm.Bq.rows());
-  for (int a = 0; a < axes; ++a) b += l.lm.Bq.col(a) * e.direction[static_cast<std::size_t>(a)];
-  l.lm.Mz += e.hardware.armature_mass * b * b.transpose();
-  l.lm.second_order.M = l.lm.Mz;  // (l.lm.full keeps the bare article: only the responses are used here)
-  l.lm.second_order.prepare();
+  Loaded l{buildLinearModel(scene, {shaker}, outputs, damping), {}, {}};
   l.modes = solveModes(l.lm.Mz, l.lm.Kz);
   for (Eigen::Index k = 0; k < l.modes.shapes.cols(); ++k) {
     const Eigen::VectorXd psi = l.modes.shapes.col(k);
@@ -92,9 +85,8 @@ struct Unit {
 
 Unit unitResponse(const Loaded& l, const ExciterStudy& e, const std::vector<Channel>& channels, double f_hz) {
   const Eigen::MatrixXcd H = l.lm.second_order.response(2 * M_PI * f_hz);
-  const int axes = static_cast<int>(H.cols());
-  Eigen::VectorXcd h = Eigen::VectorXcd::Zero(H.rows());
-  for (int a = 0; a < axes; ++a) h += H.col(a) * e.direction[static_cast<std::size_t>(a)];
+  const int axes = static_cast<int>(H.rows() / static_cast<Eigen::Index>(channels.size() + 1));
+  const Eigen::VectorXcd h = H.col(0);  // per N of the shaker's force
   Unit u;
   for (std::size_t c = 0; c < channels.size(); ++c) {
     std::complex<double> v = 0;

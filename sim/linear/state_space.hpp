@@ -25,6 +25,7 @@
 /// damping the Simbody model carries in time runs.
 
 #include <Eigen/Dense>
+#include <array>
 #include <complex>
 #include <string>
 #include <vector>
@@ -40,8 +41,13 @@ struct InputSpec {
   std::string name;
   InputKind kind = InputKind::BaseAcceleration;
   std::string target;  ///< joint (torque) or point (force, moment); unused for the base.
-  /// 0, 1, 2: along world x, y, z (base and force); 3, 4, 5: about world x, y, z (moment).
+  /// 0, 1, 2: along world x, y, z (base and force); 3, 4, 5: about world x, y, z (moment);
+  /// -1: a force along `direction` (the scene's shaker, `--input shaker`).
   int axis = 0;
+  std::array<double, 3> direction{};  ///< unit, world (axis -1)
+  /// kg moving with the point along `direction` (the shaker's armature through its
+  /// stinger): the model's mass gains m b b^T, b this input's generalized force.
+  double armature_kg = 0;
 };
 
 /// Axes 3..5 of inputs and outputs are rotations about world x, y, z.

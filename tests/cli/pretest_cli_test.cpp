@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "sim/core/text.hpp"
 #include "support/cli.hpp"
 
 namespace mmv::cli_testing {
@@ -379,6 +380,41 @@ TEST_F(Cli, TheTamIsExportedAndGivesCorrelateTestOrthogonality) {
   const Result none = run("correlate --segments 8 --measured " + (p / "test_geometry.uff").string() + " --tam " + (dir_ / "nope.mat").string());
   EXPECT_EQ(none.code, 66);
   EXPECT_NE(none.err.find("no such file"), std::string::npos) << none.err;
+}
+
+// The scene's shaker drives frf too (--input shaker: its force along its direction, its
+// armature on the article): the driving point's receptance at each target's dwell
+// frequency is the exciter's amplitude over its force, computed the second way.
+TEST_F(Cli, FrfsShakerInputIsTheExcitersModel) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-table.yaml").string() +
+                            " --segments 8 --set shaker.at=link2@1.2m --set 'shaker.direction=[0, 1, 0]'";
+  const Result placed = run("place-sensors " + scene + " --count 12 --json");
+  ASSERT_EQ(placed.code, 0) << placed.err;
+  const auto doc = nlohmann::json::parse(placed.out);
+  for (std::size_t j : {std::size_t{0}, std::size_t{4}}) {
+    const auto& m = doc.at("exciter").at("modes").at(j);
+    const double f = m.at("loaded_hz").get<double>();
+    const fs::path out = dir_ / ("frf" + std::to_string(j));
+    const Result r = run("frf " + scene + " --input shaker --output link2@1.2m:y:disp --points 2 --from " + strf("%.17g", f) +
+                         " --to " + strf("%.17g", f * (1 + 1e-6)) + " --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::istringstream csv(slurp(out / "frf_link2_1.2m_y_disp__shaker.csv"));
+    std::string header, row;
+    std::getline(csv, header);
+    std::getline(csv, row);
+    EXPECT_EQ(header.substr(0, 54), "frequency_hz,magnitude_db,phase_deg,magnitude_m_per_n,");
+    std::vector<double> cells;
+    std::istringstream line(row);
+    for (std::string c; std::getline(line, c, ',');) cells.push_back(std::stod(c));
+    ASSERT_GE(cells.size(), 4u);
+    EXPECT_NEAR(cells[3] / (m.at("sine_stroke_m").get<double>() / m.at("sine_force_n").get<double>()), 1.0, 1e-6) << "mode " << j + 1;
+  }
+  const Result twice = run("frf " + scene + " --input shaker --input shaker");
+  EXPECT_EQ(twice.code, 64);
+  EXPECT_NE(twice.err.find("given twice"), std::string::npos) << twice.err;
+  const Result none = run("frf --segments 4 --input shaker");
+  EXPECT_EQ(none.code, 64);
+  EXPECT_NE(none.err.find("the scene has no shaker"), std::string::npos) << none.err;
 }
 
 }  // namespace
