@@ -151,7 +151,6 @@ py::tuple correlate(const PyScene& scene, int segments, const std::string& measu
                     double pair_distance, int count, double mac_threshold, double max_frequency_error,
                     std::optional<double> damping, const std::string& tam, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
-  const mmv::Scene& sc = prepared.scene;
   mmv::app::CorrelateRequest r;
   r.measured = measured;
   r.pairs = pairs;
@@ -162,7 +161,7 @@ py::tuple correlate(const PyScene& scene, int segments, const std::string& measu
   r.damping_ratio = damping;
   r.tam = tam;
   r.front = Front::Python;
-  const mmv::app::CorrelateStudy s = released(progress, [&] { return mmv::app::runCorrelateStudy(sc, r); });
+  const mmv::app::CorrelateStudy s = released(progress, [&] { return mmv::app::runCorrelateStudy(prepared.scene, r); });
   return py::make_tuple(s.json.dump(), s.text, s.mac_csv, prepared.warnings);
 }
 
@@ -171,7 +170,6 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
                        double sensor_mass, double min_separation, const std::vector<std::string>& keep_out, int channels,
                        bool keep_scene_sensors, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
-  const mmv::Scene& sc = prepared.scene;
   mmv::app::PlacementRequest r;
   r.modes = target_modes;
   r.below_given = below_hz.has_value();
@@ -187,7 +185,7 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   r.channels = channels;
   r.keep_scene_sensors = keep_scene_sensors;
   r.front = Front::Python;
-  const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(sc, r); });
+  const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(prepared.scene, r); });
   return py::make_tuple(s.json.dump(), s.text, s.tam_csv, prepared.warnings);
 }
 

@@ -166,3 +166,16 @@ def test_correlate_tam_test_orthogonality(tmp_path):
     t = c.json["test_orthogonality"]
     assert t["method"] == "serep" and t["pass"]
     np.testing.assert_allclose(np.array(t["matrix"]), np.eye(6), atol=1e-5)
+
+
+def test_place_sensors_keeps_the_scenes_sensors_as_the_cli():
+    slew = os.path.join(SOURCE, "scenes", "mmv-slew.yaml")
+    p = mmvlab.place_sensors(mmvlab.load_scene(slew), segments=8, count=8, keep_scene_sensors=True)
+    cli = subprocess.run([MMVLAB, "place-sensors", slew, "--segments", "8", "--count", "8", "--keep-scene-sensors", "--json"],
+                         capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    fixed = lambda chosen: sorted(f"{c['station']} {c['axis']}" for c in chosen if c["fixed"] == 1)
+    assert fixed(p.chosen) == ["link2@1.52m transverse", "link3a@0.762m transverse"]
+    assert fixed(json.loads(cli.stdout)["chosen"]) == fixed(p.chosen)
+    with pytest.raises(mmvlab.UsageError, match="below the 2 accelerometers"):
+        mmvlab.place_sensors(mmvlab.load_scene(slew), segments=8, count=1, keep_scene_sensors=True)

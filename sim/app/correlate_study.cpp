@@ -79,7 +79,7 @@ TamChannels readTam(const std::string& spec, Front front) {
   const auto colon = spec.rfind(':');
   TamMethod parsed;
   if (colon != std::string::npos && parseTamMethod(spec.substr(colon + 1), parsed)) path = spec.substr(0, colon), method = tamMethodName(parsed);
-  const MatContents c = readMat(path);
+  const MatContents c = readMat(path, limits::kMaxTamBytes);
   auto matrix = [&](const std::string& name) -> const Eigen::MatrixXd& {
     for (const auto& [n, m] : c.matrices)
       if (n == name) return m;

@@ -59,6 +59,9 @@ constexpr long kMaxSceneBytes = 16L << 20;
 constexpr long kMaxProfileBytes = 64L << 20;
 /// A measured UFF file (`correlate --measured`): 1000 FRFs of 4000 lines of 53 bytes.
 constexpr long kMaxMeasuredBytes = 256L << 20;
+/// A TAM file (`correlate --tam`, tam.mat): M, K over a few hundred channels and T over
+/// the model's coordinates are a few MB; 64 MB is not a TAM.
+constexpr long kMaxTamBytes = 64L << 20;
 /// Measured nodes paired with the article by position (each costs a search along every link).
 constexpr int kMaxMeasuredNodes = 2000;
 }  // namespace limits

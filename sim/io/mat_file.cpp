@@ -76,9 +76,12 @@ void writeMat(const std::string& path, const MatContents& c) {
     if (!MatVar(Mat_VarReadInfo(back.get(), name.c_str()))) throw OutputError(path + ": " + name + " did not write whole (disk full?)");
 }
 
-MatContents readMat(const std::string& path) {
+MatContents readMat(const std::string& path, long max_bytes) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw SceneFileError(path + ": no such file (or not a regular file)");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > static_cast<std::uintmax_t>(max_bytes))
+    throw SceneFileError(path + ": larger than " + std::to_string(max_bytes) + " bytes, more than a .mat file mmvlab reads here");
   MatFile mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) throw SceneFileError(path + ": cannot open as a .mat file (MAT 5)");
   MatContents c;

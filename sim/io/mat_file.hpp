@@ -23,8 +23,9 @@ struct MatContents {
 void writeMat(const std::string& path, const MatContents& contents);
 
 /// Reads `path`: every double matrix and every cell array of strings in it. Throws
-/// SceneFileError when it does not open, SceneError when a variable is neither.
-MatContents readMat(const std::string& path);
+/// SceneFileError when it does not open or is larger than `max_bytes`, SceneError when a
+/// variable is neither.
+MatContents readMat(const std::string& path, long max_bytes);
 
 /// Writes `path`; throws std::runtime_error if matio cannot create or write it.
 void writeStateSpaceMat(const std::string& path, const StateSpace& descriptor);

@@ -10,6 +10,7 @@
 #include "sim/core/text.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/modes/sensor_loading.hpp"
+#include "sim/statics/damping_matrix.hpp"
 
 namespace mmv {
 namespace {
@@ -64,16 +65,6 @@ Loaded loadedModel(const ArticleScene& scene, const ExciterStudy& e, const std::
     l.zeta.push_back(w > 0 ? psi.dot(l.lm.Cz * psi) / (2 * w) : 0.0);
   }
   return l;
-}
-
-std::string dampingText(const std::optional<DampingSpec>& d) {
-  if (!d) return "1 % in every mode (the scene has no damping:)";
-  switch (d->kind) {
-    case DampingSpec::Kind::Modal: return strf("%g %% in every mode (the scene's)", 100 * d->modal_ratio);
-    case DampingSpec::Kind::Rayleigh: return strf("Rayleigh, alpha %g 1/s, beta %g s (the scene's)", d->alpha, d->beta);
-    case DampingSpec::Kind::HingeViscous: return strf("hinge dampers c = %g s * k (the scene's)", d->hinge_beta);
-  }
-  return "";
 }
 
 /// Per unit force along the shaker's direction: each channel's acceleration and the
@@ -214,7 +205,7 @@ ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) 
   e.at = e.chosen ? e.ranking.front().station : spec.at;
   e.direction = e.chosen ? e.ranking.front().world : spec.direction;
   e.axis = e.chosen ? e.ranking.front().axis : "";
-  e.damping = dampingText(scene.damping);
+  e.damping = describeDamping(scene.damping.value_or(DampingSpec{})) + (scene.damping ? " (the scene's)" : " (the scene has no damping:)");
   const facility::SensorSpec acc = facility::accelerometerSpec();
   e.resolution = acc.resolution, e.range = acc.range;
   e.sample_rate_hz = scene.simulation.sample_rate_hz;
@@ -222,16 +213,27 @@ ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) 
   const ProgressStage stage("the shaker: its armature on the model, sine and random levels");
   int highest = 0;
   for (const ModeNumber m : study.target_modes) highest = std::max(highest, m.number());
-  const SolvedScene s = solveScene(scene, {}, highest + 6);
   const Loaded l = loadedModel(scene, e, channels);
-  const Eigen::MatrixXd loaded_shapes = l.lm.Z * l.modes.shapes;  // over the coordinates, as s's
+  // The bare article's target shapes, from the linear model's own linearization (the
+  // same equilibrium the placement solved; no second model is built).
+  const LinearizedModel& lin = l.lm.solved.linearized;
+  const int n = static_cast<int>(lin.Z.cols());
+  const ModalSolution bare = solveModes(lin.M, lin.K, lin.Z, highest + 6 >= n ? 0 : highest + 6);
+  const Eigen::MatrixXd loaded_shapes = l.lm.Z * l.modes.shapes;  // over the coordinates, as bare's
   for (std::size_t j = 0; j < study.target_modes.size(); ++j) {
     ExciterStudy::Mode m;
     m.mode = study.target_modes[j];
-    m.frequency_hz = s.modes.frequencyHz(m.mode.index());
-    std::tie(m.loaded_mode, m.mac) = followMode(s.linearized.M, s.modes.shapes.col(m.mode.index()), loaded_shapes);
+    m.frequency_hz = study.target_frequencies_hz[j];
+    std::tie(m.loaded_mode, m.mac) = followMode(lin.M, bare.shapes.col(m.mode.index()), loaded_shapes);
     m.loaded_hz = l.modes.frequencyHz(m.loaded_mode.index());
     m.zeta = l.zeta[static_cast<std::size_t>(m.loaded_mode.index())];
+    // Undamped, a resonance's response is unbounded: its levels would be round-off.
+    if (!(m.zeta > kLeastDampingRatio))
+      throw SceneError(scene.positions.where("damping") +
+                       strf(": the shaker's levels need damping: mode %d of the article with the armature (%.4g Hz, following "
+                            "target mode %d) has a damping ratio of %.3g, so its resonance has no bound; give the scene a "
+                            "damping: (modal_ratio, rayleigh or hinge_beta)",
+                            m.loaded_mode.number(), m.loaded_hz, m.mode.number(), m.zeta));
     e.modes.push_back(m);
   }
   sineLevels(e, l, channels);

@@ -47,6 +47,9 @@ namespace mmv {
 inline constexpr double kArmatureShiftLimit = 0.02;
 /// A mode is seen when its best sensor's signal-to-noise ratio reaches this (dB).
 inline constexpr double kSeenSnrDb = 20;
+/// A target mode of the loaded article damped less than this has no bounded resonance:
+/// runExciter refuses it (SceneError) rather than report round-off as levels.
+inline constexpr double kLeastDampingRatio = 1e-6;
 
 struct ExciterCandidate {
   int direction = 0;        ///< row of PlacementStudy::directions
@@ -97,7 +100,8 @@ struct ExciterStudy {
 };
 
 /// The shaker of `scene` (MMV_DEMAND: it has one) against `study`'s targets and chosen
-/// sensors. Throws NumericalError when the model cannot respond (a singular model).
+/// sensors. Throws SceneError when a target mode is undamped (below kLeastDampingRatio),
+/// NumericalError when the model cannot respond (a singular model).
 ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study);
 
 /// The ranking of every candidate direction of `study` for a shaker of armature mass

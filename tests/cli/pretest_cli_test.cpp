@@ -260,6 +260,12 @@ TEST_F(Cli, TheShakersValuesAreCheckedAtTheirBounds) {
   const Result half = run("place-sensors --segments 4 --set shaker.at=auto --set 'shaker.direction=[0, 1, 0]'");
   EXPECT_EQ(half.code, 65);
   EXPECT_NE(half.err.find("give both as 'auto', or neither"), std::string::npos) << half.err;
+  // Undamped, a resonance has no bound: refused, not round-off printed as levels.
+  const fs::path undamped = dir_ / "undamped";
+  const Result none = run("place-sensors --segments 4 --count 8" + at + " --set damping.modal_ratio=0 --out " + undamped.string());
+  EXPECT_EQ(none.code, 65);
+  EXPECT_NE(none.err.find("the shaker's levels need damping: mode 1 of the article with the armature"), std::string::npos) << none.err;
+  EXPECT_FALSE(fs::exists(undamped));
 }
 
 // --keep-scene-sensors: the slew scene's two accelerometers (link 2's tip, transverse;
@@ -281,6 +287,7 @@ TEST_F(Cli, TheScenesOwnSensorsAreKeptAndCounted) {
     std::string args, message;
     int code;
   };
+  EXPECT_EQ(run("place-sensors " + slew + " --segments 4 --modes 1-2 --count 2 --keep-scene-sensors").code, 0);  // the bound: only the scene's
   for (const Refusal& b : {Refusal{slew + " --segments 4 --count 1", "--count 1: below the 2 accelerometers of the scene", 64},
                            Refusal{"--segments 4", "--keep-scene-sensors: the scene has no accelerometer to keep", 64},
                            Refusal{slew + " --segments 4 --triaxial", "it is not built for --triaxial blocks yet", 64},

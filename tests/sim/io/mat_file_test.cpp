@@ -92,7 +92,9 @@ TEST(MatFile, WhatIsWrittenIsReadBack) {
   c.strings.emplace_back("Channel", std::vector<std::string>{"link1@2.44m transverse", "", "link3a@0.762m axial"});
   const std::string path = (dir / "t.mat").string();
   writeMat(path, c);
-  const MatContents back = readMat(path);
+  const long size = static_cast<long>(fs::file_size(path));
+  EXPECT_THROW(readMat(path, size - 1), SceneFileError);  // one byte past the bound
+  const MatContents back = readMat(path, size);            // at it
   ASSERT_EQ(back.matrices.size(), c.matrices.size());
   for (std::size_t i = 0; i < c.matrices.size(); ++i) {
     EXPECT_EQ(back.matrices[i].first, c.matrices[i].first);
@@ -103,7 +105,7 @@ TEST(MatFile, WhatIsWrittenIsReadBack) {
   ASSERT_EQ(back.strings.size(), 1u);
   EXPECT_EQ(back.strings[0].first, "Channel");
   EXPECT_EQ(back.strings[0].second, c.strings[0].second);
-  EXPECT_THROW(readMat((dir / "absent.mat").string()), SceneFileError);
+  EXPECT_THROW(readMat((dir / "absent.mat").string(), size), SceneFileError);
   fs::remove_all(dir);
 }
 
