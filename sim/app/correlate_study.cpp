@@ -17,16 +17,6 @@
 namespace mmv::app {
 namespace {
 
-MeasuredSet readMeasured(const std::string& path) {
-  std::string text, why;
-  if (!readInputFile(path, limits::kMaxMeasuredBytes, text, why)) throw SceneFileError(path + ": " + why);
-  const uff::File file = uff::read(text, path);
-  if (file.nodes.size() > static_cast<std::size_t>(limits::kMaxMeasuredNodes))
-    throw SceneError(strf("%s: %zu nodes, more than the %d a correlation pairs with the article", path.c_str(),
-                          file.nodes.size(), limits::kMaxMeasuredNodes));
-  return measuredSet(file, path);
-}
-
 std::pair<int, std::string> namedPair(const std::string& p, Front front) {
   const auto eq = p.find('=');
   const auto bad = [&] {
@@ -43,27 +33,6 @@ std::pair<int, std::string> namedPair(const std::string& p, Front front) {
     throw bad();
   }
   return {node, p.substr(eq + 1)};
-}
-
-CorrelateOptions options(const CorrelateRequest& r, const ArticleScene& scene) {
-  checkRange(r.front, "--pair-distance", r.pair_distance_m, 1e-6, 100);
-  checkRange(r.front, "--modes", r.modes, 1, 500);
-  checkRange(r.front, "--mac-threshold", r.mac_threshold, 0, 1);
-  checkRange(r.front, "--max-frequency-error", r.max_frequency_error, 1e-6, 100);
-  if (r.damping_ratio) checkRange(r.front, "--damping", *r.damping_ratio, 0, 1);
-  if (r.measured.empty()) throw UsageError(optionName(r.front, "--measured") + ": the measured UFF file is required");
-  CorrelateOptions o;
-  o.pair_distance_m = r.pair_distance_m;
-  o.model_modes = r.modes;
-  o.mac_threshold = r.mac_threshold;
-  o.max_frequency_error = r.max_frequency_error;
-  o.damping.modal_ratio = r.damping_ratio.value_or(0.01);
-  if (scene.damping && !r.damping_ratio) o.damping = *scene.damping;
-  for (const auto& p : r.pairs) {
-    o.named_pairs.push_back(namedPair(p, r.front));
-    checkedPoints({o.named_pairs.back().second}, scene.article, optionName(r.front, "--pair") + " " + p);
-  }
-  return o;
 }
 
 std::string joinNames(const std::vector<std::string>& names) {
@@ -117,15 +86,50 @@ TamChannels readTam(const std::string& spec, Front front) {
 
 }  // namespace
 
-CorrelateStudy runCorrelateStudy(const Scene& scene, const CorrelateRequest& r) {
-  const ArticleScene& article = articleOf(scene, "correlate");
-  const CorrelateOptions o = options(r, article);  // the options' errors before the file is read
-  const MeasuredSet test = readMeasured(r.measured);
-  const std::optional<TamChannels> tam = r.tam.empty() ? std::nullopt : std::optional<TamChannels>(readTam(r.tam, r.front));
-  for (const auto& [node, point] : o.named_pairs)  // the file's nodes, before any model is built
+MeasuredSet readMeasuredFile(const std::string& path) {
+  std::string text, why;
+  if (!readInputFile(path, limits::kMaxMeasuredBytes, text, why)) throw SceneFileError(path + ": " + why);
+  const uff::File file = uff::read(text, path);
+  if (file.nodes.size() > static_cast<std::size_t>(limits::kMaxMeasuredNodes))
+    throw SceneError(strf("%s: %zu nodes, more than the %d a correlation pairs with the article", path.c_str(),
+                          file.nodes.size(), limits::kMaxMeasuredNodes));
+  return measuredSet(file, path);
+}
+
+CorrelateOptions correlateOptions(const CorrelateRequest& r, const ArticleScene& scene) {
+  checkRange(r.front, "--pair-distance", r.pair_distance_m, 1e-6, 100);
+  checkRange(r.front, "--modes", r.modes, 1, 500);
+  checkRange(r.front, "--mac-threshold", r.mac_threshold, 0, 1);
+  checkRange(r.front, "--max-frequency-error", r.max_frequency_error, 1e-6, 100);
+  if (r.damping_ratio) checkRange(r.front, "--damping", *r.damping_ratio, 0, 1);
+  if (r.measured.empty()) throw UsageError(optionName(r.front, "--measured") + ": the measured UFF file is required");
+  CorrelateOptions o;
+  o.pair_distance_m = r.pair_distance_m;
+  o.model_modes = r.modes;
+  o.mac_threshold = r.mac_threshold;
+  o.max_frequency_error = r.max_frequency_error;
+  o.damping.modal_ratio = r.damping_ratio.value_or(0.01);
+  if (scene.damping && !r.damping_ratio) o.damping = *scene.damping;
+  for (const auto& p : r.pairs) {
+    o.named_pairs.push_back(namedPair(p, r.front));
+    checkedPoints({o.named_pairs.back().second}, scene.article, optionName(r.front, "--pair") + " " + p);
+  }
+  return o;
+}
+
+void checkNamedPairNodes(const MeasuredSet& test, const CorrelateOptions& o, Front front) {
+  for (const auto& [node, point] : o.named_pairs)
     if (std::none_of(test.nodes.begin(), test.nodes.end(), [node = node](const MeasuredNode& n) { return n.label == node; }))
       throw SceneError(strf("%s: %s %d=%s: the file defines no node %d", test.source.c_str(),
-                            optionName(r.front, "--pair").c_str(), node, point.c_str(), node));
+                            optionName(front, "--pair").c_str(), node, point.c_str(), node));
+}
+
+CorrelateStudy runCorrelateStudy(const Scene& scene, const CorrelateRequest& r) {
+  const ArticleScene& article = articleOf(scene, "correlate");
+  const CorrelateOptions o = correlateOptions(r, article);  // the options' errors before the file is read
+  const MeasuredSet test = readMeasuredFile(r.measured);
+  const std::optional<TamChannels> tam = r.tam.empty() ? std::nullopt : std::optional<TamChannels>(readTam(r.tam, r.front));
+  checkNamedPairNodes(test, o, r.front);  // the file's nodes, before any model is built
   CorrelateStudy s{correlate(article, test, o), {}, {}, {}, {}, {}};
   s.json = correlationJson(article, s.result);
   s.text = correlationText(article, s.result);

@@ -36,6 +36,13 @@ struct CorrelateStudy {
   std::string text, mac_csv, pairs_csv;
 };
 
+/// The measured UFF file, read and bounded (SceneFileError, SceneError naming file:line).
+MeasuredSet readMeasuredFile(const std::string& path);
+/// The request's pairing options, checked (UsageError naming the option as `front` spells it).
+CorrelateOptions correlateOptions(const CorrelateRequest& request, const ArticleScene& scene);
+/// Every node a --pair names is one of the file's (SceneError otherwise).
+void checkNamedPairNodes(const MeasuredSet& test, const CorrelateOptions& options, Front front);
+
 /// Checks the request (every option before the file is read, the file before any model
 /// is built), reads the measured file and correlates it with the article of `scene`
 /// (a HAM-SAS scene is a UsageError).

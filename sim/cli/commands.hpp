@@ -197,6 +197,15 @@ struct CorrelateArgs : SceneArgs {
   bool force = false;
 };
 
+struct UpdateArgs : CorrelateArgs {
+  std::vector<std::string> params;  ///< KEY or KEY:LO:HI
+  double frequency_sigma = 0.01;
+  double mac_sigma = 0.05;
+  bool no_mac = false;              ///< leave (1 - MAC) out of the residuals
+  double regularization = 0;
+  int max_iterations = 30;
+};
+
 struct DesignSweepArgs {
   std::string spec;    ///< the sweep spec (YAML).
   std::string out;     ///< the results directory (resumed when it holds this sweep).
@@ -219,6 +228,7 @@ void renderHistory(const RenderArgs& args, const std::string& ext);
 int runModesCommand(const ModesArgs& args);
 int runCheckCommand(const CheckArgs& args);
 int runCorrelateCommand(const CorrelateArgs& args);
+int runUpdateCommand(const UpdateArgs& args);
 int runDesignSweepCommand(const DesignSweepArgs& args);
 int runSweepMergeCommand(const SweepMergeArgs& args);
 /// The figures of a sweep's table (sweep.csv's text; sim/cli/design_sweep_plots.cpp), staged in `out`.

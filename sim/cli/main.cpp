@@ -327,6 +327,31 @@ CLI::App* addCorrelateCommand(CLI::App& app, CorrelateArgs& co) {
   return c;
 }
 
+/// `mmvlab update` and its options (the pairing ones are correlate's).
+CLI::App* addUpdateCommand(CLI::App& app, UpdateArgs& u) {
+  CLI::App* c = app.add_subcommand("update", "Update scene values so the model reproduces a measured modal test: fit, "
+                                             "identifiability, intervals, the updated scene");
+  addSceneOptions(c, u);
+  c->add_option("--measured", u.measured, "The measured UFF file (datasets 15/2411 nodes, 55 modes)")->required();
+  c->add_option("--params", u.params, "KEY[:LO:HI],...: scene keys to update (numbers written in the scene file, as --set names "
+                                      "them); bounds in the key's units, default half to twice the nominal")
+      ->delimiter(',')->required();
+  c->add_option("--frequency-sigma", u.frequency_sigma, "A frequency error's stated uncertainty, relative, 1e-6 .. 1")->capture_default_str();
+  c->add_option("--mac-sigma", u.mac_sigma, "(1 - MAC)'s stated uncertainty, 1e-6 .. 1")->capture_default_str();
+  c->add_flag("--no-mac", u.no_mac, "Fit the frequencies only: leave (1 - MAC) out of the residuals");
+  c->add_option("--regularization", u.regularization, "Pull toward the nominal, residuals per 100 % change, 0 .. 1e6")->capture_default_str();
+  c->add_option("--max-iterations", u.max_iterations, "Levenberg-Marquardt iterations, 1 .. 1000")->capture_default_str();
+  c->add_option("--pair-distance", u.pair_distance, "As correlate's, 1e-6 .. 100 m")->capture_default_str();
+  c->add_option("--pair", u.pairs, "NODE=POINT: pair a node with a point or station by name (repeatable)");
+  c->add_option("--modes", u.modes, "Model modes compared, 1 .. 500")->capture_default_str();
+  c->add_option("--mac-threshold", u.mac_threshold, "As correlate's, 0 .. 1")->capture_default_str();
+  c->add_option("--max-frequency-error", u.max_frequency_error, "As correlate's, 1e-6 .. 100")->capture_default_str();
+  c->add_flag("--json", u.json, "Print JSON instead of tables");
+  c->add_option("--out", u.out, "Also write update.json, updated_scene.yaml, parameters.csv, pairs.csv, iterations.csv and figures here");
+  c->add_flag("--force", u.force, "Replace files of the same names in --out");
+  return c;
+}
+
 /// `mmvlab sweep` and `mmvlab sweep-merge`.
 std::pair<CLI::App*, CLI::App*> addDesignSweepCommands(CLI::App& app, DesignSweepArgs& ds, SweepMergeArgs& sm) {
   CLI::App* s = app.add_subcommand("sweep", "Design sweep from a spec: parameters x outputs (modes tracked, check margins), in parallel, resumable, sharded");
@@ -372,6 +397,17 @@ std::set<std::string> givenOptions(const CLI::App* cmd) {
   return given;
 }
 
+/// A full disk or a closed pipe behind stdout is a failure, not a success.
+int withStdoutChecked(int code) {
+  std::cout.flush();
+  if (!std::cout) {
+    if (code != mmv::cli::kOk) return code;  // the command has said why
+    std::cerr << "mmvlab: cannot write to standard output (disk full or pipe closed?)\n";
+    return mmv::cli::kIoError;
+  }
+  return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -403,6 +439,8 @@ int main(int argc, char** argv) {
   CLI::App* ch = addCheckCommand(app, ck);
   CorrelateArgs co;
   CLI::App* cr = addCorrelateCommand(app, co);
+  UpdateArgs up;
+  CLI::App* ud = addUpdateCommand(app, up);
 
   DesignSweepArgs ds;
   SweepMergeArgs sm;
@@ -426,6 +464,7 @@ int main(int argc, char** argv) {
     if (ch->parsed()) return runCheckCommand(ck);
     co.damping_given = cr->count("--damping") > 0;
     if (cr->parsed()) return runCorrelateCommand(co);
+    if (ud->parsed()) return runUpdateCommand(up);
     if (dsw->parsed()) return runDesignSweepCommand(ds);
     if (smg->parsed()) return runSweepMergeCommand(sm);
     if (cp->parsed()) return runCompareCommand(cmp);
@@ -444,13 +483,5 @@ int main(int argc, char** argv) {
   };
   const Watchdog watchdog;
   const mmv::ProgressStage stage(app.get_subcommands().empty() ? std::string("mmvlab") : app.get_subcommands().front()->get_name());
-  const int code = run();
-  // A full disk or a closed pipe behind stdout is a failure, not a success.
-  std::cout.flush();
-  if (!std::cout) {
-    if (code != kOk) return code;  // the command has said why
-    std::cerr << "mmvlab: cannot write to standard output (disk full or pipe closed?)\n";
-    return kIoError;
-  }
-  return code;
+  return withStdoutChecked(run());
 }

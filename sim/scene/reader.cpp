@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -221,6 +222,60 @@ Scene parseScene(const std::string& yaml_text, const std::string& source_name, c
   a.positions = reader.sourceMap();
   if (!sets.empty()) a.source += overrideSuffix(sets);
   return a;
+}
+
+SceneValue sceneValueAt(const std::string& yaml_text, const std::vector<std::string>& sets, const std::string& key) {
+  SceneValue v;
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException&) {
+    return v;  // the reader names the file's own error
+  }
+  if (!root.IsMap()) return v;
+  const int first_line = static_cast<int>(std::count(yaml_text.begin(), yaml_text.end(), '\n')) + 10;
+  std::vector<Patch> patches;
+  for (const auto& set : sets) patches.push_back(setPatch(set));
+  applyPatches(root, patches, first_line);
+  YAML::Node node;
+  node.reset(root);
+  std::stringstream ss(key);
+  for (std::string part; std::getline(ss, part, '.');) {
+    std::string known;
+    YAML::Node child;
+    child.reset(part.empty() ? YAML::Node(YAML::NodeType::Undefined) : childOf(node, part, known));
+    if (!child.IsDefined()) return v;
+    node.reset(child);
+  }
+  if (!node.IsScalar()) return v;
+  v.found = true;
+  v.text = node.Scalar();
+  char* end = nullptr;
+  v.value = std::strtod(v.text.c_str(), &end);
+  v.number = !v.text.empty() && *end == '\0' && std::isfinite(v.value);
+  const YAML::Mark m = node.Mark();
+  v.in_file = m.line >= 0 && m.line < first_line - 9;
+  if (v.in_file) {
+    v.line = m.line + 1, v.column = m.column + 1, v.offset = static_cast<std::size_t>(m.pos);
+    std::size_t e = v.offset;
+    while (e < yaml_text.size() && std::strchr(" \t\r\n,]}#", yaml_text[e]) == nullptr) ++e;
+    v.length = e - v.offset;
+    v.plain = yaml_text.compare(v.offset, v.length, v.text) == 0;  // not quoted, not a block scalar
+  }
+  return v;
+}
+
+std::string editedSceneText(const std::string& yaml_text, std::vector<SceneEdit> edits) {
+  std::sort(edits.begin(), edits.end(), [](const SceneEdit& a, const SceneEdit& b) { return a.offset > b.offset; });
+  std::string out = yaml_text;
+  for (const auto& e : edits) {  // from the end: earlier offsets stay valid
+    MMV_DEMAND(e.offset + e.length <= out.size());
+    std::size_t eol = out.find('\n', e.offset);
+    if (eol == std::string::npos) eol = out.size();
+    if (!e.comment.empty()) out.insert(eol, "  # " + e.comment);
+    out.replace(e.offset, e.length, e.value);
+  }
+  return out;
 }
 
 std::string overrideSuffix(const std::vector<std::string>& sets) {

@@ -153,6 +153,28 @@ struct SceneFlags {
 };
 Scene parseScene(const std::string& yaml_text, const std::string& source_name, const std::vector<std::string>& sets = {},
                  const SceneFlags& flags = {}, std::vector<std::string>* notes = nullptr);
+/// A value of the scene document at a dotted key (as `--set` names it: mapping keys,
+/// list items by name), after the `sets` patches: what `mmvlab update` varies and edits.
+struct SceneValue {
+  bool found = false;   ///< the key names a scalar
+  bool number = false;  ///< a finite number
+  double value = 0;
+  std::string text;     ///< the scalar as written
+  bool in_file = false; ///< written in the file's own text (not only by a --set patch)
+  bool plain = false;   ///< in the file as a plain scalar: an edit can replace it in place
+  int line = 0, column = 0;  ///< 1-based, in the file
+  std::size_t offset = 0, length = 0;  ///< the scalar's bytes in the file
+};
+SceneValue sceneValueAt(const std::string& yaml_text, const std::vector<std::string>& sets, const std::string& key);
+
+/// A scalar of the file replaced by `value`, `comment` appended to its line.
+struct SceneEdit {
+  std::size_t offset = 0, length = 0;
+  std::string value, comment;
+};
+/// The file's text with the edits made; every other byte as it was.
+std::string editedSceneText(const std::string& yaml_text, std::vector<SceneEdit> edits);
+
 /// Reads and parses a scene file. Throws SceneFileError or SceneError.
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& sets = {}, const SceneFlags& flags = {},
                     std::vector<std::string>* notes = nullptr);
