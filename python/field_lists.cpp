@@ -21,6 +21,7 @@
 #include "sim/io/tam_report.hpp"
 #include "sim/io/exciter_report.hpp"
 #include "sim/io/trade_report.hpp"
+#include "sim/io/update_report.hpp"
 
 namespace py = pybind11;
 
@@ -59,6 +60,8 @@ const std::map<std::string, std::function<py::list()>>& namedLists() {
       {"sweep_config_tracks", [] { return describe(mmv::trackFields()); }},
       {"tam_modes", [] { return describe(mmv::tamModeFields()); }},
       {"trade_runs", [] { return describe(mmv::tradeRunFields()); }},
+      {"update_pairs", [] { return describe(mmv::updatePairFields()); }},
+      {"update_parameters", [] { return describe(mmv::updateParameterFields()); }},
   };
   return lists;
 }

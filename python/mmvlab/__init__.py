@@ -34,7 +34,7 @@ __all__ = ["load_scene", "modes", "converge", "compare", "frf", "rom", "simulate
            "UsageError", "NumericalError", "UnavailableError", "OutputError", "InternalError", "SceneWarning", "RunWarning",
            "ModesResult", "CheckResult", "check_line_fields", "fields", "field_list_names", "PlacementResult", "correlate", "CorrelateResult", "mode_fields", "trade",
            "TradeResult", "sweep_config", "ConfigSweepResult",
-           "TransmissibilityResult"]
+           "TransmissibilityResult", "update", "UpdateResult"]
 
 
 class SceneWarning(UserWarning):
@@ -625,3 +625,48 @@ def correlate(scene, measured, *, segments=0, pairs=(), pair_distance=0.05, mode
     result = CorrelateResult(json_text, text, mac_csv)
     _warn(result.json.get("warnings", []), RunWarning)
     return result
+
+
+class UpdateResult(Result):
+    """A model update (as update.json): `.parameters` (dicts: key, line, nominal, lower,
+    upper, updated, change, standard_error, interval_low, interval_high, at_bound,
+    determined; `.table()` as columns), `.updated` (dict key -> updated value),
+    `.pairs` (the measured modes before and after; `.pairs_table()`), `.updated_scene`
+    (the scene file's text with the updated values, each commented), `.converged`."""
+
+    def __init__(self, json_text, text, updated_scene):
+        super().__init__(json_text, text)
+        self.updated_scene = updated_scene
+        self.parameters = self.json["parameters"]
+        self.updated = {p["key"]: p["updated"] for p in self.parameters}
+        self.pairs = self.json["pairs"]
+        self.converged = self.json["converged"]
+
+    def table(self):
+        """The parameters as columns, one per field of `fields("update_parameters")`
+        (parameters.csv's columns, under the same names)."""
+        return _columns(self.parameters, fields("update_parameters"))
+
+    def pairs_table(self):
+        """The measured modes before and after, as pairs.csv's columns (`fields("update_pairs")`)."""
+        return _columns(self.pairs, fields("update_pairs"))
+
+
+def update(scene, params, *, measured=None, segments=0, frequency_sigma=0.01, mac_sigma=0.05, mac=True,
+           regularization=0.0, max_iterations=30, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,
+           max_frequency_error=0.3, progress=None):
+    """`mmvlab update`: the scene keys `params` ("KEY" or "KEY:LO:HI" strings, or a dict
+    {key: (lo, hi)} or {key: None}) adjusted so that the model reproduces the measured UFF
+    file `measured` (an article; None for HAM-SAS: the slides' measured features).
+    `mac=False` fits the frequencies only. Pairing options as `correlate`'s
+    (docs/updating.md)."""
+    if isinstance(params, dict):
+        params = [k if b is None else f"{k}:{b[0]!r}:{b[1]!r}" for k, b in params.items()]
+    if isinstance(pairs, dict):
+        pairs = [f"{node}={point}" for node, point in pairs.items()]
+    json_text, text, updated_scene, warns = _mmvlab.update(
+        scene, int(segments), [str(p) for p in params], "" if measured is None else str(measured), float(frequency_sigma),
+        float(mac_sigma), bool(mac), float(regularization), int(max_iterations), [str(p) for p in pairs],
+        float(pair_distance), int(modes), float(mac_threshold), float(max_frequency_error), progress)
+    _warn(warns)
+    return UpdateResult(json_text, text, updated_scene)

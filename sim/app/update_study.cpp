@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "sim/core/text.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/io/update_report.hpp"
 
 namespace mmv::app {
@@ -66,7 +67,7 @@ void checkBoundsReadable(const SceneSource& scene, const std::vector<UpdateParam
       Eigen::VectorXd q = p;
       q(static_cast<Eigen::Index>(k)) = bound;
       try {
-        articleAt(scene, ps, q);
+        sceneAt(scene, ps, q);
       } catch (const SceneError& e) {
         std::string why = e.what();  // the reader names the patch it was given: the user gave the bound
         const std::string patch = "--set " + ps[k].key + "=" + shortest(bound) + ": ";
@@ -81,19 +82,26 @@ struct Checked {
   SceneSource scene;
   std::vector<UpdateParameterSpec> params;
   ModelUpdateOptions options;
+  std::optional<CorrelateOptions> pairing;  ///< an article; none: HAM-SAS (the slides' features)
 };
 
 Checked checkRequest(const LoadedScene& loaded, const UpdateRequest& r) {
   const Front front = r.pairing.front;
-  const ArticleScene& article = articleOf(loaded.scene, "update");
   checkRange(front, "--frequency-sigma", r.frequency_sigma, 1e-6, 1);
   checkRange(front, "--mac-sigma", r.mac_sigma, 1e-6, 1);
   checkRange(front, "--regularization", r.regularization, 0, 1e6);
   checkRange(front, "--max-iterations", r.max_iterations, 1, 1000);
-  Checked c{sourceOf(loaded), {}, {}};
-  c.options.pairing = correlateOptions(r.pairing, article);
+  Checked c{sourceOf(loaded), {}, {}, {}};
+  if (const auto* article = std::get_if<ArticleScene>(&loaded.scene)) {
+    c.pairing = correlateOptions(r.pairing, *article);
+  } else if (!r.pairing.measured.empty()) {
+    throw UsageError(optionName(front, "--measured") + " " + r.pairing.measured +
+                     ": a HAM-SAS scene is updated against the slides' measured features (docs/hamsas.md), not a file");
+  }
   c.options.frequency_sigma = r.frequency_sigma, c.options.mac_sigma = r.mac_sigma;
-  c.options.mac_residuals = r.mac_residuals, c.options.regularization = r.regularization;
+  // HAM-SAS's shape matches are against the features' model patterns, not measured shapes.
+  c.options.mac_residuals = r.mac_residuals && c.pairing.has_value();
+  c.options.regularization = r.regularization;
   c.options.max_iterations = r.max_iterations;
   const std::string opt = optionName(front, "--params");
   if (r.params.empty()) throw UsageError(opt + ": name at least one scene key to update (KEY or KEY:LO:HI)");
@@ -106,6 +114,41 @@ Checked checkRequest(const LoadedScene& loaded, const UpdateRequest& r) {
   }
   checkBoundsReadable(c.scene, c.params, r.params, front);
   return c;
+}
+
+/// An article against a measured set: correlate's pairs, redone for every model.
+ModelUpdateResult updateArticle(const Checked& c, const MeasuredSet& measured) {
+  MeasuredSet modes_only = measured;  // the residuals use the modes; the functions are correlate's
+  modes_only.frfs.clear();
+  std::vector<TestTarget> targets;
+  for (std::size_t i = 0; i < modes_only.modes.size(); ++i) targets.push_back({strf("T%zu", i + 1), modes_only.modes[i].frequency_hz});
+  const CorrelateOptions o = *c.pairing;
+  const UpdateMatcher match = [&modes_only, &o](const Scene& s) {
+    const CorrelationResult cr = correlate(std::get<ArticleScene>(s), modes_only, o);
+    std::vector<std::optional<ModelMatch>> out(cr.test_modes.size());
+    for (const auto& p : cr.pairs) {
+      const ModeInfo& m = cr.model_modes[static_cast<std::size_t>(p.model)];
+      out[static_cast<std::size_t>(p.test)] = ModelMatch{m.number, m.frequency_hz, p.mac};
+    }
+    return out;
+  };
+  return updateModel(c.scene, c.params, targets, measured.source, match, c.options);
+}
+
+/// HAM-SAS against the slides' measured features, each identified by shape in every model.
+ModelUpdateResult updateHamsas(const Checked& c, const LoadedScene& loaded) {
+  std::vector<TestTarget> targets;
+  for (const auto& f : analyseHamsas(std::get<HamsasScene>(loaded.scene).isolator).features) targets.push_back({f.feature, f.measured_hz});
+  const UpdateMatcher match = [&targets](const Scene& s) {
+    const HamsasModes h = analyseHamsas(std::get<HamsasScene>(s).isolator);
+    std::vector<std::optional<ModelMatch>> out(targets.size());
+    for (std::size_t t = 0; t < targets.size(); ++t)
+      for (const auto& f : h.features)
+        if (f.feature == targets[t].label && f.mode >= 0) out[t] = ModelMatch{f.mode + 1, f.model_hz, f.shape_match};
+    return out;
+  };
+  return updateModel(c.scene, c.params, targets, "the HAM-SAS slides' measured features (docs/sources.md section 3)", match,
+                     c.options);
 }
 
 UpdateStudy finish(ModelUpdateResult result) {
@@ -123,15 +166,17 @@ UpdateStudy finish(ModelUpdateResult result) {
 
 UpdateStudy runUpdateStudy(const LoadedScene& loaded, const UpdateRequest& r) {
   const Checked c = checkRequest(loaded, r);  // every option before the file is read
+  if (!c.pairing) return finish(updateHamsas(c, loaded));
   const MeasuredSet test = readMeasuredFile(r.pairing.measured);
-  checkNamedPairNodes(test, c.options.pairing, r.pairing.front);
-  return finish(updateModel(c.scene, c.params, test, c.options));
+  checkNamedPairNodes(test, *c.pairing, r.pairing.front);
+  return finish(updateArticle(c, test));
 }
 
 UpdateStudy runUpdateStudy(const LoadedScene& loaded, const UpdateRequest& r, const MeasuredSet& measured) {
   const Checked c = checkRequest(loaded, r);
-  checkNamedPairNodes(measured, c.options.pairing, r.pairing.front);
-  return finish(updateModel(c.scene, c.params, measured, c.options));
+  MMV_DEMAND(c.pairing.has_value());
+  checkNamedPairNodes(measured, *c.pairing, r.pairing.front);
+  return finish(updateArticle(c, measured));
 }
 
 }  // namespace mmv::app

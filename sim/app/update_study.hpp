@@ -35,9 +35,11 @@ struct UpdateStudy {
 
 /// Checks the request (every option and parameter, their bounds through the scene
 /// reader, before the measured file is read; the file before any model is built), then
-/// updates. A HAM-SAS scene is a UsageError.
+/// updates: an article against the measured file's modes, HAM-SAS against the slides'
+/// measured features (no file; (1 - MAC) is not a residual there: the features' shapes
+/// are model patterns, not measurements).
 UpdateStudy runUpdateStudy(const LoadedScene& scene, const UpdateRequest& request);
-/// The same on a measured set already read (tests add noise to one).
+/// The same for an article on a measured set already read (tests add noise to one).
 UpdateStudy runUpdateStudy(const LoadedScene& scene, const UpdateRequest& request, const MeasuredSet& measured);
 
 }  // namespace mmv::app

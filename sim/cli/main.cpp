@@ -332,7 +332,8 @@ CLI::App* addUpdateCommand(CLI::App& app, UpdateArgs& u) {
   CLI::App* c = app.add_subcommand("update", "Update scene values so the model reproduces a measured modal test: fit, "
                                              "identifiability, intervals, the updated scene");
   addSceneOptions(c, u);
-  c->add_option("--measured", u.measured, "The measured UFF file (datasets 15/2411 nodes, 55 modes)")->required();
+  c->add_option("--measured", u.measured, "An article's measured UFF file (datasets 15/2411 nodes, 55 modes); none for "
+                                          "HAM-SAS, updated against the slides' measured features");
   c->add_option("--params", u.params, "KEY[:LO:HI],...: scene keys to update (numbers written in the scene file, as --set names "
                                       "them); bounds in the key's units, default half to twice the nominal")
       ->delimiter(',')->required();

@@ -16,15 +16,17 @@ void writeFigures(const ModelUpdateResult& r, OutputDir& out) {
   render::Series before{"before (nominal)"}, after{"after (updated)"}, zero{"test"};
   for (auto* s : {&before, &after}) s->markers_only = true;
   before.hollow = true;
-  for (const auto& p : r.pairs) {
-    const double mode = p.test + 1;
-    before.x.push_back(mode), before.y.push_back(100 * (p.before_hz / p.test_hz - 1));
-    after.x.push_back(mode), after.y.push_back(100 * (p.after_hz / p.test_hz - 1));
-    zero.x.push_back(mode), zero.y.push_back(0);
+  for (std::size_t k = 0; k < r.pairs.size(); ++k) {
+    const UpdatePair& p = r.pairs[k];
+    const double at = static_cast<double>(k + 1);
+    before.x.push_back(at), before.y.push_back(100 * (p.before_hz / p.test_hz - 1));
+    after.x.push_back(at), after.y.push_back(100 * (p.after_hz / p.test_hz - 1));
+    after.point_labels.push_back(p.test);
+    zero.x.push_back(at), zero.y.push_back(0);
   }
   zero.dashed = true;
   figures::linePlot(out.stage("frequency_errors.png"), {zero, before, after},
-                    "Frequency error against the test, before and after: " + r.scene, "test mode", "f_model / f_test - 1 (%)");
+                    "Frequency error against the test, before and after: " + r.scene, "measured mode (tracked, in order)", "f_model / f_test - 1 (%)");
   render::Series cost{"cost 0.5 |r|^2"};
   for (const auto& it : r.fit.iterations) cost.x.push_back(it.iteration), cost.y.push_back(std::max(it.cost, 1e-300));
   figures::linePlot(out.stage("iterations.png"), {cost}, "Levenberg-Marquardt iterations: " + r.scene, "iteration",

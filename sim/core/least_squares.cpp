@@ -99,25 +99,38 @@ double studentT975(int dof) {
 }
 
 Identifiability identifiability(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, const Eigen::VectorXd& scale,
-                                double undetermined_below, double collinear_below) {
+                                double undetermined_below, double collinearity_above) {
   const Eigen::Index m = J.rows(), n = J.cols();
   Identifiability id;
-  id.undetermined_below = undetermined_below, id.collinear_below = collinear_below;
+  id.undetermined_below = undetermined_below, id.collinearity_above = collinearity_above;
   const Eigen::MatrixXd Ju = J * scale.asDiagonal();
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(Ju, Eigen::ComputeFullV);
   id.singular_values = Eigen::VectorXd::Zero(n);
   id.singular_values.head(svd.singularValues().size()) = svd.singularValues();
   id.directions = svd.matrixV();
-  const double top = id.singular_values.size() ? id.singular_values(0) : 0;
   for (Eigen::Index i = 0; i < n; ++i)
-    if (id.singular_values(i) < undetermined_below || id.singular_values(i) < collinear_below * top)
-      id.undetermined.push_back(static_cast<int>(i));
+    if (id.singular_values(i) < undetermined_below) id.undetermined.push_back(static_cast<int>(i));
   id.degrees_of_freedom = static_cast<int>(m - n);
   if (m > n) id.residual_variance = r.squaredNorm() / static_cast<double>(m - n);
   id.determined.assign(static_cast<std::size_t>(n), true);
-  for (const int i : id.undetermined)
-    for (Eigen::Index k = 0; k < n; ++k)
-      if (std::abs(id.directions(k, i)) >= 0.05) id.determined[static_cast<std::size_t>(k)] = false;
+  const auto undetermine = [&id](const Eigen::VectorXd& v) {
+    for (Eigen::Index k = 0; k < v.size(); ++k)
+      if (std::abs(v(k)) >= 0.1) id.determined[static_cast<std::size_t>(k)] = false;
+  };
+  for (const int i : id.undetermined) undetermine(id.directions.col(i));
+  // Collinearity over the column-normalised sensitivities (a zero column is undetermined above).
+  Eigen::MatrixXd Jn = Ju;
+  for (Eigen::Index k = 0; k < n; ++k)
+    if (const double c = Jn.col(k).norm(); c > 0) Jn.col(k) /= c;
+  Eigen::JacobiSVD<Eigen::MatrixXd> nsvd(Jn, Eigen::ComputeFullV);
+  Eigen::VectorXd sn = Eigen::VectorXd::Zero(n);
+  sn.head(nsvd.singularValues().size()) = nsvd.singularValues();
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (sn(i) * collinearity_above < 1) {
+      const double index = sn(i) > 0 ? 1 / sn(i) : std::numeric_limits<double>::infinity();
+      id.collinear.push_back({index, nsvd.matrixV().col(i)});
+      undetermine(nsvd.matrixV().col(i));
+    }
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n);  // scaled, over the determined directions
   for (Eigen::Index i = 0; i < n; ++i)
     if (std::find(id.undetermined.begin(), id.undetermined.end(), i) == id.undetermined.end())
@@ -204,7 +217,7 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& problem, 
   out.evaluations = s.evaluations;
   for (Eigen::Index k = 0; k < n; ++k)
     out.at_bound.push_back(u(k) <= s.lo(k) + 1e-12 * std::abs(s.lo(k)) || u(k) >= s.hi(k) - 1e-12 * std::abs(s.hi(k)));
-  out.identifiability = identifiability(out.jacobian, r, problem.scale, o.undetermined_below, o.collinear_below);
+  out.identifiability = identifiability(out.jacobian, r, problem.scale, o.undetermined_below, o.collinearity_above);
   return out;
 }
 

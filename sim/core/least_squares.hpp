@@ -10,12 +10,21 @@
 ///  - A step is projected onto the bounds; the damping follows Marquardt (the diagonal
 ///    of J^T J, floored) and Nielsen's update; the iteration stops when the step, the
 ///    cost's relative decrease or the projected gradient falls below its tolerance.
-///  - Identifiability at the solution from the SVD of the scaled Jacobian: a combination
-///    is not determined when a change of one scale along it moves the weighted residuals
-///    by less than `undetermined_below` (with weights 1 / sigma: less than the data's
-///    stated uncertainty), or when its singular value is below `collinear_below` of the
-///    largest (the data determine it that much worse than the best combination: the
-///    parameters in it correlate, e.g. above 0.99 for two at 0.05).
+///  - Identifiability at the solution, from the scaled Jacobian J (residuals per change of
+///    one scale):
+///     - a combination (a right singular vector of J) is not determined when a change of
+///       one scale along it moves the weighted residuals by less than
+///       `undetermined_below` (with weights 1 / sigma: less than the data's stated
+///       uncertainty);
+///     - parameters are collinear when their sensitivities nearly repeat one another:
+///       with J's columns normalised to length 1, a singular value s_n below
+///       1 / `collinearity_above` makes its combination's parameters not determined,
+///       only the combination's orthogonal complement is (Brun, Reichert and Kuensch's
+///       collinearity index 1 / s_n; they call 10-15 critical; two parameters at index
+///       20 correlate at 0.9975). Sensitivities of very different sizes (a parameter
+///       that moves the residuals 100x more than another) are not collinear.
+///    A parameter with a component of 0.1 or more in such a combination is "not
+///    determined": its standard error and interval are NaN.
 ///    Covariance s^2 (J^T J)^-1 over the determined directions, s^2 the residual
 ///    variance r^T r / (m - n) (none when m <= n), 95 % intervals with Student's t.
 #include <functional>
@@ -45,7 +54,7 @@ struct LeastSquaresOptions {
   /// differenced over 1e-4 keeps the round-off near 1e-8, and the truncation as small.
   double difference_step = 1e-4;
   double undetermined_below = 1.0;    ///< see above.
-  double collinear_below = 0.05;      ///< see above.
+  double collinearity_above = 20;     ///< see above.
 };
 
 struct LeastSquaresIteration {
@@ -60,7 +69,10 @@ struct Identifiability {
   Eigen::VectorXd singular_values;  ///< of the scaled Jacobian, largest first.
   Eigen::MatrixXd directions;       ///< columns: the scaled parameter combinations, in order.
   std::vector<int> undetermined;    ///< indices of directions the data do not determine.
-  double undetermined_below = 1, collinear_below = 0.05;  ///< the criteria used.
+  /// Collinear combinations: the collinearity index and the combination (over the
+  /// column-normalised sensitivities), one per index above the criterion.
+  std::vector<std::pair<double, Eigen::VectorXd>> collinear;
+  double undetermined_below = 1, collinearity_above = 20;  ///< the criteria used.
   std::optional<double> residual_variance;  ///< r^T r / (m - n); none when m <= n.
   int degrees_of_freedom = 0;       ///< m - n
   Eigen::VectorXd standard_error;   ///< physical units; NaN for a parameter in an undetermined combination.
@@ -88,7 +100,7 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& problem, 
 /// Identifiability of parameters with Jacobian `jacobian` (physical units), residuals `r`
 /// and scales `scale` (see above).
 Identifiability identifiability(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r, const Eigen::VectorXd& scale,
-                                double undetermined_below = 1.0, double collinear_below = 0.05);
+                                double undetermined_below = 1.0, double collinearity_above = 20);
 
 /// Student's t quantile for probability 0.975 with `dof` >= 1 degrees of freedom.
 double studentT975(int dof);

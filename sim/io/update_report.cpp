@@ -16,13 +16,18 @@ json finiteOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr);
 
 const auto kAll = [](const auto&) { return true; };
 
-/// "+0.707 materials.x.youngs_modulus -0.707 materials.x.density": a combination's largest parts.
-std::string combination(const ModelUpdateResult& r, Eigen::Index i) {
-  const Eigen::MatrixXd& V = r.fit.identifiability.directions;
+/// "+0.707 materials.x.youngs_modulus -0.707 materials.x.density": a combination's parts of 0.05 or more.
+std::string combination(const ModelUpdateResult& r, const Eigen::VectorXd& v) {
   std::string out;
-  for (Eigen::Index k = 0; k < V.rows(); ++k)
-    if (std::abs(V(k, i)) >= 0.05) out += strf("%s%+.3f %s", out.empty() ? "" : " ", V(k, i), r.parameters[static_cast<std::size_t>(k)].key.c_str());
+  for (Eigen::Index k = 0; k < v.size(); ++k)
+    if (std::abs(v(k)) >= 0.05) out += strf("%s%+.3f %s", out.empty() ? "" : " ", v(k), r.parameters[static_cast<std::size_t>(k)].key.c_str());
   return out;
+}
+
+nlohmann::ordered_json combinationJson(const ModelUpdateResult& r, const Eigen::VectorXd& v) {
+  nlohmann::ordered_json c = nlohmann::ordered_json::object();
+  for (Eigen::Index k = 0; k < v.size(); ++k) c[r.parameters[static_cast<std::size_t>(k)].key] = v(k);
+  return c;
 }
 
 bool undetermined(const ModelUpdateResult& r, Eigen::Index i) {
@@ -33,7 +38,7 @@ bool undetermined(const ModelUpdateResult& r, Eigen::Index i) {
 
 std::string residualsLine(const ModelUpdateResult& r) {
   const auto& o = r.options;
-  return strf("%zu test modes tracked: frequency errors weighted 1 / %.3g", r.pairs.size(), o.frequency_sigma) +
+  return strf("%zu measured modes tracked: frequency errors weighted 1 / %.3g", r.pairs.size(), o.frequency_sigma) +
          (o.mac_residuals ? strf(", (1 - MAC) weighted 1 / %.3g", o.mac_sigma) : std::string(", MAC not in the residuals")) +
          (o.regularization > 0 ? strf(", pull toward the nominal %.3g per 100 %% change", o.regularization) : std::string());
 }
@@ -69,7 +74,7 @@ const std::vector<Field<UpdatePair>>& updatePairFields() {
   using Row = UpdatePair;
   // clang-format off
   static const std::vector<Field<Row>> fields{
-      {"test", "", "%s", "the test mode (T1 is the measured set's first)", [](const Row& p) -> Opt { return json(strf("T%d", p.test + 1)); }},
+      {"test", "", "%s", "the measured mode (T1: a measured set's first; a HAM-SAS feature by name)", [](const Row& p) -> Opt { return json(p.test); }},
       {"test_hz", "Hz", "%.8g", "its frequency", [](const Row& p) -> Opt { return json(p.test_hz); }},
       {"before_model", "", "%s", "the nominal model's mode it pairs with", [](const Row& p) -> Opt { return json(strf("M%d", p.before_model)); }},
       {"before_hz", "Hz", "%.8g", "that mode's frequency", [](const Row& p) -> Opt { return json(p.before_hz); }},
@@ -106,12 +111,12 @@ nlohmann::ordered_json updateJson(const ModelUpdateResult& r) {
   j["parameters"] = params;
   j["pairs"] = pairs;
   const Identifiability& id = r.fit.identifiability;
-  json dirs = json::array();
-  for (Eigen::Index i = 0; i < id.singular_values.size(); ++i) {
-    json c = json::object();
-    for (Eigen::Index k = 0; k < id.directions.rows(); ++k) c[r.parameters[static_cast<std::size_t>(k)].key] = id.directions(k, i);
-    dirs.push_back({{"singular_value", id.singular_values(i)}, {"determined", !undetermined(r, i)}, {"combination", c}});
-  }
+  json dirs = json::array(), collinear = json::array();
+  for (Eigen::Index i = 0; i < id.singular_values.size(); ++i)
+    dirs.push_back({{"singular_value", id.singular_values(i)}, {"determined", !undetermined(r, i)},
+                    {"combination", combinationJson(r, id.directions.col(i))}});
+  for (const auto& [index, v] : id.collinear)
+    collinear.push_back({{"collinearity_index", std::isfinite(index) ? json(index) : json(nullptr)}, {"combination", combinationJson(r, v)}});
   json corr = json::array();
   for (Eigen::Index k = 0; k < id.correlation.rows(); ++k) {
     json row = json::array();
@@ -119,8 +124,9 @@ nlohmann::ordered_json updateJson(const ModelUpdateResult& r) {
     corr.push_back(row);
   }
   j["identifiability"] = {{"criterion_undetermined_below", id.undetermined_below},
-                          {"criterion_collinear_below", id.collinear_below},
+                          {"criterion_collinearity_above", id.collinearity_above},
                           {"directions", dirs},
+                          {"collinear", collinear},
                           {"residual_variance", id.residual_variance ? json(*id.residual_variance) : json(nullptr)},
                           {"degrees_of_freedom", id.degrees_of_freedom},
                           {"correlation", corr}};
@@ -163,17 +169,21 @@ std::string updateText(const ModelUpdateResult& r) {
   os << pt.text();
   const Identifiability& id = r.fit.identifiability;
   os << strf("\nIdentifiability: combinations of relative parameter changes and s, how far a 100 %% change along each "
-             "moves the weighted residuals (1 sigma of the data per unit); not determined when s < %.3g (less than the "
-             "data's stated uncertainty) or s < %.3g of the largest (the parameters in it correlate)\n",
-             id.undetermined_below, id.collinear_below);
+             "moves the weighted residuals (1 sigma of the data per unit); below %.3g: not determined (less than the "
+             "data's stated uncertainty)\n",
+             id.undetermined_below);
   Table it({"verdict", "s", "1_sigma_%", "combination"});
   for (Eigen::Index i = 0; i < id.singular_values.size(); ++i)
     it.add({undetermined(r, i) ? "NOT determined" : "determined", strf("%.4g", id.singular_values(i)),
-            id.singular_values(i) > 0 ? strf("%.3g", 100 / id.singular_values(i)) : "inf", combination(r, i)});
+            id.singular_values(i) > 0 ? strf("%.3g", 100 / id.singular_values(i)) : "inf", combination(r, id.directions.col(i))});
   os << it.text();
-  if (!id.undetermined.empty())
-    os << "  the data fix only the other combinations: the values above moved along a valley; fix a parameter of each "
-          "undetermined combination (or pull toward the nominal with --regularization) and update again\n";
+  for (const auto& [index, v] : id.collinear)
+    os << strf("  collinear (index %.3g, above %.3g): %s: their sensitivities nearly repeat one another; only the "
+               "other combinations are determined\n",
+               index, id.collinearity_above, combination(r, v).c_str());
+  if (!id.undetermined.empty() || !id.collinear.empty())
+    os << "  the values of parameters not determined moved along a valley of the fit: fix one parameter of each such "
+          "combination (or pull toward the nominal with --regularization) and update again\n";
   if (!id.residual_variance) os << "  no intervals: as many parameters as residuals (no residual variance)\n";
   for (const auto& n : r.notes) os << "note: " << n << '\n';
   return os.str();

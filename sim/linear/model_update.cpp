@@ -9,19 +9,10 @@
 namespace mmv {
 namespace {
 
-const ModePair* pairOf(const CorrelationResult& c, int test) {
-  for (const auto& p : c.pairs)
-    if (p.test == test) return &p;
-  return nullptr;
-}
-
-ArticleScene articleFromText(const SceneSource& scene, const std::string& text, const std::vector<std::string>& extra) {
+Scene sceneFromText(const SceneSource& scene, const std::string& text, const std::vector<std::string>& extra) {
   std::vector<std::string> sets = scene.sets;
   sets.insert(sets.end(), extra.begin(), extra.end());
-  Scene s = parseScene(text, scene.source, sets, scene.flags);
-  auto* a = std::get_if<ArticleScene>(&s);
-  MMV_DEMAND(a != nullptr);  // the study refuses a HAM-SAS scene first
-  return std::move(*a);
+  return parseScene(text, scene.source, sets, scene.flags);
 }
 
 /// The comment an updated value carries in the updated scene.
@@ -43,32 +34,31 @@ double rmsFrequencyError(const std::vector<UpdatePair>& pairs, bool after) {
 
 }  // namespace
 
-ArticleScene articleAt(const SceneSource& scene, const std::vector<UpdateParameterSpec>& params, const Eigen::VectorXd& p) {
+Scene sceneAt(const SceneSource& scene, const std::vector<UpdateParameterSpec>& params, const Eigen::VectorXd& p) {
   std::vector<std::string> sets;
   for (std::size_t k = 0; k < params.size(); ++k) sets.push_back(params[k].key + "=" + shortest(p(static_cast<Eigen::Index>(k))));
-  return articleFromText(scene, scene.text, sets);
+  return sceneFromText(scene, scene.text, sets);
 }
 
-std::optional<Eigen::VectorXd> updateResiduals(const CorrelationResult& c, const std::vector<int>& tracked,
-                                               const ModelUpdateOptions& o) {
+std::optional<Eigen::VectorXd> updateResiduals(const std::vector<TestTarget>& targets,
+                                               const std::vector<std::optional<ModelMatch>>& matches,
+                                               const std::vector<int>& tracked, const ModelUpdateOptions& o) {
   const Eigen::Index n = static_cast<Eigen::Index>(tracked.size());
   Eigen::VectorXd r(o.mac_residuals ? 2 * n : n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const ModePair* p = pairOf(c, tracked[static_cast<std::size_t>(i)]);
-    if (!p) return std::nullopt;
-    const double f_test = c.test_modes[static_cast<std::size_t>(p->test)].frequency_hz;
-    const double f_model = c.model_modes[static_cast<std::size_t>(p->model)].frequency_hz;
-    r(i) = (f_model / f_test - 1) / o.frequency_sigma;
-    if (o.mac_residuals) r(n + i) = (1 - p->mac) / o.mac_sigma;
+    const std::size_t t = static_cast<std::size_t>(tracked[static_cast<std::size_t>(i)]);
+    const std::optional<ModelMatch>& m = matches[t];
+    if (!m) return std::nullopt;
+    r(i) = (m->hz / targets[t].hz - 1) / o.frequency_sigma;
+    if (o.mac_residuals) r(n + i) = (1 - m->mac) / o.mac_sigma;
   }
   return r;
 }
 
 ModelUpdateResult updateModel(const SceneSource& scene, const std::vector<UpdateParameterSpec>& params,
-                              const MeasuredSet& measured, const ModelUpdateOptions& o) {
+                              const std::vector<TestTarget>& targets, const std::string& measured_source,
+                              const UpdateMatcher& match, const ModelUpdateOptions& o) {
   MMV_DEMAND(!params.empty());
-  MeasuredSet modes_only = measured;  // the residuals use the modes; the functions are correlate's
-  modes_only.frfs.clear();
   const Eigen::Index n = static_cast<Eigen::Index>(params.size());
   LeastSquaresProblem problem;
   problem.start.resize(n), problem.lower.resize(n), problem.upper.resize(n), problem.scale.resize(n);
@@ -81,23 +71,23 @@ ModelUpdateResult updateModel(const SceneSource& scene, const std::vector<Update
 
   ModelUpdateResult out;
   out.options = o;
-  out.measured = measured.source;
-  const ArticleScene nominal = articleAt(scene, params, problem.start);
-  out.scene = nominal.name;
-  const CorrelationResult before = correlate(nominal, modes_only, o.pairing);
+  out.measured = measured_source;
+  const Scene nominal = sceneAt(scene, params, problem.start);
+  out.scene = sceneName(nominal);
+  const std::vector<std::optional<ModelMatch>> before = match(nominal);
+  MMV_DEMAND(before.size() == targets.size());
   std::vector<int> tracked;
-  for (std::size_t t = 0; t < before.test_modes.size(); ++t) {
-    if (pairOf(before, static_cast<int>(t))) tracked.push_back(static_cast<int>(t));
-    else out.notes.push_back(strf("test mode T%zu (%.4f Hz) pairs with no model mode at the nominal: not in the residuals", t + 1,
-                                  before.test_modes[t].frequency_hz));
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    if (before[t]) tracked.push_back(static_cast<int>(t));
+    else out.notes.push_back(strf("%s (%.4g Hz) is shown by no model mode at the nominal: not in the residuals",
+                                  targets[t].label.c_str(), targets[t].hz));
   }
   if (tracked.empty())
-    throw SceneError(measured.source + ": no measured mode pairs with a model mode of " + nominal.name +
-                     " (MAC and frequency window as in correlate): nothing to update against");
+    throw SceneError(measured_source + ": no measured mode pairs with a model mode of " + out.scene + ": nothing to update against");
 
   problem.residuals = [&](const Eigen::VectorXd& p) -> std::optional<Eigen::VectorXd> {
     try {
-      return updateResiduals(correlate(articleAt(scene, params, p), modes_only, o.pairing), tracked, o);
+      return updateResiduals(targets, match(sceneAt(scene, params, p)), tracked, o);
     } catch (const NumericalError&) {  // no equilibrium there: a step not taken
       return std::nullopt;
     } catch (const SceneError&) {  // a combination the reader refuses
@@ -122,20 +112,17 @@ ModelUpdateResult updateModel(const SceneSource& scene, const std::vector<Update
   out.updated_scene = editedSceneText(scene.text, edits);
 
   // The "after": the updated file read back, as a user will read it.
-  const CorrelationResult after = correlate(articleFromText(scene, out.updated_scene, {}), modes_only, o.pairing);
-  const std::optional<Eigen::VectorXd> r_after = updateResiduals(after, tracked, o);
+  const std::vector<std::optional<ModelMatch>> after = match(sceneFromText(scene, out.updated_scene, {}));
+  const std::optional<Eigen::VectorXd> r_after = updateResiduals(targets, after, tracked, o);
   // Equal up to the 10 digits written (a residual moves by at most |J| 1e-10 for them): a
   // value written to the wrong key or misread would move it by orders more.
   if (!r_after || (*r_after - out.fit.residuals).cwiseAbs().maxCoeff() > 1e-6 * (1 + out.fit.residuals.cwiseAbs().maxCoeff()))
     throw InternalError("model updating: the updated scene read back does not reproduce the fit's residuals");
   for (const int t : tracked) {
-    const ModePair& b = *pairOf(before, t);
-    const ModePair& a = *pairOf(after, t);
-    out.pairs.push_back({t, before.test_modes[static_cast<std::size_t>(t)].frequency_hz,
-                         before.model_modes[static_cast<std::size_t>(b.model)].number,
-                         after.model_modes[static_cast<std::size_t>(a.model)].number,
-                         before.model_modes[static_cast<std::size_t>(b.model)].frequency_hz,
-                         after.model_modes[static_cast<std::size_t>(a.model)].frequency_hz, b.mac, a.mac});
+    const ModelMatch& b = *before[static_cast<std::size_t>(t)];
+    const ModelMatch& a = *after[static_cast<std::size_t>(t)];
+    out.pairs.push_back({targets[static_cast<std::size_t>(t)].label, targets[static_cast<std::size_t>(t)].hz, b.model, a.model,
+                         b.hz, a.hz, b.mac, a.mac});
   }
   out.rms_frequency_error_before = rmsFrequencyError(out.pairs, false);
   out.rms_frequency_error_after = rmsFrequencyError(out.pairs, true);

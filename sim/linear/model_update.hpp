@@ -5,12 +5,13 @@
 ///  - Parameters are scene keys as `--set` names them, each a plain number written in
 ///    the scene file, within bounds [lower, upper] that hold the nominal (the study
 ///    checks them: sim/app/update_study.hpp).
-///  - Residuals: for each test mode paired with a model mode at the nominal (correlate's
-///    pairing, sim/linear/correlation.hpp: MAC and the frequency window),
-///    (f_model / f_test - 1) / frequency_sigma and, unless left out,
-///    (1 - MAC) / mac_sigma. The pairing is done again at every evaluation, so a model
+///  - Residuals: for each measured mode (a target) that a model mode shows at the
+///    nominal, (f_model / f_test - 1) / frequency_sigma and, unless left out,
+///    (1 - MAC) / mac_sigma. Which mode shows a target is found again in every model
+///    (an article: correlate's pairing by MAC and frequency window against a measured
+///    set; HAM-SAS: the features identified by shape, sim/hamsas/hamsas_modes.hpp), so a
 ///    mode that crosses another is followed by its shape; an evaluation where a tracked
-///    test mode pairs with none is refused (the step is shrunk, never taken).
+///    target is shown by none is refused (the step is shrunk, never taken).
 ///  - The model at parameters p is the scene re-read from its text with the user's
 ///    patches and then KEY=p_k patches: every value checked by the reader as a --set is.
 ///  - Bounded Levenberg-Marquardt, identifiability and 95 % intervals:
@@ -22,12 +23,12 @@
 ///    each with a comment (nominal, updated, interval); it is read back and correlated
 ///    again: that correlation is the "after" reported, and it must reproduce the fit's
 ///    residuals (an internal error otherwise).
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/core/least_squares.hpp"
-#include "sim/linear/correlation.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv {
@@ -46,13 +47,26 @@ struct UpdateParameterSpec {
 };
 
 struct ModelUpdateOptions {
-  CorrelateOptions pairing;
   double frequency_sigma = 0.01;  ///< relative
   double mac_sigma = 0.05;
   bool mac_residuals = true;
   double regularization = 0;      ///< residuals per unit relative change from the nominal
   int max_iterations = 30;
 };
+
+/// A measured mode the update fits: its name and frequency.
+struct TestTarget {
+  std::string label;  ///< "T3" (a measured set's third mode), "MGAS vertical" (a HAM-SAS feature)
+  double hz = 0;
+};
+/// The model mode that shows a target: its number (1-based), frequency and shape match.
+struct ModelMatch {
+  int model = 0;
+  double hz = 0, mac = 0;
+};
+/// Per target (in order), the mode of the model `scene` that shows it; nullopt: none.
+/// Called at every evaluation: the matching is done again for each model.
+using UpdateMatcher = std::function<std::vector<std::optional<ModelMatch>>(const Scene& scene)>;
 
 struct UpdatedParameter {
   std::string key;
@@ -63,34 +77,37 @@ struct UpdatedParameter {
 };
 
 struct UpdatePair {
-  int test = 0;  ///< 0-based test mode
+  std::string test;  ///< the target's label
   double test_hz = 0;
   int before_model = 0, after_model = 0;  ///< 1-based model mode numbers paired
   double before_hz = 0, after_hz = 0, before_mac = 0, after_mac = 0;
 };
 
 struct ModelUpdateResult {
-  std::string scene, measured;
+  std::string scene, measured;  ///< measured: where the targets came from
   std::vector<UpdatedParameter> parameters;
   std::vector<UpdatePair> pairs;      ///< the tracked test modes, before and after
   LeastSquaresResult fit;
   std::string updated_scene;          ///< the file's text with the updated values
   double rms_frequency_error_before = 0, rms_frequency_error_after = 0;  ///< relative, over the pairs
   ModelUpdateOptions options;
-  std::vector<std::string> notes;     ///< test modes left out (paired with none at the nominal)
+  std::vector<std::string> notes;     ///< targets left out (matched by no mode at the nominal)
 };
 
-/// The article the scene's text gives with parameter k at p(k) (SceneError as the reader's).
-ArticleScene articleAt(const SceneSource& scene, const std::vector<UpdateParameterSpec>& params, const Eigen::VectorXd& p);
+/// The scene its text gives with parameter k at p(k) (SceneError as the reader's).
+Scene sceneAt(const SceneSource& scene, const std::vector<UpdateParameterSpec>& params, const Eigen::VectorXd& p);
 
-/// Updates (see above). SceneError when no measured mode pairs with a model mode at the
-/// nominal; NumericalError when the nominal model cannot be solved.
+/// Updates (see above) against `targets` as `match` finds them in each model. SceneError
+/// when no target is matched at the nominal; NumericalError when the nominal model
+/// cannot be solved.
 ModelUpdateResult updateModel(const SceneSource& scene, const std::vector<UpdateParameterSpec>& params,
-                              const MeasuredSet& measured, const ModelUpdateOptions& options);
+                              const std::vector<TestTarget>& targets, const std::string& measured_source,
+                              const UpdateMatcher& match, const ModelUpdateOptions& options);
 
-/// The relative frequency errors' weighted residuals of a correlation over the tracked
-/// test modes (then the (1 - MAC) ones when asked); nullopt when one pairs with none.
-std::optional<Eigen::VectorXd> updateResiduals(const CorrelationResult& c, const std::vector<int>& tracked,
-                                               const ModelUpdateOptions& options);
+/// The weighted residuals of a model's matches over the tracked targets: the relative
+/// frequency errors, then (1 - MAC) when asked; nullopt when one is matched by none.
+std::optional<Eigen::VectorXd> updateResiduals(const std::vector<TestTarget>& targets,
+                                               const std::vector<std::optional<ModelMatch>>& matches,
+                                               const std::vector<int>& tracked, const ModelUpdateOptions& options);
 
 }  // namespace mmv

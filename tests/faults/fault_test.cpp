@@ -171,11 +171,14 @@ TEST_F(Faults, SimulateSweepConfigAndPlaceSensorsLeaveOutAsItWas) {
   exercise({"place-sensors", "place-sensors --segments 4 --out {out}"}, 6);
 }
 
-TEST_F(Faults, CorrelateAndRenderLeaveOutAsItWas) {
+TEST_F(Faults, CorrelateUpdateAndRenderLeaveOutAsItWas) {
   const Result f = run("frf " + scene("mmv-table.yaml") + " --segments 4 --out " + (dir_ / "measured").string());
   ASSERT_EQ(f.code, 0) << f.err;
   exercise({"correlate", "correlate " + scene("mmv-table.yaml") + " --segments 4 --measured " + (dir_ / "measured" / "frf.uff").string() +
                              " --modes 6 --out {out}"},
+           6);
+  exercise({"update", "update " + scene("mmv-table.yaml") + " --segments 4 --measured " + (dir_ / "measured" / "frf.uff").string() +
+                          " --modes 6 --params joints.joint2.torquer.mass:4:5 --out {out}"},
            6);
   exercise({"render", "render --segments 4 --size 160x120 --out {out}", "out.png"}, 4);
   exercise({"render-video", "render --segments 4 --mode 1 --size 160x120 --out {out}", "out.mp4"}, 6);
