@@ -283,16 +283,6 @@ def test_trade_equals_the_cli_json():
         assert e == pytest.approx(r["tip_error_m"], rel=1e-5)
 
 
-@pytest.fixture(scope="module")
-def measured_uff(tmp_path_factory):
-    """A "measured" set: the FRFs and modes `frf --out` writes with links 1 and 2 8 % stiffer."""
-    out = tmp_path_factory.mktemp("measured") / "frf"
-    r = subprocess.run([MMVLAB, "frf", "--segments", "4", "--set", "materials.carbon_carbon.youngs_modulus=44.6e9",
-                        "--out", str(out)], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    return str(out / "frf.uff")
-
-
 def test_correlate_equals_the_cli_json(measured_uff):
     s = mmvlab.load_scene()
     with warnings.catch_warnings():

@@ -158,7 +158,7 @@ std::string updateText(const ModelUpdateResult& r) {
            strf("%.4g .. %.4g", p.lower, p.upper),
            !p.determined ? "not determined" : p.at_bound ? "at its bound" : std::string()});
   }
-  os << t.text() << "\nTest modes: before and after\n";
+  os << t.text() << "\nMeasured modes: before and after\n";
   Table pt({"test", "test_Hz", "before", "before_Hz", "error_%", "MAC", "after", "after_Hz", "error_%", "MAC"});
   for (const auto& p : r.pairs) {
     const auto v = [&p](const char* key) { return fieldValue(updatePairFields(), p, key); };

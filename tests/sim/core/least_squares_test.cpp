@@ -132,6 +132,26 @@ TEST(LeastSquares, ARefusedRegionIsNeverSteppedInto) {
   EXPECT_GT(refused, 0);  // the region was met, and stepped around
 }
 
+// The pull toward the start: a weight w adds w (u - u0) rows; on a linear problem the
+// answer is the ridge estimate (X^T X + w^2 I)^-1 (X^T y + w^2 u0), in closed form.
+TEST(LeastSquares, RegularizationGivesTheRidgeEstimate) {
+  Eigen::MatrixXd X(4, 2);
+  X << 1, 0, 1, 1, 1, 2, 1, 3;
+  const Eigen::Vector4d y(1.0, 2.9, 5.1, 7.0);
+  LeastSquaresProblem p;
+  p.residuals = [&](const Eigen::VectorXd& q) -> std::optional<Eigen::VectorXd> { return Eigen::VectorXd(X * q - y); };
+  p.start = Eigen::Vector2d(0.5, 0.5);
+  p.lower = Eigen::Vector2d(-10, -10);
+  p.upper = Eigen::Vector2d(10, 10);
+  p.scale = Eigen::Vector2d(1, 1);
+  p.regularization = 2;
+  const LeastSquaresResult r = solveBoundedLeastSquares(p);
+  const Eigen::Vector2d ridge = (X.transpose() * X + 4 * Eigen::Matrix2d::Identity()).ldlt().solve(X.transpose() * y + 4 * p.start);
+  EXPECT_NEAR(r.p(0), ridge(0), 1e-8);
+  EXPECT_NEAR(r.p(1), ridge(1), 1e-8);
+  EXPECT_EQ(r.residuals.size(), 4);  // the data's residuals, without the pull's rows
+}
+
 TEST(LeastSquares, StudentTQuantiles) {
   EXPECT_NEAR(studentT975(1), 12.706, 1e-3);
   EXPECT_NEAR(studentT975(30), 2.042, 1e-3);
