@@ -27,6 +27,16 @@ void writeFigures(const ModelUpdateResult& r, OutputDir& out) {
   zero.dashed = true;
   figures::linePlot(out.stage("frequency_errors.png"), {zero, before, after},
                     "Frequency error against the test, before and after: " + r.scene, "measured mode (tracked, in order)", "f_model / f_test - 1 (%)");
+  render::Series mac_before{"before (nominal)"}, mac_after{"after (updated)"};
+  for (auto* s : {&mac_before, &mac_after}) s->markers_only = true;
+  mac_before.hollow = true;
+  for (std::size_t k = 0; k < r.pairs.size(); ++k) {
+    mac_before.x.push_back(static_cast<double>(k + 1)), mac_before.y.push_back(r.pairs[k].before_mac);
+    mac_after.x.push_back(static_cast<double>(k + 1)), mac_after.y.push_back(r.pairs[k].after_mac);
+    mac_after.point_labels.push_back(r.pairs[k].test);
+  }
+  figures::linePlot(out.stage("mac.png"), {mac_before, mac_after}, "MAC of each measured mode with its model mode: " + r.scene,
+                    "measured mode (tracked, in order)", "MAC");
   render::Series cost{"cost 0.5 |r|^2"};
   for (const auto& it : r.fit.iterations) cost.x.push_back(it.iteration), cost.y.push_back(std::max(it.cost, 1e-300));
   figures::linePlot(out.stage("iterations.png"), {cost}, "Levenberg-Marquardt iterations: " + r.scene, "iteration",

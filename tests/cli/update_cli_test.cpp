@@ -81,7 +81,7 @@ TEST_F(Update, RecoversTheKnownChangeAndWritesTheUpdatedScene) {
   ASSERT_EQ(cj["pairs"].size(), j["pairs"].size());
   for (std::size_t k = 0; k < cj["pairs"].size(); ++k)
     EXPECT_NEAR(cj["pairs"][k]["model_hz"].get<double>(), j["pairs"][k]["after_hz"].get<double>(), 1e-9) << k;
-  for (const char* f : {"pairs.csv", "iterations.csv", "frequency_errors.png", "iterations.png"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const char* f : {"pairs.csv", "iterations.csv", "frequency_errors.png", "mac.png", "iterations.png"}) EXPECT_TRUE(fs::exists(out / f)) << f;
 }
 
 TEST_F(Update, RefusedRequestsExitWithTheirCodeAndWriteNothing) {

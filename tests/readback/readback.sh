@@ -22,6 +22,7 @@ run simulate simulate scenes/mmv-slew.yaml --segments 2 --duration 0.2 --sample-
 run trade trade scenes/mmv-slew.yaml --segments 2 --duration 0.1 --integrators cpodes --accuracies 1e-3 --segment-ladder 1
 run place-sensors place-sensors --count 8
 run correlate correlate scenes/mmv-table.yaml --measured "$tmp/frf/frf.uff" --modes 6
+run update update scenes/mmv-table.yaml --segments 4 --measured "$tmp/frf/frf.uff" --modes 6 --params joints.joint2.torquer.mass:4:5
 printf 'scene: %s/scenes/mmv.yaml\nparameters:\n  - {key: links.link2.length, values: [1.4, 1.6]}\noutputs: [frequencies, mass, check, "json:modes/modes/0/effective_mass_x_kg"]\nmodes: 2\n' "$PWD" > "$tmp/spec.yaml"
 "$bin" sweep "$tmp/spec.yaml" --out "$tmp/sweep" >/dev/null 2>&1
 run modes-damped modes scenes/mmv-table.yaml --modes 6

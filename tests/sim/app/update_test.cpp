@@ -30,7 +30,8 @@ constexpr const char* kTip = "links.link1.tip_mass.mass";
 std::string tableText(const std::string& e = "41.4e9", const std::string& tip = "2.0") {
   std::ifstream in(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml");
   std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  s = std::regex_replace(s, std::regex("\nmaterials:\n"), "\nmaterials:\n  cc_link2: {density: 1650, youngs_modulus: " + e + "}\n");
+  s = std::regex_replace(s, std::regex("\nmaterials:\n"),
+                         "\nmaterials:\n  cc_link2: {density: 1650, youngs_modulus: " + e + ", shear_modulus: 5.0e9}\n");
   const auto l2 = s.find("name: link2"), m = s.find("material:", l2);
   s.replace(m, s.find('\n', m) - m, "material: cc_link2");
   const auto l1 = s.find("name: link1"), seg = s.find('\n', s.find("segments:", l1));
@@ -38,15 +39,16 @@ std::string tableText(const std::string& e = "41.4e9", const std::string& tip = 
   return s;
 }
 
-LoadedScene loaded(const std::string& text, int segments) {
-  LoadedScene l{parseScene(text, "table.yaml", {}, sceneFlags(segments, false, Front::Cli)), {}, {}};
+LoadedScene loaded(const std::string& text, int segments, const std::vector<std::string>& sets = {}) {
+  LoadedScene l{parseScene(text, "table.yaml", sets, sceneFlags(segments, false, Front::Cli)), {}, {}};
   l.request.segments = segments;
+  l.request.sets = sets;
   return l;
 }
 
 /// What `frf --out` writes for the scene, read back as correlate reads it.
-MeasuredSet measured(const std::string& text, int segments) {
-  const LoadedScene l = loaded(text, segments);
+MeasuredSet measured(const std::string& text, int segments, const std::vector<std::string>& sets = {}) {
+  const LoadedScene l = loaded(text, segments, sets);
   LinearRequest q;
   q.points = 40;
   const LinearStudy s = runLinearStudy(std::get<ArticleScene>(l.scene), q);
@@ -93,6 +95,19 @@ TEST(Update, RecoversLinkTwosModulusAndLinkOnesTipMass) {
   // The JSON's records hold what the result holds.
   EXPECT_DOUBLE_EQ(s.json["parameters"][1]["updated"].get<double>(), r.parameters[1].updated);
   EXPECT_EQ(s.json["pairs"].size(), 12u);
+}
+
+// The spatial article: the same known answer through its out-of-plane and torsion modes.
+TEST(Update, RecoversTheKnownAnswerOnTheSpatialArticle) {
+  const std::vector<std::string> spatial{"model=spatial"};
+  const MeasuredSet test = measured(tableText("44.712e9", "1.9"), 4, spatial);
+  const ModelUpdateResult r = runUpdateStudy(loaded(tableText(), 4, spatial), request({kE, kTip}), test).result;
+  ASSERT_TRUE(r.fit.converged) << r.fit.stop;
+  EXPECT_NEAR(r.parameters[0].updated / 44.712e9 - 1, 0, 1e-4);
+  EXPECT_NEAR(r.parameters[1].updated / 1.9 - 1, 0, 1e-4);
+  EXPECT_EQ(r.pairs.size(), 12u);
+  const std::string updated = r.updated_scene;
+  EXPECT_EQ(updated.find("model: spatial"), std::string::npos);  // the --set stays the user's, not the file's
 }
 
 // The sensitivities the fit used (central differences of the re-solved, re-paired
