@@ -9,7 +9,9 @@
 
 #include "sim/core/errors.hpp"
 #include "sim/core/text.hpp"
+#include "sim/model/article_builder.hpp"
 #include "sim/model/stations.hpp"
+#include "sim/statics/statics.hpp"
 #include "sim/scene/stations.hpp"
 
 namespace mmv {
@@ -72,11 +74,8 @@ double distance(const SimTK::Vec3& p, const std::array<double, 3>& x) {
 /// link, then refined by golden-section search around the nearest sample.
 std::pair<std::string, double> nearestStation(const Model& model, const SimTK::State& st, const ArticleSpec& article,
                                               const std::array<double, 3>& x) {
-  auto at = [&](const LinkSpec& l, double s) {
-    std::string error;
-    const std::optional<PointRef> p = PointRef::resolve(model, article, strf("%s@%.9fm", l.name.c_str(), s), error);
-    MMV_DEMAND(p.has_value());
-    return distance(p->position(st), x);
+  auto at = [&](const LinkSpec& l, double s) {  // a station built directly: no name to write and parse
+    return distance(StationPoint(model, StationSpec{"", l.name, s, 0, 0}).position(st), x);
   };
   std::string best_link;
   double best_s = 0, best_d = INFINITY;
@@ -107,9 +106,12 @@ std::pair<std::string, double> nearestStation(const Model& model, const SimTK::S
 }
 
 std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet& test, const CorrelateOptions& o) {
-  const SolvedScene s = solveScene(scene, {}, 1);
-  SimTK::State st = s.equilibrium.state;
-  s.model->getSystem().realize(st, SimTK::Stage::Position);
+  // The deflected equilibrium's geometry only: no linearization or modes (runModes makes those).
+  const std::unique_ptr<Model> model = buildArticleModel(scene);
+  const EquilibriumResult eq = solveEquilibrium(*model);
+  if (!eq.converged) throw NumericalError("static equilibrium failed: " + eq.failure);
+  SimTK::State st = eq.state;
+  model->getSystem().realize(st, SimTK::Stage::Position);
   std::map<int, std::string> named;
   for (const auto& named_pair : o.named_pairs) {
     const int node = named_pair.first;  // a plain variable: C++17 lambdas cannot capture a structured binding (clang)
@@ -117,7 +119,7 @@ std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet&
     // Both checked by the study (sim/app/correlate_study.cpp) before any model was built.
     MMV_DEMAND(std::any_of(test.nodes.begin(), test.nodes.end(), [&](const MeasuredNode& n) { return n.label == node; }));
     std::string error;
-    MMV_DEMAND(PointRef::resolve(*s.model, scene.article, point, error));
+    MMV_DEMAND(PointRef::resolve(*model, scene.article, point, error));
     named[node] = point;
   }
   std::vector<NodePairing> out;
@@ -126,18 +128,18 @@ std::vector<NodePairing> pairNodes(const ArticleScene& scene, const MeasuredSet&
     std::string error;
     const std::string numbered = stationOfNode(scene.article, n.label);
     const std::optional<PointRef> at_number =
-        numbered.empty() ? std::nullopt : PointRef::resolve(*s.model, scene.article, numbered, error);
+        numbered.empty() ? std::nullopt : PointRef::resolve(*model, scene.article, numbered, error);
     if (const auto it = named.find(n.label); it != named.end()) {
       p.station = it->second;
       p.by_name = true;
-      p.distance_m = distance(PointRef::resolve(*s.model, scene.article, it->second, error)->position(st), n.xyz);
+      p.distance_m = distance(PointRef::resolve(*model, scene.article, it->second, error)->position(st), n.xyz);
     } else if (at_number && distance(at_number->position(st), n.xyz) <= o.pair_distance_m) {
       // mmvlab's own test geometry: the number says which station, the position confirms it
       p.station = numbered;
       p.by_number = true;
       p.distance_m = distance(at_number->position(st), n.xyz);
     } else {
-      const auto [station, d] = nearestStation(*s.model, st, scene.article, n.xyz);
+      const auto [station, d] = nearestStation(*model, st, scene.article, n.xyz);
       p.distance_m = d;
       if (d <= o.pair_distance_m) p.station = station;
     }
