@@ -90,7 +90,8 @@ class Result:
         return self.json[key]
 
     def __repr__(self):
-        return f"<mmvlab {type(self).__name__} of {self.json.get('scene', {}).get('name', '?')}>"
+        scene = self.json.get("scene", "?")  # {name, source} or, in some documents, the name alone
+        return f"<mmvlab {type(self).__name__} of {scene.get('name', '?') if isinstance(scene, dict) else scene}>"
 
 
 class ModesResult(Result):

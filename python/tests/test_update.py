@@ -30,6 +30,7 @@ def test_update_equals_the_cli_json_and_csv(measured_uff, tmp_path):
     assert float(rows[0]["updated"]) == table["updated"][0]  # %.17g: the same double
     assert py.updated_scene == (out / "updated_scene.yaml").read_text()
     assert len(py.pairs_table()["test"]) == len(cli["pairs"])
+    assert "MMV" in repr(py) and "MMV" in repr(mmvlab.check(mmvlab.load_scene(), segments=2))  # scene as {name} or a name
 
 
 def test_update_of_hamsas_from_python_needs_no_file():

@@ -57,13 +57,15 @@ UpdateParameterSpec parameter(const std::string& spec, const SceneSource& scene,
   return p;
 }
 
-/// Each parameter at each of its bounds, the others nominal, through the scene reader.
+/// Each parameter at each of its bounds and just off its nominal (a count such as
+/// `segments` takes whole values only: the fit cannot vary it), the others nominal,
+/// through the scene reader.
 void checkBoundsReadable(const SceneSource& scene, const std::vector<UpdateParameterSpec>& ps,
                          const std::vector<std::string>& specs, Front front) {
   Eigen::VectorXd p(static_cast<Eigen::Index>(ps.size()));
   for (std::size_t k = 0; k < ps.size(); ++k) p(static_cast<Eigen::Index>(k)) = ps[k].nominal;
   for (std::size_t k = 0; k < ps.size(); ++k)
-    for (const double bound : {ps[k].lower, ps[k].upper}) {
+    for (const double bound : {ps[k].lower, ps[k].upper, ps[k].nominal + 1e-3 * (ps[k].upper - ps[k].nominal)}) {
       Eigen::VectorXd q = p;
       q(static_cast<Eigen::Index>(k)) = bound;
       try {

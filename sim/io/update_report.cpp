@@ -93,7 +93,7 @@ nlohmann::ordered_json updateJson(const ModelUpdateResult& r) {
   json j;
   j["mmvlab_version"] = mmvlabVersion();
   j["command"] = "update";
-  j["scene"] = r.scene;
+  j["scene"] = {{"name", r.scene}, {"source", r.scene_source}};
   j["measured"] = r.measured;
   j["converged"] = r.fit.converged;
   j["stop"] = r.fit.stop;

@@ -74,6 +74,7 @@ ModelUpdateResult updateModel(const SceneSource& scene, const std::vector<Update
   out.measured = measured_source;
   const Scene nominal = sceneAt(scene, params, problem.start);
   out.scene = sceneName(nominal);
+  out.scene_source = scene.source + overrideSuffix(scene.sets);
   const std::vector<std::optional<ModelMatch>> before = match(nominal);
   MMV_DEMAND(before.size() == targets.size());
   std::vector<int> tracked;

@@ -84,7 +84,7 @@ struct UpdatePair {
 };
 
 struct ModelUpdateResult {
-  std::string scene, measured;  ///< measured: where the targets came from
+  std::string scene, scene_source, measured;  ///< measured: where the targets came from
   std::vector<UpdatedParameter> parameters;
   std::vector<UpdatePair> pairs;      ///< the tracked test modes, before and after
   LeastSquaresResult fit;
