@@ -1,5 +1,5 @@
 #pragma once
-/// The laboratory the article is tested in (report, "Facility Layout"; DATASHEET §2):
+/// The laboratory the article is tested in (report, "Facility Layout"; docs/sources.md section 2):
 /// the west high bay of MSFC Building 4619, a 53.5 ft x 29.0 ft floor with about a
 /// 90 ft ceiling, an existing platform at 42.5 ft, and a 5 ft x 5 ft hole cut in the
 /// platform through which the article hangs from the table and gimbal.

@@ -289,7 +289,7 @@ TEST(SceneYaml, LabOnlyWhenNamedWithTheReportsDimensions) {
   EXPECT_FALSE(parseArticle(kGood, "s.yaml").lab);
   const ArticleScene s = parseArticle(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nlab: {}"), "s.yaml");
   ASSERT_TRUE(s.lab);
-  // DATASHEET section 2: 53.5 ft x 29.0 ft floor, 90 ft ceiling, platform at 42.5 ft, 5 ft hole.
+  // docs/sources.md section 2: 53.5 ft x 29.0 ft floor, 90 ft ceiling, platform at 42.5 ft, 5 ft hole.
   EXPECT_NEAR(s.lab->floor_length, 16.3068, 1e-12);
   EXPECT_NEAR(s.lab->floor_width, 8.8392, 1e-12);
   EXPECT_NEAR(s.lab->ceiling_height, 27.432, 1e-12);
