@@ -87,6 +87,15 @@ void tipPlot(OutputDir& out, const SimulationResult& r, const std::string& title
     figures::linePlot(out.stage("tips.png"), all, "Link tips' motion from where the run starts: " + title, "time (s)", "displacement (mm)");
 }
 
+/// A sensor's full scale as a reader of the figure says it: an encoder's in degrees, a
+/// gyro's in deg/s, an accelerometer's in g (the record's own units stay SI).
+std::string readableRange(double range, const std::string& unit) {
+  if (unit == "rad") return strf("+-%.3g deg", range * 180 / M_PI);
+  if (unit == "rad_per_s") return strf("+-%.3g deg/s", range * 180 / M_PI);
+  if (unit == "m_per_s2") return strf("+-%.3g g", range / 9.80665);
+  return strf("+-%.3g %s", range, unit.c_str());
+}
+
 void sensorPlot(OutputDir& out, const SimulationResult& r, const std::string& title) {
   std::vector<render::Series> all;
   int colour = 1;
@@ -96,7 +105,8 @@ void sensorPlot(OutputDir& out, const SimulationResult& r, const std::string& ti
       if (r.record.columns[k].rfind(s.name + "_", 0) == 0) c = static_cast<int>(k);
     const double range = facility::sensorSpecFor(s.type).range;
     if (c < 0 || !(range > 0)) continue;
-    render::Series x = column(r.record, c, strf("%s (%s, range +-%g %s)", s.name.c_str(), s.type.c_str(), range, s.unit.c_str()), 100 / range);
+    render::Series x = column(r.record, c, strf("%s (%s, range %s)", s.name.c_str(), s.type.c_str(), readableRange(range, s.unit).c_str()),
+                              100 / range);
     x.colour_index = colour++;
     all.push_back(x);
   }
