@@ -163,8 +163,10 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& problem, 
   LeastSquaresResult out;
   out.iterations.push_back({0, u.cwiseProduct(problem.scale), cost, 0, s.evaluations});
   out.stop = "the iteration limit";
+  Eigen::MatrixXd J;  // the Jacobian at u_J (reused at the end when no step moved u since)
+  Eigen::VectorXd u_J;
   for (int it = 1; it <= o.max_iterations; ++it) {
-    const Eigen::MatrixXd J = s.jacobian(u, r, o.difference_step);
+    J = s.jacobian(u, r, o.difference_step), u_J = u;
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * a;
     const std::vector<bool> free = freeParameters(g, u, s.lo, s.hi);
@@ -212,8 +214,8 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& problem, 
   out.p = u.cwiseProduct(problem.scale);
   out.residuals = r;
   out.cost = cost;
-  Eigen::MatrixXd J = s.jacobian(u, r, o.difference_step).topRows(r.size());
-  out.jacobian = J * problem.scale.cwiseInverse().asDiagonal();
+  if (u_J.size() != u.size() || u_J != u) J = s.jacobian(u, r, o.difference_step);
+  out.jacobian = J.topRows(r.size()) * problem.scale.cwiseInverse().asDiagonal();
   out.evaluations = s.evaluations;
   for (Eigen::Index k = 0; k < n; ++k)
     out.at_bound.push_back(u(k) <= s.lo(k) + 1e-12 * std::abs(s.lo(k)) || u(k) >= s.hi(k) - 1e-12 * std::abs(s.hi(k)));

@@ -98,6 +98,10 @@ ModelUpdateResult updateModel(const SceneSource& scene, const std::vector<Update
   LeastSquaresOptions lo;
   lo.max_iterations = o.max_iterations;
   out.fit = solveBoundedLeastSquares(problem, lo);
+  if (!out.fit.converged)  // no updated scene from a fit that stopped on its way
+    throw NumericalError(strf("model updating did not converge in %d iterations (%d model evaluations; the weighted cost "
+                              "went from %.6g to %.6g): raise --max-iterations, narrow the bounds or fix a parameter",
+                              o.max_iterations, out.fit.evaluations, out.fit.iterations.front().cost, out.fit.cost));
 
   const Identifiability& id = out.fit.identifiability;
   std::vector<SceneEdit> edits;

@@ -280,6 +280,19 @@ TEST(Update, BadParametersAreRefusedByNameBeforeAnyModelIsBuilt) {
   expectUsage(l, sigma, none, "--frequency-sigma");
 }
 
+// A fit stopped by its iteration limit writes no updated scene: a numerical error saying so.
+TEST(Update, AFitThatDoesNotConvergeIsAnErrorNotAResult) {
+  const MeasuredSet test = measured(tableText("44.712e9", "1.9"), 4);
+  UpdateRequest q = request({kE, kTip});
+  q.max_iterations = 1;
+  try {
+    runUpdateStudy(loaded(tableText(), 4), q, test);
+    FAIL() << "a result from one iteration";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("did not converge in 1 iterations"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Update, AMeasuredSetWithNoPairableModeIsADataError) {
   MeasuredSet far = measured(tableText(), 2);
   for (auto& m : far.modes) m.frequency_hz *= 10;  // outside every pair's frequency window
