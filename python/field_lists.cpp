@@ -53,6 +53,7 @@ const std::map<std::string, std::function<py::list()>>& namedLists() {
       {"exciter_modes", [] { return describe(mmv::exciterModeFields()); }},
       {"exciter_ranking", [] { return describe(mmv::exciterCandidateFields()); }},
       {"hamsas_modes", [] { return describe(mmv::hamsasModeFields()); }},
+      {"mass_loading_iterations", [] { return describe(mmv::loadedIterationFields()); }},
       {"mass_loading_modes", [] { return describe(mmv::loadingModeFields()); }},
       {"placement_candidates", [] { return describe(mmv::placementFields()); }},
       {"simulate_sensors", [] { return describe(mmv::sensorSummaryFields()); }},

@@ -179,3 +179,16 @@ def test_place_sensors_keeps_the_scenes_sensors_as_the_cli():
     assert fixed(json.loads(cli.stdout)["chosen"]) == fixed(p.chosen)
     with pytest.raises(mmvlab.UsageError, match="below the 2 accelerometers"):
         mmvlab.place_sensors(mmvlab.load_scene(slew), segments=8, count=1, keep_scene_sensors=True)
+
+
+def test_place_sensors_with_an_instrument_iterated_as_the_cli():
+    scene = mmvlab.load_scene(set={"instruments.accelerometer.mass_kg": 0.002})
+    p = mmvlab.place_sensors(scene, segments=8, count=8, modes=[1, 2, 3, 4], iterate_loaded=True)
+    cli = subprocess.run([MMVLAB, "place-sensors", "--segments", "8", "--count", "8", "--modes", "1-4", "--iterate-loaded",
+                          "--set", "instruments.accelerometer.mass_kg=0.002", "--json"], capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    assert p.json["mass_loading"] == json.loads(cli.stdout)["mass_loading"]
+    assert p.json["instrument"]["mass_kg"] == 0.002
+    assert [f["key"] for f in mmvlab.fields("mass_loading_iterations")] == ["pass", "changed", "settled", "repeats"]
+    with pytest.raises(mmvlab.UsageError, match="instrument='accelerometr'|unknown instrument 'accelerometr'"):
+        mmvlab.place_sensors(scene, segments=8, count=8, instrument="accelerometr")

@@ -64,6 +64,36 @@ std::vector<PlacementOptions::KeepOut> keepOuts(const Scene& scene, const Placem
 
 }  // namespace
 
+namespace {
+
+/// The instrument placed (`--instrument`, from the scene's catalogue) into `o`: its mass
+/// per housing (three uniaxial ones make a --triaxial block), triaxial when it is a block.
+void placedInstrument(const ArticleScene& scene, const PlacementRequest& r, PlacementOptions& o) {
+  const auto opt = [&](const char* name) { return optionName(r.front, name); };
+  const std::string name = r.instrument.empty() ? "accelerometer" : r.instrument;
+  const InstrumentSpec* i = findInstrument(scene, name);
+  if (!i) {
+    std::vector<std::string> names;
+    std::string list;
+    for (const InstrumentSpec& k : scene.instruments) names.push_back(k.name), list += (list.empty() ? "" : ", ") + k.name;
+    throw UsageError(opt("--instrument") + ": unknown instrument '" + name + "'" + didYouMean(name, names) + " (the scene's: " + list + ")");
+  }
+  if (i->spec.kind != "accelerometer")
+    throw UsageError(opt("--instrument") + " " + name + ": " + (i->spec.kind == "encoder" ? "an encoder" : "a rate gyro") + "; sensors are placed as accelerometers");
+  o.instrument = *i;
+  if (i->axes == 3) o.triaxial = true;
+  if (!r.instrument.empty() && r.sensor_mass_kg > 0)
+    throw UsageError(opt("--sensor-mass") + " and " + opt("--instrument") + " both give the sensors' mass: give one (the instrument's is " +
+                     strf("%g kg", i->mass_kg) + ")");
+  if (r.sensor_mass_kg == 0) o.sensor_mass_kg = i->mass_kg * (o.triaxial && i->axes == 1 ? 3 : 1);
+  o.iterate_loaded = r.iterate_loaded;
+  if (r.iterate_loaded && o.sensor_mass_kg == 0)
+    throw UsageError(opt("--iterate-loaded") + ": the " + name + " is massless: nothing loads the model (give --sensor-mass, or the "
+                     "instrument's mass_kg in the scene's instruments:)");
+}
+
+}  // namespace
+
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& r) {
   const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
   PlacementOptions o;
@@ -104,13 +134,19 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   }
   o.keep_out = keepOuts(scene, r);
   o.keep_scene_sensors = r.keep_scene_sensors;
-  if (r.keep_scene_sensors && r.triaxial)
-    throw UsageError(opt("--keep-scene-sensors") + " keeps uniaxial sensors: it is not built for --triaxial blocks yet");
   if (r.keep_scene_sensors && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--keep-scene-sensors") + " applies to the article's scenes (the isolator's sensors are not scene data)");
   o.sensor_mass_kg = r.sensor_mass_kg;
   if (o.sensor_mass_kg > 0 && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--sensor-mass") + " applies to the article's scenes (the isolator's loading is not built yet)");
+  if (const auto* article = std::get_if<ArticleScene>(&scene)) {
+    placedInstrument(*article, r, o);
+  } else {
+    if (!r.instrument.empty())
+      throw UsageError(opt("--instrument") + " applies to the article's scenes (the isolator's sensors are not scene data)");
+    if (r.iterate_loaded)
+      throw UsageError(opt("--iterate-loaded") + " applies to the article's scenes (the isolator's loading is not built yet)");
+  }
   PlacementStudyResult s;
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {
     s.study = runPlacement(*article, o);

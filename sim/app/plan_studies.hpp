@@ -45,6 +45,11 @@ struct PlacementRequest {
   std::vector<std::string> keep_out;  ///< LINK:FROM_M:TO_M, stretches no sensor may go on
   int channels = 0;              ///< > 0: the budget in channels, which sets `count` (a triaxial block costs 3)
   bool keep_scene_sensors = false;  ///< the scene's accelerometers kept in advance, counted in the budget
+  /// The accelerometer placed, from the scene's catalogue (`instruments:`); empty: the
+  /// scene's `accelerometer`. Its mass loads the model (`sensor_mass_kg` overrides it),
+  /// its range and resolution set the exciter's levels, a triaxial one places blocks.
+  std::string instrument;
+  bool iterate_loaded = false;  ///< placed again on the loaded model until the set carries itself
   Front front = Front::Cli;
 };
 

@@ -157,6 +157,8 @@ struct PlaceSensorsArgs : SceneArgs {
   std::vector<std::string> keep_out;  ///< LINK:FROM:TO
   int channels = 0;              ///< the budget; 0: --count decides
   bool keep_scene_sensors = false;  ///< --keep-scene-sensors
+  std::string instrument;        ///< --instrument NAME (the scene's instruments:)
+  bool iterate_loaded = false;   ///< --iterate-loaded
   std::string out;
   bool force = false;
 };

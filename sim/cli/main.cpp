@@ -257,7 +257,12 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
               "the others around them");
   p->add_option("--sensor-mass", ps.sensor_mass,
                 "Each chosen sensor's mass, kg (0 .. 100; a triaxial block counts one): welded at its station and the "
-                "modes solved again, each target's shift beside first-order perturbation theory");
+                "modes solved again, each target's shift beside first-order perturbation theory (default: the instrument's)");
+  p->add_option("--instrument", ps.instrument,
+                "The accelerometer placed, from the scene's instruments: (default: accelerometer, the report's): its mass loads "
+                "the model, its range and resolution set the shaker's levels, a triaxial one (axes: 3) places blocks");
+  p->add_flag("--iterate-loaded", ps.iterate_loaded,
+              "Place again on the model carrying the chosen sensors' masses until the set carries itself (at most 8 passes)");
   p->add_option("--tam", ps.tam,
                 "Test-analysis models on the chosen sensors, with self- and cross-orthogonality against NASA-STD-5002's "
                 "criteria: guyan, irs, serep or all, comma-separated")

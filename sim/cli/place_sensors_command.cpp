@@ -108,6 +108,8 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.keep_out = args.keep_out;
     r.channels = args.channels;
     r.keep_scene_sensors = args.keep_scene_sensors;
+    r.instrument = args.instrument;
+    r.iterate_loaded = args.iterate_loaded;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const auto* article = std::get_if<ArticleScene>(&loaded);

@@ -103,7 +103,7 @@ void sensorPlot(OutputDir& out, const SimulationResult& r, const std::string& ti
     int c = -1;
     for (std::size_t k = 0; k < r.record.columns.size() && c < 0; ++k)
       if (r.record.columns[k].rfind(s.name + "_", 0) == 0) c = static_cast<int>(k);
-    const double range = facility::sensorSpecFor(s.type).range;
+    const double range = s.range;
     if (c < 0 || !(range > 0)) continue;
     render::Series x = column(r.record, c, strf("%s (%s, range %s)", s.name.c_str(), s.type.c_str(), readableRange(range, s.unit).c_str()),
                               100 / range);

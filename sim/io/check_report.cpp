@@ -74,7 +74,7 @@ const std::vector<Field<CheckLine>>& checkLineFields() {
   static const std::vector<Field<CheckLine>> fields = {
       {"id", "", "%s", "stable name of the requirement across runs of a scene (a sweep's column)",
        [](const CheckLine& l) { return text(l.id); }},
-      {"group", "", "%s", "torquers, gimbal, table, modes, sensors, lab or plausibility",
+      {"group", "", "%s", "torquers, gimbal, table, modes, planarity, sensors, shaker, lab or plausibility",
        [](const CheckLine& l) { return text(l.group); }},
       {"requirement", "", "%s", "what is checked", [](const CheckLine& l) { return text(l.requirement); }},
       {"demand", "unit", "%.8g", "what the test needs (null: a requirement with no measure)",

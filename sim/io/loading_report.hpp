@@ -15,6 +15,8 @@ namespace mmv {
 
 /// mode, frequency_hz, loaded_mode, loaded_hz, shift, first_order_shift, mac.
 const std::vector<Field<SensorLoading::Mode>>& loadingModeFields();
+/// pass, changed, settled, repeats: placement.json's mass_loading.iterations records.
+const std::vector<Field<LoadedIteration>>& loadedIterationFields();
 nlohmann::ordered_json loadingJson(const SensorLoading& l);
 std::string loadingText(const SensorLoading& l);
 

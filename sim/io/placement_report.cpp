@@ -30,8 +30,12 @@ std::string placementText(const PlacementStudy& s) {
   std::ostringstream os;
   const PlacementResult& r = s.result;
   os << s.scene_name << ": " << r.kept_blocks.size() << (s.triaxial ? " triaxial blocks" : " uniaxial sensors") << " by "
-     << s.method << " from " << s.candidates.size() << " candidates\n";
-  os << "Target modes (Hz):";
+     << s.method << " from " << s.candidates.size() << " candidates";
+  if (!s.instrument.name.empty() && (s.instrument.name != "accelerometer" || s.instrument.mass_kg > 0))
+    os << strf(" (instrument %s, %.4g g)", s.instrument.name.c_str(), 1e3 * s.instrument.mass_kg);
+  os << "\n";
+  const bool iterated = s.loading && !s.loading->iterations.empty();
+  os << (iterated ? "Target modes of the model carrying them (Hz):" : "Target modes (Hz):");
   for (std::size_t j = 0; j < s.target_modes.size(); ++j)
     os << strf(" %d (%.4g)", s.target_modes[j].number(), s.target_frequencies_hz[j]);
   os << "\n\n";
@@ -98,6 +102,10 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   j["scene"] = s.scene_name;
   j["method"] = s.method;
   j["sensor"] = s.triaxial ? "triaxial" : "uniaxial";
+  if (!s.instrument.name.empty())  // the article's (the isolator's sensors are not scene data)
+    j["instrument"] = {{"name", s.instrument.name},           {"mass_kg", s.instrument.mass_kg},
+                       {"axes", s.instrument.axes},           {"range_m_per_s2", s.instrument.spec.range},
+                       {"resolution_m_per_s2", s.instrument.spec.resolution}};
   j["target_modes"] = nlohmann::ordered_json::array();
   for (const ModeNumber m : s.target_modes) j["target_modes"].push_back(m.number());
   j["target_frequencies_hz"] = s.target_frequencies_hz;

@@ -206,7 +206,8 @@ ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) 
   e.direction = e.chosen ? e.ranking.front().world : spec.direction;
   e.axis = e.chosen ? e.ranking.front().axis : "";
   e.damping = describeDamping(scene.damping.value_or(DampingSpec{})) + (scene.damping ? " (the scene's)" : " (the scene has no damping:)");
-  const facility::SensorSpec acc = facility::accelerometerSpec();
+  const facility::SensorSpec& acc = study.instrument.spec;  // the placed instrument's
+  MMV_DEMAND(acc.kind == "accelerometer" && acc.range > 0);
   e.resolution = acc.resolution, e.range = acc.range;
   e.sample_rate_hz = scene.simulation.sample_rate_hz;
   const std::vector<Channel> channels = chosenChannels(study);

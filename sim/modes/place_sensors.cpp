@@ -150,33 +150,17 @@ void buildPlacementTams(PlacementStudy& study, const SolvedScene& s, const Eigen
   for (const TamMethod m : methods) study.tams.push_back(buildTam(in, m));
 }
 
-/// Where a scene accelerometer sits along its link: a station, or a link's root or tip;
-/// nothing (with the reason) for a point of the mesh (a hinge, a joint).
-std::optional<std::pair<std::string, double>> sensorStation(const ArticleSpec& a, const std::string& target, std::string& why) {
-  if (isStationName(target)) {
-    const std::optional<StationSpec> st = parseStation(target, a, why);
-    if (st) return std::make_pair(st->link, st->x);
-    return std::nullopt;
-  }
-  const auto dot = target.rfind('.');
-  const LinkSpec* link = dot == std::string::npos ? nullptr : a.findLink(target.substr(0, dot));
-  const std::string end = dot == std::string::npos ? "" : target.substr(dot + 1);
-  if (link && (end == "tip" || end == "root")) return std::make_pair(link->name, end == "tip" ? link->length : 0.0);
-  why = "'" + target + "' is a point of the mesh, which moves along the link when the segments change: give it as a station";
-  return std::nullopt;
-}
-
 /// The scene's own accelerometers, fixed in advance (`keep_scene_sensors`): each one's
 /// direction at a candidate station already there (same link, same distance), else at a
 /// station of its own added with its other directions as candidates.
 void fixScenesSensors(const ArticleScene& scene, const Model& model, const SimTK::State& st, const SolvedScene& s,
-                      const Eigen::MatrixXd& shapes, PlacementStudy& study, PlacementProblem& p, StationRows& acc) {
+                      const Eigen::MatrixXd& shapes, bool triaxial, PlacementStudy& study, PlacementProblem& p, StationRows& acc) {
   static const char* const axis_names[] = {"axial", "transverse", "normal"};
   int fixed = 0;
   for (const auto& sensor : scene.sensors) {
     if (sensor.type != "accelerometer") continue;
     std::string why;
-    const auto at = sensorStation(scene.article, sensor.target, why);
+    const auto at = pointAlongLink(scene.article, sensor.target, why);
     if (!at) throw OptionError("--keep-scene-sensors", ": sensor " + sensor.name + " (" + sensor.where + "): " + why);
     auto same = [&](const PlacementCandidate& c) { return c.link == at->first && std::abs(c.x_m - at->second) < 1e-9; };
     if (std::none_of(study.candidates.begin(), study.candidates.end(), same)) {
@@ -185,7 +169,7 @@ void fixScenesSensors(const ArticleScene& scene, const Model& model, const SimTK
       MMV_DEMAND(ref.has_value());  // the reader resolved it
       const auto li = std::find_if(scene.article.links.begin(), scene.article.links.end(), [&](const LinkSpec& l) { return l.name == at->first; });
       const int node = static_cast<int>(li - scene.article.links.begin() + 1) * 100000 + static_cast<int>(std::lround(1e3 * at->second));
-      addStation(study, p, acc, {*ref, st, s.linearized.dofs, shapes, model.isSpatial() ? 3 : 2, false},
+      addStation(study, p, acc, {*ref, st, s.linearized.dofs, shapes, model.isSpatial() ? 3 : 2, triaxial},
                  PlacementCandidate{sensor.target, at->first, at->second, "", 0, 0, 0, 0.0, node, {}});
     }
     for (std::size_t r = 0; r < study.directions.size(); ++r) {
@@ -201,11 +185,9 @@ void fixScenesSensors(const ArticleScene& scene, const Model& model, const SimTK
   p.fixed_block.resize(study.candidates.size(), 0);
 }
 
-}  // namespace
-
-PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {
+/// One placement on `scene`, solved as `s`; its target shapes into `shapes`.
+PlacementStudy placeOn(const ArticleScene& scene, const PlacementOptions& o, const SolvedScene& s, Eigen::MatrixXd& shapes_out) {
   MMV_DEMAND(o.spacing_m > 0);
-  const SolvedScene s = solveScene(scene);
   const Model& model = *s.model;
   SimTK::State st = s.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
@@ -257,7 +239,7 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
     }
   }
   if (o.keep_scene_sensors) {
-    fixScenesSensors(scene, model, st, s, shapes, study, p, acc);
+    fixScenesSensors(scene, model, st, s, shapes, o.triaxial, study, p, acc);
     const long fixed = std::count(p.fixed_block.begin(), p.fixed_block.end(), 1);
     if (o.count < fixed)
       throw OptionError("--count", strf(" %d: below the %ld accelerometers of the scene that --keep-scene-sensors keeps", o.count, fixed));
@@ -271,8 +253,66 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
   choosePlacement(study, p, o, directions, "spacing " + std::to_string(o.spacing_m) + " m");
   chosenChannels(study, p.block, acc.names);
   if (!o.tam.empty()) buildPlacementTams(study, s, shapes, p.block, acc.readings, o.tam);
-  if (o.sensor_mass_kg > 0) study.loading = sensorLoading(scene, s, shapes, study, o.sensor_mass_kg);
+  study.instrument = o.instrument;
+  shapes_out = shapes;
   return study;
+}
+
+/// "station axis" of each chosen block, sorted: a placement's set.
+std::vector<std::string> chosenSet(const PlacementStudy& s) {
+  std::vector<std::string> out;
+  for (int b : s.result.kept_blocks) {
+    const PlacementCandidate& c = s.candidates[static_cast<std::size_t>(b)];
+    out.push_back(c.station + " " + c.axis);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {
+  MMV_DEMAND(!o.iterate_loaded || o.sensor_mass_kg > 0);
+  const SolvedScene s = solveScene(scene);
+  Eigen::MatrixXd shapes;
+  const PlacementStudy bare = placeOn(scene, o, s, shapes);
+  if (o.sensor_mass_kg == 0) return bare;
+  PlacementStudy chosen = bare;
+  std::vector<LoadedIteration> iterations;
+  if (o.iterate_loaded) {
+    // Placed again on the model that carries the last set, until a set carries itself.
+    std::vector<std::vector<std::string>> seen{chosenSet(bare)};
+    for (int it = 1; it <= kMaxLoadedIterations; ++it) {
+      const ProgressStage stage(strf("placement on the model with the sensors: pass %d", it));
+      const ArticleScene loaded = sceneWithSensors(scene, chosen, o.sensor_mass_kg);
+      Eigen::MatrixXd loaded_shapes;
+      PlacementStudy next = placeOn(loaded, o, solveScene(loaded), loaded_shapes);
+      const std::vector<std::string> set = chosenSet(next);
+      LoadedIteration step;
+      step.pass = it;
+      for (const auto& name : set) step.changed += !std::binary_search(seen.back().begin(), seen.back().end(), name);
+      step.settled = step.changed == 0;
+      step.repeats = !step.settled && std::find(seen.begin(), seen.end(), set) != seen.end();
+      iterations.push_back(step);
+      chosen = std::move(next);
+      if (step.settled || step.repeats) break;
+      seen.push_back(set);
+    }
+  }
+  // The loading of the final set, against the article without it: the bare study with
+  // the chosen blocks (the candidates are the same stations on either model).
+  PlacementStudy on_bare = bare;
+  on_bare.result.kept_blocks.clear();
+  for (int b : chosen.result.kept_blocks) {
+    const PlacementCandidate& c = chosen.candidates[static_cast<std::size_t>(b)];
+    const auto same = std::find_if(bare.candidates.begin(), bare.candidates.end(),
+                                   [&](const PlacementCandidate& d) { return d.station == c.station && d.axis == c.axis; });
+    MMV_DEMAND(same != bare.candidates.end());
+    on_bare.result.kept_blocks.push_back(static_cast<int>(same - bare.candidates.begin()));
+  }
+  chosen.loading = sensorLoading(scene, s, shapes, on_bare, o.sensor_mass_kg);
+  chosen.loading->iterations = iterations;
+  return chosen;
 }
 
 }  // namespace mmv

@@ -45,6 +45,23 @@ struct PlacementOptions {
   /// The scene's own accelerometers (at stations, or links' roots and tips) kept, each
   /// counted in `count`, the others chosen around them (uniaxial placement).
   bool keep_scene_sensors = false;
+  /// The sensor placed (its range and resolution for the exciter's levels); its mass is
+  /// `sensor_mass_kg`'s business (the front end sets it from this one's).
+  InstrumentSpec instrument = reportInstruments().back();
+  /// With `sensor_mass_kg` > 0: placed again on the model that carries the chosen set
+  /// until a set carries itself (at most kMaxLoadedIterations passes).
+  bool iterate_loaded = false;
+};
+
+/// Passes of PlacementOptions::iterate_loaded before it stops unsettled.
+inline constexpr int kMaxLoadedIterations = 8;
+
+/// One pass of placement on the loaded model (PlacementOptions::iterate_loaded).
+struct LoadedIteration {
+  int pass = 0;
+  int changed = 0;       ///< chosen blocks not in the set the pass's model carried
+  bool settled = false;  ///< none: the set carries itself
+  bool repeats = false;  ///< a set seen before, not the last: the passes cycle
 };
 
 struct PlacementCandidate {
@@ -86,8 +103,12 @@ struct SensorLoading {
     /// sensors are heavy against the mode's modal mass, their effect is not a small correction.
     bool beyond_first_order = false;
     bool shared = false;          ///< another target follows the same loaded mode: the shapes changed
+    /// No loaded mode up to 1.5 times its frequency resembles it (best MAC below 0.5):
+    /// the sensors made another article of it, and `loaded_hz` is only the nearest shape's.
+    bool lost = false;
   };
   std::vector<Mode> modes;
+  std::vector<LoadedIteration> iterations;  ///< empty: placed on the bare model only
 };
 
 /// A candidate's measuring direction (a row of the placement problem).
@@ -109,6 +130,7 @@ struct PlacementStudy {
   std::vector<std::string> channels;  ///< the chosen sensor directions, "station axis", in row order (the TAMs' and channels.csv's)
   std::vector<TamResult> tams;        ///< one per options.tam, on `channels`
   std::optional<SensorLoading> loading;  ///< options.sensor_mass_kg > 0
+  InstrumentSpec instrument;             ///< what is placed (options.instrument)
 };
 
 /// Throws UsageError for target modes that do not exist or are not vibration modes

@@ -20,19 +20,34 @@ std::pair<ModeNumber, double> followMode(const Eigen::MatrixXd& M, const Eigen::
   return best;
 }
 
+ArticleScene sceneWithSensors(const ArticleScene& scene, const PlacementStudy& study, double mass) {
+  ArticleScene loaded = scene;
+  for (int b : study.result.kept_blocks) {
+    const PlacementCandidate& c = study.candidates[static_cast<std::size_t>(b)];
+    if (c.fixed) continue;
+    auto link = std::find_if(loaded.article.links.begin(), loaded.article.links.end(), [&](const LinkSpec& l) { return l.name == c.link; });
+    MMV_DEMAND(link != loaded.article.links.end());
+    link->station_masses.push_back({c.x_m, mass});
+  }
+  return loaded;
+}
+
+namespace {
+constexpr double kFollowReach = 1.5;  ///< loaded modes up to this multiple of the target's frequency
+constexpr double kLostMac = 0.5;      ///< below it no loaded mode is the target's
+}  // namespace
+
 SensorLoading sensorLoading(const ArticleScene& scene, const SolvedScene& s, const Eigen::MatrixXd& shapes,
                             const PlacementStudy& study, double sensor_mass_kg) {
   MMV_DEMAND(sensor_mass_kg > 0 && shapes.cols() == static_cast<Eigen::Index>(study.target_modes.size()));
   const ProgressStage stage("the sensors' masses on the model: its modes again");
   SensorLoading out;
   out.sensor_mass_kg = sensor_mass_kg;
-  ArticleScene loaded = scene;
+  const ArticleScene loaded = sceneWithSensors(scene, study, sensor_mass_kg);
   std::vector<double> first_order(study.target_modes.size(), 0.0);
   for (int b : study.result.kept_blocks) {
     const PlacementCandidate& c = study.candidates[static_cast<std::size_t>(b)];
-    auto link = std::find_if(loaded.article.links.begin(), loaded.article.links.end(), [&](const LinkSpec& l) { return l.name == c.link; });
-    MMV_DEMAND(link != loaded.article.links.end());
-    link->station_masses.push_back({c.x_m, sensor_mass_kg});
+    if (c.fixed) continue;
     ++out.sensors;
     for (std::size_t j = 0; j < first_order.size(); ++j) {
       const auto& u = c.shape[j];
@@ -48,7 +63,13 @@ SensorLoading sensorLoading(const ArticleScene& scene, const SolvedScene& s, con
     SensorLoading::Mode m;
     m.mode = study.target_modes[j];
     m.frequency_hz = s.modes.frequencyHz(m.mode.index());
-    std::tie(m.loaded_mode, m.mac) = followMode(s.linearized.M, shapes.col(static_cast<Eigen::Index>(j)), l.modes.shapes);
+    // Added mass lowers every frequency (Rayleigh); the sensors' weight changes the
+    // geometric stiffness by a few per cent. A loaded mode far above the target is a
+    // local mode of a heavy sensor on a light piece, never its counterpart.
+    Eigen::Index reach = 1;
+    while (reach < l.modes.shapes.cols() && l.modes.frequencyHz(static_cast<int>(reach)) <= kFollowReach * m.frequency_hz) ++reach;
+    std::tie(m.loaded_mode, m.mac) = followMode(s.linearized.M, shapes.col(static_cast<Eigen::Index>(j)), l.modes.shapes.leftCols(reach));
+    m.lost = m.mac < kLostMac;
     m.loaded_hz = l.modes.frequencyHz(m.loaded_mode.index());
     m.shift = m.loaded_hz / m.frequency_hz - 1;
     m.first_order = first_order[j];

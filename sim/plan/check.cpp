@@ -119,10 +119,12 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, con
   plan::addPlanarityLines(in, rep.lines);
   stage.emplace("sensor lines: the linear time responses");
   plan::addSensorLines(in, rep.lines);
+  stage.emplace("shaker lines: its levels on the scene's accelerometers");
+  plan::addShakerLines(in, rep.lines);
   stage.reset();
   plan::addLabLines(in, rep.lines);
   plan::addPlausibilityLines(in, rep.lines);
-  const std::vector<std::string> order{"torquers", "gimbal", "table", "modes", "planarity", "sensors", "lab",
+  const std::vector<std::string> order{"torquers", "gimbal", "table", "modes", "planarity", "sensors", "shaker", "lab",
                                         "plausibility"};
   std::stable_sort(rep.lines.begin(), rep.lines.end(), [&](const CheckLine& a, const CheckLine& b) {
     return std::find(order.begin(), order.end(), a.group) < std::find(order.begin(), order.end(), b.group);

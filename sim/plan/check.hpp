@@ -31,6 +31,12 @@
 ///    cannot tell them apart); under each program the scene runs (table x, slews), the
 ///    out-of-plane over in-plane resonant response at the link tips against
 ///    max_out_of_plane_ratio (sim/modes/planarity.hpp). Above it: warn.
+///  - shaker (scene with `shaker:`): the extra shaker planned on the scene's own
+///    accelerometers (sim/linear/exciter.hpp): its armature's largest shift of a mode in
+///    the band against 2 % (above it: warn), and per mode in the band the sine dwell's
+///    signal-to-noise at the best sensor against 20 dB (under it: warn), at the force the
+///    shaker's force and stroke and the sensors' range allow. Not checked (with the
+///    reason): no accelerometer, one at a point of the mesh, an undamped article.
 ///  - lab (scene with `lab:`): the envelope of the article's points at rest and during
 ///    the rigid-link run against the floor, the ceiling and the platform's hole.
 ///  - plausibility: masses, lengths, moduli, deflections and frequencies outside what a
@@ -57,7 +63,7 @@ void makeAdvisory(CheckLine& l);
 
 struct CheckLine {
   std::string id;           ///< stable across runs of one scene, e.g. "torque.joint1.hold", "table.stroke" (sweep columns).
-  std::string group;        ///< torquers, gimbal, table, modes, sensors, lab, plausibility.
+  std::string group;        ///< torquers, gimbal, table, modes, planarity, sensors, shaker, lab, plausibility.
   std::string requirement;  ///< what is checked, e.g. "joint1 holding torque over +-45 deg".
   double demand = 0;        ///< what the test needs (unit below).
   double capacity = 0;      ///< what the equipment gives; 0 with has_capacity false: unknown.

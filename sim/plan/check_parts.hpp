@@ -35,6 +35,10 @@ void addTableAndModeLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// The spatial model: the modes in the band that leave the plane against their nearest
 /// in-plane mode, and the out-of-plane response under the scene's programs.
 void addPlanarityLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// The extra shaker (scenes with `shaker:`) on the scene's accelerometers: its armature's
+/// shift of the modes in the band, and each mode seen above the resolution under a
+/// sine dwell within the shaker's force and stroke and the sensors' range.
+void addShakerLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// The article's envelope against the lab (scenes with `lab:`).
 void addLabLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Values no lab article has, each with the likely unit mistake.

@@ -27,8 +27,14 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const facility::TableSpec table;
   const double g = std::sqrt(scene.gravity[0] * scene.gravity[0] + scene.gravity[1] * scene.gravity[1] + scene.gravity[2] * scene.gravity[2]);
   const double carried = in.modes.model.total_mass_kg - scene.article.base.table_mass;
+  double sensors_kg = 0;  // the scene's sensors' instruments, welded on the links by the reader
+  for (const auto& l : scene.article.links)
+    for (const auto& [x, m] : l.station_masses) sensors_kg += m;
   out.push_back(makeLine("table", "table.payload", "payload weight (article, torquers, gimbal)", carried * g, table.payload_n, "N",
-                         strf("%.4g kg; sensors and cables are not in the model: add them as tip masses", carried),
+                         sensors_kg > 0 ? strf("%.4g kg, the sensors' %.3g kg (instruments: mass_kg) included; cables are not in the model",
+                                               carried, sensors_kg)
+                                        : strf("%.4g kg; the sensors are massless (give their instruments' mass_kg) and cables are "
+                                               "not in the model", carried),
                          in.options.required_margin_pct));
   const double margin = in.options.required_margin_pct;
   const auto& o = in.options;

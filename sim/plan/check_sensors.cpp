@@ -20,8 +20,6 @@ constexpr double kRadToDeg = 180 / M_PI;
 constexpr double kMinRatioDb = 20;
 constexpr double kEdge = 0.98;  ///< a peak within 2 % of the range is at its edge.  ///< below: fewer than 10 counts of resolution in the peak.
 
-facility::SensorSpec specOf(const SensorSceneSpec& s) { return facility::sensorSpecFor(s.type); }
-
 /// Display scale and unit: angles in deg, rates in deg/s, accelerations in m/s^2.
 std::pair<double, std::string> displayUnit(const std::string& type) {
   if (type == "encoder") return {kRadToDeg, "deg"};
@@ -30,10 +28,13 @@ std::pair<double, std::string> displayUnit(const std::string& type) {
 }
 
 /// A sensor's line: peak (measured unit) against its range, its ratio to the resolution.
-CheckLine sensorLine(const SensorSceneSpec& s, const std::string& id, const std::string& during, double peak, int saturated, const std::string& how) {
-  const facility::SensorSpec spec = specOf(s);
+CheckLine sensorLine(const ArticleScene& scene, const SensorSceneSpec& s, const std::string& id, const std::string& during, double peak,
+                     int saturated, const std::string& how) {
+  const facility::SensorSpec spec = instrumentOf(scene, s).spec;  // its instrument's range and resolution
   const auto [scale, unit] = displayUnit(s.type);
-  CheckLine l = makeLine("sensors", "sensor." + s.name + "." + id, s.name + " (" + s.type + " at " + s.target + ") " + during, peak * scale, spec.range * scale, unit, "", 0);
+  const std::string what = s.instrument.empty() || s.instrument == s.type ? s.type : s.type + " " + s.instrument;
+  CheckLine l = makeLine("sensors", "sensor." + s.name + "." + id, s.name + " (" + what + " at " + s.target + ") " + during, peak * scale,
+                         spec.range * scale, unit, "", 0);
   const double ratio_db = peak > 0 ? 20 * std::log10(peak / spec.resolution) : -INFINITY;
   l.note = how + (peak > 0 ? strf("; %.1f dB above its resolution of %.3g %s", ratio_db, spec.resolution * scale, unit.c_str())
                            : "; no signal");
@@ -61,7 +62,7 @@ void addRunLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const auto col = std::find(cols.begin(), cols.end(), s.name + "_" + summary->unit) - cols.begin();
     double peak = 0;
     for (const auto& row : r.record.rows) peak = std::max(peak, std::abs(row[col]));
-    out.push_back(sensorLine(s, "run", "during the scene's run", peak, summary->saturated_samples,
+    out.push_back(sensorLine(in.scene, s, "run", "during the scene's run", peak, summary->saturated_samples,
                              strf("rigid links, %.3g s as recorded (band limits, noise, quantization)", in.scene.simulation.duration)));
   }
 }
@@ -140,7 +141,7 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   if (accels.empty() || !motion || scene.article.base.type != BaseType::Table) return;
   if (motion->type == TableMotion::Type::Profile) {
     for (const auto* s : accels) {
-      CheckLine l = sensorLine(*s, "table", "under the table's profile", 0, 0, "a CSV profile: run `mmvlab simulate`");
+      CheckLine l = sensorLine(scene, *s, "table", "under the table's profile", 0, 0, "a CSV profile: run `mmvlab simulate`");
       l.verdict = Verdict::NotChecked;
       out.push_back(l);
     }
@@ -165,14 +166,14 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const auto ref = PointRef::resolve(model, scene.article, accels[k]->target, error);
     AccelerometerRows rows{(dims + rots) * static_cast<Eigen::Index>(k), dims, rots, ref->localAxis(at, accels[k]->axis), {}};
     rows.e_x_g = rows.axis % model.getGravity();
-    const facility::Sensor sensor(specOf(*accels[k]), scene.simulation.sample_rate_hz);
+    const facility::Sensor sensor(instrumentOf(scene, *accels[k]).spec, scene.simulation.sample_rate_hz);
     const auto h = [&](double f) {
       const Eigen::MatrixXcd H = lm.second_order.response(2 * M_PI * f);
       return rows.reading([&](Eigen::Index i) { return H(i, 0); }) * sensor.bandGain(f);
     };
     const ProgramPeak p = programPeak(*motion, h);
     if (motion->type == TableMotion::Type::Random) {
-      out.push_back(sensorLine(*accels[k], "table", "under the table's program", p.value, 0, "flexible linear model, " + p.how));
+      out.push_back(sensorLine(scene, *accels[k], "table", "under the table's program", p.value, 0, "flexible linear model, " + p.how));
       continue;
     }
     // A sine or sweep: the linear model's response over the scene's run, from rest, what
@@ -181,9 +182,9 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     // cycles and a lightly damped mode's sine builds up over 1 / (zeta omega): the
     // steady state overstated the run's peak (61 against the run's 7.6 m/s^2).
     const double g_along = -(~model.getGravity() * rows.axis);
-    facility::Sensor live(specOf(*accels[k]), scene.simulation.sample_rate_hz);
+    facility::Sensor live(instrumentOf(scene, *accels[k]).spec, scene.simulation.sample_rate_hz);
     const double peak = runPeak(rows, run, g_along, live);
-    out.push_back(sensorLine(*accels[k], "table", "under the table's program", peak, live.saturatedSamples(),
+    out.push_back(sensorLine(scene, *accels[k], "table", "under the table's program", peak, live.saturatedSamples(),
                              strf("flexible linear model over the scene's %.3g s run from rest, sampled as simulate samples "
                                   "(gravity's %.3g m/s^2 along the axis included); the %s would read %.3g m/s^2",
                                   scene.simulation.duration, g_along, p.how.c_str(), p.value)));

@@ -39,7 +39,7 @@ class SceneParser {
   ArticleScene parse(const YAML::Node& root, const std::string& source) {
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
                                      "links", "closures", "loads", "damping", "simulation", "sensors", "views", "lab",
-                                     "shaker", "model"});
+                                     "shaker", "model", "instruments"});
     ArticleScene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -62,6 +62,8 @@ class SceneParser {
     if (top.count("loads")) readLoads(top.at("loads"), a);
     if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
     if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"));
+    scene.instruments = reportInstruments();
+    if (top.count("instruments")) readInstruments(r_, top.at("instruments"), scene);
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);
     if (top.count("views")) readViews(r_, top.at("views"), scene);
     if (top.count("lab")) scene.lab = readLab(r_, top.at("lab"));

@@ -50,15 +50,27 @@ SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n) {
 }
 
 void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) {
+  if (scene.instruments.empty()) scene.instruments = reportInstruments();
   const std::size_t count = r.sequence(n, "sensors");
   for (std::size_t i = 0; i < count; ++i) {
     const YAML::Node& sn = n[i];
     const std::string path = "sensors[" + std::to_string(i) + "]";
-    auto m = r.mapping(sn, path, {"name", "type", "joint", "point", "axis", "noise_sigma", "seed"});
+    auto m = r.mapping(sn, path, {"name", "type", "instrument", "joint", "point", "axis", "noise_sigma", "seed"});
     SensorSceneSpec s;
     s.name = r.text(r.require(m, sn, path, "name"), path + ".name");
-    const YAML::Node& tn = r.require(m, sn, path, "type");
-    s.type = r.text(tn, path + ".type");
+    if (m.count("instrument")) {
+      const YAML::Node& in = m.at("instrument");
+      s.instrument = r.text(in, path + ".instrument");
+      r.known(in, path + ".instrument", "instrument", s.instrument, scene.instruments);
+      s.type = findInstrument(scene, s.instrument)->spec.kind;
+    }
+    const YAML::Node& tn = m.count("instrument") && !m.count("type") ? m.at("instrument") : r.require(m, sn, path, "type");
+    if (m.count("type")) {
+      const std::string type = r.text(tn, path + ".type");
+      if (!s.type.empty() && type != s.type)
+        r.fail(tn.Mark(), path + ".type: " + type + ", but its instrument " + s.instrument + " is " + withArticle(s.type));
+      s.type = type;
+    }
     if (s.type == "encoder") {
       const YAML::Node& jn = r.require(m, sn, path, "joint");
       s.target = r.text(jn, path + ".joint");
@@ -88,6 +100,7 @@ void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) 
     s.where = r.position(sn.Mark());
     scene.sensors.push_back(s);
   }
+  weldSensorMasses(r, n, scene);
 }
 
 DampingSpec readDamping(const YamlReader& r, const YAML::Node& n) {

@@ -216,7 +216,20 @@ ShakerSceneSpec readShaker(const YamlReader& r, const YAML::Node& n, const Artic
 void readViews(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
 /// Every key of a name->item mapping (each allowed; duplicates are still caught).
 std::vector<std::string> namesOf(const YamlReader& r, const YAML::Node& n, const std::string& path);
+/// "an encoder", "a rate_gyro", "an accelerometer": a sensor type in a sentence.
+inline std::string withArticle(const std::string& type) {
+  return (type.empty() || std::string("aeiou").find(type[0]) == std::string::npos ? "a " : "an ") + type;
+}
+/// sensors: [...] (sim/scene/read_simulation.cpp), after `instruments:`; their masses
+/// welded on the links (weldSensorMasses).
 void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
+/// instruments: {NAME: {type, mass_kg, size_m, axes, range, resolution, band_hz}}: the
+/// catalogue, the report's three first (sim/scene/read_instruments.cpp).
+void readInstruments(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
+/// Each sensor's instrument's mass (a triaxial block's once per point) as a station mass
+/// of its link; a massive sensor off the links (a joint, a hinge) is refused at its entry
+/// in `sensors` (`n`).
+void weldSensorMasses(const YamlReader& r, const YAML::Node& n, ArticleScene& scene);
 /// A named point of the article; the message says how points are named.
 std::string readPoint(const YamlReader& r, const YAML::Node& n, const std::string& path, const ArticleSpec& a);
 /// The same, or a station (sim/scene/stations.hpp): where sensors go.

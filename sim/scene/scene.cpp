@@ -15,6 +15,39 @@ std::string SourceMap::where(const std::string& key) const {
   return file + ":1:1";
 }
 
+std::vector<InstrumentSpec> reportInstruments() {
+  std::vector<InstrumentSpec> out;
+  for (const facility::SensorSpec& spec : {facility::encoderSpec(), facility::rateGyroSpec(), facility::accelerometerSpec()}) {
+    InstrumentSpec i;
+    i.name = spec.kind;
+    i.spec = spec;
+    out.push_back(i);
+  }
+  return out;
+}
+
+const InstrumentSpec* findInstrument(const ArticleScene& scene, const std::string& name) {
+  for (const InstrumentSpec& i : scene.instruments)
+    if (i.name == name) return &i;
+  static const std::vector<InstrumentSpec> report = reportInstruments();
+  for (const InstrumentSpec& i : report)
+    if (i.name == name) return &i;
+  return nullptr;
+}
+
+const InstrumentSpec& instrumentOf(const ArticleScene& scene, const SensorSceneSpec& s) {
+  const InstrumentSpec* i = findInstrument(scene, s.instrument.empty() ? s.type : s.instrument);
+  MMV_DEMAND(i != nullptr && i->spec.kind == s.type);  // the reader matched them
+  return *i;
+}
+
+facility::SensorSpec sensorSpecOf(const ArticleScene& scene, const SensorSceneSpec& s) {
+  facility::SensorSpec spec = instrumentOf(scene, s).spec;
+  spec.noise_sigma = s.noise_sigma;
+  spec.seed = s.seed;
+  return spec;
+}
+
 const std::string& sceneName(const Scene& scene) {
   return std::visit([](const auto& s) -> const std::string& { return s.name; }, scene);
 }

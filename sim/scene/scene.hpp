@@ -19,6 +19,7 @@
 #include "article/article_spec.hpp"
 #include "article/hamsas.hpp"
 #include "facility/lab.hpp"
+#include "facility/sensors.hpp"
 #include "facility/shaker.hpp"
 #include "sim/core/errors.hpp"
 
@@ -63,7 +64,28 @@ struct SensorSceneSpec {
   double noise_sigma = 0;  ///< in the measured unit; 0: none.
   std::uint64_t seed = 1;
   std::string where;   ///< file:line:col, for errors found later.
+  std::string instrument;  ///< its model in the scene's catalogue (`instruments:`); empty: the type's own (the report's)
 };
+
+/// A sensor model of the scene's catalogue (`instruments:`, docs/scene-format.md). The
+/// report's three, named by their types (`encoder`, `rate_gyro`, `accelerometer`), are
+/// always there, any key of theirs overridable; a scene adds others by name and type.
+struct InstrumentSpec {
+  std::string name;
+  /// What the sensor records through: its type (`kind`), range, resolution and band;
+  /// the noise and seed are each sensor's own.
+  facility::SensorSpec spec;
+  /// kg: the housing (with its cable's share and mount), welded on the article at each
+  /// sensor of it in every analysis; 0: massless. The report gives no sensor's mass.
+  double mass_kg = 0;
+  double size_m = 0;  ///< m: the housing's edge, for drawings (0: a glyph)
+  int axes = 1;       ///< 3: a triaxial block, one housing for the three directions at a point
+  std::string where;  ///< file:line:col of its entry ("" for the report's, as built in)
+};
+
+/// The report's instruments (facility/sensors.hpp), massless: the report states
+/// ranges, resolutions and bands, not masses.
+std::vector<InstrumentSpec> reportInstruments();
 
 /// A camera pose for renders (`views:`): looking from `eye` at `target`, `up` up.
 struct CameraView {
@@ -105,6 +127,7 @@ struct ArticleScene {
   std::optional<DampingSpec> damping;  ///< from the scene's `damping:`; commands choose otherwise.
   SimulationSpec simulation;
   std::vector<SensorSceneSpec> sensors;
+  std::vector<InstrumentSpec> instruments;  ///< the catalogue: the report's three (as the scene sets them), then the scene's own
   std::vector<CameraView> views;  ///< named camera poses for `mmvlab render --view NAME`.
   std::optional<facility::LabSpec> lab;  ///< `lab:`: the room, drawn by renders (none: the article alone).
   std::optional<ShakerSceneSpec> shaker;  ///< `shaker:`: the extra shaker (none: the table is the only exciter).
@@ -126,6 +149,15 @@ struct HamsasScene {
 };
 
 using Scene = std::variant<ArticleScene, HamsasScene>;
+
+/// The instrument `name` of the scene's catalogue (the report's three in a scene built
+/// without one), or nullptr.
+const InstrumentSpec* findInstrument(const ArticleScene& scene, const std::string& name);
+/// The instrument sensor `s` records through: its own, else its type's.
+const InstrumentSpec& instrumentOf(const ArticleScene& scene, const SensorSceneSpec& s);
+/// What sensor `s` records through (facility/sensors.hpp): its instrument's spec with
+/// the sensor's noise and seed.
+facility::SensorSpec sensorSpecOf(const ArticleScene& scene, const SensorSceneSpec& s);
 
 /// The name and source of either kind.
 const std::string& sceneName(const Scene& scene);

@@ -98,4 +98,19 @@ std::optional<StationSpec> parseStation(const std::string& name, const ArticleSp
   return s;
 }
 
+std::optional<std::pair<std::string, double>> pointAlongLink(const ArticleSpec& a, const std::string& target, std::string& why) {
+  if (isStationName(target)) {
+    const std::optional<StationSpec> st = parseStation(target, a, why);
+    if (st) return std::make_pair(st->link, st->x);
+    return std::nullopt;
+  }
+  const auto dot = target.rfind('.');
+  const LinkSpec* link = dot == std::string::npos ? nullptr : a.findLink(target.substr(0, dot));
+  const std::string end = dot == std::string::npos ? "" : target.substr(dot + 1);
+  if (link && (end == "tip" || end == "root")) return std::make_pair(link->name, end == "tip" ? link->length : 0.0);
+  why = link ? "'" + target + "' is a point of the mesh, which moves along the link when the segments change: give it as a station"
+             : "'" + target + "' is not on a link (a joint's axis): give a station";
+  return std::nullopt;
+}
+
 }  // namespace mmv

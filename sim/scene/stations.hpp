@@ -15,6 +15,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "sim/scene/scene.hpp"
 
@@ -34,5 +35,11 @@ bool isStationName(const std::string& name);
 /// Parses a station of `article`. On a malformed name, an unknown link or a position
 /// outside the link, returns nothing and sets `error` (one line, with the valid range).
 std::optional<StationSpec> parseStation(const std::string& name, const ArticleSpec& article, std::string& error);
+
+/// Where a point sits along its link, (link, m from its root): a station (its offset
+/// across the section dropped), or a link's root or tip. Nothing, with the reason, for a
+/// point of the mesh (a hinge, which moves along the link when the segments change) or a
+/// joint's axis.
+std::optional<std::pair<std::string, double>> pointAlongLink(const ArticleSpec& article, const std::string& target, std::string& why);
 
 }  // namespace mmv

@@ -138,9 +138,7 @@ void ArticleRecorder::addTipColumns(const ArticleScene& scene) {
 void ArticleRecorder::addSensors(const ArticleScene& scene) {
   const SimulationSpec& spec = scene.simulation;
   for (const auto& ss : scene.sensors) {
-    facility::SensorSpec fs = facility::sensorSpecFor(ss.type);
-    fs.noise_sigma = ss.noise_sigma;
-    fs.seed = ss.seed;
+    const facility::SensorSpec fs = sensorSpecOf(scene, ss);
     if (std::max(fs.high_cut_hz, fs.low_cut_hz) >= 0.5 * spec.sample_rate_hz)
       throw SceneError(ss.where + ": sensor '" + ss.name + "' has a band edge at " + std::to_string(fs.high_cut_hz) +
                        " Hz: simulation.sample_rate_hz must be above twice that (got " +
@@ -160,7 +158,7 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
     live.gyro = ss.type == "rate_gyro";
     const char* unit = ss.type == "encoder" ? "rad" : ss.type == "rate_gyro" ? "rad_per_s" : "m_per_s2";
     r_.record.columns.push_back(ss.name + "_" + unit);
-    r_.sensors.push_back({ss.name, ss.type, unit, 0, 0});
+    r_.sensors.push_back({ss.name, ss.type, unit, 0, 0, fs.range});
     sensors_.push_back(std::move(live));
   }
 }

@@ -57,6 +57,7 @@ struct JointTorqueSummary {
 struct SensorSummary {
   std::string name, type, unit;
   int saturated_samples = 0, samples = 0;
+  double range = 0;  ///< its instrument's full scale, +-, in `unit`
 };
 
 /// A run's error estimated by a companion at a 10x tighter tolerance (sim/time/verify.hpp).

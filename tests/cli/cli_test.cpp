@@ -64,7 +64,7 @@ TEST_F(Cli, EmbeddedSceneIsTheShippedFile) {
 // so the documented example is one that runs (next test).
 TEST_F(Cli, DocumentedExampleIsTheShippedDemo) {
   const std::string doc = slurp(fs::path(MMVLAB_SOURCE_DIR) / "docs" / "scene-format.md");
-  const auto begin = doc.find("```yaml\n");
+  const auto begin = doc.find("```yaml\n", doc.find("## Worked example"));
   ASSERT_NE(begin, std::string::npos);
   const auto end = doc.find("```", begin + 8);
   EXPECT_EQ(doc.substr(begin + 8, end - begin - 8), slurp(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "two-link-demo.yaml"));

@@ -288,9 +288,18 @@ TEST_F(Cli, TheScenesOwnSensorsAreKeptAndCounted) {
     int code;
   };
   EXPECT_EQ(run("place-sensors " + slew + " --segments 4 --modes 1-2 --count 2 --keep-scene-sensors").code, 0);  // the bound: only the scene's
+  // Triaxial: a block at each of the two stations, kept and counted (it failed before:
+  // --triaxial was refused with --keep-scene-sensors).
+  const Result tri = run("place-sensors " + slew + " --segments 8 --count 4 --triaxial --keep-scene-sensors --json");
+  ASSERT_EQ(tri.code, 0) << tri.err;
+  std::set<std::string> blocks;
+  const auto tri_doc = nlohmann::json::parse(tri.out);  // kept alive over the loop
+  for (const auto& c : tri_doc.at("chosen"))
+    if (c.at("fixed").get<int>() == 1) blocks.insert(c.at("station").get<std::string>() + " " + c.at("axis").get<std::string>());
+  EXPECT_EQ(blocks, (std::set<std::string>{"link2@1.52m triaxial", "link3a@0.762m triaxial"}));
   for (const Refusal& b : {Refusal{slew + " --segments 4 --count 1", "--count 1: below the 2 accelerometers of the scene", 64},
                            Refusal{"--segments 4", "--keep-scene-sensors: the scene has no accelerometer to keep", 64},
-                           Refusal{slew + " --segments 4 --triaxial", "it is not built for --triaxial blocks yet", 64},
+                           Refusal{slew + " --segments 4 --triaxial --count 1", "--count 1: below the 2 accelerometers of the scene", 64},
                            Refusal{(fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string(), "applies to the article's scenes", 64}}) {
     const fs::path none = dir_ / "refused";
     const Result e = run("place-sensors " + b.args + " --keep-scene-sensors --out " + none.string());

@@ -90,7 +90,8 @@ TEST(PlacementConstraints, SeparationKeepsTheCountWhenTheGridAllows) {
 }
 
 // The scene's own accelerometers (--keep-scene-sensors) over seeded random requests:
-// every one kept by every method, in its own direction, counted in the count; the
+// every one kept by every method, in its own direction (uniaxial) or as its station's
+// block (triaxial, every other request), counted in the count; the
 // separation and the keep-outs hold for every other chosen station (two of the user's
 // may be closer, and one may sit in a keep-out: they are on the article already).
 TEST(PlacementConstraints, TheScenesSensorsAreAlwaysKept) {
@@ -117,6 +118,7 @@ TEST(PlacementConstraints, TheScenesSensorsAreAlwaysKept) {
     o.modes = modeNumbers({1, 2, 3, 4});
     o.min_separation_m = unit(rng) < 0.3 ? 0.0 : 0.05 + 0.2 * unit(rng);
     o.keep_scene_sensors = true;
+    o.triaxial = trial % 2 == 1;  // a triaxial block at each of the scene's stations
     PlacementStudy s;
     try {
       s = runPlacement(scene, o);
@@ -140,9 +142,9 @@ TEST(PlacementConstraints, TheScenesSensorsAreAlwaysKept) {
     for (const auto& sensor : scene.sensors) {
       const double x = std::strtod(sensor.target.c_str() + sensor.target.find('@') + 1, nullptr);
       const std::string link = sensor.target.substr(0, sensor.target.find('@'));
-      distinct.insert(link + strf("%.6f", x) + axes[sensor.axis]);
+      distinct.insert(link + strf("%.6f", x) + (o.triaxial ? "triaxial" : axes[sensor.axis]));
       EXPECT_TRUE(std::any_of(s.candidates.begin(), s.candidates.end(), [&](const PlacementCandidate& c) {
-        return c.fixed && c.link == link && std::abs(c.x_m - x) < 1e-9 && c.axis == axes[sensor.axis];
+        return c.fixed && c.link == link && std::abs(c.x_m - x) < 1e-9 && c.axis == (o.triaxial ? "triaxial" : axes[sensor.axis]);
       })) << "trial " << trial << ": " << sensor.target;
     }
     EXPECT_EQ(fixed, static_cast<int>(distinct.size())) << "trial " << trial;

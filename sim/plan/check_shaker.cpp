@@ -1,0 +1,121 @@
+// `check`'s shaker lines (scenes with `shaker:`): the extra shaker where the scene attaches
+// it, planned on the scene's own accelerometers (sim/linear/exciter.hpp, as place-sensors
+// plans it on a proposed set): what its armature does to the modes in the band, and
+// whether each of those modes is seen above the sensors' resolution at a dwell level the
+// shaker's force and stroke and the sensors' range allow.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+#include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
+#include "sim/linear/exciter.hpp"
+#include "sim/modes/place_sensors.hpp"
+#include "sim/plan/check_parts.hpp"
+#include "sim/scene/stations.hpp"
+
+namespace mmv::plan {
+
+namespace {
+
+/// The scene's accelerometers' instrument for the levels: their coarsest resolution and
+/// smallest range when they differ (the plan must hold for every sensor). `directions`:
+/// how many distinct measuring directions they make (two at one place and axis are one);
+/// `why` says which one is not on a link.
+InstrumentSpec levelsInstrument(const ArticleScene& scene, int& directions, bool& mixed, std::string& why) {
+  InstrumentSpec out;
+  std::set<std::tuple<std::string, double, int>> distinct;
+  mixed = false;
+  for (const auto& s : scene.sensors) {
+    if (s.type != "accelerometer") continue;
+    std::string reason;
+    const auto at = pointAlongLink(scene.article, s.target, reason);
+    if (!at && why.empty()) why = "sensor " + s.name + " (" + s.where + "): " + reason;
+    if (at) distinct.insert({at->first, at->second, s.axis});
+    const InstrumentSpec& i = instrumentOf(scene, s);
+    if (out.name.empty()) {
+      out = i;
+      continue;
+    }
+    mixed = mixed || i.name != out.name;
+    out.spec.resolution = std::max(out.spec.resolution, i.spec.resolution);
+    out.spec.range = std::min(out.spec.range, i.spec.range);
+  }
+  directions = static_cast<int>(distinct.size());
+  return out;
+}
+
+}  // namespace
+
+void addShakerLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+  const ArticleScene& scene = in.scene;
+  if (!scene.shaker) return;
+  const auto notChecked = [&](const std::string& why) {
+    CheckLine l = makeLine("shaker", "shaker.levels", "the shaker's levels at the scene's accelerometers", 0, 0, "dB", why, 0);
+    l.verdict = Verdict::NotChecked;
+    out.push_back(l);
+  };
+  std::vector<int> targets;
+  for (const ModeInfo& m : in.modes.modes)
+    if (m.stable && !m.rigid_body && m.frequency_hz >= in.options.band_min_hz && m.frequency_hz <= in.options.band_max_hz)
+      targets.push_back(m.number);
+  int accelerometers = 0;
+  bool mixed = false;
+  std::string off_links;
+  const InstrumentSpec instrument = levelsInstrument(scene, accelerometers, mixed, off_links);
+  if (targets.empty()) return notChecked(strf("no vibration mode in %g-%g Hz to excite", in.options.band_min_hz, in.options.band_max_hz));
+  if (instrument.name.empty())
+    return notChecked("the scene has no accelerometer to see the modes: `mmvlab place-sensors` plans the shaker on a proposed set");
+  if (!off_links.empty()) return notChecked(off_links);
+  PlacementOptions o;
+  o.modes = modeNumbers(targets);
+  o.method = PlacementMethod::DrivingPointResidue;  // ranks only: the scene's sensors are the set
+  o.keep_scene_sensors = true;
+  o.count = accelerometers;
+  o.instrument = instrument;
+  ExciterStudy e;
+  try {
+    const PlacementStudy study = runPlacement(scene, o);
+    e = runExciter(scene, study);
+  } catch (const SceneError& err) {  // an undamped article: no level to state
+    return notChecked(err.what());
+  }
+  const std::string where = strf("shaker at %s along [%.3g %.3g %.3g]%s", e.at.c_str(), e.direction[0], e.direction[1], e.direction[2],
+                                 e.chosen ? " (the best-ranked attachment)" : "");
+  // The armature moves with the driving point: its shift of each mode against the 2 %
+  // beyond which the shaker tests another article (the ranking's rule).
+  double worst = 0;
+  int worst_mode = 0;
+  for (const auto& m : e.modes) {
+    const double shift = 100 * std::abs(m.loaded_hz / m.frequency_hz - 1);
+    if (shift >= worst) worst = shift, worst_mode = m.mode.number();
+  }
+  CheckLine shift = makeLine("shaker", "shaker.armature_shift", where + ": the armature's largest shift of a mode in the band", worst,
+                             2.0, "%", strf("mode %d; the %.3g kg armature moves with the driving point", worst_mode, e.hardware.armature_mass), 0);
+  if (shift.verdict == Verdict::Fail) {
+    shift.verdict = Verdict::Warn;
+    shift.note += ": the test sees the article with the shaker on it (place-sensors ranks the attachments)";
+  }
+  out.push_back(shift);
+  for (const auto& m : e.modes) {
+    CheckLine l = makeLine("shaker", strf("shaker.mode%d", m.mode.number()),
+                           strf("mode %d (%.4g Hz) seen above the resolution under a sine dwell", m.mode.number(), m.frequency_hz),
+                           kSeenSnrDb, m.sine_snr_db, "dB",
+                           strf("at %.3g N (set by %s), best %s, %d of %d sensors seen, stroke %.3g mm; random: %.1f dB", m.sine_force_n,
+                                m.sine_limit.c_str(), m.best_channel.c_str(), m.channels_seen, accelerometers, 1e3 * m.sine_stroke_m,
+                                m.random_snr_db),
+                           0);
+    // The demand is a floor here, the margin over it: seen (>= 20 dB) passes, under it
+    // warns (a signal under the resolution, SNR <= 0 dB, included).
+    l.capacity = m.sine_snr_db;
+    l.has_capacity = true;
+    l.margin_pct = (m.sine_snr_db - kSeenSnrDb) / kSeenSnrDb * 100;
+    l.verdict = m.seen ? Verdict::Pass : Verdict::Warn;
+    if (!m.seen) l.note += ": a stronger point, another direction or finer sensors";
+    if (mixed) l.note += "; levels for the coarsest resolution and smallest range of the scene's accelerometers";
+    out.push_back(l);
+  }
+}
+
+}  // namespace mmv::plan
