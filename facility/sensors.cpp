@@ -14,6 +14,7 @@ constexpr double kG = 9.80665;
 SensorSpec encoderSpec() { return {"encoder", 45 * kDeg, kDeg / 3600.0, 0, 0, 0, 1}; }
 SensorSpec rateGyroSpec() { return {"rate_gyro", 70 * kDeg, 25e-3 * kDeg, 0, 100.0, 0, 1}; }
 SensorSpec accelerometerSpec() { return {"accelerometer", 5 * kG, 0.001 * kG, 0.1, 50.0, 0, 1}; }
+SensorSpec strainSpec() { return {"strain", 1e-3, 1e-8, 0.1, 50.0, 0, 1}; }
 
 Biquad::Biquad(bool high_pass, double fc, double fs) : fs_(fs) {
   // Bilinear transform of H(s) = 1 / (s^2/wc^2 + sqrt(2) s/wc + 1) (or s^2/wc^2 over it),
@@ -43,7 +44,10 @@ double Biquad::step(double x) {
 }
 
 SensorSpec sensorSpecFor(const std::string& type) {
-  return type == "encoder" ? encoderSpec() : type == "rate_gyro" ? rateGyroSpec() : accelerometerSpec();
+  return type == "encoder"     ? encoderSpec()
+         : type == "rate_gyro" ? rateGyroSpec()
+         : type == "strain"    ? strainSpec()
+                               : accelerometerSpec();
 }
 
 double Biquad::prime(double x) {

@@ -21,7 +21,7 @@
 namespace mmv::facility {
 
 struct SensorSpec {
-  std::string kind;          ///< "encoder", "rate_gyro", "accelerometer".
+  std::string kind;          ///< "encoder", "rate_gyro", "accelerometer", "strain".
   double range = 0;          ///< full scale, +-, in the measured unit (> 0).
   double resolution = 0;     ///< quantization step (>= 0; 0: none).
   double low_cut_hz = 0;     ///< high-pass corner (0: none).
@@ -40,7 +40,14 @@ SensorSpec rateGyroSpec();
 /// Accelerometer: 0.001 g resolution, +-5 g range, 0.1-50 Hz band.
 SensorSpec accelerometerSpec();
 
-/// The spec of a sensor type: "encoder", "rate_gyro", else the accelerometer's.
+/// Piezoelectric film (or strain gauge) reading the mean bending strain over its span,
+/// m/m: the report proposes the film on link 3 without figures, so all of these are
+/// ASSUMED: +-1e-3 (1000 microstrain) range, 1e-8 resolution, and a film's charge
+/// amplifier band, 0.1-50 Hz (a film does not hold a static strain; a gauge's
+/// instrument sets band_hz: [0, ...]).
+SensorSpec strainSpec();
+
+/// The spec of a sensor type: "encoder", "rate_gyro", "strain", else the accelerometer's.
 SensorSpec sensorSpecFor(const std::string& type);
 
 /// A second-order Butterworth section, low- or high-pass, at sample rate fs.

@@ -62,25 +62,13 @@ OutputSpec strainOutput(const ArticleScene& scene, const std::string& text, cons
                         const std::string& what) {
   if (scene.article.model != ArticleModel::Planar)
     throw UsageError(what + ": a strain output is built for the planar model only (its in-plane bending)");
-  std::string error;
-  std::optional<StationSpec> sa, sb;
-  for (const auto& [name, spec] : {std::pair{&a, &sa}, std::pair{&b, &sb}}) {
-    if (!isStationName(*name)) throw UsageError(what + ": a strain spans two stations of one link, e.g. strain:link3a@0.1m:link3a@0.3m (got '" + *name + "')");
-    *spec = parseStation(*name, scene.article, error);
-    if (!*spec) throw UsageError(what + ": " + error);
-    if ((*spec)->offset != 0 || (*spec)->offset_z != 0) throw UsageError(what + ": give the stations on the link's axis, without an offset ('" + *name + "'); the face is the section's");
-  }
-  if (sa->link != sb->link) throw UsageError(what + ": both stations must be on one link (got " + sa->link + " and " + sb->link + ")");
-  if (std::abs(sb->x - sa->x) < 1e-6) throw UsageError(what + ": the span is empty: give two different stations");
-  const LinkSpec& link = *scene.article.findLink(sa->link);
-  if (link.rigid) throw UsageError(what + ": " + link.name + " is rigid (segments: rigid): it does not bend");
-  const Section& s = *scene.article.findSection(link.section);
-  const double c = s.shape == SectionShape::RoundRod ? s.radius : s.shape == SectionShape::Explicit ? 0.0 : 0.5 * s.h;
-  if (!(c > 0)) throw UsageError(what + ": section '" + s.name + "' of " + link.name + " gives no depth (an explicit section): give its shape");
+  std::string why;
+  const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why);
+  if (!span) throw UsageError(what + ": " + why);
   OutputSpec o{text, OutputKind::Displacement, a, 5, false};
   o.span_end = b;
-  o.surface_m = c;
-  o.span_m = sb->x - sa->x;
+  o.surface_m = span->surface_m;
+  o.span_m = span->x_b - span->x_a;
   return o;
 }
 

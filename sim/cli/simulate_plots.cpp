@@ -93,6 +93,7 @@ std::string readableRange(double range, const std::string& unit) {
   if (unit == "rad") return strf("+-%.3g deg", range * 180 / M_PI);
   if (unit == "rad_per_s") return strf("+-%.3g deg/s", range * 180 / M_PI);
   if (unit == "m_per_s2") return strf("+-%.3g g", range / 9.80665);
+  if (unit == "m_per_m") return strf("+-%.4g microstrain", range * 1e6);
   return strf("+-%.3g %s", range, unit.c_str());
 }
 

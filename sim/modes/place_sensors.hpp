@@ -47,7 +47,7 @@ struct PlacementOptions {
   bool keep_scene_sensors = false;
   /// The sensor placed (its range and resolution for the exciter's levels); its mass is
   /// `sensor_mass_kg`'s business (the front end sets it from this one's).
-  InstrumentSpec instrument = reportInstruments().back();
+  InstrumentSpec instrument = reportInstrument("accelerometer");
   /// With `sensor_mass_kg` > 0: placed again on the model that carries the chosen set
   /// until a set carries itself (at most kMaxLoadedIterations passes).
   bool iterate_loaded = false;

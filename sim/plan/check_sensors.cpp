@@ -24,6 +24,7 @@ constexpr double kEdge = 0.98;  ///< a peak within 2 % of the range is at its ed
 std::pair<double, std::string> displayUnit(const std::string& type) {
   if (type == "encoder") return {kRadToDeg, "deg"};
   if (type == "rate_gyro") return {kRadToDeg, "deg/s"};
+  if (type == "strain") return {1e6, "microstrain"};
   return {1.0, "m/s^2"};
 }
 
@@ -59,6 +60,13 @@ void addRunLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const auto& cols = r.record.columns;
     const auto summary = std::find_if(r.sensors.begin(), r.sensors.end(), [&](const SensorSummary& x) { return x.name == s.name; });
     if (summary == r.sensors.end()) continue;
+    if (s.type == "strain") {  // rigid links do not bend
+      CheckLine l = sensorLine(in.scene, s, "run", "during the scene's run", 0, 0, "rigid links do not bend: `mmvlab simulate` gives its reading");
+      l.verdict = Verdict::NotChecked;
+      l.note = "rigid links do not bend: `mmvlab simulate` gives its reading";
+      out.push_back(l);
+      continue;
+    }
     const auto col = std::find(cols.begin(), cols.end(), s.name + "_" + summary->unit) - cols.begin();
     double peak = 0;
     for (const auto& row : r.record.rows) peak = std::max(peak, std::abs(row[col]));

@@ -10,7 +10,7 @@
 namespace mmv::scene_detail {
 namespace {
 
-const std::vector<std::string> kSensorTypes = {"encoder", "rate_gyro", "accelerometer"};
+const std::vector<std::string> kSensorTypes = {"encoder", "rate_gyro", "accelerometer", "strain"};
 
 double within(const YamlReader& r, const YAML::Node& n, const std::string& path, double lo, double hi, const char* unit) {
   const double v = r.number(n, path);
@@ -21,7 +21,7 @@ double within(const YamlReader& r, const YAML::Node& n, const std::string& path,
 
 /// The unit a sensor type measures in (its range and resolution are in it).
 const char* measuredUnit(const std::string& type) {
-  return type == "encoder" ? " rad" : type == "rate_gyro" ? " rad/s" : " m/s^2";
+  return type == "encoder" ? " rad" : type == "rate_gyro" ? " rad/s" : type == "strain" ? " m/m" : " m/s^2";
 }
 
 /// The keys of one entry over `i` (the report's instrument it starts from).
@@ -100,7 +100,8 @@ void weldSensorMasses(const YamlReader& r, const YAML::Node& n, ArticleScene& sc
     const InstrumentSpec& i = instrumentOf(scene, s);
     if (i.mass_kg == 0) continue;
     std::string why;
-    const auto at = pointAlongLink(scene.article, s.target, why);
+    auto at = pointAlongLink(scene.article, s.target, why);
+    if (at && !s.span_end.empty()) at->second += 0.5 * s.span_m;  // a film's mass at its span's middle
     if (!at)
       r.fail(n[k].Mark(), "sensors[" + std::to_string(k) + "] (" + s.name + "): its instrument " + i.name + " weighs " +
                               strf("%g", i.mass_kg) + " kg, welded on the article where it sits, and " + why);

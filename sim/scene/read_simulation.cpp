@@ -1,6 +1,7 @@
 // Scene sections: simulation settings, sensors, damping.
 #include "sim/core/integrators.hpp"
 #include "sim/scene/reader_util.hpp"
+#include "sim/scene/stations.hpp"
 
 namespace mmv::scene_detail {
 
@@ -49,13 +50,33 @@ SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n) {
   return s;
 }
 
+namespace {
+
+/// span: [A, B]: a strain sensor's two stations (sim/scene/stations.hpp StrainSpan).
+void readStrainSpan(const YamlReader& r, const YAML::Node& sp, const std::string& path, const ArticleSpec& article, SensorSceneSpec& s) {
+  if (!sp.IsSequence() || sp.size() != 2)
+    r.fail(sp.Mark(), path + ".span must be [STATION, STATION], two stations of one link (got " + YamlReader::show(sp) + ")");
+  if (article.model != ArticleModel::Planar)
+    r.fail(sp.Mark(), path + ".span: a strain sensor reads the in-plane bending of the planar model (this article is spatial)");
+  const std::string a = r.text(sp[0], path + ".span[0]"), b = r.text(sp[1], path + ".span[1]");
+  std::string why;
+  const std::optional<StrainSpan> span = strainSpan(article, a, b, why);
+  if (!span) r.fail(sp.Mark(), path + ".span: " + why);
+  s.target = a;
+  s.span_end = b;
+  s.surface_m = span->surface_m;
+  s.span_m = span->x_b - span->x_a;
+}
+
+}  // namespace
+
 void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) {
   if (scene.instruments.empty()) scene.instruments = reportInstruments();
   const std::size_t count = r.sequence(n, "sensors");
   for (std::size_t i = 0; i < count; ++i) {
     const YAML::Node& sn = n[i];
     const std::string path = "sensors[" + std::to_string(i) + "]";
-    auto m = r.mapping(sn, path, {"name", "type", "instrument", "joint", "point", "axis", "noise_sigma", "seed"});
+    auto m = r.mapping(sn, path, {"name", "type", "instrument", "joint", "point", "span", "axis", "noise_sigma", "seed"});
     SensorSceneSpec s;
     s.name = r.text(r.require(m, sn, path, "name"), path + ".name");
     if (m.count("instrument")) {
@@ -71,7 +92,12 @@ void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) 
         r.fail(tn.Mark(), path + ".type: " + type + ", but its instrument " + s.instrument + " is " + withArticle(s.type));
       s.type = type;
     }
-    if (s.type == "encoder") {
+    if (m.count("span") && s.type != "strain") r.fail(m.at("span").Mark(), path + ".span applies only to strain sensors");
+    if (s.type == "strain") {
+      readStrainSpan(r, r.require(m, sn, path, "span"), path, scene.article, s);
+      if (m.count("point") || m.count("joint") || m.count("axis"))
+        r.fail(sn.Mark(), path + ": a strain sensor reads its span (span: [STATION, STATION]), not a point, joint or axis");
+    } else if (s.type == "encoder") {
       const YAML::Node& jn = r.require(m, sn, path, "joint");
       s.target = r.text(jn, path + ".joint");
       r.known(jn, path + ".joint", "joint", s.target, scene.article.joints);
@@ -93,7 +119,7 @@ void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) 
                                           " the " + a + " axis reads motion out of the plane: it needs model: spatial");
       }
     } else {
-      r.fail(tn.Mark(), path + ".type: unknown sensor '" + s.type + "' (known: encoder, rate_gyro, accelerometer)");
+      r.fail(tn.Mark(), path + ".type: unknown sensor '" + s.type + "' (known: encoder, rate_gyro, accelerometer, strain)");
     }
     if (m.count("noise_sigma")) s.noise_sigma = r.nonNegative(m.at("noise_sigma"), path + ".noise_sigma", "");
     if (m.count("seed")) s.seed = static_cast<std::uint64_t>(r.integer(m.at("seed"), path + ".seed"));

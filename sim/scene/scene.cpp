@@ -17,13 +17,21 @@ std::string SourceMap::where(const std::string& key) const {
 
 std::vector<InstrumentSpec> reportInstruments() {
   std::vector<InstrumentSpec> out;
-  for (const facility::SensorSpec& spec : {facility::encoderSpec(), facility::rateGyroSpec(), facility::accelerometerSpec()}) {
+  for (const facility::SensorSpec& spec :
+       {facility::encoderSpec(), facility::rateGyroSpec(), facility::accelerometerSpec(), facility::strainSpec()}) {
     InstrumentSpec i;
     i.name = spec.kind;
     i.spec = spec;
     out.push_back(i);
   }
   return out;
+}
+
+InstrumentSpec reportInstrument(const std::string& type) {
+  for (const InstrumentSpec& i : reportInstruments())
+    if (i.name == type) return i;
+  MMV_DEMAND(!"a sensor type");
+  return {};
 }
 
 const InstrumentSpec* findInstrument(const ArticleScene& scene, const std::string& name) {

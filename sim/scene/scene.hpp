@@ -65,6 +65,11 @@ struct SensorSceneSpec {
   std::uint64_t seed = 1;
   std::string where;   ///< file:line:col, for errors found later.
   std::string instrument;  ///< its model in the scene's catalogue (`instruments:`); empty: the type's own (the report's)
+  /// A strain sensor's span (`span: [A, B]`, sim/scene/stations.hpp StrainSpan): `target`
+  /// is station A, `span_end` station B; its mean surface strain is
+  /// -surface_m (theta_B - theta_A) / span_m.
+  std::string span_end;
+  double surface_m = 0, span_m = 0;
 };
 
 /// A sensor model of the scene's catalogue (`instruments:`, docs/scene-format.md). The
@@ -84,8 +89,10 @@ struct InstrumentSpec {
 };
 
 /// The report's instruments (facility/sensors.hpp), massless: the report states
-/// ranges, resolutions and bands, not masses.
+/// ranges, resolutions and bands, not masses; the strain film's are assumed.
 std::vector<InstrumentSpec> reportInstruments();
+/// The report's instrument of a sensor type (as built in).
+InstrumentSpec reportInstrument(const std::string& type);
 
 /// A camera pose for renders (`views:`): looking from `eye` at `target`, `up` up.
 struct CameraView {

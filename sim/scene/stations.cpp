@@ -98,6 +98,42 @@ std::optional<StationSpec> parseStation(const std::string& name, const ArticleSp
   return s;
 }
 
+std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::string& a, const std::string& b, std::string& why) {
+  std::optional<StationSpec> sa, sb;
+  for (const auto& [name, spec] : {std::pair{&a, &sa}, std::pair{&b, &sb}}) {
+    if (!isStationName(*name)) {
+      why = "a strain spans two stations of one link, e.g. link3a@0.1m and link3a@0.3m (got '" + *name + "')";
+      return std::nullopt;
+    }
+    *spec = parseStation(*name, article, why);
+    if (!*spec) return std::nullopt;
+    if ((*spec)->offset != 0 || (*spec)->offset_z != 0) {
+      why = "give the stations on the link's axis, without an offset ('" + *name + "'); the face is the section's";
+      return std::nullopt;
+    }
+  }
+  if (sa->link != sb->link) {
+    why = "both stations must be on one link (got " + sa->link + " and " + sb->link + ")";
+    return std::nullopt;
+  }
+  if (std::abs(sb->x - sa->x) < 1e-6) {
+    why = "the span is empty: give two different stations";
+    return std::nullopt;
+  }
+  const LinkSpec& link = *article.findLink(sa->link);
+  if (link.rigid) {
+    why = link.name + " is rigid (segments: rigid): it does not bend";
+    return std::nullopt;
+  }
+  const Section& s = *article.findSection(link.section);
+  const double c = s.shape == SectionShape::RoundRod ? s.radius : s.shape == SectionShape::Explicit ? 0.0 : 0.5 * s.h;
+  if (!(c > 0)) {
+    why = "section '" + s.name + "' of " + link.name + " gives no depth (an explicit section): give its shape";
+    return std::nullopt;
+  }
+  return StrainSpan{sa->link, sa->x, sb->x, c};
+}
+
 std::optional<std::pair<std::string, double>> pointAlongLink(const ArticleSpec& a, const std::string& target, std::string& why) {
   if (isStationName(target)) {
     const std::optional<StationSpec> st = parseStation(target, a, why);

@@ -36,6 +36,18 @@ bool isStationName(const std::string& name);
 /// outside the link, returns nothing and sets `error` (one line, with the valid range).
 std::optional<StationSpec> parseStation(const std::string& name, const ArticleSpec& article, std::string& error);
 
+/// A bending strain gauge's or piezo film's span: two stations on one flexible link's
+/// axis, and the distance `surface_m` of the section's face from its neutral axis (half
+/// the depth in the plane, or the rod's radius). Its mean surface strain is
+/// -surface_m (theta_b - theta_a) / (x_b - x_a) for the in-plane rotations theta.
+struct StrainSpan {
+  std::string link;
+  double x_a = 0, x_b = 0, surface_m = 0;
+};
+/// Nothing, with the reason, for a station with an offset, two links, an empty span, a
+/// rigid link or a section without depth (an explicit one).
+std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::string& a, const std::string& b, std::string& why);
+
 /// Where a point sits along its link, (link, m from its root): a station (its offset
 /// across the section dropped), or a link's root or tip. Nothing, with the reason, for a
 /// point of the mesh (a hinge, which moves along the link when the segments change) or a

@@ -29,6 +29,8 @@ struct LiveSensor {
   std::optional<PointRef> point;      ///< gyro, accelerometer: a named point or a station.
   int axis = 0;
   bool gyro = false;
+  std::optional<PointRef> span_end;   ///< strain: station B (`point` is A)
+  double strain_scale = 0;            ///< strain: -surface / span
 };
 
 /// The columns of an article's run and the row at each sample (see simulation.hpp).
@@ -156,7 +158,16 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
       throw SceneError(ss.where + ": sensor '" + ss.name + "': '" + ss.target + "' does not exist in the model");
     live.axis = ss.axis;
     live.gyro = ss.type == "rate_gyro";
-    const char* unit = ss.type == "encoder" ? "rad" : ss.type == "rate_gyro" ? "rad_per_s" : "m_per_s2";
+    if (ss.type == "strain") {
+      std::string error;
+      live.span_end = PointRef::resolve(model_, scene.article, ss.span_end, error);
+      if (!live.span_end) throw SceneError(ss.where + ": sensor '" + ss.name + "': " + error);
+      live.strain_scale = -ss.surface_m / ss.span_m;
+    }
+    const char* unit = ss.type == "encoder"     ? "rad"
+                       : ss.type == "rate_gyro" ? "rad_per_s"
+                       : ss.type == "strain"    ? "m_per_m"
+                                                : "m_per_s2";
     r_.record.columns.push_back(ss.name + "_" + unit);
     r_.sensors.push_back({ss.name, ss.type, unit, 0, 0, fs.range});
     sensors_.push_back(std::move(live));
@@ -166,6 +177,13 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
 double ArticleRecorder::sensorTruth(const LiveSensor& live, const SimTK::State& st) const {
   if (live.joint >= 0) return st.getQ()[model_.getQIndex(live.joint)];
   if (live.gyro) return live.point->angularRate(st, live.axis);
+  if (live.span_end) {
+    // The mean curvature over the span times the face's distance: the in-plane turn of
+    // the axis from A to B (exact for any rotation, as the linear model's theta_B -
+    // theta_A is to first order).
+    const SimTK::Vec3 a = live.point->localAxis(st, 0), b = live.span_end->localAxis(st, 0);
+    return live.strain_scale * std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
+  }
   const SimTK::Vec3 f_W = live.point->acceleration(st) - model_.getGravity();  // specific force
   return ~f_W * live.point->localAxis(st, live.axis);
 }

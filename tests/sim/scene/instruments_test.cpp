@@ -45,9 +45,9 @@ const std::vector<std::pair<double, double>>& stationMasses(const ArticleScene& 
   return s.article.findLink(link)->station_masses;
 }
 
-TEST(Instruments, TheReportsThreeAreThereAndMassless) {
+TEST(Instruments, TheReportsAreThereAndMassless) {
   const ArticleScene s = parse(slewText());
-  for (const char* name : {"encoder", "rate_gyro", "accelerometer"}) {
+  for (const char* name : {"encoder", "rate_gyro", "accelerometer", "strain"}) {
     const InstrumentSpec* i = findInstrument(s, name);
     ASSERT_NE(i, nullptr) << name;
     const facility::SensorSpec report = facility::sensorSpecFor(name);
@@ -100,6 +100,11 @@ TEST(Instruments, ATriaxialBlockWeighsOncePerPoint) {
   const double tip = s.article.findLink("link1")->length;
   // One block at mid-length; two uniaxial housings at the tip.
   EXPECT_EQ(stationMasses(s, "link1"), (std::vector<std::pair<double, double>>{{half, 0.012}, {tip, 0.004}, {tip, 0.004}}));
+  // A film's mass at its span's middle, whichever way the span is written.
+  const ArticleScene f = parse(withCatalogue("instruments:\n  strain: {mass_kg: 0.001}\n",
+                                             "  - {name: f, type: strain, span: [link2@0.6m, link2@0.2m]}\n"));
+  ASSERT_EQ(stationMasses(f, "link2").size(), 1u);
+  EXPECT_NEAR(stationMasses(f, "link2")[0].first, 0.4, 1e-12);
 }
 
 TEST(Instruments, BadEntriesAreRefusedAtTheirKeys) {
