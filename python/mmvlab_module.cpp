@@ -55,13 +55,15 @@ PyScene loadScene(const std::optional<std::string>& path, const std::vector<std:
   return PyScene{std::move(l.scene), std::move(l.warnings), std::move(l.request)};
 }
 
-py::tuple modes(const PyScene& scene, int segments, int count, const std::vector<std::string>& points, bool error_estimate,
-                double target_error, double time_budget, py::object progress) {
+py::tuple modes(const PyScene& scene, int segments, int count, const std::vector<std::string>& points,
+                const std::vector<std::string>& strains, bool error_estimate, double target_error, double time_budget,
+                py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   const mmv::Scene& sc = prepared.scene;
   mmv::app::ModesRequest r;
   r.modes = count;
   r.points = points;
+  r.strains = strains;
   r.error_estimate = error_estimate;
   r.target_error = target_error;
   r.time_budget = time_budget;
@@ -407,7 +409,8 @@ PYBIND11_MODULE(_mmvlab, m) {
       .def_readonly("warnings", &PyScene::warnings);
   m.def("load_scene", &loadScene, py::arg("path"), py::arg("sets"), py::arg("segments"), py::arg("no_gravity"),
         py::arg("strict"));
-  m.def("modes", &modes, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("points"), py::arg("error_estimate"),
+  m.def("modes", &modes, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("points"), py::arg("strains"),
+        py::arg("error_estimate"),
         py::arg("target_error"), py::arg("time_budget"), py::arg("progress"));
   m.def("linear", &linear, py::arg("scene"), py::arg("segments"), py::arg("inputs"), py::arg("outputs"), py::arg("f_min"),
         py::arg("f_max"), py::arg("points"), py::arg("rom_modes"), py::arg("band"), py::arg("residualize"), py::arg("damping"),

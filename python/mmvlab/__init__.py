@@ -260,10 +260,14 @@ def mode_fields():
     return _mmvlab.mode_fields()
 
 
-def modes(scene, *, segments=0, modes=12, points=(), error_estimate=True, target_error=0.0, time_budget=0.0,
+def modes(scene, *, segments=0, modes=12, points=(), strains=(), error_estimate=True, target_error=0.0, time_budget=0.0,
           progress=None):
-    """`mmvlab modes`: the system modes about the held equilibrium (0 modes: all)."""
-    json_text, text, csv, warns = _mmvlab.modes(scene, int(segments), int(modes), list(points), bool(error_estimate),
+    """`mmvlab modes`: the system modes about the held equilibrium (0 modes: all); `strains`:
+    "A:B" spans whose modal strain each mode reports (`--strain`, JSON `modes[].strains`)."""
+    if isinstance(strains, str):
+        strains = [strains]
+    json_text, text, csv, warns = _mmvlab.modes(scene, int(segments), int(modes), list(points), [str(s) for s in strains],
+                                                bool(error_estimate),
                                                 float(target_error), float(time_budget), progress)
     _warn(warns)
     return ModesResult(json_text, text, csv)

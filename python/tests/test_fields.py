@@ -192,3 +192,14 @@ def test_place_sensors_with_an_instrument_iterated_as_the_cli():
     assert [f["key"] for f in mmvlab.fields("mass_loading_iterations")] == ["pass", "changed", "settled", "repeats"]
     with pytest.raises(mmvlab.UsageError, match="instrument='accelerometr'|unknown instrument 'accelerometr'"):
         mmvlab.place_sensors(scene, segments=8, count=8, instrument="accelerometr")
+
+
+def test_modes_strains_as_the_cli():
+    span = "link3a@0.1m:link3a@0.5m"
+    m = mmvlab.modes(mmvlab.load_scene(), segments=4, modes=3, strains=span, error_estimate=False)
+    cli = subprocess.run([MMVLAB, "modes", "--segments", "4", "--modes", "3", "--no-error-estimate", "--strain", span, "--json"],
+                         capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    assert [x["strains"] for x in m.json["modes"]] == [x["strains"] for x in json.loads(cli.stdout)["modes"]]
+    with pytest.raises(mmvlab.UsageError, match="the span is empty"):
+        mmvlab.modes(mmvlab.load_scene(), segments=4, strains="link3a@0.1m:link3a@0.1m")

@@ -10,6 +10,7 @@
 #include "sim/io/report.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/plan/check.hpp"
+#include "sim/scene/stations.hpp"
 
 namespace mmv::app {
 
@@ -45,6 +46,19 @@ ModesStudy articleModes(ArticleScene scene, const ModesRequest& r) {
   opt.max_modes = r.modes;
   opt.with_shapes = true;  // the JSON on stdout and in --out is one object: shapes in both
   opt.points = checkedPoints(r.points, scene.article, optionName(r.front, "--points"));
+  for (const std::string& text : r.strains) {
+    const std::string what = optionName(r.front, "--strain") + " " + text;
+    const auto colon = text.find(':');
+    if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
+      throw UsageError(what + ": expected A:B, two stations of one link, e.g. link3a@0.1m:link3a@0.5m");
+    if (scene.article.model != ArticleModel::Planar)
+      throw UsageError(what + ": a strain is built for the planar model only (its in-plane bending)");
+    std::string why;
+    const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
+    const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why);
+    if (!span) throw UsageError(what + ": " + why);
+    opt.strains.push_back({text, a, b, span->surface_m, span->x_b - span->x_a});
+  }
   opt.damping = scene.damping;
   ModesReport rep = runModes(scene, opt);
   if (r.error_estimate) rep.discretization = estimateDiscretization(scene, rep);
@@ -69,6 +83,7 @@ ModesStudy runModesStudy(const Scene& scene, const ModesRequest& r) {
   } else {
     const auto& h = std::get<HamsasScene>(scene);
     if (!r.points.empty()) throw UsageError(optionName(r.front, "--points") + " applies to the article's scenes");
+    if (!r.strains.empty()) throw UsageError(optionName(r.front, "--strain") + " applies to the article's scenes");
     const HamsasModes m = analyseHamsas(h.isolator);
     s.json = hamsasModesJson(h, m, r.modes);
     s.text = hamsasModesText(h, m, r.modes);

@@ -16,6 +16,7 @@ namespace mmv::app {
 struct ModesRequest {
   int modes = 12;                   ///< modes to report; 0 = all.
   std::vector<std::string> points;  ///< named points or stations whose shapes are tabulated.
+  std::vector<std::string> strains;  ///< "A:B" spans (two stations of one link) whose modal strain is tabulated
   bool error_estimate = true;       ///< each mode's discretization error (the scene again at segments / 2 and / 4)
   double target_error = 0;          ///< > 0: the segments chosen for this relative frequency error
   double time_budget = 0;           ///< s; > 0: the target's choice within it

@@ -54,6 +54,7 @@ struct ModesArgs : SceneArgs {
   bool json = false;
   int modes = 12;  ///< modes to report; 0 = all.
   std::vector<std::string> points;  ///< named points or stations whose shapes are tabulated.
+  std::vector<std::string> strains;  ///< A:B spans whose modal strain is tabulated (--strain)
   bool no_error_estimate = false;   ///< skip the coarser solutions (estimateDiscretization)
   double target_error = 0;          ///< > 0: choose the segments for this relative frequency error (segmentsForTarget)
   double time_budget = 0;           ///< s; > 0: --target-error within it

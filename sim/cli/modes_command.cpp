@@ -51,6 +51,7 @@ int runModesCommand(const ModesArgs& args) {
     app::ModesRequest r;
     r.modes = args.modes;
     r.points = args.points;
+    r.strains = args.strains;
     r.error_estimate = !args.no_error_estimate;
     r.target_error = args.target_error;
     r.time_budget = args.time_budget;

@@ -40,6 +40,11 @@ json modeJson(const ModesReport& r, const ModeInfo& m) {
     }
     mj["at_points"] = at;
   }
+  if (!m.strains.empty()) {
+    json st = json::array();
+    for (const auto& g : m.strains) st.push_back({{"span", g.span}, {"strain_per_modal_unit", g.strain}});
+    mj["strains"] = st;
+  }
   return mj;
 }
 

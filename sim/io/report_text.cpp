@@ -120,6 +120,14 @@ std::string formatModesText(const ModesReport& r) {
       }
     os << t.text();
   }
+  if (!r.modes.empty() && !r.modes.front().strains.empty()) {
+    os << "\nModal strain over the spans asked for (mean surface strain, -c (theta_B - theta_A) / span, per unit modal\n"
+          "coordinate of the mass-normalised shape: kg^-1/2)\n";
+    Table t({"mode", "span", "strain_per_modal_unit"});
+    for (const auto& m : r.modes)
+      for (const auto& g : m.strains) t.add({std::to_string(m.number), g.span, strf("%.6g", g.strain)});
+    os << t.text();
+  }
   os << strf("\nChecks: eigen residual %.1e, M-orthogonality error %.1e, stiffness asymmetry %.1e\n", r.eigen_residual,
             r.orthogonality_error, r.stiffness_asymmetry);
   for (const auto& w : r.warnings) os << "warning: " << w << '\n';

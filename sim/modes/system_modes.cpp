@@ -325,6 +325,25 @@ void checkReportedModes(const SolvedScene& s, int count, ModesReport& rep) {
 
 }  // namespace
 
+namespace {
+
+/// Each span's strain per unit coordinate, -c / span (theta_B - theta_A): frf's strain
+/// output row (sim/linear/state_space.hpp).
+std::vector<Eigen::RowVectorXd> strainRows(const ArticleScene& scene, const Model& model, const SimTK::State& eqs,
+                                           const std::vector<int>& dofs, const std::vector<StrainGaugeSpec>& spans) {
+  std::vector<Eigen::RowVectorXd> rows;
+  for (const auto& g : spans) {
+    std::string error;
+    const std::optional<PointRef> a = PointRef::resolve(model, scene.article, g.a, error),
+                                  b = PointRef::resolve(model, scene.article, g.b, error);
+    MMV_DEMAND(a && b && g.span_m != 0 && g.surface_m > 0);  // checked by the front end
+    rows.push_back(-g.surface_m / g.span_m * (b->rotationJacobian(eqs, dofs).row(2) - a->rotationJacobian(eqs, dofs).row(2)));
+  }
+  return rows;
+}
+
+}  // namespace
+
 ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   ModesReport rep;
   rep.scene_name = scene.name;
@@ -361,6 +380,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     point_rows.push_back(p->translationJacobian(eqs, dofs, model.isSpatial() ? 3 : 2));
     at_points.push_back(*p);
   }
+  const std::vector<Eigen::RowVectorXd> strain_rows = strainRows(scene, model, eqs, dofs, options.strains);
   rep.stiffness_asymmetry = s.linearized.asymmetry;
   const int n = static_cast<int>(s.modes.omega2.size());
   const int count = options.max_modes > 0 ? std::min(options.max_modes, n) : n;
@@ -396,6 +416,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
       const Eigen::VectorXd u = point_rows[p] * phi;
       m.at_points.push_back({at_points[p].name(), u[0], u[1], u.size() > 2 ? u[2] : 0.0, 0.0, false});
     }
+    for (std::size_t g = 0; g < strain_rows.size(); ++g) m.strains.push_back({options.strains[g].name, strain_rows[g].dot(phi)});
     rep.modes.push_back(std::move(m));
   }
   rep.spatial = model.isSpatial();

@@ -50,6 +50,20 @@ struct PointMotion {
   bool has_rotation = false;
 };
 
+/// A strain gauge's or film's span (ModesOptions::strains): its two stations, the face's
+/// distance c from the neutral axis and the span x_B - x_A (sim/scene/stations.hpp).
+struct StrainGaugeSpec {
+  std::string name;  ///< "A:B", as asked for
+  std::string a, b;
+  double surface_m = 0, span_m = 0;
+};
+/// A mode's mean surface strain over a span, -c (theta_B - theta_A) / span per unit modal
+/// coordinate of the mass-normalised shape (kg^-1/2; frf's strain output, mode by mode).
+struct ModalStrain {
+  std::string span;
+  double strain = 0;
+};
+
 struct ModeInfo {
   int number = 0;  ///< 1-based.
   double omega2 = 0;  ///< rad^2/s^2.
@@ -74,6 +88,7 @@ struct ModeInfo {
   std::vector<PointMotion> shape;
   /// The shape at the points and stations of ModesOptions::points, in that order.
   std::vector<PointMotion> at_points;
+  std::vector<ModalStrain> strains;  ///< ModesOptions::strains'
 };
 
 struct JointReport {
@@ -153,6 +168,9 @@ struct ModesOptions {
   /// model large enough for the partial eigen solver, twice the modes reported (at
   /// least 20 more) are solved for, the basis of the damped eigenproblem.
   std::optional<DampingSpec> damping;
+  /// Strain spans (checked: sim/scene/stations.hpp strainSpan) whose modal strain each
+  /// mode reports in ModeInfo::strains.
+  std::vector<StrainGaugeSpec> strains;
 };
 
 /// Runs the analysis. Throws NumericalError if the equilibrium does not converge or

@@ -163,5 +163,33 @@ TEST_F(Cli, CheckPlansTheShakerOnTheScenesAccelerometers) {
   }
 }
 
+// modes --strain: each mode's strain over a span, checked against frf's strain output two
+// ways: the static strain under a unit force at link 2, sum over every mode of
+// strain_r u_r / omega_r^2 from modes' own numbers, is frf's response at 1e-4 Hz.
+TEST_F(Cli, ModalStrainsSumToTheStaticStrainFrfGives) {
+  const std::string span = "link3a@0.1m:link3a@0.5m", at = "link2@1.0m";
+  const Result m = run("modes --segments 4 --modes 0 --no-error-estimate --json --points " + at + " --strain " + span);
+  ASSERT_EQ(m.code, 0) << m.err;
+  const auto modes = nlohmann::json::parse(m.out).at("modes");
+  double sum = 0;
+  for (const auto& mode : modes) {
+    const double w = 2 * M_PI * mode.at("frequency_hz").get<double>();
+    ASSERT_EQ(mode.at("strains").at(0).at("span"), span);
+    sum += mode.at("strains").at(0).at("strain_per_modal_unit").get<double>() * mode.at("at_points").at(0).at("uy_per_modal_unit").get<double>() / (w * w);
+  }
+  // At 1e-4 Hz: the modal sum cancels to a small static strain that the dynamic terms move by 1e-3 at 0.01 Hz.
+  const Result f = run("frf --segments 4 --input force:" + at + ":y --output strain:" + span + " --from 0.0001 --to 0.0002 --points 2 --json");
+  ASSERT_EQ(f.code, 0) << f.err;
+  const double frf_db = nlohmann::json::parse(f.out).at("pairs").at(0).at("peak_db").get<double>();
+  EXPECT_NEAR(20 * std::log10(std::abs(sum)), frf_db, 1e-5) << "modal sum " << sum;
+  const Result text = run("modes --segments 4 --modes 2 --no-error-estimate --strain " + span);
+  EXPECT_NE(text.out.find("Modal strain over the spans asked for"), std::string::npos) << text.out;
+  for (const std::string& bad : {"link3a@0.1m", "link3a@0.1m:link3b@0.5m", "link3a@0.1m:link3a@0.1m", "link3a@0.1m:link3a@0.9m"}) {
+    const Result e = run("modes --segments 4 --strain " + bad);
+    EXPECT_EQ(e.code, 64) << bad;
+    EXPECT_NE(e.err.find("--strain " + bad + ": "), std::string::npos) << e.err;
+  }
+}
+
 }  // namespace
 }  // namespace mmv::cli_testing
