@@ -93,10 +93,14 @@ TEST_F(Cli, SweepKilledAtRandomMomentsResumesToTheSameFile) {
     unsigned state = seed;
     // SIGKILL twice, after 20-60 % of the whole run's time (start-up is a quarter of it),
     // so that the work done before the kills rarely adds up to all of it; then finish.
+    // --foreground: timeout signals the sweep alone and waits until it is gone. Without it
+    // a KILL goes to timeout's whole process group, timeout included, which then cannot
+    // wait: the next run could start while the killed sweep still held its lock (exit 73,
+    // "in use by another sweep", seen under load).
     for (int kill = 0; kill < 2; ++kill) {
       state = state * 1103515245u + 12345u;
       const double after = whole_s * (0.2 + (state >> 16) % 400 / 1000.0);
-      std::system(("timeout -s KILL " + std::to_string(after) + " " + MMVLAB_BINARY + " sweep " + spec.string() + " --out " +
+      std::system(("timeout --foreground -s KILL " + std::to_string(after) + " " + MMVLAB_BINARY + " sweep " + spec.string() + " --out " +
                    out.string() + " >/dev/null 2>&1").c_str());
     }
     r = run("sweep " + spec.string() + " --out " + out.string() + " --json");
