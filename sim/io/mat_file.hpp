@@ -1,5 +1,7 @@
 #pragma once
-/// MATLAB/Octave .mat (version 5) export of a state-space model through matio:
+/// MATLAB/Octave .mat (version 5) files through matio, in libmmvlab_mat.so, loaded on
+/// the first read or write (sim/io/mat_plugin.hpp: matio's HDF5 brings a network stack
+/// no other command needs at start-up). The state-space export:
 /// double matrices A, B, C, D, E (E = I: A and B are in standard form, so
 /// `sys = ss(A, B, C, D)` works directly), the descriptor form as Ed, Ad, Bd, and cell
 /// arrays InputName, OutputName, StateName, InputUnit, OutputUnit.
@@ -8,18 +10,13 @@
 #include <utility>
 #include <vector>
 
+#include "sim/io/mat_plugin.hpp"
 #include "sim/linear/state_space.hpp"
 
 namespace mmv {
 
-/// What a .mat file holds: named double matrices and named cell arrays of strings.
-struct MatContents {
-  std::vector<std::pair<std::string, Eigen::MatrixXd>> matrices;
-  std::vector<std::pair<std::string, std::vector<std::string>>> strings;
-};
-
 /// Writes `path` (MAT 5) and reads every variable back (matio buffers its writes: a full
-/// disk surfaces there); throws OutputError.
+/// disk surfaces there); throws OutputError, UnavailableError without the plugin.
 void writeMat(const std::string& path, const MatContents& contents);
 
 /// Reads `path`: every double matrix and every cell array of strings in it. Throws

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -117,6 +118,20 @@ TEST_F(Cli, SundialsPluginExportsOnlyItsFactory) {
   for (const char* name : {"CVode", "ARKStep", "IDA", "N_V", "SUN"})
     EXPECT_EQ(defined.find(std::string(" ") + name), std::string::npos) << name << " exported:\n" << defined;
   EXPECT_EQ(slurp(libs).find("libsundials"), std::string::npos) << slurp(libs);
+}
+
+// matio and its HDF5's network stack (curl, gnutls, Kerberos, ssh) live in the .mat
+// plugin, loaded on the first .mat file (Cli.CommandsWithoutImagesDoNotLoadTheImageStack
+// sees which commands load it); the plugin exports one symbol and needs nothing of
+// mmvlab's.
+TEST_F(Cli, TheMatPluginExportsOnlyItsTable) {
+  const fs::path syms = dir_ / "syms";
+  const fs::path plugin = fs::path(MMVLAB_BINARY).parent_path() / "libmmvlab_mat.so";
+  ASSERT_TRUE(fs::exists(plugin));
+  ASSERT_EQ(std::system(("nm -D --defined-only " + plugin.string() + " >" + syms.string()).c_str()), 0);
+  const std::string defined = slurp(syms);
+  EXPECT_NE(defined.find(" T mmvlab_mat_api"), std::string::npos) << defined;
+  EXPECT_EQ(std::count(defined.begin(), defined.end(), '\n'), 1) << defined;
 }
 
 }  // namespace

@@ -21,9 +21,17 @@ TEST_F(Cli, CommandsWithoutImagesDoNotLoadTheImageStack) {
   for (const std::string args : {"modes --segments 2", "check", "frf --segments 2"}) {
     const std::string l = loaded(args);
     EXPECT_NE(l.find("libSimTKsimbody"), std::string::npos) << args;
-    for (const char* lib : {"libopencv", "libOSMesa", "libgdal", "libmmvlab_figures"})
+    // Nor matio and its HDF5's network stack (the .mat plugin's; before 2026-11-26 every
+    // command loaded them: 49 shared libraries at start-up).
+    for (const char* lib : {"libopencv", "libOSMesa", "libgdal", "libmmvlab_figures", "libmatio", "libhdf5", "libcurl", "libgnutls",
+                            "libkrb5", "libmmvlab_mat"})
       EXPECT_EQ(l.find(lib), std::string::npos) << args << " loaded " << lib;
   }
+  const fs::path rom = dir_ / "rom";
+  const std::string m = loaded("rom --segments 2 --out " + rom.string());
+  EXPECT_NE(m.find("libmmvlab_mat.so"), std::string::npos);
+  EXPECT_NE(m.find("libmatio"), std::string::npos);
+  EXPECT_TRUE(fs::exists(rom / "rom.mat"));
   const std::string l = loaded("render --size 160x120 --out " + (dir_ / "a.png").string());
   EXPECT_NE(l.find("libmmvlab_figures.so"), std::string::npos);
   EXPECT_NE(l.find("libopencv_core"), std::string::npos);
