@@ -2,10 +2,12 @@
 #include "sim/io/trade_report.hpp"
 #include "support/stub_trade.hpp"
 #include "sim/time/verify.hpp"
+#include "sim/core/text.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <thread>
 
@@ -189,6 +191,38 @@ TEST(Trade, SkipsTheRunsThatCannotBeTheCheapestWithinTheTarget) {
   EXPECT_FALSE(t.runs[4].ok);
   o.skip_costlier = false;  // --all
   for (const auto& r : runTrade(stubProblem(), o).runs) EXPECT_EQ(r.status, "ok");
+}
+
+// The implicit methods' ladders run first: a cheap implicit method sets the bar before
+// a dear explicit one listed first starts, and the explicit one's tighter runs are
+// skipped. Before, the ladders ran in the order given (on the slew scene 51 of 58 s went
+// to RK-Merson and RK3 before CPodes set a 0.37 s bar). The runs are still listed in
+// the options' order.
+TEST(Trade, TheImplicitMethodsSetTheBarWhateverTheOrderGiven) {
+  TradeProblem p = stubProblem();  // rk_merson dear (5 s), the others cheap (0.1 s)
+  const auto inner = p.run;
+  auto order = std::make_shared<std::vector<std::string>>();
+  p.run = [inner, order](const SimulationSpec& s, const RunFidelity& n, const std::function<void(double)>& progress) {
+    if (s.accuracy > 1e-9) order->push_back(s.integrator + strf(" %g", s.accuracy));
+    return inner(s, n, progress);
+  };
+  TradeOptions o;
+  o.integrators = {"rk_merson", "cpodes"};  // dear and explicit first
+  o.accuracies = {1e-3, 1e-4, 1e-6};
+  const TradeStudy t = runTrade(p, o);
+  EXPECT_EQ(*order, (std::vector<std::string>{"cpodes 0.001", "cpodes 0.0001", "cpodes 1e-06", "rk_merson 0.001"}));
+  ASSERT_EQ(t.runs.size(), 6u);
+  EXPECT_EQ(t.runs[0].integrator, "rk_merson");
+  EXPECT_EQ(t.runs[0].status, "ok");  // nothing of its own said it could not win
+  for (int k = 1; k < 3; ++k) {
+    EXPECT_EQ(t.runs[k].integrator, "rk_merson");
+    EXPECT_EQ(t.runs[k].status, "costlier") << k;
+  }
+  for (int k = 3; k < 6; ++k) {
+    EXPECT_EQ(t.runs[k].integrator, "cpodes");
+    EXPECT_EQ(t.runs[k].status, "ok") << k;
+  }
+  EXPECT_EQ(t.runs[4].accuracy, 1e-4);
 }
 
 // `cut_costlier` (the choice of `simulate --target-error`): the dear integrator's
