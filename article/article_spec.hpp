@@ -64,6 +64,12 @@ struct SlewSpec {
   bool trapezoidal = false;  ///< else cycloidal.
   double max_rate = 70 * 3.14159265358979323846 / 180;          ///< rad/s.
   double max_acceleration = 200 * 3.14159265358979323846 / 180; ///< rad/s^2.
+  /// != 0 (rad/s): a spin-up to this rate over `spin_ramp` s (facility/slews.hpp),
+  /// turning on at it, instead of a move to `to`; needs a continuous joint.
+  double spin_rate = 0;
+  double spin_ramp = 0;        ///< s.
+  std::string program_csv;     ///< non-empty: an angle program (time_s,angle_deg) instead of a move.
+  std::string program_source;  ///< its file, for messages.
 };
 
 struct JointSpec {
@@ -79,6 +85,9 @@ struct JointSpec {
   /// Time runs: a commanded torque on a free or servo joint, as a program whose
   /// "displacement" is the torque in N*m (facility/table_programs.hpp).
   std::optional<TableMotion> torque_input;
+  /// range_deg: unlimited (a slip ring): a slew may turn past any angle; `range` is then
+  /// pi, the travel over which a holding torque is worst.
+  bool continuous = false;
 };
 
 /// How the links are discretized (docs/spatial.md). Planar: bending in the plane of
@@ -151,6 +160,7 @@ struct GimbalAxisSpec {
   std::optional<SlewSpec> slew;
   double range = 0;             ///< rad: |angle| and a slew's end stay within it.
   double torque_capacity = 0;   ///< N*m the axis motor can give.
+  bool continuous = false;      ///< as JointSpec::continuous (last: axes are brace-initialised).
 };
 
 /// The 3-axis gimbal between the table (or the floor) and the article's base: yaw about

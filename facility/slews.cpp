@@ -44,7 +44,58 @@ Slew makeSlew(SlewShape shape, double from, double to, double, const SlewLimits&
   return s;
 }
 
+Slew makeSpinUp(double from, double rate, double ramp) {
+  if (!std::isfinite(rate) || rate == 0) throw std::invalid_argument("spin-up: the rate must be a non-zero number");
+  if (!(ramp > 0) || !std::isfinite(ramp)) throw std::invalid_argument("spin-up: the ramp must be > 0 s (a step in rate has no acceleration to give)");
+  Slew s;
+  s.shape_ = SlewShape::SpinUp;
+  s.from_ = from;
+  s.cruise_rate_ = rate;
+  s.duration_ = ramp;
+  return s;
+}
+
+Slew makeAngleProgram(double from, std::shared_ptr<const TableProgram> angles, double scale, double range) {
+  if (!angles) throw std::invalid_argument("angle program: no program");
+  Slew s;
+  s.shape_ = SlewShape::Program;
+  s.from_ = from;
+  s.program_ = std::move(angles);
+  s.program_scale_ = scale;
+  s.duration_ = s.program_->duration();
+  const auto deg = [](double rad) { return rad * 180 / M_PI; };
+  // Started from `from`: the samples' shift from their first (none where the scene's
+  // angle is the program's first, which the reader requires; a held-angle study that
+  // sets another angle moves the program with it, as it moves a slew's start).
+  s.program_offset_ = from - scale * s.program_->position(0);
+  // Every angle within the range, between the samples too (a cubic may overshoot them):
+  // 20 points per period of the samples' Nyquist frequency, at least 2000.
+  const double span = s.duration_;
+  const int n = static_cast<int>(std::min(2e6, std::max(2000.0, std::ceil(20 * s.program_->maxFrequencyHz() * span) + 1)));
+  for (int k = 0; k <= n; ++k) {
+    const double t = span * k / n, a = s.program_offset_ + scale * s.program_->position(t);
+    if (std::abs(a) > range * (1 + 1e-12)) {
+      char what[200];
+      std::snprintf(what, sizeof what, "angle program: %.6g deg at %.6g s is outside the joint's +-%.6g deg range", deg(a), t, deg(range));
+      throw std::invalid_argument(what);
+    }
+    s.program_peak_rate_ = std::max(s.program_peak_rate_, std::abs(scale * s.program_->velocity(t)));
+    s.program_peak_acceleration_ = std::max(s.program_peak_acceleration_, std::abs(scale * s.program_->acceleration(t)));
+  }
+  return s;
+}
+
 SlewState Slew::at(double t) const {
+  if (shape_ == SlewShape::SpinUp) {
+    const double W = cruise_rate_, T = duration_;
+    if (t <= 0) return {from_, 0, 0};
+    if (t >= T) return {from_ + W * (t - T / 2), W, 0};
+    const double w = 2 * M_PI / T, c = T / (2 * M_PI);
+    return {from_ + W / T * (t * t / 2 + c * c * (std::cos(w * t) - 1)), W / T * (t - c * std::sin(w * t)), W / T * (1 - std::cos(w * t))};
+  }
+  if (shape_ == SlewShape::Program)
+    return {program_offset_ + program_scale_ * program_->position(t), program_scale_ * program_->velocity(t),
+            program_scale_ * program_->acceleration(t)};
   const double sign = delta_ < 0 ? -1.0 : 1.0, d = std::abs(delta_);
   if (t <= 0 || duration_ == 0) return {from_, 0, 0};
   if (t >= duration_) return {from_ + delta_, 0, 0};
@@ -67,11 +118,15 @@ SlewState Slew::at(double t) const {
 }
 
 double Slew::peakRate() const {
+  if (shape_ == SlewShape::SpinUp) return std::abs(cruise_rate_);
+  if (shape_ == SlewShape::Program) return program_peak_rate_;
   if (duration_ == 0) return 0;
   return shape_ == SlewShape::Cycloidal ? 2 * std::abs(delta_) / duration_ : cruise_rate_;
 }
 
 double Slew::peakAcceleration() const {
+  if (shape_ == SlewShape::SpinUp) return 2 * std::abs(cruise_rate_) / duration_;
+  if (shape_ == SlewShape::Program) return program_peak_acceleration_;
   if (duration_ == 0) return 0;
   return shape_ == SlewShape::Cycloidal ? 2 * M_PI * std::abs(delta_) / (duration_ * duration_) : accel_;
 }

@@ -137,12 +137,12 @@ class Builder {
   }
 
  private:
-  /// Holds a locked coordinate's pin at its angle (zero prescribed speed) or drives it
-  /// along its slew, the slew limited to +-range.
-  void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, double range) {
+  /// Holds a locked pin at its angle or drives it along its slew from there (the reader
+  /// held the slew to the range; check's holding grid moves its start).
+  void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, bool continuous) {
     if (spec) {
       model_.setPrescribedAcceleration(pin.getMobilizedBodyIndex(),
-                                       prescribeSlew(pin, makeSlew(*spec, angle, range), spec->start_time));
+                                       prescribeSlew(pin, makeSlew(*spec, angle, INFINITY, continuous), spec->start_time));
     } else {
       SimTK::Motion::Steady(pin, 0.0);
       model_.setPrescribedAcceleration(pin.getMobilizedBodyIndex(), [](double) { return 0.0; });
@@ -178,7 +178,7 @@ class Builder {
       c.held = true;
       model_.addCoordinate(c);
       model_.addBody(pin.getMobilizedBodyIndex(), part, parent.grounded);
-      holdOrSlew(pin, a.spec->angle, a.spec->slew, a.spec->range);
+      holdOrSlew(pin, a.spec->angle, a.spec->slew, a.spec->continuous);
       inboard = pin.getMobilizedBodyIndex();
       X_inboard = SimTK::Transform();
     }
@@ -360,7 +360,7 @@ class Builder {
     model_.addCoordinate(coord);
     // A locked torquer holds its angle in the dynamics too (zero prescribed speed),
     // or follows its slew.
-    if (coord.held) holdOrSlew(pin, j.angle, j.slew, M_PI);
+    if (coord.held) holdOrSlew(pin, j.angle, j.slew, j.continuous);
     return pin.getMobilizedBodyIndex();
   }
 

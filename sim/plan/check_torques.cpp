@@ -7,6 +7,7 @@
 #include "sim/core/text.hpp"
 #include "sim/model/article_builder.hpp"
 #include "sim/plan/check_parts.hpp"
+#include "sim/scene/programs.hpp"
 #include "sim/statics/statics.hpp"
 
 namespace mmv::plan {
@@ -207,15 +208,37 @@ void addSlewLines(const CheckInputs& in, std::vector<CheckLine>& out) {
                            in.options.required_margin_pct));
 }
 
-/// The gimbal's angles (held and slewed) against its ranges (the reader refuses beyond).
+/// The largest |angle| an axis reaches (rad): its held angle, a move's end, or the largest
+/// of an angle program's (sampled as the reader checks it).
+double axisReach(const GimbalAxisSpec& a) {
+  double reach = std::abs(a.angle);
+  if (!a.slew) return reach;
+  if (a.slew->program_csv.empty()) return std::max(reach, std::abs(a.slew->to));
+  const facility::Slew p = makeSlew(*a.slew, a.angle, a.range, a.continuous);
+  for (int k = 0; k <= 4000; ++k) reach = std::max(reach, std::abs(p.at(p.duration() * k / 4000).angle));
+  return reach;
+}
+
+/// The gimbal's angles (held and slewed) against its ranges (the reader refuses beyond);
+/// an axis on a slip ring (range_deg: unlimited) has no range to hold it to.
 void addGimbalRangeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const auto& g = in.scene.article.base.gimbal;
   if (!g) return;
   const std::pair<const char*, const GimbalAxisSpec*> axes[] = {{"yaw", &g->yaw}, {"pitch", &g->pitch}, {"roll", &g->roll}};
   for (const auto& [name, axis] : axes) {
-    const double reach = std::max(std::abs(axis->angle), axis->slew ? std::abs(axis->slew->to) : 0.0);
-    out.push_back(makeLine("gimbal", std::string("gimbal.") + name + ".angle", std::string("gimbal ") + name + " angle", reach * kRadToDeg, axis->range * kRadToDeg, "deg",
-                           axis->slew ? "largest of the held angle and the slew's end" : "held angle", in.options.required_margin_pct));
+    if (axis->continuous) {
+      out.push_back(makeLine("gimbal", std::string("gimbal.") + name + ".angle", std::string("gimbal ") + name + " angle", 0, 0, "deg",
+                             "a slip ring (range_deg: unlimited): no travel to run out of", 0));
+      out.back().verdict = Verdict::NotChecked;
+      continue;
+    }
+    const bool program = axis->slew && !axis->slew->program_csv.empty();
+    out.push_back(makeLine("gimbal", std::string("gimbal.") + name + ".angle", std::string("gimbal ") + name + " angle",
+                           axisReach(*axis) * kRadToDeg, axis->range * kRadToDeg, "deg",
+                           program       ? "largest of the held angle and the angle program's"
+                           : axis->slew ? "largest of the held angle and the slew's end"
+                                        : "held angle",
+                           in.options.required_margin_pct));
     if (out.back().verdict == Verdict::Warn) out.back().verdict = Verdict::Pass;  // an angle inside its range is fine
   }
 }

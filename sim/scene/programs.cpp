@@ -1,6 +1,9 @@
 #include "sim/scene/programs.hpp"
 
+#include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace mmv {
 
@@ -16,8 +19,17 @@ std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion
   return nullptr;
 }
 
-facility::Slew makeSlew(const SlewSpec& spec, double from, double range) {
-  const facility::SlewLimits limits{range, spec.max_rate, spec.max_acceleration};
+facility::Slew makeSlew(const SlewSpec& spec, double from, double range, bool continuous) {
+  if (spec.spin_rate != 0) {
+    if (!continuous)
+      throw std::invalid_argument("a spin-up turns past any angle: it needs range_deg: unlimited (a slip ring), not a +-" +
+                                  std::to_string(static_cast<int>(std::lround(range * 180 / M_PI))) + " deg travel");
+    return facility::makeSpinUp(from, spec.spin_rate, spec.spin_ramp);
+  }
+  if (!spec.program_csv.empty())
+    return facility::makeAngleProgram(from, facility::csvProfile(spec.program_csv, spec.program_source), M_PI / 180,
+                                      continuous ? INFINITY : range);
+  const facility::SlewLimits limits{continuous ? INFINITY : range, spec.max_rate, spec.max_acceleration};
   return facility::makeSlew(spec.trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, from,
                             spec.to, spec.start_time, limits);
 }

@@ -14,8 +14,10 @@ namespace mmv {
 /// The program for a motion spec. Throws std::invalid_argument (a bad CSV profile).
 std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion& m);
 
-/// The slew of a joint from `from` (rad) as `spec` commands, within +-range (rad).
-/// Throws std::invalid_argument when an end lies outside the range.
-facility::Slew makeSlew(const SlewSpec& spec, double from, double range);
+/// The slew of a joint from `from` (rad) as `spec` commands (a move, a spin-up or an
+/// angle program), within +-range (rad) unless the joint is continuous. Throws
+/// std::invalid_argument when an angle lies outside the range, or a spin-up is asked
+/// of a joint with a finite range.
+facility::Slew makeSlew(const SlewSpec& spec, double from, double range, bool continuous);
 
 }  // namespace mmv

@@ -87,12 +87,29 @@ class SceneParser {
  private:
   /// The slew the facility would make from `from` (rad) within +-range: refused here,
   /// at its key, rather than when the model is built.
-  void checkSlew(const YAML::Node& n, const std::string& path, const SlewSpec& slew, double from, double range) {
+  void checkSlew(const YAML::Node& n, const std::string& path, const SlewSpec& slew, double from, double range, bool continuous) {
     try {
-      (void)makeSlew(slew, from, range);
+      if (!slew.program_csv.empty()) {  // the program as written: from the joint's own angle
+        const double first = facility::csvProfile(slew.program_csv, slew.program_source)->position(0);
+        if (std::abs(first * kDegToRad - from) > 1e-9)
+          r_.fail(n.Mark(), path + strf(": angle program: it starts at %.6g deg, the joint at %.6g deg (its angle_deg): the first "
+                                        "angle must be the joint's", first, from / kDegToRad));
+      }
+      (void)makeSlew(slew, from, range, continuous);
     } catch (const std::invalid_argument& e) {
       r_.fail(n.Mark(), path + ": " + e.what());
     }
+  }
+
+  /// range_deg: degrees > 0, or `unlimited` (a slip ring: `continuous`, and the range pi,
+  /// the travel over which a holding torque is worst).
+  void readRange(const YAML::Node& n, const std::string& path, double& range, bool& continuous) {
+    if (n.IsScalar() && n.Scalar() == "unlimited") {
+      continuous = true;
+      range = M_PI;
+      return;
+    }
+    range = r_.positive(n, path, " deg") * kDegToRad;
   }
 
   /// The table program must stay within the table's stroke over the scene's run.
@@ -163,7 +180,7 @@ class SceneParser {
       const std::string path = std::string("base.gimbal.") + name;
       const YAML::Node& an = m.at(name);
       auto am = r_.mapping(an, path, {"angle_deg", "slew", "range_deg", "torque_capacity"});
-      if (am.count("range_deg")) axis->range = r_.positive(am.at("range_deg"), path + ".range_deg", " deg") * kDegToRad;
+      if (am.count("range_deg")) readRange(am.at("range_deg"), path + ".range_deg", axis->range, axis->continuous);
       if (am.count("torque_capacity"))
         axis->torque_capacity = r_.positive(am.at("torque_capacity"), path + ".torque_capacity", " N*m");
       auto within = [&](const YAML::Node& v, double angle, const std::string& key) {
@@ -177,8 +194,8 @@ class SceneParser {
       }
       if (am.count("slew")) {
         axis->slew = readSlew(r_, am.at("slew"), path + ".slew");
-        within(am.at("slew")["to_deg"], axis->slew->to, path + ".slew.to_deg");
-        checkSlew(am.at("slew"), path + ".slew", *axis->slew, axis->angle, axis->range);
+        if (am.at("slew")["to_deg"]) within(am.at("slew")["to_deg"], axis->slew->to, path + ".slew.to_deg");
+        checkSlew(am.at("slew"), path + ".slew", *axis->slew, axis->angle, axis->range, axis->continuous);
       }
     }
     if (m.count("ring_mass")) g.ring_mass = r_.positive(m.at("ring_mass"), "base.gimbal.ring_mass", " kg");
@@ -227,9 +244,9 @@ class SceneParser {
   /// joint's starting angle only within +-180 deg.
   void checkJointRange(const std::map<std::string, YAML::Node>& m, const std::string& path, JointSpec& j) {
     if (m.count("range_deg")) {
-      j.range = r_.positive(m.at("range_deg"), path + ".range_deg", " deg") * kDegToRad;
+      readRange(m.at("range_deg"), path + ".range_deg", j.range, j.continuous);
       if (j.range > M_PI + 1e-12)
-        r_.fail(m.at("range_deg").Mark(), path + ".range_deg must be <= 180 deg (got " + m.at("range_deg").Scalar() + ")");
+        r_.fail(m.at("range_deg").Mark(), path + ".range_deg must be <= 180 deg, or unlimited (got " + m.at("range_deg").Scalar() + ")");
     }
     if (!m.count("angle_deg")) return;
     const double limit = j.hold == JointHold::Free ? M_PI : j.range;
@@ -276,7 +293,7 @@ class SceneParser {
         if (j.hold != JointHold::Locked)
           r_.fail(sn.Mark(), path + ".slew: only a locked joint (its torquer holding the angle) follows a slew");
         j.slew = readSlew(r_, sn, path + ".slew");
-        checkSlew(sn, path + ".slew", *j.slew, j.angle, j.range);
+        checkSlew(sn, path + ".slew", *j.slew, j.angle, j.range, j.continuous);
       }
       if (m.count("torque")) {
         const YAML::Node& tn = m.at("torque");

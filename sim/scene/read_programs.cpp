@@ -1,4 +1,5 @@
 // Scene sections: table, ground and torque programs; torquer and gimbal slews.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -76,16 +77,47 @@ TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std
 }
 
 SlewSpec readSlew(const YamlReader& r, const YAML::Node& sn, const std::string& path) {
-  auto sm = r.mapping(sn, path, {"to_deg", "start_s", "shape", "max_rate_deg_s", "max_acceleration_deg_s2"});
+  auto sm = r.mapping(sn, path, {"to_deg", "start_s", "shape", "max_rate_deg_s", "max_acceleration_deg_s2", "rate_deg_s", "ramp_s", "file"});
   SlewSpec sl;
-  sl.to = r.number(r.require(sm, sn, path, "to_deg"), path + ".to_deg") * kDegToRad;
-  if (sm.count("start_s")) sl.start_time = r.nonNegative(sm.at("start_s"), path + ".start_s", " s");
+  std::string sh = "cycloidal";
   if (sm.count("shape")) {
-    const std::string sh = r.text(sm.at("shape"), path + ".shape");
-    if (sh != "cycloidal" && sh != "trapezoidal")
-      r.fail(sm.at("shape").Mark(), path + ".shape: unknown shape '" + sh + "' (known: cycloidal, trapezoidal)");
-    sl.trapezoidal = sh == "trapezoidal";
+    sh = r.text(sm.at("shape"), path + ".shape");
+    if (sh != "cycloidal" && sh != "trapezoidal" && sh != "spin_up" && sh != "program")
+      r.fail(sm.at("shape").Mark(), path + ".shape: unknown shape '" + sh + "' (known: cycloidal, trapezoidal, spin_up, program)");
   }
+  // Each shape's keys, and no other's.
+  const std::vector<std::string> move_keys{"to_deg", "max_rate_deg_s", "max_acceleration_deg_s2"};
+  const std::vector<std::string> allowed = sh == "spin_up" ? std::vector<std::string>{"rate_deg_s", "ramp_s"}
+                                           : sh == "program" ? std::vector<std::string>{"file"}
+                                                             : move_keys;
+  for (const auto& [k, v] : sm)
+    if (k != "shape" && k != "start_s" && std::find(allowed.begin(), allowed.end(), k) == allowed.end())
+      r.fail(v.Mark(), path + "." + k + " does not apply to a " + sh + " slew");
+  if (sm.count("start_s")) sl.start_time = r.nonNegative(sm.at("start_s"), path + ".start_s", " s");
+  if (sh == "spin_up") {
+    const YAML::Node& rn = r.require(sm, sn, path, "rate_deg_s");
+    sl.spin_rate = r.number(rn, path + ".rate_deg_s") * kDegToRad;
+    if (sl.spin_rate == 0) r.fail(rn.Mark(), path + ".rate_deg_s must not be 0 (its sign is the direction)");
+    sl.spin_ramp = r.positive(r.require(sm, sn, path, "ramp_s"), path + ".ramp_s", " s");
+    return sl;
+  }
+  if (sh == "program") {
+    const YAML::Node& fn = r.require(sm, sn, path, "file");
+    std::filesystem::path file = r.text(fn, path + ".file");
+    if (file.is_relative()) file = std::filesystem::path(r.file()).parent_path() / file;
+    std::string why;
+    if (!readInputFile(file.string(), limits::kMaxProfileBytes, sl.program_csv, why))
+      r.fail(fn.Mark(), path + ".file: cannot read the angle program '" + file.string() + "': " + why);
+    sl.program_source = file.string();
+    try {
+      (void)facility::csvProfile(sl.program_csv, sl.program_source);
+    } catch (const std::invalid_argument& e) {
+      r.fail(fn.Mark(), path + ".file: " + e.what());
+    }
+    return sl;
+  }
+  sl.to = r.number(r.require(sm, sn, path, "to_deg"), path + ".to_deg") * kDegToRad;
+  sl.trapezoidal = sh == "trapezoidal";
   if (sm.count("max_rate_deg_s")) sl.max_rate = r.positive(sm.at("max_rate_deg_s"), path + ".max_rate_deg_s", " deg/s") * kDegToRad;
   if (sm.count("max_acceleration_deg_s2"))
     sl.max_acceleration = r.positive(sm.at("max_acceleration_deg_s2"), path + ".max_acceleration_deg_s2", " deg/s^2") * kDegToRad;

@@ -55,5 +55,59 @@ TEST(Slews, OutOfRangeIsRefused) {
   EXPECT_THROW(makeSlew(SlewShape::Trapezoidal, 0, 10 * kDeg, 0, bad), std::invalid_argument);
 }
 
+// The spin-up (Kane, Ryan and Banerjee 1987): its rate and acceleration are the
+// derivatives of its angle (central differences, to 1e-6 of their scale), it starts and
+// reaches its rate at rest in acceleration (smooth at both ends), and after the ramp
+// turns at the rate past any angle: theta = W (t - T/2).
+TEST(Slews, SpinUpProfileAndItsDerivatives) {
+  const double W = 6.0, T = 15.0;  // the published beam: 6 rad/s over 15 s
+  const Slew s = makeSpinUp(0.1, W, T);
+  EXPECT_EQ(s.shape(), SlewShape::SpinUp);
+  const double h = 1e-5;
+  for (double t : {0.5, 3.0, 7.5, 11.0, 14.9, 20.0}) {
+    const SlewState a = s.at(t), m = s.at(t - h), p = s.at(t + h);
+    EXPECT_NEAR(a.rate, (p.angle - m.angle) / (2 * h), 1e-6 * W) << t;
+    EXPECT_NEAR(a.acceleration, (p.rate - m.rate) / (2 * h), 1e-6 * W / T) << t;
+  }
+  EXPECT_EQ(s.at(0).rate, 0.0);
+  EXPECT_EQ(s.at(0).acceleration, 0.0);
+  EXPECT_NEAR(s.at(T).rate, W, 1e-12);
+  EXPECT_NEAR(s.at(T - 1e-9).acceleration, 0.0, 1e-6);
+  EXPECT_NEAR(s.at(T / 2).acceleration, 2 * W / T, 1e-12);  // the peak
+  EXPECT_NEAR(s.peakAcceleration(), 2 * W / T, 1e-15);
+  EXPECT_NEAR(s.at(T).angle, 0.1 + W * T / 2, 1e-12);
+  EXPECT_NEAR(s.at(100).angle, 0.1 + W * (100 - T / 2), 1e-9);  // 90 turns on
+  EXPECT_NEAR(makeSpinUp(0, -W, T).at(20).angle, -W * (20 - T / 2), 1e-12);  // the other way
+  EXPECT_THROW(makeSpinUp(0, 0, T), std::invalid_argument);
+  EXPECT_THROW(makeSpinUp(0, W, 0), std::invalid_argument);
+  EXPECT_THROW(makeSpinUp(0, W, -1), std::invalid_argument);
+}
+
+// An angle program from a CSV in degrees: radians out, the samples hit, at rest after;
+// started from another angle it moves with it (as a slew's start does), and it must stay
+// within the range between the samples too (the cubic through 0, 40, 40 overshoots 40
+// deg: refused at +-40, taken at +-45).
+TEST(Slews, AngleProgramFromACsv) {
+  const std::string csv = "time_s,angle_deg\n0,10\n1,30\n2,40\n3,40\n";
+  const Slew s = makeAngleProgram(10 * kDeg, csvProfile(csv, "p.csv"), kDeg, 45 * kDeg);
+  EXPECT_EQ(s.shape(), SlewShape::Program);
+  EXPECT_NEAR(s.at(1).angle, 30 * kDeg, 1e-15);
+  EXPECT_NEAR(s.at(5).angle, 40 * kDeg, 1e-15);
+  EXPECT_EQ(s.at(5).rate, 0.0);
+  EXPECT_GT(s.peakRate(), 0.0);
+  const Slew moved = makeAngleProgram(-5 * kDeg, csvProfile(csv, "p.csv"), kDeg, 45 * kDeg);
+  EXPECT_NEAR(moved.at(0).angle, -5 * kDeg, 1e-15);
+  EXPECT_NEAR(moved.at(1).angle, 15 * kDeg, 1e-15);
+  EXPECT_EQ(moved.at(0.5).rate, s.at(0.5).rate);
+  EXPECT_THROW(makeAngleProgram(20 * kDeg, csvProfile(csv, "p.csv"), kDeg, 45 * kDeg), std::invalid_argument);  // 40 -> 50 deg
+  const std::string over = "time_s,angle_deg\n0,0\n1,40\n2,40\n";
+  EXPECT_GT(makeAngleProgram(0, csvProfile(over, "o.csv"), kDeg, INFINITY).peakRate(), 0.0);
+  double top = 0;
+  const Slew o = makeAngleProgram(0, csvProfile(over, "o.csv"), kDeg, 45 * kDeg);
+  for (int k = 0; k <= 2000; ++k) top = std::max(top, o.at(2.0 * k / 2000).angle);
+  EXPECT_GT(top, 40 * kDeg);  // the overshoot the range check must see
+  EXPECT_THROW(makeAngleProgram(0, csvProfile(over, "o.csv"), kDeg, 40 * kDeg), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace mmv::facility

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "facility/sensors.hpp"
+#include "facility/slews.hpp"
 #include "sim/core/text.hpp"
 #include "sim/scene/scene.hpp"
 #include "tests/support/scenes.hpp"
@@ -254,6 +255,40 @@ TEST(Check, PlanarityLinesJudgeTheSpatialArticle) {
   EXPECT_EQ(coupled->verdict, Verdict::Advisory);  // beyond the limit: advice, labelled as such
   EXPECT_NE(r.overall, Verdict::Pass);  // and it raises the overall verdict
   EXPECT_EQ(findId(runCheck(tilted, CheckOptions{}, &modes), "planarity.base x")->verdict, Verdict::Pass);
+}
+
+// The gimbal's range lines follow what each axis commands: an angle program's largest
+// angle (between its samples too: the cubic through 0, 30, 10 deg passes 30), not the
+// move's end it does not have (0); a slip ring has no range to check (n/a, said so);
+// the held roll axis its held angle.
+TEST(Check, GimbalRangeLinesFollowSpinUpsAndAnglePrograms) {
+  ArticleScene s = testing::cantileverScene(rigidBeam(), 1, kG, 0.0, 0.0, /*rigid=*/true);
+  s.article.base.gimbal = GimbalSpec{};
+  SlewSpec program;
+  program.program_csv = "time_s,angle_deg\n0,0\n0.5,30\n1.2,10\n";
+  program.program_source = "pitch.csv";
+  s.article.base.gimbal->pitch.slew = program;
+  SlewSpec spin;
+  spin.spin_rate = 1.0;
+  spin.spin_ramp = 0.5;
+  s.article.base.gimbal->yaw.slew = spin;
+  s.article.base.gimbal->yaw.continuous = true;
+  s.article.base.gimbal->yaw.range = M_PI;
+  s.simulation.duration = 1.5;
+  const CheckReport r = runCheck(s);
+  const facility::Slew p = facility::makeAngleProgram(0, facility::csvProfile(program.program_csv, "pitch.csv"), M_PI / 180, M_PI);
+  double top = 0;
+  for (int k = 0; k <= 4000; ++k) top = std::max(top, std::abs(p.at(p.duration() * k / 4000).angle) * 180 / M_PI);
+  const CheckLine* pitch = find(r, "gimbal pitch angle");
+  ASSERT_NE(pitch, nullptr);
+  EXPECT_NEAR(pitch->demand, top, 1e-9);
+  EXPECT_GT(pitch->demand, 30.0);
+  EXPECT_NE(pitch->note.find("angle program"), std::string::npos) << pitch->note;
+  const CheckLine* yaw = find(r, "gimbal yaw angle");
+  ASSERT_NE(yaw, nullptr);
+  EXPECT_EQ(yaw->verdict, Verdict::NotChecked);
+  EXPECT_NE(yaw->note.find("slip ring"), std::string::npos) << yaw->note;
+  EXPECT_EQ(find(r, "gimbal roll angle")->demand, 0.0);
 }
 
 }  // namespace

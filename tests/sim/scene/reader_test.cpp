@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "sim/scene/scene.hpp"
@@ -183,7 +184,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"held angle beyond the torquers range", "    angle_deg: 30", "    angle_deg: 400",
                 "s.yaml:10:16: joints[0].angle_deg: 400 deg is beyond the joint's +-45 deg range (its torquer's; range_deg sets another)"},
         BadCase{"joint range beyond a half turn", "    angle_deg: 30", "    angle_deg: 30\n    range_deg: 200",
-                "s.yaml:11:16: joints[0].range_deg must be <= 180 deg (got 200)"},
+                "s.yaml:11:16: joints[0].range_deg must be <= 180 deg, or unlimited (got 200)"},
         BadCase{"samples beyond the limit", "gravity: [0, -9.81, 0]",
                 "gravity: [0, -9.81, 0]\nsimulation: {duration: 1000, sample_rate_hz: 10000}",
                 "s.yaml:3:46: simulation: 1000 s at 10000 Hz is 1e+07 samples, above the limit of 1000000 (a rate or a "
@@ -414,6 +415,57 @@ TEST(SceneYaml, TorqueInputOnlyOnAMovingJoint) {
             "s.yaml:11:13: joints[0].torque: a commanded torque needs a joint that moves (hold: free or servo)");
   EXPECT_EQ(errorOf(replaceLine(kGood, "    hold: free", "    hold: free\n    torque: {type: random, rms: -1, from_hz: 1, to_hz: 2, duration: 1}")),
             "s.yaml:14:33: joints[1].torque.rms must be >= 0 N*m (got -1)");
+}
+
+// Prescribed motion past a half turn: a spin-up needs a continuous joint (range_deg:
+// unlimited), its keys are its own, and an angle program is read from its CSV and must
+// start at the joint's angle; every refusal at its line and column.
+TEST(SceneYaml, SpinUpsAndAngleProgramsAreCheckedAtTheirKeys) {
+  const std::string j = "    angle_deg: 30";
+  const auto with = [&](const std::string& extra) { return replaceLine(kGood, j, j + "\n" + extra); };
+  const std::string spin = "    slew: {shape: spin_up, rate_deg_s: 90, ramp_s: 1}";
+  EXPECT_EQ(errorOf(with(spin)), "s.yaml:11:11: joints[0].slew: a spin-up turns past any angle: it needs range_deg: unlimited (a "
+                                 "slip ring), not a +-45 deg travel");
+  const ArticleScene s = parseArticle(with("    range_deg: unlimited\n" + spin), "s.yaml");
+  EXPECT_TRUE(s.article.joints[0].continuous);
+  EXPECT_NEAR(s.article.joints[0].range, M_PI, 1e-15);  // the travel a holding torque is worst over
+  ASSERT_TRUE(s.article.joints[0].slew);
+  EXPECT_NEAR(s.article.joints[0].slew->spin_rate, M_PI / 2, 1e-15);
+  EXPECT_EQ(s.article.joints[0].slew->spin_ramp, 1.0);
+  EXPECT_FALSE(parseArticle(kGood, "s.yaml").article.joints[0].continuous);
+  const std::string u = "    range_deg: unlimited\n";
+  EXPECT_EQ(errorOf(with(u + "    slew: {shape: spin_up, rate_deg_s: 0, ramp_s: 1}")),
+            "s.yaml:12:40: joints[0].slew.rate_deg_s must not be 0 (its sign is the direction)");
+  EXPECT_EQ(errorOf(with(u + "    slew: {shape: spin_up, rate_deg_s: 90, ramp_s: 1, to_deg: 10}")),
+            "s.yaml:12:63: joints[0].slew.to_deg does not apply to a spin_up slew");
+  EXPECT_EQ(errorOf(with(u + "    slew: {shape: spin_up, rate_deg_s: 90, ramp_s: 0}")),
+            "s.yaml:12:52: joints[0].slew.ramp_s must be > 0 s (got 0)");
+  EXPECT_EQ(errorOf(with(u + "    slew: {shape: spin, rate_deg_s: 90}")),
+            "s.yaml:12:19: joints[0].slew.shape: unknown shape 'spin' (known: cycloidal, trapezoidal, spin_up, program)");
+  EXPECT_EQ(errorOf(with("    range_deg: 180.001")).rfind("s.yaml:11:16: joints[0].range_deg must be <= 180 deg, or unlimited", 0), 0u);
+  EXPECT_NEAR(parseArticle(with("    range_deg: 180"), "s.yaml").article.joints[0].range, M_PI, 1e-15);
+  EXPECT_EQ(errorOf(with("    slew: {shape: program, file: /nonexistent/p.csv}"))
+                .rfind("s.yaml:11:34: joints[0].slew.file: cannot read the angle program '/nonexistent/p.csv'", 0),
+            0u);
+  // An angle program: from the joint's 30 deg, or refused with where it starts.
+  const std::string csv = ::testing::TempDir() + "/mmv_angle_program.csv";
+  const auto write = [&](const std::string& text) {
+    FILE* f = std::fopen(csv.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+  };
+  write("time_s,angle_deg\n0,30\n1,40\n2,-20\n");
+  const ArticleScene p = parseArticle(with("    slew: {shape: program, file: " + csv + "}"), "s.yaml");
+  ASSERT_TRUE(p.article.joints[0].slew);
+  EXPECT_EQ(p.article.joints[0].slew->program_source, csv);
+  write("time_s,angle_deg\n0,10\n1,40\n");
+  EXPECT_EQ(errorOf(with("    slew: {shape: program, file: " + csv + "}")),
+            "s.yaml:11:11: joints[0].slew: angle program: it starts at 10 deg, the joint at 30 deg (its angle_deg): the first "
+            "angle must be the joint's");
+  write("time_s,angle_deg\n0,30\n1,44\n2,44\n");  // the cubic overshoots 45 deg between 1 and 2 s
+  EXPECT_EQ(errorOf(with("    slew: {shape: program, file: " + csv + "}")).rfind("s.yaml:11:11: joints[0].slew: angle program: ", 0), 0u);
+  std::remove(csv.c_str());
 }
 
 }  // namespace
