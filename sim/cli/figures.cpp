@@ -1,7 +1,6 @@
 // The renders plugin, loaded on the first figure (sim/cli/figures.hpp).
 #include "sim/cli/figures.hpp"
 
-#include <dlfcn.h>
 #include <mutex>
 
 #include "sim/core/errors.hpp"
@@ -17,31 +16,14 @@ const Api& api() {
   static std::once_flag once;
   std::call_once(once, [] {
 #ifdef MMVLAB_FIGURES_PLUGIN
-    const std::vector<std::string> candidates = pluginCandidates("libmmvlab_figures.so", MMVLAB_FIGURES_PLUGIN);
+    const std::string built = MMVLAB_FIGURES_PLUGIN;
 #else
-    const std::vector<std::string> candidates = pluginCandidates("libmmvlab_figures.so", "");
+    const std::string built;
 #endif
-    for (const auto& path : candidates) {
-      // Kept for the process's life. Not RTLD_DEEPBIND: the plugin would then bind
-      // libstdc++'s own std::cerr rather than the executable's (copy-relocated,
-      // initialised) one and crash on the first message; its copies of mmvlab's code
-      // are local symbols (--exclude-libs, hidden visibility) and bind to themselves.
-      void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-      if (!handle) {
-        failure += (failure.empty() ? "" : "; ") + path + " (" + ::dlerror() + ")";
-        continue;
-      }
-      using Get = const Api* (*)();
-      const auto get = reinterpret_cast<Get>(::dlsym(handle, "mmvlab_figures_api"));
-      const Api* t = get ? get() : nullptr;
-      if (!t || t->version != kApiVersion) {
-        failure += (failure.empty() ? "" : "; ") + path + " (not this version's figures plugin)";
-        continue;
-      }
-      table = t;
-      table->adopt_progress(progressState());
-      return;
-    }
+    table = static_cast<const Api*>(loadPluginTable(
+        "libmmvlab_figures.so", built, "mmvlab_figures_api",
+        [](const void* t) { return static_cast<const Api*>(t)->version == kApiVersion; }, "figures plugin", failure));
+    if (table) table->adopt_progress(progressState());
   });
   if (!table) throw UnavailableError("figures need libmmvlab_figures.so (OpenCV, OSMesa): tried " + failure);
   return *table;

@@ -1,7 +1,5 @@
 #include "sim/io/mat_file.hpp"
 
-#include <dlfcn.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <mutex>
@@ -19,26 +17,13 @@ const MatApi& api() {
   static std::once_flag once;
   std::call_once(once, [] {
 #ifdef MMVLAB_MAT_PLUGIN
-    const std::vector<std::string> candidates = pluginCandidates("libmmvlab_mat.so", MMVLAB_MAT_PLUGIN);
+    const std::string built = MMVLAB_MAT_PLUGIN;
 #else
-    const std::vector<std::string> candidates = pluginCandidates("libmmvlab_mat.so", "");
+    const std::string built;
 #endif
-    for (const auto& path : candidates) {
-      void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-      if (!handle) {
-        failure += (failure.empty() ? "" : "; ") + path + " (" + ::dlerror() + ")";
-        continue;
-      }
-      using Get = const MatApi* (*)();
-      const auto get = reinterpret_cast<Get>(::dlsym(handle, "mmvlab_mat_api"));
-      const MatApi* t = get ? get() : nullptr;
-      if (!t || t->version != kMatApiVersion) {
-        failure += (failure.empty() ? "" : "; ") + path + " (not this version's .mat plugin)";
-        continue;
-      }
-      table = t;
-      return;
-    }
+    table = static_cast<const MatApi*>(loadPluginTable(
+        "libmmvlab_mat.so", built, "mmvlab_mat_api",
+        [](const void* t) { return static_cast<const MatApi*>(t)->version == kMatApiVersion; }, ".mat plugin", failure));
   });
   if (!table) throw UnavailableError(".mat files need libmmvlab_mat.so (matio): tried " + failure);
   return *table;

@@ -10,6 +10,23 @@
 
 namespace mmv::scene_detail {
 
+namespace {
+
+/// The text of the file a `file:` key names (relative to the scene's folder), its path
+/// in `source`; refused at the key ("cannot read <what> '<path>': why").
+std::string readNamedFile(const YamlReader& r, const YAML::Node& fn, const std::string& key, const std::string& what,
+                          std::string& source) {
+  std::filesystem::path file = r.text(fn, key);
+  if (file.is_relative()) file = std::filesystem::path(r.file()).parent_path() / file;
+  std::string text, why;
+  if (!readInputFile(file.string(), limits::kMaxProfileBytes, text, why))
+    r.fail(fn.Mark(), key + ": cannot read " + what + " '" + file.string() + "': " + why);
+  source = file.string();
+  return text;
+}
+
+}  // namespace
+
 TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std::string& path,
                             const std::vector<std::string>& extra, const std::string& unit) {
   std::vector<std::string> keys{"type", "amplitude", "frequency_hz", "ramp_s", "from_hz", "to_hz", "duration", "log", "rms", "seed", "file"};
@@ -56,13 +73,7 @@ TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std
   } else if (t == "csv") {
     only({"file"});
     tm.type = TableMotion::Type::Profile;
-    const YAML::Node& fn = need("file");
-    std::filesystem::path file = r.text(fn, path + ".file");
-    if (file.is_relative()) file = std::filesystem::path(r.file()).parent_path() / file;
-    std::string why;
-    if (!readInputFile(file.string(), limits::kMaxProfileBytes, tm.profile_csv, why))
-      r.fail(fn.Mark(), path + ".file: cannot read profile '" + file.string() + "': " + why);
-    tm.profile_source = file.string();
+    tm.profile_csv = readNamedFile(r, need("file"), path + ".file", "profile", tm.profile_source);
   } else {
     r.fail(tn.Mark(), path + ".type: unknown program '" + t + "' (known: sine, sweep, random, csv)");
   }
@@ -103,12 +114,7 @@ SlewSpec readSlew(const YamlReader& r, const YAML::Node& sn, const std::string& 
   }
   if (sh == "program") {
     const YAML::Node& fn = r.require(sm, sn, path, "file");
-    std::filesystem::path file = r.text(fn, path + ".file");
-    if (file.is_relative()) file = std::filesystem::path(r.file()).parent_path() / file;
-    std::string why;
-    if (!readInputFile(file.string(), limits::kMaxProfileBytes, sl.program_csv, why))
-      r.fail(fn.Mark(), path + ".file: cannot read the angle program '" + file.string() + "': " + why);
-    sl.program_source = file.string();
+    sl.program_csv = readNamedFile(r, fn, path + ".file", "the angle program", sl.program_source);
     try {
       (void)facility::csvProfile(sl.program_csv, sl.program_source);
     } catch (const std::invalid_argument& e) {
