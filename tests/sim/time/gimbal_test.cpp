@@ -59,32 +59,38 @@ TEST(Gimbal, HeldTorquesAreGravityMoments) {
   }
 }
 
-// The pitch axis slews 0 -> 40 deg (cycloidal): its motor needs
+// The pitch axis following `pitch` on the rigid link (ring inertia 0.7 kg*m^2) for
+// 1.5 s: its angle is `model`'s at every sample and its motor needs
 //   tau = (m L^2 / 3 + 2 J_ring) theta'' + m g a cos theta
-// (the pitch ring and the roll ring inside it turn with it) at every sample, to 1e-9
-// of the peak: nothing is integrated, every DOF is prescribed.
-TEST(Gimbal, PitchSlewTorqueIsTheInverseDynamics) {
+// (the pitch ring and the roll ring inside it turn with it), to 1e-9 of the peak:
+// nothing is integrated, every DOF is prescribed. Returns the run.
+SimulationResult expectPitchInverseDynamics(const SlewSpec& pitch, const facility::Slew& model) {
   ArticleScene s = rigidLinkOnGimbal(0, 0, 0);
-  SlewSpec slew;
-  slew.to = 40 * kDeg;
-  s.article.base.gimbal->pitch.slew = slew;
+  s.article.base.gimbal->pitch.slew = pitch;
   s.article.base.gimbal->ring_inertia = 0.7;
   s.simulation.duration = 1.5;
   s.simulation.sample_rate_hz = 200;
   const SimulationResult r = simulate(s);
   const int a = column(r.record, "gimbal.pitch_angle_deg"), t = column(r.record, "gimbal.pitch_torque_n_m");
   const double m = 3.0, L = 1.0, g = 9.81, I = m * L * L / 3 + 2 * 0.7;
-  EXPECT_NEAR(r.record.rows.back()[a], 40.0, 1e-9);
   double peak = 0;
   for (const auto& row : r.record.rows) peak = std::max(peak, std::abs(row[t]));
-  // The expected torque from the slew's own state at each sample.
-  const facility::Slew model = facility::makeSlew(facility::SlewShape::Cycloidal, 0, 40 * kDeg, 0,
-                                                  {45 * kDeg, slew.max_rate, slew.max_acceleration});
   for (const auto& row : r.record.rows) {
     const facility::SlewState st = model.at(row[0]);
+    EXPECT_NEAR(row[a], st.angle / kDeg, 1e-9) << "t = " << row[0];
     const double expected = I * st.acceleration + m * g * (L / 2) * std::cos(st.angle);
     EXPECT_NEAR(std::abs(row[t]), std::abs(expected), 1e-9 * peak) << "t = " << row[0];
   }
+  return r;
+}
+
+// A cycloidal slew of the pitch axis, 0 -> 40 deg, as above.
+TEST(Gimbal, PitchSlewTorqueIsTheInverseDynamics) {
+  SlewSpec slew;
+  slew.to = 40 * kDeg;
+  const SimulationResult r = expectPitchInverseDynamics(
+      slew, facility::makeSlew(facility::SlewShape::Cycloidal, 0, 40 * kDeg, 0, {45 * kDeg, slew.max_rate, slew.max_acceleration}));
+  EXPECT_NEAR(r.record.rows.back()[column(r.record, "gimbal.pitch_angle_deg")], 40.0, 1e-9);
   ASSERT_EQ(r.torques.size(), 4u);
   for (const auto& ts : r.torques)
     if (ts.joint == "gimbal.pitch") EXPECT_DOUBLE_EQ(ts.capacity_nm, 200.0);
@@ -175,30 +181,14 @@ TEST(Gimbal, YawSpinUpTurnsPastAHalfTurnWithTheInverseDynamicsTorque) {
 }
 
 // An angle program on the pitch axis (a CSV in degrees, 0 -> 30 -> 10 deg): the angle
-// follows it and the motor gives (m L^2 / 3 + 2 J_ring) theta'' + m g a cos theta, as
-// for a slew, to 1e-9 of the peak.
+// follows it and the motor's torque is the inverse dynamics, as for a slew.
 TEST(Gimbal, PitchAngleProgramTorqueIsTheInverseDynamics) {
-  ArticleScene s = rigidLinkOnGimbal(0, 0, 0);
   SlewSpec program;
   program.program_csv = "time_s,angle_deg\n0,0\n0.5,30\n1.2,10\n";
   program.program_source = "pitch.csv";
-  s.article.base.gimbal->pitch.slew = program;
-  s.article.base.gimbal->ring_inertia = 0.7;
-  s.simulation.duration = 1.5;
-  s.simulation.sample_rate_hz = 200;
-  const SimulationResult r = simulate(s);
-  const int a = column(r.record, "gimbal.pitch_angle_deg"), t = column(r.record, "gimbal.pitch_torque_n_m");
-  const double m = 3.0, L = 1.0, g = 9.81, I = m * L * L / 3 + 2 * 0.7;
-  const facility::Slew model =
-      facility::makeAngleProgram(0, facility::csvProfile(program.program_csv, "pitch.csv"), kDeg, 45 * kDeg);
-  EXPECT_NEAR(r.record.rows.back()[a], 10.0, 1e-9);
-  double peak = 0;
-  for (const auto& row : r.record.rows) peak = std::max(peak, std::abs(row[t]));
-  for (const auto& row : r.record.rows) {
-    const facility::SlewState st = model.at(row[0]);
-    EXPECT_NEAR(row[a], st.angle / kDeg, 1e-9) << "t = " << row[0];
-    EXPECT_NEAR(std::abs(row[t]), std::abs(I * st.acceleration + m * g * (L / 2) * std::cos(st.angle)), 1e-9 * peak) << "t = " << row[0];
-  }
+  const SimulationResult r = expectPitchInverseDynamics(
+      program, facility::makeAngleProgram(0, facility::csvProfile(program.program_csv, "pitch.csv"), kDeg, 45 * kDeg));
+  EXPECT_NEAR(r.record.rows.back()[column(r.record, "gimbal.pitch_angle_deg")], 10.0, 1e-9);
 }
 
 }  // namespace
