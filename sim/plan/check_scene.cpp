@@ -21,7 +21,7 @@ std::vector<double> bandFrequencies(const ModesReport& m, double lo, double hi) 
   return f;
 }
 
-void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+void addTablePayloadLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const ArticleScene& scene = in.scene;
   if (scene.article.base.type != BaseType::Table) return;
   const facility::TableSpec table;
@@ -108,7 +108,7 @@ void addModeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
 }  // namespace
 
 void addTableAndModeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
-  addTableLines(in, out);
+  addTablePayloadLines(in, out);
   addModeLines(in, out);
 }
 

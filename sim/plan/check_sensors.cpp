@@ -6,6 +6,7 @@
 
 #include "facility/sensors.hpp"
 #include "sim/core/text.hpp"
+#include "sim/core/units.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/linear/time_response.hpp"
 #include "sim/model/stations.hpp"
@@ -16,7 +17,6 @@ namespace mmv::plan {
 
 namespace {
 
-constexpr double kRadToDeg = 180 / M_PI;
 constexpr double kMinRatioDb = 20;
 constexpr double kEdge = 0.98;  ///< a peak within 2 % of the range is at its edge.  ///< below: fewer than 10 counts of resolution in the peak.
 
@@ -127,7 +127,7 @@ double runPeak(const AccelerometerRows& a, const Eigen::MatrixXd& run, double g_
   return peak;
 }
 
-void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+void addTableSensorLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const ArticleScene& scene = in.scene;
   const auto& motion = scene.article.base.motion;
   std::vector<OutputSpec> outputs;
@@ -203,7 +203,7 @@ void addTableLines(const CheckInputs& in, std::vector<CheckLine>& out) {
 
 void addSensorLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   if (in.rigid_run) addRunLines(in, out);
-  addTableLines(in, out);
+  addTableSensorLines(in, out);
 }
 
 }  // namespace mmv::plan

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "sim/core/text.hpp"
+#include "sim/core/units.hpp"
 #include "sim/model/article_builder.hpp"
 #include "sim/plan/check_parts.hpp"
 #include "sim/scene/programs.hpp"
@@ -13,8 +14,6 @@
 namespace mmv::plan {
 
 namespace {
-
-constexpr double kRadToDeg = 180 / M_PI;
 
 /// A held angle the search moves: a locked joint or a gimbal axis.
 struct HeldAngle {

@@ -32,7 +32,7 @@ std::string withCatalogue(const std::string& instruments, const std::string& sen
 
 ArticleScene parse(const std::string& text) { return std::get<ArticleScene>(parseScene(text, "s.yaml")); }
 
-std::string errorOf(const std::string& text) {
+std::string catalogueErrorOf(const std::string& text) {
   try {
     parse(text);
   } catch (const SceneError& e) {
@@ -134,14 +134,14 @@ TEST(Instruments, BadEntriesAreRefusedAtTheirKeys) {
            {"instruments:\n  acc_small: {type: accelerometer}\n", "  - {name: a, type: rate_gyro, instrument: acc_small, point: link2@1.0m}\n",
             "sensors[0].type: rate_gyro, but its instrument acc_small is an accelerometer"},
        }) {
-    const std::string e = errorOf(withCatalogue(c.instruments, c.sensors));
+    const std::string e = catalogueErrorOf(withCatalogue(c.instruments, c.sensors));
     EXPECT_NE(e.find(c.message), std::string::npos) << c.instruments << c.sensors << " -> " << e;
     EXPECT_NE(e.find("s.yaml:"), std::string::npos) << e;  // with its position
   }
   // The bounds themselves are accepted.
   for (const char* ok : {"instruments:\n  accelerometer: {mass_kg: 10}\n", "instruments:\n  accelerometer: {mass_kg: 0}\n",
                          "instruments:\n  x: {type: accelerometer, axes: 3, size_m: 1}\n"})
-    EXPECT_EQ(errorOf(withCatalogue(ok, "  - {name: a, type: accelerometer, point: link2@1.0m}\n")), "(no error)") << ok;
+    EXPECT_EQ(catalogueErrorOf(withCatalogue(ok, "  - {name: a, type: accelerometer, point: link2@1.0m}\n")), "(no error)") << ok;
 }
 
 }  // namespace
