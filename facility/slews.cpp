@@ -79,6 +79,7 @@ Slew makeAngleProgram(double from, std::shared_ptr<const TableProgram> angles, d
       std::snprintf(what, sizeof what, "angle program: %.6g deg at %.6g s is outside the joint's +-%.6g deg range", deg(a), t, deg(range));
       throw std::invalid_argument(what);
     }
+    s.program_peak_angle_ = std::max(s.program_peak_angle_, std::abs(a));
     s.program_peak_rate_ = std::max(s.program_peak_rate_, std::abs(scale * s.program_->velocity(t)));
     s.program_peak_acceleration_ = std::max(s.program_peak_acceleration_, std::abs(scale * s.program_->acceleration(t)));
   }
@@ -122,6 +123,12 @@ double Slew::peakRate() const {
   if (shape_ == SlewShape::Program) return program_peak_rate_;
   if (duration_ == 0) return 0;
   return shape_ == SlewShape::Cycloidal ? 2 * std::abs(delta_) / duration_ : cruise_rate_;
+}
+
+double Slew::largestAngle() const {
+  if (shape_ == SlewShape::SpinUp) return INFINITY;
+  if (shape_ == SlewShape::Program) return program_peak_angle_;
+  return std::max(std::abs(from_), std::abs(from_ + delta_));
 }
 
 double Slew::peakAcceleration() const {

@@ -48,6 +48,12 @@ class Slew {
   double duration() const { return duration_; }  ///< a spin-up's: its ramp
   double peakRate() const;
   double peakAcceleration() const;
+  /// The largest |angle| it reaches (rad): a move's larger end, an angle program's
+  /// largest (between its samples too), a spin-up's none (infinity).
+  double largestAngle() const;
+  /// An angle program's first angle as written (rad), before it was moved to start at
+  /// the joint's angle; the start angle for the other shapes.
+  double writtenStart() const { return from_ - program_offset_; }
   SlewShape shape() const { return shape_; }
 
  private:
@@ -60,7 +66,7 @@ class Slew {
   std::shared_ptr<const TableProgram> program_;  ///< program: its samples as read
   double program_scale_ = 1;                      ///< program: rad per unit read
   double program_offset_ = 0;                     ///< program: rad added (its start moved to `from_`)
-  double program_peak_rate_ = 0, program_peak_acceleration_ = 0;
+  double program_peak_rate_ = 0, program_peak_acceleration_ = 0, program_peak_angle_ = 0;
 };
 
 /// A slew from `from` to `to` (rad) starting at `start_time` (s, informational: at() is

@@ -207,15 +207,11 @@ void addSlewLines(const CheckInputs& in, std::vector<CheckLine>& out) {
                            in.options.required_margin_pct));
 }
 
-/// The largest |angle| an axis reaches (rad): its held angle, a move's end, or the largest
-/// of an angle program's (sampled as the reader checks it).
+/// The largest |angle| an axis reaches (rad): its held angle or its slew's largest (an
+/// angle program's as the reader checked it, between the samples too).
 double axisReach(const GimbalAxisSpec& a) {
-  double reach = std::abs(a.angle);
-  if (!a.slew) return reach;
-  if (a.slew->program_csv.empty()) return std::max(reach, std::abs(a.slew->to));
-  const facility::Slew p = makeSlew(*a.slew, a.angle, a.range, a.continuous);
-  for (int k = 0; k <= 4000; ++k) reach = std::max(reach, std::abs(p.at(p.duration() * k / 4000).angle));
-  return reach;
+  if (!a.slew) return std::abs(a.angle);
+  return std::max(std::abs(a.angle), makeSlew(*a.slew, a.angle, a.range, a.continuous).largestAngle());
 }
 
 /// The gimbal's angles (held and slewed) against its ranges (the reader refuses beyond);

@@ -89,12 +89,11 @@ class SceneParser {
   /// at its key, rather than when the model is built.
   void checkSlew(const YAML::Node& n, const std::string& path, const SlewSpec& slew, double from, double range, bool continuous) {
     try {
-      if (!slew.program_csv.empty()) {  // the program as written: from the joint's own angle
-        const double first = facility::csvProfile(slew.program_csv, slew.program_source)->position(0);
-        if (std::abs(first * kDegToRad - from) > 1e-9)
-          r_.fail(n.Mark(), path + strf(": angle program: it starts at %.6g deg, the joint at %.6g deg (its angle_deg): the first "
-                                        "angle must be the joint's", first, from / kDegToRad));
-      }
+      // An angle program as written starts at the joint's own angle: said before its range.
+      const double start = makeSlew(slew, from, INFINITY, true).writtenStart();
+      if (std::abs(start - from) > 1e-9)
+        r_.fail(n.Mark(), path + strf(": angle program: it starts at %.6g deg, the joint at %.6g deg (its angle_deg): the first "
+                                      "angle must be the joint's", start / kDegToRad, from / kDegToRad));
       (void)makeSlew(slew, from, range, continuous);
     } catch (const std::invalid_argument& e) {
       r_.fail(n.Mark(), path + ": " + e.what());

@@ -106,6 +106,11 @@ TEST(Slews, AngleProgramFromACsv) {
   const Slew o = makeAngleProgram(0, csvProfile(over, "o.csv"), kDeg, 45 * kDeg);
   for (int k = 0; k <= 2000; ++k) top = std::max(top, o.at(2.0 * k / 2000).angle);
   EXPECT_GT(top, 40 * kDeg);  // the overshoot the range check must see
+  EXPECT_NEAR(o.largestAngle(), top, 1e-6 * kDeg);
+  EXPECT_EQ(o.writtenStart(), 0.0);
+  EXPECT_NEAR(moved.writtenStart(), 10 * kDeg, 1e-15);  // as written, before the move to -5 deg
+  EXPECT_EQ(makeSpinUp(0, 1, 1).largestAngle(), INFINITY);
+  EXPECT_NEAR(makeSlew(SlewShape::Cycloidal, -30 * kDeg, 20 * kDeg, 0, {}).largestAngle(), 30 * kDeg, 1e-15);
   EXPECT_THROW(makeAngleProgram(0, csvProfile(over, "o.csv"), kDeg, 40 * kDeg), std::invalid_argument);
 }
 

@@ -277,11 +277,11 @@ TEST(Check, GimbalRangeLinesFollowSpinUpsAndAnglePrograms) {
   s.simulation.duration = 1.5;
   const CheckReport r = runCheck(s);
   const facility::Slew p = facility::makeAngleProgram(0, facility::csvProfile(program.program_csv, "pitch.csv"), M_PI / 180, M_PI);
-  double top = 0;
-  for (int k = 0; k <= 4000; ++k) top = std::max(top, std::abs(p.at(p.duration() * k / 4000).angle) * 180 / M_PI);
+  double top = 0;  // sampled 10x finer than the reader does
+  for (int k = 0; k <= 20000; ++k) top = std::max(top, std::abs(p.at(p.duration() * k / 20000).angle) * 180 / M_PI);
   const CheckLine* pitch = find(r, "gimbal pitch angle");
   ASSERT_NE(pitch, nullptr);
-  EXPECT_NEAR(pitch->demand, top, 1e-9);
+  EXPECT_NEAR(pitch->demand, top, 1e-4);
   EXPECT_GT(pitch->demand, 30.0);
   EXPECT_NE(pitch->note.find("angle program"), std::string::npos) << pitch->note;
   const CheckLine* yaw = find(r, "gimbal yaw angle");
