@@ -392,17 +392,24 @@ def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tole
     return result
 
 
-def _csv_table(text):
+def _csv_table(text, number=None):
     """A CSV file's text as (its columns in order, {column: numpy float array, or a list
-    of strings for a text column}); an empty cell is NaN."""
+    of strings for a text column}); an empty cell is NaN. `number[column]`, when given,
+    says which columns hold numbers (a field list's word); else a column that reads as
+    numbers is one."""
     rows = list(_csv.reader(_io.StringIO(text)))
     columns = rows[0] if rows else []
     table = {}
     for k, c in enumerate(columns):
         cells = [r[k] for r in rows[1:]]
+        if number is not None and not number[c]:
+            table[c] = cells
+            continue
         try:
             table[c] = _np.array([float(x) if x != "" else _np.nan for x in cells], dtype=float)
         except ValueError:
+            if number is not None:
+                raise
             table[c] = cells
     return columns, table
 
@@ -469,13 +476,15 @@ def trade(scene, *, segments=0, integrators=(), accuracies=(), segment_ladder=()
 class SweepResult(Result):
     """A design sweep: `.json` is sweep.json; `table[column]` sweep.csv's columns (numpy
     float arrays; text columns such as `status` and `check_overall` as lists), `columns`
-    their order, `csv` the file's text and `csv_path` where it is."""
+    their order, `fields[column]` each one's {key, unit, number, meaning} (sweep.json's
+    field list, which also made the CSV), `csv` the file's text and `csv_path` where it is."""
 
     def __init__(self, json_text, text, table):
         super().__init__(json_text, text)
         self.csv = table
         self.csv_path = self.json["csv"]
-        self.columns, self.table = _csv_table(table)
+        self.fields = {f["key"]: f for f in self.json["fields"]}
+        self.columns, self.table = _csv_table(table, {k: f["number"] for k, f in self.fields.items()})
 
 
 def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):

@@ -158,9 +158,15 @@ def test_sweep_equals_the_cli_sweep(tmp_path):
     assert r.returncode == 0, r.stderr
     cli = json.loads(r.stdout)
     assert (tmp_path / "py" / "sweep.csv").read_text() == (tmp_path / "cli" / "sweep.csv").read_text()
-    for k in ("fingerprint", "design", "points", "shard", "computed", "reused", "columns"):
+    for k in ("fingerprint", "design", "points", "shard", "computed", "reused", "columns", "fields"):
         assert py.json[k] == cli[k], k
     assert py.columns == cli["columns"] and len(py.table["mode1_hz"]) == 6
+    # One field list made the header and the field records: same keys, same order; its
+    # units and kinds are the ones the CSV's cells have.
+    assert [f["key"] for f in cli["fields"]] == cli["columns"]
+    assert py.fields["mode1_hz"]["unit"] == "Hz" and py.fields["mass_kg"]["unit"] == "kg"
+    assert py.fields["mode1_mac"]["unit"] == "1" and not py.fields["check_overall"]["number"]
+    assert all(isinstance(py.table[k], np.ndarray) == f["number"] for k, f in py.fields.items())
     assert py.table["status"] == ["ok"] * 6
     again = mmvlab.sweep(spec, tmp_path / "py")  # resumed: every point already in the journal
     assert again.json["computed"] == 0 and again.json["reused"] == 6

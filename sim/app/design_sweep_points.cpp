@@ -84,13 +84,20 @@ std::string jsonCell(const nlohmann::ordered_json& j, const std::string& pointer
   return clean(v.dump());
 }
 
-struct PointResult {
+}  // namespace
+
+struct SweepPointResult {
   ModesReport modes;
   CheckReport check;
+  // What several of a point's columns read, made on the first's demand (a point is one thread's).
+  mutable std::optional<nlohmann::ordered_json> modes_json, check_json;
+  mutable std::optional<std::vector<std::string>> tracked;  ///< mode<k>_hz, mode<k>_mac cells in turn.
 };
 
-PointResult analyse(const DesignSweepContext& c, const ArticleScene& scene) {
-  PointResult r;
+namespace {
+
+SweepPointResult analyse(const DesignSweepContext& c, const ArticleScene& scene) {
+  SweepPointResult r;
   ModesOptions mo;
   mo.with_shapes = true;
   r.modes = runModes(scene, mo);
@@ -98,63 +105,107 @@ PointResult analyse(const DesignSweepContext& c, const ArticleScene& scene) {
   return r;
 }
 
-void appendOutputs(const DesignSweepContext& c, const PointResult* r, std::vector<std::string>& cells) {
-  const DesignSweepSpec& s = c.spec;
-  std::optional<nlohmann::ordered_json> modes_json, check_json;  // written once per point, only when asked for
-  for (const auto& o : s.outputs) {
-    if (o == "frequencies") {
-      const int k = static_cast<int>(c.reference_shapes.cols());
-      std::vector<std::string> f(k), mac(k);
-      if (r) {
-        std::vector<double> hz;
-        const Eigen::MatrixXd now = pointShapes(r->modes, s.modes + 6, &hz);
-        if (now.rows() == c.reference_shapes.rows() && now.cols() > 0) {
-          Eigen::MatrixXd padded = Eigen::MatrixXd::Zero(now.rows(), std::max(now.cols(), c.reference_shapes.cols()));
-          padded.leftCols(now.cols()) = now;
-          const ModeMatch m = matchModes(c.reference_shapes, padded);
-          for (int t = 0; t < k; ++t)
-            if (m.index[t] < now.cols()) f[t] = cell(hz[m.index[t]]), mac[t] = strf("%.4f", m.mac[t]);
-        }
-      }
-      for (int t = 0; t < k; ++t) cells.push_back(f[t]), cells.push_back(mac[t]);
-    } else if (o == "mass") {
-      cells.push_back(r ? cell(r->modes.model.total_mass_kg) : "");
-    } else if (o == "deflection") {
-      double d = 0;
-      if (r)
-        for (const auto& p : r->modes.points) d = std::max(d, std::hypot(p.dx, p.dy));
-      cells.push_back(r ? cell(d) : "");
-    } else if (o == "check") {
-      cells.push_back(r ? verdictName(r->check.overall) : "");
-      for (const auto& id : c.check_ids) {
-        const CheckLine* line = nullptr;
-        if (r)
-          for (const auto& l : r->check.lines)
-            if (l.id == id) line = &l;
-        cells.push_back(line && !line->unit.empty() ? cell(line->demand) : "");
-        cells.push_back(line && line->has_capacity ? cell(line->margin_pct) : "");
-      }
-      int warnings = 0;
-      if (r)
-        for (const auto& l : r->check.lines) warnings += l.id == "plausibility.warning";
-      cells.push_back(r ? std::to_string(warnings) : "");
-    } else if (o.rfind("first_mode:", 0) == 0) {
-      std::string f;
-      if (r)
-        for (const auto& m : r->modes.modes)
-          if (m.stable && !m.rigid_body && isLinkOrBranch(m.dominant_link_strain, o.substr(11))) {
-            f = cell(m.frequency_hz);
-            break;
-          }
-      cells.push_back(f);
-    } else if (o.rfind("json:modes/", 0) == 0) {
-      if (r && !modes_json) modes_json = modesToJson(r->modes);
-      cells.push_back(r ? jsonCell(*modes_json, o.substr(10)) : "");
-    } else {
-      if (r && !check_json) check_json = checkJson(r->check);
-      cells.push_back(r ? jsonCell(*check_json, o.substr(10)) : "");
-    }
+/// The nominal modes tracked to this point: hz and MAC cells of each (empty: no match).
+const std::vector<std::string>& trackedCells(const SweepPointResult& r, const Eigen::MatrixXd& reference, int modes) {
+  if (r.tracked) return *r.tracked;
+  const Eigen::Index k = reference.cols();
+  std::vector<std::string> cells(2 * static_cast<std::size_t>(k));
+  std::vector<double> hz;
+  const Eigen::MatrixXd now = pointShapes(r.modes, modes + 6, &hz);
+  if (now.rows() == reference.rows() && now.cols() > 0) {
+    Eigen::MatrixXd padded = Eigen::MatrixXd::Zero(now.rows(), std::max(now.cols(), k));
+    padded.leftCols(now.cols()) = now;
+    const ModeMatch m = matchModes(reference, padded);
+    for (Eigen::Index t = 0; t < k; ++t)
+      if (m.index[t] < now.cols()) cells[2 * t] = cell(hz[m.index[t]]), cells[2 * t + 1] = strf("%.4f", m.mac[t]);
   }
+  return *(r.tracked = std::move(cells));
+}
+
+using Cell = std::function<std::string(const SweepPointResult&)>;
+
+void addColumn(DesignSweepContext& c, std::string key, std::string unit, std::string meaning, bool number, Cell cell) {
+  c.columns.push_back({std::move(key), std::move(unit), std::move(meaning), number, std::move(cell)});
+}
+
+void addFrequencyColumns(DesignSweepContext& c, const SweepPointResult& nominal) {
+  c.reference_shapes = pointShapes(nominal.modes, c.spec.modes, nullptr);
+  const auto reference = std::make_shared<const Eigen::MatrixXd>(c.reference_shapes);
+  const int modes = c.spec.modes;
+  for (Eigen::Index k = 0; k < c.reference_shapes.cols(); ++k) {
+    const long n = static_cast<long>(k) + 1;
+    for (int part = 0; part < 2; ++part)
+      addColumn(c, strf(part ? "mode%ld_mac" : "mode%ld_hz", n), part ? "1" : "Hz",
+                part ? strf("MAC of the nominal scene's mode %ld with the mode it was tracked to (below 0.5: it changed character)", n)
+                     : strf("frequency of the nominal scene's mode %ld tracked to this point by MAC (empty: no mode matched)", n),
+                true, [reference, modes, k, part](const SweepPointResult& r) {
+                  return trackedCells(r, *reference, modes)[2 * static_cast<std::size_t>(k) + part];
+                });
+  }
+}
+
+void addCheckColumns(DesignSweepContext& c, const SweepPointResult& nominal) {
+  addColumn(c, "check_overall", "", "check's overall verdict at this point", false,
+            [](const SweepPointResult& r) { return std::string(verdictName(r.check.overall)); });
+  for (const auto& l : nominal.check.lines) {
+    if (l.group == "plausibility") continue;
+    c.check_ids.push_back(l.id);
+    const auto line = [id = l.id](const SweepPointResult& r) -> const CheckLine* {
+      for (const auto& x : r.check.lines)
+        if (x.id == id) return &x;
+      return nullptr;
+    };
+    addColumn(c, l.id + "_demand", l.unit, "check line " + l.id + ": what the test needs", true, [line](const SweepPointResult& r) {
+      const CheckLine* x = line(r);
+      return x && !x->unit.empty() ? cell(x->demand) : std::string();
+    });
+    addColumn(c, l.id + "_margin_pct", "%", "check line " + l.id + ": margin to its capacity", true, [line](const SweepPointResult& r) {
+      const CheckLine* x = line(r);
+      return x && x->has_capacity ? cell(x->margin_pct) : std::string();
+    });
+  }
+  addColumn(c, "plausibility_warnings", "", "how many plausibility warnings the scene draws at this point", true,
+            [](const SweepPointResult& r) {
+              int warnings = 0;
+              for (const auto& l : r.check.lines) warnings += l.id == "plausibility.warning";
+              return std::to_string(warnings);
+            });
+}
+
+void addFirstModeColumn(DesignSweepContext& c, std::size_t i) {
+  const std::string& o = c.spec.outputs[i];
+  const std::string link = o.substr(11);
+  bool known = false;
+  std::string names;
+  for (const auto& l : sceneAt(c, {}).article.links)
+    known = known || isLinkOrBranch(l.name, link), names += (names.empty() ? "" : ", ") + l.name;
+  if (!known) throw SceneError(c.spec.output_where[i] + ": output '" + o + "': no link '" + link + "' (known: " + names + ")");
+  addColumn(c, "first_mode_" + link + "_hz", "Hz", "the lowest vibration mode whose strain energy is mostly in " + link, true,
+            [link](const SweepPointResult& r) {
+              for (const auto& m : r.modes.modes)
+                if (m.stable && !m.rigid_body && isLinkOrBranch(m.dominant_link_strain, link)) return cell(m.frequency_hz);
+              return std::string();
+            });
+}
+
+void addJsonColumn(DesignSweepContext& c, std::size_t i, const SweepPointResult& nominal) {
+  const std::string& o = c.spec.outputs[i];
+  const bool modes = o.rfind("json:modes/", 0) == 0;
+  const std::string pointer = o.substr(10);
+  const nlohmann::ordered_json j = modes ? modesToJson(nominal.modes) : checkJson(nominal.check);
+  try {
+    if (!j.contains(nlohmann::ordered_json::json_pointer(pointer)))
+      throw SceneError(c.spec.output_where[i] + ": output '" + o + "': the nominal scene's JSON has no such field");
+  } catch (const nlohmann::json::exception& e) {
+    throw SceneError(c.spec.output_where[i] + ": output '" + o + "' is not a JSON pointer (/key/0/key): " + e.what());
+  }
+  const bool number = j.at(nlohmann::ordered_json::json_pointer(pointer)).is_number();
+  addColumn(c, o.substr(5), "", std::string("field ") + pointer + " of " + (modes ? "`modes --json`" : "`check --json`") + " (its unit is the key's)",
+            number, [modes, pointer](const SweepPointResult& r) {
+              auto& cached = modes ? r.modes_json : r.check_json;
+              if (!cached) cached = modes ? modesToJson(r.modes) : checkJson(r.check);
+              return jsonCell(*cached, pointer);
+            });
 }
 
 std::string fnv1a(const std::string& s) {
@@ -163,49 +214,34 @@ std::string fnv1a(const std::string& s) {
   return strf("%016llx", static_cast<unsigned long long>(h));
 }
 
-void layOut(DesignSweepContext& c, const PointResult& nominal) {
-  c.header = {"point"};
-  for (const auto& p : c.spec.parameters) c.header.push_back(p.key);
-  c.header.push_back("status");
+void layOut(DesignSweepContext& c, const SweepPointResult& nominal) {
+  addColumn(c, "point", "", "the point's index in the design (0-based)", true, nullptr);
+  for (const auto& p : c.spec.parameters)
+    addColumn(c, p.key, "", "scene key " + p.key + " at this point, in the scene's own unit for it", true, nullptr);
+  addColumn(c, "status", "", "ok, or what went wrong at this point (the scene refused a value, the equilibrium failed)", false, nullptr);
   for (std::size_t i = 0; i < c.spec.outputs.size(); ++i) {
     const std::string& o = c.spec.outputs[i];
     if (o == "frequencies") {
-      c.reference_shapes = pointShapes(nominal.modes, c.spec.modes, nullptr);
-      for (Eigen::Index k = 1; k <= c.reference_shapes.cols(); ++k)
-        c.header.push_back(strf("mode%ld_hz", static_cast<long>(k))), c.header.push_back(strf("mode%ld_mac", static_cast<long>(k)));
+      addFrequencyColumns(c, nominal);
     } else if (o == "mass") {
-      c.header.push_back("mass_kg");
+      addColumn(c, "mass_kg", "kg", "the article's total mass", true,
+                [](const SweepPointResult& r) { return cell(r.modes.model.total_mass_kg); });
     } else if (o == "deflection") {
-      c.header.push_back("max_deflection_m");
+      addColumn(c, "max_deflection_m", "m", "the largest static deflection of a named point", true, [](const SweepPointResult& r) {
+        double d = 0;
+        for (const auto& p : r.modes.points) d = std::max(d, std::hypot(p.dx, p.dy));
+        return cell(d);
+      });
     } else if (o.rfind("first_mode:", 0) == 0) {
-      const std::string link = o.substr(11);
-      bool known = false;
-      std::string names;
-      for (const auto& l : sceneAt(c, {}).article.links)
-        known = known || isLinkOrBranch(l.name, link), names += (names.empty() ? "" : ", ") + l.name;
-      if (!known) throw SceneError(c.spec.output_where[i] + ": output '" + o + "': no link '" + link + "' (known: " + names + ")");
-      c.header.push_back("first_mode_" + link + "_hz");
+      addFirstModeColumn(c, i);
     } else if (o == "check") {
-      c.header.push_back("check_overall");
-      for (const auto& l : nominal.check.lines)
-        if (l.group != "plausibility") {
-          c.check_ids.push_back(l.id);
-          c.header.push_back(l.id + "_demand"), c.header.push_back(l.id + "_margin_pct");
-        }
-      c.header.push_back("plausibility_warnings");
+      addCheckColumns(c, nominal);
     } else {
-      const nlohmann::ordered_json j = o.rfind("json:modes/", 0) == 0 ? modesToJson(nominal.modes) : checkJson(nominal.check);
-      try {
-        if (!j.contains(nlohmann::ordered_json::json_pointer(o.substr(10))))
-          throw SceneError(c.spec.output_where[i] + ": output '" + o + "': the nominal scene's JSON has no such field");
-      } catch (const nlohmann::json::exception& e) {
-        throw SceneError(c.spec.output_where[i] + ": output '" + o + "' is not a JSON pointer (/key/0/key): " + e.what());
-      }
-      c.header.push_back(o.substr(5));
+      addJsonColumn(c, i, nominal);
     }
   }
   // Scene keys and JSON pointers as column names every CSV reader keeps (no '.', '/').
-  for (auto& h : c.header) h = csvColumnName(h);
+  for (auto& col : c.columns) c.header.push_back(col.key = csvColumnName(col.key));
 }
 
 }  // namespace
@@ -246,7 +282,7 @@ DesignSweepContext prepareDesignSweep(const DesignSweepSpec& spec) {
       throw SceneError(p.where + ": parameters[" + std::to_string(k) + "] '" + p.key + "': " + withoutSetPrefix(e.what(), set));
     }
   }
-  const PointResult nominal = [&] {
+  const SweepPointResult nominal = [&] {
     const ProgressStage stage("the nominal scene (before the points)");
     return analyse(c, sceneAt(c, {}));
   }();
@@ -263,18 +299,25 @@ std::vector<std::string> evaluateDesignSweepPoint(const DesignSweepContext& c, l
   std::vector<std::string> cells;
   for (double v : x) cells.push_back(cell(v));
   std::string status = "ok";
-  PointResult r;
-  bool ok = true;
+  std::optional<SweepPointResult> r;
   try {
     r = analyse(c, sceneAt(c, pointOverrides(c.spec, x)));
   } catch (const SceneError& e) {
-    status = "scene error: " + std::string(e.what()), ok = false;
+    status = "scene error: " + std::string(e.what());
   } catch (const NumericalError& e) {
-    status = "numerical failure: " + std::string(e.what()), ok = false;
+    status = "numerical failure: " + std::string(e.what());
   }
   cells.push_back(clean(status));
-  appendOutputs(c, ok ? &r : nullptr, cells);
+  for (std::size_t k = x.size() + 2; k < c.columns.size(); ++k) cells.push_back(r ? c.columns[k].cell(*r) : "");
+  if (cells.size() + 1 != c.columns.size()) throw InternalError("a sweep point's cells do not match its columns");
   return cells;
+}
+
+nlohmann::ordered_json sweepFieldsJson(const std::vector<SweepColumn>& columns) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& col : columns)
+    out.push_back({{"key", col.key}, {"unit", col.unit}, {"number", col.number}, {"meaning", col.meaning}});
+  return out;
 }
 
 }  // namespace mmv

@@ -18,18 +18,36 @@
 ///    `check --json` (RFC 6901 pointer), e.g. json:modes/modes/0/effective_mass_x_kg.
 
 #include <Eigen/Dense>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "sim/scene/design_sweep_spec.hpp"
 
 namespace mmv {
 
+struct SweepPointResult;  ///< one point's modes and check (private to the .cpp).
+
+/// One column of sweep.csv, described once: the header, sweep.json's `fields` (and so
+/// Python's) and each point's cell are all made from this, so they cannot disagree.
+struct SweepColumn {
+  std::string key;      ///< the CSV column's name.
+  std::string unit;     ///< "Hz", "kg", "m", "%", "1" (a ratio); "" text, a count, or a scene key's own unit.
+  std::string meaning;  ///< one line.
+  bool number = true;   ///< its cells are numbers (else text).
+  /// The cell of a point whose analysis succeeded (an output column; the point,
+  /// parameter and status columns have none: the runner and the point write them).
+  std::function<std::string(const SweepPointResult&)> cell;
+};
+
 struct DesignSweepContext {
   DesignSweepSpec spec;
   std::string scene_text, scene_source;  ///< the base scene.
   std::vector<std::vector<double>> points;
-  std::vector<std::string> header;
+  std::vector<SweepColumn> columns;  ///< point, each parameter, status, then the outputs' columns.
+  std::vector<std::string> header;   ///< the columns' keys.
   std::string fingerprint;  ///< of the spec, the scene, the header and the program's version.
   Eigen::MatrixXd reference_shapes;  ///< nominal modes tracked (columns), at the named points.
   std::vector<std::string> check_ids;
@@ -40,5 +58,7 @@ struct DesignSweepContext {
 DesignSweepContext prepareDesignSweep(const DesignSweepSpec& spec);
 /// The cells of point `index` after its index column. Thread-safe.
 std::vector<std::string> evaluateDesignSweepPoint(const DesignSweepContext& context, long index);
+/// sweep.json's `fields`: a record {key, unit, number, meaning} per column.
+nlohmann::ordered_json sweepFieldsJson(const std::vector<SweepColumn>& columns);
 
 }  // namespace mmv

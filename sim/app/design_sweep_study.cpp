@@ -50,6 +50,7 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
   j["reused"] = s.result.reused;
   j["seconds"] = s.result.seconds;
   j["columns"] = context.header;
+  j["fields"] = sweepFieldsJson(context.columns);
   j["csv"] = s.result.csv;
   s.text = strf("sweep %s: %zu points (%s), shard %s: %ld computed, %ld already done, %.2f s on %d threads\n",
                 spec.source.c_str(), context.points.size(), j["design"].get<std::string>().c_str(), run.shard.text().c_str(),

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <set>
 
 #include "sim/core/errors.hpp"
@@ -16,11 +17,11 @@ namespace {
 
 const std::string kScene = std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\nsegments: 2\n";
 
-DesignSweepSpec parse(const std::string& body) { return parseSweepSpec(kScene + body, "spec.yaml", "."); }
+DesignSweepSpec parseSpec(const std::string& body) { return parseSweepSpec(kScene + body, "spec.yaml", "."); }
 
-std::string errorOf(const std::string& body) {
+std::string specErrorOf(const std::string& body) {
   try {
-    (void)prepareDesignSweep(parse(body));
+    (void)prepareDesignSweep(parseSpec(body));
   } catch (const SceneError& e) {
     return e.what();
   }
@@ -28,7 +29,7 @@ std::string errorOf(const std::string& body) {
 }
 
 TEST(DesignSweepSpec, GridVariesTheLastParameterFastest) {
-  const DesignSweepSpec s = parse(
+  const DesignSweepSpec s = parseSpec(
       "parameters:\n  - {key: links.link1.length, values: [2, 3]}\n"
       "  - {key: links.link2.length, range: {from: 1, to: 2, samples: 3}}\noutputs: [mass]\n");
   const auto p = sweepPoints(s);
@@ -44,7 +45,7 @@ TEST(DesignSweepSpec, LatinHypercubePutsOnePointInEachStratumAndIsSeeded) {
       "parameters:\n  - {key: links.link1.length, range: {from: 1, to: 2, samples: 2}}\n"
       "  - {key: links.link2.length, range: {from: 0.1, to: 10, samples: 2, log: true}}\n"
       "design: {type: latin_hypercube, samples: 20, seed: SEED}\noutputs: [mass]\n";
-  auto with = [&](const std::string& seed) { return sweepPoints(parse(std::regex_replace(body, std::regex("SEED"), seed))); };
+  auto with = [&](const std::string& seed) { return sweepPoints(parseSpec(std::regex_replace(body, std::regex("SEED"), seed))); };
   const auto a = with("4"), b = with("4"), c = with("5");
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
@@ -59,13 +60,13 @@ TEST(DesignSweepSpec, LatinHypercubePutsOnePointInEachStratumAndIsSeeded) {
 
 TEST(DesignSweepSpec, BadSpecsNameTheirPosition) {
   const std::string tail = "outputs: [mass]\n";
-  EXPECT_NE(errorOf("parameters:\n  - {key: links.link9.length, values: [1]}\n" + tail).find("spec.yaml:4:5: parameters[0] 'links.link9.length'"),
+  EXPECT_NE(specErrorOf("parameters:\n  - {key: links.link9.length, values: [1]}\n" + tail).find("spec.yaml:4:5: parameters[0] 'links.link9.length'"),
             std::string::npos)
-      << errorOf("parameters:\n  - {key: links.link9.length, values: [1]}\n" + tail);
+      << specErrorOf("parameters:\n  - {key: links.link9.length, values: [1]}\n" + tail);
   auto refused = [&](const std::string& body, const std::string& what) {
     std::string e;
     try {
-      (void)parse(body);
+      (void)parseSpec(body);
     } catch (const SceneError& x) {
       e = x.what();
     }
@@ -81,10 +82,10 @@ TEST(DesignSweepSpec, BadSpecsNameTheirPosition) {
   refused("parameters:\n  - {key: a, range: {from: 1, to: 2, samples: 1001}}\n  - {key: b, range: {from: 1, to: 2, samples: 1000}}\n" + tail,
           "the grid has 1.001e+06 points, above the limit of 1000000");
   refused("parameters:\n  - {key: a, values: [1]}\ndesign: {type: latin_hypercube, samples: 0}\n" + tail, "design.samples must be 1 to");
-  EXPECT_NE(errorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n")
+  EXPECT_NE(specErrorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n")
                 .find("spec.yaml:5:11: output 'json:modes/modes/0/no_such_field': the nominal scene's JSON has no such field"),
             std::string::npos)
-      << errorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n");
+      << specErrorOf("parameters:\n  - {key: links.link1.length, values: [1]}\noutputs: [\"json:modes/modes/0/no_such_field\"]\n");
 }
 
 // Each of these exited 65 with no file:line:col (issue 38): the spec's position now
@@ -115,7 +116,7 @@ TEST(DesignSweepSpec, EmptyScalarHamsasAndBadSetSpecsNameTheirPosition) {
 
 TEST(DesignSweepSpec, PointsAreRowsOfTheirOwn) {
   // The same point evaluated twice (and out of order) gives the same cells.
-  const DesignSweepContext c = prepareDesignSweep(parse(
+  const DesignSweepContext c = prepareDesignSweep(parseSpec(
       "parameters:\n  - {key: links.link3.length, values: [0.6, 0.9]}\noutputs: [frequencies, mass, check, \"json:modes/modes/0/effective_mass_x_kg\"]\nmodes: 3\n"));
   const auto b1 = evaluateDesignSweepPoint(c, 1), a = evaluateDesignSweepPoint(c, 0), b2 = evaluateDesignSweepPoint(c, 1);
   EXPECT_EQ(b1, b2);
@@ -126,8 +127,45 @@ TEST(DesignSweepSpec, PointsAreRowsOfTheirOwn) {
   EXPECT_EQ(c.header.back(), "modes_modes_0_effective_mass_x_kg");  // a JSON pointer as a CSV column name
 }
 
+TEST(DesignSweepSpec, OneColumnListMakesTheHeaderTheFieldsAndTheCells) {
+  const DesignSweepContext c = prepareDesignSweep(parseSpec(
+      "parameters:\n  - {key: links.link3.length, values: [0.6, 0.9]}\n"
+      "outputs: [frequencies, mass, deflection, \"first_mode:link3\", check, \"json:modes/modes/0/effective_mass_x_kg\"]\nmodes: 2\n"));
+  const nlohmann::ordered_json fields = sweepFieldsJson(c.columns);
+  ASSERT_EQ(fields.size(), c.header.size());
+  for (std::size_t k = 0; k < c.header.size(); ++k) EXPECT_EQ(fields[k]["key"], c.header[k]) << k;
+  const auto unitOf = [&](const std::string& key) {
+    for (const auto& f : fields)
+      if (f["key"] == key) return f["unit"].get<std::string>();
+    return std::string("(no such column)");
+  };
+  EXPECT_EQ(unitOf("mode2_hz"), "Hz");
+  EXPECT_EQ(unitOf("mode2_mac"), "1");
+  EXPECT_EQ(unitOf("mass_kg"), "kg");
+  EXPECT_EQ(unitOf("max_deflection_m"), "m");
+  EXPECT_EQ(unitOf("first_mode_link3_hz"), "Hz");
+  // Each cell of a computed point is a number exactly where its field says so.
+  const auto row = evaluateDesignSweepPoint(c, 0);
+  ASSERT_EQ(row.size() + 1, fields.size());
+  for (std::size_t k = 1; k < fields.size(); ++k) {
+    const std::string& v = row[k - 1];
+    if (v.empty()) continue;
+    char* end = nullptr;
+    (void)std::strtod(v.c_str(), &end);
+    EXPECT_EQ(*end == '\0', fields[k]["number"].get<bool>()) << fields[k]["key"] << " = " << v;
+  }
+  // A demand column carries its check line's unit (torque lines are in N*m).
+  bool torque = false;
+  for (const auto& f : fields)
+    if (f["key"].get<std::string>().rfind("torque_", 0) == 0 && f["key"].get<std::string>().find("_demand") != std::string::npos) {
+      torque = true;
+      EXPECT_FALSE(f["unit"].get<std::string>().empty()) << f["key"];
+    }
+  EXPECT_TRUE(torque);
+}
+
 TEST(DesignSweepSpec, APointTheSceneRefusesIsARowWithItsReason) {
-  const DesignSweepContext c = prepareDesignSweep(parse("parameters:\n  - {key: links.link1.length, values: [2.44, -1]}\noutputs: [mass]\n"));
+  const DesignSweepContext c = prepareDesignSweep(parseSpec("parameters:\n  - {key: links.link1.length, values: [2.44, -1]}\noutputs: [mass]\n"));
   const auto row = evaluateDesignSweepPoint(c, 1);
   EXPECT_NE(row[1].find("scene error"), std::string::npos) << row[1];
   EXPECT_EQ(row[2], "");  // no mass where there is no scene
