@@ -304,9 +304,11 @@ std::string LinearStudy::summaryText() const {
     s += "\nThe mesh's share of the FRF error: not estimated (" + mesh_note + ")\n";
   } else {
     s += strf("\nThe mesh's share of the FRF error near the peaks (not in the reduced-model errors above, which compare "
-              "with the full model on this mesh; the two add): %.3g of the peak at mode %d (%.4g Hz: frequency "
-              "error %.2g over damping ratio %.3g)\n",
-              mesh_error, mesh_mode, mesh_mode_hz, mesh_mode_error, mesh_mode_zeta);
+              "with the full model on this mesh; the two add): %.3g of the peak",
+              mesh_error) +
+         (mesh_mode ? strf(" at mode %d (%.4g Hz: frequency error %.2g over damping ratio %.3g)\n", mesh_mode->number(), mesh_mode_hz,
+                           mesh_mode_error, mesh_mode_zeta)
+                    : std::string(" (no damped vibration mode in the band has a mesh estimate)\n"));
     if (segments && mesh_error > 0.5 * frf_target)
       s += strf("warning: the mesh's share %.3g exceeds half the target %g although every frequency up to the band's "
                 "end was held within %.2g: its estimate at the finer mesh is above the coarser meshes' trend\n",
@@ -333,7 +335,7 @@ void addTargetAndMesh(const LinearStudy& a, nlohmann::ordered_json& j) {
     j["target_error"] = t;
   }
   j["mesh_frf_error_estimate"] = a.mesh_error >= 0 ? nlohmann::ordered_json(a.mesh_error) : nlohmann::ordered_json(nullptr);
-  j["mesh_frf_error_mode"] = a.mesh_mode > 0 ? nlohmann::ordered_json(a.mesh_mode) : nlohmann::ordered_json(nullptr);
+  j["mesh_frf_error_mode"] = a.mesh_mode ? nlohmann::ordered_json(*a.mesh_mode) : nlohmann::ordered_json(nullptr);
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ struct LinearStudy {
   /// (relative) moves the response by about |e / (e + i zeta)| ~ e / zeta of the peak.
   /// The worst over the vibration modes up to f_max (capped at 1); -1: not estimated.
   double mesh_error = -1;
-  int mesh_mode = 0;
+  std::optional<ModeNumber> mesh_mode;  ///< the mode of the worst term; none: not estimated
   double mesh_mode_hz = 0, mesh_mode_error = 0, mesh_mode_zeta = 0;
   std::string mesh_note;  ///< why not estimated
   TestGeometry geometry;  ///< nodes, trace lines and the first kLinearModelModes shapes (frf.uff)

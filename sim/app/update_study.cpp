@@ -146,7 +146,7 @@ ModelUpdateResult updateHamsas(const Checked& c, const LoadedScene& loaded) {
     std::vector<std::optional<ModelMatch>> out(targets.size());
     for (std::size_t t = 0; t < targets.size(); ++t)
       for (const auto& f : h.features)
-        if (f.feature == targets[t].label && f.mode >= 0) out[t] = ModelMatch{f.mode + 1, f.model_hz, f.shape_match};
+        if (f.feature == targets[t].label && f.mode) out[t] = ModelMatch{*f.mode, f.model_hz, f.shape_match};
     return out;
   };
   return updateModel(c.scene, c.params, targets, "the HAM-SAS slides' measured features (docs/sources.md section 3)", match,

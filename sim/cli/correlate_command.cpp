@@ -18,7 +18,7 @@ namespace {
 void writeFigures(const CorrelationResult& r, const ArticleScene& scene, OutputDir& out) {
   std::vector<std::string> rows, cols;
   for (std::size_t i = 0; i < r.test_modes.size(); ++i) rows.push_back(modeLabel('T', static_cast<int>(i + 1), r.test_modes[i].frequency_hz));
-  for (const auto& m : r.model_modes) cols.push_back(modeLabel('M', m.number, m.frequency_hz));
+  for (const auto& m : r.model_modes) cols.push_back(modeLabel('M', m.number.number(), m.frequency_hz));
   std::vector<double> model_hz;
   for (const auto& m : r.model_modes)
     if (m.stable && !m.rigid_body) model_hz.push_back(m.frequency_hz);

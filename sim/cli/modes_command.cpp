@@ -26,8 +26,8 @@ void convergencePlot(OutputDir& out, const ConvergenceStudy& c) {
   std::vector<render::Series> all;
   for (const auto& m : c.modes) {
     if (!m.has_estimate) continue;
-    render::Series s{strf("mode %d (%.4g Hz, %s)", m.number, m.extrapolated_hz, m.check.c_str()), {}, {}};
-    s.colour_index = (m.number - 1) % 13 + 1;
+    render::Series s{strf("mode %d (%.4g Hz, %s)", m.number.number(), m.extrapolated_hz, m.check.c_str()), {}, {}};
+    s.colour_index = m.number.index() % 13 + 1;
     for (std::size_t k = 0; k < c.runs.size() && k < m.frequency_hz.size(); ++k) {
       const double e = std::abs(m.frequency_hz[k] / m.extrapolated_hz - 1);
       if (std::isfinite(e) && e > 0) s.x.push_back(c.runs[k].segments), s.y.push_back(e);

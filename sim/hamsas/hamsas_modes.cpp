@@ -86,20 +86,20 @@ void matchFeatures(const HamsasSpec& spec, HamsasModes& h) {
   };
   const double m_ot = s.bodies[s.output_body].mass, m_sb = spec.sb_mass;
   auto byPattern = [&](const std::string& feature, double measured, const Eigen::VectorXd& v, const std::string& rule) {
-    FeatureMatch f{feature, measured, 0, -1, 0, rule};
+    FeatureMatch f{feature, measured, 0, std::nullopt, 0, rule};
     for (int i = 0; i < nm; ++i) {
       if (!sol.isStable(i) || sol.isRigidBody(i)) continue;
       const double c = correlate(v, i);
-      if (c > f.shape_match) f.shape_match = c, f.mode = i;
+      if (c > f.shape_match) f.shape_match = c, f.mode = ModeNumber::atIndex(i);
     }
-    if (f.mode >= 0) f.model_hz = h.modes[f.mode].frequency_hz;
+    if (f.mode) f.model_hz = h.modes[f.mode->index()].frequency_hz;
     h.features.push_back(f);
   };
   auto byShare = [&](const std::string& feature, double measured, const std::string& rule, auto share) {
-    FeatureMatch f{feature, measured, 0, -1, 0, rule};
-    for (int i = 0; i < nm && f.mode < 0; ++i)
+    FeatureMatch f{feature, measured, 0, std::nullopt, 0, rule};
+    for (int i = 0; i < nm && !f.mode; ++i)
       if (sol.isStable(i) && !sol.isRigidBody(i) && share(h.modes[i]) >= 0.5) {
-        f.mode = i;
+        f.mode = ModeNumber::atIndex(i);
         f.shape_match = share(h.modes[i]);
         f.model_hz = h.modes[i].frequency_hz;
       }

@@ -4,10 +4,12 @@
 
 #include <Eigen/Dense>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "article/hamsas.hpp"
+#include "sim/core/mode_number.hpp"
 #include "sim/hamsas/spatial_linear.hpp"
 #include "sim/linear/state_space.hpp"
 
@@ -31,7 +33,7 @@ struct FeatureMatch {
   std::string feature;
   double measured_hz = 0;
   double model_hz = 0;  ///< 0 when no mode shows it (e.g. joint modes with ideal joints).
-  int mode = -1;        ///< 0-based index into the modes, -1 if none.
+  std::optional<ModeNumber> mode;  ///< the model mode that shows it; none: no mode does.
   double shape_match = 0;  ///< mass-weighted correlation with the feature's shape, 0..1.
   std::string rule;        ///< how the mode was identified.
 };

@@ -24,7 +24,7 @@ const std::vector<Field<SystemModeRow>>& systemModeFields() {
       {"kinetic_link", "", "%s", "the link with the most kinetic energy", [](const R& m) { return text(m.kinetic_link); }},
       {"kinetic_share", "1", "%.6f", "that link's share of the kinetic energy", [](const R& m) -> Opt { return json(m.kinetic_share); }},
       {"nearest_component_mode", "", "%d", "the strain link's component mode nearest in frequency (0: none)",
-       [](const R& m) -> Opt { return json(m.component_mode); }},
+       [](const R& m) -> Opt { return json(m.component_mode ? m.component_mode->number() : 0); }},
       {"nearest_component_frequency_hz", "Hz", "%.8g", "that component mode's frequency",
        [](const R& m) -> Opt { return json(m.component_hz); }},
       {"system_over_component_minus_1", "1", "%.6g", "frequency_hz / nearest_component_frequency_hz - 1",

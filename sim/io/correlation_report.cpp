@@ -69,7 +69,7 @@ std::string correlationText(const ArticleScene& scene, const CorrelationResult& 
   else os << "  no test mode pairs with a model mode at the MAC threshold\n";
   for (int j : r.model_not_seen)
     os << strf("  model mode M%d (%.4f Hz) is in the test band but no test mode pairs with it: not seen by the test\n",
-               r.model_modes[j].number, r.model_modes[j].frequency_hz);
+               r.model_modes[j].number.number(), r.model_modes[j].frequency_hz);
   for (int i : r.test_not_predicted)
     os << strf("  test mode T%d (%.4f Hz) pairs with no model mode: not predicted by the model\n", i + 1,
                r.test_modes[i].frequency_hz);
@@ -112,7 +112,7 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
     tm.push_back({{"label", strf("T%zu", i + 1)}, {"file_mode_number", r.test_modes[i].number},
                   {"frequency_hz", r.test_modes[i].frequency_hz}, {"damping_ratio", r.test_modes[i].damping_ratio}});
   for (const auto& m : r.model_modes) {
-    json x = {{"label", strf("M%d", m.number)}, {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
+    json x = {{"label", strf("M%d", m.number.number())}, {"frequency_hz", m.stable ? json(m.frequency_hz) : json(nullptr)},
               {"rigid_body", m.rigid_body}};
     if (r.model_damped && m.stable && !m.rigid_body && m.has_damping) x["damping_ratio"] = m.damping_ratio;
     mm.push_back(x);
@@ -132,7 +132,7 @@ nlohmann::ordered_json correlationJson(const ArticleScene& scene, const Correlat
     pairs.push_back(fieldsJson(correlationPairFields(), p, [](const auto&) { return true; }));
   j["pairs"] = pairs;
   json seen = json::array(), unpredicted = json::array();
-  for (int k : r.model_not_seen) seen.push_back(strf("M%d", r.model_modes[k].number));
+  for (int k : r.model_not_seen) seen.push_back(strf("M%d", r.model_modes[k].number.number()));
   for (int k : r.test_not_predicted) unpredicted.push_back(strf("T%d", k + 1));
   j["model_modes_not_seen"] = seen;
   j["test_modes_not_predicted"] = unpredicted;
@@ -176,7 +176,7 @@ std::vector<CorrelationPairRow> correlationPairRows(const CorrelationResult& r) 
     const ModeInfo& m = r.model_modes[p.model];
     CorrelationPairRow row;
     row.test = strf("T%d", p.test + 1);
-    row.model = strf("M%d", m.number);
+    row.model = strf("M%d", m.number.number());
     row.test_hz = t.frequency_hz;
     row.model_hz = m.frequency_hz;
     row.mac = p.mac;

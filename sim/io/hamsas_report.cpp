@@ -64,9 +64,9 @@ std::string hamsasModesText(const HamsasScene& scene, const HamsasModes& h, int 
   os << "Measured (LASTI, in vacuum) vs model:\n";
   Table t({"feature", "measured_Hz", "model_Hz", "error_%", "mode", "shape_match", "identified_as"});
   for (const FeatureMatch& f : h.features)
-    t.add({f.feature, strf("%.4g", f.measured_hz), f.mode >= 0 ? strf("%.4g", f.model_hz) : "none",
-           f.mode >= 0 ? strf("%+.2f", 100 * (f.model_hz / f.measured_hz - 1)) : "-",
-           f.mode >= 0 ? std::to_string(f.mode + 1) : "-", strf("%.3f", f.shape_match), f.rule});
+    t.add({f.feature, strf("%.4g", f.measured_hz), f.mode ? strf("%.4g", f.model_hz) : "none",
+           f.mode ? strf("%+.2f", 100 * (f.model_hz / f.measured_hz - 1)) : "-",
+           f.mode ? std::to_string(f.mode->number()) : "-", strf("%.3f", f.shape_match), f.rule});
   os << t.text() << '\n';
   os << "Modes (kinetic energy by body group; elastic strain energy by element group; gravity_%: the preloads' work\n"
         "over the elastic energy, negative where gravity takes back what the elements store, as in an inverted pendulum):\n";
@@ -107,8 +107,8 @@ nlohmann::ordered_json hamsasModesJson(const HamsasScene& scene, const HamsasMod
   for (const FeatureMatch& f : h.features)
     j["features"].push_back({{"feature", f.feature},
                              {"measured_hz", f.measured_hz},
-                             {"model_hz", f.mode >= 0 ? nlohmann::ordered_json(f.model_hz) : nlohmann::ordered_json()},
-                             {"mode", f.mode >= 0 ? nlohmann::ordered_json(f.mode + 1) : nlohmann::ordered_json()},
+                             {"model_hz", f.mode ? nlohmann::ordered_json(f.model_hz) : nlohmann::ordered_json()},
+                             {"mode", f.mode ? nlohmann::ordered_json(f.mode->number()) : nlohmann::ordered_json()},
                              {"shape_match", f.shape_match},
                              {"rule", f.rule}});
   j["modes"] = nlohmann::ordered_json::array();

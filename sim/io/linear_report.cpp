@@ -199,7 +199,7 @@ std::string frfUff(const LinearModel& lm, const TestGeometry& g, const ArticleSc
   for (const auto& t : g.traces) file.trace_lines.push_back({t.id, t.name, t.nodes});
   for (const auto& s : g.modes) {
     uff::ModeShape m;
-    m.mode = s.mode;
+    m.mode = s.mode.number();
     m.frequency_hz = s.frequency_hz;
     m.modal_mass = 1.0;
     m.damping_ratio = s.damping_ratio;

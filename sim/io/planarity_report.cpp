@@ -14,9 +14,9 @@ std::string planarityText(const PlanarityReport& p) {
     os += "  shares: the mode's strain energy in-plane / out-of-plane / torsion; nearest: the closest in-plane mode\n";
     Table t({"mode", "frequency_Hz", "family", "in/out/torsion_%", "nearest_in_plane", "separation_%"});
     for (const auto& m : p.others)
-      t.add({std::to_string(m.number), strf("%.4f", m.frequency_hz), m.family.label,
+      t.add({std::to_string(m.number.number()), strf("%.4f", m.frequency_hz), m.family.label,
              strf("%.0f/%.0f/%.0f", 100 * m.family.in_plane, 100 * m.family.out_of_plane, 100 * m.family.torsion),
-             m.nearest_in_plane ? strf("%d (%.4f Hz)", m.nearest_in_plane, m.nearest_hz) : "-",
+             m.nearest_in_plane ? strf("%d (%.4f Hz)", m.nearest_in_plane->number(), m.nearest_hz) : "-",
              m.nearest_in_plane ? strf("%+.2f", m.separation_pct) : "-"});
     os += t.text();
   }
@@ -35,7 +35,7 @@ std::string planarityText(const PlanarityReport& p) {
         for (std::size_t k = i; k < end; ++k) {
           const auto& r = p.responses[k];
           t.add({r.excitation, r.point, r.decoupled ? std::string("decoupled") : strf("%.3g", r.ratio),
-                 r.decoupled ? "-" : std::to_string(r.out_mode), std::to_string(r.in_mode)});
+                 r.decoupled ? "-" : std::to_string(r.out_mode.number()), std::to_string(r.in_mode.number())});
         }
       }
       i = end;
@@ -49,11 +49,11 @@ nlohmann::ordered_json planarityJson(const PlanarityReport& p) {
   using json = nlohmann::ordered_json;
   json others = json::array();
   for (const auto& m : p.others)
-    others.push_back({{"mode", m.number},
+    others.push_back({{"mode", m.number.number()},
                       {"frequency_hz", m.frequency_hz},
                       {"family", m.family.label},
                       {"strain_share", {{"in_plane", m.family.in_plane}, {"out_of_plane", m.family.out_of_plane}, {"torsion", m.family.torsion}}},
-                      {"nearest_in_plane_mode", m.nearest_in_plane ? json(m.nearest_in_plane) : json(nullptr)},
+                      {"nearest_in_plane_mode", m.nearest_in_plane ? json(m.nearest_in_plane->number()) : json(nullptr)},
                       {"nearest_in_plane_hz", m.nearest_in_plane ? json(m.nearest_hz) : json(nullptr)},
                       {"separation_percent", m.nearest_in_plane ? json(m.separation_pct) : json(nullptr)}});
   json responses = json::array();
@@ -62,8 +62,8 @@ nlohmann::ordered_json planarityJson(const PlanarityReport& p) {
                          {"point", r.point},
                          {"out_of_plane_over_in_plane", r.ratio},
                          {"decoupled", r.decoupled},
-                         {"out_of_plane_mode", r.out_mode},
-                         {"in_plane_mode", r.in_mode}});
+                         {"out_of_plane_mode", r.out_mode.number()},
+                         {"in_plane_mode", r.in_mode.number()}});
   return {{"band_hz", {p.band_low_hz, p.band_high_hz}},
           {"covers_band", p.covers_band},
           {"solved_up_to_hz", p.solved_up_to_hz},

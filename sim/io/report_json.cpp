@@ -1,5 +1,6 @@
 #include <cmath>
 
+#include "sim/core/units.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/io/convergence_fields.hpp"
 #include "sim/io/mode_fields.hpp"
@@ -8,17 +9,7 @@
 namespace mmv {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 using json = nlohmann::ordered_json;
-
-json shares(const std::vector<PartShare>& v) {
-  json o = json::object();
-  for (const auto& s : v) o[s.part] = s.fraction;
-  return o;
-}
-
-/// JSON has no NaN: a missing number is null.
-json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
 /// One mode of `r` in the modes JSON.
 json modeJson(const ModesReport& r, const ModeInfo& m) {
@@ -124,7 +115,7 @@ json segmentsChoiceJson(const SegmentsChoice& c) {
   for (const auto& l : c.ladder)
     ladder.push_back({{"segments", l.segments},
                       {"worst_estimated_relative_error", std::isfinite(l.worst_error) ? json(l.worst_error) : json(nullptr)},
-                      {"worst_mode", l.worst_mode ? json(l.worst_mode) : json(nullptr)},
+                      {"worst_mode", l.worst_mode ? json(l.worst_mode->number()) : json(nullptr)},
                       {"check", l.worst_check.empty() ? json(nullptr) : json(l.worst_check)},
                       {"solve_time_s", l.seconds},
                       {"met", l.met}});

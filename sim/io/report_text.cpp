@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "sim/core/units.hpp"
 #include "sim/io/convergence_fields.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/io/report.hpp"
@@ -11,7 +12,6 @@
 namespace mmv {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 double shareOf(const std::vector<PartShare>& shares, const std::string& part) {
   for (const auto& s : shares)
@@ -57,7 +57,7 @@ std::string modesTable(const ModesReport& r) {
                              : m.rigid_body || !m.stable || !m.has_damping ? strf("%8s  ", "-")
                                                                            : strf("%8.3f  ", 100 * m.damping_ratio);
     const std::string fam = r.spatial ? strf("%10.4f  %-13s ", m.effective_mass_z_kg, m.family.label.c_str()) : "";
-    os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s%s%s\n", m.number, f.c_str(), k.c_str(), s.c_str(),
+    os << strf("  %4d %s  %-20s %-20s %9.2f %10.4f %10.4f  %s%s%s\n", m.number.number(), f.c_str(), k.c_str(), s.c_str(),
               100 * m.geometric_stiffness_share, m.effective_mass_x_kg, m.effective_mass_y_kg, fam.c_str(), zeta.c_str(),
               m.peak_point.c_str());
     if (!m.stable)
@@ -114,7 +114,7 @@ std::string formatModesText(const ModesReport& r) {
                       : std::vector<std::string>{"mode", "point", "ux_per_modal_unit", "uy_per_modal_unit"});
     for (const auto& m : r.modes)
       for (const auto& p : m.at_points) {
-        std::vector<std::string> row{std::to_string(m.number), p.point, strf("%.6g", p.ux), strf("%.6g", p.uy)};
+        std::vector<std::string> row{std::to_string(m.number.number()), p.point, strf("%.6g", p.ux), strf("%.6g", p.uy)};
         if (r.spatial) row.push_back(strf("%.6g", p.uz));
         t.add(row);
       }
@@ -125,7 +125,7 @@ std::string formatModesText(const ModesReport& r) {
           "coordinate of the mass-normalised shape: kg^-1/2)\n";
     Table t({"mode", "span", "strain_per_modal_unit"});
     for (const auto& m : r.modes)
-      for (const auto& g : m.strains) t.add({std::to_string(m.number), g.span, strf("%.6g", g.strain)});
+      for (const auto& g : m.strains) t.add({std::to_string(m.number.number()), g.span, strf("%.6g", g.strain)});
     os << t.text();
   }
   os << strf("\nChecks: eigen residual %.1e, M-orthogonality error %.1e, stiffness asymmetry %.1e\n", r.eigen_residual,
@@ -148,7 +148,7 @@ std::string discretizationText(const DiscretizationEstimate& d) {
   Table t({"mode", "frequency_Hz", "richardson_Hz", "est_err_%", "order", "check"});
   for (const auto& m : d.modes) {
     const double f = m.frequency_hz.back();
-    t.add({std::to_string(m.number), strf("%.4f", f), m.has_estimate ? strf("%.4f", m.extrapolated_hz) : "-",
+    t.add({std::to_string(m.number.number()), strf("%.4f", f), m.has_estimate ? strf("%.4f", m.extrapolated_hz) : "-",
            m.has_estimate ? strf("%.3g", 100 * m.estimated_relative_error) : "-",
            m.has_observed_order ? strf("%.2f", m.observed_order) : "-", m.check.empty() ? "unchecked" : m.check});
   }
@@ -162,7 +162,7 @@ std::string segmentsChoiceText(const SegmentsChoice& c) {
   Table t({"segments", "worst_est_err_%", "mode", "check", "solve_ms", "target"});
   for (const auto& l : c.ladder)
     t.add({std::to_string(l.segments), std::isfinite(l.worst_error) ? strf("%.3g", 100 * l.worst_error) : "-",
-           l.worst_mode ? std::to_string(l.worst_mode) : "-", l.worst_check.empty() ? "-" : l.worst_check,
+           l.worst_mode ? std::to_string(l.worst_mode->number()) : "-", l.worst_check.empty() ? "-" : l.worst_check,
            strf("%.1f", 1e3 * l.seconds), l.met ? "met" : "-"});
   return os.str() + t.text();
 }
@@ -177,7 +177,7 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
   for (const auto& run : c.runs) os << strf(" %11s", ("N=" + std::to_string(run.segments)).c_str());
   os << strf(" %12s %8s %12s  %s\n", "richardson", "order", "est_err_%", "check");
   for (const auto& m : c.modes) {
-    os << strf("  %4d", m.number);
+    os << strf("  %4d", m.number.number());
     for (std::size_t k = 0; k < c.runs.size(); ++k) {
       const double f = k < m.frequency_hz.size() ? m.frequency_hz[k] : NAN;
       if (std::isfinite(f)) os << strf(" %11.5f", f);
@@ -197,7 +197,7 @@ std::string formatConvergenceText(const ConvergenceStudy& c) {
   os << "\n";
   for (const auto& m : c.modes) {
     if (!m.has_estimate) continue;
-    os << strf("  %4d", m.number);
+    os << strf("  %4d", m.number.number());
     for (std::size_t k = 0; k < c.runs.size(); ++k) {
       const double f = k < m.frequency_hz.size() ? m.frequency_hz[k] : NAN;
       if (std::isfinite(f)) os << strf(" %11.4f", 100 * (f - m.extrapolated_hz) / m.extrapolated_hz);

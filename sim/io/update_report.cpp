@@ -76,11 +76,11 @@ const std::vector<Field<UpdatePair>>& updatePairFields() {
   static const std::vector<Field<Row>> fields{
       {"test", "", "%s", "the measured mode (T1: a measured set's first; a HAM-SAS feature by name)", [](const Row& p) -> Opt { return json(p.test); }},
       {"test_hz", "Hz", "%.8g", "its frequency", [](const Row& p) -> Opt { return json(p.test_hz); }},
-      {"before_model", "", "%s", "the nominal model's mode it pairs with", [](const Row& p) -> Opt { return json(strf("M%d", p.before_model)); }},
+      {"before_model", "", "%s", "the nominal model's mode it pairs with", [](const Row& p) -> Opt { return json(strf("M%d", p.before_model.number())); }},
       {"before_hz", "Hz", "%.8g", "that mode's frequency", [](const Row& p) -> Opt { return json(p.before_hz); }},
       {"before_error", "1", "%.6g", "before_hz / test_hz - 1", [](const Row& p) -> Opt { return json(p.before_hz / p.test_hz - 1); }},
       {"before_mac", "1", "%.6f", "MAC with the nominal model's mode", [](const Row& p) -> Opt { return json(p.before_mac); }},
-      {"after_model", "", "%s", "the updated model's mode it pairs with", [](const Row& p) -> Opt { return json(strf("M%d", p.after_model)); }},
+      {"after_model", "", "%s", "the updated model's mode it pairs with", [](const Row& p) -> Opt { return json(strf("M%d", p.after_model.number())); }},
       {"after_hz", "Hz", "%.8g", "that mode's frequency", [](const Row& p) -> Opt { return json(p.after_hz); }},
       {"after_error", "1", "%.6g", "after_hz / test_hz - 1", [](const Row& p) -> Opt { return json(p.after_hz / p.test_hz - 1); }},
       {"after_mac", "1", "%.6f", "MAC with the updated model's mode", [](const Row& p) -> Opt { return json(p.after_mac); }},

@@ -173,7 +173,7 @@ std::vector<ModePair> pairWithinWindow(const CorrelateOptions& o, CorrelationRes
     if (!paired && best >= 0)
       r.notes.push_back(strf("test mode T%ld (%.4g Hz) has MAC %.3f with model mode M%d (%.4g Hz, %+.0f %%), outside the "
                              "+-%.3g %% frequency window: not paired (--max-frequency-error widens it)",
-                             static_cast<long>(i + 1), r.test_modes[i].frequency_hz, r.mac(i, best), r.model_modes[best].number,
+                             static_cast<long>(i + 1), r.test_modes[i].frequency_hz, r.mac(i, best), r.model_modes[best].number.number(),
                              r.model_modes[best].frequency_hz,
                              100 * (r.model_modes[best].frequency_hz / r.test_modes[i].frequency_hz - 1),
                              100 * o.max_frequency_error));

@@ -30,6 +30,7 @@
 
 #include "sim/core/least_squares.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -59,9 +60,9 @@ struct TestTarget {
   std::string label;  ///< "T3" (a measured set's third mode), "MGAS vertical" (a HAM-SAS feature)
   double hz = 0;
 };
-/// The model mode that shows a target: its number (1-based), frequency and shape match.
+/// The model mode that shows a target: its number, frequency and shape match.
 struct ModelMatch {
-  int model = 0;
+  ModeNumber model;
   double hz = 0, mac = 0;
 };
 /// Per target (in order), the mode of the model `scene` that shows it; nullopt: none.
@@ -79,7 +80,7 @@ struct UpdatedParameter {
 struct UpdatePair {
   std::string test;  ///< the target's label
   double test_hz = 0;
-  int before_model = 0, after_model = 0;  ///< 1-based model mode numbers paired
+  ModeNumber before_model, after_model;  ///< the model modes paired
   double before_hz = 0, after_hz = 0, before_mac = 0, after_mac = 0;
 };
 

@@ -34,7 +34,7 @@ void addShapes(const LinearModel& lm, const SimTK::State& st, int count, TestGeo
   const ModalDamping damping = modalDamping(model, lm.solved.linearized, modes, lm.damping, n);
   for (int k = 0; k < n; ++k) {
     TestModeShape m;
-    m.mode = k + 1;
+    m.mode = ModeNumber::atIndex(k);
     m.frequency_hz = modes.frequencyHz(k);
     m.damping_ratio = k < static_cast<int>(damping.ratio.size()) ? damping.ratio[k] : 0.0;
     const Eigen::VectorXd u = P * modes.shapes.col(k), w = Jp * modes.shapes.col(k);

@@ -6,12 +6,14 @@
 /// modes' shapes at the mesh points, per unit modal coordinate (translations and the
 /// points' body rotations).
 
+#include <optional>
 #include <array>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "sim/linear/state_space.hpp"
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -28,7 +30,7 @@ struct TestTrace {
 };
 
 struct TestModeShape {
-  int mode = 0;  ///< 1-based
+  ModeNumber mode;
   double frequency_hz = 0, damping_ratio = 0;
   /// One entry per mesh point (nodes 1 .. mesh_points): translation (m) and body rotation (rad).
   std::vector<std::array<double, 3>> translation, rotation;

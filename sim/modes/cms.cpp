@@ -173,9 +173,9 @@ SynthesisResult synthesize(const ArticleScene& scene, const SynthesisOptions& o)
     Eigen::Index best;
     const double mac = r.mac.col(i).maxCoeff(&best);
     SynthesisRow row;
-    row.mode = i + 1;
+    row.mode = ModeNumber::atIndex(i);
     row.full_hz = r.full_hz[i];
-    row.synth_mode = static_cast<int>(best) + 1;
+    row.synth_mode = ModeNumber::atIndex(static_cast<int>(best));
     row.synth_hz = r.synth_hz[best];
     // A rigid-body mode (0 Hz) has no relative error: both at ~0 is exact, else the
     // synthesized frequency itself (Hz) stands in, so nothing infinite is reported.

@@ -23,6 +23,7 @@
 /// Shapes are compared by the MAC of their translations at every named point,
 /// MAC(a, b) = (a.b)^2 / ((a.a)(b.b)).
 
+#include <optional>
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@
 #include "sim/modes/components.hpp"
 #include "sim/modes/modal.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -61,9 +63,9 @@ struct SynthesisOptions {
 };
 
 struct SynthesisRow {
-  int mode = 0;  ///< full model's mode number (1-based).
+  ModeNumber mode;  ///< the full model's mode.
   double full_hz = 0, synth_hz = 0;
-  int synth_mode = 0;  ///< the synthesized mode that matches best (by MAC).
+  ModeNumber synth_mode;  ///< the synthesized mode that matches best (by MAC).
   double relative_error = 0;
   double mac = 0;
   std::string verdict;  ///< predicted, shifted, missed.

@@ -50,7 +50,7 @@ std::vector<SystemModeRow> systemModes(const ArticleScene& scene, int count, con
         const double d = r.frequency_hz / c.modes[k].frequency_hz - 1.0;
         if (std::abs(d) < std::abs(best)) {
           best = d;
-          r.component_mode = static_cast<int>(k) + 1;
+          r.component_mode = ModeNumber::atIndex(static_cast<int>(k));
           r.component_hz = c.modes[k].frequency_hz;
           r.component_difference = d;
         }

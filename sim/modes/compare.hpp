@@ -6,12 +6,14 @@
 /// Craig-Bampton) with frequency errors, MAC and verdicts, the effect of the tip-mass
 /// rule, and optionally open against closed topology. Plain data for the writers.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/modes/system_modes.hpp"
 #include "sim/modes/cms.hpp"
 #include "sim/modes/components.hpp"
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -26,13 +28,13 @@ struct CompareOptions {
 };
 
 struct SystemModeRow {
-  int mode = 0;
+  ModeNumber mode;
   double frequency_hz = 0;
   bool stable = true;
   std::string strain_link, kinetic_link;
   double strain_share = 0, kinetic_share = 0;
   std::string family;             ///< spatial model: in-plane, out-of-plane, torsion, mixed; else empty.
-  int component_mode = 0;         ///< nearest component mode of strain_link (1-based), 0: none; on the
+  std::optional<ModeNumber> component_mode;  ///< nearest component mode of strain_link, none: none; on the
                                   ///< spatial model of the same family (any family for a mixed mode).
   double component_hz = 0;
   double component_difference = 0;  ///< system / component - 1.

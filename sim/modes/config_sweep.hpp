@@ -18,11 +18,13 @@
 /// equilibrium path) restarts by frequency rank, marked so: neither is drawn as a
 /// continuation. Unstable modes (negative stiffness) are kept and marked.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/modes/cms.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -47,7 +49,7 @@ constexpr double kLostMac = 0.5;
 constexpr int kMaxRefinements = 4;
 
 struct TrackPoint {
-  int sorted_mode = 0;  ///< rank of the tracked mode at this point (1-based).
+  ModeNumber sorted_mode;  ///< rank of the tracked mode at this point.
   double frequency_hz = 0;
   bool stable = true;
   double mac_to_previous = 1;  ///< with the same track at the previous point.

@@ -11,7 +11,7 @@
 
 namespace mmv {
 
-ConvergenceMode assessLadder(int number, const std::vector<double>& frequency_hz) {
+ConvergenceMode assessLadder(ModeNumber number, const std::vector<double>& frequency_hz) {
   ConvergenceMode m;
   m.number = number;
   m.frequency_hz = frequency_hz;
@@ -112,7 +112,7 @@ DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const M
     std::vector<double> f;
     for (const auto& r : runs) f.push_back(r[i]);
     f.push_back(finest_hz[i]);
-    ConvergenceMode m = assessLadder(static_cast<int>(i) + 1, f);
+    ConvergenceMode m = assessLadder(ModeNumber::atIndex(static_cast<int>(i)), f);
     if (!(std::abs(finest_hz[i]) > 1e-6 * scale)) {  // a rigid-body mode: no relative error
       m.has_estimate = m.has_observed_order = false;
       m.check = "rigid";
@@ -146,16 +146,16 @@ SegmentsLevel assessLevel(const std::vector<std::vector<ModeInfo>>& runs, int nu
   for (int i = 0; i < num_modes && i < static_cast<int>(finest.size()); ++i) {
     if (finest[i].rigid_body || !(std::abs(finest[i].frequency_hz) > 1e-6 * scale)) continue;  // a rigid-body mode
     const std::vector<double> f{at(runs[runs.size() - 3], pair3[i]), at(runs[runs.size() - 2], pair2[i]), finest[i].frequency_hz};
-    const ConvergenceMode m = assessLadder(i + 1, f);
+    const ConvergenceMode m = assessLadder(ModeNumber::atIndex(i), f);
     const bool trusted = m.check == "ok" || m.check == "order";
     const double e = m.has_estimate ? m.estimated_relative_error : INFINITY;
     if (!trusted || !(e <= target)) level.met = false;
     // The worst mode: an untrusted one before any trusted one, then the largest estimate.
-    const bool worse = level.worst_mode == 0 || (!trusted && worst_trusted) ||
+    const bool worse = !level.worst_mode || (!trusted && worst_trusted) ||
                        (trusted == worst_trusted && !(e <= level.worst_error));
     if (worse) {
       level.worst_error = e;
-      level.worst_mode = i + 1;
+      level.worst_mode = ModeNumber::atIndex(i);
       level.worst_check = m.check.empty() ? "unchecked" : m.check;
       worst_trusted = trusted;
     }
@@ -196,7 +196,7 @@ SegmentsChoice segmentsForTarget(const ArticleScene& scene, int num_modes, doubl
   const SegmentsLevel& last = c.ladder.back();
   const std::string best = std::isfinite(last.worst_error)
                                ? strf("at %d segments per link mode %d is still %.3g %% off (%s)", last.segments,
-                                      last.worst_mode, 100 * last.worst_error, last.worst_check.c_str())
+                                      last.worst_mode.value().number(), 100 * last.worst_error, last.worst_check.c_str())
                                : strf("only %d segments per link were solved", last.segments);
   throw NumericalError(strf("--target-error %g (relative frequency error of the first %d modes) cannot be met ", target,
                             num_modes) +
@@ -224,7 +224,7 @@ ConvergenceStudy runConvergence(const ArticleScene& scene, int max_segments, int
   for (int i = 0; i < num_modes; ++i) {
     std::vector<double> f;
     for (const auto& run : study.runs) f.push_back(i < static_cast<int>(run.frequency_hz.size()) ? run.frequency_hz[i] : NAN);
-    study.modes.push_back(assessLadder(i + 1, f));
+    study.modes.push_back(assessLadder(ModeNumber::atIndex(i), f));
   }
   return study;
 }

@@ -8,10 +8,12 @@
 /// Modes are matched by their index in ascending frequency; a mode that a coarse
 /// model does not have (too few DOF) is left out of that column.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/scene/scene.hpp"
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -23,7 +25,7 @@ struct ConvergenceRun {
 };
 
 struct ConvergenceMode {
-  int number = 0;
+  ModeNumber number;
   std::vector<double> frequency_hz;  ///< one per run, NaN where the run has no such mode.
   bool has_estimate = false, has_observed_order = false;
   double extrapolated_hz = 0;
@@ -50,7 +52,7 @@ struct ConvergenceStudy {
 /// One mode's frequencies over a ladder of meshes, each with twice the segments of the
 /// one before (NaN where a run lacks the mode): the Richardson value and estimate from
 /// the two finest, the observed order and its check from the three finest.
-ConvergenceMode assessLadder(int number, const std::vector<double>& frequency_hz);
+ConvergenceMode assessLadder(ModeNumber number, const std::vector<double>& frequency_hz);
 
 /// The discretization error of a `modes` run: the scene again with every flexible
 /// link's segments halved and, when they divide by 4, quartered; each mode matched by
@@ -85,7 +87,7 @@ struct SegmentsLevel {
   int segments = 0;
   double seconds = 0;      ///< this solve
   double worst_error = 0;  ///< the largest estimated relative error (NaN: fewer than three runs)
-  int worst_mode = 0;      ///< 0: none assessed
+  std::optional<ModeNumber> worst_mode;  ///< none: no mode assessed
   std::string worst_check; ///< its check; "unconverged" anywhere makes the level fail
   bool met = false;
 };

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <optional>
 #include <vector>
+#include "sim/core/mode_number.hpp"
 
 
 

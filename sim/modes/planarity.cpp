@@ -129,12 +129,12 @@ PlanarityReport planarityReport(const Model& model, const SimTK::State& eqs, con
   rep.covers_band = rep.solved_up_to_hz >= rep.band_high_hz || n == static_cast<int>(dofs.size());
   for (int i : band) {
     if (family[i].label == "in-plane") continue;
-    PlanarityMode pm{i + 1, modes.frequencyHz(i), family[i], 0, 0, 0};
+    PlanarityMode pm{ModeNumber::atIndex(i), modes.frequencyHz(i), family[i], std::nullopt, 0, 0};
     for (int j : band) {
       if (family[j].label != "in-plane") continue;
       const double fj = modes.frequencyHz(j);
-      if (pm.nearest_in_plane == 0 || std::abs(fj - pm.frequency_hz) < std::abs(pm.nearest_hz - pm.frequency_hz)) {
-        pm.nearest_in_plane = j + 1;
+      if (!pm.nearest_in_plane || std::abs(fj - pm.frequency_hz) < std::abs(pm.nearest_hz - pm.frequency_hz)) {
+        pm.nearest_in_plane = ModeNumber::atIndex(j);
         pm.nearest_hz = fj;
       }
     }
@@ -153,14 +153,14 @@ PlanarityReport planarityReport(const Model& model, const SimTK::State& eqs, con
   const Excitations ex = excitations(model, eqs, dofs, modes.shapes.leftCols(n));
   for (std::size_t e = 0; e < ex.names.size(); ++e) {
     for (std::size_t p = 0; p < tips.size(); ++p) {
-      PlanarityResponse r{ex.names[e], tips[p]->name, 0, false, 0, 0};
+      PlanarityResponse r{ex.names[e], tips[p]->name, 0, false, {}, {}};
       double out_peak = 0, in_peak = 0;
       for (int i : band) {
         const Eigen::Vector3d d = motion[i].segment<3>(6 * static_cast<Eigen::Index>(p) + 3);
         const double w = std::abs(ex.participation[e][i]) / modes.omega2[i];
         const double out = w * std::abs(rep.normal.dot(d)), in = w * (d - rep.normal.dot(d) * rep.normal).norm();
-        if (out > out_peak) out_peak = out, r.out_mode = i + 1;
-        if (in > in_peak) in_peak = in, r.in_mode = i + 1;
+        if (out > out_peak) out_peak = out, r.out_mode = ModeNumber::atIndex(i);
+        if (in > in_peak) in_peak = in, r.in_mode = ModeNumber::atIndex(i);
       }
       if (!(in_peak > 0)) continue;  // the excitation does not move this tip in the band
       r.ratio = out_peak / in_peak;

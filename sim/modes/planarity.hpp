@@ -21,6 +21,7 @@
 ///    (zeta cancels). A symmetric planar article gives 0 to round-off (the families do
 ///    not couple); an asymmetry shows up here first.
 
+#include <optional>
 #include <Eigen/Dense>
 #include <Simbody.h>
 
@@ -29,6 +30,7 @@
 
 #include "sim/model/model.hpp"
 #include "sim/modes/modal.hpp"
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -53,10 +55,10 @@ void separateDegenerateFamilies(const Model& model, const std::vector<int>& dofs
                                 double tolerance = 1e-9);
 
 struct PlanarityMode {
-  int number = 0;  ///< 1-based, as in the modes table.
+  ModeNumber number;  ///< as in the modes table.
   double frequency_hz = 0;
   ModeFamily family;
-  int nearest_in_plane = 0;  ///< 1-based; 0 if the band has no in-plane mode.
+  std::optional<ModeNumber> nearest_in_plane;  ///< none if the band has no in-plane mode.
   double nearest_hz = 0;
   double separation_pct = 0;  ///< 100 (f - f_nearest) / f_nearest.
 };
@@ -66,7 +68,7 @@ struct PlanarityResponse {
   std::string point;       ///< a link tip.
   double ratio = 0;        ///< out of the plane / in it (above).
   bool decoupled = false;  ///< ratio below kDecoupledRatio.
-  int out_mode = 0, in_mode = 0;  ///< the modes that give the two peaks (1-based).
+  ModeNumber out_mode, in_mode;  ///< the modes that give the two peaks.
 };
 
 struct PlanarityReport {

@@ -399,7 +399,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   for (int i = 0; i < count; ++i) {
     const Eigen::VectorXd phi = s.modes.shapes.col(i);
     ModeInfo m;
-    m.number = i + 1;
+    m.number = ModeNumber::atIndex(i);
     m.omega2 = s.modes.omega2[i];
     m.stable = s.modes.isStable(i);
     m.rigid_body = s.modes.isRigidBody(i);

@@ -65,7 +65,7 @@ struct ModalStrain {
 };
 
 struct ModeInfo {
-  int number = 0;  ///< 1-based.
+  ModeNumber number;
   double omega2 = 0;  ///< rad^2/s^2.
   double frequency_hz = 0;  ///< meaningful when stable; 0 for a rigid-body mode.
   bool stable = true;

@@ -116,7 +116,7 @@ void check(const TamInput& in, TamResult& r) {
     TamModeCheck c;
     Eigen::Index i = 0;
     c.cross_diagonal = r.cross.col(j).cwiseAbs().maxCoeff(&i);
-    c.tam_mode = static_cast<int>(i) + 1;
+    c.tam_mode = ModeNumber::atIndex(static_cast<int>(i));
     c.tam_frequency_hz = hz(r.tam_omega2[i]);
     c.frequency_error = c.tam_frequency_hz / hz(in.omega2[j]) - 1;
     c.self_diagonal = raw(j, j);

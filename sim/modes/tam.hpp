@@ -17,10 +17,12 @@
 ///     T = Phi (P Phi)^+ over the target modes Phi, exact for them at any sensor set
 ///     that tells them apart (a >= m, P Phi of rank m).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
+#include "sim/core/mode_number.hpp"
 
 namespace mmv {
 
@@ -41,7 +43,7 @@ struct TamInput {
 
 /// One target mode's checks.
 struct TamModeCheck {
-  int tam_mode = 0;                 ///< the TAM mode it pairs with (1-based, by the largest |cross-orthogonality|)
+  ModeNumber tam_mode;              ///< the TAM mode it pairs with (by the largest |cross-orthogonality|)
   double tam_frequency_hz = 0;      ///< that TAM mode's frequency
   double frequency_error = 0;       ///< tam / full - 1
   double self_diagonal = 0;         ///< phi_a^T M_tam phi_a, unnormalised (1: the TAM carries the mode's whole mass)

@@ -30,7 +30,7 @@ void addModeSeparationLines(const CheckInputs& in, const PlanarityReport& p, std
   CheckLine count = makeLine("planarity", "planarity.modes", "modes in the band that leave the plane", static_cast<double>(p.others.size()), 0,
                              "modes", "", 0);
   std::string list;
-  for (const auto& m : p.others) list += strf("%s%d (%.4g Hz, %s)", list.empty() ? "" : ", ", m.number, m.frequency_hz, m.family.label.c_str());
+  for (const auto& m : p.others) list += strf("%s%d (%.4g Hz, %s)", list.empty() ? "" : ", ", m.number.number(), m.frequency_hz, m.family.label.c_str());
   count.note = strf("%.3g-%.3g Hz: %s; %d in-plane", p.band_low_hz, p.band_high_hz, list.empty() ? "none" : list.c_str(),
                     p.in_plane_in_band) +
                (p.covers_band ? "" : strf("; modes solved only up to %.3g Hz", p.solved_up_to_hz));
@@ -39,9 +39,9 @@ void addModeSeparationLines(const CheckInputs& in, const PlanarityReport& p, std
   for (const auto& m : p.others) {
     if (!m.nearest_in_plane) continue;
     const double spacing = std::abs(m.frequency_hz - m.nearest_hz), half_power = 2 * zeta * std::max(m.frequency_hz, m.nearest_hz);
-    CheckLine l = makeLine("planarity", strf("planarity.mode%d.separation", m.number),
-                           strf("mode %d (%s) apart from in-plane mode %d by more than its half-power bandwidth", m.number,
-                                m.family.label.c_str(), m.nearest_in_plane),
+    CheckLine l = makeLine("planarity", strf("planarity.mode%d.separation", m.number.number()),
+                           strf("mode %d (%s) apart from in-plane mode %d by more than its half-power bandwidth", m.number.number(),
+                                m.family.label.c_str(), m.nearest_in_plane->number()),
                            half_power, spacing, "Hz",
                            strf("%.4g and %.4g Hz (%+.2f %%)%s", m.frequency_hz, m.nearest_hz, m.separation_pct,
                                 spacing < half_power ? ": one response peak hides the other; only the sensors' "
@@ -74,7 +74,7 @@ void addResponseLines(const CheckInputs& in, const PlanarityReport& p, std::vect
                            decoupled ? "decoupled: the article's symmetry keeps the motion in its plane (below 1e-9)"
                                      : strf("worst at %s: peak resonant response along the plane's normal over that in it "
                                             "(modes %d and %d, equal modal damping); above the limit the test is not planar",
-                                            worst->point.c_str(), worst->out_mode, worst->in_mode),
+                                            worst->point.c_str(), worst->out_mode.number(), worst->in_mode.number()),
                            in.options.required_margin_pct);
     makeAdvisory(l);
     out.push_back(l);

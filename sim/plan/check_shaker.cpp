@@ -56,7 +56,7 @@ void addShakerLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     l.verdict = Verdict::NotChecked;
     out.push_back(l);
   };
-  std::vector<int> targets;
+  std::vector<ModeNumber> targets;
   for (const ModeInfo& m : in.modes.modes)
     if (m.stable && !m.rigid_body && m.frequency_hz >= in.options.band_min_hz && m.frequency_hz <= in.options.band_max_hz)
       targets.push_back(m.number);
@@ -69,7 +69,7 @@ void addShakerLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     return notChecked("the scene has no accelerometer to see the modes: `mmvlab place-sensors` plans the shaker on a proposed set");
   if (!off_links.empty()) return notChecked(off_links);
   PlacementOptions o;
-  o.modes = modeNumbers(targets);
+  o.modes = targets;
   o.method = PlacementMethod::DrivingPointResidue;  // ranks only: the scene's sensors are the set
   o.keep_scene_sensors = true;
   o.count = accelerometers;

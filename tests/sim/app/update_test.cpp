@@ -130,7 +130,7 @@ TEST(Update, SensitivitiesEqualTheEigenvalueDerivative) {
                       b = solveScene(std::get<ArticleScene>(sceneAt(src, ps, down)));
     const Eigen::MatrixXd dK = (a.linearized.K - b.linearized.K) / (2 * h), dM = (a.linearized.M - b.linearized.M) / (2 * h);
     for (std::size_t i = 0; i < r.pairs.size(); ++i) {
-      const int mode = r.pairs[i].after_model - 1;
+      const int mode = r.pairs[i].after_model.index();
       const Eigen::VectorXd phi = at.modes.shapes.col(mode);
       const double lambda = at.modes.omega2(mode);
       const double dlambda = phi.dot((dK - lambda * dM) * phi) / phi.dot(at.linearized.M * phi);
@@ -228,8 +228,8 @@ TEST(Update, HamsasSpringsTenPercentOffComeBackToTheMeasuredFrequencies) {
   // followed by their shapes, never taken for the modes they crossed.
   for (const auto& p : r.pairs)
     if (p.test.rfind("IP (horizontal)", 0) == 0) {
-      EXPECT_GE(p.before_model, 5) << p.test;
-      EXPECT_LE(p.after_model, 3) << p.test;
+      EXPECT_GE(p.before_model.number(), 5) << p.test;
+      EXPECT_LE(p.after_model.number(), 3) << p.test;
       EXPECT_GT(p.after_mac, 0.95) << p.test;
     }
   EXPECT_FALSE(r.options.mac_residuals);  // the features' shapes are model patterns, not data

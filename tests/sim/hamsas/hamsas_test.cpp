@@ -126,7 +126,7 @@ TEST(Hamsas, ShippedSceneReproducesTheMeasuredFrequencies) {
   EXPECT_EQ(h.model.sensors.size(), 8u);
   ASSERT_EQ(h.features.size(), 9u);
   for (const auto& f : h.features) {
-    ASSERT_GE(f.mode, 0) << f.feature;
+    ASSERT_TRUE(f.mode) << f.feature;
     EXPECT_NEAR(f.model_hz / f.measured_hz, 1.0, 0.05) << f.feature;
     EXPECT_GT(f.shape_match, 0.8) << f.feature;
   }
@@ -140,11 +140,11 @@ TEST(Hamsas, HorizontalModesPairAndVerticalDecouples) {
   EXPECT_NEAR(feature(h, "horizontal GAS x").model_hz / feature(h, "horizontal GAS y").model_hz, 1.0, 1e-4);
   // The MGAS vertical mode carries no horizontal or tilting motion (the slides: vertical
   // decouples from horizontal), and no horizontal mode carries vertical motion.
-  const SpatialMode& v = h.modes[feature(h, "MGAS vertical").mode];
+  const SpatialMode& v = h.modes[feature(h, "MGAS vertical").mode->index()];
   double lateral = 0;
   for (const char* k : {"ot.x", "ot.y", "ot.rx", "ot.ry", "sb.x", "sb.y"}) lateral += v.kinetic_share.at(k);
   EXPECT_LT(lateral, 1e-12);
-  const SpatialMode& ip = h.modes[feature(h, "IP (horizontal) x").mode];
+  const SpatialMode& ip = h.modes[feature(h, "IP (horizontal) x").mode->index()];
   EXPECT_LT(ip.kinetic_share.at("ot.z") + ip.kinetic_share.at("sb.z"), 1e-12);
   // The tilt pair splits only because the layout is rectangular: made square, it pairs.
   HamsasSpec sq = shippedScene();
@@ -247,7 +247,7 @@ TEST(Hamsas, StiffSpringsAgainstIdealJoints) {
   spec.ideal_joints = true;
   const HamsasModes ideal = analyseHamsas(spec);
   EXPECT_EQ(ideal.lin.redundant_constraints, 1);  // the spring box on four rigid supports
-  EXPECT_EQ(feature(ideal, "effective spherical joints").mode, -1);
+  EXPECT_FALSE(feature(ideal, "effective spherical joints").mode);
   EXPECT_NEAR(feature(stiff, "effective spherical joints").model_hz, 60.0, 3.0);
   // Every ideal-joint mode has its stiff-spring twin: below 1 Hz within 1e-5 (the joint
   // compliance is (f/60 Hz)^2 of the joints' share), the 22 Hz family within 0.1 %.
@@ -312,6 +312,7 @@ TEST(Hamsas, LoadedMechanismIsNamed) {
 
 #include "facility/table_programs.hpp"
 #include "sim/hamsas/hamsas_simulation.hpp"
+#include "support/record_column.hpp"
 
 namespace mmv {
 namespace {
@@ -328,11 +329,7 @@ HamsasScene timeRunScene(double amplitude, double duration, double rate_hz) {
   return s;
 }
 
-int column(const SimulationRecord& r, const std::string& name) {
-  for (std::size_t c = 0; c < r.columns.size(); ++c)
-    if (r.columns[c] == name) return static_cast<int>(c);
-  throw std::runtime_error("no column " + name);
-}
+using testing::column;
 
 TEST(HamsasTimeRun, DesignIsTheEquilibriumOfTheNonlinearModel) {
   // The Simbody model's spring rest offsets come from the linearization's preloads: at

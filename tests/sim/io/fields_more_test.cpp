@@ -28,8 +28,8 @@ TEST(CorrelationPairFields, JsonCsvAndTextComeFromOneList) {
   CorrelationResult r;
   r.test_modes = {{1, 2.0, 0.02, {}, {}}, {2, 5.0, 0.01, {}, {}}};
   ModeInfo m1, m2;
-  m1.number = 1, m1.frequency_hz = 2.04, m1.has_damping = true, m1.damping_ratio = 0.015;
-  m2.number = 3, m2.frequency_hz = 4.9, m2.has_damping = false;
+  m1.number = ModeNumber(1), m1.frequency_hz = 2.04, m1.has_damping = true, m1.damping_ratio = 0.015;
+  m2.number = ModeNumber(3), m2.frequency_hz = 4.9, m2.has_damping = false;
   r.model_modes = {m1, m2};
   r.model_damped = true;
   r.damping_model = "modal";
@@ -99,7 +99,7 @@ TEST(ConvergenceFields, CsvRowsAreTheModeRecordsRunByRun) {
   EXPECT_EQ(got, keys);
   DiscretizationEstimate d;
   d.available = true;
-  d.modes = {assessLadder(1, {1.0})};  // one run: no estimate
+  d.modes = {assessLadder(ModeNumber(1), {1.0})};  // one run: no estimate
   const json est = discretizationJson(d)["modes"][0];
   EXPECT_EQ(est["check"], "unchecked");
   EXPECT_EQ(est.size(), convergenceModeFields().size());

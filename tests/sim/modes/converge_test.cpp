@@ -208,7 +208,7 @@ TEST(Discretization, ModesArePairedWithinTheirFamilyAcrossMeshes) {
                                    [&](const ModeInfo& c) { return c.frequency_hz == m.frequency_hz[k]; });
       ASSERT_NE(it, coarse[k].modes.end()) << "mode " << i + 1;
       EXPECT_EQ(it->family.label, fine.modes[i].family.label) << "mode " << i + 1 << " at " << (k ? 32 : 16) << " segments";
-      crossings += it->number != static_cast<int>(i) + 1;  // where pairing by index would have gone wrong
+      crossings += it->number != ModeNumber::atIndex(static_cast<int>(i));  // where pairing by index would have gone wrong
     }
   }
   EXPECT_GE(crossings, 2);  // the case is one that needs it
@@ -323,13 +323,13 @@ TEST(Discretization, TheSpatialArticleUnderGravityConvergesAtSecondOrder) {
 // article's mode 3 at 1, 2 and 4 segments, observed order 2.8, 1.45 % above its
 // converged 3.2325 Hz) the estimate is |f4 - f2| / 3 / f4, not / (2^2.8 - 1).
 TEST(Discretization, AnOrderAboveTwoDoesNotShrinkTheEstimate) {
-  const ConvergenceMode m = assessLadder(3, {4.45419, 3.43002, 3.27969});
+  const ConvergenceMode m = assessLadder(ModeNumber(3), {4.45419, 3.43002, 3.27969});
   EXPECT_EQ(m.check, "order");
   EXPECT_NEAR(m.observed_order, 2.77, 0.01);
   EXPECT_NEAR(m.estimated_relative_error, (3.43002 - 3.27969) / 3 / 3.27969, 1e-12);
   EXPECT_GT(m.estimated_relative_error, 0.01);  // so a 1 % target goes on to 8 segments
   // Slower than 2, the observed order still makes the estimate larger.
-  const ConvergenceMode slow = assessLadder(1, {1.0 + 0.4, 1.0 + 0.2, 1.0 + 0.1});
+  const ConvergenceMode slow = assessLadder(ModeNumber(1), {1.0 + 0.4, 1.0 + 0.2, 1.0 + 0.1});
   EXPECT_NEAR(slow.observed_order, 1.0, 1e-12);
   EXPECT_NEAR(slow.estimated_relative_error, 0.1 / 1 / 1.1, 1e-12);
 }

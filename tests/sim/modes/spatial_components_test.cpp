@@ -130,7 +130,7 @@ TEST(SpatialComponents, CraigBamptonPredictsTheModesThatLeaveThePlane) {
   for (const auto& m : r.system)
     if (m.component_mode && m.family != "mixed") {
       for (const auto& c : r.components)
-        if (c.link == m.strain_link) EXPECT_EQ(c.modes.at(m.component_mode - 1).family, m.family) << "mode " << m.mode;
+        if (c.link == m.strain_link) EXPECT_EQ(c.modes.at(m.component_mode->index()).family, m.family) << "mode " << m.mode;
     }
 }
 

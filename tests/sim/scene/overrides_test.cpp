@@ -9,7 +9,7 @@
 namespace mmv {
 namespace {
 
-const char* kScene = R"(name: two links
+const char* kTwoLinks = R"(name: two links
 gravity: [0, -9.81, 0]
 materials:
   steel: {density: 7800, youngs_modulus: 2.0e11}
@@ -37,11 +37,11 @@ links:
     segments: 2
 )";
 
-ArticleScene withSets(const std::vector<std::string>& sets, const std::string& text = kScene) {
+ArticleScene withSets(const std::vector<std::string>& sets, const std::string& text = kTwoLinks) {
   return std::get<ArticleScene>(parseScene(text, "s.yaml", sets));
 }
 
-std::string errorOf(const std::vector<std::string>& sets, const std::string& text = kScene) {
+std::string overrideErrorOf(const std::vector<std::string>& sets, const std::string& text = kTwoLinks) {
   try {
     withSets(sets, text);
   } catch (const std::exception& e) {
@@ -88,30 +88,30 @@ TEST(SceneOverrides, ErrorsAreTheFilesWithTheOverrideForThePosition) {
   // The same bad value in the file and from --set: the same message after the position.
   std::string in_file;
   try {
-    withSets({}, std::string(kScene).replace(std::string(kScene).find("length: 1.0"), 11, "length: -2"));
+    withSets({}, std::string(kTwoLinks).replace(std::string(kTwoLinks).find("length: 1.0"), 11, "length: -2"));
   } catch (const SceneError& e) {
     in_file = e.what();
   }
   EXPECT_EQ(afterPosition(in_file, "s.yaml:19:13: "), "links[0].length must be > 0 m (got -2)");
-  EXPECT_EQ(afterPosition(errorOf({"links.l1.length=-2"}), "--set links.l1.length=-2: "), "links[0].length must be > 0 m (got -2)");
-  EXPECT_EQ(errorOf({"links.l1.lenght=2"}),
+  EXPECT_EQ(afterPosition(overrideErrorOf({"links.l1.length=-2"}), "--set links.l1.length=-2: "), "links[0].length must be > 0 m (got -2)");
+  EXPECT_EQ(overrideErrorOf({"links.l1.lenght=2"}),
             "--set links.l1.lenght=2: unknown key 'links[0].lenght' (did you mean 'length'?) (allowed: name, joint, material, section, length, "
             "segments, mount_angle_deg, tip_mass, branches, model, modes)");
-  EXPECT_EQ(errorOf({"links.l1.length=abc"}), "--set links.l1.length=abc: links[0].length must be a number (got abc)");
-  EXPECT_EQ(errorOf({"lab.hole_side_m=9"}),
+  EXPECT_EQ(overrideErrorOf({"links.l1.length=abc"}), "--set links.l1.length=abc: links[0].length must be a number (got abc)");
+  EXPECT_EQ(overrideErrorOf({"lab.hole_side_m=9"}),
             "--set lab.hole_side_m=9: lab.hole_side_m: the hole (9 m) must be smaller than the platform (6.096 m x 8.8392 m)");
-  EXPECT_EQ(errorOf({"links.l9.length=2"}), "--set links.l9.length=2: no item 'l9' (known: l1, l2)");
-  EXPECT_EQ(errorOf({"links.l1.length=[1"}).rfind("--set links.l1.length=[1: malformed YAML value", 0), 0u);
-  EXPECT_EQ(errorOf({"name.first=x"}), "--set name.first=x: 'name.first' does not name a key of a mapping");
+  EXPECT_EQ(overrideErrorOf({"links.l9.length=2"}), "--set links.l9.length=2: no item 'l9' (known: l1, l2)");
+  EXPECT_EQ(overrideErrorOf({"links.l1.length=[1"}).rfind("--set links.l1.length=[1: malformed YAML value", 0), 0u);
+  EXPECT_EQ(overrideErrorOf({"name.first=x"}), "--set name.first=x: 'name.first' does not name a key of a mapping");
   // The kind of scene is the file's to say (the set fuzzer: the reader then blamed the file's own keys).
-  EXPECT_EQ(errorOf({"hamsas="}), "--set hamsas=: 'adding hamsas' would change the scene's kind; an override changes values within the article scene");
-  EXPECT_EQ(errorOf({"l\"=1"}).rfind("--set l\"=1: ", 0), 0u);  // a quote in a key part stays in it
+  EXPECT_EQ(overrideErrorOf({"hamsas="}), "--set hamsas=: 'adding hamsas' would change the scene's kind; an override changes values within the article scene");
+  EXPECT_EQ(overrideErrorOf({"l\"=1"}).rfind("--set l\"=1: ", 0), 0u);  // a quote in a key part stays in it
   // A malformed override is the command line's mistake.
   EXPECT_THROW(withSets({"links.l1.length"}), UsageError);
   EXPECT_THROW(withSets({"links..length=2"}), UsageError);
   EXPECT_THROW(withSets({"=2"}), UsageError);
   // A later error in the file itself still points at the file's line.
-  EXPECT_EQ(errorOf({"links.l1.length=2"}, std::string(kScene).replace(std::string(kScene).find("b: 0.02"), 7, "b: -1"))
+  EXPECT_EQ(overrideErrorOf({"links.l1.length=2"}, std::string(kTwoLinks).replace(std::string(kTwoLinks).find("b: 0.02"), 7, "b: -1"))
                 .rfind("s.yaml:6:", 0),
             0u);
 }
