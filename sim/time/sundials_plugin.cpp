@@ -29,6 +29,9 @@ namespace {
 
 using Method = SundialsIntegrator::Method;
 
+/// The smallest step CVODE Adams may take (s); see its use.
+constexpr double kMinStepS = 1e-12;
+
 bool isArkode(Method m) { return m == Method::ArkErk || m == Method::ArkDirk; }
 
 std::string flagName(Method m, int flag) {
@@ -260,6 +263,11 @@ void SundialsIntegrator::initialize(const SimTK::State& s) {
       check(me, CVodeSetUserData(m.mem.p, &m), "CVodeSetUserData");
       check(me, CVodeSStolerances(m.mem.p, m.rtol, m.atol), "CVodeSStolerances");
       check(me, CVodeSetMaxNumSteps(m.mem.p, 1000000), "CVodeSetMaxNumSteps");
+      // Adams' fixed-point iteration takes a failed right-hand side for a convergence
+      // failure and retries at a smaller step, without end when the minimum step is 0
+      // (SUNDIALS' default): a model that throws hung the run. 1e-12 s is far below
+      // any step a multibody run takes; under it CVODE stops with CV_CONV_FAILURE.
+      if (me == Method::Adams) check(me, CVodeSetMinStep(m.mem.p, kMinStepS), "CVodeSetMinStep");
       break;
     case Method::ArkErk:
       m.mem.p = ERKStepCreate(&Impl::rhs, s.getTime(), m.y.p, m.ctx.c);
