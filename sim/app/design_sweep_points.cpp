@@ -79,6 +79,7 @@ std::string jsonCell(const nlohmann::ordered_json& j, const std::string& pointer
   const nlohmann::ordered_json::json_pointer p(pointer);
   if (!j.contains(p)) return "";
   const auto& v = j.at(p);
+  if (v.is_null()) return "";  // defined but without a value here (an order not observed): no value, as a failed point
   if (v.is_number()) return cell(v.get<double>());
   if (v.is_string()) return clean(v.get<std::string>());
   return clean(v.dump());
@@ -199,7 +200,10 @@ void addJsonColumn(DesignSweepContext& c, std::size_t i, const SweepPointResult&
   } catch (const nlohmann::json::exception& e) {
     throw SceneError(c.spec.output_where[i] + ": output '" + o + "' is not a JSON pointer (/key/0/key): " + e.what());
   }
-  const bool number = j.at(nlohmann::ordered_json::json_pointer(pointer)).is_number();
+  // A number column when the nominal scene's value is a number, or null (undefined there,
+  // a number where defined); a null anywhere is an empty cell, never the text "null".
+  const auto& nominal_value = j.at(nlohmann::ordered_json::json_pointer(pointer));
+  const bool number = nominal_value.is_number() || nominal_value.is_null();
   addColumn(c, o.substr(5), "", std::string("field ") + pointer + " of " + (modes ? "`modes --json`" : "`check --json`") + " (its unit is the key's)",
             number, [modes, pointer](const SweepPointResult& r) {
               auto& cached = modes ? r.modes_json : r.check_json;

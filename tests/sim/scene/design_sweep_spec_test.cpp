@@ -164,6 +164,21 @@ TEST(DesignSweepSpec, OneColumnListMakesTheHeaderTheFieldsAndTheCells) {
   EXPECT_TRUE(torque);
 }
 
+TEST(DesignSweepSpec, AJsonNullIsAnEmptyCellOfANumberColumn) {
+  // check's first line has no capacity (JSON null): the column is a number column and
+  // the cell is empty, never the text "null" (which a reader typing the column by its
+  // field would refuse).
+  const DesignSweepContext c = prepareDesignSweep(parseSpec(
+      "parameters:\n  - {key: links.link3.length, values: [0.7]}\n"
+      "outputs: [check, \"json:check/lines/0/capacity\"]\n"));
+  const nlohmann::ordered_json fields = sweepFieldsJson(c.columns);
+  ASSERT_EQ(fields.back()["key"], "check_lines_0_capacity");
+  EXPECT_TRUE(fields.back()["number"].get<bool>());
+  const auto row = evaluateDesignSweepPoint(c, 0);
+  EXPECT_EQ(row[1], "ok");
+  EXPECT_EQ(row.back(), "");
+}
+
 TEST(DesignSweepSpec, APointTheSceneRefusesIsARowWithItsReason) {
   const DesignSweepContext c = prepareDesignSweep(parseSpec("parameters:\n  - {key: links.link1.length, values: [2.44, -1]}\noutputs: [mass]\n"));
   const auto row = evaluateDesignSweepPoint(c, 1);
