@@ -290,18 +290,14 @@ void Model::finalize() {
   }
   // Ancestry: which coordinates move each body.
   // A planar mobilizer carries three coordinates; list them all, outboard-most first.
-  std::vector<std::vector<int>> coords_of_mobod(matter_.getNumBodies());
-  for (std::size_t i = 0; i < coords_.size(); ++i) coords_of_mobod[coords_[i].mobod].push_back(static_cast<int>(i));
+  coords_of_mobod_.assign(matter_.getNumBodies(), {});
+  for (std::size_t i = 0; i < coords_.size(); ++i) coords_of_mobod_[coords_[i].mobod].push_back(static_cast<int>(i));
+  parent_mobod_.assign(matter_.getNumBodies(), 0);  // Simbody's lookups once
+  for (SimTK::MobilizedBodyIndex ix(1); ix < matter_.getNumBodies(); ++ix)
+    parent_mobod_[ix] = matter_.getMobilizedBody(ix).getParentMobilizedBody().getMobilizedBodyIndex();
   coord_body_.assign(coords_.size(), -1);
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    std::vector<int> anc;
-    for (SimTK::MobilizedBodyIndex ix = bodies_[b].mobod; ix != SimTK::GroundIndex;
-         ix = matter_.getMobilizedBody(ix).getParentMobilizedBody().getMobilizedBodyIndex()) {
-      for (int c : coords_of_mobod[ix]) anc.push_back(c);
-    }
-    body_ancestors_.push_back(anc);
-    for (int c : coords_of_mobod[bodies_[b].mobod]) coord_body_[c] = static_cast<int>(b);
-  }
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    for (int c : coords_of_mobod_[bodies_[b].mobod]) coord_body_[c] = static_cast<int>(b);
   for (std::size_t i = 0; i < coords_.size(); ++i)
     if (coord_body_[i] < 0) throw InternalError("coordinate " + coords_[i].name + " moves no registered body");
   for (const auto& b : bodies_) {
@@ -347,6 +343,12 @@ void Model::setQ(SimTK::State& s, const Eigen::VectorXd& q) const {
     s.updQ()[qindex_[i]] = q[i];
     s.updU()[uindex_[i]] = 0.0;
   }
+}
+
+std::vector<int> Model::getAncestorCoordinates(int b) const {
+  std::vector<int> out;
+  forEachAncestorCoordinate(b, [&](int c) { out.push_back(c); });
+  return out;
 }
 
 Eigen::VectorXd Model::calcAppliedForces(SimTK::State& s) const {

@@ -231,7 +231,14 @@ class Model {
   bool isSpatial() const { return spatial_; }
   /// Coordinates whose motion moves body b (index into getBodies()): its own
   /// mobilizer's coordinate, if any, and those of all its ancestors.
-  const std::vector<int>& getAncestorCoordinates(int b) const { return body_ancestors_[b]; }
+  /// Made on each call (O(depth)): the model stores only each mobilizer's parent.
+  std::vector<int> getAncestorCoordinates(int b) const;
+  /// f(c) for each of getAncestorCoordinates(b), in that order, with no list made.
+  template <class F>
+  void forEachAncestorCoordinate(int b, F&& f) const {
+    for (int ix = bodies_[b].mobod; ix != SimTK::GroundIndex; ix = parent_mobod_[ix])
+      for (int c : coords_of_mobod_[ix]) f(c);
+  }
   /// Index into getBodies() of the body that coordinate c's pin moves.
   int getCoordinateBody(int c) const { return coord_body_[c]; }
 
@@ -283,7 +290,8 @@ class Model {
   std::vector<int> dofs_;
   SimTK::State reference_state_;
   double total_mass_ = 0, moving_mass_ = 0;
-  std::vector<std::vector<int>> body_ancestors_;
+  std::vector<std::vector<int>> coords_of_mobod_;  ///< per mobilized body, its coordinates.
+  std::vector<int> parent_mobod_;                  ///< per mobilized body, its parent's index.
   std::vector<int> coord_body_;
   bool closed_form_forces_ = false;
   bool spatial_ = false;

@@ -85,16 +85,18 @@ ModalSolution solveAllModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) 
   return sol;
 }
 
-/// Signs (largest component positive, for reproducible output) and the checks of the
-/// modes returned.
-void finishModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, ModalSolution& sol) {
-  const Eigen::Index k = sol.omega2.size();
-  for (Eigen::Index i = 0; i < k; ++i) {
+/// Signs: the largest component positive, for reproducible output.
+void fixSigns(ModalSolution& sol) {
+  for (Eigen::Index i = 0; i < sol.omega2.size(); ++i) {
     Eigen::Index imax;
     sol.shapes.col(i).cwiseAbs().maxCoeff(&imax);
     if (sol.shapes(imax, i) < 0) sol.shapes.col(i) *= -1.0;
   }
-  const Eigen::MatrixXd KV = K * sol.shapes, MV = M * sol.shapes;
+}
+
+/// The checks of the modes returned, from KV = K V and MV = M V.
+void checkModes(const Eigen::MatrixXd& KV, const Eigen::MatrixXd& MV, ModalSolution& sol) {
+  const Eigen::Index k = sol.omega2.size();
   for (Eigen::Index i = 0; i < k; ++i) {
     const double denom = KV.col(i).norm() + std::abs(sol.omega2[i]) * MV.col(i).norm();
     const double r = denom > 0 ? (KV.col(i) - sol.omega2[i] * MV.col(i)).norm() / denom : 0.0;
@@ -121,7 +123,19 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int
   std::optional<ModalSolution> sol;
   if (count > 0 && n >= kPartialModesMinDofs && 3 * count <= n) sol = solveLowestModes(M, K, count);
   if (!sol) sol = solveAllModes(M, K);
-  finishModes(M, K, *sol);
+  fixSigns(*sol);
+  checkModes(K * sol->shapes, M * sol->shapes, *sol);
+  return std::move(*sol);
+}
+
+ModalSolution solveModes(const TreeOperator& op, int count) {
+  const int n = op.size();
+  MMV_DEMAND(count >= 0);
+  std::optional<ModalSolution> sol;
+  if (count > 0 && n >= kPartialModesMinDofs && 3 * count <= n) sol = solveLowestModes(op, count);
+  if (!sol) return solveModes(op.denseM(), op.denseK(), count);  // small, or unproven: the dense solver
+  fixSigns(*sol);
+  checkModes(op.multiplyK(sol->shapes), op.multiplyM(sol->shapes), *sol);
   return std::move(*sol);
 }
 
@@ -162,10 +176,17 @@ Eigen::MatrixXd unstrainedMotions(const Eigen::MatrixXd& Z, const std::vector<bo
 
 void markRigidBodyModes(ModalSolution& sol, const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& U,
                         double omega2_scale) {
+  if (U.cols() == 0 || sol.omega2.size() == 0) {
+    sol.rigid.assign(sol.omega2.size(), 0);
+    return;
+  }
+  markRigidBodyModesOn(sol, U.transpose() * K * U, U.transpose() * M * U, omega2_scale);
+}
+
+void markRigidBodyModesOn(ModalSolution& sol, const Eigen::MatrixXd& Ku, const Eigen::MatrixXd& Mu, double omega2_scale) {
   const Eigen::Index n = sol.omega2.size();
   sol.rigid.assign(n, 0);
-  if (U.cols() == 0 || n == 0) return;
-  const Eigen::MatrixXd Ku = U.transpose() * K * U, Mu = U.transpose() * M * U;
+  if (Ku.cols() == 0 || n == 0) return;
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (Ku + Ku.transpose()), 0.5 * (Mu + Mu.transpose()),
                                                                 Eigen::EigenvaluesOnly | Eigen::Ax_lBx);
   if (es.info() != Eigen::Success) throw NumericalError("rigid-body mode count: eigen solution failed");

@@ -19,6 +19,7 @@
 #include <optional>
 #include <vector>
 #include "sim/core/mode_number.hpp"
+#include "sim/statics/tree_operator.hpp"
 
 
 
@@ -67,6 +68,13 @@ inline constexpr int kPartialModesMinDofs = 96;
 std::optional<ModalSolution> solveLowestModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count,
                                               const Eigen::VectorXd* start = nullptr);
 
+/// The same from an open tree's O(n) operators (sim/statics/tree_operator.hpp): the
+/// lowest `count` modes by shift-invert Lanczos on the tree's O(n) factorization, with
+/// the Sturm count from its pivots; O(n) memory. Small models, count = 0 and unproven
+/// partial solutions go to the dense solver on the formed matrices.
+ModalSolution solveModes(const TreeOperator& op, int count);
+std::optional<ModalSolution> solveLowestModes(const TreeOperator& op, int count, const Eigen::VectorXd* start = nullptr);
+
 /// Modes constrained to the columns of Z (a closed loop's admissible motions):
 /// (Z^T K Z) psi = omega^2 (Z^T M Z) psi, phi = Z psi. Residuals and orthogonality are
 /// those of the reduced problem; shapes stay mass-normalised (phi^T M phi = 1).
@@ -84,5 +92,7 @@ Eigen::MatrixXd unstrainedMotions(const Eigen::MatrixXd& Z, const std::vector<bo
 /// such eigenvalue; then the r modes with the smallest |omega^2| are rigid.
 void markRigidBodyModes(ModalSolution& sol, const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& U,
                         double omega2_scale);
+/// The same from Ku = U^T K U and Mu = U^T M U.
+void markRigidBodyModesOn(ModalSolution& sol, const Eigen::MatrixXd& Ku, const Eigen::MatrixXd& Mu, double omega2_scale);
 
 }  // namespace mmv

@@ -55,7 +55,11 @@ std::map<std::string, double> byCarrier(const std::map<std::string, double>& ene
 
 }  // namespace
 
-SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_opts, int num_modes) {
+ModalSolution solveModes(const LinearizedModel& lin, int count) {
+  return lin.tree ? solveModes(*lin.tree, count) : solveModes(lin.M, lin.K, lin.Z, count);
+}
+
+SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_opts, int num_modes, bool operators) {
   SolvedScene s;
   auto t0 = Clock::now();
   {
@@ -73,25 +77,37 @@ SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq_o
   t0 = Clock::now();
   {
     const ProgressStage stage(strf("linearizing: mass and stiffness matrices (%zu DOF)", s.model->getDofs().size()));
-    s.linearized = linearize(*s.model, s.equilibrium.state, s.equilibrium.closure_multipliers);
+    s.linearized = operators ? linearizeOperators(*s.model, s.equilibrium.state, s.equilibrium.closure_multipliers)
+                             : linearize(*s.model, s.equilibrium.state, s.equilibrium.closure_multipliers);
   }
   s.seconds_linearize = secondsSince(t0);
   t0 = Clock::now();
   const ProgressStage stage(strf("eigen-solution: %d modes of %zu DOF", num_modes, s.linearized.dofs.size()));
-  s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z, num_modes);
+  s.modes = solveModes(s.linearized, num_modes);
   markRigidBodyModes(s.modes, s.linearized, scene);
   s.seconds_eigen = secondsSince(t0);
   return s;
 }
 
 void markRigidBodyModes(ModalSolution& sol, const LinearizedModel& lin, const ArticleScene& scene) {
-  std::vector<bool> strained(lin.dofs.size());
-  for (std::size_t i = 0; i < lin.dofs.size(); ++i) strained[i] = lin.K_elastic(i, i) != 0.0;
+  const Eigen::VectorXd springs = springDiagonal(lin);
   double length = 0;
   for (const auto& l : scene.article.links) length += l.length;
   const double g = std::hypot(std::hypot(scene.gravity[0], scene.gravity[1]), scene.gravity[2]);
   const double scale = length > 0 ? g / length : 0.0;
-  mmv::markRigidBodyModes(sol, lin.M, lin.K, unstrainedMotions(lin.Z, strained), scale);
+  if (!lin.tree) {
+    std::vector<bool> strained(lin.dofs.size());
+    for (std::size_t i = 0; i < lin.dofs.size(); ++i) strained[i] = springs[i] != 0.0;
+    mmv::markRigidBodyModes(sol, lin.M, lin.K, unstrainedMotions(lin.Z, strained), scale);
+    return;
+  }
+  // An open tree: the unstrained motions are the coordinates without a spring.
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index i = 0; i < springs.size(); ++i)
+    if (springs[i] == 0.0) free.push_back(i);
+  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(springs.size(), static_cast<Eigen::Index>(free.size()));
+  for (std::size_t c = 0; c < free.size(); ++c) U(free[c], static_cast<Eigen::Index>(c)) = 1.0;
+  markRigidBodyModesOn(sol, U.transpose() * stiffnessTimes(lin, U), U.transpose() * massTimes(lin, U), scale);
 }
 
 Eigen::MatrixXd pointTranslationMatrix(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
@@ -119,7 +135,7 @@ std::string dominantStrainLink(const Model& model, const std::vector<int>& dofs,
 }
 
 ModesSolve solveSceneModes(const ArticleScene& scene, const EquilibriumOptions& eq, int num_modes) {
-  const SolvedScene s = solveScene(scene, eq, num_modes);
+  const SolvedScene s = solveScene(scene, eq, num_modes, true);
   ModesSolve out;
   out.num_dofs = static_cast<int>(s.linearized.dofs.size());
   out.frequencies_hz.resize(s.modes.omega2.size());
@@ -300,7 +316,7 @@ void solveThroughBand(SolvedScene& s, const ArticleScene& scene, double hz) {
   auto highest = [&] { return s.modes.omega2.size() ? s.modes.frequencyHz(static_cast<int>(s.modes.omega2.size()) - 1) : 0.0; };
   while (static_cast<int>(s.modes.omega2.size()) < n && highest() <= hz) {
     const int more = std::min(n, std::max(20, 2 * static_cast<int>(s.modes.omega2.size())));
-    s.modes = solveModes(s.linearized.M, s.linearized.K, s.linearized.Z, more >= n ? 0 : more);
+    s.modes = solveModes(s.linearized, more >= n ? 0 : more);
     markRigidBodyModes(s.modes, s.linearized, scene);
   }
 }
@@ -312,7 +328,8 @@ void checkReportedModes(const SolvedScene& s, int count, ModesReport& rep) {
   for (int i = 0; i < count; ++i) rep.eigen_residual = std::max(rep.eigen_residual, m.residuals[i]);
   const Eigen::MatrixXd V = m.shapes.leftCols(count);
   rep.orthogonality_error =
-      count ? (V.transpose() * s.linearized.M * V - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff() : 0.0;
+      count ? (V.transpose() * massTimes(s.linearized, V) - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff()
+            : 0.0;
   constexpr double kTrusted = 1e-6;
   if (rep.eigen_residual > kTrusted) {
     std::ostringstream os;
@@ -326,6 +343,17 @@ void checkReportedModes(const SolvedScene& s, int count, ModesReport& rep) {
 }  // namespace
 
 namespace {
+
+/// phi^T K_geometric phi / omega^2 of the first `count` modes: phi^T K phi less the
+/// springs' part, from products with K (no K_geometric is formed on a large tree).
+Eigen::VectorXd geometricShares(const LinearizedModel& lin, const ModalSolution& modes, int count) {
+  const Eigen::VectorXd springs = springDiagonal(lin);
+  const Eigen::MatrixXd V = modes.shapes.leftCols(count), KV = stiffnessTimes(lin, V);
+  Eigen::VectorXd share(count);
+  for (int i = 0; i < count; ++i)
+    share[i] = (V.col(i).dot(KV.col(i)) - V.col(i).cwiseAbs2().dot(springs)) / modes.omega2[i];
+  return share;
+}
 
 /// Each span's strain per unit coordinate, -c / span (theta_B - theta_A): frf's strain
 /// output row (sim/linear/state_space.hpp).
@@ -352,7 +380,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   const int solved_modes = options.damping && options.max_modes > 0
                                ? std::min(std::max(2 * options.max_modes, options.max_modes + 20), kMaxDampingBasis)
                                : options.max_modes;
-  SolvedScene s = solveScene(scene, options.equilibrium, solved_modes);
+  SolvedScene s = solveScene(scene, options.equilibrium, solved_modes, !options.damping);
   if (s.model->isSpatial()) solveThroughBand(s, scene, PlanarityReport().band_high_hz);
   rep.seconds_build = s.seconds_build;
   rep.seconds_equilibrium = s.seconds_equilibrium;
@@ -396,6 +424,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     rep.damping_basis_modes = damping.basis_modes;
     rep.damping_exact = damping.exact;
   }
+  const Eigen::VectorXd geometric = geometricShares(s.linearized, s.modes, count);
   for (int i = 0; i < count; ++i) {
     const Eigen::VectorXd phi = s.modes.shapes.col(i);
     ModeInfo m;
@@ -404,7 +433,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
     m.stable = s.modes.isStable(i);
     m.rigid_body = s.modes.isRigidBody(i);
     m.frequency_hz = s.modes.frequencyHz(i);
-    m.geometric_stiffness_share = m.rigid_body ? 0.0 : phi.dot(s.linearized.K_geometric * phi) / m.omega2;
+    m.geometric_stiffness_share = m.rigid_body ? 0.0 : geometric[i];
     if (rep.damped && i < static_cast<int>(damping.ratio.size())) {
       m.has_damping = true;
       m.damping_ratio = damping.ratio[i];

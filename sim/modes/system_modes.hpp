@@ -187,8 +187,16 @@ struct SolvedScene {
 };
 /// num_modes = 0: every mode; > 0: at least the lowest num_modes (solveModes: on large
 /// models only those, by shift-invert Lanczos).
+/// `operators`: a large open tree keeps M and K as O(n) operators (linearizeOperators,
+/// sim/statics/linearize.hpp), for callers that read them only through massTimes,
+/// stiffnessTimes and springDiagonal.
 /// Throws NumericalError if the equilibrium fails or the eigenproblem is ill-posed.
-SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq = {}, int num_modes = 0);
+SolvedScene solveScene(const ArticleScene& scene, const EquilibriumOptions& eq = {}, int num_modes = 0,
+                       bool operators = false);
+
+/// solveModes on whichever form `lin` holds (dense matrices with their closure basis,
+/// or an open tree's operators).
+ModalSolution solveModes(const LinearizedModel& lin, int count);
 
 /// Flags the rigid-body modes of `sol` (shapes over lin.dofs) from the model's
 /// structure: the admissible motions that bend no hinge and stretch no servo spring

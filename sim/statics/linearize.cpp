@@ -201,4 +201,26 @@ LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
   return lin;
 }
 
+LinearizedModel linearizeOperators(const Model& model, const SimTK::State& equilibrium,
+                                   const Eigen::VectorXd& closure_multipliers) {
+  if (!TreeOperator::appliesTo(model) || static_cast<int>(model.getDofs().size()) < kTreeOperatorMinDofs)
+    return linearize(model, equilibrium, closure_multipliers);
+  LinearizedModel lin;
+  lin.dofs = model.getDofs();
+  lin.tree = std::make_shared<const TreeOperator>(model, equilibrium, lin.dofs);
+  return lin;
+}
+
+Eigen::MatrixXd massTimes(const LinearizedModel& lin, const Eigen::MatrixXd& V) {
+  return lin.tree ? lin.tree->multiplyM(V) : Eigen::MatrixXd(lin.M * V);
+}
+
+Eigen::MatrixXd stiffnessTimes(const LinearizedModel& lin, const Eigen::MatrixXd& V) {
+  return lin.tree ? lin.tree->multiplyK(V) : Eigen::MatrixXd(lin.K * V);
+}
+
+Eigen::VectorXd springDiagonal(const LinearizedModel& lin) {
+  return lin.tree ? lin.tree->springs() : Eigen::VectorXd(lin.K_elastic.diagonal());
+}
+
 }  // namespace mmv

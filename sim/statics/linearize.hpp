@@ -25,9 +25,11 @@
 /// conservative system has a symmetric K.
 
 #include <Eigen/Dense>
+#include <memory>
 
 #include "sim/model/model.hpp"
 #include "sim/model/point_force.hpp"
+#include "sim/statics/tree_operator.hpp"
 
 namespace mmv {
 
@@ -40,7 +42,19 @@ struct LinearizedModel {
   Eigen::MatrixXd G;            ///< closure Jacobian (rows x dofs), empty for an open tree.
   Eigen::MatrixXd Z;            ///< orthonormal null-space basis of G (identity when open).
   double asymmetry = 0;         ///< ||K_raw - K_raw^T||_max / ||K_raw||_max.
+  /// Set by linearizeOperators on a large open tree: M and K as O(n) operators
+  /// (sim/statics/tree_operator.hpp). The matrices above are then empty (0 x 0): read
+  /// M and K through massTimes, stiffnessTimes and springDiagonal.
+  std::shared_ptr<const TreeOperator> tree;
 };
+
+/// M V, K V and K's elastic (spring) diagonal, whichever form `lin` holds.
+Eigen::MatrixXd massTimes(const LinearizedModel& lin, const Eigen::MatrixXd& V);
+Eigen::MatrixXd stiffnessTimes(const LinearizedModel& lin, const Eigen::MatrixXd& V);
+Eigen::VectorXd springDiagonal(const LinearizedModel& lin);
+
+/// From this many DOF on, linearizeOperators keeps an open tree's M and K as operators.
+inline constexpr int kTreeOperatorMinDofs = 96;
 
 /// Stiffness -df/dq over `dofs` at the state `s` (not symmetrised): the closed form
 /// when the model allows it, finite differences otherwise.
@@ -62,5 +76,12 @@ Eigen::MatrixXd calcMass(const Model& model, const SimTK::State& s, const std::v
 /// empty for an open tree.
 LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
                           const Eigen::VectorXd& closure_multipliers = Eigen::VectorXd());
+
+/// linearize(), except that an open tree (TreeOperator::appliesTo) of at least
+/// kTreeOperatorMinDofs DOF gets the operators alone (`tree`), in O(n) time and memory:
+/// for callers that read M and K only through massTimes, stiffnessTimes and
+/// springDiagonal (the modes of fine meshes).
+LinearizedModel linearizeOperators(const Model& model, const SimTK::State& equilibrium,
+                                   const Eigen::VectorXd& closure_multipliers = Eigen::VectorXd());
 
 }  // namespace mmv

@@ -14,20 +14,35 @@
 namespace mmv {
 namespace {
 
-/// The largest moment gravity could exert about any pin in this configuration,
-/// max_k sum_{i outboard of k} m_i |g| |p_i - o_k|: a load scale that does not vanish
-/// when the article happens to be balanced (e.g. an upright straight rod).
+/// The largest moment gravity could exert about any joint axis (an article joint or a
+/// floating base's, not a link's own hinges) in this configuration,
+/// max_k sum_{i outboard of k} m_i |g| |p_i - o_k|, or about any pin when the model has
+/// no joint: a load scale that does not vanish when the article happens to be balanced
+/// (e.g. an upright straight rod). Joints only, so that its cost is O(bodies) on a fine
+/// mesh (a few joints on each body's path, against thousands of hinges).
 double gravityMomentScale(const Model& model, const SimTK::State& s) {
   const auto& matter = model.getMatter();
   const double g = model.getGravity().norm();
-  std::vector<double> scale(model.getNumCoordinates(), 0.0);
-  for (std::size_t b = 0; b < model.getBodies().size(); ++b) {
-    const SimTK::MobilizedBody& mb = matter.getMobilizedBody(model.getBodies()[b].mobod);
+  const auto& coords = model.getCoordinates();
+  const bool any_joint = std::any_of(coords.begin(), coords.end(), [](const Coordinate& c) { return c.kind == CoordinateKind::Joint; });
+  // Per mobilized body, its counted coordinates and the nearest inboard body with any.
+  std::vector<std::vector<int>> counted(matter.getNumBodies());
+  for (std::size_t k = 0; k < coords.size(); ++k)
+    if (!any_joint || coords[k].kind == CoordinateKind::Joint) counted[coords[k].mobod].push_back(static_cast<int>(k));
+  std::vector<int> inboard(matter.getNumBodies(), 0);  // 0: ground
+  for (SimTK::MobilizedBodyIndex ix(1); ix < matter.getNumBodies(); ++ix) {
+    const int p = matter.getMobilizedBody(ix).getParentMobilizedBody().getMobilizedBodyIndex();
+    inboard[ix] = counted[p].empty() ? inboard[p] : p;
+  }
+  std::vector<double> scale(coords.size(), 0.0);
+  std::vector<SimTK::Vec3> origin(coords.size());
+  for (std::size_t k = 0; k < coords.size(); ++k) origin[k] = matter.getMobilizedBody(coords[k].mobod).getBodyOriginLocation(s);
+  for (const auto& body : model.getBodies()) {
+    const SimTK::MobilizedBody& mb = matter.getMobilizedBody(body.mobod);
     const SimTK::Vec3 c = mb.findStationLocationInGround(s, mb.getBodyMassCenterStation(s));
-    for (int k : model.getAncestorCoordinates(static_cast<int>(b))) {
-      const SimTK::Vec3 o = matter.getMobilizedBody(model.getCoordinates()[k].mobod).getBodyOriginLocation(s);
-      scale[k] += mb.getBodyMass(s) * g * (c - o).norm();
-    }
+    const double weight = mb.getBodyMass(s) * g;
+    for (int ix = counted[body.mobod].empty() ? inboard[body.mobod] : static_cast<int>(body.mobod); ix != 0; ix = inboard[ix])
+      for (int k : counted[ix]) scale[k] += weight * (c - origin[k]).norm();
   }
   return scale.empty() ? 0.0 : *std::max_element(scale.begin(), scale.end());
 }
@@ -119,6 +134,17 @@ EquilibriumResult Newton::finish(bool ok, const std::string& why, const Residual
 std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
   model_.setQ(s_, q_);
   model_.getSystem().realize(s_, SimTK::Stage::Position);
+  const double k_min = 1e-12 * r_.force_scale;
+  if (TreeOperator::appliesTo(model_) && n_ >= kTreeOperatorMinDofs) {
+    // A large open tree: K's O(n) factorization (sim/statics/tree_operator.hpp) in place
+    // of the dense Cholesky below, under the same tests (positive definite, every
+    // Jacobi-scaled pivot at least 1e-12); else the dense path judges the step.
+    const TreeOperator op(model_, s_, dofs_);
+    const TreeFactor f = op.factor(0.0);
+    const Eigen::VectorXd diag = op.diagonalK();
+    if (f.invertible() && diag.minCoeff() > k_min && f.pivots().cwiseQuotient(diag).minCoeff() >= 1e-12)
+      return f.solve(res.force);
+  }
   const Eigen::MatrixXd K = calcStiffness(model_, s_, dofs_);
   // Singular relative to the problem's loads, not to K's own largest entry: a 1x1 K of
   // 1e-17 N*m/rad is singular next to a 100 N*m load although it is its own largest
@@ -126,7 +152,6 @@ std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
   // beside a slender rod) are a well-posed problem whose raw pivots span 13 decades.
   // So each row is first scaled to unit size (equilibration), and a row whose
   // stiffness is below 1e-12 of the load scale per radian has nothing to hold it.
-  const double k_min = 1e-12 * r_.force_scale;
   if (m_ == 0 && model_.hasClosedFormForces() && K.diagonal().minCoeff() > k_min) {
     // An open tree near a stable equilibrium: K (symmetric in closed form) is positive
     // definite; its Jacobi-scaled Cholesky factor costs half an LU. Anything else goes to the LU.

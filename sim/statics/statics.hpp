@@ -22,8 +22,8 @@
 /// compresses a slender link);
 /// the failure says at what fraction of g. Converged when ||f_x||_inf <= force_tolerance * force_scale, where
 /// force_scale is the larger of the largest generalized force in the unbent shape and
-/// the largest moment gravity could exert about any pin, max_k sum m_i |g| |p_i - o_k|
-/// (so the test is relative to the loads present, even where they happen to balance). The torque a locked torquer holds is
+/// the largest moment gravity could exert about any joint axis (any pin if the model
+/// has no joint), max_k sum m_i |g| |p_i - o_k| (so the test is relative to the loads present, even where they happen to balance). The torque a locked torquer holds is
 /// tau = -f_joint at the solution (the torque the torquer applies to its child link,
 /// counter-clockwise positive).
 

@@ -35,7 +35,7 @@ TEST_F(Progress, EveryVerbNamesItsStageWhenItRunsLong) {
     std::string args, expect;  ///< a regex the progress lines must hold
   };
   const std::vector<Case> cases{
-      {"modes --segments 128", "still working \\([0-9.]+ s\\): modes > eigen-solution: 12 modes of 512 DOF"},
+      {"modes --segments 1024", "still working \\([0-9.]+ s\\): modes > eigen-solution: 12 modes of 4096 DOF"},
       {"converge", "still working \\([0-9.]+ s\\): converge"},
       {"compare --segments 32", "still working \\([0-9.]+ s\\): compare"},
       {"sweep-config --grid joint2:0:30:10", "still working \\([0-9.]+ s\\): sweep-config > configurations of the grid \\(configuration [0-9]+ of 4\\)"},

@@ -24,6 +24,16 @@ inline ArticleScene spatialCantilever(const Section& sec, double density, double
   return s;
 }
 
+/// The default article in the spatial model; `segments` > 0 replaces every flexible
+/// link's count.
+inline ArticleScene spatialDefault(int segments = 0) {
+  ArticleScene s = loadDefaultScene();
+  s.article.model = ArticleModel::Spatial;
+  if (segments > 0)
+    for (auto& l : s.article.links) l.segments = segments;
+  return s;
+}
+
 /// An explicit section: area, in-plane and out-of-plane second moments, torsion constant.
 inline Section explicitSection(double area, double i_in, double i_out, double j) {
   Section s;

@@ -115,5 +115,58 @@ TEST(ModalPartial, DefaultArticleMatchesTheDenseSolution) {
   }
 }
 
+// The same on the open tree's O(n) operators (sim/statics/tree_operator.hpp): Lanczos on
+// the tree's factorization against the dense solution at 64 segments (256 DOF), with
+// the mass and stiffness products of the checks from the operators too.
+TEST(ModalPartial, TreeOperatorsMatchTheDenseSolution) {
+  ArticleScene scene = loadDefaultScene();
+  overrideSegments(scene, 64);
+  const auto model = buildArticleModel(scene);
+  const EquilibriumResult eq = solveEquilibrium(*model);
+  ASSERT_TRUE(eq.converged) << eq.failure;
+  EXPECT_LE(eq.iterations, 4) << "Newton on the tree's factorization converges quadratically";
+  const LinearizedModel lin = linearize(*model, eq.state);
+  const TreeOperator op(*model, eq.state, lin.dofs);
+  const int count = 12;
+  const std::optional<ModalSolution> partial = solveLowestModes(op, count);
+  ASSERT_TRUE(partial.has_value());
+  const ModalSolution dense = solveModes(lin.M, lin.K), full = solveModes(op, count);
+  for (int i = 0; i < count; ++i) {
+    EXPECT_NEAR(partial->omega2[i] / dense.omega2[i], 1.0, 1e-10) << "mode " << i + 1;
+    const double c = partial->shapes.col(i).dot(lin.M * dense.shapes.col(i));
+    EXPECT_NEAR(c * c, 1.0, 1e-10) << "mode " << i + 1;
+    EXPECT_LT(full.residuals[i], 1e-9) << "mode " << i + 1;
+  }
+  EXPECT_LT(full.orthogonality_error, 1e-10);
+}
+
+// runModes keeps a large open tree's M and K as operators (no n x n matrix): its
+// frequencies, geometric-stiffness shares and checks equal those from the dense
+// matrices of the same equilibrium.
+TEST(ModalPartial, ModesOfALargeTreeUseTheOperatorsAndEqualTheDensePath) {
+  ArticleScene scene = loadDefaultScene();
+  overrideSegments(scene, 48);
+  const SolvedScene lean = solveScene(scene, {}, 12, true);
+  ASSERT_TRUE(lean.linearized.tree != nullptr);
+  EXPECT_EQ(lean.linearized.M.size(), 0);
+  EXPECT_EQ(lean.linearized.K.size(), 0);
+  const SolvedScene dense = solveScene(scene, {}, 12, false);
+  ASSERT_TRUE(dense.linearized.tree == nullptr);
+  ModesOptions o;
+  o.max_modes = 12;
+  const ModesReport rep = runModes(scene, o);
+  ASSERT_EQ(rep.modes.size(), 12u);
+  for (int i = 0; i < 12; ++i) {
+    const Eigen::VectorXd phi = dense.modes.shapes.col(i);
+    EXPECT_NEAR(lean.modes.omega2[i] / dense.modes.omega2[i], 1.0, 1e-10) << i;
+    EXPECT_NEAR(rep.modes[i].omega2 / dense.modes.omega2[i], 1.0, 1e-10) << i;
+    EXPECT_NEAR(rep.modes[i].geometric_stiffness_share,
+                phi.dot(dense.linearized.K_geometric * phi) / dense.modes.omega2[i], 1e-8)
+        << i;
+  }
+  EXPECT_LT(rep.eigen_residual, 1e-9);
+  EXPECT_LT(rep.orthogonality_error, 1e-10);
+}
+
 }  // namespace
 }  // namespace mmv

@@ -13,16 +13,10 @@
 #include "sim/modes/components.hpp"
 #include "sim/scene/scene.hpp"
 #include "support/scenes.hpp"
+#include "support/spatial_scenes.hpp"
 
 namespace mmv {
 namespace {
-
-ArticleScene spatialDefault(int segments = 16) {
-  ArticleScene s = loadDefaultScene();
-  s.article.model = ArticleModel::Spatial;
-  for (auto& l : s.article.links) l.segments = segments;
-  return s;
-}
 
 /// Frequencies (Hz) and closed forms of a component's modes, by family, ascending.
 struct Families {
@@ -50,8 +44,8 @@ Families componentFamilies(const ArticleScene& scene, const std::string& link, C
 TEST(SpatialComponents, EveryFamilyMatchesItsClosedForm) {
   for (ComponentBC bc : {ComponentBC::ClampedFree, ComponentBC::PinnedFree, ComponentBC::FreeFree,
                          ComponentBC::ClampedPinned, ComponentBC::PinnedPinned}) {
-    const Families coarse = componentFamilies(spatialDefault(8), "link1", bc, 8),
-                   fine = componentFamilies(spatialDefault(16), "link1", bc, 8);
+    const Families coarse = componentFamilies(testing::spatialDefault(8), "link1", bc, 8),
+                   fine = componentFamilies(testing::spatialDefault(16), "link1", bc, 8);
     for (const char* family : {"in-plane", "out-of-plane", "torsion"}) {
       ASSERT_TRUE(fine.hz.count(family)) << componentBCName(bc) << " has no " << family << " mode";
       const auto& c = coarse.hz.at(family);
@@ -69,7 +63,7 @@ TEST(SpatialComponents, EveryFamilyMatchesItsClosedForm) {
 // A round rod's two bending families are degenerate: the solver's arbitrary mix of
 // each pair is rotated back into one in-plane and one out-of-plane mode.
 TEST(SpatialComponents, ARoundRodsDegeneratePairsSeparateIntoFamilies) {
-  const Families f = componentFamilies(spatialDefault(16), "link3a", ComponentBC::ClampedFree, 8);
+  const Families f = componentFamilies(testing::spatialDefault(16), "link3a", ComponentBC::ClampedFree, 8);
   ASSERT_EQ(f.hz.at("in-plane").size(), 4u);
   ASSERT_EQ(f.hz.at("out-of-plane").size(), 4u);
   for (int k = 0; k < 4; ++k) EXPECT_NEAR(f.hz.at("in-plane")[k], f.hz.at("out-of-plane")[k], 1e-9 * f.hz.at("in-plane")[k]);
@@ -80,7 +74,7 @@ TEST(SpatialComponents, ARoundRodsDegeneratePairsSeparateIntoFamilies) {
 TEST(SpatialComponents, LockedOutOfPlaneComparisonIsThePlanarOne) {
   CompareOptions o;
   const CompareReport planar = runCompare(loadDefaultScene(), o);
-  ArticleScene locked = spatialDefault();
+  ArticleScene locked = testing::spatialDefault();
   locked.article.lock_out_of_plane = true;
   const CompareReport spatial = runCompare(locked, o);
   ASSERT_EQ(planar.components.size(), spatial.components.size());
@@ -109,7 +103,7 @@ TEST(SpatialComponents, LockedOutOfPlaneComparisonIsThePlanarOne) {
 // link miss (their first torsion mode is at 110 Hz).
 TEST(SpatialComponents, CraigBamptonPredictsTheModesThatLeaveThePlane) {
   CompareOptions o;
-  const CompareReport r = runCompare(spatialDefault(), o);
+  const CompareReport r = runCompare(testing::spatialDefault(), o);
   EXPECT_TRUE(r.spatial);
   int out_of_plane = 0;
   bool missed_torsion = false;

@@ -23,12 +23,6 @@
 namespace mmv {
 namespace {
 
-ArticleScene spatialDefault() {
-  ArticleScene s = loadDefaultScene();
-  s.article.model = ArticleModel::Spatial;
-  return s;
-}
-
 /// The stable frequencies (Hz) of each mode family, ascending.
 std::map<std::string, std::vector<double>> familyFrequencies(const ArticleScene& scene) {
   const SolvedScene s = solveScene(scene);
@@ -120,7 +114,7 @@ TEST(Spatial, ClosedTreeHoldsThePointOutOfThePlane) {
 // in-plane family stays within 1e-3 of the planar model at the same mesh (the addition
 // is of the order of the section's rotary inertia).
 TEST(Spatial, FineMeshesKeepThePiecesPhysicalAndThePlanarSpectrum) {
-  ArticleScene spatial = spatialDefault(), planar = loadDefaultScene();
+  ArticleScene spatial = testing::spatialDefault(), planar = loadDefaultScene();
   overrideSegments(spatial, 48);
   overrideSegments(planar, 48);
   const std::vector<double> in_plane = familyFrequencies(spatial).at("in-plane");
@@ -134,7 +128,7 @@ TEST(Spatial, FineMeshesKeepThePiecesPhysicalAndThePlanarSpectrum) {
 // Free to leave the plane, the symmetric planar article keeps every planar mode: its
 // in-plane family is the planar spectrum (the families do not couple).
 TEST(Spatial, InPlaneFamilyOfTheFreeModelIsThePlanarSpectrum) {
-  const std::vector<double> in_plane = familyFrequencies(spatialDefault()).at("in-plane");
+  const std::vector<double> in_plane = familyFrequencies(testing::spatialDefault()).at("in-plane");
   const SolvedScene planar = solveScene(loadDefaultScene());
   ASSERT_EQ(static_cast<Eigen::Index>(in_plane.size()), planar.modes.omega2.size());
   for (std::size_t i = 0; i < in_plane.size(); ++i)
@@ -145,7 +139,7 @@ TEST(Spatial, InPlaneFamilyOfTheFreeModelIsThePlanarSpectrum) {
 // linearize.hpp) and central differences agree on the article rolled 20 deg by the
 // gimbal (gravity out of its plane) and bent in all three directions.
 TEST(Spatial, ClosedFormStiffnessEqualsFiniteDifferences) {
-  ArticleScene scene = spatialDefault();
+  ArticleScene scene = testing::spatialDefault();
   scene.article.base.gimbal = GimbalSpec{};
   scene.article.base.gimbal->roll.angle = 20 * M_PI / 180;
   const auto model = buildArticleModel(scene);
@@ -218,12 +212,12 @@ TEST(Spatial, RoundRodBendingFamiliesPair) {
 TEST(Spatial, PlanarityReportSeesCouplingOnlyWhenTheArticleLeavesItsPlane) {
   ModesOptions opt;
   opt.max_modes = 12;
-  const ModesReport flat = runModes(spatialDefault(), opt);
+  const ModesReport flat = runModes(testing::spatialDefault(), opt);
   ASSERT_TRUE(flat.planarity.has_value());
   EXPECT_TRUE(flat.planarity->covers_band);
   EXPECT_FALSE(flat.planarity->others.empty());
   for (const auto& r : flat.planarity->responses) EXPECT_TRUE(r.decoupled) << r.excitation << " at " << r.point;
-  ArticleScene rolled = spatialDefault();
+  ArticleScene rolled = testing::spatialDefault();
   rolled.article.base.gimbal = GimbalSpec{};
   rolled.article.base.gimbal->roll.angle = 20 * M_PI / 180;
   const ModesReport tilted = runModes(rolled, opt);
@@ -241,7 +235,7 @@ using testing::column;
 // holds at every sample (1e-6 of the peak kinetic energy; 3e-7 measured) and the tips
 // leave the plane.
 TEST(Spatial, FreeRunKeepsItsEnergyBalance) {
-  ArticleScene s = spatialDefault();
+  ArticleScene s = testing::spatialDefault();
   for (auto& l : s.article.links) l.segments = 4;
   s.article.base.gimbal = GimbalSpec{};
   s.article.base.gimbal->roll.angle = 20 * M_PI / 180;
@@ -322,7 +316,7 @@ const PointMotion& shapeAt(const ModeInfo& m, const std::string& point) {
 // tip motion); alone, d(omega^2) = -omega^2 dm |d|^2 to first order. No gravity, so the
 // mass changes no preload.
 TEST(Spatial, BranchAsymmetrySplitsModesAsPerturbationPredicts) {
-  ArticleScene sym = spatialDefault();
+  ArticleScene sym = testing::spatialDefault();
   sym.gravity = {0, 0, 0};
   for (auto& l : sym.article.links)
     if (l.name == "link3a" || l.name == "link3b") std::swap(l.mount_angle, l.tilt);

@@ -1,0 +1,108 @@
+#pragma once
+/// The mass matrix M and the tangent stiffness K of an open tree about a state, as
+/// O(n) operators that are never formed (n degrees of freedom): products, and the
+/// factorization K - sigma M = L D L^T in O(n) time and memory. What the modes of a fine
+/// mesh need (1024 segments per link: 4096 DOF, whose dense M and K alone would take
+/// 270 MB and whose Cholesky factor O(n^3) time).
+///
+/// Structure. Every degree of freedom j has a world-frame spatial axis S_j = (w; v_O)
+/// (the velocity its unit rate gives the bodies it moves, v at the world origin), a
+/// parent (the nearest degree of freedom inboard of it) and a spring k_j. Each body b
+/// is moved by the degrees of freedom on its path to ground, so with per-body 6 x 6
+/// matrices c_b
+///     A_jk = k_j delta_jk + S_j^T C_k S_k   for j inboard of or equal to k,
+///     C_k  = sum of c_b over the bodies outboard of or at k (its subtree),
+/// and A_kj = A_jk. The mass matrix is of this form with c_b the body's spatial
+/// inertia about the world origin (symmetric). So is the closed-form stiffness of
+/// sim/statics/linearize.hpp (gravity and dead loads, for j inboard of k: a constant
+/// force f at p contributes K_jk = S_j^T X S_k with X = [[(p.f) I - p f^T, [f x]],
+/// [0, 0]], which is what a_j . (a_k x (p - o_k)) x f works out to), with the joints'
+/// springs on the diagonal. Translations of a mobilizer count as inboard of its
+/// rotations (they move the rotation axis), rotations in their q order (a gimbal's
+/// later axes turn with its earlier ones).
+///
+/// Factorization. Eliminating the degrees of freedom leaves first is the articulated-
+/// body recursion with general 6 x 6 "inertias": IA_j = c_j + sum over children
+/// (IA_c - U_c U_c^T / d_c), U_j = IA_j S_j, pivot d_j = k_j + S_j^T U_j. The pivots'
+/// signs are the inertia of K - sigma M (Sylvester), so they count the eigenvalues
+/// below sigma (a Sturm check in O(n)).
+///
+/// Applies to open trees whose only forces are gravity, dead loads and the
+/// coordinates' linear springs (no closures, no rotation springs): appliesTo.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "sim/model/model.hpp"
+
+namespace mmv {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+class TreeFactor;
+
+class TreeOperator {
+ public:
+  /// Whether the model's M and K have the structure above: no closures, closed-form
+  /// forces (Model::hasClosedFormForces) and no rotation springs.
+  static bool appliesTo(const Model& model);
+
+  /// At state `s` over the coordinates `dofs` (held ones
+  /// excluded; the model's getDofs()). Requires appliesTo(model).
+  TreeOperator(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+
+  int size() const { return static_cast<int>(axis_.size()); }
+  Eigen::VectorXd multiplyM(const Eigen::VectorXd& x) const;
+  Eigen::VectorXd multiplyK(const Eigen::VectorXd& x) const;
+  Eigen::MatrixXd multiplyM(const Eigen::MatrixXd& X) const;
+  Eigen::MatrixXd multiplyK(const Eigen::MatrixXd& X) const;
+  Eigen::VectorXd diagonalM() const;
+  Eigen::VectorXd diagonalK() const;
+  /// The springs' diagonal stiffness k_j (K's elastic part), N*m/rad or N/m.
+  const Eigen::VectorXd& springs() const { return spring_; }
+  /// M and K formed (O(n * depth) time, O(n^2) memory): tests and the dense fallback.
+  Eigen::MatrixXd denseM() const;
+  Eigen::MatrixXd denseK() const;
+  /// K - sigma M = L D L^T.
+  TreeFactor factor(double sigma) const;
+
+ private:
+  friend class TreeFactor;
+  /// y = A x for A of the form above with per-dof matrices `own` (their subtree sums
+  /// `composite`) and diagonal `diag`.
+  Eigen::VectorXd apply(const std::vector<Matrix6d>& own, const std::vector<Matrix6d>& composite,
+                        const Eigen::VectorXd* diag, const Eigen::VectorXd& x) const;
+  Eigen::MatrixXd dense(const std::vector<Matrix6d>& composite, const Eigen::VectorXd* diag) const;
+
+  std::vector<Vector6d> axis_;     ///< S_j.
+  std::vector<int> parent_;        ///< index of the parent dof, -1 at ground.
+  std::vector<int> order_;         ///< dof indices, every parent before its children.
+  Eigen::VectorXd spring_;
+  std::vector<Matrix6d> mass_, stiff_;                    ///< c_j: the bodies attached at j.
+  std::vector<Matrix6d> mass_composite_, stiff_composite_;  ///< C_j.
+};
+
+/// The factorization K - sigma M = L D L^T of a TreeOperator (which must outlive it).
+class TreeFactor {
+ public:
+  /// D: one pivot per degree of freedom.
+  const Eigen::VectorXd& pivots() const { return pivot_; }
+  /// Whether every pivot is non-zero (the matrix is invertible).
+  bool invertible() const { return invertible_; }
+  int negativePivots() const;
+  /// (K - sigma M)^-1 r. Requires invertible().
+  Eigen::VectorXd solve(const Eigen::VectorXd& r) const;
+  /// L^-1 r and L^-T w (unit triangular factors).
+  Eigen::VectorXd forward(const Eigen::VectorXd& r) const;
+  Eigen::VectorXd backward(const Eigen::VectorXd& w) const;
+
+ private:
+  friend class TreeOperator;
+  explicit TreeFactor(const TreeOperator& op) : op_(&op) {}
+  const TreeOperator* op_;
+  std::vector<Vector6d> u_;  ///< U_j = IA_j S_j.
+  Eigen::VectorXd pivot_;
+  bool invertible_ = true;
+};
+
+}  // namespace mmv
