@@ -380,7 +380,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   const int solved_modes = options.damping && options.max_modes > 0
                                ? std::min(std::max(2 * options.max_modes, options.max_modes + 20), kMaxDampingBasis)
                                : options.max_modes;
-  SolvedScene s = solveScene(scene, options.equilibrium, solved_modes, !options.damping);
+  SolvedScene s = solveScene(scene, options.equilibrium, solved_modes, true);  // damping reads the modes alone
   if (s.model->isSpatial()) solveThroughBand(s, scene, PlanarityReport().band_high_hz);
   rep.seconds_build = s.seconds_build;
   rep.seconds_equilibrium = s.seconds_equilibrium;

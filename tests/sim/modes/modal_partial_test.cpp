@@ -7,6 +7,7 @@
 #include <random>
 
 #include "sim/model/article_builder.hpp"
+#include "sim/modes/damping.hpp"
 #include "sim/modes/modal.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/scene/scene.hpp"
@@ -166,6 +167,20 @@ TEST(ModalPartial, ModesOfALargeTreeUseTheOperatorsAndEqualTheDensePath) {
   }
   EXPECT_LT(rep.eigen_residual, 1e-9);
   EXPECT_LT(rep.orthogonality_error, 1e-10);
+  // Damped modes too: the hinges' dampers over the same basis of real modes.
+  DampingSpec hinges;
+  hinges.kind = DampingSpec::Kind::HingeViscous;
+  hinges.hinge_beta = 0.002;
+  o.damping = hinges;
+  const ModesReport damped = runModes(scene, o);
+  const int basis = damped.damping_basis_modes;
+  ASSERT_GE(basis, 24);
+  const SolvedScene reference = solveScene(scene, {}, basis, false);
+  const ModalDamping expect = modalDamping(*reference.model, reference.linearized, reference.modes, hinges, 12);
+  for (int i = 0; i < 12; ++i) {
+    ASSERT_TRUE(damped.modes[i].has_damping) << i;
+    EXPECT_NEAR(damped.modes[i].damping_ratio, expect.ratio[i], 1e-9 * std::max(expect.ratio[i], 1e-3)) << i;
+  }
 }
 
 }  // namespace
