@@ -59,8 +59,9 @@ std::optional<int> countBelow(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M
 }
 
 /// The shift-inverted pencil of an open tree (sim/statics/tree_operator.hpp): with
-/// K - sigma M = L D L^T (every pivot positive only for a shift below every eigenvalue),
-///     D^-1/2 L^-1 M L^-T D^-1/2 y = nu y,   x = L^-T D^-1/2 y,
+/// K - sigma M = L D L^T, D = R R^T (every pivot positive only for a shift below every
+/// eigenvalue),
+///     R^-1 L^-1 M L^-T R^-T y = nu y,   x = L^-T R^-T y,
 /// each product two O(n) sweeps of the factor and one of M.
 class TreeShiftInverted {
  public:
@@ -70,18 +71,17 @@ class TreeShiftInverted {
   Eigen::Index cols() const { return op_.size(); }
   bool factor(double sigma) {
     factor_.emplace(op_.factor(sigma));
-    if (!factor_->invertible() || !(factor_->pivots().minCoeff() > 0)) return false;
-    root_ = factor_->pivots().cwiseSqrt().cwiseInverse();
-    return true;
+    return factor_->invertible() && factor_->pivots().minCoeff() > 0;
   }
   void perform_op(const double* x_in, double* y_out) const {
     const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()) =
-        root_.cwiseProduct(factor_->forward(op_.multiplyM(factor_->backward(root_.cwiseProduct(x)))));
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = factor_->halfInverse(
+        factor_->forward(op_.multiplyM(factor_->backward(factor_->halfInverseTransposed(x)))));
   }
   Eigen::MatrixXd back(const Eigen::MatrixXd& Y) const {
     Eigen::MatrixXd X(Y.rows(), Y.cols());
-    for (Eigen::Index c = 0; c < Y.cols(); ++c) X.col(c) = factor_->backward(root_.cwiseProduct(Y.col(c)));
+    for (Eigen::Index c = 0; c < Y.cols(); ++c)
+      X.col(c) = factor_->backward(factor_->halfInverseTransposed(Eigen::VectorXd(Y.col(c))));
     return X;
   }
   /// The eigenvalues below tau: the negative pivots of K - tau M, or nullopt when a
@@ -98,7 +98,6 @@ class TreeShiftInverted {
  private:
   const TreeOperator& op_;
   std::optional<TreeFactor> factor_;
-  Eigen::VectorXd root_;
 };
 
 /// Dense pencils count through countBelow(K, M, tau); the tree's through its pivots.

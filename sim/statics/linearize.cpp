@@ -85,24 +85,6 @@ class GeometricTerms {
   std::vector<bool> rotation_;
 };
 
-/// What the hinges' rotation springs (sim/model/rotation_spring.hpp) add to the diagonal
-/// k of their angles: the Hessian of their energy less diag(k), zero at an unbent hinge.
-void addRotationSpringCoupling(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
-                               Eigen::MatrixXd& K) {
-  if (model.getRotationSprings().empty()) return;
-  std::vector<int> column(model.getNumCoordinates(), -1);
-  for (std::size_t a = 0; a < dofs.size(); ++a) column[dofs[a]] = static_cast<int>(a);
-  const Eigen::VectorXd q = model.getQ(s);
-  for (const RotationSpring& r : model.getRotationSprings()) {
-    const SimTK::Mat33 H = rotationSpringHessian(SimTK::Vec3(q[r.coords[0]], q[r.coords[1]], q[r.coords[2]]), r.k);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const int a = column[r.coords[i]], b = column[r.coords[j]];
-        if (a >= 0 && b >= 0) K(a, b) += H(i, j) - (i == j ? r.k[i] : 0.0);
-      }
-  }
-}
-
 }  // namespace
 
 Eigen::MatrixXd calcPointForceStiffness(const Model& model, const SimTK::State& s, const std::vector<int>& dofs,
@@ -132,7 +114,7 @@ Eigen::MatrixXd calcStiffnessClosedForm(const Model& model, const SimTK::State& 
   for (const auto& f : extra) terms.addStation(f.body, f.station_B, f.force_W);
   Eigen::MatrixXd K = terms.matrix(dofs);
   for (std::size_t b = 0; b < dofs.size(); ++b) K(b, b) += model.getCoordinates()[dofs[b]].stiffness;
-  addRotationSpringCoupling(model, work, dofs, K);
+  for (const StiffnessEntry& e : rotationSpringCoupling(model, work, dofs)) K(e.row, e.column) += e.value;
   return K;
 }
 

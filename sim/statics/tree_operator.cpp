@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "sim/core/errors.hpp"
+#include "sim/model/rotation_spring.hpp"
 
 namespace mmv {
 namespace {
@@ -40,9 +41,7 @@ Matrix6d forceStiffness(const SimTK::Vec3& p, const SimTK::Vec3& f) {
 
 }  // namespace
 
-bool TreeOperator::appliesTo(const Model& model) {
-  return model.getClosures().empty() && model.hasClosedFormForces() && model.getRotationSprings().empty();
-}
+bool TreeOperator::appliesTo(const Model& model) { return model.getClosures().empty() && model.hasClosedFormForces(); }
 
 TreeOperator::TreeOperator(const Model& model, const SimTK::State& state, const std::vector<int>& dofs) {
   MMV_DEMAND(appliesTo(model));
@@ -63,9 +62,14 @@ TreeOperator::TreeOperator(const Model& model, const SimTK::State& state, const 
   axis_.resize(n);
   parent_.resize(n);
   spring_.resize(n);
+  std::vector<int> node_of(n, -1);
   for (SimTK::MobilizedBodyIndex mbx(1); mbx < matter.getNumBodies(); ++mbx) {
     const SimTK::MobilizedBody& mb = matter.getMobilizedBody(mbx);
     int inboard = last[mb.getParentMobilizedBody().getMobilizedBodyIndex()];
+    if (!own[mbx].empty()) {
+      nodes_.push_back({own[mbx], inboard < 0 ? -1 : node_of[inboard]});
+      for (int a : own[mbx]) node_of[a] = static_cast<int>(nodes_.size()) - 1;
+    }
     for (int a : own[mbx]) {
       const Coordinate& c = coords[dofs[a]];
       const SimTK::SpatialVec h = mb.getHCol(s, SimTK::MobilizerUIndex(c.mobilizer_q));
@@ -104,6 +108,7 @@ TreeOperator::TreeOperator(const Model& model, const SimTK::State& state, const 
     const SimTK::MobilizedBody& mb = matter.getMobilizedBody(load.mobod);
     stiff_[attached[b]] += forceStiffness(mb.findStationLocationInGround(s, load.station_B), load.force_W);
   }
+  coupling_ = rotationSpringCoupling(model, s, dofs);
   mass_composite_ = mass_;
   stiff_composite_ = stiff_;
   for (auto it = order_.rbegin(); it != order_.rend(); ++it)
@@ -111,6 +116,23 @@ TreeOperator::TreeOperator(const Model& model, const SimTK::State& state, const 
       mass_composite_[p] += mass_composite_[*it];
       stiff_composite_[p] += stiff_composite_[*it];
     }
+}
+
+std::vector<StiffnessEntry> rotationSpringCoupling(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
+  std::vector<int> column(model.getNumCoordinates(), -1);
+  for (std::size_t a = 0; a < dofs.size(); ++a) column[dofs[a]] = static_cast<int>(a);
+  const Eigen::VectorXd q = model.getQ(s);
+  std::vector<StiffnessEntry> out;
+  for (const RotationSpring& r : model.getRotationSprings()) {
+    const SimTK::Mat33 H = rotationSpringHessian(SimTK::Vec3(q[r.coords[0]], q[r.coords[1]], q[r.coords[2]]), r.k);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int a = column[r.coords[i]], b = column[r.coords[j]];
+        const double v = H(i, j) - (i == j ? r.k[i] : 0.0);
+        if (a >= 0 && b >= 0 && v != 0) out.push_back({a, b, v});
+      }
+  }
+  return out;
 }
 
 Eigen::VectorXd TreeOperator::apply(const std::vector<Matrix6d>& own, const std::vector<Matrix6d>& composite,
@@ -131,6 +153,8 @@ Eigen::VectorXd TreeOperator::apply(const std::vector<Matrix6d>& own, const std:
   for (int j = 0; j < n; ++j)
     y[j] = axis_[j].dot(force[j] - composite[j] * inboard[j]) + (composite[j] * axis_[j]).dot(inboard[j]) +
            (diag ? (*diag)[j] * x[j] : 0.0);
+  if (diag)  // K: the springs' coupling with them
+    for (const StiffnessEntry& c : coupling_) y[c.row] += c.value * x[c.column];
   return y;
 }
 
@@ -157,6 +181,8 @@ Eigen::VectorXd TreeOperator::diagonalM() const {
 Eigen::VectorXd TreeOperator::diagonalK() const {
   Eigen::VectorXd d(size());
   for (int j = 0; j < size(); ++j) d[j] = spring_[j] + axis_[j].dot(stiff_composite_[j] * axis_[j]);
+  for (const StiffnessEntry& c : coupling_)
+    if (c.row == c.column) d[c.row] += c.value;
   return d;
 }
 
@@ -168,6 +194,8 @@ Eigen::MatrixXd TreeOperator::dense(const std::vector<Matrix6d>& composite, cons
     for (int j = k; j >= 0; j = parent_[j]) A(j, k) = A(k, j) = axis_[j].dot(u);
     if (diag) A(k, k) += (*diag)[k];
   }
+  if (diag)
+    for (const StiffnessEntry& c : coupling_) A(c.row, c.column) += c.value;
   return A;
 }
 Eigen::MatrixXd TreeOperator::denseM() const { return dense(mass_composite_, nullptr); }
@@ -175,58 +203,130 @@ Eigen::MatrixXd TreeOperator::denseK() const { return dense(stiff_composite_, &s
 
 TreeFactor TreeOperator::factor(double sigma) const {
   const int n = size();
+  const std::size_t nn = nodes_.size();
   TreeFactor f(*this);
-  f.u_.resize(n);
-  f.pivot_.resize(n);
-  std::vector<Matrix6d> articulated(n);
-  for (int j = 0; j < n; ++j) articulated[j] = stiff_[j] - sigma * mass_[j];
-  for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
-    const int j = *it;
-    f.u_[j] = articulated[j] * axis_[j];
-    const double d = f.pivot_[j] = spring_[j] + axis_[j].dot(f.u_[j]);
-    if (!(d != 0) || !std::isfinite(d)) {
-      f.invertible_ = false;
-      f.pivot_[j] = 0;
-      continue;  // the pivots stay a count of the inertia up to here; solve is refused
+  f.u_.resize(nn);
+  f.vectors_.resize(nn);
+  f.values_.resize(nn);
+  f.pivot_.setZero(n);
+  std::vector<Matrix6d> articulated(nn, Matrix6d::Zero());
+  for (std::size_t i = 0; i < nn; ++i)
+    for (int j : nodes_[i].dofs) articulated[i] += stiff_[j] - sigma * mass_[j];
+  std::vector<int> slot(n, -1);  // a degree of freedom's place in its node
+  for (const Node& node : nodes_)
+    for (std::size_t k = 0; k < node.dofs.size(); ++k) slot[node.dofs[k]] = static_cast<int>(k);
+  std::vector<TreeFactor::Block> blocks(nn);
+  for (std::size_t i = 0; i < nn; ++i) {
+    const int m = static_cast<int>(nodes_[i].dofs.size());
+    blocks[i] = TreeFactor::Block::Zero(m, m);
+    for (int k = 0; k < m; ++k) blocks[i](k, k) = spring_[nodes_[i].dofs[k]];
+  }
+  std::vector<int> node_of(n, -1);
+  for (std::size_t i = 0; i < nn; ++i)
+    for (int j : nodes_[i].dofs) node_of[j] = static_cast<int>(i);
+  for (const StiffnessEntry& c : coupling_) {
+    MMV_DEMAND(node_of[c.row] == node_of[c.column]);
+    blocks[node_of[c.row]](slot[c.row], slot[c.column]) += c.value;
+  }
+  for (std::size_t r = nn; r-- > 0;) {
+    const Node& node = nodes_[r];
+    const int m = static_cast<int>(node.dofs.size());
+    TreeFactor::Axes S(6, m);
+    for (int k = 0; k < m; ++k) S.col(k) = axis_[node.dofs[k]];
+    f.u_[r] = articulated[r] * S;
+    // D from the upper triangle of S^T IA S: row j inboard of column k (tree_operator.hpp).
+    const TreeFactor::Block B = S.transpose() * f.u_[r];
+    TreeFactor::Block& D = blocks[r];
+    for (int j = 0; j < m; ++j)
+      for (int k = j; k < m; ++k) {
+        D(j, k) += B(j, k);
+        if (k != j) D(k, j) += B(j, k);
+      }
+    const Eigen::SelfAdjointEigenSolver<TreeFactor::Block> es(D);
+    f.vectors_[r] = es.eigenvectors();
+    f.values_[r] = es.eigenvalues();
+    for (int k = 0; k < m; ++k) f.pivot_[node.dofs[k]] = f.values_[r][k];
+    if (!(f.values_[r].cwiseAbs().minCoeff() > 0) || !f.values_[r].allFinite()) {
+      f.invertible_ = false;  // the pivots stay a count of the inertia up to here; solve is refused
+      continue;
     }
-    if (const int p = parent_[j]; p >= 0) articulated[p] += articulated[j] - f.u_[j] * f.u_[j].transpose() / d;
+    if (node.parent >= 0) {
+      const TreeFactor::Block Dinv = f.vectors_[r] * f.values_[r].cwiseInverse().asDiagonal() * f.vectors_[r].transpose();
+      articulated[node.parent] += articulated[r] - f.u_[r] * Dinv * f.u_[r].transpose();
+    }
   }
   return f;
 }
 
 int TreeFactor::negativePivots() const { return static_cast<int>((pivot_.array() < 0).count()); }
 
+TreeFactor::Small TreeFactor::gather(const Eigen::VectorXd& v, std::size_t node) const {
+  const auto& dofs = op_->nodes_[node].dofs;
+  Small s(static_cast<Eigen::Index>(dofs.size()));
+  for (std::size_t k = 0; k < dofs.size(); ++k) s[static_cast<Eigen::Index>(k)] = v[dofs[k]];
+  return s;
+}
+
+void TreeFactor::scatter(const Small& s, std::size_t node, Eigen::VectorXd& v) const {
+  const auto& dofs = op_->nodes_[node].dofs;
+  for (std::size_t k = 0; k < dofs.size(); ++k) v[dofs[k]] = s[static_cast<Eigen::Index>(k)];
+}
+
 Eigen::VectorXd TreeFactor::forward(const Eigen::VectorXd& r) const {
   const TreeOperator& op = *op_;
-  const int n = op.size();
-  MMV_DEMAND(invertible_ && r.size() == n);
-  std::vector<Vector6d> bias(n, Vector6d::Zero());
-  Eigen::VectorXd z(n);
-  for (auto it = op.order_.rbegin(); it != op.order_.rend(); ++it) {
-    const int j = *it;
-    z[j] = r[j] - op.axis_[j].dot(bias[j]);
-    if (const int p = op.parent_[j]; p >= 0) bias[p] += bias[j] + u_[j] * (z[j] / pivot_[j]);
+  const std::size_t nn = op.nodes_.size();
+  MMV_DEMAND(invertible_ && r.size() == op.size());
+  std::vector<Vector6d> bias(nn, Vector6d::Zero());
+  Eigen::VectorXd z(op.size());
+  for (std::size_t i = nn; i-- > 0;) {
+    const auto& dofs = op.nodes_[i].dofs;
+    Small zi = gather(r, i);
+    for (std::size_t k = 0; k < dofs.size(); ++k) zi[static_cast<Eigen::Index>(k)] -= op.axis_[dofs[k]].dot(bias[i]);
+    scatter(zi, i, z);
+    if (const int p = op.nodes_[i].parent; p >= 0)
+      bias[p] += bias[i] + u_[i] * (vectors_[i] * values_[i].cwiseInverse().asDiagonal() * vectors_[i].transpose() * zi);
   }
   return z;
 }
 
 Eigen::VectorXd TreeFactor::backward(const Eigen::VectorXd& w) const {
   const TreeOperator& op = *op_;
-  const int n = op.size();
-  MMV_DEMAND(invertible_ && w.size() == n);
-  std::vector<Vector6d> a(n);
-  Eigen::VectorXd x(n);
-  for (int j : op.order_) {
-    const int p = op.parent_[j];
+  const std::size_t nn = op.nodes_.size();
+  MMV_DEMAND(invertible_ && w.size() == op.size());
+  std::vector<Vector6d> a(nn);
+  Eigen::VectorXd x(op.size());
+  for (std::size_t i = 0; i < nn; ++i) {
+    const int p = op.nodes_[i].parent;
     const Vector6d inboard = p >= 0 ? a[p] : Vector6d::Zero();
-    x[j] = w[j] - u_[j].dot(inboard) / pivot_[j];
-    a[j] = inboard + op.axis_[j] * x[j];
+    const Small xi = gather(w, i) - vectors_[i] * values_[i].cwiseInverse().asDiagonal() * vectors_[i].transpose() *
+                                        (u_[i].transpose() * inboard);
+    scatter(xi, i, x);
+    a[i] = inboard;
+    const auto& dofs = op.nodes_[i].dofs;
+    for (std::size_t k = 0; k < dofs.size(); ++k) a[i] += op.axis_[dofs[k]] * xi[static_cast<Eigen::Index>(k)];
   }
   return x;
 }
 
+Eigen::VectorXd TreeFactor::halfInverse(const Eigen::VectorXd& z) const {
+  Eigen::VectorXd y(z.size());
+  for (std::size_t i = 0; i < vectors_.size(); ++i)
+    scatter(values_[i].cwiseSqrt().cwiseInverse().asDiagonal() * (vectors_[i].transpose() * gather(z, i)), i, y);
+  return y;
+}
+
+Eigen::VectorXd TreeFactor::halfInverseTransposed(const Eigen::VectorXd& y) const {
+  Eigen::VectorXd z(y.size());
+  for (std::size_t i = 0; i < vectors_.size(); ++i)
+    scatter(vectors_[i] * (values_[i].cwiseSqrt().cwiseInverse().asDiagonal() * gather(y, i)), i, z);
+  return z;
+}
+
 Eigen::VectorXd TreeFactor::solve(const Eigen::VectorXd& r) const {
-  return backward(forward(r).cwiseQuotient(pivot_));
+  Eigen::VectorXd z = forward(r);
+  for (std::size_t i = 0; i < vectors_.size(); ++i)
+    scatter(vectors_[i] * values_[i].cwiseInverse().asDiagonal() * (vectors_[i].transpose() * gather(z, i)), i, z);
+  return backward(z);
 }
 
 }  // namespace mmv

@@ -21,14 +21,19 @@
 /// rotations (they move the rotation axis), rotations in their q order (a gimbal's
 /// later axes turn with its earlier ones).
 ///
-/// Factorization. Eliminating the degrees of freedom leaves first is the articulated-
-/// body recursion with general 6 x 6 "inertias": IA_j = c_j + sum over children
-/// (IA_c - U_c U_c^T / d_c), U_j = IA_j S_j, pivot d_j = k_j + S_j^T U_j. The pivots'
-/// signs are the inertia of K - sigma M (Sylvester), so they count the eigenvalues
-/// below sigma (a Sturm check in O(n)).
+/// The spatial hinges' rotation springs add the Hessian of their energy less diag(k)
+/// among the three angles of one gimbal (sim/model/rotation_spring.hpp).
 ///
-/// Applies to open trees whose only forces are gravity, dead loads and the
-/// coordinates' linear springs (no closures, no rotation springs): appliesTo.
+/// Factorization. Eliminating the mobilizers leaves first is the articulated-body
+/// recursion with general 6 x 6 "inertias" and a block per mobilizer i (its m_i <= 3
+/// degrees of freedom, axes S_i 6 x m_i): IA_i = c_i + sum over children
+/// (IA_c - U_c D_c^-1 U_c^T), U_i = IA_i S_i, pivot block D_i = S_i^T IA_i S_i (taken from
+/// its upper triangle, the inboard row first) + springs and their coupling. The pivot
+/// blocks' eigenvalues have the inertia of K - sigma M (Sylvester), so they count the
+/// eigenvalues below sigma (a Sturm check in O(n)).
+///
+/// Applies to open trees whose only forces are gravity, dead loads, the coordinates'
+/// linear springs and the hinges' rotation springs (no closures): appliesTo.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -41,10 +46,20 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 class TreeFactor;
 
+/// An entry of a stiffness matrix over a list of degrees of freedom.
+struct StiffnessEntry {
+  int row = 0, column = 0;
+  double value = 0;
+};
+/// The rotation springs' stiffness beyond diag(k) between the angles of each gimbal
+/// (the Hessian of their energy less its unbent value; sim/model/rotation_spring.hpp) at
+/// state `s`, over `dofs` (held angles left out, zero entries omitted).
+std::vector<StiffnessEntry> rotationSpringCoupling(const Model& model, const SimTK::State& s, const std::vector<int>& dofs);
+
 class TreeOperator {
  public:
-  /// Whether the model's M and K have the structure above: no closures, closed-form
-  /// forces (Model::hasClosedFormForces) and no rotation springs.
+  /// Whether the model's M and K have the structure above: no closures and closed-form
+  /// forces (Model::hasClosedFormForces).
   static bool appliesTo(const Model& model);
 
   /// At state `s` over the coordinates `dofs` (held ones
@@ -74,6 +89,13 @@ class TreeOperator {
                         const Eigen::VectorXd* diag, const Eigen::VectorXd& x) const;
   Eigen::MatrixXd dense(const std::vector<Matrix6d>& composite, const Eigen::VectorXd* diag) const;
 
+  /// A mobilizer's degrees of freedom, inboard first, and its parent mobilizer's index.
+  struct Node {
+    std::vector<int> dofs;
+    int parent = -1;
+  };
+  std::vector<Node> nodes_;        ///< every parent before its children.
+  std::vector<StiffnessEntry> coupling_;  ///< rotationSpringCoupling.
   std::vector<Vector6d> axis_;     ///< S_j.
   std::vector<int> parent_;        ///< index of the parent dof, -1 at ground.
   std::vector<int> order_;         ///< dof indices, every parent before its children.
@@ -85,22 +107,34 @@ class TreeOperator {
 /// The factorization K - sigma M = L D L^T of a TreeOperator (which must outlive it).
 class TreeFactor {
  public:
-  /// D: one pivot per degree of freedom.
+  /// The eigenvalues of the pivot blocks D_i, at their mobilizer's degrees of freedom
+  /// (for a pin, its pivot).
   const Eigen::VectorXd& pivots() const { return pivot_; }
   /// Whether every pivot is non-zero (the matrix is invertible).
   bool invertible() const { return invertible_; }
   int negativePivots() const;
   /// (K - sigma M)^-1 r. Requires invertible().
   Eigen::VectorXd solve(const Eigen::VectorXd& r) const;
-  /// L^-1 r and L^-T w (unit triangular factors).
+  /// L^-1 r and L^-T w (unit block-triangular factors).
   Eigen::VectorXd forward(const Eigen::VectorXd& r) const;
   Eigen::VectorXd backward(const Eigen::VectorXd& w) const;
+  /// With D = R R^T (R_i = V_i Lambda_i^1/2 from each block's eigen decomposition; every
+  /// pivot positive): R^-1 z and R^-T y.
+  Eigen::VectorXd halfInverse(const Eigen::VectorXd& z) const;
+  Eigen::VectorXd halfInverseTransposed(const Eigen::VectorXd& y) const;
 
  private:
   friend class TreeOperator;
   explicit TreeFactor(const TreeOperator& op) : op_(&op) {}
+  using Axes = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3>;
+  using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+  Small gather(const Eigen::VectorXd& v, std::size_t node) const;
+  void scatter(const Small& s, std::size_t node, Eigen::VectorXd& v) const;
   const TreeOperator* op_;
-  std::vector<Vector6d> u_;  ///< U_j = IA_j S_j.
+  std::vector<Axes> u_;          ///< U_i = IA_i S_i.
+  std::vector<Block> vectors_;   ///< V_i: D_i = V_i Lambda_i V_i^T.
+  std::vector<Small> values_;    ///< Lambda_i.
   Eigen::VectorXd pivot_;
   bool invertible_ = true;
 };

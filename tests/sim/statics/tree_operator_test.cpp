@@ -86,15 +86,19 @@ TEST(TreeOperator, EqualsTheDenseMatricesOnAFloatingLinkAndFreePins) {
   expectAgreesWithDense(testing::chainScene(5, 1.0, 1.0, 9.81, 0.4, 0.2), "chain of free pins");
 }
 
-// What the operator cannot represent is refused, never approximated: a closed loop,
-// and the spatial hinges' rotation springs (which couple a gimbal's three angles).
-TEST(TreeOperator, RefusesClosedLoopsAndRotationSprings) {
+// The spatial model: gimbal hinges (three angles per mobilizer, one block pivot each)
+// whose rotation springs couple the angles; and a closed loop, which the operator cannot
+// represent and refuses.
+TEST(TreeOperator, EqualsTheDenseMatricesOnSpatialHingesAndRefusesClosedLoops) {
+  const ArticleScene cantilever =
+      testing::spatialCantilever(testing::explicitSection(1e-4, 1e-8, 2e-8, 1e-8), 2700, 70e9, 26e9, 1.0, 4);
+  ASSERT_FALSE(buildArticleModel(cantilever)->getRotationSprings().empty());
+  expectAgreesWithDense(cantilever, "spatial cantilever");
+  ArticleScene spatial = testing::spatialDefault(4);
+  spatial.gravity = {0, -9.81, 0};
+  expectAgreesWithDense(spatial, "spatial default article");
   const auto closed = buildArticleModel(loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-closed.yaml"));
   EXPECT_FALSE(TreeOperator::appliesTo(*closed));
-  const auto spatial = buildArticleModel(
-      testing::spatialCantilever(testing::explicitSection(1e-4, 1e-8, 2e-8, 1e-8), 2700, 70e9, 26e9, 1.0, 4));
-  EXPECT_FALSE(spatial->getRotationSprings().empty());
-  EXPECT_FALSE(TreeOperator::appliesTo(*spatial));
 }
 
 // A singular shift (an eigenvalue exactly) is reported, and the pivots count the
