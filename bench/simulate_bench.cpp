@@ -7,10 +7,13 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "sim/model/article_builder.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/scene/scene.hpp"
+#include "facility/table_programs.hpp"
 #include "sim/time/simulation.hpp"
 
 namespace {
@@ -147,3 +150,22 @@ BENCHMARK(BM_ModalRightHandSide)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
+
+// A CSV program as every model build meets it (the builder makes the table's program
+// from the scene's text): range(0) = 0, the same 20000-sample text each time (parsed
+// once, then shared); 1, one of five texts in turn, more than the memo keeps, so every
+// call parses.
+void BM_CsvProfileProgram(benchmark::State& st) {
+  std::vector<std::string> texts;
+  for (int k = 0; k < 5; ++k) {
+    std::string text = "time_s,x_m\n";
+    for (int i = 0; i < 20000; ++i) text += std::to_string(1e-3 * i) + "," + std::to_string(1e-4 * std::sin(0.01 * i + k)) + "\n";
+    texts.push_back(text);
+  }
+  std::size_t next = 0;
+  for (auto _ : st) {
+    const std::string& text = texts[st.range(0) ? next++ % texts.size() : 0];
+    benchmark::DoNotOptimize(mmv::facility::csvProfile(text, "bench.csv"));
+  }
+}
+BENCHMARK(BM_CsvProfileProgram)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);

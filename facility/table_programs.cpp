@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -143,18 +145,28 @@ class Random : public TableProgram {
   std::vector<double> w_, phi_;
 };
 
+/// A profile's samples and the slopes of its cubic Hermite pieces, shared by every
+/// program made from the same text (a model is built once per run, pilot and sweep
+/// point; the text is parsed once).
+struct ProfileSamples {
+  std::vector<double> t, x, m;
+  double fmax = 0;
+  ProfileSamples(std::vector<double> times, std::vector<double> values) : t(std::move(times)), x(std::move(values)) {
+    const std::size_t n = t.size();
+    m.assign(n, 0.0);
+    for (std::size_t i = 1; i + 1 < n; ++i) m[i] = (x[i + 1] - x[i - 1]) / (t[i + 1] - t[i - 1]);
+    double shortest = INFINITY;
+    for (std::size_t i = 1; i < n; ++i) shortest = std::min(shortest, t[i] - t[i - 1]);
+    fmax = 0.5 / shortest;  // the samples cannot carry more than their Nyquist frequency
+  }
+};
+
 class Profile : public TableProgram {
  public:
-  Profile(std::vector<double> t, std::vector<double> x) : t_(std::move(t)), x_(std::move(x)) {
-    const std::size_t n = t_.size();
-    m_.assign(n, 0.0);
-    for (std::size_t i = 1; i + 1 < n; ++i) m_[i] = (x_[i + 1] - x_[i - 1]) / (t_[i + 1] - t_[i - 1]);
-    double shortest = INFINITY;
-    for (std::size_t i = 1; i < n; ++i) shortest = std::min(shortest, t_[i] - t_[i - 1]);
-    fmax_ = 0.5 / shortest;  // the samples cannot carry more than their Nyquist frequency
-  }
+  explicit Profile(std::shared_ptr<const ProfileSamples> samples) : s_(std::move(samples)) {}
   // Cubic Hermite on [t_i, t_i+1]; derivative order d.
   double eval(double t, int d) const {
+    const std::vector<double>&t_ = s_->t, &x_ = s_->x, &m_ = s_->m;
     if (t <= t_.front()) return d == 0 ? x_.front() : 0.0;
     if (t >= t_.back()) return d == 0 ? x_.back() : 0.0;
     const std::size_t i = std::upper_bound(t_.begin(), t_.end(), t) - t_.begin() - 1;
@@ -170,13 +182,12 @@ class Profile : public TableProgram {
   double position(double t) const override { return eval(t, 0); }
   double velocity(double t) const override { return eval(t, 1); }
   double acceleration(double t) const override { return eval(t, 2); }
-  double duration() const override { return t_.back(); }
-  double maxFrequencyHz() const override { return fmax_; }
-  std::string describe() const override { return "profile of " + std::to_string(t_.size()) + " samples"; }
+  double duration() const override { return s_->t.back(); }
+  double maxFrequencyHz() const override { return s_->fmax; }
+  std::string describe() const override { return "profile of " + std::to_string(s_->t.size()) + " samples"; }
 
  private:
-  std::vector<double> t_, x_, m_;
-  double fmax_ = 0;
+  std::shared_ptr<const ProfileSamples> s_;
 };
 
 void require(bool ok, const std::string& what) {
@@ -200,7 +211,9 @@ std::unique_ptr<TableProgram> bandLimitedRandom(double rms, double flo, double f
   return std::make_unique<Random>(rms, flo, fhi, T, seed, n);
 }
 
-std::unique_ptr<TableProgram> csvProfile(const std::string& text, const std::string& source) {
+namespace {
+
+std::shared_ptr<const ProfileSamples> parseProfile(const std::string& text, const std::string& source) {
   std::istringstream is(text);
   std::string line;
   int no = 0;
@@ -226,7 +239,26 @@ std::unique_ptr<TableProgram> csvProfile(const std::string& text, const std::str
     x.push_back(xv);
   }
   if (t.size() < 2) fail("a profile needs at least two samples");
-  return std::make_unique<Profile>(std::move(t), std::move(x));
+  return std::make_shared<const ProfileSamples>(std::move(t), std::move(x));
+}
+
+}  // namespace
+
+std::unique_ptr<TableProgram> csvProfile(const std::string& text, const std::string& source) {
+  // The last few texts parsed, by content (a text that fails is never kept, so its error
+  // names the source of each call); threads of a sweep share it.
+  static std::mutex mutex;
+  static std::vector<std::pair<std::string, std::shared_ptr<const ProfileSamples>>> parsed;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& [kept, samples] : parsed)
+      if (kept == text) return std::make_unique<Profile>(samples);
+  }
+  std::shared_ptr<const ProfileSamples> samples = parseProfile(text, source);
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (parsed.size() >= 4) parsed.erase(parsed.begin());
+  parsed.emplace_back(text, samples);
+  return std::make_unique<Profile>(std::move(samples));
 }
 
 ProgramCheck checkProgram(const TableProgram& p, const TableSpec& table, double horizon) {

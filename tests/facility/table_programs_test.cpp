@@ -80,6 +80,28 @@ TEST(TablePrograms, CsvProfile) {
   EXPECT_THROW(csvProfile("t,x\n0,0\n1,1\n", "p.csv"), std::invalid_argument);
 }
 
+// A text is parsed once and its samples shared by every program made from it (each model
+// build makes one): a second program is the same function, one made from another text
+// differs, and a text that fails is never kept: each call's error names its own source.
+TEST(TablePrograms, CsvProfileFromTheSameTextIsTheSameProgram) {
+  const std::string text = "time_s,x_m\n0,0\n0.5,0.02\n1.5,-0.01\n2,0\n";
+  const auto a = csvProfile(text, "a.csv"), b = csvProfile(text, "b.csv");
+  const auto c = csvProfile("time_s,x_m\n0,0\n0.5,0.03\n1.5,-0.01\n2,0\n", "c.csv");
+  for (double t : {0.25, 0.7, 1.2, 1.9}) {
+    EXPECT_EQ(a->position(t), b->position(t));
+    EXPECT_EQ(a->acceleration(t), b->acceleration(t));
+  }
+  EXPECT_NE(a->position(0.5), c->position(0.5));
+  for (const char* source : {"first.csv", "second.csv"}) {
+    try {
+      csvProfile("time_s,x_m\n0,0\n1,abc\n", source);
+      FAIL() << source;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), std::string(source) + ":3: expected two numbers, time_s,x_m (got 1,abc)");
+    }
+  }
+}
+
 TEST(TablePrograms, StrokeAndBandwidthChecks) {
   const ProgramCheck ok = checkProgram(*sineDwell(0.1, 2.0, 5.0));
   EXPECT_TRUE(ok.within_stroke);
