@@ -150,19 +150,22 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, con
 
 int ModalSolution::rigidBodyCount() const { return static_cast<int>(std::count(rigid.begin(), rigid.end(), 1)); }
 
+Eigen::MatrixXd unstrainedCoordinates(const std::vector<bool>& strained) {
+  const Eigen::Index n = static_cast<Eigen::Index>(strained.size());
+  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(n, n - std::count(strained.begin(), strained.end(), true));
+  Eigen::Index c = 0;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!strained[i]) U(i, c++) = 1.0;
+  return U;
+}
+
 Eigen::MatrixXd unstrainedMotions(const Eigen::MatrixXd& Z, const std::vector<bool>& strained) {
   std::vector<Eigen::Index> rows;
   for (std::size_t i = 0; i < strained.size(); ++i)
     if (strained[i]) rows.push_back(static_cast<Eigen::Index>(i));
   const Eigen::Index nz = Z.cols();
   if (rows.empty()) return Z;
-  if (Z.cols() == Z.rows() && Z.isIdentity(0.0)) {  // an open tree: the unstrained coordinates themselves
-    Eigen::MatrixXd U = Eigen::MatrixXd::Zero(Z.rows(), Z.rows() - static_cast<Eigen::Index>(rows.size()));
-    Eigen::Index c = 0;
-    for (std::size_t i = 0; i < strained.size(); ++i)
-      if (!strained[i]) U(static_cast<Eigen::Index>(i), c++) = 1.0;
-    return U;
-  }
+  if (Z.cols() == Z.rows() && Z.isIdentity(0.0)) return unstrainedCoordinates(strained);  // an open tree
   Eigen::MatrixXd H(rows.size(), nz);
   for (std::size_t k = 0; k < rows.size(); ++k) H.row(k) = Z.row(rows[k]);
   // Null space of H by a complete orthogonal decomposition of H^T's column space.

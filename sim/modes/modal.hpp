@@ -84,6 +84,9 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, con
 /// The admissible motions q = Z eta that leave every coordinate with `strained[i]`
 /// unchanged (columns over q, orthonormal): the candidates for rigid-body modes.
 Eigen::MatrixXd unstrainedMotions(const Eigen::MatrixXd& Z, const std::vector<bool>& strained);
+/// The same on an open tree (Z the identity, not formed): the coordinates with
+/// `strained[i]` false, one column each.
+Eigen::MatrixXd unstrainedCoordinates(const std::vector<bool>& strained);
 
 /// Flags the rigid-body modes of `sol` (shapes over q): r = the number of independent
 /// motions in span(U) (U from unstrainedMotions) on which K vanishes, measured by the

@@ -95,18 +95,9 @@ void markRigidBodyModes(ModalSolution& sol, const LinearizedModel& lin, const Ar
   for (const auto& l : scene.article.links) length += l.length;
   const double g = std::hypot(std::hypot(scene.gravity[0], scene.gravity[1]), scene.gravity[2]);
   const double scale = length > 0 ? g / length : 0.0;
-  if (!lin.tree) {
-    std::vector<bool> strained(lin.dofs.size());
-    for (std::size_t i = 0; i < lin.dofs.size(); ++i) strained[i] = springs[i] != 0.0;
-    mmv::markRigidBodyModes(sol, lin.M, lin.K, unstrainedMotions(lin.Z, strained), scale);
-    return;
-  }
-  // An open tree: the unstrained motions are the coordinates without a spring.
-  std::vector<Eigen::Index> free;
-  for (Eigen::Index i = 0; i < springs.size(); ++i)
-    if (springs[i] == 0.0) free.push_back(i);
-  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(springs.size(), static_cast<Eigen::Index>(free.size()));
-  for (std::size_t c = 0; c < free.size(); ++c) U(free[c], static_cast<Eigen::Index>(c)) = 1.0;
+  std::vector<bool> strained(lin.dofs.size());
+  for (std::size_t i = 0; i < lin.dofs.size(); ++i) strained[i] = springs[i] != 0.0;
+  const Eigen::MatrixXd U = lin.tree ? unstrainedCoordinates(strained) : unstrainedMotions(lin.Z, strained);
   markRigidBodyModesOn(sol, U.transpose() * stiffnessTimes(lin, U), U.transpose() * massTimes(lin, U), scale);
 }
 

@@ -109,6 +109,7 @@ TreeOperator::TreeOperator(const Model& model, const SimTK::State& state, const 
     stiff_[attached[b]] += forceStiffness(mb.findStationLocationInGround(s, load.station_B), load.force_W);
   }
   coupling_ = rotationSpringCoupling(model, s, dofs);
+  buildSpringBlocks(node_of);
   mass_composite_ = mass_;
   stiff_composite_ = stiff_;
   for (auto it = order_.rbegin(); it != order_.rend(); ++it)
@@ -116,6 +117,21 @@ TreeOperator::TreeOperator(const Model& model, const SimTK::State& state, const 
       mass_composite_[p] += mass_composite_[*it];
       stiff_composite_[p] += stiff_composite_[*it];
     }
+}
+
+void TreeOperator::buildSpringBlocks(const std::vector<int>& node_of) {
+  std::vector<int> slot(size(), -1);  // a degree of freedom's place in its node
+  for (const Node& node : nodes_)
+    for (std::size_t k = 0; k < node.dofs.size(); ++k) slot[node.dofs[k]] = static_cast<int>(k);
+  for (const Node& node : nodes_) {
+    const int m = static_cast<int>(node.dofs.size());
+    spring_blocks_.push_back(NodeBlock::Zero(m, m));
+    for (int k = 0; k < m; ++k) spring_blocks_.back()(k, k) = spring_[node.dofs[k]];
+  }
+  for (const StiffnessEntry& c : coupling_) {
+    MMV_DEMAND(node_of[c.row] == node_of[c.column]);  // a gimbal's angles share one mobilizer
+    spring_blocks_[node_of[c.row]](slot[c.row], slot[c.column]) += c.value;
+  }
 }
 
 std::vector<StiffnessEntry> rotationSpringCoupling(const Model& model, const SimTK::State& s, const std::vector<int>& dofs) {
@@ -206,43 +222,30 @@ TreeFactor TreeOperator::factor(double sigma) const {
   const std::size_t nn = nodes_.size();
   TreeFactor f(*this);
   f.u_.resize(nn);
+  f.g_.resize(nn);
+  f.inverse_.resize(nn);
   f.vectors_.resize(nn);
   f.values_.resize(nn);
   f.pivot_.setZero(n);
   std::vector<Matrix6d> articulated(nn, Matrix6d::Zero());
   for (std::size_t i = 0; i < nn; ++i)
     for (int j : nodes_[i].dofs) articulated[i] += stiff_[j] - sigma * mass_[j];
-  std::vector<int> slot(n, -1);  // a degree of freedom's place in its node
-  for (const Node& node : nodes_)
-    for (std::size_t k = 0; k < node.dofs.size(); ++k) slot[node.dofs[k]] = static_cast<int>(k);
-  std::vector<TreeFactor::Block> blocks(nn);
-  for (std::size_t i = 0; i < nn; ++i) {
-    const int m = static_cast<int>(nodes_[i].dofs.size());
-    blocks[i] = TreeFactor::Block::Zero(m, m);
-    for (int k = 0; k < m; ++k) blocks[i](k, k) = spring_[nodes_[i].dofs[k]];
-  }
-  std::vector<int> node_of(n, -1);
-  for (std::size_t i = 0; i < nn; ++i)
-    for (int j : nodes_[i].dofs) node_of[j] = static_cast<int>(i);
-  for (const StiffnessEntry& c : coupling_) {
-    MMV_DEMAND(node_of[c.row] == node_of[c.column]);
-    blocks[node_of[c.row]](slot[c.row], slot[c.column]) += c.value;
-  }
+  std::vector<NodeBlock> blocks = spring_blocks_;
   for (std::size_t r = nn; r-- > 0;) {
     const Node& node = nodes_[r];
     const int m = static_cast<int>(node.dofs.size());
-    TreeFactor::Axes S(6, m);
+    NodeAxes S(6, m);
     for (int k = 0; k < m; ++k) S.col(k) = axis_[node.dofs[k]];
     f.u_[r] = articulated[r] * S;
     // D from the upper triangle of S^T IA S: row j inboard of column k (tree_operator.hpp).
-    const TreeFactor::Block B = S.transpose() * f.u_[r];
-    TreeFactor::Block& D = blocks[r];
+    const NodeBlock B = S.transpose() * f.u_[r];
+    NodeBlock& D = blocks[r];
     for (int j = 0; j < m; ++j)
       for (int k = j; k < m; ++k) {
         D(j, k) += B(j, k);
         if (k != j) D(k, j) += B(j, k);
       }
-    const Eigen::SelfAdjointEigenSolver<TreeFactor::Block> es(D);
+    const Eigen::SelfAdjointEigenSolver<NodeBlock> es(D);
     f.vectors_[r] = es.eigenvectors();
     f.values_[r] = es.eigenvalues();
     for (int k = 0; k < m; ++k) f.pivot_[node.dofs[k]] = f.values_[r][k];
@@ -250,24 +253,23 @@ TreeFactor TreeOperator::factor(double sigma) const {
       f.invertible_ = false;  // the pivots stay a count of the inertia up to here; solve is refused
       continue;
     }
-    if (node.parent >= 0) {
-      const TreeFactor::Block Dinv = f.vectors_[r] * f.values_[r].cwiseInverse().asDiagonal() * f.vectors_[r].transpose();
-      articulated[node.parent] += articulated[r] - f.u_[r] * Dinv * f.u_[r].transpose();
-    }
+    f.inverse_[r] = f.vectors_[r] * f.values_[r].cwiseInverse().asDiagonal() * f.vectors_[r].transpose();
+    f.g_[r] = f.u_[r] * f.inverse_[r];
+    if (node.parent >= 0) articulated[node.parent] += articulated[r] - f.g_[r] * f.u_[r].transpose();
   }
   return f;
 }
 
 int TreeFactor::negativePivots() const { return static_cast<int>((pivot_.array() < 0).count()); }
 
-TreeFactor::Small TreeFactor::gather(const Eigen::VectorXd& v, std::size_t node) const {
+NodeVector TreeFactor::gather(const Eigen::VectorXd& v, std::size_t node) const {
   const auto& dofs = op_->nodes_[node].dofs;
-  Small s(static_cast<Eigen::Index>(dofs.size()));
+  NodeVector s(static_cast<Eigen::Index>(dofs.size()));
   for (std::size_t k = 0; k < dofs.size(); ++k) s[static_cast<Eigen::Index>(k)] = v[dofs[k]];
   return s;
 }
 
-void TreeFactor::scatter(const Small& s, std::size_t node, Eigen::VectorXd& v) const {
+void TreeFactor::scatter(const NodeVector& s, std::size_t node, Eigen::VectorXd& v) const {
   const auto& dofs = op_->nodes_[node].dofs;
   for (std::size_t k = 0; k < dofs.size(); ++k) v[dofs[k]] = s[static_cast<Eigen::Index>(k)];
 }
@@ -280,11 +282,11 @@ Eigen::VectorXd TreeFactor::forward(const Eigen::VectorXd& r) const {
   Eigen::VectorXd z(op.size());
   for (std::size_t i = nn; i-- > 0;) {
     const auto& dofs = op.nodes_[i].dofs;
-    Small zi = gather(r, i);
+    NodeVector zi = gather(r, i);
     for (std::size_t k = 0; k < dofs.size(); ++k) zi[static_cast<Eigen::Index>(k)] -= op.axis_[dofs[k]].dot(bias[i]);
     scatter(zi, i, z);
     if (const int p = op.nodes_[i].parent; p >= 0)
-      bias[p] += bias[i] + u_[i] * (vectors_[i] * values_[i].cwiseInverse().asDiagonal() * vectors_[i].transpose() * zi);
+      bias[p] += bias[i] + g_[i] * zi;
   }
   return z;
 }
@@ -298,8 +300,7 @@ Eigen::VectorXd TreeFactor::backward(const Eigen::VectorXd& w) const {
   for (std::size_t i = 0; i < nn; ++i) {
     const int p = op.nodes_[i].parent;
     const Vector6d inboard = p >= 0 ? a[p] : Vector6d::Zero();
-    const Small xi = gather(w, i) - vectors_[i] * values_[i].cwiseInverse().asDiagonal() * vectors_[i].transpose() *
-                                        (u_[i].transpose() * inboard);
+    const NodeVector xi = gather(w, i) - g_[i].transpose() * inboard;  // D^-1 U^T a: D is symmetric
     scatter(xi, i, x);
     a[i] = inboard;
     const auto& dofs = op.nodes_[i].dofs;
@@ -325,7 +326,7 @@ Eigen::VectorXd TreeFactor::halfInverseTransposed(const Eigen::VectorXd& y) cons
 Eigen::VectorXd TreeFactor::solve(const Eigen::VectorXd& r) const {
   Eigen::VectorXd z = forward(r);
   for (std::size_t i = 0; i < vectors_.size(); ++i)
-    scatter(vectors_[i] * values_[i].cwiseInverse().asDiagonal() * (vectors_[i].transpose() * gather(z, i)), i, z);
+    scatter(inverse_[i] * gather(z, i), i, z);
   return backward(z);
 }
 

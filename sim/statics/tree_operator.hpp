@@ -43,6 +43,10 @@ namespace mmv {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
+/// A mobilizer's axes (6 x m), a block over its m <= 3 degrees of freedom, a vector of them.
+using NodeAxes = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3>;
+using NodeBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+using NodeVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
 
 class TreeFactor;
 
@@ -88,6 +92,8 @@ class TreeOperator {
   Eigen::VectorXd apply(const std::vector<Matrix6d>& own, const std::vector<Matrix6d>& composite,
                         const Eigen::VectorXd* diag, const Eigen::VectorXd& x) const;
   Eigen::MatrixXd dense(const std::vector<Matrix6d>& composite, const Eigen::VectorXd* diag) const;
+  /// spring_blocks_ from the springs and coupling_; node_of: each dof's node.
+  void buildSpringBlocks(const std::vector<int>& node_of);
 
   /// A mobilizer's degrees of freedom, inboard first, and its parent mobilizer's index.
   struct Node {
@@ -95,6 +101,7 @@ class TreeOperator {
     int parent = -1;
   };
   std::vector<Node> nodes_;        ///< every parent before its children.
+  std::vector<NodeBlock> spring_blocks_;  ///< per node: the springs and their coupling (K's part without sigma).
   std::vector<StiffnessEntry> coupling_;  ///< rotationSpringCoupling.
   std::vector<Vector6d> axis_;     ///< S_j.
   std::vector<int> parent_;        ///< index of the parent dof, -1 at ground.
@@ -126,15 +133,14 @@ class TreeFactor {
  private:
   friend class TreeOperator;
   explicit TreeFactor(const TreeOperator& op) : op_(&op) {}
-  using Axes = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3>;
-  using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
-  using Small = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
-  Small gather(const Eigen::VectorXd& v, std::size_t node) const;
-  void scatter(const Small& s, std::size_t node, Eigen::VectorXd& v) const;
+  NodeVector gather(const Eigen::VectorXd& v, std::size_t node) const;
+  void scatter(const NodeVector& s, std::size_t node, Eigen::VectorXd& v) const;
   const TreeOperator* op_;
-  std::vector<Axes> u_;          ///< U_i = IA_i S_i.
-  std::vector<Block> vectors_;   ///< V_i: D_i = V_i Lambda_i V_i^T.
-  std::vector<Small> values_;    ///< Lambda_i.
+  std::vector<NodeAxes> u_;         ///< U_i = IA_i S_i.
+  std::vector<NodeAxes> g_;         ///< U_i D_i^-1 (both sweeps use it).
+  std::vector<NodeBlock> inverse_;  ///< D_i^-1.
+  std::vector<NodeBlock> vectors_;  ///< V_i: D_i = V_i Lambda_i V_i^T.
+  std::vector<NodeVector> values_;  ///< Lambda_i.
   Eigen::VectorXd pivot_;
   bool invertible_ = true;
 };

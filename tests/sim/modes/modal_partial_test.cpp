@@ -124,6 +124,23 @@ TEST(ModalPartial, DefaultArticleMatchesTheDenseSolution) {
   EXPECT_LT(checked.orthogonality_error, 1e-10);
 }
 
+// The operators take over at kTreeOperatorMinDofs DOF, not one below: the default
+// article has four flexible links, so 24 segments per link is the bound (96 DOF) and 23
+// (92 DOF) keeps the formed matrices; both give the same modes.
+TEST(ModalPartial, TheOperatorsStartAtTheirStatedSize) {
+  ASSERT_EQ(kTreeOperatorMinDofs, 96);
+  ArticleScene at = loadDefaultScene(), below = at;
+  overrideSegments(at, 24);
+  overrideSegments(below, 23);
+  const SolvedScene a = solveScene(at, {}, 6, true), b = solveScene(below, {}, 6, true);
+  EXPECT_EQ(a.linearized.dofs.size(), 96u);
+  EXPECT_EQ(b.linearized.dofs.size(), 92u);
+  EXPECT_TRUE(a.linearized.tree != nullptr);
+  EXPECT_TRUE(b.linearized.tree == nullptr);
+  const SolvedScene dense = solveScene(at, {}, 6, false);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(a.modes.omega2[i] / dense.modes.omega2[i], 1.0, 1e-10) << i;
+}
+
 // runModes keeps a large open tree's M and K as operators (no n x n matrix): its
 // frequencies, geometric-stiffness shares and checks equal those from the dense
 // matrices of the same equilibrium.

@@ -101,9 +101,9 @@ TEST(TreeOperator, EqualsTheDenseMatricesOnSpatialHingesAndRefusesClosedLoops) {
   EXPECT_FALSE(TreeOperator::appliesTo(*closed));
 }
 
-// A singular shift (an eigenvalue exactly) is reported, and the pivots count the
-// eigenvalues below a shift on a fine mesh where no dense check is cheap: compared with
-// the count from the lowest modes of the dense solver on a mid-size mesh.
+// The pivots count the eigenvalues below a shift (the Sturm check of the partial eigen
+// solution): at shifts between modes 1-2, 5-6 and 17-18 of the default article's
+// equilibrium, and below all, against the dense solver's eigenvalues.
 TEST(TreeOperator, PivotsCountTheModesBelowAShift) {
   ArticleScene s = loadDefaultScene();
   overrideSegments(s, 12);
