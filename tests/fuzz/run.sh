@@ -9,7 +9,7 @@ cd "$(dirname "$0")/../.."
 reader_runs=${1:-1000000}
 modes_runs=${2:-10000}
 mkdir -p build-fuzz/corpus/reader build-fuzz/corpus/modes
-export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
+export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1:intercept_tls_get_addr=0"  # tests/sanitized.sh says why
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 common=(-dict=tests/fuzz/scene.dict -max_len=16384 -rss_limit_mb=4096 -print_final_stats=1)
 build-fuzz/scene_reader_fuzzer "${common[@]}" -runs="$reader_runs" -timeout=10 -artifact_prefix=build-fuzz/crash-reader- \
