@@ -14,18 +14,35 @@
 namespace mmv {
 namespace {
 
-/// The damping matrix over the admissible coordinates (Z^T C Z).
-Eigen::MatrixXd dampingMatrix(const LinearModel& lm, const Model& model, const std::vector<int>& dofs,
-                              const DampingSpec& damping) {
+/// The damping matrix over the admissible coordinates (Z^T C Z) and, for proportional
+/// damping, the modes that diagonalise it with Phi^T C Phi = diag(c) known exactly
+/// (modal: 2 zeta omega; Rayleigh: alpha + beta omega^2), the responses' modal path.
+struct Damping {
+  Eigen::MatrixXd C;
+  ModalSolution modes;   ///< proportional damping only
+  Eigen::VectorXd c;     ///< per mode (proportional damping only)
+};
+
+Damping dampingMatrix(const LinearModel& lm, const Model& model, const std::vector<int>& dofs,
+                      const DampingSpec& damping) {
   const Eigen::MatrixXd& Z = lm.Z;
-  if (damping.kind == DampingSpec::Kind::Rayleigh) return damping.alpha * lm.Mz + damping.beta * lm.Kz;
-  if (damping.kind == DampingSpec::Kind::HingeViscous)
-    return Z.transpose() * hingeDampers(model, dofs, damping.hinge_beta).asDiagonal() * Z;
-  const ModalSolution modes = solveModes(lm.Mz, lm.Kz);
-  const Eigen::Index nz = Z.cols();
-  Eigen::VectorXd c(nz);
-  for (Eigen::Index i = 0; i < nz; ++i) c[i] = 2 * damping.modal_ratio * std::sqrt(std::max(modes.omega2[i], 0.0));
-  return lm.Mz * modes.shapes * c.asDiagonal() * modes.shapes.transpose() * lm.Mz;
+  Damping d;
+  if (damping.kind == DampingSpec::Kind::HingeViscous) {
+    d.C = Z.transpose() * hingeDampers(model, dofs, damping.hinge_beta).asDiagonal() * Z;
+    symmetrize(d.C);
+    return d;
+  }
+  d.modes = solveModes(lm.Mz, lm.Kz);
+  const Eigen::VectorXd& w2 = d.modes.omega2;
+  if (damping.kind == DampingSpec::Kind::Rayleigh) {
+    d.C = damping.alpha * lm.Mz + damping.beta * lm.Kz;
+    d.c = Eigen::VectorXd::Constant(w2.size(), damping.alpha) + damping.beta * w2;
+  } else {
+    d.c = 2 * damping.modal_ratio * w2.cwiseMax(0.0).cwiseSqrt();
+    d.C = lm.Mz * d.modes.shapes * d.c.asDiagonal() * d.modes.shapes.transpose() * lm.Mz;
+  }
+  symmetrize(d.C);
+  return d;
 }
 
 /// Base coupling M_qb e_a = sum_b m_b J_b^T e_a (mass centres), over the DOFs, for
@@ -193,8 +210,8 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   // at 32 segments per link is 1e-12 off): made exact, as M and K are, so the symmetric
   // paths (modal responses, the partial reduction) apply at every size.
   step.emplace("damping matrix");
-  lm.Cz = dampingMatrix(lm, model, dofs, damping);
-  symmetrize(lm.Cz);
+  Damping damped = dampingMatrix(lm, model, dofs, damping);
+  lm.Cz = damped.C;
   step.emplace("inputs and outputs");
   SimTK::State st = lm.solved.equilibrium.state;
   model.getSystem().realize(st, SimTK::Stage::Position);
@@ -213,9 +230,9 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
       armature = true;
     }
   if (armature) {  // the damping of the article as it is tested: with the armature on it
-    lm.Cz = dampingMatrix(lm, model, dofs, damping);
     symmetrize(lm.Mz);
-    symmetrize(lm.Cz);
+    damped = dampingMatrix(lm, model, dofs, damping);
+    lm.Cz = damped.C;
   }
   SecondOrderResponse& so = lm.second_order;
   outputMatrices(scene, model, st, dofs, Z, inputs, outputs, so);
@@ -223,6 +240,7 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   so.C = lm.Cz;
   so.K = lm.Kz;
   so.Bq = lm.Bq;
+  if (damped.c.size()) so.setModalBasis(damped.modes.omega2, std::move(damped.modes.shapes), damped.c);
   step.reset();
   if (prepare_responses) so.prepare();
   const ProgressStage ss("state-space model");

@@ -120,6 +120,12 @@ struct SecondOrderResponse {
   /// Chooses the path once (one symmetric eigen solution, or one Hessenberg
   /// reduction); call after filling.
   void prepare();
+  /// Damping defined over the modes (C = M Phi diag(c) Phi^T M, Phi^T M Phi = I): the
+  /// modal path is exact by construction, so prepare() takes this basis as it is rather
+  /// than solving again and testing Phi^T C Phi for diagonality, a test whose round-off
+  /// grows with the model (6e-9 of the diagonal at 64 segments per link, above the
+  /// 1e-10 it needs) and sent the default scene's frf to the Hessenberg path.
+  void setModalBasis(Eigen::VectorXd omega2, Eigen::MatrixXd shapes, Eigen::VectorXd c);
   bool modal() const { return modal_; }
   bool hessenberg() const { return hessenberg_; }
 
@@ -135,6 +141,7 @@ struct SecondOrderResponse {
   Eigen::MatrixXd C1q_, C1v_, D1_;           ///< outputs on the state (y = C1 [q; v] + D1).
   Eigen::MatrixXd C1qQq_, C1vQq_;            ///< C1_q (D Q)_q, C1_v (D Q)_q (the correction's outputs).
   bool c_diagonal_ = false;
+  Eigen::MatrixXd basis_;  ///< setModalBasis' shapes, until prepare().
 };
 
 /// How many undamped modes a linear model carries (LinearModel::solved.modes): the

@@ -41,13 +41,15 @@ struct ModalDamping {
   /// modes). Fewer than asked when the basis was capped at kMaxDampingBasis: then the
   /// lowest kMaxDampingBasis / 2 only.
   std::vector<double> ratio;
-  std::vector<double> natural_hz;        ///< |lambda| / (2 pi) of the damped mode (the real mode's frequency when undamped).
+  std::vector<double> natural_hz;        ///< |lambda| / (2 pi) of the damped mode (the real mode's frequency when undamped;
+                                         ///< an overdamped mode of modal or Rayleigh damping: its slower real root).
   int basis_modes = 0;                   ///< real modes the damped eigenproblem was solved over.
   bool exact = false;                    ///< basis_modes is every mode of the model.
 };
 
 /// The damping ratio of the first `count` modes of `modes` (shapes over lin.dofs,
-/// mass-normalised) under `damping`, solved over every mode `modes` holds, at most
+/// mass-normalised) under `damping`: modal and Rayleigh damping in closed form (each
+/// mode its own oscillator); hinge dampers solved over every mode `modes` holds, at most
 /// kMaxDampingBasis (see above).
 /// Throws NumericalError if the damped eigen solution fails.
 ModalDamping modalDamping(const Model& model, const LinearizedModel& lin, const ModalSolution& modes,
