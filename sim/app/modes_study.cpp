@@ -8,6 +8,7 @@
 #include "sim/io/hamsas_report.hpp"
 #include "sim/io/mode_fields.hpp"
 #include "sim/io/report.hpp"
+#include "sim/io/vtk_export.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/plan/check.hpp"
 #include "sim/scene/stations.hpp"
@@ -68,6 +69,7 @@ ModesStudy articleModes(ArticleScene scene, const ModesRequest& r) {
   s.json = modesToJson(rep);
   s.text = formatModesText(rep);
   s.csv = modesCsv(rep);
+  s.vtp = modesVtp(rep, scene.article);
   s.report = std::move(rep);
   return s;
 }

@@ -29,6 +29,7 @@ struct ModesStudy {
   nlohmann::ordered_json json;
   std::string text;
   std::string csv;  ///< modes.csv (the article's modeFields, HAM-SAS's hamsasModeFields)
+  std::string vtp;  ///< modes.vtp, the article and its modes for ParaView (sim/io/vtk_export.hpp); none for HAM-SAS
 };
 
 /// The modes of `scene` as `request` asks; every option checked here.

@@ -9,6 +9,7 @@
 #include "sim/io/exciter_report.hpp"
 #include "sim/io/placement_report.hpp"
 #include "sim/io/placement_geometry.hpp"
+#include "sim/io/vtk_export.hpp"
 #include "sim/io/tam_report.hpp"
 #include "sim/modes/sensor_placement.hpp"
 
@@ -94,6 +95,27 @@ void placedInstrument(const ArticleScene& scene, const PlacementRequest& r, Plac
 
 }  // namespace
 
+namespace {
+
+/// The article's test geometry (channels, nodes, the ParaView set) and, on a scene with
+/// a shaker, its attachment and levels on the chosen sensors.
+void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
+  s.channels_csv = placementChannelsCsv(s.study);
+  s.sensors_vtp = placementVtp(s.study);
+  uff::File geometry = placementGeometry(s.study, article.name);
+  uff::stampNow(geometry);
+  s.geometry_uff = uff::write(geometry);
+  if (article.shaker) {
+    s.exciter = runExciter(article, s.study);
+    s.json["exciter"] = exciterJson(*s.exciter);
+    s.text += exciterText(*s.exciter);
+    s.exciter_csv = exciterCsv(*s.exciter);
+    s.exciter_ranking_csv = exciterRankingCsv(*s.exciter);
+  }
+}
+
+}  // namespace
+
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& r) {
   const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
   PlacementOptions o;
@@ -158,19 +180,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   s.json = placementJson(s.study);
   s.text = placementText(s.study);
   if (!s.study.tams.empty()) s.tam_csv = tamCsv(s.study), s.tam_mat = tamMat(s.study);
-  if (const auto* article = std::get_if<ArticleScene>(&scene)) {  // the isolator's test geometry: not yet
-    s.channels_csv = placementChannelsCsv(s.study);
-    uff::File geometry = placementGeometry(s.study, article->name);
-    uff::stampNow(geometry);
-    s.geometry_uff = uff::write(geometry);
-    if (article->shaker) {
-      s.exciter = runExciter(*article, s.study);
-      s.json["exciter"] = exciterJson(*s.exciter);
-      s.text += exciterText(*s.exciter);
-      s.exciter_csv = exciterCsv(*s.exciter);
-      s.exciter_ranking_csv = exciterRankingCsv(*s.exciter);
-    }
-  }
+  if (const auto* article = std::get_if<ArticleScene>(&scene)) addTestGeometry(*article, s);  // the isolator's: not yet
   checkResultFinite(s.json);  // before any file is committed
   return s;
 }

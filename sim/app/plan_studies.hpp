@@ -63,6 +63,7 @@ struct PlacementStudyResult {
   std::string channels_csv, geometry_uff;  ///< the article's test geometry: channels.csv, test_geometry.uff
   std::optional<ExciterStudy> exciter;     ///< the scene's shaker (`shaker:`), on the chosen sensors
   std::string exciter_csv, exciter_ranking_csv;  ///< exciter.csv, exciter_ranking.csv (empty without a shaker)
+  std::string sensors_vtp;  ///< sensors.vtp, the chosen channels for ParaView (sim/io/vtk_export.hpp; the article's)
 };
 
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& request);

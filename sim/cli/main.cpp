@@ -78,7 +78,7 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
       ->check(CLI::Range(1e-12, 0.5));
   m->add_option("--time-budget", modes.time_budget, "Wall seconds --target-error may take choosing the segments")
       ->check(positive());
-  m->add_option("--out", modes.out, "Also write modes.txt, modes.json and modes.csv (one row per mode) here");
+  m->add_option("--out", modes.out, "Also write modes.txt, modes.json, modes.csv (one row per mode) and modes.vtp (the article and its mode shapes for ParaView) here");
   m->add_flag("--force", modes.force, "Replace files of the same names in --out");
   return m;
 }

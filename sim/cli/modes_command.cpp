@@ -63,6 +63,7 @@ int runModesCommand(const ModesArgs& args) {
       out->write("modes.txt", s.text);
       out->write("modes.json", s.json.dump(2) + "\n");
       if (!s.csv.empty()) out->write("modes.csv", s.csv);
+      if (!s.vtp.empty()) out->write("modes.vtp", s.vtp);
       out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(s.json) : emitResult(s.text);

@@ -124,6 +124,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       if (study.tam_mat) writeMat(out->stage("tam.mat"), *study.tam_mat);
       if (!study.channels_csv.empty()) out->write("channels.csv", study.channels_csv);
       if (!study.geometry_uff.empty()) out->write("test_geometry.uff", study.geometry_uff);
+      if (!study.sensors_vtp.empty()) out->write("sensors.vtp", study.sensors_vtp);
       if (!study.exciter_csv.empty()) out->write("exciter.csv", study.exciter_csv);
       if (!study.exciter_ranking_csv.empty()) out->write("exciter_ranking.csv", study.exciter_ranking_csv);
       std::vector<std::string> rows, cols;

@@ -1,0 +1,40 @@
+#pragma once
+/// The article and its modes as a VTK XML PolyData file (.vtp) that ParaView opens:
+/// `modes --out` writes it as modes.vtp (docs/outputs.md).
+///
+///  - Points: every point of the modes report (joints and each link's root, hinges and
+///    tip) at the deflected equilibrium, world frame, metres.
+///  - Lines: one polyline per link through its points, root to tip (cell data
+///    `link_index`, the link's place in the scene's `links:`); Verts: the joints.
+///  - Point data: `deflection_m` (the equilibrium minus the unbent shape), the link's
+///    section depth in the bending plane and width out of it (`section_depth_m`,
+///    `section_width_m`; a round rod's diameter for both; an explicit section's
+///    equal-area circle), and `tube_radius_m` (half the depth: ParaView's Tube filter,
+///    "Vary Radius: By Absolute Scalar"); then one 3-component array per mode, the
+///    translation per unit modal coordinate of the mass-normalised shape (kg^-1/2, as
+///    modes.json's `shape`), named `modeNN_F Hz` with the frequency (`modeNN_rigid`,
+///    `modeNN_unstable`), for Warp By Vector.
+///  - Field data: `frequency_hz` per mode (negative: unstable), `damping_ratio` per mode
+///    when the scene is damped, and `link_names` (the links in `link_index` order).
+/// Doubles are written with 17 significant digits, so the file holds the JSON's values.
+///
+/// `place-sensors --out` on an article writes sensors.vtp: one vertex per channel (the
+/// rows of channels.csv, in order) at its station, world frame; point data `direction`
+/// (the measuring axis, a unit vector: ParaView's Glyph filter draws arrows along it),
+/// `channel`, `node` (the test geometry's), `kept_from_scene` (1: a scene sensor kept in
+/// advance), and each target mode's translation at the station (`modeNN_F Hz`, as the
+/// test geometry's predicted shapes); field data `target_frequency_hz`, `channels`
+/// ("station axis" per point) and `scene`.
+
+#include <string>
+
+#include "article/article_spec.hpp"
+#include "sim/modes/place_sensors.hpp"
+#include "sim/modes/system_modes.hpp"
+
+namespace mmv {
+
+std::string modesVtp(const ModesReport& report, const ArticleSpec& article);
+std::string placementVtp(const PlacementStudy& study);
+
+}  // namespace mmv
