@@ -286,12 +286,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& r) {
       ->check(positive());
   c->add_option("--size", r.size, "WIDTHxHEIGHT in pixels")->capture_default_str();
   c->add_option("--history", r.history, "A `mmvlab simulate --out` directory: draw the run (video, or a still --at a time)");
-  c->add_option("--fps", r.fps, "History videos: frames per second")->check(CLI::Range(1.0, 240.0))->capture_default_str();
+  c->add_option("--fps", r.fps, "History videos and .pvd: frames per second (of video; of run time for a .pvd at --speed 1)")->check(CLI::Range(1.0, 240.0))->capture_default_str();
   c->add_option("--speed", r.speed, "History videos: run seconds per video second (0.25: slow motion)")
       ->check(CLI::Range(1e-3, 1e3))->capture_default_str();
   c->add_option("--at", r.at, "History stills (.png): the run time in s (default: the run's end)")->check(positive(true));
   c->add_option("--traces", r.traces, "History: comma-separated sensors or history.csv columns drawn in an inset")->delimiter(',');
-  c->add_option("--out", r.out, "The file: .png (a frame or a contact sheet), .mp4 or .avi (a mode's cycle or a run)")->required();
+  c->add_option("--out", r.out, "The file: .png (a frame or a contact sheet), .mp4 or .avi (a mode's cycle or a run), or .pvd with --history (the run's frames for ParaView, in FILE_frames/ beside it)")->required();
   c->add_flag("--force", r.force, "Replace the file if it exists");
   return c;
 }
@@ -482,6 +482,7 @@ int main(int argc, char** argv) {
     lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
     sim.given = givenOptions(si);
     tr.given = givenOptions(tp);
+    rd.given = givenOptions(rn);
     if (si->parsed()) return runSimulateCommand(sim);
     if (tp->parsed()) return runTradeCommand(tr);
     if (pl->parsed()) return runPlaceSensorsCommand(ps);

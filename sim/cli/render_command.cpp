@@ -38,8 +38,9 @@ std::vector<int> parseModes(const std::string& text, int available) {
 
 std::string extensionOf(const std::string& path) {
   const std::string ext = fs::path(path).extension().string();
-  if (ext != ".png" && ext != ".mp4" && ext != ".avi")
-    throw UsageError("--out " + path + ": the extension says what to write: .png (a frame or a contact sheet), .mp4 or .avi");
+  if (ext != ".png" && ext != ".mp4" && ext != ".avi" && ext != ".pvd")
+    throw UsageError("--out " + path + ": the extension says what to write: .png (a frame or a contact sheet), .mp4 or .avi, "
+                     "or .pvd (a run's frames for ParaView, with --history)");
   return ext;
 }
 
@@ -106,6 +107,7 @@ int runRenderCommand(const RenderArgs& given) {
       return kOk;
     }
     if (!args.traces.empty() || args.at >= 0) throw UsageError("render: --traces and --at apply to --history RUN_DIR");
+    if (ext == ".pvd") throw UsageError("--out " + args.out + ": a .pvd is a run's frames for ParaView: give --history RUN_DIR (a mode's shape: modes --out writes modes.vtp)");
     const Scene loaded = loadScene(args);
     // The spatial article moves out of its plane, which the front view looks along.
     const auto* article = std::get_if<ArticleScene>(&loaded);

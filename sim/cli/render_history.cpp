@@ -5,21 +5,27 @@
 // (sensor signals, torques, tips) beside it.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <memory>
 
 #include "sim/cli/commands.hpp"
+#include "sim/core/files.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/cli/render_common.hpp"
 #include "sim/core/text.hpp"
 #include "sim/view/article_drawing.hpp"
 #include "sim/view/hamsas_drawing.hpp"
 #include "sim/view/run_pose.hpp"
+#include "sim/io/output_dir.hpp"
 #include "sim/io/run_dir.hpp"
+#include "sim/io/vtk_export.hpp"
 #include "sim/model/article_builder.hpp"
 
 namespace mmv::cli {
 namespace {
+
+namespace fs = std::filesystem;
 
 constexpr int kMaxFrames = 20000;  ///< about 11 minutes at 30 frames/s.
 
@@ -91,6 +97,53 @@ DrawAt isolatorFrames(const RunDir& run, std::shared_ptr<HamsasModes>& h) {
   };
 }
 
+/// FILE.pvd: the run's frames (those a video at --fps and --speed would show) as VTK
+/// files in FILE_frames/ beside it, each the article's points at its time, and the
+/// collection that lists them with their times. The frames are one transaction
+/// (OutputDir); the collection is written last, and a failure there puts the frames back.
+void writeRunPvd(const RenderArgs& args, const RunDir& run) {
+  for (const char* o : {"--traces", "--at", "--size", "--view"})
+    if (args.given.count(o)) throw UsageError(std::string("render --history --out FILE.pvd: ") + o + " draws pictures; a .pvd holds the geometry (drop it)");
+  if (run.isolator) throw UsageError("render --history --out FILE.pvd: the article's runs only (the isolator's bodies are not written as VTK yet)");
+  const fs::path pvd(args.out);
+  std::error_code ec;
+  if (fs::exists(pvd, ec) && !args.force) throw OutputError(args.out + ": exists (use --force to replace it)");
+  std::shared_ptr<Model> model = buildArticleModel(run.scene);
+  checkRunModel(run, *model);
+  SimTK::State state = model->getReferenceState();
+  const double t0 = run.states.rows.front()[0], t1 = run.states.rows.back()[0];
+  const double frames = std::floor((t1 - t0) / args.speed * args.fps) + 1;
+  if (frames > kMaxFrames)
+    throw UsageError(strf("render --history: %.0f frames at %g frames/s and speed %g (limit %d): lower --fps or raise --speed",
+                          frames, args.fps, args.speed, kMaxFrames));
+  const std::string folder = pvd.stem().string() + "_frames";
+  OutputDir out((pvd.has_parent_path() ? pvd.parent_path() / folder : fs::path(folder)).string(), args.force);
+  std::vector<std::string> names;
+  for (const NamedPoint& p : model->getPoints()) names.push_back(p.name);
+  std::vector<double> first;
+  std::vector<std::pair<double, std::string>> listed;
+  const ProgressStage stage("writing the run's frames");
+  for (int k = 0; k < static_cast<int>(frames); ++k) {
+    progressCount(k + 1, static_cast<long>(frames), "frame");
+    const double t = t0 + k * args.speed / args.fps;
+    setRunPose(rowAt(run.states, t), t, *model, state);
+    model->getSystem().realize(state, SimTK::Stage::Position);
+    std::vector<double> xyz;
+    for (const NamedPoint& p : model->getPoints()) {
+      const SimTK::Vec3 x = model->getMatter().getMobilizedBody(p.mobod).findStationLocationInGround(state, p.station_B);
+      xyz.insert(xyz.end(), {x[0], x[1], x[2]});
+    }
+    if (first.empty()) first = xyz;
+    std::vector<double> moved(xyz.size());
+    for (std::size_t i = 0; i < xyz.size(); ++i) moved[i] = xyz[i] - first[i];
+    const std::string name = strf("frame_%05d.vtp", k);
+    out.write(name, articlePoseVtp(names, xyz, moved, run.scene.article, t));
+    listed.emplace_back(t, folder + "/" + name);
+  }
+  out.commit();
+  writeAtomically(args.out, args.force, [&](const std::string& p) { writeFileChecked(p, pvdCollection(listed)); });
+}
+
 }  // namespace
 
 void renderHistory(const RenderArgs& args, const std::string& ext) {
@@ -101,6 +154,7 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
   frame = size;  // with traces, the drawing takes the left 60 % and the traces the rest
   if (!args.traces.empty()) frame.width = std::max(16, size.width * 3 / 5);
   const RunDir run = readRunDir(args.history, args.scene_path);
+  if (ext == ".pvd") return writeRunPvd(args, run);
   std::shared_ptr<Model> model;
   std::shared_ptr<HamsasModes> isolator;
   const DrawAt drawAt = run.isolator ? isolatorFrames(run, isolator) : articleFrames(run, model);

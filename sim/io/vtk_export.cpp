@@ -31,7 +31,7 @@ std::pair<double, double> drawnSection(const Section& s) {
 class PolyData {
  public:
   using Cells = std::vector<std::vector<long>>;
-  explicit PolyData(std::string what) : what_(std::move(what)) {}
+  explicit PolyData(std::string what) : what_(std::move(what)) { MMV_DEMAND(what_.find("--") == std::string::npos); }  // XML comment
 
   void fieldFloats(const std::string& name, const std::vector<double>& v) {
     field_ << "      <Array type=\"Float64\" Name=\"" << name << "\" NumberOfTuples=\"" << v.size() << "\" format=\"ascii\">\n       "
@@ -120,7 +120,7 @@ std::string modeArrayName(int number, double frequency_hz, bool rigid, bool stab
   return n + strf("%.4gHz", frequency_hz);
 }
 
-/// Each link's points in report order (root, hinges, tip) and the section they carry;
+/// Each link's points in the given order (root, hinges, tip) and the section they carry;
 /// the points on no link (the joints).
 struct LinkLines {
   PolyData::Cells lines;
@@ -129,8 +129,8 @@ struct LinkLines {
   PolyData::Cells verts;
 };
 
-LinkLines linkLines(const ModesReport& r, const ArticleSpec& article) {
-  const std::size_t np = r.points.size();
+LinkLines linkLines(const std::vector<std::string>& names, const ArticleSpec& article) {
+  const std::size_t np = names.size();
   LinkLines g;
   g.depth.assign(np, 0.0);
   g.width.assign(np, 0.0);
@@ -138,7 +138,7 @@ LinkLines linkLines(const ModesReport& r, const ArticleSpec& article) {
   for (const LinkSpec& l : article.links) {
     std::vector<long> line;
     for (std::size_t i = 0; i < np; ++i)
-      if (r.points[i].name.rfind(l.name + ".", 0) == 0) line.push_back(static_cast<long>(i));
+      if (names[i].rfind(l.name + ".", 0) == 0) line.push_back(static_cast<long>(i));
     if (line.size() < 2) continue;
     const Section* s = article.findSection(l.section);
     MMV_DEMAND(s != nullptr);
@@ -152,13 +152,30 @@ LinkLines linkLines(const ModesReport& r, const ArticleSpec& article) {
   return g;
 }
 
+/// The links over points already set: the sections' arrays, the joints as verts, a
+/// polyline per link, `link_index` per cell and `link_names`.
+void addLinks(PolyData& vtp, LinkLines g) {
+  vtp.fieldStrings("link_names", g.names);
+  vtp.pointFloats("section_depth_m", 1, g.depth);
+  vtp.pointFloats("section_width_m", 1, g.width);
+  std::vector<double> radius(g.depth);
+  for (double& x : radius) x /= 2;
+  vtp.pointFloats("tube_radius_m", 1, radius);
+  std::vector<long> link_index(g.verts.size(), -1);
+  for (std::size_t k = 0; k < g.lines.size(); ++k) link_index.push_back(static_cast<long>(k));
+  vtp.verts(std::move(g.verts));
+  vtp.lines(std::move(g.lines));
+  vtp.cellInts("link_index", link_index);
+}
+
 }  // namespace
 
 std::string modesVtp(const ModesReport& r, const ArticleSpec& article) {
   const std::size_t np = r.points.size();
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < np; ++i) index[r.points[i].name] = i;
-  LinkLines g = linkLines(r, article);
+  std::vector<std::string> names;
+  for (const PointReport& p : r.points) names.push_back(p.name);
   PolyData vtp("the article at its equilibrium and its modes, modes.vtp");
   std::vector<double> hz, zeta;
   for (const ModeInfo& m : r.modes) {
@@ -167,17 +184,12 @@ std::string modesVtp(const ModesReport& r, const ArticleSpec& article) {
   }
   vtp.fieldFloats("frequency_hz", hz);
   if (r.damped) vtp.fieldFloats("damping_ratio", zeta);
-  vtp.fieldStrings("link_names", g.names);
   vtp.fieldStrings("scene", {r.scene_name, r.scene_source, std::string("mmvlab ") + mmvlabVersion()});
   std::vector<double> xyz, deflection;
   for (const PointReport& p : r.points) xyz.insert(xyz.end(), {p.x, p.y, p.z}), deflection.insert(deflection.end(), {p.dx, p.dy, p.dz});
   vtp.points(xyz);
   vtp.pointFloats("deflection_m", 3, deflection);
-  vtp.pointFloats("section_depth_m", 1, g.depth);
-  vtp.pointFloats("section_width_m", 1, g.width);
-  std::vector<double> radius(g.depth);
-  for (double& x : radius) x /= 2;
-  vtp.pointFloats("tube_radius_m", 1, radius);
+  addLinks(vtp, linkLines(names, article));
   for (const ModeInfo& m : r.modes) {
     std::vector<double> u(3 * np, 0.0);
     for (const PointMotion& p : m.shape) {
@@ -187,12 +199,28 @@ std::string modesVtp(const ModesReport& r, const ArticleSpec& article) {
     }
     vtp.pointFloats(modeArrayName(m.number.number(), m.frequency_hz, m.rigid_body, m.stable), 3, u);
   }
-  std::vector<long> link_index(g.verts.size(), -1);
-  for (std::size_t k = 0; k < g.lines.size(); ++k) link_index.push_back(static_cast<long>(k));
-  vtp.verts(std::move(g.verts));
-  vtp.lines(std::move(g.lines));
-  vtp.cellInts("link_index", link_index);
   return vtp.text("deflection_m", "tube_radius_m");
+}
+
+std::string articlePoseVtp(const std::vector<std::string>& names, const std::vector<double>& xyz,
+                           const std::vector<double>& displacement, const ArticleSpec& article, double time_s) {
+  MMV_DEMAND(xyz.size() == 3 * names.size() && displacement.size() == xyz.size());
+  PolyData vtp("the article at one time of a run, a frame of the run's .pvd collection");
+  vtp.fieldFloats("TimeValue", {time_s});
+  vtp.points(xyz);
+  vtp.pointFloats("displacement_m", 3, displacement);
+  addLinks(vtp, linkLines(names, article));
+  return vtp.text("displacement_m", "tube_radius_m");
+}
+
+std::string pvdCollection(const std::vector<std::pair<double, std::string>>& frames) {
+  std::string s = "<?xml version=\"1.0\"?>\n<!-- mmvlab: a run's frames for ParaView (docs/renders.md) -->\n"
+                  "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
+  for (const auto& [t, file] : frames) {
+    MMV_DEMAND(std::isfinite(t) && file.find_first_of("\"<>&") == std::string::npos);
+    s += strf("    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"%s\"/>\n", t, file.c_str());
+  }
+  return s + "  </Collection>\n</VTKFile>\n";
 }
 
 std::string placementVtp(const PlacementStudy& s) {

@@ -27,6 +27,8 @@
 /// ("station axis" per point) and `scene`.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "article/article_spec.hpp"
 #include "sim/modes/place_sensors.hpp"
@@ -36,5 +38,14 @@ namespace mmv {
 
 std::string modesVtp(const ModesReport& report, const ArticleSpec& article);
 std::string placementVtp(const PlacementStudy& study);
+
+/// A run for ParaView (`render --history RUN --out FILE.pvd`): each frame the article's
+/// points (`names`, xyz in metres, world frame) at `time_s`, linked per link as in
+/// modes.vtp with the same section arrays, point data `displacement_m` (from the run's
+/// first frame) and field data `TimeValue`; the collection lists the frames with their
+/// times (files relative to the .pvd).
+std::string articlePoseVtp(const std::vector<std::string>& names, const std::vector<double>& xyz,
+                           const std::vector<double>& displacement, const ArticleSpec& article, double time_s);
+std::string pvdCollection(const std::vector<std::pair<double, std::string>>& frames);
 
 }  // namespace mmv

@@ -7,11 +7,14 @@ Vector on a mode and Tube with the section radius.
 
     read_vtk.py DIR [DIR ...]    each DIR holds a `modes --out` run (modes.vtp) or a
                                  `place-sensors --out` run (sensors.vtp)
+    read_vtk.py --run RUN.pvd RUN_DIR   `render --history RUN_DIR --out RUN.pvd` against
+                                 the run's history.csv (its link tips at the frames' times)
 
 sensors.vtp against channels.csv and test_geometry.uff's sibling placement.json: one
 point per channel at its station, the measuring axis, the target modes' shapes.
 """
 import csv
+import xml.etree.ElementTree as ET
 import json
 import math
 import sys
@@ -166,6 +169,55 @@ def read(directory):
     return len(js["modes"]), poly.GetNumberOfPoints()
 
 
+def read_run(pvd, run_dir):
+    """The collection's frames in time order, each a PolyData whose link tips are where
+    history.csv has them at that time (frames at sample times), the first frame's
+    displacement zero and each later one's its motion since."""
+    pvd = Path(pvd)
+    history = list(csv.DictReader(open(Path(run_dir) / "history.csv", newline="")))
+    at = {round(float(r["time_s"]), 9): r for r in history}
+    sets = ET.parse(pvd).getroot().find("Collection").findall("DataSet")
+    times = [float(d.get("timestep")) for d in sets]
+    check(len(sets) >= 2 and times == sorted(times), f"{pvd}: {len(sets)} frames, times {times[:4]}...")
+    compared = 0
+    first = None
+    for d, t in zip(sets, times):
+        poly = read_poly(pvd.parent / d.get("file"))
+        where = f"{pvd}: frame at {t} s"
+        check(close(poly.GetFieldData().GetArray("TimeValue").GetValue(0), t), f"{where}: TimeValue")
+        n = poly.GetNumberOfPoints()
+        pts = [poly.GetPoint(i) for i in range(n)]
+        if first is None:
+            first = pts
+        disp = poly.GetPointData().GetArray("displacement_m")
+        for i in range(n):
+            moved = tuple(pts[i][c] - first[i][c] for c in range(3))
+            check(all(abs(disp.GetTuple3(i)[c] - moved[c]) <= 1e-12 for c in range(3)), f"{where}: displacement of point {i}")
+        row = at.get(round(t, 9))
+        if row is None:
+            continue
+        links = strings(poly.GetFieldData(), "link_names")
+        lines = poly.GetLines()
+        lines.InitTraversal()
+        from vtkmodules.vtkCommonCore import vtkIdList
+        ids = vtkIdList()
+        k = 0
+        while lines.GetNextCell(ids):
+            tip = pts[ids.GetId(ids.GetNumberOfIds() - 1)]
+            col = links[k] + "_tip_"
+            if col + "x_m" in row:
+                want = (float(row[col + "x_m"]), float(row[col + "y_m"]))
+                check(all(abs(tip[c] - want[c]) <= 1e-6 for c in range(2)), f"{where}: {links[k]} tip at {tip[:2]}, history.csv {want}")
+                compared += 1
+            k += 1
+    check(compared >= 4, f"{pvd}: only {compared} tips compared with history.csv")
+    return len(sets), compared
+
+
+if len(sys.argv) == 4 and sys.argv[1] == "--run":
+    frames, tips = read_run(sys.argv[2], sys.argv[3])
+    print(f"{sys.argv[2]}: {frames} frames read back by VTK, {tips} link tips equal to history.csv's")
+    sys.argv = sys.argv[:1]
 for directory in sys.argv[1:]:
     modes, npoints = read(directory)
     print(f"{directory}: {modes} modes over {npoints} points read back by VTK")

@@ -16,3 +16,8 @@ run damped scenes/mmv-table.yaml --modes 6
 "$bin" place-sensors scenes/mmv-slew.yaml --set model=spatial --segments 8 --triaxial --count 6 --keep-scene-sensors --out "$tmp/sensors3" >/dev/null 2>"$tmp/sensors3.err" \
   || { cat "$tmp/sensors3.err"; exit 1; }
 /usr/bin/python3 "$here/read_vtk.py" "$tmp/planar" "$tmp/spatial" "$tmp/damped" "$tmp/sensors" "$tmp/sensors3"
+# A run: render --history to a .pvd, its frames against the run's history.csv.
+"$bin" simulate scenes/mmv-slew.yaml --segments 2 --duration 0.2 --sample-rate 250 --out "$tmp/run" >/dev/null 2>"$tmp/run.err" \
+  || { cat "$tmp/run.err"; exit 1; }
+"$bin" render --history "$tmp/run" --fps 50 --out "$tmp/run.pvd" >/dev/null 2>"$tmp/pvd.err" || { cat "$tmp/pvd.err"; exit 1; }
+/usr/bin/python3 "$here/read_vtk.py" --run "$tmp/run.pvd" "$tmp/run"
