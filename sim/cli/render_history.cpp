@@ -118,6 +118,7 @@ void writeRunPvd(const RenderArgs& args, const RunDir& run) {
                           frames, args.fps, args.speed, kMaxFrames));
   const std::string folder = pvd.stem().string() + "_frames";
   OutputDir out((pvd.has_parent_path() ? pvd.parent_path() / folder : fs::path(folder)).string(), args.force);
+  out.reportAsOne("frames (.vtp)");
   std::vector<std::string> names;
   for (const NamedPoint& p : model->getPoints()) names.push_back(p.name);
   std::vector<double> first;

@@ -163,6 +163,8 @@ OutputDir::OutputDir(const std::string& dir, bool force) : force_(force), except
 OutputDir::~OutputDir() {
   const SignalsHeld held;  // the undo (or the drop of the replaced files) runs whole
   if (committed_ && std::uncaught_exceptions() > exceptions_at_start_) undoCommit();
+  else if (!report_as_.empty() && !placed_.empty())
+    std::cerr << "mmvlab: wrote " << placed_.size() << ' ' << report_as_ << " in " << target_.string() << '\n';
   else
     for (const auto& n : placed_) std::cerr << "mmvlab: wrote " << (target_ / n).string() << '\n';
   std::error_code ec;

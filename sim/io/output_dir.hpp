@@ -44,12 +44,16 @@ class OutputDir {
   void commit();
   /// Where the staged files go (DIR/NAME), in the order they were staged.
   std::vector<std::string> targets() const;
+  /// Reports the files as one line, "mmvlab: wrote N WHAT in DIR", instead of a line
+  /// each (a run's hundreds of frames).
+  void reportAsOne(std::string what) { report_as_ = std::move(what); }
 
  private:
   std::filesystem::path target_, staging_;
   std::vector<std::string> names_;
   std::vector<std::string> aside_, placed_;  ///< replaced (kept in staging) and placed by commit()
   bool force_ = false, committed_ = false, created_target_ = false;
+  std::string report_as_;  ///< reportAsOne's WHAT (empty: a line per file)
   int exceptions_at_start_ = 0;  ///< std::uncaught_exceptions() when made: more at the end means a failure
   void undoCommit();
 };

@@ -20,4 +20,7 @@ run damped scenes/mmv-table.yaml --modes 6
 "$bin" simulate scenes/mmv-slew.yaml --segments 2 --duration 0.2 --sample-rate 250 --out "$tmp/run" >/dev/null 2>"$tmp/run.err" \
   || { cat "$tmp/run.err"; exit 1; }
 "$bin" render --history "$tmp/run" --fps 50 --out "$tmp/run.pvd" >/dev/null 2>"$tmp/pvd.err" || { cat "$tmp/pvd.err"; exit 1; }
+# 0.2 s at 50 frames/s: 11 frames, reported as one line, then the collection.
+[[ "$(cat "$tmp/pvd.err")" == "mmvlab: wrote 11 frames (.vtp) in $tmp/run_frames"$'\n'"mmvlab: wrote $tmp/run.pvd" ]] \
+  || { echo "render .pvd: expected one line for the 11 frames, then the .pvd; got:"; cat "$tmp/pvd.err"; exit 1; }
 /usr/bin/python3 "$here/read_vtk.py" --run "$tmp/run.pvd" "$tmp/run"
