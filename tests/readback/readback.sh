@@ -5,13 +5,7 @@
 # Octave's ss() by tests/sim/io/mat_file_test.cpp, the UFF files read back by
 # tests/sim/io/uff_test.cpp.) The outputs come from the commands a review uses, run
 # small. ctest runs it; by hand: tests/readback/readback.sh build/mmvlab
-set -euo pipefail
-bin=$(realpath "${1:-build/mmvlab}")
-here=$(cd "$(dirname "$0")" && pwd)
-cd "$here/../.."
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-run() { local name=$1; shift; "$bin" "$@" --out "$tmp/$name" >/dev/null 2>"$tmp/$name.err" || { cat "$tmp/$name.err"; exit 1; }; }
+source "$(dirname "$0")/prelude.sh"
 run modes modes
 run converge converge --max-segments 4
 run compare compare
