@@ -20,6 +20,7 @@ test_pkgs=(
   octave octave-control          # the test suite loads our .mat files into Octave's ss()
   python3 python3-numpy          # ... and reads every CSV back with Python's csv module and numpy
   python3-vtk9                   # ... and modes.vtp with VTK's own reader, as ParaView reads it
+  chromium                       # ... and report.html in a real browser, headless (tests/readback/report_browser.sh)
   python3-pytest                 # the Python module's tests (python/tests)
   python3-pandas python3-matplotlib   # ... and docs/python.md's worked study, run by them
   slurmctld slurmd slurm-client munge   # a single-node Slurm runs the sharded sweep (tests/cluster/slurm_test.sh)

@@ -14,14 +14,18 @@
 
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
+#include "sim/app/plan_studies.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/modes/components.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/linear/state_space.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace mmv {
-class OutputDir;
 class OutputDir;
 struct SimulationResult;
 }  // namespace mmv
@@ -177,6 +181,14 @@ struct RenderArgs : SceneArgs {
   std::vector<std::string> traces;  ///< history: history.csv columns (or sensor names) shown in an inset.
 };
 
+struct ReportArgs : SceneArgs {
+  std::string out;  ///< report.html (self-contained) and report.json here.
+  bool force = false;
+  int modes = 12;         ///< rows of the mode table
+  int sensors = 8;        ///< the sensor plan's count (place-sensors --count)
+  std::string band = "0.1:50";  ///< Hz: check's band; the sensor plan's target modes are those in it
+};
+
 struct CheckArgs : SceneArgs {
   bool json = false;
   double margin = 20;      ///< %: a margin below it is a warning.
@@ -238,6 +250,19 @@ int runSweepMergeCommand(const SweepMergeArgs& args);
 void writeDesignSweepPlots(const std::string& csv_text, OutputDir& out);
 int runRenderCommand(const RenderArgs& args);
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args);
+int runReportCommand(const ReportArgs& args);
+/// `mmvlab report` and its options; `scene_options` adds the scene's (main.cpp's).
+CLI::App* addReportCommand(CLI::App& app, ReportArgs& r, const std::function<void(CLI::App*, SceneArgs&)>& scene_options);
+
+/// Where a figure named NAME is written: OutputDir::stage for a command's own files,
+/// OutputDir::scratch for the figures a report embeds.
+using FigurePath = std::function<std::string(const std::string& name)>;
+/// place-sensors' figures: automac.png, review_sensors.png, review_modes.png.
+void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app::PlacementStudyResult& study);
+/// frf's Bode plot of every input-output pair, full and reduced: bode_OUT__IN.png.
+void writeBodePlots(const FigurePath& out, const app::LinearStudy& a, bool rad);
+/// "OUT__IN" of a pair's file names (frf_OUT__IN.csv, bode_OUT__IN.png).
+std::string bodeFileBase(const StateSpace& s, Eigen::Index output, Eigen::Index input);
 int runTradeCommand(const TradeArgs& args);
 int runSimulateCommand(const SimulateArgs& args);
 /// simulate --out's figures (sim/cli/simulate_plots.cpp): torques.png (each torquer

@@ -37,23 +37,38 @@ app::LinearRequest linearRequest(const LinearArgs& args) {
 
 namespace {
 
-/// The CSV and Bode plot of every input-output pair, full and reduced, and frf.uff.
-void writeFrfFiles(const LinearArgs& args, const app::LinearStudy& a, OutputDir& out) {
+/// The CSV of every input-output pair, full and reduced, and frf.uff.
+void writeFrfFiles(const app::LinearStudy& a, OutputDir& out) {
+  const StateSpace& s = a.lm.full;
+  std::vector<Eigen::MatrixXcd> hr;
+  for (double x : a.w) hr.push_back(a.red.model.response(x));
+  for (Eigen::Index o = 0; o < s.C.rows(); ++o)
+    for (Eigen::Index i = 0; i < s.B.cols(); ++i)
+      out.write("frf_" + bodeFileBase(s, o, i) + ".csv", frfCsv(s, o, i, a.f, a.hf, hr));
+  out.write("frf.uff", frfUff(a.lm, a.geometry, a.scene, a.f, a.hf));
+}
+
+}  // namespace
+
+std::string bodeFileBase(const StateSpace& s, Eigen::Index output, Eigen::Index input) {
+  return safeFileName(s.output_names[output]) + "__" + safeFileName(s.input_names[input]);
+}
+
+void writeBodePlots(const FigurePath& out, const app::LinearStudy& a, bool rad) {
   const StateSpace& s = a.lm.full;
   const ReducedModel& red = a.red;
   std::vector<Eigen::MatrixXcd> hr;
   for (double x : a.w) hr.push_back(red.model.response(x));
   std::vector<double> markers;  // the kept modes, on the plot's frequency axis
-  for (double fk : red.kept_frequencies_hz) markers.push_back(args.rad ? 2 * M_PI * fk : fk);
+  for (double fk : red.kept_frequencies_hz) markers.push_back(rad ? 2 * M_PI * fk : fk);
   for (Eigen::Index o = 0; o < s.C.rows(); ++o)
     for (Eigen::Index i = 0; i < s.B.cols(); ++i) {
-      const std::string base = safeFileName(s.output_names[o]) + "__" + safeFileName(s.input_names[i]);
       render::BodeTrace full{"full model (" + std::to_string(s.numStates()) + " states)"}, rom{
           "reduced (" + std::to_string(red.model.numStates()) + " states)"};
       rom.dashed = true;
       for (std::size_t k = 0; k < a.f.size(); ++k) {
         const std::complex<double> h = a.hf[k](o, i), b = hr[k](o, i);
-        const double x = args.rad ? a.w[k] : a.f[k];
+        const double x = rad ? a.w[k] : a.f[k];
         full.frequency.push_back(x);
         full.magnitude_db.push_back(20 * std::log10(std::abs(h) + 1e-300));
         full.phase_deg.push_back(std::arg(h) * 180 / M_PI);
@@ -61,20 +76,16 @@ void writeFrfFiles(const LinearArgs& args, const app::LinearStudy& a, OutputDir&
         rom.magnitude_db.push_back(20 * std::log10(std::abs(b) + 1e-300));
         rom.phase_deg.push_back(std::arg(b) * 180 / M_PI);
       }
-      out.write("frf_" + base + ".csv", frfCsv(s, o, i, a.f, a.hf, hr));
       try {
-        figures::bode(out.stage("bode_" + base + ".png"), {full, rom},
+        figures::bode(out("bode_" + bodeFileBase(s, o, i) + ".png"), {full, rom},
                       s.output_names[o] + " / " + s.input_names[i] + " (" + s.output_units[o] + " per " + s.input_units[i] +
                           "): " + a.scene.name,
-                      args.rad ? "frequency (rad/s)" : "frequency (Hz)", markers);
+                      rad ? "frequency (rad/s)" : "frequency (Hz)", markers);
       } catch (const std::runtime_error& e) {
         throw OutputError(e.what());
       }
     }
-  out.write("frf.uff", frfUff(a.lm, a.geometry, a.scene, a.f, a.hf));
 }
-
-}  // namespace
 
 int runFrfCommand(const LinearArgs& args) {
   return guarded([&]() -> int {
@@ -84,7 +95,10 @@ int runFrfCommand(const LinearArgs& args) {
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const app::LinearStudy a = app::runLinearStudy(std::get<ArticleScene>(loaded), request);
-    if (out) writeFrfFiles(args, a, *out);
+    if (out) {
+      writeFrfFiles(a, *out);
+      writeBodePlots([&](const std::string& name) { return out->stage(name); }, a, args.rad);
+    }
     const std::string text = args.json ? "" : a.summaryText();
     const nlohmann::ordered_json json = args.json ? a.frfJson() : nlohmann::ordered_json();
     if (out) {

@@ -451,6 +451,8 @@ int main(int argc, char** argv) {
   UpdateArgs up;
   CLI::App* ud = addUpdateCommand(app, up);
 
+  ReportArgs rp;
+  CLI::App* rpc = addReportCommand(app, rp, addSceneOptions);
   DesignSweepArgs ds;
   SweepMergeArgs sm;
   const auto [dsw, smg] = addDesignSweepCommands(app, ds, sm);
@@ -488,6 +490,7 @@ int main(int argc, char** argv) {
     if (pl->parsed()) return runPlaceSensorsCommand(ps);
     if (rn->parsed()) return mmv::figures::renderCommand(rd);
     if (fr->parsed()) return runFrfCommand(lin);
+    if (rpc->parsed()) return runReportCommand(rp);
     if (ro->parsed()) return runRomCommand(lin);
     return runSceneCommand();
   };

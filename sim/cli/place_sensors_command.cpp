@@ -41,7 +41,7 @@ std::vector<int> parseModeList(const std::string& text) {
 /// The review renders, for either kind of scene: the still drawing (`still`) with the
 /// chosen sensors coloured by their score, and a contact sheet of the target modes
 /// (`mode(m)`) with the sensors on them, seen from preset `view`.
-void writeReviewRenders(OutputDir& out, const PlacementStudy& s, const std::string& scene_name, DrawList d,
+void writeReviewRenders(const FigurePath& out, const PlacementStudy& s, const std::string& scene_name, DrawList d,
                         const std::function<DrawList(ModeNumber)>& mode, const std::string& view) {
   std::vector<Eigen::Vector3d> at;
   std::vector<std::string> names;
@@ -58,7 +58,7 @@ void writeReviewRenders(OutputDir& out, const PlacementStudy& s, const std::stri
   d.title = strf("%s: %zu sensors by %s", scene_name.c_str(), at.size(), s.method.c_str());
   Camera camera;
   presetCamera(view, d.bounds(), camera, d.up);
-  figures::framePng(out.stage("review_sensors.png"), d, camera, {1280, 720, 3});
+  figures::framePng(out("review_sensors.png"), d, camera, {1280, 720, 3});
   std::vector<DrawList> tiles;
   std::vector<Camera> cameras;
   for (const ModeNumber m : s.target_modes) {
@@ -69,10 +69,10 @@ void writeReviewRenders(OutputDir& out, const PlacementStudy& s, const std::stri
     tiles.push_back(std::move(md));
     cameras.push_back(c);
   }
-  figures::contactSheetPng(out.stage("review_modes.png"), tiles, cameras, {480, 320, 2}, std::min<int>(4, tiles.size()));
+  figures::contactSheetPng(out("review_modes.png"), tiles, cameras, {480, 320, 2}, std::min<int>(4, tiles.size()));
 }
 
-void writeArticleReviewRenders(OutputDir& out, const ArticleScene& scene, const PlacementStudy& s) {
+void writeArticleReviewRenders(const FigurePath& out, const ArticleScene& scene, const PlacementStudy& s) {
   const SolvedScene solved = solveScene(scene);
   SimTK::State st = solved.equilibrium.state;
   solved.model->getSystem().realize(st, SimTK::Stage::Position);
@@ -81,7 +81,7 @@ void writeArticleReviewRenders(OutputDir& out, const ArticleScene& scene, const 
                      scene.article.model == ArticleModel::Spatial ? "iso" : "front");  // the front view hides z
 }
 
-void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const HamsasModes& h, const PlacementStudy& s) {
+void writeHamsasReviewRenders(const FigurePath& out, const HamsasScene& scene, const HamsasModes& h, const PlacementStudy& s) {
   auto bare = [](DrawList d) {
     d.labels.clear();  // the scene's own sensors would crowd the chosen ones
     return d;
@@ -91,6 +91,23 @@ void writeHamsasReviewRenders(OutputDir& out, const HamsasScene& scene, const Ha
 }
 
 }  // namespace
+
+void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app::PlacementStudyResult& study) {
+  const PlacementStudy& s = study.study;
+  std::vector<std::string> rows, cols;
+  for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
+    rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j].number(), s.target_frequencies_hz[j]));
+    cols.push_back(strf("%d %.3g Hz", s.target_modes[j].number(), s.target_frequencies_hz[j]));  // two lines under the column
+  }
+  try {
+    figures::heatmap(out("automac.png"), s.result.automac, rows, cols,
+                     strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()), "mode", "mode");
+    if (const auto* article = std::get_if<ArticleScene>(&loaded)) writeArticleReviewRenders(out, *article, s);
+    else writeHamsasReviewRenders(out, std::get<HamsasScene>(loaded), *study.isolator_modes, s);
+  } catch (const std::runtime_error& e) {
+    throw OutputError(e.what());
+  }
+}
 
 int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
   return guarded([&] {
@@ -112,8 +129,6 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.iterate_loaded = args.iterate_loaded;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
-    const auto* article = std::get_if<ArticleScene>(&loaded);
-    const auto* isolator = std::get_if<HamsasScene>(&loaded);
     const app::PlacementStudyResult study = app::runPlacementStudy(loaded, r);
     const PlacementStudy& s = study.study;
     if (out) {
@@ -127,20 +142,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       if (!study.sensors_vtp.empty()) out->write("sensors.vtp", study.sensors_vtp);
       if (!study.exciter_csv.empty()) out->write("exciter.csv", study.exciter_csv);
       if (!study.exciter_ranking_csv.empty()) out->write("exciter_ranking.csv", study.exciter_ranking_csv);
-      std::vector<std::string> rows, cols;
-      for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
-        rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j].number(), s.target_frequencies_hz[j]));
-        cols.push_back(strf("%d %.3g Hz", s.target_modes[j].number(), s.target_frequencies_hz[j]));  // two lines under the column
-      }
-      try {
-        figures::heatmap(out->stage("automac.png"), s.result.automac, rows, cols,
-                                strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()),
-                                "mode", "mode");
-        if (article) writeArticleReviewRenders(*out, *article, s);
-        else writeHamsasReviewRenders(*out, *isolator, *study.isolator_modes, s);
-      } catch (const std::runtime_error& e) {
-        throw OutputError(e.what());
-      }
+      writePlacementFigures([&](const std::string& name) { return out->stage(name); }, loaded, study);
       out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(study.json) : emitResult(study.text);

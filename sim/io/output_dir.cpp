@@ -178,6 +178,13 @@ std::string OutputDir::stage(const std::string& name) {
   return (staging_ / name).string();
 }
 
+std::string OutputDir::scratch(const std::string& name) {
+  const fs::path p = staging_ / (".scratch-" + name);
+  scratch_.push_back(p.string());
+  remember(p, false);
+  return p.string();
+}
+
 void OutputDir::write(const std::string& name, std::string_view bytes) { writeFileChecked(stage(name), bytes); }
 
 void OutputDir::undoCommit() {
@@ -200,6 +207,8 @@ std::vector<std::string> OutputDir::targets() const {
 void OutputDir::commit() {
   MMV_DEMAND(!committed_);
   std::error_code ec;
+  for (const auto& p : scratch_) fs::remove(p, ec);  // never part of the output; the staging must be empty of them
+  scratch_.clear();
   // Every staged file is there in full and on the disk before any is placed (writers of
   // their own, PNG and .mat libraries, may have failed quietly).
   for (const auto& n : names_) syncFileChecked((staging_ / n).string());

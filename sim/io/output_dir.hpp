@@ -37,6 +37,10 @@ class OutputDir {
 
   /// Where to write `name` now (inside the staging directory), for a writer of its own.
   std::string stage(const std::string& name);
+  /// Where to write an intermediate file `name` that is not part of the output (a figure
+  /// a report embeds): in the staging directory, removed with it and by the signal
+  /// cleanup, never moved into DIR. Removed at commit().
+  std::string scratch(const std::string& name);
   /// Writes `bytes` as `name` into the staging directory, every step checked.
   void write(const std::string& name, std::string_view bytes);
   /// Moves every staged file into the target directory. The files are reported on
@@ -50,7 +54,7 @@ class OutputDir {
 
  private:
   std::filesystem::path target_, staging_;
-  std::vector<std::string> names_;
+  std::vector<std::string> names_, scratch_;
   std::vector<std::string> aside_, placed_;  ///< replaced (kept in staging) and placed by commit()
   bool force_ = false, committed_ = false, created_target_ = false;
   std::string report_as_;  ///< reportAsOne's WHAT (empty: a line per file)

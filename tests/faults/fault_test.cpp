@@ -192,6 +192,13 @@ TEST_F(Faults, CorrelateUpdateAndRenderLeaveOutAsItWas) {
   exercise({"render-video", "render --segments 4 --mode 1 --size 160x120 --out {out}", "out.mp4"}, 6);
 }
 
+// The review page: its figures are drawn into the staging directory's scratch space and
+// inlined, so a failure at any of them (or at report.html, report.json) leaves --out as it
+// was and no figure file behind.
+TEST_F(Faults, ReportLeavesOutAsItWas) {
+  exercise({"report", "report --segments 2 --out {out}", "", "report --segments 2 --modes 4 --out {out}"}, 6);
+}
+
 // A run for ParaView: the frames (an OutputDir of their own, out_frames/) and the .pvd
 // that lists them, written last: a failure at any write, the .pvd's included, leaves both
 // as they were (the frames put back).
@@ -284,6 +291,7 @@ TEST_F(Signals, EveryVerbKilledAnywhereLeavesOutWholeOrAsItWas) {
   killAtMoments({"sweep-config", "sweep-config --segments 4 --grid joint2:0:40:10 --out {out}"});
   killAtMoments({"place-sensors", "place-sensors --segments 8 --out {out}"});
   killAtMoments({"compare", "compare --segments 8 --out {out}"});
+  killAtMoments({"report", "report --segments 4 --out {out}"});
   killAtMoments({"render-video", "render --segments 4 --mode 1 --size 320x240 --out {out}", "out.mp4"});
 }
 

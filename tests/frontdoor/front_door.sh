@@ -17,7 +17,7 @@ grep -qxF "$test && tests/sanitized.sh" "$root/.ci/run" || fail ".ci/run does no
 
 # setup.sh without --test names no test-only package; with --test it adds them.
 plain=$(sed -n '/^build_pkgs=(/,/^)/p' "$root/setup.sh")
-for p in libgtest-dev libbenchmark-dev octave python3-pytest; do
+for p in libgtest-dev libbenchmark-dev octave python3-pytest python3-vtk9 chromium; do
   ! grep -qw -- "$p" <<<"$plain" || fail "setup.sh installs $p without --test"
   sed -n '/^test_pkgs=(/,/^)/p' "$root/setup.sh" | grep -qw -- "$p" || fail "setup.sh --test does not install $p"
 done

@@ -44,6 +44,28 @@ TEST_F(OutputDirTest, NothingAppearsBeforeCommitAndNoDirectoryWithoutIt) {
   EXPECT_TRUE(fs::is_empty(root_));  // no staging directory left either
 }
 
+// A report's figures: written beside the staged files, read back, never moved into DIR
+// nor left behind (commit removes them, so the staging can go after a signal too).
+TEST_F(OutputDirTest, ScratchFilesAreNeitherCommittedNorLeft) {
+  const fs::path target = root_ / "page";
+  std::string scratch;
+  {
+    OutputDir out(target.string(), false);
+    scratch = out.scratch("figure.png");
+    writeFileChecked(scratch, "png bytes");
+    EXPECT_EQ(slurp(scratch), "png bytes");
+    out.write("report.html", "<html>");
+    out.commit();
+    EXPECT_FALSE(fs::exists(scratch));
+    EXPECT_EQ(out.targets(), std::vector<std::string>{(target / "report.html").string()});
+  }
+  EXPECT_FALSE(fs::exists(target / "figure.png"));
+  EXPECT_FALSE(fs::exists(target / ".scratch-figure.png"));
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(target)) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"report.html"});
+}
+
 TEST_F(OutputDirTest, StagesInsideAnExistingDirectory) {
   OutputDir out(root_.string(), false);
   std::ofstream(out.stage("x.csv")) << "1\n";

@@ -1,0 +1,336 @@
+// mmvlab report: the test-readiness review's page. One self-contained HTML file
+// (sim/io/html_page.hpp) with the article and facility renders, check's verdicts, the
+// mode table, the sensor plan, the frequency responses, each part's accuracy statement
+// and the command that reproduces it, and the scene; report.json beside it holds the
+// studies' JSON documents the page was made from.
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <variant>
+
+#include "sim/app/linear_study.hpp"
+#include "sim/app/modes_study.hpp"
+#include "sim/app/plan_studies.hpp"
+#include "sim/cli/commands.hpp"
+#include "sim/cli/figures.hpp"
+#include "sim/core/files.hpp"
+#include "sim/core/progress.hpp"
+#include "sim/core/text.hpp"
+#include "sim/io/html_page.hpp"
+#include "sim/io/output_dir.hpp"
+#include "sim/io/report.hpp"
+#include "sim/io/review_report.hpp"
+#include "sim/view/article_drawing.hpp"
+
+namespace mmv::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// A word of a shell command line, quoted when the shell would split or expand it.
+std::string shellWord(const std::string& w) {
+  if (!w.empty() && w.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./:=,@+") ==
+                        std::string::npos)
+    return w;
+  std::string q = "'";
+  for (const char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// "mmvlab VERB [SCENE] [scene options] EXTRA": the command that reproduces a part.
+std::string commandFor(const ReportArgs& a, const std::string& verb, const std::string& extra) {
+  std::string c = "mmvlab " + verb;
+  if (!a.scene_path.empty()) c += " " + shellWord(a.scene_path);
+  if (a.segments) c += " --segments " + std::to_string(*a.segments);
+  if (a.no_gravity) c += " --no-gravity";
+  for (const auto& s : a.sets) c += " --set " + shellWord(s);
+  return extra.empty() ? c : c + " " + extra;
+}
+
+/// The figures the page embeds: each drawn into the output's scratch space, read back
+/// and inlined; `count` of them so far.
+class Embedder {
+ public:
+  explicit Embedder(OutputDir& out) : out_(out) {}
+  /// Draws with `draw(path)` and returns the <figure>.
+  std::string figure(const std::string& name, const std::function<void(const std::string&)>& draw, const std::string& alt,
+                     const std::string& caption) {
+    const std::string path = out_.scratch(name);
+    try {
+      draw(path);
+    } catch (const std::runtime_error& e) {
+      throw OutputError(e.what());
+    }
+    return html::pngFigure(read(path), alt, caption);
+  }
+  /// The figures `write(at)` draws, through `at`, each inlined with `caption(name)`.
+  std::string figures(const std::function<void(const FigurePath&)>& write,
+                      const std::function<std::string(const std::string&)>& caption) {
+    std::vector<std::pair<std::string, std::string>> drawn;
+    write([&](const std::string& name) {
+      drawn.emplace_back(name, out_.scratch(name));
+      return drawn.back().second;
+    });
+    std::string html;
+    for (const auto& [name, path] : drawn) html += html::pngFigure(read(path), name, caption(name));
+    return html;
+  }
+  int count() const { return count_; }
+
+ private:
+  std::string read(const std::string& path) {
+    std::string bytes, why;
+    if (!readInputFile(path, 64L << 20, bytes, why) || bytes.empty())
+      throw OutputError(path + ": the figure was not written: " + (why.empty() ? "empty file" : why));
+    static const std::string kPngEnd("IEND\xAE\x42\x60\x82", 8);  // a PNG's last chunk: the file is whole
+    if (bytes.size() < 16 || bytes.compare(0, 4, "\x89PNG") != 0 || bytes.compare(bytes.size() - 8, 8, kPngEnd) != 0)
+      throw OutputError(path + ": the figure is not a whole PNG (" + std::to_string(bytes.size()) + " bytes)");
+    ++count_;
+    return bytes;
+  }
+  OutputDir& out_;
+  int count_ = 0;
+};
+
+html::Section articleSection(const ReportArgs& a, const ArticleScene& scene, const SolvedScene& solved, Embedder& em) {
+  SimTK::State st = solved.equilibrium.state;
+  solved.model->getSystem().realize(st, SimTK::Stage::Position);
+  const bool spatial = scene.article.model == ArticleModel::Spatial;
+  html::Section s{"article", "The article and the facility", "<div class=\"grid\">", {}, {}};
+  for (const std::string view : {spatial ? "side" : "front", "iso"}) {
+    DrawList d = drawArticle(scene, *solved.model, st);
+    d.title += "  (static equilibrium, " + view + " view)";
+    Camera camera;
+    presetCamera(view, d.bounds(), camera, d.up);
+    s.body += em.figure("article_" + view + ".png", [&](const std::string& p) { figures::framePng(p, d, camera, {1280, 720, 3}); },
+                        "the article, " + view + " view",
+                        "The article held at its static equilibrium (" + view + " view), with the facility and the scene's sensors.");
+    s.commands.push_back(commandFor(a, "render", "--view " + view + " --out article_" + view + ".png"));
+  }
+  s.body += "</div>";
+  s.accuracy.push_back("Drawn at the equilibrium the mode table is computed about; deflections to scale.");
+  return s;
+}
+
+std::string modesSheet(const ArticleScene& scene, const SolvedScene& solved, int n, Embedder& em) {
+  std::vector<DrawList> tiles;
+  std::vector<Camera> cameras;
+  const std::string view = scene.article.model == ArticleModel::Spatial ? "iso" : "front";
+  for (int m = 1; m <= n; ++m) {
+    tiles.push_back(ModeFrames(scene, solved, ModeNumber(m), 0.0).frame(1.0, true));
+    Camera c;
+    presetCamera(view, tiles.back().bounds(), c, tiles.back().up);
+    cameras.push_back(c);
+  }
+  return em.figure("modes.png", [&](const std::string& p) { figures::contactSheetPng(p, tiles, cameras, {480, 320, 2}, 3); },
+                   "the first modes", strf("Modes 1 to %d about the equilibrium, each drawn at an amplitude that shows "
+                                           "it (a mode shape has no physical size).", n));
+}
+
+std::string tile(const std::string& cls, const std::string& big, const std::string& small) {
+  return "<div class=\"tile " + cls + "\"><b>" + html::escape(big) + "</b>" + html::escape(small) + "</div>";
+}
+
+/// The frequency responses' accuracy at a glance: the reduced model against its target,
+/// and the mesh's share near the peaks (warned above 10 % of a peak).
+std::string frfTiles(const Json& frf) {
+  const Json& need = frf.value("modes_for_target", Json());
+  const double error = frf.value("max_relative_frf_error", 0.0), target = need.value("target", 0.01);
+  const int kept = static_cast<int>(frf.at("kept_frequencies_hz").size());
+  std::string out = tile(error <= target ? "pass" : "warn", strf("%d-mode reduced model", kept),
+                         strf("%.3g %% of each peak (target %.3g %%", 100 * error, 100 * target) +
+                             (need.value("reached", false) ? strf("; %d modes meet it)", need.value("modes", 0)) : std::string(")")));
+  const Json& mesh = frf.value("mesh_frf_error_estimate", Json());
+  if (mesh.is_number())
+    out += tile(mesh.get<double>() <= 0.1 ? "pass" : "warn", strf("mesh: %.3g %% of a peak", 100 * mesh.get<double>()),
+                "the FRF's mesh error near mode " + frf.at("mesh_frf_error_mode").dump());
+  return out;
+}
+
+/// The verdicts at a glance: a tile per part.
+std::string summaryTiles(const Json& check, const Json& modes, const Json& placement, const Json& frf) {
+  const std::string overall = check.at("overall").get<std::string>();
+  std::string in_band = "modes in band: not checked";
+  for (const auto& l : check.at("lines"))
+    if (l.at("id") == "modes.in_band" && l.at("demand").is_number())
+      in_band = strf("%d ", l.at("demand").get<int>()) + l.at("requirement").get<std::string>();
+  std::map<std::string, int> verdicts;  // by kind, in the order the page lists them
+  for (const auto& l : check.at("lines")) ++verdicts[verdictClass(l.at("verdict").get<std::string>())];
+  std::string counts;
+  for (const char* v : {"fail", "warn", "pass", "advisory", "info", "na"})
+    if (verdicts[v] > 0) counts += (counts.empty() ? "" : ", ") + strf("%d %s", verdicts[v], v == std::string("na") ? "n/a" : v);
+  const Json& first = modes.at("modes").empty() ? Json() : modes.at("modes").front();
+  return "<div class=\"summary\">" +
+         tile(verdictClass(overall), "check: " + overall, counts) +
+         tile("", in_band, "first at " + reportNumber(first.value("frequency_hz", Json())) + " Hz") +
+         tile(placement.at("indistinguishable_mode_pairs").empty() ? "pass" : "warn",
+              strf("%zu sensors", placement.at("chosen").size()), "max off-diagonal AutoMAC " +
+                                                                      reportNumber(placement.at("max_offdiagonal_automac"))) +
+         frfTiles(frf) + "</div>";
+}
+
+/// The scene as the page shows it: the file's text (or the embedded default's), and the
+/// overrides the report was run with.
+std::string sceneText(const ReportArgs& a) {
+  if (a.scene_path.empty()) return defaultSceneYaml();
+  std::string text, why;
+  if (!readInputFile(a.scene_path, 16L << 20, text, why)) throw SceneFileError(a.scene_path + ": " + why);
+  return text;
+}
+
+html::Section sceneSection(const ReportArgs& a) {
+  html::Section s{"scene", "The scene", "", {}, {}};
+  std::string changes;
+  if (a.segments) changes += "--segments " + std::to_string(*a.segments) + "; ";
+  if (a.no_gravity) changes += "--no-gravity; ";
+  for (const auto& set : a.sets) changes += "--set " + set + "; ";
+  s.body = "<p>" + html::escape(a.scene_path.empty() ? std::string("The embedded default scene (mmvlab scene prints it).")
+                                                      : "The scene file " + a.scene_path + ".") +
+           (changes.empty() ? "" : " Run with " + html::escape(changes.substr(0, changes.size() - 2)) +
+                                       " on top of it (every number above includes them).") +
+           "</p>\n<pre>" + html::escape(sceneText(a)) + "</pre>";
+  s.commands.push_back(a.scene_path.empty() ? "mmvlab scene > scene.yaml" : "cat " + shellWord(a.scene_path));
+  return s;
+}
+
+struct Parts {
+  app::CheckStudy check;
+  app::ModesStudy modes;
+  app::PlacementStudyResult placement;
+  std::optional<app::LinearStudy> frf;
+};
+
+Parts runParts(const ReportArgs& a, const Scene& loaded) {
+  Parts p;
+  {
+    const ProgressStage stage("report: check");
+    app::CheckRequest r;
+    std::tie(r.band_min_hz, r.band_max_hz) = parseBand(a.band);
+    p.check = app::runCheckStudy(loaded, r);
+  }
+  {
+    const ProgressStage stage("report: modes");
+    app::ModesRequest r;
+    r.modes = a.modes;
+    r.segments_given = a.segments.has_value();
+    p.modes = app::runModesStudy(loaded, r);
+  }
+  {
+    const ProgressStage stage("report: sensor plan");
+    app::PlacementRequest r;
+    r.below_hz = parseBand(a.band).second;
+    r.below_given = true;
+    r.count = a.sensors;
+    try {
+      p.placement = app::runPlacementStudy(loaded, r);
+    } catch (const UsageError& e) {  // it names place-sensors' options (--count is --sensors here)
+      throw UsageError(std::string("the sensor plan (report --sensors ") + std::to_string(a.sensors) + "): " + e.what());
+    }
+  }
+  const ProgressStage stage("report: frequency responses");
+  app::LinearRequest r;
+  r.segments_given = a.segments.has_value();
+  p.frf.emplace(app::runLinearStudy(std::get<ArticleScene>(loaded), r));
+  return p;
+}
+
+std::vector<html::Section> studySections(const ReportArgs& a, const Scene& loaded, const SolvedScene& solved, const Parts& p,
+                                         const Json& frf, Embedder& em) {
+  const ArticleScene& scene = std::get<ArticleScene>(loaded);
+  std::vector<html::Section> out;
+  out.push_back({"check", "Feasibility: " + p.check.json.at("overall").get<std::string>(), html::table(checkTable(p.check.json)),
+                 checkAccuracy(p.check.json), {commandFor(a, "check", "--band " + a.band + " --out check")}});
+  const int sheet = std::min<int>(6, static_cast<int>(solved.modes.omega2.size()));
+  out.push_back({"modes", "System modes about the held equilibrium",
+                 html::table(modeTable(p.modes.json)) + (sheet > 0 ? modesSheet(scene, solved, sheet, em) : ""),
+                 modesAccuracy(p.modes.json),
+                 {commandFor(a, "modes", strf("--modes %d --out modes", a.modes)),
+                  commandFor(a, "render", strf("--mode 1-%d --out modes.png", sheet))}});
+  const std::string sensors = em.figures([&](const FigurePath& at) { writePlacementFigures(at, loaded, p.placement); },
+                                         [](const std::string& name) {
+                                           if (name == "automac.png") return std::string("AutoMAC of the target modes seen by the chosen sensors (0: told apart, 1: alike).");
+                                           if (name == "review_sensors.png") return std::string("The chosen sensors on the article, coloured by their score.");
+                                           return std::string("The target modes with the chosen sensors.");
+                                         });
+  out.push_back({"sensors", "Sensor plan", html::table(sensorTable(p.placement.json)) + "<div class=\"grid\">" + sensors + "</div>",
+                 placementAccuracy(p.placement.json),
+                 {commandFor(a, "place-sensors", strf("--below-hz %s --count %d --out sensors", shortest(parseBand(a.band).second).c_str(), a.sensors))}});
+  const std::string bodes = em.figures([&](const FigurePath& at) { writeBodePlots(at, *p.frf, false); },
+                                       [](const std::string& name) { return "Bode plot " + name.substr(5, name.size() - 9) + ": full and reduced model, the kept modes dotted."; });
+  out.push_back({"frf", "Frequency responses", html::table(frfTable(frf)) + "<div class=\"grid\">" + bodes + "</div>",
+                 frfAccuracy(frf), {commandFor(a, "frf", "--out frf")}});
+  return out;
+}
+
+}  // namespace
+
+int runReportCommand(const ReportArgs& args) {
+  return guarded([&]() -> int {
+    const Scene loaded = loadScene(args);
+    if (std::holds_alternative<HamsasScene>(loaded))
+      throw UsageError("report: a HAM-SAS scene is not reported yet (the page covers the article: check, sensors, "
+                       "FRFs); run modes, frf and place-sensors on it");
+    OutputDir out(args.out, args.force);  // a bad --out refused before the work
+    const Parts p = runParts(args, loaded);
+    const Json frf = p.frf->frfJson();
+    Embedder em(out);
+    const ProgressStage stage("report: figures and page");
+    const ArticleScene& scene = std::get<ArticleScene>(loaded);
+    html::Page page;
+    page.title = "Test-readiness report: " + scene.name;
+    const Json& model = p.modes.json.at("model");
+    page.subtitle = (args.scene_path.empty() ? std::string("embedded default scene") : args.scene_path) + " \u2014 " +
+                    model.value("kind", "") + strf(" model, %d degrees of freedom, %.4g kg moving", model.value("dofs", 0),
+                                                   model.value("moving_mass_kg", 0.0)) +
+                    " \u2014 mmvlab " + mmvlabVersion();
+    page.summary = summaryTiles(p.check.json, p.modes.json, p.placement.json, frf);
+    const SolvedScene solved = solveScene(scene);
+    page.sections.push_back(articleSection(args, scene, solved, em));
+    for (auto& s : studySections(args, loaded, solved, p, frf, em)) page.sections.push_back(std::move(s));
+    page.sections.push_back(sceneSection(args));
+    page.footer = "Made by " + commandFor(args, "report", "--out " + shellWord(args.out)) +
+                  ". Every table is the JSON of the command under it (report.json holds them); the figures are those "
+                  "commands' figures.";
+    Json doc;
+    doc["mmvlab_version"] = mmvlabVersion();
+    doc["command"] = "report";
+    doc["scene"] = {{"name", scene.name}, {"source", args.scene_path.empty() ? "<default scene>" : args.scene_path}};
+    doc["figures"] = em.count();
+    doc["check"] = p.check.json;
+    doc["modes"] = p.modes.json;
+    doc["placement"] = p.placement.json;
+    doc["frf"] = frf;
+    checkResultFinite(doc);
+    const std::string page_html = html::page(page);
+    out.write("report.html", page_html);
+    out.write("report.json", doc.dump(2) + "\n");
+    out.commit();
+    emitResult(strf("report: %s\n  check: %s\n  %zu modes tabulated, %zu sensors, %zu frequency-response pairs, %d figures\n"
+                    "  page: %s (%.1f MB)\n",
+                    scene.name.c_str(), p.check.json.at("overall").get<std::string>().c_str(), p.modes.json.at("modes").size(),
+                    p.placement.json.at("chosen").size(), frf.at("pairs").size(), em.count(),
+                    (std::filesystem::path(args.out) / "report.html").c_str(), page_html.size() / 1e6));
+    return kOk;
+  });
+}
+
+CLI::App* addReportCommand(CLI::App& app, ReportArgs& r, const std::function<void(CLI::App*, SceneArgs&)>& scene_options) {
+  CLI::App* c = app.add_subcommand("report", "One self-contained HTML page for a test-readiness review: renders, check's "
+                                             "verdicts, modes, the sensor plan, FRFs, accuracy, the scene, the commands");
+  scene_options(c, r);
+  c->add_option("--out", r.out, "Write report.html (self-contained: open it in any browser, print it to PDF) and report.json here")
+      ->required();
+  c->add_flag("--force", r.force, "Replace report.html and report.json in --out");
+  c->add_option("--modes", r.modes, "Rows of the mode table, 1 .. 500")->capture_default_str()->check(CLI::Range(1, 500));
+  c->add_option("--sensors", r.sensors, "Sensors in the plan (place-sensors --count), 1 .. the candidates (stations every 0.1 m, 2 directions)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  c->add_option("--band", r.band, "The modes of interest, F_MIN_HZ:F_MAX_HZ: check's band and the sensor plan's targets")
+      ->capture_default_str();
+  return c;
+}
+
+}  // namespace mmv::cli

@@ -1,0 +1,38 @@
+#pragma once
+/// The tables and accuracy statements of `mmvlab report`, made from the studies' JSON
+/// documents: exactly what `check --json`, `modes --json`, `place-sensors --json` and
+/// `frf --json` print, so the page and those commands cannot disagree.
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/io/html_page.hpp"
+
+namespace mmv {
+
+/// check's lines: group, requirement, demand, capacity, unit, margin, verdict, basis (the
+/// line's note). A row's class is its verdict.
+html::Table checkTable(const nlohmann::ordered_json& check);
+/// The mode table: frequency, its estimated discretization error, damping ratio (when
+/// the scene is damped), where the strain and the kinetic energy are, effective masses.
+html::Table modeTable(const nlohmann::ordered_json& modes);
+/// The chosen sensors: station, link, position along it, axis, world position, score.
+html::Table sensorTable(const nlohmann::ordered_json& placement);
+/// Each input-output pair: peak, its half-power damping, level at 10 Hz, reduced-model error.
+html::Table frfTable(const nlohmann::ordered_json& frf);
+
+/// "How accurate" lines for each part, from the same documents.
+std::vector<std::string> checkAccuracy(const nlohmann::ordered_json& check);
+std::vector<std::string> modesAccuracy(const nlohmann::ordered_json& modes);
+std::vector<std::string> placementAccuracy(const nlohmann::ordered_json& placement);
+std::vector<std::string> frfAccuracy(const nlohmann::ordered_json& frf);
+
+/// A check verdict's CSS class on the page: pass, warn, fail, info, advisory, na.
+std::string verdictClass(const std::string& verdict);
+
+/// A number as the page prints it: 4 significant digits ("-" for null or not finite).
+std::string reportNumber(const nlohmann::ordered_json& v, double scale = 1.0);
+
+}  // namespace mmv

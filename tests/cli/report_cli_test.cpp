@@ -1,0 +1,110 @@
+// mmvlab report: the review page and report.json. Its tables are the studies' JSON, so
+// report.json must equal what check, modes, place-sensors and frf print on their own (the
+// same numbers computed by another process); its options are refused at their bounds'
+// other side; a HAM-SAS scene is refused by name. The page in a real browser:
+// tests/readback/report_browser.sh.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+using Json = nlohmann::json;
+
+/// Every number in `a` within `tol` (relative) of `b`, every other value equal, keys
+/// named in `skip` (wall times) aside. Fails with the path of the first difference.
+void expectSameJson(const Json& a, const Json& b, double tol, const std::string& path = "") {
+  static const std::set<std::string> skip{"seconds", "time_s", "wall_time_s"};
+  if (a.is_number() && b.is_number()) {
+    const double x = a.get<double>(), y = b.get<double>();
+    EXPECT_LE(std::abs(x - y), tol * std::max(1.0, std::abs(y))) << path << ": " << x << " against " << y;
+    return;
+  }
+  ASSERT_EQ(a.type(), b.type()) << path;
+  if (a.is_object()) {
+    ASSERT_EQ(a.size(), b.size()) << path;
+    for (const auto& [k, v] : a.items())
+      if (!skip.count(k)) {
+        ASSERT_TRUE(b.contains(k)) << path << "." << k;
+        expectSameJson(v, b.at(k), tol, path + "." + k);
+      }
+  } else if (a.is_array()) {
+    ASSERT_EQ(a.size(), b.size()) << path;
+    for (std::size_t i = 0; i < a.size(); ++i) expectSameJson(a[i], b[i], tol, path + "[" + std::to_string(i) + "]");
+  } else {
+    EXPECT_EQ(a, b) << path;
+  }
+}
+
+TEST_F(Cli, ReportHoldsWhatEachCommandPrintsOnItsOwn) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "mmv-slew.yaml").string();
+  const fs::path out = dir_ / "review";
+  const Result r = run("report " + scene + " --segments 4 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("check: FAIL"), std::string::npos) << r.out;  // the slew's joint 1 is over its capacity
+  const Json doc = Json::parse(slurp(out / "report.json"));
+  const std::string common = scene + " --segments 4 --json";
+  const Result check = run("check " + common), modes = run("modes " + common),
+               sensors = run("place-sensors " + common + " --below-hz 50 --count 8"), frf = run("frf " + common);
+  for (const Result* c : {&check, &modes, &sensors, &frf}) ASSERT_EQ(c->code, 0) << c->err;
+  // Modes and placement are deterministic to the last bit; the FRF's peaks are refined in
+  // parallel, and check's dynamic lines come from time runs: the same to round-off.
+  expectSameJson(doc.at("check"), Json::parse(check.out), 1e-9, "check");
+  expectSameJson(doc.at("modes"), Json::parse(modes.out), 0, "modes");
+  expectSameJson(doc.at("placement"), Json::parse(sensors.out), 0, "placement");
+  expectSameJson(doc.at("frf"), Json::parse(frf.out), 1e-9, "frf");
+  // The page: one file, every figure inlined, nothing the browser would fetch.
+  const std::string html = slurp(out / "report.html");
+  EXPECT_EQ(doc.at("figures").get<int>(), 2 + 1 + 3 + 16);  // two views, the modes, the plan's three, a Bode plot per pair
+  std::size_t images = 0;
+  for (std::size_t at = html.find("<img "); at != std::string::npos; at = html.find("<img ", at + 1)) {
+    ++images;
+    EXPECT_EQ(html.compare(html.find("src=\"", at), 27, "src=\"data:image/png;base64,"), 0) << html.substr(at, 80);
+  }
+  EXPECT_EQ(images, 22u);
+  for (const char* remote : {"http:", "https:", "src=\"//", "href=\"//", "url("}) EXPECT_EQ(html.find(remote), std::string::npos) << remote;
+  for (const char* id : {"article", "check", "modes", "sensors", "frf", "scene"})
+    EXPECT_NE(html.find("<section id=\"" + std::string(id) + "\">"), std::string::npos) << id;
+  // The scene's own text, escaped, and the commands that reproduce each part.
+  EXPECT_NE(html.find("name: MMV article slewed on the table"), std::string::npos);
+  EXPECT_NE(html.find("mmvlab place-sensors " + scene + " --segments 4 --below-hz 50 --count 8 --out sensors"), std::string::npos);
+}
+
+TEST_F(Cli, ReportRefusesWhatItCannotDo) {
+  const fs::path out = dir_ / "r";
+  Result r = run("report");
+  EXPECT_EQ(r.code, 64);
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+  r = run("report " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --out " + out.string());
+  EXPECT_EQ(r.code, 64);
+  EXPECT_NE(r.err.find("HAM-SAS scene is not reported yet"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // --modes 1 .. 500 (the bound and one past it), --sensors within the candidates.
+  for (const char* bad : {"--modes 0", "--modes 501", "--sensors 0", "--band 50:1"}) {
+    r = run(std::string("report --segments 2 ") + bad + " --out " + out.string());
+    EXPECT_EQ(r.code, 64) << bad << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(out)) << bad;
+  }
+  r = run("report --segments 2 --sensors 1000 --out " + out.string());
+  EXPECT_EQ(r.code, 64);
+  EXPECT_NE(r.err.find("the sensor plan (report --sensors 1000)"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  r = run("report --segments 2 --sensors 1 --out " + out.string());  // fewer than the 8 target modes
+  EXPECT_EQ(r.code, 64);
+  EXPECT_NE(r.err.find("needs at least one measured direction per target mode"), std::string::npos) << r.err;
+  r = run("report --segments 2 --modes 500 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Json doc = Json::parse(slurp(out / "report.json"));
+  EXPECT_EQ(doc.at("modes").at("modes").size(), 8u);  // 2 segments per link have 8 modes: 500 asks for all
+  EXPECT_EQ(doc.at("placement").at("chosen").size(), 8u);
+  // A second run into the same directory refuses to replace the page without --force.
+  r = run("report --segments 2 --out " + out.string());
+  EXPECT_EQ(r.code, 73);
+  EXPECT_NE(r.err.find("exists"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing

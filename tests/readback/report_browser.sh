@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# mmvlab report's page in a real browser: Debian's chromium, headless, loads report.html
+# from the slew scene; the page must make no console message and no request, every
+# figure must decode, the screenshot must not be blank, and it must print to a PDF. The
+# page's tables are compared with what check, modes, place-sensors and frf print on their
+# own. The same checks must catch a page with a remote image and a broken figure.
+# ctest runs it; by hand: tests/readback/report_browser.sh build/mmvlab
+source "$(dirname "$0")/prelude.sh"
+command -v chromium >/dev/null || { echo "chromium is not installed (./setup.sh --test installs it)"; exit 1; }
+scene=scenes/mmv-slew.yaml
+run page report "$scene" --segments 4
+for verb in check modes frf; do "$bin" "$verb" "$scene" --segments 4 --json >"$tmp/$verb.json"; done
+"$bin" place-sensors "$scene" --segments 4 --below-hz 50 --count 8 --json >"$tmp/place-sensors.json"
+/usr/bin/python3 "$here/report_page.py" "$tmp/page" "$tmp"
