@@ -1,4 +1,5 @@
 #include "renders/frame.hpp"
+#include "renders/layout.hpp"
 
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -229,8 +230,8 @@ void setUpScene(const Camera& camera, int w, int h) {
 cv::Scalar bgr(const std::array<float, 4>& c) { return cv::Scalar(255 * c[2], 255 * c[1], 255 * c[0]); }
 
 /// A bar of a round length (1, 2 or 5 x 10^k m) about a fifth of the frame wide, at the
-/// target's distance.
-void drawScaleBar(cv::Mat& img, const Camera& c) {
+/// target's distance. Returns the box it takes (bar and text).
+cv::Rect drawScaleBar(cv::Mat& img, const Camera& c) {
   const double dist = (c.target - c.eye).norm();
   const double metres_per_px = 2 * dist * std::tan(0.5 * c.fov_deg * M_PI / 180) / img.rows;
   const double want = 0.2 * img.cols * metres_per_px;
@@ -245,10 +246,12 @@ void drawScaleBar(cv::Mat& img, const Camera& c) {
   cv::line(img, b + cv::Point(0, -6), b + cv::Point(0, 6), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
   char text[32];
   std::snprintf(text, sizeof text, "%g m (at the target)", len);
-  cv::putText(img, text, cv::Point(20, img.rows - 34), cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  putTextLogged(img, text, cv::Point(20, img.rows - 34), 0.5, cv::Scalar(0, 0, 0));
+  return textBox(text, cv::Point(20, img.rows - 34), 0.5) | cv::Rect(a.x - 2, a.y - 7, px + 4, 14);
 }
 
-void drawColorBar(cv::Mat& img, const ColorBar& bar) {
+/// The colour bar at the frame's right edge, its range and title. Returns the box it takes.
+cv::Rect drawColorBar(cv::Mat& img, const ColorBar& bar) {
   const int x0 = img.cols - 70, y0 = 60, height = std::max(80, img.rows / 2), width = 18;
   cv::Mat ramp(height, 1, CV_8UC1);
   for (int i = 0; i < height; ++i) ramp.at<unsigned char>(i) = static_cast<unsigned char>(255 - 255 * i / (height - 1));
@@ -259,12 +262,13 @@ void drawColorBar(cv::Mat& img, const ColorBar& bar) {
   char top[32], bottom[32];
   std::snprintf(top, sizeof top, "%.3g", bar.max);
   std::snprintf(bottom, sizeof bottom, "%.3g", bar.min);
-  cv::putText(img, top, {x0 - 6, y0 - 6}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-  cv::putText(img, bottom, {x0 - 6, y0 + height + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  putTextLogged(img, top, {x0 - 6, y0 - 6}, 0.45, cv::Scalar(0, 0, 0));
+  putTextLogged(img, bottom, {x0 - 6, y0 + height + 16}, 0.45, cv::Scalar(0, 0, 0));
   int base = 0;
   const cv::Size t = cv::getTextSize(bar.title, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &base);
-  cv::putText(img, bar.title, {std::max(4, img.cols - t.width - 8), y0 + height + 36}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
-              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  const cv::Point title_at(std::max(4, img.cols - t.width - 8), y0 + height + 36);
+  putTextLogged(img, bar.title, title_at, 0.45, cv::Scalar(0, 0, 0));
+  return textBox(top, {x0 - 6, y0 - 6}, 0.45) | textBox(bar.title, title_at, 0.45) | cv::Rect(x0 - 6, y0, img.cols - x0 + 6, height);
 }
 
 /// Where a label's text goes (its baseline's left end): beside its point, or the first
@@ -281,13 +285,16 @@ cv::Point placeLabel(const std::string& text, const cv::Point2d& p, const cv::Si
     return true;
   };
   const cv::Point right(static_cast<int>(p.x) + 6, static_cast<int>(p.y) - 6), left(static_cast<int>(p.x) - 6 - size.width, right.y);
-  cv::Point chosen = right;
+  // Nowhere free: beside its point, moved inside the frame.
+  cv::Point chosen(std::clamp(right.x, 0, std::max(0, frame.width - size.width)),
+                   std::clamp(right.y, size.height + 1, std::max(size.height + 1, frame.height - base)));
   bool found = false;
   for (int k = 0; k < 24 && !found; ++k)
     for (const cv::Point& side : {right, left}) {
       const int shift = (k % 2 == 0 ? 1 : -1) * ((k + 1) / 2) * step;  // 0, -1, +1, -2, ... lines
       const cv::Point o(side.x, side.y + shift);
-      if (o.y - size.height < 0 || o.y > frame.height || !free(boxAt(o))) continue;
+      if (o.y - size.height < 0 || o.y + base > frame.height || o.x < 0 || o.x + size.width > frame.width || !free(boxAt(o)))
+        continue;
       chosen = o;
       found = true;
       break;
@@ -297,13 +304,19 @@ cv::Point placeLabel(const std::string& text, const cv::Point2d& p, const cv::Si
 }
 
 void annotate(cv::Mat& img, const DrawList& list, const Camera& camera) {
-  cv::putText(img, list.title, {14, 26}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-  // The legend first: labels keep clear of it (and of the title).
+  double title_scale = 0.6;  // a long title (a small frame, a contact sheet's tile) is set smaller, never cut
+  for (int base = 0; title_scale > 0.3 && cv::getTextSize(list.title, cv::FONT_HERSHEY_SIMPLEX, title_scale, 1, &base).width > img.cols - 28;)
+    title_scale *= 0.93;
+  putTextLogged(img, list.title, {14, 26}, title_scale, cv::Scalar(0, 0, 0));
+  // The legend, the scale bar and the colour bar first: labels keep clear of them (and of
+  // the title).
   std::vector<cv::Rect> taken{cv::Rect(0, 0, img.cols, 34)};
+  taken.push_back(drawScaleBar(img, camera));
+  if (list.has_color_bar) taken.push_back(drawColorBar(img, list.color_bar));
   int y = 50, widest = 0;
   for (const auto& [name, color] : list.legend) {
     cv::rectangle(img, {14, y - 10}, {26, y + 2}, bgr(color), -1);
-    cv::putText(img, name, {32, y}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    putTextLogged(img, name, {32, y}, 0.45, cv::Scalar(0, 0, 0));
     int base = 0;
     widest = std::max(widest, cv::getTextSize(name, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &base).width);
     y += 18;
@@ -311,15 +324,14 @@ void annotate(cv::Mat& img, const DrawList& list, const Camera& camera) {
   if (!list.legend.empty()) taken.emplace_back(0, 34, 32 + widest + 4, y - 34);
   for (const auto& l : list.labels) {
     cv::Point2d p;
-    if (!projectPoint(camera, img.cols, img.rows, l.at, p)) continue;
+    // A point out of the picture (the lab's ceiling above a close view): its label too.
+    if (!projectPoint(camera, img.cols, img.rows, l.at, p) || p.x < 0 || p.y < 0 || p.x >= img.cols || p.y >= img.rows) continue;
     cv::circle(img, p, 3, bgr(l.rgba), -1, cv::LINE_AA);
     const cv::Point text = placeLabel(l.text, p, img.size(), taken);
     if (std::abs(text.y - 4 - p.y) > 8 || text.x < p.x)  // moved away: a leader line to its point
       cv::line(img, p, cv::Point(text.x < p.x ? text.x + taken.back().width : text.x, text.y - 4), bgr(l.rgba), 1, cv::LINE_AA);
-    cv::putText(img, l.text, text, cv::FONT_HERSHEY_SIMPLEX, 0.42, bgr(l.rgba), 1, cv::LINE_AA);
+    putTextLogged(img, l.text, text, 0.42, bgr(l.rgba));
   }
-  drawScaleBar(img, camera);
-  if (list.has_color_bar) drawColorBar(img, list.color_bar);
 }
 
 }  // namespace
@@ -370,6 +382,7 @@ cv::Mat renderFrame(const DrawList& list, const Camera& camera, const FrameOptio
   cv::resize(rgba, small, cv::Size(o.width, o.height), 0, 0, cv::INTER_AREA);
   cv::cvtColor(small, bgr_small, cv::COLOR_RGBA2BGR);
   cv::flip(bgr_small, out, 0);
+  layoutNewImage(out.cols, out.rows, "frame");
   annotate(out, list, camera);
   return out;
 }
@@ -382,6 +395,7 @@ cv::Mat contactSheet(const std::vector<cv::Mat>& tiles, int columns) {
     const int r = static_cast<int>(i) / columns, c = static_cast<int>(i) % columns;
     tiles[i].copyTo(sheet(cv::Rect(c * tiles[0].cols, r * tiles[0].rows, tiles[0].cols, tiles[0].rows)));
   }
+  layoutArrangeSheet(tiles.size(), columns);
   return sheet;
 }
 
@@ -393,6 +407,7 @@ void writePng(const std::string& path, const cv::Mat& image) {
     throw std::runtime_error(path + ": cannot encode the PNG: " + e.what());
   }
   writeFileChecked(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  layoutFlush(path);
 }
 
 VideoSink::VideoSink(const std::string& path, double fps, cv::Size size) : path_(path), size_(size) {
@@ -439,13 +454,37 @@ void writeVideo(const std::string& path, const std::vector<cv::Mat>& frames, dou
 
 namespace {
 
-/// One strip of the trace panel.
-void drawStrip(cv::Mat& img, const cv::Rect& r, const Trace& tr, double t0, double t1, double now) {
+/// "Nice" ticks over [a, b] (1, 2 or 5 times a power of ten apart, about `target` of them).
+std::vector<double> niceTicks(double a, double b, int target) {
+  std::vector<double> out;
+  if (!(b > a)) return out;
+  const double raw = (b - a) / target, mag = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10 * mag;
+  for (double m : {1.0, 2.0, 5.0})
+    if (raw <= m * mag) { step = m * mag; break; }
+  for (double k = std::ceil(a / step); k * step <= b + 1e-9 * step && out.size() < 50; k += 1) out.push_back(k * step);
+  return out;
+}
+
+/// One strip of the trace panel: the trace within 4 px of its border, the time grid, its
+/// limit (a sensor's range, a torquer's capacity) dashed when it is on the strip's scale,
+/// the name and the value at `now` on top, the strip's extremes at its right edge.
+void drawStrip(cv::Mat& img, const cv::Rect& r, const Trace& tr, double t0, double t1, double now,
+               const std::vector<double>& time_ticks) {
   double lo = *std::min_element(tr.v.begin(), tr.v.end()), hi = *std::max_element(tr.v.begin(), tr.v.end());
+  // A limit within 3x the trace's reach is drawn on its scale; farther, only named.
+  const bool limit_shown = tr.limit > 0 && tr.limit <= 3 * std::max(std::abs(lo), std::abs(hi));
+  if (limit_shown) lo = std::min(lo, -tr.limit), hi = std::max(hi, tr.limit);
   if (!(hi > lo)) lo -= 1, hi += 1;
-  auto y = [&](double v) { return r.y + r.height - 1 - static_cast<int>(std::lround((v - lo) / (hi - lo) * (r.height - 1))); };
+  const int inner = std::max(2, r.height - 9);
+  auto y = [&](double v) { return r.y + 4 + inner - static_cast<int>(std::lround((v - lo) / (hi - lo) * inner)); };
   auto x = [&](double t) { return r.x + static_cast<int>(std::lround((t - t0) / (t1 - t0) * (r.width - 1))); };
   cv::rectangle(img, r, cv::Scalar(200, 200, 200), 1);
+  for (double t : time_ticks) cv::line(img, {x(t), r.y + 1}, {x(t), r.y + r.height - 2}, cv::Scalar(235, 235, 235), 1);
+  if (lo < 0 && hi > 0) cv::line(img, {r.x + 1, y(0)}, {r.x + r.width - 2, y(0)}, cv::Scalar(215, 215, 215), 1);
+  if (limit_shown)
+    for (const double v : {-tr.limit, tr.limit})
+      for (int px = r.x + 2; px < r.x + r.width - 2; px += 9) cv::line(img, {px, y(v)}, {std::min(px + 5, r.x + r.width - 2), y(v)}, cv::Scalar(40, 40, 200), 1);
   // Per pixel column: the least and greatest sample in it, joined to the next column.
   std::vector<double> mn(r.width, 1e300), mx(r.width, -1e300);
   for (std::size_t i = 0; i < tr.t.size(); ++i) {
@@ -466,27 +505,52 @@ void drawStrip(cv::Mat& img, const cv::Rect& r, const Trace& tr, double t0, doub
   cv::line(img, {cx, r.y}, {cx, r.y + r.height - 1}, cv::Scalar(40, 40, 200), 1);
   const auto it = std::upper_bound(tr.t.begin(), tr.t.end(), now);
   const std::size_t k = it == tr.t.begin() ? 0 : static_cast<std::size_t>(it - tr.t.begin()) - 1;
-  char text[160];
-  std::snprintf(text, sizeof text, "%s: %.4g  [%.3g, %.3g]", tr.name.c_str(), tr.v[k], lo, hi);
-  cv::putText(img, text, {r.x + 4, r.y + 13}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  char text[200], top[32], bottom[32];
+  if (tr.limit > 0)
+    std::snprintf(text, sizeof text, "%s: %.4g  (%s +-%.3g%s)", tr.name.c_str(), tr.v[k], tr.limit_label.c_str(), tr.limit,
+                  limit_shown ? "" : ", off scale");
+  else
+    std::snprintf(text, sizeof text, "%s: %.4g", tr.name.c_str(), tr.v[k]);
+  std::snprintf(top, sizeof top, "%.3g", hi);
+  std::snprintf(bottom, sizeof bottom, "%.3g", lo);
+  const int right = r.x + r.width - 4;
+  const cv::Rect top_box = textBox(top, {0, 0}, 0.35), bottom_box = textBox(bottom, {0, 0}, 0.35);
+  // The name is set smaller rather than run into the extremes' labels or past the strip.
+  double scale = 0.4;
+  for (int base = 0; scale > 0.28 && cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &base).width > r.width - 16 - top_box.width;)
+    scale *= 0.93;
+  putTextLogged(img, text, {r.x + 4, r.y + 13}, scale, cv::Scalar(0, 0, 0));
+  putTextLogged(img, top, {right - top_box.width, r.y + 13}, 0.35, cv::Scalar(90, 90, 90));
+  if (r.height >= 34) putTextLogged(img, bottom, {right - bottom_box.width, r.y + r.height - 5}, 0.35, cv::Scalar(90, 90, 90));
 }
 
 }  // namespace
 
 cv::Mat tracePanel(const std::vector<Trace>& traces, double now, cv::Size size) {
   cv::Mat img(size, CV_8UC3, cv::Scalar(255, 255, 255));
+  layoutNewImage(size.width, size.height, "traces");
   double t0 = 1e300, t1 = -1e300;
   for (const auto& tr : traces)
     if (!tr.t.empty()) t0 = std::min(t0, tr.t.front()), t1 = std::max(t1, tr.t.back());
   if (traces.empty() || !(t1 > t0)) return img;
-  const int n = static_cast<int>(traces.size()), top = 40, bottom = 30;
+  const int n = static_cast<int>(traces.size()), top = 40, bottom = 46;
   const int strip = std::max(24, (size.height - top - bottom) / n);
+  const std::vector<double> ticks = niceTicks(t0, t1, std::max(2, (size.width - 16) / 90));
   for (int i = 0; i < n; ++i)
     if (!traces[i].t.empty())
-      drawStrip(img, cv::Rect(8, top + i * strip, size.width - 16, strip - 8), traces[i], t0, t1, now);
+      drawStrip(img, cv::Rect(8, top + i * strip, size.width - 16, strip - 8), traces[i], t0, t1, now, ticks);
+  // The time axis under the strips: its ticks' values, then where the run is.
+  const int axis_y = top + n * strip + 6;
+  for (double t : ticks) {
+    char label[32];
+    std::snprintf(label, sizeof label, "%g", std::abs(t) < 1e-12 ? 0.0 : t);
+    const int x = 8 + static_cast<int>(std::lround((t - t0) / (t1 - t0) * (size.width - 17)));
+    const int w = textBox(label, {0, 0}, 0.38).width;
+    putTextLogged(img, label, {std::clamp(x - w / 2, 2, size.width - w - 2), axis_y}, 0.38, cv::Scalar(0, 0, 0));
+  }
   char text[64];
-  std::snprintf(text, sizeof text, "t = %.3f s of %.3g s", now, t1);
-  cv::putText(img, text, {8, size.height - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  std::snprintf(text, sizeof text, "time (s): t = %.3f s of %.3g s", now, t1);
+  putTextLogged(img, text, {8, std::min(size.height - 8, axis_y + 20)}, 0.42, cv::Scalar(0, 0, 0));
   return img;
 }
 

@@ -82,6 +82,8 @@ void writeVideo(const std::string& path, const std::vector<cv::Mat>& frames, dou
 struct Trace {
   std::string name;  ///< with its unit, e.g. "acc_link2_tip (m/s^2)".
   std::vector<double> t, v;
+  double limit = 0;         ///< > 0: +-limit in the trace's unit (a sensor's range, a torquer's capacity)
+  std::string limit_label;  ///< what the limit is ("range", "capacity")
 };
 
 /// A panel of `size` showing `traces`, one strip each: the whole history in grey (each

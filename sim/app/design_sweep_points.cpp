@@ -1,5 +1,6 @@
 // The rows of `mmvlab sweep` (sim/app/design_sweep_points.hpp).
 #include "sim/app/design_sweep_points.hpp"
+#include "sim/scene/key_units.hpp"
 #include "sim/core/progress.hpp"
 
 #include "sim/core/files.hpp"
@@ -221,7 +222,7 @@ std::string fnv1a(const std::string& s) {
 void layOut(DesignSweepContext& c, const SweepPointResult& nominal) {
   addColumn(c, "point", "", "the point's index in the design (0-based)", true, nullptr);
   for (const auto& p : c.spec.parameters)
-    addColumn(c, p.key, "", "scene key " + p.key + " at this point, in the scene's own unit for it", true, nullptr);
+    addColumn(c, p.key, sceneKeyUnit(p.key), "scene key " + p.key + " at this point, in the scene's own unit for it", true, nullptr);
   addColumn(c, "status", "", "ok, or what went wrong at this point (the scene refused a value, the equilibrium failed)", false, nullptr);
   for (std::size_t i = 0; i < c.spec.outputs.size(); ++i) {
     const std::string& o = c.spec.outputs[i];

@@ -17,7 +17,8 @@ namespace {
 /// A 1-D sweep's figures: the tracked modes' frequencies (log: they span decades), each
 /// mode's change from its first value (linear, so a few per cent show), and the
 /// synthesis error. Unstable shapes are rings at |f| (the growth rate / 2 pi).
-void lineSweepPlots(OutputDir& out, const ConfigSweepResult& r, std::size_t tracks, const std::string& scene_name) {
+void lineSweepPlots(OutputDir& out, const ConfigSweepResult& r, std::size_t tracks, const std::string& scene_name,
+                    std::optional<double> nominal_deg) {
   std::vector<render::Series> freq, change, err;
   render::Series unstable{"unstable (ring at growth rate / 2 pi)", {}, {}};
   unstable.markers_only = true;
@@ -54,6 +55,21 @@ void lineSweepPlots(OutputDir& out, const ConfigSweepResult& r, std::size_t trac
     err.push_back(e);
   }
   if (!unstable.x.empty()) freq.push_back(unstable);
+  // The scene's own angle, where the other commands' numbers are: a vertical line over
+  // each figure's values (the frequency figure's, a log axis, only where positive).
+  if (nominal_deg) {
+    for (auto* fig : {&freq, &change, &err}) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (const auto& s : *fig)
+        for (double y : s.y)
+          if (std::isfinite(y) && (fig != &freq || y > 0)) lo = std::min(lo, y), hi = std::max(hi, y);
+      if (!std::isfinite(lo)) continue;
+      render::Series at{strf("the scene's angle (%g deg)", *nominal_deg), {*nominal_deg, *nominal_deg}, {lo, hi}};
+      at.dashed = true;
+      at.colour_index = 13;  // grey: not a mode's colour
+      fig->push_back(at);
+    }
+  }
   const std::string axis = r.axes[0].joint + " angle (deg)";
   figures::linePlot(out.stage("frequencies.png"), freq, "System modes tracked by shape: " + scene_name, axis,
                     "frequency (Hz)", true);
@@ -64,12 +80,12 @@ void lineSweepPlots(OutputDir& out, const ConfigSweepResult& r, std::size_t trac
                     axis, "|synthesized / full - 1| (%)", false);
 }
 
-void plots(OutputDir& out, const ConfigSweepResult& r, const std::string& scene_name) {
+void plots(OutputDir& out, const ConfigSweepResult& r, const std::string& scene_name, std::optional<double> nominal_deg) {
   std::size_t tracks = 0;
   for (const auto& p : r.points) tracks = std::max(tracks, p.tracks.size());
   try {
     if (r.axes.size() == 1) {
-      lineSweepPlots(out, r, tracks, scene_name);
+      lineSweepPlots(out, r, tracks, scene_name, nominal_deg);
     } else {
       const auto a0 = r.axes[0].values(), a1 = r.axes[1].values();
       Eigen::MatrixXd worst = Eigen::MatrixXd::Zero(a1.size(), a0.size());
@@ -112,7 +128,11 @@ int runConfigSweepCommand(const ConfigSweepArgs& args) {
     if (out) {
       out->write("sweep.csv", s.csv);
       out->write("sweep.json", s.json.dump(2) + "\n");
-      plots(*out, s.result, sceneName(scene));
+      std::optional<double> nominal;  // the swept joint's angle in the scene
+      if (const auto* a = std::get_if<ArticleScene>(&scene); a && !s.result.axes.empty())
+        for (const auto& j : a->article.joints)
+          if (j.name == s.result.axes[0].joint) nominal = j.angle * 180 / M_PI;
+      plots(*out, s.result, sceneName(scene), nominal);
       out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(s.json) : emitResult(s.text);

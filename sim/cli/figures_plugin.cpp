@@ -1,7 +1,10 @@
 // libmmvlab_figures.so: renders/ behind the table of sim/cli/figures.hpp. Built with
 // its own copy of mmvlab's libraries (hidden: only the table is exported), OpenCV
 // and OSMesa. What crosses the boundary is plain data and std exceptions.
+#include <cstdlib>
+
 #include "renders/frame.hpp"
+#include "renders/layout.hpp"
 #include "renders/plot.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/cli/figures.hpp"
@@ -19,6 +22,12 @@ void contactSheetImpl(const std::string& path, const std::vector<DrawList>& list
   for (std::size_t i = 0; i < lists.size(); ++i) tiles.push_back(render::renderFrame(lists[i], cameras[i], {size.width, size.height, size.supersample}));
   render::writePng(path, render::contactSheet(tiles, columns));
 }
+
+// The figure harness (tests/figures/figure_layout.sh) asks each figure's layout by name.
+[[maybe_unused]] const bool kLayoutLog = [] {
+  if (const char* path = std::getenv("MMVLAB_FIGURE_LAYOUT")) render::setLayoutLog(path);
+  return true;
+}();
 
 const Api kApi{kApiVersion,  render::writeLinePlotPng, render::writeHeatmapPng, render::writeBodePng, framePngImpl,
                contactSheetImpl, cli::runRenderCommand, adoptProgressState};

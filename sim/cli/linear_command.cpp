@@ -1,9 +1,11 @@
 // mmvlab frf and mmvlab rom: linear models for control design (app::runLinearStudy; the
 // isolator's: hamsas_command.cpp), written as CSV, Bode plots, UFF and .mat.
 #include <cmath>
+#include <algorithm>
 #include <complex>
 #include <iostream>
 
+#include "facility/table_programs.hpp"
 #include "sim/app/linear_study.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/cli/figures.hpp"
@@ -76,8 +78,20 @@ void writeBodePlots(const FigurePath& out, const app::LinearStudy& a, bool rad) 
         rom.magnitude_db.push_back(20 * std::log10(std::abs(b) + 1e-300));
         rom.phase_deg.push_back(std::arg(b) * 180 / M_PI);
       }
+      std::vector<render::BodeTrace> traces{full, rom};
+      // The table cannot drive the article above its servo bandwidth: the response there is
+      // the model's, not a test's (issue 36: the Bode plots did not show the limit).
+      if (s.input_names[i].rfind("table_", 0) == 0 && !full.magnitude_db.empty()) {
+        const double f = facility::TableSpec{}.bandwidth_hz, x = rad ? 2 * M_PI * f : f;
+        const auto [mlo, mhi] = std::minmax_element(full.magnitude_db.begin(), full.magnitude_db.end());
+        // On the magnitude panel only (NaN: no line on the phase panel's unwrapped scale).
+        // A dB beyond the response both ways: a flat one (rigid translation, 0 dB) still shows it.
+        render::BodeTrace limit{strf("table bandwidth %g Hz", f), {x, x}, {*mlo - 1, *mhi + 1}, {NAN, NAN}};
+        limit.dashed = true;
+        traces.push_back(limit);
+      }
       try {
-        figures::bode(out("bode_" + bodeFileBase(s, o, i) + ".png"), {full, rom},
+        figures::bode(out("bode_" + bodeFileBase(s, o, i) + ".png"), traces,
                       s.output_names[o] + " / " + s.input_names[i] + " (" + s.output_units[o] + " per " + s.input_units[i] +
                           "): " + a.scene.name,
                       rad ? "frequency (rad/s)" : "frequency (Hz)", markers);

@@ -47,9 +47,13 @@ void Watchdog::watch() {
     next = elapsed + interval_;
     if (bars.load() > 0) continue;
     std::string where;
+    const auto now = std::chrono::steady_clock::now();
     for (const ProgressLevel& l : progressSnapshot()) {
       where += (where.empty() ? "" : " > ") + printable(l.what);
-      if (l.total > 0) where += strf(" (%s%s%ld of %ld)", l.unit.c_str(), l.unit.empty() ? "" : " ", l.done, l.total);
+      const std::string left = progressTimeLeft(l, now);
+      if (l.total > 0)
+        where += strf(" (%s%s%ld of %ld%s%s)", l.unit.c_str(), l.unit.empty() ? "" : " ", l.done, l.total, left.empty() ? "" : ", ",
+                      left.c_str());
     }
     std::fprintf(stderr, elapsed < 10 ? "mmvlab: still working (%.1f s)%s%s\n" : "mmvlab: still working (%.0f s)%s%s\n", elapsed, where.empty() ? "" : ": ", where.c_str());
     std::fflush(stderr);

@@ -5,10 +5,13 @@
 // (sensor signals, torques, tips) beside it.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <memory>
 
+#include "facility/table_programs.hpp"
+#include "renders/layout.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/core/files.hpp"
 #include "sim/core/progress.hpp"
@@ -29,6 +32,45 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxFrames = 20000;  ///< about 11 minutes at 30 frames/s.
 
+/// A column as a reader of the video reads it: angles in degrees (an encoder's rad, the
+/// history's own unit, was against a scene written in degrees), with its unit in the name,
+/// and its limit: a sensor's range, a torquer's capacity, the table's stroke.
+render::Trace traceOf(const RunDir& run, std::size_t col) {
+  const std::string& column = run.history.columns[col];
+  auto ends = [&](const std::string& tail) {
+    return column.size() > tail.size() && column.compare(column.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  struct Unit {
+    const char* suffix;
+    const char* shown;
+    double scale;
+  };
+  static const Unit kUnits[] = {{"_rad_per_s", "deg/s", 180 / M_PI}, {"_rad", "deg", 180 / M_PI}, {"_m_per_s2", "m/s^2", 1},
+                                {"_n_m", "N*m", 1}, {"_m_per_m", "microstrain", 1e6}, {"_deg", "deg", 1}, {"_n", "N", 1},
+                                {"_m", "cm", 100}};
+  render::Trace tr;
+  double scale = 1;
+  tr.name = column;
+  for (const auto& u : kUnits)
+    if (ends(u.suffix)) {
+      tr.name = column.substr(0, column.size() - std::strlen(u.suffix)) + " (" + u.shown + ")";
+      scale = u.scale;
+      break;
+    }
+  for (const auto& row : run.history.rows) {
+    tr.t.push_back(row[0]);
+    tr.v.push_back(scale * row[col]);
+  }
+  for (const auto& sensor : run.scene.sensors)  // its instrument's range
+    if (column.rfind(csvColumnName(sensor.name) + "_", 0) == 0)
+      for (const auto& ins : run.scene.instruments)
+        if (ins.name == (sensor.instrument.empty() ? sensor.type : sensor.instrument)) tr.limit = scale * ins.spec.range, tr.limit_label = "range";
+  for (const auto& j : run.scene.article.joints)
+    if (column == csvColumnName(j.name) + "_torque_n_m" && j.torque_capacity > 0) tr.limit = j.torque_capacity, tr.limit_label = "capacity";
+  if (column == "table_x_m") tr.limit = 100 * facility::TableSpec{}.stroke, tr.limit_label = "stroke";
+  return tr;
+}
+
 /// --traces: a history.csv column by its name, or a sensor's column by the sensor's name.
 std::vector<render::Trace> tracesFor(const RunDir& run, const std::vector<std::string>& names) {
   std::vector<render::Trace> out;
@@ -44,13 +86,7 @@ std::vector<render::Trace> tracesFor(const RunDir& run, const std::vector<std::s
       for (std::size_t c = 1; c < run.history.columns.size(); ++c) known += run.history.columns[c] + (c + 1 < run.history.columns.size() ? ", " : "");
       throw UsageError("--traces: no sensor or column '" + name + "' in " + run.dir + "/history.csv (known: " + known + ")");
     }
-    render::Trace tr;
-    tr.name = run.history.columns[static_cast<std::size_t>(col)];
-    for (const auto& row : run.history.rows) {
-      tr.t.push_back(row[0]);
-      tr.v.push_back(row[static_cast<std::size_t>(col)]);
-    }
-    out.push_back(std::move(tr));
+    out.push_back(traceOf(run, static_cast<std::size_t>(col)));
   }
   return out;
 }
@@ -173,6 +209,7 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
     if (traces.empty()) return article;
     cv::Mat img;
     cv::hconcat(article, render::tracePanel(traces, t, cv::Size(size.width - frame.width, size.height)), img);
+    render::layoutArrangeRow(2);  // the figure harness sees one image
     return img;
   };
   if (ext == ".png") {

@@ -69,6 +69,15 @@ void tablePlot(OutputDir& out, const SimulationResult& r, const std::string& tit
                     {force, level(r.record, payload, strf("payload rating %g N", payload), 5),
                      level(r.record, r.carried_weight_n, strf("weight carried %.0f N", r.carried_weight_n), 4)},
                     "Table: actuator force and the weight it carries: " + title, "time (s)", "force (N)");
+  // The stroke the program uses against the table's own (issue 36: table.png had none).
+  const int x = columnOf(r.record, "table_x_m");
+  if (x < 0) return;
+  const double stroke = facility::TableSpec{}.stroke;
+  render::Series pos = column(r.record, x, "table position along x", 100);
+  pos.colour_index = 1;
+  figures::linePlot(out.stage("table_stroke.png"),
+                    {pos, level(r.record, 100 * stroke, strf("stroke +-%g cm", 100 * stroke), 5), level(r.record, -100 * stroke, "", 5)},
+                    "Table: position against its stroke: " + title, "time (s)", "position (cm)");
 }
 
 void tipPlot(OutputDir& out, const SimulationResult& r, const std::string& title) {

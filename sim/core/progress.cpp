@@ -1,6 +1,8 @@
 #include "sim/core/progress.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <mutex>
 #include <thread>
 
@@ -35,7 +37,7 @@ ProgressStage::ProgressStage(std::string what) {
     std::lock_guard<std::mutex> lock(s.mutex);
     if (s.stages.empty()) s.owner = std::this_thread::get_id();
     else if (s.owner != std::this_thread::get_id()) return;
-    s.stages.push_back({std::move(what), 0, 0, ""});
+    s.stages.push_back({std::move(what), 0, 0, "", std::chrono::steady_clock::now()});
     recorded_ = true;
   }
   try {
@@ -69,6 +71,16 @@ void progressCount(long done, long total, const char* unit) {
 }
 
 void setProgressCheckpoint(ProgressCheckpoint check) { checkpoint.store(check); }
+
+std::string progressTimeLeft(const ProgressLevel& l, std::chrono::steady_clock::time_point now) {
+  const double spent = std::chrono::duration<double>(now - l.opened).count();
+  if (l.done <= 0 || l.total <= l.done || spent < 1.0) return "";
+  const double left = spent * static_cast<double>(l.total - l.done) / static_cast<double>(l.done);
+  char text[48];
+  if (left < 90) std::snprintf(text, sizeof text, "about %.0f s left", std::max(1.0, left));
+  else std::snprintf(text, sizeof text, "about %.0f min left", left / 60);
+  return text;
+}
 
 std::vector<ProgressLevel> progressSnapshot() {
   ProgressState& s = *state;

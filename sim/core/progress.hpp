@@ -8,6 +8,7 @@
 // Stages are recorded from one thread: the one that opened the outermost stage (the
 // command's); stages opened on worker threads (a sweep's points) are ignored, the sweep
 // counts its points itself. Counts come from any thread (a parallel loop's workers).
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,12 @@ struct ProgressLevel {
   std::string what;
   long done = 0, total = 0;
   std::string unit;
+  std::chrono::steady_clock::time_point opened{};  ///< when the stage opened: its pace, so its time left
 };
+
+/// The time left in a stage that counts, at its pace so far ("about 40 s left"); empty
+/// before a second of it or its first count.
+std::string progressTimeLeft(const ProgressLevel& l, std::chrono::steady_clock::time_point now);
 /// The open stages, outermost first.
 std::vector<ProgressLevel> progressSnapshot();
 

@@ -72,17 +72,22 @@ std::vector<Eigen::Vector3d> positions(const std::vector<StationPoint>& pts, con
   return out;
 }
 
-/// A cylinder about world z (torquers, encoders) or a sphere, of steel of `mass`.
+/// A lumped mass's least drawn size, m: joint 3's 88 g torquer as steel is 24 mm across,
+/// lost at the article's scale (issue 36: "torquer 3 invisible").
+constexpr double kMinLumpedSize = 0.06;
+
+/// A cylinder about world z (torquers, encoders) or a sphere, of steel of `mass`, at least
+/// kMinLumpedSize across.
 DrawItem lumped(const Eigen::Vector3d& at, double mass, bool sphere) {
   DrawItem it;
   it.rgba = kTorquer;
   const double volume = mass / kSteel;
   if (sphere) {
     it.shape = DrawItem::Shape::Sphere;
-    it.size = Eigen::Vector3d::Constant(std::cbrt(6 * volume / M_PI));
+    it.size = Eigen::Vector3d::Constant(std::max(kMinLumpedSize, std::cbrt(6 * volume / M_PI)));
   } else {
     it.shape = DrawItem::Shape::Cylinder;
-    const double dia = std::cbrt(4 * volume / M_PI);  // length = diameter
+    const double dia = std::max(kMinLumpedSize, std::cbrt(4 * volume / M_PI));  // length = diameter
     it.size = {dia, dia, dia};
   }
   it.pose = poseAlong(at, Eigen::Vector3d::UnitZ());
@@ -178,7 +183,7 @@ DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK:
     addLink(d, scene.article, l, positions(samples(model, l), s), color, {});
     d.legend.push_back({l.name, color});
   }
-  d.legend.push_back({"torquers, tip masses (as steel of their mass)", kTorquer});
+  d.legend.push_back({"torquers, tip masses (as steel of their mass, at least 60 mm)", kTorquer});
   d.legend.push_back({"sections drawn true to size, at least 15 mm", {1, 1, 1, 1}});
   addHardware(d, scene, model, s);
   addSensors(d, scene, model, s);
@@ -211,7 +216,19 @@ ModeFrames::ModeFrames(const ArticleScene& scene, const SolvedScene& solved, Mod
   }
   dominant_ = dominantStrainLink(model, dofs, phi);
   if (model.isSpatial()) dominant_ += ", " + classifyMode(model, dofs, phi).label;
-  scale_ = scale > 0 ? scale : (peak > 0 ? 0.1 * extent / peak : 1.0);
+  // The link that moves most (a swing of link 3 whose strain is in link 1, issue 36).
+  double widest = -1, turn = 0;  // turn: the largest |du| / |dx| between neighbouring points
+  for (std::size_t j = 0; j < shape_.size(); ++j)
+    for (std::size_t i = 0; i < shape_[j].size(); ++i) {
+      if (shape_[j][i].norm() > widest) widest = shape_[j][i].norm(), moving_ = scene.article.links[j].name;
+      if (i > 0)
+        if (const double dx = (rest_[j][i] - rest_[j][i - 1]).norm(); dx > 1e-9) turn = std::max(turn, (shape_[j][i] - shape_[j][i - 1]).norm() / dx);
+    }
+  // Drawn so the largest translation is 10 % of the article's length, but no piece turns
+  // by more than about 0.3 rad: a linear shape drawn larger visibly lengthens its links (4 %).
+  double automatic = peak > 0 ? 0.1 * extent / peak : 1.0;
+  if (turn > 0) automatic = std::min(automatic, 0.3 / turn);
+  scale_ = scale > 0 ? scale : automatic;
   peak_ = scale_ * peak;
   addHardware(hardware_, scene, model, eq);
 }
@@ -223,21 +240,22 @@ DrawList ModeFrames::frame(double phase, bool short_title) const {
     std::vector<double> values;
     for (std::size_t i = 0; i < rest_[j].size(); ++i) {
       moved.push_back(rest_[j][i] + phase * scale_ * shape_[j][i]);
-      values.push_back(std::abs(phase) * scale_ * shape_[j][i].norm());
+      values.push_back(peak_ > 0 ? std::abs(phase) * scale_ * shape_[j][i].norm() / peak_ : 0.0);
     }
     addLink(d, scene_.article, scene_.article.links[j], moved, {1, 1, 1, 1}, values);
     addLink(d, scene_.article, scene_.article.links[j], rest_[j], {0.6f, 0.6f, 0.6f, 0.25f}, {});  // ghost
   }
   d.has_color_bar = true;
-  d.color_bar = {"|u| (m, drawn shape)", 0.0, peak_};
+  d.color_bar = {"|u| / largest (drawn shape)", 0.0, 1.0};  // a mode shape has no size: the colours compare its points
   d.legend.push_back({"equilibrium (ghost)", {0.6f, 0.6f, 0.6f, 1}});
-  char title[256];
+  char title[320];
   const double hz = solved_.modes.frequencyHz(mode_.index());
+  const std::string where = moving_ == dominant_ ? "in " + dominant_ : "strain in " + dominant_ + ", moves " + moving_;
   if (short_title)
-    std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s (x %.3g)", mode_.number(), hz, dominant_.c_str(), scale_);
+    std::snprintf(title, sizeof title, "mode %d: %.4g Hz, %s", mode_.number(), hz, where.c_str());
   else
-    std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz, most strain in %s, shape x %.3g (largest translation %.3g m)",
-                  scene_.name.c_str(), mode_.number(), hz, dominant_.c_str(), scale_, peak_);
+    std::snprintf(title, sizeof title, "%s: mode %d, %.4g Hz, most strain in %s, largest motion in %s; drawn %.3g m at its largest",
+                  scene_.name.c_str(), mode_.number(), hz, dominant_.c_str(), moving_.c_str(), peak_);
   d.title = title;
   return d;
 }

@@ -53,6 +53,7 @@ class ModeFrames {
   ModeNumber mode_;
   double scale_ = 1, peak_ = 0;  ///< peak_: the largest drawn translation, m.
   std::string dominant_;         ///< the link holding most of the mode's strain energy.
+  std::string moving_;           ///< the link with the largest translation.
   std::vector<std::vector<Eigen::Vector3d>> rest_, shape_;
   DrawList hardware_;
 };

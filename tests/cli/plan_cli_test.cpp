@@ -127,7 +127,7 @@ TEST_F(Cli, SweepFiguresAndTheParetoFrontComeFromTheCsvAlsoWhenMerged) {
       "parameters:\n  - {key: sections.link3_rod.radius, range: {from: 0.001, to: 0.003, samples: 3}}\n"
       "  - {key: links.link3.length, values: [0.5, 0.75, 1.0]}\noutputs: [frequencies, mass, check]\nmodes: 3\n");
   ASSERT_EQ(run("sweep " + spec.string() + " --out " + (dir_ / "whole").string()).code, 0);
-  for (const char* f : {"frequencies_vs_links_link3_length.png", "margins_vs_sections_link3_rod_radius.png", "pareto.png", "mode1_map.png"})
+  for (const char* f : {"frequencies_vs_links_link3_length.png", "margins_vs_sections_link3_rod_radius.png", "pareto.png", "frequency_map.png"})
     EXPECT_TRUE(isPng(dir_ / "whole" / f)) << f;
   // No point of the sweep dominates a point of the front (higher f1, lower mass, higher worst margin).
   const auto rows = [](const std::string& text) {

@@ -1,5 +1,6 @@
-# Sourced by the readback scripts (readback.sh, vtk_readback.sh): the binary (their first
-# argument, else build/mmvlab), `here` (this directory), the repository as the working
+# Sourced by the readback scripts (readback.sh, vtk_readback.sh, report_browser.sh) and
+# the figure harness (tests/figures): the binary (their first argument, else
+# build/mmvlab), `here` (this directory), the repository as the working
 # directory, a temporary directory removed at exit, and `run NAME VERB ARGS...`, which
 # runs mmvlab with --out $tmp/NAME and shows its stderr if it fails.
 set -euo pipefail

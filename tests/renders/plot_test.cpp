@@ -2,8 +2,12 @@
 // each pixel column keeps its first, lowest, highest and last point, in order, so a
 // 10^5-sample run's curve has the same envelope as every sample drawn.
 #include "renders/plot.hpp"
+#include "renders/layout.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -29,6 +33,50 @@ std::map<int, Extent> extents(const std::vector<std::optional<Pixel>>& pts) {
   for (const auto& p : pts)
     if (p) out[p->x].lo = std::min(out[p->x].lo, p->y), out[p->x].hi = std::max(out[p->x].hi, p->y);
   return out;
+}
+
+/// The layout writeLinePlotPng (or writeBodePng) logs for one figure (renders/layout.hpp).
+nlohmann::json layoutOf(const std::function<void(const std::string&)>& draw) {
+  const std::string base = (std::filesystem::temp_directory_path() / ("mmvlab_layout_" + std::to_string(getpid()))).string();
+  std::filesystem::remove(base + ".jsonl");
+  setLayoutLog(base + ".jsonl");
+  draw(base + ".png");
+  setLayoutLog("");
+  std::ifstream in(base + ".jsonl");
+  std::string line;
+  std::getline(in, line);
+  std::filesystem::remove(base + ".jsonl");
+  std::filesystem::remove(base + ".png");
+  return nlohmann::json::parse(line);
+}
+
+// The figure harness's defects, one each (tests/figures/figure_layout.sh runs them on
+// every shipped scene): before, torques.png drew gimbal.yaw's capacity over
+// gimbal.pitch's (0 pixels of it showed), tips.png hid link3a under link3b, and a
+// near-zero trace's ticks ("7.5e-11") ran into the axis title.
+TEST(Plot, CoincidentSeriesShareAnEntryAndNearOnesBothShow) {
+  const std::vector<double> t{0, 1, 2, 3, 4};
+  Series a{"pitch capacity", t, {2, 2, 2, 2, 2}}, b{"yaw capacity", t, {2, 2, 2, 2, 2}};
+  a.dashed = b.dashed = true;
+  Series c{"link3b", t, {0, 1, 0.5, 1.5, 1}}, d{"link3a", t, {0, 1, 0.5, 1.5, 1.000001}};
+  const auto fig = layoutOf([&](const std::string& p) { writeLinePlotPng(p, {a, b, c, d}, "t", "x", "y"); });
+  ASSERT_EQ(fig["legend"].size(), 3u);
+  EXPECT_EQ(fig["legend"][0][0], "pitch capacity = yaw capacity");
+  for (const auto& e : fig["legend"]) EXPECT_GE(e[5].get<long>(), 30) << e;  // every named series shows
+  for (const auto& t1 : fig["texts"])
+    EXPECT_LE(t1[1].get<int>() + t1[3].get<int>(), fig["width"].get<int>()) << t1;
+}
+
+TEST(Plot, TinyTicksAreMultiplesOfAPowerOfTenTheAxisStates) {
+  const auto fig = layoutOf(
+      [&](const std::string& p) { writeLinePlotPng(p, {Series{"z", {0, 1, 2}, {0, 7.5e-11, 2.5e-10}}}, "t", "time (s)", "d (mm)"); });
+  bool titled = false;
+  for (const auto& t : fig["texts"]) {
+    const std::string text = t[0];
+    if (text.rfind("d (mm)", 0) == 0) titled = text == "d (mm) x 1e-10";
+    else EXPECT_EQ(text.find("e-"), std::string::npos) << text;  // the ticks: 0, 0.5, ... 2.5
+  }
+  EXPECT_TRUE(titled);
 }
 
 TEST(Plot, ADenseCurveKeepsEachColumnsExtentInFewPoints) {
