@@ -39,22 +39,31 @@ std::vector<int> parseModeList(const std::string& text) {
 }
 
 /// The review renders, for either kind of scene: the still drawing (`still`) with the
-/// chosen sensors coloured by their score, and a contact sheet of the target modes
-/// (`mode(m)`) with the sensors on them, seen from preset `view`.
+/// chosen sensors numbered as placement.json lists them (and the report's table), each
+/// with its station, its measuring axes as rods and its score as colour, apart from the
+/// scene's own sensors; and a contact sheet of the target modes (`mode(m)`) with the
+/// sensors' numbers on them, seen from preset `view`.
 void writeReviewRenders(const FigurePath& out, const PlacementStudy& s, const std::string& scene_name, DrawList d,
                         const std::function<DrawList(ModeNumber)>& mode, const std::string& view) {
   std::vector<Eigen::Vector3d> at;
-  std::vector<std::string> names;
+  std::vector<std::string> names, numbers;
+  std::vector<std::vector<Eigen::Vector3d>> axes;
   std::vector<double> scores;
   for (std::size_t i = 0; i < s.result.kept_blocks.size(); ++i) {
-    const PlacementCandidate& c = s.candidates[s.result.kept_blocks[i]];
+    const int block = s.result.kept_blocks[i];
+    const PlacementCandidate& c = s.candidates[static_cast<std::size_t>(block)];
     at.push_back({c.world_x, c.world_y, c.world_z});
-    names.push_back(c.station + " " + c.axis);
+    numbers.push_back(std::to_string(i + 1));
+    names.push_back(strf("%zu: %s %s%s", i + 1, c.station.c_str(), c.axis.c_str(), c.fixed ? " (kept)" : ""));
+    axes.emplace_back();
+    for (const auto& dir : s.directions)
+      if (dir.block == block) axes.back().push_back({dir.world[0], dir.world[1], dir.world[2]});
     scores.push_back(s.result.block_score[i]);
   }
-  addSensorMarks(d, at, names, scores);
+  const std::string score = s.method == "effective independence" ? "EfI" : "score";
+  addProposedSensors(d, at, names, axes, scores, "chosen sensors, numbered (colour: " + score + "; rod: measuring axis)");
   d.has_color_bar = true;
-  d.color_bar = {s.method == "effective independence" ? "EfI" : "score", 0.0, s.result.block_score.maxCoeff()};
+  d.color_bar = {score, 0.0, s.result.block_score.maxCoeff()};
   d.title = strf("%s: %zu sensors by %s", scene_name.c_str(), at.size(), s.method.c_str());
   Camera camera;
   presetCamera(view, d.bounds(), camera, d.up);
@@ -63,7 +72,7 @@ void writeReviewRenders(const FigurePath& out, const PlacementStudy& s, const st
   std::vector<Camera> cameras;
   for (const ModeNumber m : s.target_modes) {
     DrawList md = mode(m);
-    addSensorMarks(md, at, std::vector<std::string>(at.size()));
+    addProposedSensors(md, at, numbers, axes);
     Camera c;
     presetCamera(view, md.bounds(), c, md.up);
     tiles.push_back(std::move(md));

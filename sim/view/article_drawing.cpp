@@ -20,6 +20,8 @@ const std::array<std::array<float, 4>, 7> kPalette{{{0.90f, 0.62f, 0.0f, 1}, {0.
                                                     {0.0f, 0.45f, 0.70f, 1}, {0.84f, 0.37f, 0.0f, 1}, {0.80f, 0.47f, 0.65f, 1},
                                                     {0.94f, 0.89f, 0.26f, 1}}};
 const std::array<float, 4> kTorquer{0.35f, 0.35f, 0.38f, 1}, kSensor{0.80f, 0.10f, 0.10f, 1}, kFixture{0.55f, 0.55f, 0.5f, 1};
+/// A placement's proposed sensors: blue, apart from the scene's own (red).
+const std::array<float, 4> kProposed{0.05f, 0.30f, 0.70f, 1};
 
 Eigen::Vector3d vec(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
 
@@ -155,23 +157,34 @@ void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, cons
     arrow.pose = poseAlong(it.pose.translation() + 0.08 * axis, axis);
     d.items.push_back(arrow);
   }
-  if (!scene.sensors.empty()) d.legend.push_back({"sensors (rod: measuring axis)", kSensor});
+  if (!scene.sensors.empty()) d.legend.push_back({"the scene's sensors (rod: measuring axis)", kSensor});
 }
 
 }  // namespace
 
-void addSensorMarks(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
-                    const std::vector<double>& values) {
-  MMV_DEMAND(at.size() == names.size() && (values.empty() || values.size() == at.size()));
+void addProposedSensors(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
+                        const std::vector<std::vector<Eigen::Vector3d>>& axes, const std::vector<double>& values,
+                        const std::string& legend) {
+  MMV_DEMAND(at.size() == names.size() && (values.empty() || values.size() == at.size()) &&
+             (axes.empty() || axes.size() == at.size()));
   for (std::size_t i = 0; i < at.size(); ++i) {
     DrawItem it;
-    it.rgba = kSensor;
+    it.rgba = kProposed;
     it.size = Eigen::Vector3d::Constant(0.06);
     it.pose.translation() = at[i] + Eigen::Vector3d(0, 0, 0.04);
     if (!values.empty()) it.value = values[i];
     d.items.push_back(it);
-    d.labels.push_back({at[i], names[i], kSensor});
+    if (!names[i].empty()) d.labels.push_back({at[i], names[i], kProposed});
+    for (std::size_t k = 0; i < axes.size() && k < axes[i].size(); ++k) {  // a rod along each measuring direction
+      DrawItem rod;
+      rod.shape = DrawItem::Shape::Cylinder;
+      rod.rgba = kProposed;
+      rod.size = {0.2, 0.01, 0.01};
+      rod.pose = poseAlong(it.pose.translation() + 0.1 * axes[i][k], axes[i][k]);
+      d.items.push_back(rod);
+    }
   }
+  if (!legend.empty() && !at.empty()) d.legend.push_back({legend, kProposed});
 }
 
 DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s) {

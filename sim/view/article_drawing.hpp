@@ -32,10 +32,13 @@ namespace mmv {
 /// The article at the state `s` (realized to Position).
 DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s);
 
-/// Marks at sensor positions (world, m): cubes labelled `names`; coloured through the
-/// list's colour bar by `values` when given (one per mark), red otherwise.
-void addSensorMarks(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
-                    const std::vector<double>& values = {});
+/// A placement's proposed sensors (world, m): blue boxes labelled `names` (empty: none),
+/// apart from the scene's own red ones; coloured through the list's colour bar by `values`
+/// when given (one per mark); a rod along each of a sensor's measuring directions (`axes`,
+/// unit vectors, one list per sensor, or none); `legend` an entry for them (empty: none).
+void addProposedSensors(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
+                        const std::vector<std::vector<Eigen::Vector3d>>& axes = {}, const std::vector<double>& values = {},
+                        const std::string& legend = "");
 
 /// The frames of one mode: the shape is computed once, each frame only
 /// displaces it (an animation's 48 frames cost one Jacobian pass). `scale` > 0: metres
