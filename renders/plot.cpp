@@ -213,6 +213,26 @@ void drawSeriesLine(cv::Mat& img, const Series& s, const cv::Scalar& colour, con
   }
 }
 
+/// A point's label (a trade run's tolerance) beside its marker: the first of ten places
+/// around it, nearest first, that stays inside the frame and clear of the labels placed
+/// before (`placed`, which receives its box); none free, it is left out rather than drawn
+/// over another (CI's slower machine moved two trade points together: "1e-03" over "1e-04").
+void placePointLabel(cv::Mat& img, const std::string& label, const cv::Point& at, const cv::Scalar& colour,
+                     const cv::Rect& area, std::vector<cv::Rect>& placed) {
+  const cv::Rect size = textBox(label, {0, 0}, 0.32);
+  const int w = size.width, h = size.height;
+  const cv::Point offsets[] = {{7, -5},       {7, h + 5},       {-7 - w, -5},  {-7 - w, h + 5},  {-w / 2, -9},
+                               {-w / 2, h + 9}, {14, -14},     {-14 - w, -14}, {14, h + 14},    {-14 - w, h + 14}};
+  for (const cv::Point& o : offsets) {
+    const cv::Rect box = textBox(label, at + o, 0.32);
+    if ((box & area) != box) continue;
+    if (std::any_of(placed.begin(), placed.end(), [&](const cv::Rect& p) { return (p & box).area() > 0; })) continue;
+    text(img, label, at + o, 0.32, colour);
+    placed.push_back(box);
+    return;
+  }
+}
+
 /// Series with the same points and style as an earlier one are drawn once: the earlier
 /// one's legend entry names both ("gimbal.pitch capacity +-200 N*m = gimbal.yaw capacity
 /// +-200 N*m"), so no entry stands for a line hidden under its twin.
@@ -377,6 +397,7 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& gi
   }
   std::vector<cv::Scalar> colours;
   std::vector<cv::Mat> masks;
+  std::vector<cv::Rect> placed;  // the point labels drawn so far
   // Series without a colour of their own take the palette's entries the others have not
   // claimed (a mode's fixed colour, a limit's black), in order.
   std::vector<int> free_entries;
@@ -410,8 +431,7 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& gi
           if (s.hollow) cv::circle(img, at, 6, colour, 2, cv::LINE_AA);
           else cv::circle(img, at, s.markers_only ? 5 : 3, colour, cv::FILLED, cv::LINE_AA);
           cv::circle(masks.back(), at, s.hollow ? 6 : s.markers_only ? 5 : 3, cv::Scalar(255), s.hollow ? 2 : cv::FILLED, cv::LINE_8);
-          if (i < s.point_labels.size() && !s.point_labels[i].empty())
-            text(img, s.point_labels[i], {at.x + 7, at.y - 5}, 0.32, colour);
+          if (i < s.point_labels.size() && !s.point_labels[i].empty()) placePointLabel(img, s.point_labels[i], at, colour, area, placed);
         }
   }
   // A line drawn over by later ones (within a pixel of them all along) is drawn again on

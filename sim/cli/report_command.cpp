@@ -172,16 +172,9 @@ std::string summaryTiles(const Json& check, const Json& modes, const Json& place
          frfTiles(frf) + "</div>";
 }
 
-/// The scene as the page shows it: the file's text (or the embedded default's), and the
-/// overrides the report was run with.
-std::string sceneText(const ReportArgs& a) {
-  if (a.scene_path.empty()) return defaultSceneYaml();
-  std::string text, why;
-  if (!readInputFile(a.scene_path, 16L << 20, text, why)) throw SceneFileError(a.scene_path + ": " + why);
-  return text;
-}
-
-html::Section sceneSection(const ReportArgs& a) {
+/// The scene as read (the file's text, or the embedded default's) and the overrides the
+/// report ran with.
+html::Section sceneSection(const ReportArgs& a, const std::string& text) {
   html::Section s{"scene", "The scene", "", {}, {}};
   std::string changes;
   if (a.segments) changes += "--segments " + std::to_string(*a.segments) + "; ";
@@ -191,7 +184,7 @@ html::Section sceneSection(const ReportArgs& a) {
                                                       : "The scene file " + a.scene_path + ".") +
            (changes.empty() ? "" : " Run with " + html::escape(changes.substr(0, changes.size() - 2)) +
                                        " on top of it (every number above includes them).") +
-           "</p>\n<pre>" + html::escape(sceneText(a)) + "</pre>";
+           "</p>\n<pre>" + html::escape(text) + "</pre>";
   s.commands.push_back(a.scene_path.empty() ? "mmvlab scene > scene.yaml" : "cat " + shellWord(a.scene_path));
   return s;
 }
@@ -290,7 +283,7 @@ int runReportCommand(const ReportArgs& args) {
     const SolvedScene solved = solveScene(scene);
     page.sections.push_back(articleSection(args, scene, solved, em));
     for (auto& s : studySections(args, loaded, solved, p, frf, em)) page.sections.push_back(std::move(s));
-    page.sections.push_back(sceneSection(args));
+    page.sections.push_back(sceneSection(args, scene.text));
     page.footer = "Made by " + commandFor(args, "report", "--out " + shellWord(args.out)) +
                   ". Every table is the JSON of the command under it (report.json holds them); the figures are those "
                   "commands' figures.";

@@ -1,5 +1,7 @@
 #include "sim/view/article_drawing.hpp"
 
+#include "sim/core/text.hpp"
+
 #include "sim/modes/planarity.hpp"
 
 #include <algorithm>
@@ -20,6 +22,8 @@ const std::array<std::array<float, 4>, 7> kPalette{{{0.90f, 0.62f, 0.0f, 1}, {0.
                                                     {0.0f, 0.45f, 0.70f, 1}, {0.84f, 0.37f, 0.0f, 1}, {0.80f, 0.47f, 0.65f, 1},
                                                     {0.94f, 0.89f, 0.26f, 1}}};
 const std::array<float, 4> kTorquer{0.35f, 0.35f, 0.38f, 1}, kSensor{0.80f, 0.10f, 0.10f, 1}, kFixture{0.55f, 0.55f, 0.5f, 1};
+/// Gravity's arrow.
+const std::array<float, 4> kGravity{0.25f, 0.25f, 0.25f, 1};
 /// A placement's proposed sensors: blue, apart from the scene's own (red).
 const std::array<float, 4> kProposed{0.05f, 0.30f, 0.70f, 1};
 
@@ -187,6 +191,40 @@ void addProposedSensors(DrawList& d, const std::vector<Eigen::Vector3d>& at, con
   if (!legend.empty() && !at.empty()) d.legend.push_back({legend, kProposed});
 }
 
+/// Which way gravity points, as an arrow beside the links drawn so far (a fifth of their
+/// extent long), and the fixed mount of an article on no table or gimbal: a plate behind
+/// the base joints (issue 36: a drawing without either left the reader to guess).
+void addGravityAndMount(DrawList& d, const ArticleScene& scene) {
+  const Eigen::AlignedBox3d box = d.bounds();
+  const double size = std::max(0.2, box.sizes().head<2>().maxCoeff());
+  const Eigen::Vector3d g(scene.gravity[0], scene.gravity[1], scene.gravity[2]);
+  if (g.norm() > 0 && !box.isEmpty()) {
+    const Eigen::Vector3d dir = g.normalized(), start(box.max().x() + 0.12 * size, box.max().y() - 0.05 * size, 0);
+    DrawItem shaft;
+    shaft.shape = DrawItem::Shape::Cylinder;
+    shaft.rgba = kGravity;
+    shaft.size = {0.2 * size, 0.012 * size, 0.012 * size};
+    shaft.pose = poseAlong(start + 0.1 * size * dir, dir);
+    d.items.push_back(shaft);
+    DrawItem head = shaft;  // a short thick piece at the end: the arrow's head
+    head.size = {0.04 * size, 0.035 * size, 0.035 * size};
+    head.pose = poseAlong(start + 0.2 * size * dir, dir);
+    d.items.push_back(head);
+    d.labels.push_back({start + 0.1 * size * dir, strf("gravity %.3g m/s^2", g.norm()), kGravity});  // beside the shaft
+  }
+  const BaseSpec& base = scene.article.base;
+  if (base.type == BaseType::Fixed && !base.gimbal) {
+    const Eigen::Vector3d at(base.position[0], base.position[1], base.position[2]);
+    const Eigen::Vector3d out(std::cos(base.direction), std::sin(base.direction), 0);  // the joints' zero direction
+    DrawItem plate;
+    plate.rgba = kFixture;
+    plate.size = {0.03 * size, 0.12 * size, 0.12 * size};
+    plate.pose = poseAlong(at - 0.02 * size * out, out);
+    d.items.push_back(plate);
+    d.legend.push_back({"fixed mount", kFixture});
+  }
+}
+
 DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s) {
   DrawList d;
   d.title = scene.name;
@@ -196,6 +234,7 @@ DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK:
     addLink(d, scene.article, l, positions(samples(model, l), s), color, {});
     d.legend.push_back({l.name, color});
   }
+  addGravityAndMount(d, scene);
   d.legend.push_back({"torquers, tip masses (as steel of their mass, at least 60 mm)", kTorquer});
   d.legend.push_back({"sections drawn true to size, at least 15 mm", {1, 1, 1, 1}});
   addHardware(d, scene, model, s);

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -65,6 +66,26 @@ TEST(Plot, CoincidentSeriesShareAnEntryAndNearOnesBothShow) {
   for (const auto& e : fig["legend"]) EXPECT_GE(e[5].get<long>(), 30) << e;  // every named series shows
   for (const auto& t1 : fig["texts"])
     EXPECT_LE(t1[1].get<int>() + t1[3].get<int>(), fig["width"].get<int>()) << t1;
+}
+
+// Point labels (trade's tolerances) never overprint: CI's slower machine put two trade
+// runs a pixel apart and "1e-03" was drawn over "1e-04".
+TEST(Plot, PointLabelsOfNearbyPointsDoNotOverlap) {
+  Series s{"runs", {1.0, 1.001, 1.002, 2.0}, {1.0, 1.001, 0.999, 2.0}};
+  s.markers_only = true;
+  s.point_labels = {"1e-03", "1e-04", "1e-05", "1e-06"};
+  const auto fig = layoutOf([&](const std::string& p) { writeLinePlotPng(p, {s}, "t", "x", "y"); });
+  std::vector<std::array<int, 4>> labels;
+  for (const auto& t : fig["texts"])
+    if (t[0].get<std::string>().rfind("1e-0", 0) == 0) labels.push_back({t[1], t[2], t[3], t[4]});
+  EXPECT_GE(labels.size(), 3u);  // three of the four fit around the cluster, the far one beside itself
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    for (std::size_t j = i + 1; j < labels.size(); ++j) {
+      const auto& a = labels[i];
+      const auto& b = labels[j];
+      const bool apart = a[0] + a[2] <= b[0] || b[0] + b[2] <= a[0] || a[1] + a[3] <= b[1] || b[1] + b[3] <= a[1];
+      EXPECT_TRUE(apart) << i << " " << j;
+    }
 }
 
 TEST(Plot, TinyTicksAreMultiplesOfAPowerOfTenTheAxisStates) {
