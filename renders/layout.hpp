@@ -18,7 +18,7 @@ bool layoutLogging();
 /// A new image of this size starts (a frame, a plot); `kind` names it in the log.
 void layoutNewImage(int width, int height, const char* kind);
 void layoutText(const std::string& text, const cv::Rect& box);
-/// A legend entry: its series' colour and style ("solid", "dashed", "markers") and how many
+/// A legend entry: its series' colour and style ("solid", "dashed", "markers", "rings") and how many
 /// pixels of that colour it shows (-1: no room for the entry).
 void layoutLegend(const std::string& label, const cv::Scalar& colour, const char* style, long pixels);
 /// The last `tiles` images became one contact sheet, `columns` wide (renders/frame.hpp).

@@ -465,7 +465,8 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& gi
     const int ly = top + 10 + row_h * legend_row++;
     const bool room = ly < top + ph;
     if (layoutLogging())
-      layoutLegend(s.label, colour, s.markers_only ? "markers" : s.dashed ? "dashed" : "solid", room ? shown(k) : -1);
+      layoutLegend(s.label, colour, s.markers_only ? (s.hollow ? "rings" : "markers") : s.dashed ? "dashed" : "solid",
+                   room ? shown(k) : -1);
     if (!room) continue;
     if (s.markers_only) cv::circle(img, {left + pw + 27, ly - 4}, s.hollow ? 5 : 4, colour, s.hollow ? 2 : cv::FILLED, cv::LINE_AA);
     else if (s.dashed)

@@ -1,5 +1,6 @@
 // mmvlab trade: the speed-accuracy trade of a time run (sim/time/trade.hpp).
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -40,6 +41,7 @@ void writeTradePlot(const std::string& path, const TradeStudy& s) {
     auto& series = by[label];
     series.label = label;
     series.markers_only = true;
+    series.hollow = r.modes > 0;  // a modal rung is a ring: never mistaken for an integrator of the same colour
     series.colour_index = colourOf(r);
     series.x.push_back(r.seconds);
     series.y.push_back(std::max(r.error_m, 1e-15));
@@ -52,8 +54,18 @@ void writeTradePlot(const std::string& path, const TradeStudy& s) {
     front.y.push_back(std::max(r->error_m, 1e-15));
   }
   std::vector<render::Series> all;
-  for (auto& [name, series] : by) all.push_back(series);
+  double t0 = INFINITY, t1 = -INFINITY;
+  for (auto& [name, series] : by) {
+    all.push_back(series);
+    for (double x : series.x) t0 = std::min(t0, x), t1 = std::max(t1, x);
+  }
   all.push_back(front);
+  if (s.target_m > 0 && t1 >= t0) {  // the error the cheapest run was named for (issue 36: no target line)
+    render::Series target{strf("target %.2g m", s.target_m), {t0, t1}, {s.target_m, s.target_m}};
+    target.dashed = true;
+    target.colour_index = 13;  // grey
+    all.push_back(target);
+  }
   try {
     figures::linePlot(path, all, "Error against cost: " + s.scene_name + strf(" (%g s run; labels: tolerance)", s.duration),
                       "CPU time (s)", "largest tip position error (m)", true, true);
