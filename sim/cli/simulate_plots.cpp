@@ -96,6 +96,30 @@ void tipPlot(OutputDir& out, const SimulationResult& r, const std::string& title
     figures::linePlot(out.stage("tips.png"), all, "Link tips' motion from where the run starts: " + title, "time (s)", "displacement (mm)");
 }
 
+/// The tips' elastic deflection (history.csv's `_elastic_` columns: position less where
+/// rigid links at the same joint angles would put it), across each link solid and out of
+/// the plane dashed; the slew's rigid metres, which swamp it in tips.png, are not in it.
+void elasticPlot(OutputDir& out, const SimulationResult& r, const std::string& title) {
+  std::vector<render::Series> all;
+  int colour = 1;
+  std::string last_point;
+  for (std::size_t c = 1; c < r.record.columns.size(); ++c) {
+    const std::string& name = r.record.columns[c];
+    const bool across = endsWith(name, "_elastic_across_m"), out_of_plane = endsWith(name, "_elastic_out_m");
+    if (!across && !out_of_plane) continue;
+    const std::string point = name.substr(0, name.find("_elastic_"));
+    if (!last_point.empty() && point != last_point) ++colour;
+    last_point = point;
+    render::Series s = column(r.record, static_cast<int>(c), point + (across ? " across the link" : " out of the plane"), 1e3);
+    s.colour_index = colour;
+    s.dashed = out_of_plane;
+    all.push_back(s);
+  }
+  if (!all.empty())
+    figures::linePlot(out.stage("tips_elastic.png"), all, "Link tips' elastic deflection (rigid motion removed): " + title,
+                      "time (s)", "deflection (mm)");
+}
+
 /// A sensor's full scale as a reader of the figure says it: an encoder's in degrees, a
 /// gyro's in deg/s, an accelerometer's in g (the record's own units stay SI).
 std::string readableRange(double range, const std::string& unit) {
@@ -134,6 +158,7 @@ void writeSimulationPlots(OutputDir& out, const SimulationResult& r, const std::
     torquePlot(out, r, title);
     tablePlot(out, r, title);
     tipPlot(out, r, title);
+    elasticPlot(out, r, title);
     sensorPlot(out, r, title);
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());

@@ -41,6 +41,7 @@ class ArticleRecorder {
     addTableColumns();
     addJointColumns(scene);
     addTipColumns(scene);
+    addElasticColumns();
     addSensors(scene);
     r_.states.columns.push_back("time_s");
     for (const auto& c : model_.getCoordinates())
@@ -48,6 +49,7 @@ class ArticleRecorder {
   }
 
   std::vector<double> sample(double t, const SimTK::State& st);
+  void appendElastic(double t, const SimTK::State& st, std::vector<double>& row);
 
   /// Peaks against capacities, sensor saturation counts.
   void finish() {
@@ -62,6 +64,7 @@ class ArticleRecorder {
   void addTableColumns();
   void addJointColumns(const ArticleScene& scene);
   void addTipColumns(const ArticleScene& scene);
+  void addElasticColumns();
   void addSensors(const ArticleScene& scene);
   double sensorTruth(const LiveSensor& live, const SimTK::State& st) const;
 
@@ -71,6 +74,8 @@ class ArticleRecorder {
   std::vector<int> joints_;
   std::vector<const NamedPoint*> tips_;
   std::vector<PointRef> stations_;  ///< scored stations, after the tips
+  std::vector<SimTK::QIndex> hinge_q_;  ///< every bending hinge's q: zero in `rigid_`
+  std::optional<SimTK::State> rigid_;   ///< the sample's state with unbent links
   std::vector<LiveSensor> sensors_;
 };
 
@@ -136,6 +141,20 @@ void ArticleRecorder::addTipColumns(const ArticleScene& scene) {
   }
 }
 
+/// Each tip's elastic deflection: where it is less where rigid links at the same joint
+/// angles (table, gimbal and every joint as they are, every hinge unbent) would put it,
+/// in that rigid tip's frame (along the link, across it in the plane, out of the plane):
+/// what the flexibility adds to the motion, without the slew's metres (issue 36).
+void ArticleRecorder::addElasticColumns() {
+  for (int i = 0; i < model_.getNumCoordinates(); ++i)
+    if (model_.getCoordinates()[i].kind == CoordinateKind::Hinge) hinge_q_.push_back(SimTK::QIndex(model_.getQIndex(i)));
+  for (const NamedPoint* p : tips_) {
+    r_.record.columns.push_back(p->name + "_elastic_along_m");
+    r_.record.columns.push_back(p->name + "_elastic_across_m");
+    if (model_.isSpatial()) r_.record.columns.push_back(p->name + "_elastic_out_m");
+  }
+}
+
 /// Sensors: true signal -> facility model -> column.
 void ArticleRecorder::addSensors(const ArticleScene& scene) {
   const SimulationSpec& spec = scene.simulation;
@@ -188,6 +207,21 @@ double ArticleRecorder::sensorTruth(const LiveSensor& live, const SimTK::State& 
   return ~f_W * live.point->localAxis(st, live.axis);
 }
 
+void ArticleRecorder::appendElastic(double t, const SimTK::State& st, std::vector<double>& row) {
+  if (tips_.empty()) return;
+  if (!rigid_) rigid_ = st;  // same topology as the run's states from here on
+  rigid_->setTime(t);
+  rigid_->updQ() = st.getQ();
+  for (SimTK::QIndex q : hinge_q_) rigid_->updQ()[q] = 0;
+  model_.getSystem().realize(*rigid_, SimTK::Stage::Position);
+  const int dims = model_.isSpatial() ? 3 : 2;
+  for (const NamedPoint* p : tips_) {
+    const SimTK::Vec3 d_W = model_.findPointLocation(st, *p) - model_.findPointLocation(*rigid_, *p);
+    const SimTK::Vec3 d_B = ~model_.getMatter().getMobilizedBody(p->mobod).getBodyRotation(*rigid_) * d_W;
+    for (int k = 0; k < dims; ++k) row.push_back(d_B[k]);
+  }
+}
+
 std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
   SimTK::Vector motion_forces;
   model_.getMatter().findMotionForces(st, motion_forces);
@@ -223,6 +257,7 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
     const SimTK::Vec3 x = p.position(st);
     for (int k = 0; k < dims; ++k) row.push_back(x[k]);
   }
+  appendElastic(t, st, row);
   for (auto& live : sensors_) row.push_back(live.model.sample(sensorTruth(live, st)));
   std::vector<double> q{t};
   for (int i = 0; i < model_.getNumCoordinates(); ++i) q.push_back(st.getQ()[model_.getQIndex(i)]);
