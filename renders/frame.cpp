@@ -1,5 +1,6 @@
 #include "renders/frame.hpp"
 #include "renders/layout.hpp"
+#include "renders/label_space.hpp"
 
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -26,7 +27,7 @@ constexpr double kNear = 0.01;  ///< m, the near clip distance.
 class Context {
  public:
   Context(int w, int h) : buffer_(static_cast<std::size_t>(w) * h * 4) {
-    ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+    ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
     if (!ctx_) throw std::runtime_error("OSMesa: cannot create a context");
     if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w, h)) {
       OSMesaDestroyContext(ctx_);
@@ -200,7 +201,8 @@ void drawBuffer(const VertexBuffer& vb) {
 void setUpScene(const Camera& camera, int w, int h) {
   glViewport(0, 0, w, h);
   glClearColor(1, 1, 1, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glClearStencil(0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_NORMALIZE);
   glShadeModel(GL_SMOOTH);
@@ -271,63 +273,32 @@ cv::Rect drawColorBar(cv::Mat& img, const ColorBar& bar) {
   return textBox(top, {x0 - 6, y0 - 6}, 0.45) | textBox(bar.title, title_at, 0.45) | cv::Rect(x0 - 6, y0, img.cols - x0 + 6, height);
 }
 
-/// Where a label's text goes (its baseline's left end): beside its point, or the first
-/// place stepping down, then up, then to the left, that overlaps no label already
-/// placed (`taken`, which receives its box).
-cv::Point placeLabel(const std::string& text, const cv::Point2d& p, const cv::Size& frame, std::vector<cv::Rect>& taken) {
-  int base = 0;
-  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.42, 1, &base);
-  const int step = size.height + base + 2;
-  auto boxAt = [&](cv::Point o) { return cv::Rect(o.x, o.y - size.height - 1, size.width, step); };
-  auto free = [&](const cv::Rect& r) {
-    for (const auto& t : taken)
-      if ((r & t).area() > 0) return false;
-    return true;
-  };
-  const cv::Point right(static_cast<int>(p.x) + 6, static_cast<int>(p.y) - 6), left(static_cast<int>(p.x) - 6 - size.width, right.y);
-  // Nowhere free: beside its point, moved inside the frame.
-  cv::Point chosen(std::clamp(right.x, 0, std::max(0, frame.width - size.width)),
-                   std::clamp(right.y, size.height + 1, std::max(size.height + 1, frame.height - base)));
-  bool found = false;
-  for (int k = 0; k < 24 && !found; ++k)
-    for (const cv::Point& side : {right, left}) {
-      const int shift = (k % 2 == 0 ? 1 : -1) * ((k + 1) / 2) * step;  // 0, -1, +1, -2, ... lines
-      const cv::Point o(side.x, side.y + shift);
-      if (o.y - size.height < 0 || o.y + base > frame.height || o.x < 0 || o.x + size.width > frame.width || !free(boxAt(o)))
-        continue;
-      chosen = o;
-      found = true;
-      break;
-    }
-  taken.push_back(boxAt(chosen));
-  return chosen;
-}
-
-void annotate(cv::Mat& img, const DrawList& list, const Camera& camera) {
+void annotate(cv::Mat& img, const DrawList& list, const Camera& camera, const cv::Mat& ink) {
   double title_scale = 0.6;  // a long title (a small frame, a contact sheet's tile) is set smaller, never cut
   for (int base = 0; title_scale > 0.3 && cv::getTextSize(list.title, cv::FONT_HERSHEY_SIMPLEX, title_scale, 1, &base).width > img.cols - 28;)
     title_scale *= 0.93;
   putTextLogged(img, list.title, {14, 26}, title_scale, cv::Scalar(0, 0, 0));
   // The legend, the scale bar and the colour bar first: labels keep clear of them (and of
   // the title).
-  std::vector<cv::Rect> taken{cv::Rect(0, 0, img.cols, 34)};
+  LabelSpace space(img.size(), ink);
+  std::vector<cv::Rect>& taken = space.taken;
+  taken.emplace_back(0, 0, img.cols, kTitleBand);
   taken.push_back(drawScaleBar(img, camera));
   if (list.has_color_bar) taken.push_back(drawColorBar(img, list.color_bar));
-  int y = 50, widest = 0;
+  int y = kLegendFirstRow;
   for (const auto& [name, color] : list.legend) {
     cv::rectangle(img, {14, y - 10}, {26, y + 2}, bgr(color), -1);
     putTextLogged(img, name, {32, y}, 0.45, cv::Scalar(0, 0, 0));
-    int base = 0;
-    widest = std::max(widest, cv::getTextSize(name, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &base).width);
-    y += 18;
+    y += kLegendRow;
   }
-  if (!list.legend.empty()) taken.emplace_back(0, 34, 32 + widest + 4, y - 34);
+  if (!list.legend.empty()) taken.push_back(legendArea(list));
   for (const auto& l : list.labels) {
     cv::Point2d p;
     // A point out of the picture (the lab's ceiling above a close view): its label too.
+    if (l.room && !camera.room) continue;
     if (!projectPoint(camera, img.cols, img.rows, l.at, p) || p.x < 0 || p.y < 0 || p.x >= img.cols || p.y >= img.rows) continue;
     cv::circle(img, p, 3, bgr(l.rgba), -1, cv::LINE_AA);
-    const cv::Point text = placeLabel(l.text, p, img.size(), taken);
+    const cv::Point text = placeLabel(l.text, p, space);
     if (std::abs(text.y - 4 - p.y) > 8 || text.x < p.x)  // moved away: a leader line to its point
       cv::line(img, p, cv::Point(text.x < p.x ? text.x + taken.back().width : text.x, text.y - 4), bgr(l.rgba), 1, cv::LINE_AA);
     putTextLogged(img, l.text, text, 0.42, bgr(l.rgba));
@@ -350,7 +321,8 @@ int effectiveSupersample(const FrameOptions& o) {
 }
 
 
-cv::Mat renderFrame(const DrawList& list, const Camera& camera, const FrameOptions& o) {
+cv::Mat renderFrame(const DrawList& list, const Camera& preset, const FrameOptions& o) {
+  const Camera camera = framedCamera(preset, list, o.width, o.height);
   const int k = effectiveSupersample(o), w = o.width * k, h = o.height * k;
   // One context per thread, made anew only when the size changes (an animation's
   // frames share it; creating one costs more than drawing a frame).
@@ -365,16 +337,42 @@ cv::Mat renderFrame(const DrawList& list, const Camera& camera, const FrameOptio
   }
   const Context& ctx = *cached;
   setUpScene(camera, w, h);
-  VertexBuffer opaque, translucent;
-  for (const auto& it : list.items) appendItem(it.rgba[3] >= 1 ? opaque : translucent, it, list);
+  // Opaque surroundings, then the opaque rest marking its pixels in the stencil, then
+  // the translucent rest, then translucent surroundings only where nothing is marked: a
+  // translucent platform over the article would grey it (issue 36: slew.png).
+  VertexBuffer opaque_context, opaque, translucent, translucent_context;
+  for (const auto& it : list.items) {
+    if (it.room && !camera.room) continue;
+    const bool solid = it.rgba[3] >= 1;
+    appendItem(it.context ? (solid ? opaque_context : translucent_context) : (solid ? opaque : translucent), it, list);
+  }
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  drawBuffer(opaque_context);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   drawBuffer(opaque);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthMask(GL_FALSE);
   drawBuffer(translucent);
+  glStencilFunc(GL_NOTEQUAL, 1, 0xFF);
+  drawBuffer(translucent_context);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
   glFinish();
+  // What the opaque drawing marked (the article, not its surroundings), at the frame's
+  // size: labels keep off it where they can.
+  cv::Mat ink;
+  if (!list.labels.empty()) {
+    cv::Mat stencil(h, w, CV_8UC1), small_stencil;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data);
+    cv::resize(stencil, small_stencil, cv::Size(o.width, o.height), 0, 0, cv::INTER_AREA);
+    cv::flip(small_stencil, ink, 0);
+  }
   // Reduce first (area averaging of the k x k samples), then convert and flip the
   // small image: OpenGL's rows run bottom-up.
   const cv::Mat rgba(h, w, CV_8UC4, const_cast<unsigned char*>(ctx.buffer().data()));
@@ -383,7 +381,7 @@ cv::Mat renderFrame(const DrawList& list, const Camera& camera, const FrameOptio
   cv::cvtColor(small, bgr_small, cv::COLOR_RGBA2BGR);
   cv::flip(bgr_small, out, 0);
   layoutNewImage(out.cols, out.rows, "frame");
-  annotate(out, list, camera);
+  annotate(out, list, camera, ink);
   return out;
 }
 

@@ -41,6 +41,18 @@ void checkFrameMemory(int w, int h, int width, int height);
 /// when the machine has less memory available than the frame needs (named).
 cv::Mat renderFrame(const DrawList& list, const Camera& camera, const FrameOptions& options);
 
+/// The frame's annotation layout (pixels): the title's band at the top, the legend's
+/// rows (a swatch and a name each) from its first baseline, what the colour bar takes
+/// at the right and the scale bar at the bottom.
+constexpr int kTitleBand = 34, kLegendFirstRow = 50, kLegendRow = 18, kColorBarReserve = 84, kScaleBarReserve = 48;
+/// The box the legend of `list` takes (empty without a legend).
+cv::Rect legendArea(const DrawList& list);
+/// The camera renderFrame draws with: a preset camera (Camera::fit_preset) framed again
+/// so that what it frames fills the part of a width x height picture the legend, the
+/// title, the colour bar and the scale bar leave free (beside the legend or under it,
+/// whichever draws it larger); any other camera as it is. Project points with this one.
+Camera framedCamera(const Camera& camera, const DrawList& list, int width, int height);
+
 /// The pixel (x right, y down, from the top-left corner) where world point `p` lands in
 /// a frame of width x height from `camera`; false when it is behind the camera.
 bool projectPoint(const Camera& camera, int width, int height, const Eigen::Vector3d& p, cv::Point2d& pixel);

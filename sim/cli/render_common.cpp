@@ -51,6 +51,7 @@ Camera chooseCamera(const std::string& view, const DrawList& d, const std::vecto
   if (view == "lab") {  // the whole room, the article in it
     if (!d.hasContext()) throw UsageError("--view lab: the scene has no lab: section (docs/scene-format.md)");
     presetCamera("iso", d.bounds(true), camera, d.up);
+    camera.room = true;
     return camera;
   }
   std::string names;

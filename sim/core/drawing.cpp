@@ -1,6 +1,7 @@
 #include "sim/core/drawing.hpp"
 
 #include <cmath>
+#include <vector>
 
 namespace mmv {
 
@@ -40,7 +41,8 @@ Eigen::Isometry3d poseAlong(const Eigen::Vector3d& centre, const Eigen::Vector3d
   return T;
 }
 
-bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& c, const Eigen::Vector3d& up) {
+bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Camera& c, const Eigen::Vector3d& up,
+                  const ViewWindow& window) {
   // Directions for +y up, then turned so that +y becomes `up` (+z up: x stays, y -> z, z -> -y).
   Eigen::Vector3d dir, cam_up = Eigen::Vector3d::UnitY();
   if (name == "front") dir = Eigen::Vector3d(0, 0, 1);
@@ -54,10 +56,36 @@ bool presetCamera(const std::string& name, const Eigen::AlignedBox3d& bounds, Ca
     cam_up = turn(cam_up);
   }
   c.up = cam_up;
-  c.target = bounds.center();
-  const double radius = std::max(0.5 * bounds.diagonal().norm(), 0.05);
-  const double half = 0.5 * c.fov_deg * M_PI / 180;
-  c.eye = c.target + dir * (1.15 * radius / std::sin(half));
+  c.fit_preset = name;
+  c.fit_bounds = bounds;
+  c.fit_up = up;
+  // Camera axes: s to the right, u up the picture, dir toward the camera.
+  const Eigen::Vector3d s = (-dir).cross(cam_up).normalized(), u = s.cross(-dir);
+  const double tan_v = std::tan(0.5 * c.fov_deg * M_PI / 180), tan_h = tan_v * window.aspect;
+  const double hx = 0.45 * (window.x1 - window.x0), hy = 0.45 * (window.y1 - window.y0);  // 90 % of the window
+  const double cx = 0.5 * (window.x0 + window.x1), cy = 0.5 * (window.y0 + window.y1);
+  const Eigen::Vector3d centre = bounds.center();
+  std::vector<Eigen::Vector3d> corners;  // from the centre
+  for (int k = 0; k < 8; ++k)
+    corners.push_back(bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)) - centre);
+  // The distance at which every corner's |offset| / depth fits the window's half-size
+  // (centred), then grown until the shifted picture keeps every corner inside.
+  double D = 0.05 / tan_v;
+  for (const auto& p : corners)
+    D = std::max({D, p.dot(dir) + std::abs(p.dot(s)) / (hx * tan_h), p.dot(dir) + std::abs(p.dot(u)) / (hy * tan_v)});
+  for (int pass = 0; pass < 60; ++pass) {
+    const Eigen::Vector3d shift = -s * (cx * D * tan_h) - u * (cy * D * tan_v);  // the box's centre to (cx, cy)
+    bool inside = true;
+    for (const auto& p : corners) {
+      const double depth = D - p.dot(dir);
+      const double x = (p - shift).dot(s) / (depth * tan_h), y = (p - shift).dot(u) / (depth * tan_v);
+      inside = inside && depth > 0 && x >= window.x0 && x <= window.x1 && y >= window.y0 && y <= window.y1;
+    }
+    c.target = centre + shift;
+    c.eye = c.target + dir * D;
+    if (inside) break;
+    D *= 1.05;
+  }
   return true;
 }
 

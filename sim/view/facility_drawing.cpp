@@ -44,17 +44,21 @@ void addLab(DrawList& d, const facility::LabSpec& lab, const Eigen::Vector3d& ba
   const facility::LabLevels y = facility::labLevels(lab, base.y());
   auto at = [&](double height) { return Eigen::Vector3d(base.x(), height, base.z()); };
   d.items.push_back(box(at(y.floor - 0.05), {lab.floor_length, 0.1, lab.floor_width}, kFloor));
+  d.items.back().room = true;
   addPlatform(d, lab, base, y.platform_top);
   d.items.push_back(box(at(y.ceiling + 0.05), {lab.floor_length, 0.1, lab.floor_width}, kCeiling));
+  d.items.back().room = true;
   const Eigen::Vector3d edge(0.5 * lab.platform_length, 0, 0.5 * lab.platform_width);
   d.labels.push_back({at(y.platform_top) + edge,
                       strf("platform top %.2f m above the floor, hole %.2f m square", lab.platform_height, lab.hole_side),
                       {0.2f, 0.2f, 0.2f, 1}});
   d.labels.push_back({at(y.floor) + Eigen::Vector3d(0.5 * lab.floor_length, 0, 0.5 * lab.floor_width),
                       strf("floor %.1f m x %.1f m", lab.floor_length, lab.floor_width), {0.2f, 0.2f, 0.2f, 1}});
+  d.labels.back().room = true;
   d.labels.push_back({at(y.ceiling) + Eigen::Vector3d(0.5 * lab.floor_length, 0, 0.5 * lab.floor_width),
                       strf("ceiling %.1f m", lab.ceiling_height), {0.2f, 0.2f, 0.2f, 1}});
-  d.legend.push_back({"lab: floor, platform and its hole, ceiling", kFloor});
+  d.labels.back().room = true;
+  d.legend.push_back({"lab: platform and its hole (floor and ceiling: --view lab)", kFloor});
   for (std::size_t i = first_item; i < d.items.size(); ++i) d.items[i].context = true;
   for (std::size_t i = first_label; i < d.labels.size(); ++i) d.labels[i].context = true;
 }

@@ -56,7 +56,7 @@ TEST_F(Frame, PointsLandWhereTheProjectionSays) {
     ASSERT_TRUE(presetCamera(view, d.bounds(), c));
     const cv::Mat img = render::renderFrame(d, c, {400, 300, 2});
     cv::Point2d p;
-    ASSERT_TRUE(render::projectPoint(c, 400, 300, at, p)) << view;
+    ASSERT_TRUE(render::projectPoint(render::framedCamera(c, d, 400, 300), 400, 300, at, p)) << view;
     const cv::Vec3b px = img.at<cv::Vec3b>(static_cast<int>(p.y), static_cast<int>(p.x));
     EXPECT_GT(px[2], 100) << view << ": " << px;        // red dominant (BGR)
     EXPECT_GT(px[2], px[1] + 60) << view << ": " << px;
@@ -73,6 +73,43 @@ TEST_F(Frame, PointsLandWhereTheProjectionSays) {
   EXPECT_GT(c.eye.z(), c.target.z());
 }
 
+// The article's front view at 960 x 540 fills the part of the picture its legend leaves
+// free, and stays out of the legend: its projected box is at least 80 % of the free
+// height (the sphere that framed it before gave 320 of 540 pixels, under the legend's
+// text; issue 36: article.png was about 70 % white). The scene's `views:` cameras are
+// drawn as given.
+TEST_F(Frame, PresetFramesTheArticleBesideItsLegend) {
+  const ArticleScene scene = loadDefaultScene();
+  const SolvedScene solved = solveScene(scene);
+  SimTK::State eq = solved.equilibrium.state;
+  solved.model->getSystem().realize(eq, SimTK::Stage::Position);
+  const DrawList d = drawArticle(scene, *solved.model, eq);
+  ASSERT_FALSE(d.legend.empty());
+  Camera c;
+  ASSERT_TRUE(presetCamera("front", d.bounds(), c, d.up));
+  const int w = 960, h = 540;
+  const Camera f = render::framedCamera(c, d, w, h);
+  double x0 = w, x1 = 0, y0 = h, y1 = 0;
+  for (int k = 0; k < 8; ++k) {
+    cv::Point2d p;
+    ASSERT_TRUE(render::projectPoint(f, w, h, d.bounds().corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)), p));
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  }
+  const cv::Rect2d box(x0, y0, x1 - x0, y1 - y0);
+  const cv::Rect legend = render::legendArea(d);
+  EXPECT_EQ((box & cv::Rect2d(legend)).area(), 0.0) << "the article under the legend";
+  EXPECT_GE(box.x, 0);
+  EXPECT_LE(box.x + box.width, w);
+  EXPECT_GE(box.y, render::kTitleBand);
+  EXPECT_LE(box.y + box.height, h - render::kScaleBarReserve);
+  EXPECT_GE(box.height, 0.8 * (h - render::kTitleBand - render::kScaleBarReserve));
+  Camera own;  // a camera a scene names: drawn as it stands
+  own.eye = {1, 2, 9};
+  const Camera same = render::framedCamera(own, d, w, h);
+  EXPECT_EQ(same.eye, own.eye);
+  EXPECT_EQ(same.target, own.target);
+}
+
 // Mode 1 of the default article at phases +1 and -1: the pixel of link 2's tip on the
 // +1 shape is covered there and white on the -1 frame (it moves 0.4 m, many pixels),
 // while the base joint (a node: the joint is held) looks the same in both.
@@ -86,6 +123,8 @@ TEST_F(Frame, ModeShapeMovesWhereTheShapeSaysAndNotAtNodes) {
   ASSERT_TRUE(presetCamera("front", plus.bounds(), c));
   const render::FrameOptions o{640, 480, 2};
   const cv::Mat a = render::renderFrame(plus, c, o), b = render::renderFrame(minus, c, o);
+  ASSERT_EQ(plus.legend, minus.legend);  // one framing for both
+  c = render::framedCamera(c, plus, o.width, o.height);
   SimTK::State eq = solved.equilibrium.state;
   solved.model->getSystem().realize(eq, SimTK::Stage::Position);
   std::string error;
