@@ -95,10 +95,12 @@ class Result:
 
 
 class ModesResult(Result):
-    """The system modes. Arrays: `frequencies_hz`, `modal_masses_kg`, and, for the
-    article, `shapes[mode, point, component]` at `shape_points` with `shape_components`
-    (per unit modal coordinate: m or rad per unit q; NaN where a point has no such
-    component, e.g. the rotation at a hinge between two pieces, which has two)."""
+    """The system modes. Arrays: `frequencies_hz`, `modal_masses_kg`, and
+    `shapes[mode, point, component]` at `shape_points` with `shape_components` (per unit
+    modal coordinate: m or rad per unit q; NaN where a point has no such component, e.g.
+    the rotation at a hinge between two pieces, which has two). On HAM-SAS the "points"
+    are the moving bodies and the components `tx ty tz rx ry rz` (translation, small
+    rotation; world axes)."""
 
     def __init__(self, json_text, text, csv):
         super().__init__(json_text, text)
@@ -136,7 +138,11 @@ class ModesResult(Result):
         only for frequencies does not pay for them)."""
         if self._shapes is None:
             shapes = [m.get("shape") for m in self.json.get("modes", [])]
-            if shapes and all(shapes):
+            if shapes and all(shapes) and "body" in shapes[0][0]:  # HAM-SAS: a body's translation and rotation
+                points = [b["body"] for b in shapes[0]]
+                array = _np.array([[b["translation"] + b["rotation"] for b in s] for s in shapes], dtype=float)
+                self._shapes = (points, ["tx", "ty", "tz", "rx", "ry", "rz"], array)
+            elif shapes and all(shapes):
                 points = [p["point"] for p in shapes[0]]
                 components = {}  # every component some point has, in the JSON's order
                 for p in shapes[0]:

@@ -89,6 +89,12 @@ def test_hamsas_modes_equal_the_cli_json():
     py = mmvlab.modes(mmvlab.load_scene(scene_path("hamsas.yaml")), modes=0)
     assert without_timing(py.json) == without_timing(cli_json("modes", scene_path("hamsas.yaml"), "--modes", "0"))
     assert py.shapes.shape[0] == len(py.frequencies_hz)
+    # Each moving body's six motions, as modes.json's shape lists them.
+    assert py.shape_components == ["tx", "ty", "tz", "rx", "ry", "rz"]
+    assert py.shapes.shape == (len(py.frequencies_hz), len(py.json["modes"][0]["shape"]), 6)
+    first = py.json["modes"][0]["shape"][0]
+    assert py.shape_points[0] == first["body"]
+    assert list(py.shapes[0, 0]) == first["translation"] + first["rotation"]
 
 
 def test_frf_equals_the_cli_json_and_its_csv(tmp_path):

@@ -90,6 +90,7 @@ ModesStudy runModesStudy(const Scene& scene, const ModesRequest& r) {
     s.json = hamsasModesJson(h, m, r.modes);
     s.text = hamsasModesText(h, m, r.modes);
     s.csv = hamsasModesCsv(m, r.modes);
+    s.vtp = hamsasModesVtp(h, m, r.modes);
   }
   checkResultFinite(s.json);  // before any file is committed or any result returned
   checkResultFinite(s.text);

@@ -109,15 +109,29 @@ DrawAt articleFrames(const RunDir& run, std::shared_ptr<Model>& model) {
 
 /// A HAM-SAS run: each body moved by its recorded motion, magnified so the largest
 /// translation over the run is 10 % of the isolator's extent (its motions are microns).
-DrawAt isolatorFrames(const RunDir& run, std::shared_ptr<HamsasModes>& h) {
-  h = std::make_shared<HamsasModes>(analyseHamsas(run.isolator->isolator));
-  const std::size_t bodies = h->model.bodies.size();
+/// The isolator's bodies of `run`'s scene, checked against the run's states.csv.
+std::shared_ptr<HamsasModes> isolatorOfRun(const RunDir& run) {
+  auto h = std::make_shared<HamsasModes>(analyseHamsas(run.isolator->isolator));
   std::vector<std::string> want{"time_s"};
   for (const auto& body : h->model.bodies)
     for (const char* q : {"_x_m", "_y_m", "_z_m", "_rx_rad", "_ry_rad", "_rz_rad"}) want.push_back(csvColumnName(body.name + q));
   if (want != run.states.columns)
     throw SceneError(run.dir + "/states.csv: the run's columns are not the bodies of " + run.isolator->source +
                      ": render a run with the scene it was made with");
+  return h;
+}
+
+/// Every body's recorded motion at t (between the samples around it).
+std::vector<BodyMotion> isolatorMotionAt(const RunDir& run, std::size_t bodies, double t) {
+  const std::vector<double> row = rowAt(run.states, t);
+  std::vector<BodyMotion> motion(bodies);
+  for (std::size_t b = 0; b < bodies; ++b) motion[b] = Eigen::Map<const BodyMotion>(row.data() + 1 + 6 * b);
+  return motion;
+}
+
+DrawAt isolatorFrames(const RunDir& run, std::shared_ptr<HamsasModes>& h) {
+  h = isolatorOfRun(run);
+  const std::size_t bodies = h->model.bodies.size();
   double peak = 0;
   for (const auto& row : run.states.rows)
     for (std::size_t b = 0; b < bodies; ++b)
@@ -126,27 +140,64 @@ DrawAt isolatorFrames(const RunDir& run, std::shared_ptr<HamsasModes>& h) {
   for (const auto& b : h->model.bodies) extent.extend(b.com);
   const double scale = peak > 0 ? 0.1 * std::max(extent.diagonal().norm(), 0.5) / peak : 1.0;
   return [&run, h, bodies, scale](double t) {
-    const std::vector<double> row = rowAt(run.states, t);
-    std::vector<BodyMotion> motion(bodies);
-    for (std::size_t b = 0; b < bodies; ++b) motion[b] = Eigen::Map<const BodyMotion>(row.data() + 1 + 6 * b);
-    return drawHamsasMoved(*run.isolator, *h, motion, scale, strf("t = %.3f s (motion x %.3g)", t, scale));
+    return drawHamsasMoved(*run.isolator, *h, isolatorMotionAt(run, bodies, t), scale, strf("t = %.3f s (motion x %.3g)", t, scale));
   };
 }
 
+/// A run's geometry at a time for its .pvd: the points (xyz, m) and the frame's file
+/// from them, its displacement from the first frame and its time.
+struct PvdFrames {
+  std::function<std::vector<double>(double t)> points;
+  std::function<std::string(const std::vector<double>& xyz, const std::vector<double>& moved, double t)> file;
+};
+
+PvdFrames articlePvd(const RunDir& run) {
+  std::shared_ptr<Model> model = buildArticleModel(run.scene);
+  checkRunModel(run, *model);
+  auto state = std::make_shared<SimTK::State>(model->getReferenceState());
+  auto names = std::make_shared<std::vector<std::string>>();
+  for (const NamedPoint& p : model->getPoints()) names->push_back(p.name);
+  PvdFrames f;
+  f.points = [&run, model, state](double t) {
+    setRunPose(rowAt(run.states, t), t, *model, *state);
+    model->getSystem().realize(*state, SimTK::Stage::Position);
+    std::vector<double> xyz;
+    for (const NamedPoint& p : model->getPoints()) {
+      const SimTK::Vec3 x = model->getMatter().getMobilizedBody(p.mobod).findStationLocationInGround(*state, p.station_B);
+      xyz.insert(xyz.end(), {x[0], x[1], x[2]});
+    }
+    return xyz;
+  };
+  f.file = [&run, names](const std::vector<double>& xyz, const std::vector<double>& moved, double t) {
+    return articlePoseVtp(*names, xyz, moved, run.scene.article, t);
+  };
+  return f;
+}
+
+/// HAM-SAS: each moving body's box (as modes.vtp has them) moved by its recorded motion,
+/// true to scale (the videos magnify it; a .pvd leaves that to Warp By Vector).
+PvdFrames isolatorPvd(const RunDir& run) {
+  const std::shared_ptr<HamsasModes> h = isolatorOfRun(run);
+  PvdFrames f;
+  f.points = [&run, h](double t) { return hamsasCorners(h->model, isolatorMotionAt(run, h->model.bodies.size(), t)); };
+  f.file = [h](const std::vector<double>& xyz, const std::vector<double>& moved, double t) {
+    return hamsasPoseVtp(h->model, xyz, moved, t);
+  };
+  return f;
+}
+
 /// FILE.pvd: the run's frames (those a video at --fps and --speed would show) as VTK
-/// files in FILE_frames/ beside it, each the article's points at its time, and the
-/// collection that lists them with their times. The frames are one transaction
-/// (OutputDir); the collection is written last, and a failure there puts the frames back.
+/// files in FILE_frames/ beside it, each the article's points (or the isolator's boxes)
+/// at its time, and the collection that lists them with their times. The frames are one
+/// transaction (OutputDir); the collection is written last, and a failure there puts the
+/// frames back.
 void writeRunPvd(const RenderArgs& args, const RunDir& run) {
   for (const char* o : {"--traces", "--at", "--size", "--view"})
     if (args.given.count(o)) throw UsageError(std::string("render --history --out FILE.pvd: ") + o + " draws pictures; a .pvd holds the geometry (drop it)");
-  if (run.isolator) throw UsageError("render --history --out FILE.pvd: the article's runs only (the isolator's bodies are not written as VTK yet)");
   const fs::path pvd(args.out);
   std::error_code ec;
   if (fs::exists(pvd, ec) && !args.force) throw OutputError(args.out + ": exists (use --force to replace it)");
-  std::shared_ptr<Model> model = buildArticleModel(run.scene);
-  checkRunModel(run, *model);
-  SimTK::State state = model->getReferenceState();
+  const PvdFrames geometry = run.isolator ? isolatorPvd(run) : articlePvd(run);
   const double t0 = run.states.rows.front()[0], t1 = run.states.rows.back()[0];
   const double frames = std::floor((t1 - t0) / args.speed * args.fps) + 1;
   if (frames > kMaxFrames)
@@ -155,26 +206,18 @@ void writeRunPvd(const RenderArgs& args, const RunDir& run) {
   const std::string folder = pvd.stem().string() + "_frames";
   OutputDir out((pvd.has_parent_path() ? pvd.parent_path() / folder : fs::path(folder)).string(), args.force);
   out.reportAsOne("frames (.vtp)");
-  std::vector<std::string> names;
-  for (const NamedPoint& p : model->getPoints()) names.push_back(p.name);
   std::vector<double> first;
   std::vector<std::pair<double, std::string>> listed;
   const ProgressStage stage("writing the run's frames");
   for (int k = 0; k < static_cast<int>(frames); ++k) {
     progressCount(k + 1, static_cast<long>(frames), "frame");
     const double t = t0 + k * args.speed / args.fps;
-    setRunPose(rowAt(run.states, t), t, *model, state);
-    model->getSystem().realize(state, SimTK::Stage::Position);
-    std::vector<double> xyz;
-    for (const NamedPoint& p : model->getPoints()) {
-      const SimTK::Vec3 x = model->getMatter().getMobilizedBody(p.mobod).findStationLocationInGround(state, p.station_B);
-      xyz.insert(xyz.end(), {x[0], x[1], x[2]});
-    }
+    const std::vector<double> xyz = geometry.points(t);
     if (first.empty()) first = xyz;
     std::vector<double> moved(xyz.size());
     for (std::size_t i = 0; i < xyz.size(); ++i) moved[i] = xyz[i] - first[i];
     const std::string name = strf("frame_%05d.vtp", k);
-    out.write(name, articlePoseVtp(names, xyz, moved, run.scene.article, t));
+    out.write(name, geometry.file(xyz, moved, t));
     listed.emplace_back(t, folder + "/" + name);
   }
   out.commit();

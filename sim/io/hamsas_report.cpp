@@ -147,6 +147,21 @@ const std::vector<Field<HamsasModeRow>>& hamsasModeFields() {
        [](const Row& r) -> Opt { return json(r.h->modes[r.i].strain_share); }},
       {"preload_over_elastic", "1", "%.6g", "the preloads' work over the elastic strain energy (gravity_%)",
        [](const Row& r) -> Opt { return json(r.h->modes[r.i].preload_over_elastic); }},
+      {"shape", "kg^-1/2", nullptr,
+       "each moving body's translation (m) and small rotation (rad), world axes, per unit modal coordinate of the "
+       "mass-normalised shape",
+       [](const Row& r) -> Opt {
+         json bodies = json::array();
+         const auto& spec = r.h->model;
+         for (std::size_t b = 1; b < spec.bodies.size(); ++b) {
+           const int row = SpatialLinearization::row(static_cast<int>(b));
+           const auto phi = r.h->solution.shapes.col(r.i);
+           bodies.push_back({{"body", spec.bodies[b].name},
+                             {"translation", {phi(row), phi(row + 1), phi(row + 2)}},
+                             {"rotation", {phi(row + 3), phi(row + 4), phi(row + 5)}}});
+         }
+         return bodies;
+       }},
   };
   // clang-format on
   return fields;

@@ -8,6 +8,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/text.hpp"
 #include "sim/io/placement_geometry.hpp"
+#include "sim/hamsas/spatial_linear.hpp"
 #include "sim/io/report.hpp"
 
 namespace mmv {
@@ -56,9 +57,10 @@ class PolyData {
   }
   void verts(Cells c) { verts_ = std::move(c); }
   void lines(Cells c) { lines_ = std::move(c); }
-  /// One value per cell, verts first, then lines.
+  void polys(Cells c) { polys_ = std::move(c); }
+  /// One value per cell, verts first, then lines, then polygons.
   void cellInts(const std::string& name, const std::vector<long>& v) {
-    MMV_DEMAND(v.size() == verts_.size() + lines_.size());
+    MMV_DEMAND(v.size() == verts_.size() + lines_.size() + polys_.size());
     cell_ << dataArray("Int64", name, 1) << integers(v) << "\n        </DataArray>\n";
   }
 
@@ -68,13 +70,15 @@ class PolyData {
        << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
        << "  <PolyData>\n    <FieldData>\n" << field_.str() << "    </FieldData>\n"
        << "    <Piece NumberOfPoints=\"" << points_.size() / 3 << "\" NumberOfVerts=\"" << verts_.size() << "\" NumberOfLines=\""
-       << lines_.size() << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+       << lines_.size() << "\" NumberOfStrips=\"0\" NumberOfPolys=\"" << polys_.size() << "\">\n"
        << "      <Points>\n" << dataArray("Float64", "Points", 3) << numbers(points_) << "\n        </DataArray>\n      </Points>\n"
        << "      <PointData";
     if (!active_vectors.empty()) os << " Vectors=\"" << active_vectors << "\"";
     if (!active_scalars.empty()) os << " Scalars=\"" << active_scalars << "\"";
     os << ">\n" << point_.str() << "      </PointData>\n      <CellData>\n" << cell_.str() << "      </CellData>\n";
-    for (const auto& [tag, cells] : {std::pair<const char*, const Cells*>{"Verts", &verts_}, {"Lines", &lines_}}) {
+    for (const auto& [tag, cells] :
+         {std::pair<const char*, const Cells*>{"Verts", &verts_}, {"Lines", &lines_}, {"Polys", &polys_}}) {
+      if (cells == &polys_ && polys_.empty()) continue;  // the article's files have none
       std::vector<long> connectivity, offsets;
       for (const auto& cell : *cells) {
         connectivity.insert(connectivity.end(), cell.begin(), cell.end());
@@ -110,7 +114,7 @@ class PolyData {
   std::string what_;
   std::ostringstream field_, point_, cell_;
   std::vector<double> points_;
-  Cells verts_, lines_;
+  Cells verts_, lines_, polys_;
 };
 
 std::string modeArrayName(int number, double frequency_hz, bool rigid, bool stable) {
@@ -254,6 +258,105 @@ std::string placementVtp(const PlacementStudy& s) {
   vtp.verts(std::move(verts));
   vtp.cellInts("channel", channel);
   return vtp.text("direction", "");
+}
+
+namespace {
+
+/// The isolator's moving bodies (not the base, whose motion is prescribed) as their
+/// equivalent boxes: 8 corners a body, corner k at the centre + side / 2 * (+-1, +-1,
+/// +-1) by the bits of k (x, y, z), 6 faces wound outward.
+struct HamsasBoxes {
+  std::vector<Eigen::Vector3d> corners;  ///< at the design configuration, world
+  std::vector<long> point_body, face_body;
+  PolyData::Cells faces;
+};
+
+HamsasBoxes hamsasBoxes(const SpatialSpec& spec) {
+  constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  HamsasBoxes g;
+  for (std::size_t b = 1; b < spec.bodies.size(); ++b) {
+    const Eigen::Vector3d half = 0.5 * equivalentBox(spec.bodies[b]);
+    const long first = static_cast<long>(g.corners.size());
+    for (int k = 0; k < 8; ++k) {
+      g.corners.push_back(spec.bodies[b].com +
+                          Eigen::Vector3d((k & 1) ? half.x() : -half.x(), (k & 2) ? half.y() : -half.y(), (k & 4) ? half.z() : -half.z()));
+      g.point_body.push_back(static_cast<long>(b));
+    }
+    for (const auto& f : kFaces) {
+      g.faces.push_back({first + f[0], first + f[1], first + f[2], first + f[3]});
+      g.face_body.push_back(static_cast<long>(b));
+    }
+  }
+  return g;
+}
+
+/// The boxes' faces and `body_index` (points and cells) and `body_names` over points
+/// already set.
+void addBoxes(PolyData& vtp, const SpatialSpec& spec, HamsasBoxes g) {
+  std::vector<std::string> names;
+  for (const SpatialBody& b : spec.bodies) names.push_back(b.name);
+  vtp.fieldStrings("body_names", names);
+  vtp.pointInts("body_index", g.point_body);
+  vtp.polys(std::move(g.faces));
+  vtp.cellInts("body_index", g.face_body);
+}
+
+std::vector<double> flat(const std::vector<Eigen::Vector3d>& v) {
+  std::vector<double> xyz;
+  for (const auto& p : v) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  return xyz;
+}
+
+}  // namespace
+
+std::string hamsasModesVtp(const HamsasScene& scene, const HamsasModes& h, int max_modes) {
+  const SpatialSpec& spec = h.model;
+  const int all = static_cast<int>(h.modes.size()), n = max_modes > 0 ? std::min(max_modes, all) : all;
+  PolyData vtp("the isolator's bodies at the design configuration and its modes, modes.vtp");
+  std::vector<double> hz;
+  for (int i = 0; i < n; ++i) hz.push_back(h.modes[static_cast<std::size_t>(i)].frequency_hz);
+  vtp.fieldFloats("frequency_hz", hz);
+  vtp.fieldStrings("scene", {scene.name, scene.source, std::string("mmvlab ") + mmvlabVersion()});
+  HamsasBoxes g = hamsasBoxes(spec);
+  vtp.points(flat(g.corners));
+  // A corner's translation per unit modal coordinate: the body's t + w x (corner - centre).
+  for (int i = 0; i < n; ++i) {
+    const Eigen::VectorXd phi = h.solution.shapes.col(i);
+    std::vector<double> u;
+    for (std::size_t p = 0; p < g.corners.size(); ++p) {
+      const int b = static_cast<int>(g.point_body[p]);
+      const int r = SpatialLinearization::row(b);
+      const Eigen::Vector3d d = phi.segment<3>(r) + phi.segment<3>(r + 3).cross(g.corners[p] - spec.bodies[static_cast<std::size_t>(b)].com);
+      u.insert(u.end(), {d.x(), d.y(), d.z()});
+    }
+    vtp.pointFloats(modeArrayName(i + 1, hz[static_cast<std::size_t>(i)], false, h.solution.isStable(i)), 3, u);
+  }
+  addBoxes(vtp, spec, std::move(g));
+  return vtp.text(n > 0 ? modeArrayName(1, hz[0], false, h.solution.isStable(0)) : "", "");
+}
+
+std::vector<double> hamsasCorners(const SpatialSpec& spec, const std::vector<Eigen::Matrix<double, 6, 1>>& motion) {
+  MMV_DEMAND(motion.size() == spec.bodies.size());
+  HamsasBoxes g = hamsasBoxes(spec);
+  for (std::size_t p = 0; p < g.corners.size(); ++p) {
+    const auto& m = motion[static_cast<std::size_t>(g.point_body[p])];
+    const Eigen::Vector3d com = spec.bodies[static_cast<std::size_t>(g.point_body[p])].com, w = m.tail<3>();
+    const Eigen::Matrix3d R = w.norm() > 0 ? Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix() : Eigen::Matrix3d::Identity();
+    g.corners[p] = com + m.head<3>() + R * (g.corners[p] - com);
+  }
+  return flat(g.corners);
+}
+
+std::string hamsasPoseVtp(const SpatialSpec& spec, const std::vector<double>& xyz, const std::vector<double>& displacement,
+                          double time_s) {
+  HamsasBoxes g = hamsasBoxes(spec);
+  MMV_DEMAND(xyz.size() == 3 * g.corners.size() && displacement.size() == xyz.size());
+  PolyData vtp("the isolator at one time of a run, a frame of the run's .pvd collection");
+  vtp.fieldFloats("TimeValue", {time_s});
+  vtp.points(xyz);
+  vtp.pointFloats("displacement_m", 3, displacement);
+  addBoxes(vtp, spec, std::move(g));
+  return vtp.text("displacement_m", "");
 }
 
 }  // namespace mmv

@@ -31,12 +31,24 @@
 #include <vector>
 
 #include "article/article_spec.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/modes/place_sensors.hpp"
+#include "sim/scene/scene.hpp"
 #include "sim/modes/system_modes.hpp"
 
 namespace mmv {
 
 std::string modesVtp(const ModesReport& report, const ArticleSpec& article);
+/// A HAM-SAS scene's modes.vtp: every moving body (not the base, whose motion is
+/// prescribed) as its equivalent box (article/spatial_spec.hpp, as the renders draw it)
+/// at the design configuration: 8 corner points and 6 quadrilaterals a body, point and
+/// cell data `body_index` (its place in field data `body_names`, the base being 0); one
+/// 3-component array per mode (`modeNN_FHz`, `modeNN_unstable`): each corner's
+/// translation per unit modal coordinate of the mass-normalised shape, t + w x r from
+/// the body's translation t and small rotation w (modes.json's `shape`) and the corner's
+/// offset r from its mass centre; field data `frequency_hz` and `scene`. The first
+/// `max_modes` modes (0: all).
+std::string hamsasModesVtp(const HamsasScene& scene, const HamsasModes& h, int max_modes);
 std::string placementVtp(const PlacementStudy& study);
 
 /// A run for ParaView (`render --history RUN --out FILE.pvd`): each frame the article's
@@ -47,5 +59,12 @@ std::string placementVtp(const PlacementStudy& study);
 std::string articlePoseVtp(const std::vector<std::string>& names, const std::vector<double>& xyz,
                            const std::vector<double>& displacement, const ArticleSpec& article, double time_s);
 std::string pvdCollection(const std::vector<std::pair<double, std::string>>& frames);
+/// A HAM-SAS run's frame: the boxes of hamsasModesVtp moved by each body's recorded
+/// motion (translation and rotation vector, world; the base's included), true to scale:
+/// hamsasCorners gives their corners (xyz, m), hamsasPoseVtp the file with
+/// `displacement_m` (from the run's first frame) and field data `TimeValue`.
+std::vector<double> hamsasCorners(const SpatialSpec& spec, const std::vector<Eigen::Matrix<double, 6, 1>>& motion);
+std::string hamsasPoseVtp(const SpatialSpec& spec, const std::vector<double>& xyz, const std::vector<double>& displacement,
+                          double time_s);
 
 }  // namespace mmv

@@ -5,7 +5,7 @@ the frequencies, the links' polylines, the joints and the sections (the MMV repo
 Table 1, docs/sources.md section 1). Then what a ParaView user does with it: Warp By
 Vector on a mode and Tube with the section radius.
 
-    read_vtk.py DIR [DIR ...]    each DIR holds a `modes --out` run (modes.vtp) or a
+    read_vtk.py DIR [DIR ...]    each DIR holds a `modes --out` run (modes.vtp; the article's or HAM-SAS's) or a
                                  `place-sensors --out` run (sensors.vtp)
     read_vtk.py --run RUN.pvd RUN_DIR   `render --history RUN_DIR --out RUN.pvd` against
                                  the run's history.csv (its link tips at the frames' times)
@@ -84,11 +84,74 @@ def read_sensors(d):
     return len(placement["target_modes"]), poly.GetNumberOfPoints()
 
 
+def read_hamsas(d, js):
+    """A HAM-SAS modes.vtp: each moving body a closed box of 8 corners and 6 faces
+    (VTK's own normals point out of it), every mode's corner motion the body's
+    translation plus its small rotation times the corner's offset from the box's centre,
+    from modes.json's `shape`; then Warp By Vector as a ParaView user would."""
+    where = f"{d}/modes.vtp"
+    poly = read_poly(d / "modes.vtp")
+    fd, pd = poly.GetFieldData(), poly.GetPointData()
+    bodies = strings(fd, "body_names")
+    moving = [b["body"] for b in js["modes"][0]["shape"]]
+    check(bodies is not None and bodies[1:] == moving, f"{where}: body_names {bodies}, JSON's moving bodies {moving}")
+    n = len(moving)
+    check(poly.GetNumberOfPoints() == 8 * n and poly.GetNumberOfPolys() == 6 * n,
+          f"{where}: {poly.GetNumberOfPoints()} points and {poly.GetNumberOfPolys()} faces for {n} bodies")
+    index = pd.GetArray("body_index")
+    centre = {}
+    for i in range(poly.GetNumberOfPoints()):
+        b = int(index.GetValue(i))
+        c = centre.setdefault(b, [0.0, 0.0, 0.0])
+        for k in range(3):
+            c[k] += poly.GetPoint(i)[k] / 8
+    # Closed and outward: the faces' signed volume is each box's volume, positive.
+    from vtkmodules.vtkFiltersCore import vtkMassProperties, vtkTriangleFilter
+    tri = vtkTriangleFilter()
+    tri.SetInputData(poly)
+    tri.Update()
+    mass = vtkMassProperties()
+    mass.SetInputData(tri.GetOutput())
+    mass.Update()
+    check(mass.GetVolume() > 0 and mass.GetSurfaceArea() > 0, f"{where}: the boxes enclose {mass.GetVolume()} m^3")
+    hz = fd.GetArray("frequency_hz")
+    check(hz is not None and hz.GetNumberOfTuples() == len(js["modes"]), f"{where}: frequency_hz per mode")
+    for k, m in enumerate(js["modes"]):
+        check(close(hz.GetValue(k), m["frequency_hz"]), f"{where}: mode {m['mode']} at {hz.GetValue(k)} Hz, JSON {m['frequency_hz']}")
+        name = f"mode{m['mode']:02d}_" + (f"{m['frequency_hz']:.4g}Hz" if m["stable"] else "unstable")
+        arr = pd.GetArray(name)
+        check(arr is not None and arr.GetNumberOfComponents() == 3, f"{where}: no 3-component array {name}")
+        if arr is None:
+            continue
+        for i in range(poly.GetNumberOfPoints()):
+            b = int(index.GetValue(i))
+            s = m["shape"][b - 1]
+            t, w = s["translation"], s["rotation"]
+            r = [poly.GetPoint(i)[c] - centre[b][c] for c in range(3)]
+            want = (t[0] + w[1] * r[2] - w[2] * r[1], t[1] + w[2] * r[0] - w[0] * r[2], t[2] + w[0] * r[1] - w[1] * r[0])
+            u = arr.GetTuple3(i)
+            scale = max(1e-300, max(abs(x) for x in t) + max(abs(x) for x in w))
+            check(all(abs(u[c] - want[c]) <= 1e-9 * scale for c in range(3)), f"{where}: {name} at corner {i} of {bodies[b]}: {u}, JSON {want}")
+    first = f"mode01_{js['modes'][0]['frequency_hz']:.4g}Hz"
+    warp = vtkWarpVector()
+    warp.SetInputData(poly)
+    warp.SetInputArrayToProcess(0, 0, 0, 0, first)
+    warp.SetScaleFactor(0.5)
+    warp.Update()
+    moved, shape = warp.GetOutput(), pd.GetArray(first)
+    for i in range(poly.GetNumberOfPoints()):
+        p, q, u = poly.GetPoint(i), moved.GetPoint(i), shape.GetTuple3(i)
+        check(all(close(q[c], p[c] + 0.5 * u[c], 1e-9) for c in range(3)), f"{where}: warped corner {i}")
+    return len(js["modes"]), poly.GetNumberOfPoints()
+
+
 def read(directory):
     d = Path(directory)
     if (d / "sensors.vtp").exists():
         return read_sensors(d)
     js = json.loads((d / "modes.json").read_text())
+    if js.get("model") == "hamsas":
+        return read_hamsas(d, js)
     poly = read_poly(d / "modes.vtp")
     where = f"{d}/modes.vtp"
 
@@ -196,6 +259,21 @@ def read_run(pvd, run_dir):
         row = at.get(round(t, 9))
         if row is None:
             continue
+        bodies = strings(poly.GetFieldData(), "body_names")
+        if bodies is not None:  # HAM-SAS: a body's corners' mean moves as its mass centre in history.csv
+            index = poly.GetPointData().GetArray("body_index")
+            for b, body in enumerate(bodies):
+                col = body + "_x_m"
+                corners = [i for i in range(n) if int(index.GetValue(i)) == b]
+                if col not in row or not corners:
+                    continue
+                for c, axis in enumerate("xyz"):
+                    moved = sum(pts[i][c] - first[i][c] for i in corners) / len(corners)
+                    want = float(row[f"{body}_{axis}_m"]) - float(history[0][f"{body}_{axis}_m"])
+                    check(abs(moved - want) <= 1e-6 * abs(want) + 1e-13,  # micrometre motions of metre-sized bodies
+                          f"{where}: {body} moved {moved} m along {axis}, history.csv {want}")
+                compared += 1
+            continue
         links = strings(poly.GetFieldData(), "link_names")
         lines = poly.GetLines()
         lines.InitTraversal()
@@ -210,13 +288,13 @@ def read_run(pvd, run_dir):
                 check(all(abs(tip[c] - want[c]) <= 1e-6 for c in range(2)), f"{where}: {links[k]} tip at {tip[:2]}, history.csv {want}")
                 compared += 1
             k += 1
-    check(compared >= 4, f"{pvd}: only {compared} tips compared with history.csv")
+    check(compared >= 4, f"{pvd}: only {compared} tips or bodies compared with history.csv")
     return len(sets), compared
 
 
 if len(sys.argv) == 4 and sys.argv[1] == "--run":
     frames, tips = read_run(sys.argv[2], sys.argv[3])
-    print(f"{sys.argv[2]}: {frames} frames read back by VTK, {tips} link tips equal to history.csv's")
+    print(f"{sys.argv[2]}: {frames} frames read back by VTK, {tips} link tips or bodies equal to history.csv's")
     sys.argv = sys.argv[:1]
 for directory in sys.argv[1:]:
     modes, npoints = read(directory)
