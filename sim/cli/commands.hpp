@@ -18,6 +18,7 @@
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/modes/components.hpp"
+#include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/linear/state_space.hpp"
 
@@ -261,6 +262,13 @@ using FigurePath = std::function<std::string(const std::string& name)>;
 void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app::PlacementStudyResult& study);
 /// frf's Bode plot of every input-output pair, full and reduced: bode_OUT__IN.png.
 void writeBodePlots(const FigurePath& out, const app::LinearStudy& a, bool rad);
+/// HAM-SAS frf's figures: transmissibility_horizontal.png, _tilt_to_horizontal.png,
+/// _vertical.png, _angular.png, _10hz.png (the 6 x 6 at 10 Hz) and, with a varied
+/// parameter, _vary.png.
+void writeTransmissibilityPlots(const FigurePath& out, const std::string& name, const std::vector<double>& f,
+                                const std::vector<Eigen::MatrixXcd>& T, const Eigen::MatrixXcd& T10,
+                                const std::string& vary_key, const std::vector<HamsasVaryPoint>& varied,
+                                const std::string& vary_unit);
 /// "OUT__IN" of a pair's file names (frf_OUT__IN.csv, bode_OUT__IN.png).
 std::string bodeFileBase(const StateSpace& s, Eigen::Index output, Eigen::Index input);
 int runTradeCommand(const TradeArgs& args);

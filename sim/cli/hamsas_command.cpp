@@ -14,11 +14,8 @@
 #include "sim/io/output_dir.hpp"
 
 namespace mmv::cli {
-namespace {
 
-/// The transmissibility figures: horizontal, vertical, angular, the 10 Hz heat map and
-/// the varied parameter's curves.
-void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const std::vector<double>& f,
+void writeTransmissibilityPlots(const FigurePath& out, const std::string& name, const std::vector<double>& f,
                                 const std::vector<Eigen::MatrixXcd>& T, const Eigen::MatrixXcd& T10,
                                 const std::string& vary_key, const std::vector<HamsasVaryPoint>& varied,
                                 const std::string& vary_unit) {
@@ -33,16 +30,16 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
     return s;
   };
   try {
-    figures::linePlot(out.stage("transmissibility_horizontal.png"), {series(0, 0, "m/m", false), series(1, 1, "m/m", true)},
+    figures::linePlot(out("transmissibility_horizontal.png"), {series(0, 0, "m/m", false), series(1, 1, "m/m", true)},
                       name + ": horizontal transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB of m/m)",
                       false, true);
-    figures::linePlot(out.stage("transmissibility_tilt_to_horizontal.png"),
+    figures::linePlot(out("transmissibility_tilt_to_horizontal.png"),
                       {series(0, 4, "m/rad", false), series(1, 3, "m/rad", true)},
                       name + ": ground tilt to table translation", "frequency (Hz)", "magnitude (dB of m/rad)", false, true);
-    figures::linePlot(out.stage("transmissibility_vertical.png"), {series(2, 2, "m/m", false)},
+    figures::linePlot(out("transmissibility_vertical.png"), {series(2, 2, "m/m", false)},
                       name + ": vertical transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB of m/m)",
                       false, true);
-    figures::linePlot(out.stage("transmissibility_angular.png"),
+    figures::linePlot(out("transmissibility_angular.png"),
                       {series(3, 3, "rad/rad", false), series(4, 4, "rad/rad", true), series(5, 5, "rad/rad", false)},
                       name + ": angular transmissibility (table / ground)", "frequency (Hz)", "magnitude (dB of rad/rad)",
                       false, true);
@@ -51,21 +48,19 @@ void writeTransmissibilityPlots(OutputDir& out, const std::string& name, const s
       for (int j = 0; j < 6; ++j) heat(i, j) = std::max(decibels(T10(i, j)), -250.0);  // zero by symmetry: the floor
     std::vector<std::string> names;
     for (int k = 0; k < 6; ++k) names.push_back(hamsasDofName(k));
-    figures::heatmap(out.stage("transmissibility_10hz.png"), heat, names, names,
+    figures::heatmap(out("transmissibility_10hz.png"), heat, names, names,
                      name + ": |T| at 10 Hz (dB of m/m, m/rad, rad/m or rad/rad; floor -250)", "optical table",
                      "ground", -250, 0);
     if (!varied.empty()) {
       std::vector<render::Series> curves;
       for (const auto& p : varied) curves.push_back({strf("%g", p.value) + vary_unit, f, p.x_db});
-      figures::linePlot(out.stage("transmissibility_vary.png"), curves, name + ": x transmissibility vs " + vary_key,
+      figures::linePlot(out("transmissibility_vary.png"), curves, name + ": x transmissibility vs " + vary_key,
                                "frequency (Hz)", "magnitude (dB)", false, true);
     }
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }
 }
-
-}  // namespace
 
 int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene) {
   if (args.vary.size() > 1) throw UsageError("--vary: give one parameter");
@@ -75,7 +70,8 @@ int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene) {
   const app::HamsasFrfStudy s = app::runHamsasFrfStudy(scene, r);
   if (out) {
     out->write("transmissibility.csv", s.csv);
-    writeTransmissibilityPlots(*out, scene.name, s.f, s.T, s.T10, s.vary_key, s.varied, s.vary_unit);
+    writeTransmissibilityPlots([&](const std::string& name) { return out->stage(name); }, scene.name, s.f, s.T, s.T10,
+                               s.vary_key, s.varied, s.vary_unit);
     out->commit();  // reported as written when the command succeeds
   }
   args.json ? emitResult(s.json) : emitResult(s.text);

@@ -15,6 +15,7 @@
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/cli/report_common.hpp"
 #include "sim/cli/figures.hpp"
 #include "sim/core/files.hpp"
 #include "sim/core/progress.hpp"
@@ -26,9 +27,7 @@
 #include "sim/view/article_drawing.hpp"
 
 namespace mmv::cli {
-namespace {
-
-using Json = nlohmann::ordered_json;
+namespace report {
 
 /// A word of a shell command line, quoted when the shell would split or expand it.
 std::string shellWord(const std::string& w) {
@@ -50,50 +49,32 @@ std::string commandFor(const ReportArgs& a, const std::string& verb, const std::
   return extra.empty() ? c : c + " " + extra;
 }
 
-/// The figures the page embeds: each drawn into the output's scratch space, read back
-/// and inlined; `count` of them so far.
-class Embedder {
- public:
-  explicit Embedder(OutputDir& out) : out_(out) {}
-  /// Draws with `draw(path)` and returns the <figure>.
-  std::string figure(const std::string& name, const std::function<void(const std::string&)>& draw, const std::string& alt,
-                     const std::string& caption) {
-    const std::string path = out_.scratch(name);
-    try {
-      draw(path);
-    } catch (const std::runtime_error& e) {
-      throw OutputError(e.what());
-    }
-    return html::pngFigure(read(path), alt, caption);
-  }
-  /// The figures `write(at)` draws, through `at`, each inlined with `caption(name)`.
-  std::string figures(const std::function<void(const FigurePath&)>& write,
-                      const std::function<std::string(const std::string&)>& caption) {
-    std::vector<std::pair<std::string, std::string>> drawn;
-    write([&](const std::string& name) {
-      drawn.emplace_back(name, out_.scratch(name));
-      return drawn.back().second;
-    });
-    std::string html;
-    for (const auto& [name, path] : drawn) html += html::pngFigure(read(path), name, caption(name));
-    return html;
-  }
-  int count() const { return count_; }
+std::string tile(const std::string& cls, const std::string& big, const std::string& small) {
+  return "<div class=\"tile " + cls + "\"><b>" + html::escape(big) + "</b>" + html::escape(small) + "</div>";
+}
 
- private:
-  std::string read(const std::string& path) {
-    std::string bytes, why;
-    if (!readInputFile(path, 64L << 20, bytes, why) || bytes.empty())
-      throw OutputError(path + ": the figure was not written: " + (why.empty() ? "empty file" : why));
-    static const std::string kPngEnd("IEND\xAE\x42\x60\x82", 8);  // a PNG's last chunk: the file is whole
-    if (bytes.size() < 16 || bytes.compare(0, 4, "\x89PNG") != 0 || bytes.compare(bytes.size() - 8, 8, kPngEnd) != 0)
-      throw OutputError(path + ": the figure is not a whole PNG (" + std::to_string(bytes.size()) + " bytes)");
-    ++count_;
-    return bytes;
-  }
-  OutputDir& out_;
-  int count_ = 0;
-};
+/// The scene as read (the file's text, or the embedded default's) and the overrides the
+/// report ran with.
+html::Section sceneSection(const ReportArgs& a, const std::string& text) {
+  html::Section s{"scene", "The scene", "", {}, {}};
+  std::string changes;
+  if (a.segments) changes += "--segments " + std::to_string(*a.segments) + "; ";
+  if (a.no_gravity) changes += "--no-gravity; ";
+  for (const auto& set : a.sets) changes += "--set " + set + "; ";
+  s.body = "<p>" + html::escape(a.scene_path.empty() ? std::string("The embedded default scene (mmvlab scene prints it).")
+                                                      : "The scene file " + a.scene_path + ".") +
+           (changes.empty() ? "" : " Run with " + html::escape(changes.substr(0, changes.size() - 2)) +
+                                       " on top of it (every number above includes them).") +
+           "</p>\n<pre>" + html::escape(text) + "</pre>";
+  s.commands.push_back(a.scene_path.empty() ? "mmvlab scene > scene.yaml" : "cat " + shellWord(a.scene_path));
+  return s;
+}
+
+}  // namespace report
+
+namespace {
+
+using namespace report;
 
 html::Section articleSection(const ReportArgs& a, const ArticleScene& scene, const SolvedScene& solved, Embedder& em) {
   SimTK::State st = solved.equilibrium.state;
@@ -128,10 +109,6 @@ std::string modesSheet(const ArticleScene& scene, const SolvedScene& solved, int
   return em.figure("modes.png", [&](const std::string& p) { figures::contactSheetPng(p, tiles, cameras, {480, 320, 2}, 3); },
                    "the first modes", strf("Modes 1 to %d about the equilibrium, each drawn at an amplitude that shows "
                                            "it (a mode shape has no physical size).", n));
-}
-
-std::string tile(const std::string& cls, const std::string& big, const std::string& small) {
-  return "<div class=\"tile " + cls + "\"><b>" + html::escape(big) + "</b>" + html::escape(small) + "</div>";
 }
 
 /// The frequency responses' accuracy at a glance: the reduced model against its target,
@@ -170,23 +147,6 @@ std::string summaryTiles(const Json& check, const Json& modes, const Json& place
               strf("%zu sensors", placement.at("chosen").size()), "max off-diagonal AutoMAC " +
                                                                       reportNumber(placement.at("max_offdiagonal_automac"))) +
          frfTiles(frf) + "</div>";
-}
-
-/// The scene as read (the file's text, or the embedded default's) and the overrides the
-/// report ran with.
-html::Section sceneSection(const ReportArgs& a, const std::string& text) {
-  html::Section s{"scene", "The scene", "", {}, {}};
-  std::string changes;
-  if (a.segments) changes += "--segments " + std::to_string(*a.segments) + "; ";
-  if (a.no_gravity) changes += "--no-gravity; ";
-  for (const auto& set : a.sets) changes += "--set " + set + "; ";
-  s.body = "<p>" + html::escape(a.scene_path.empty() ? std::string("The embedded default scene (mmvlab scene prints it).")
-                                                      : "The scene file " + a.scene_path + ".") +
-           (changes.empty() ? "" : " Run with " + html::escape(changes.substr(0, changes.size() - 2)) +
-                                       " on top of it (every number above includes them).") +
-           "</p>\n<pre>" + html::escape(text) + "</pre>";
-  s.commands.push_back(a.scene_path.empty() ? "mmvlab scene > scene.yaml" : "cat " + shellWord(a.scene_path));
-  return s;
 }
 
 struct Parts {
@@ -263,10 +223,8 @@ std::vector<html::Section> studySections(const ReportArgs& a, const Scene& loade
 int runReportCommand(const ReportArgs& args) {
   return guarded([&]() -> int {
     const Scene loaded = loadScene(args);
-    if (std::holds_alternative<HamsasScene>(loaded))
-      throw UsageError("report: a HAM-SAS scene is not reported yet (the page covers the article: check, sensors, "
-                       "FRFs); run modes, frf and place-sensors on it");
     OutputDir out(args.out, args.force);  // a bad --out refused before the work
+    if (const auto* isolator = std::get_if<HamsasScene>(&loaded)) return runHamsasReport(args, *isolator, out);
     const Parts p = runParts(args, loaded);
     const Json frf = p.frf->frfJson();
     Embedder em(out);
@@ -314,14 +272,20 @@ CLI::App* addReportCommand(CLI::App& app, ReportArgs& r, const std::function<voi
   CLI::App* c = app.add_subcommand("report", "One self-contained HTML page for a test-readiness review: renders, check's "
                                              "verdicts, modes, the sensor plan, FRFs, accuracy, the scene, the commands");
   scene_options(c, r);
+  c->callback([c, &r] {  // the options given: a HAM-SAS page keeps its own band and count unless told
+    for (const CLI::Option* o : c->get_options())
+      if (o->count() > 0) r.given.insert(o->get_name());
+  });
   c->add_option("--out", r.out, "Write report.html (self-contained: open it in any browser, print it to PDF) and report.json here")
       ->required();
   c->add_flag("--force", r.force, "Replace report.html and report.json in --out");
   c->add_option("--modes", r.modes, "Rows of the mode table, 1 .. 500")->capture_default_str()->check(CLI::Range(1, 500));
-  c->add_option("--sensors", r.sensors, "Sensors in the plan (place-sensors --count), 1 .. the candidates (stations every 0.1 m, 2 directions)")
+  c->add_option("--sensors", r.sensors, "Sensors in the plan (place-sensors --count), 1 .. the candidates (stations every 0.1 m, 2 directions); "
+                                  "HAM-SAS: 12 unless given")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  c->add_option("--band", r.band, "The modes of interest, F_MIN_HZ:F_MAX_HZ: check's band and the sensor plan's targets")
+  c->add_option("--band", r.band, "The modes of interest, F_MIN_HZ:F_MAX_HZ: check's band and the sensor plan's targets "
+                                  "(HAM-SAS: the modes below 5 Hz unless given)")
       ->capture_default_str();
   return c;
 }

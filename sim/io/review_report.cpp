@@ -7,12 +7,10 @@
 #include "sim/core/text.hpp"
 
 namespace mmv {
-namespace {
 
 using ReviewJson = nlohmann::ordered_json;
 
-/// The largest share of a {name: share} object, as "name (42 %)".
-std::string reviewLargestShare(const ReviewJson& shares) {
+std::string reportLargestShare(const ReviewJson& shares) {
   std::string name;
   double best = -1;
   if (!shares.is_object()) return "-";
@@ -21,12 +19,9 @@ std::string reviewLargestShare(const ReviewJson& shares) {
   return best < 0 ? "-" : strf("%s (%.0f %%)", name.c_str(), 100 * best);
 }
 
-std::string jsonText(const ReviewJson& v) { return v.is_string() ? v.get<std::string>() : v.is_null() ? "-" : v.dump(); }
+std::string reportText(const ReviewJson& v) { return v.is_string() ? v.get<std::string>() : v.is_null() ? "-" : v.dump(); }
 
-/// A relative error as the page prints it: "0.18 %", or "< 0.001 %".
 std::string reportPercent(double e) { return e < 1e-5 ? std::string("< 0.001 %") : strf("%.2g %%", 100 * e); }
-
-}  // namespace
 
 std::string verdictClass(const std::string& verdict) {
   if (verdict == "n/a") return "na";
@@ -46,8 +41,8 @@ html::Table checkTable(const ReviewJson& check) {
   t.header = {"verdict", "group", "requirement", "demand", "capacity", "unit", "margin (%)", "basis and notes"};
   for (const auto& l : check.at("lines")) {
     const std::string verdict = l.at("verdict").get<std::string>();
-    t.rows.push_back({verdict, jsonText(l.at("group")), jsonText(l.at("requirement")), reportNumber(l.at("demand")),
-                      reportNumber(l.at("capacity")), jsonText(l.at("unit")), reportNumber(l.at("margin_pct")), jsonText(l.at("note"))});
+    t.rows.push_back({verdict, reportText(l.at("group")), reportText(l.at("requirement")), reportNumber(l.at("demand")),
+                      reportNumber(l.at("capacity")), reportText(l.at("unit")), reportNumber(l.at("margin_pct")), reportText(l.at("note"))});
     t.row_classes.push_back(verdictClass(verdict));
   }
   return t;
@@ -72,8 +67,8 @@ html::Table modeTable(const ReviewJson& modes) {
     std::vector<std::string> row{std::to_string(n), reportNumber(m.at("frequency_hz")),
                                  error.count(n) ? reportPercent(error[n]) : std::string("-")};
     if (damped) row.push_back(reportNumber(m.value("damping_ratio", ReviewJson()), 100));
-    row.push_back(reviewLargestShare(m.value("strain_energy_share_by_link", ReviewJson())));
-    row.push_back(reviewLargestShare(m.value("kinetic_energy_share", ReviewJson())));
+    row.push_back(reportLargestShare(m.value("strain_energy_share_by_link", ReviewJson())));
+    row.push_back(reportLargestShare(m.value("kinetic_energy_share", ReviewJson())));
     row.push_back(reportNumber(m.value("effective_mass_x_kg", ReviewJson())));
     row.push_back(reportNumber(m.value("effective_mass_y_kg", ReviewJson())));
     row.push_back(reportNumber(m.value("geometric_stiffness_share", ReviewJson()), 100));
@@ -90,7 +85,7 @@ html::Table sensorTable(const ReviewJson& placement) {
               efi ? "EfI score" : "score", "kept from the scene"};
   int k = 0;
   for (const auto& c : placement.at("chosen"))
-    t.rows.push_back({std::to_string(++k), jsonText(c.at("station")), jsonText(c.at("axis")), reportNumber(c.at("x_along_link_m")),
+    t.rows.push_back({std::to_string(++k), reportText(c.at("station")), reportText(c.at("axis")), reportNumber(c.at("x_along_link_m")),
                       reportNumber(c.at("world_x_m")), reportNumber(c.at("world_y_m")), reportNumber(c.at("world_z_m")),
                       reportNumber(c.at("score")), c.value("fixed", 0) ? "yes" : "no"});
   return t;
@@ -101,9 +96,9 @@ html::Table frfTable(const ReviewJson& frf) {
   t.header = {"output", "input", "unit", "peak (Hz)", "peak (dB)", "half-power damping (%)", "at 10 Hz (dB)",
               "reduced model's error"};
   for (const auto& p : frf.at("pairs")) {
-    const std::string unit = jsonText(p.at("output_unit")) + " per " + jsonText(p.at("input_unit"));
+    const std::string unit = reportText(p.at("output_unit")) + " per " + reportText(p.at("input_unit"));
     const ReviewJson& e = p.at("rom_relative_error");
-    t.rows.push_back({jsonText(p.at("output")), jsonText(p.at("input")), unit, reportNumber(p.at("peak_hz")),
+    t.rows.push_back({reportText(p.at("output")), reportText(p.at("input")), unit, reportNumber(p.at("peak_hz")),
                       reportNumber(p.at("peak_db")), reportNumber(p.at("peak_half_power_damping"), 100),
                       reportNumber(p.at("at_10_hz_db")), e.is_number() ? reportPercent(e.get<double>()) : "-"});
   }
@@ -142,7 +137,7 @@ std::vector<std::string> modesAccuracy(const ReviewJson& modes) {
     out.push_back("The scene has no damping: these modes are undamped (the frequency responses below state the damping "
                   "they assume).");
   else if (d.is_object())
-    out.push_back("Damping: " + jsonText(d.at("model")) + (d.value("exact", false) ? " (damped modes exact)" : "") + ".");
+    out.push_back("Damping: " + reportText(d.at("model")) + (d.value("exact", false) ? " (damped modes exact)" : "") + ".");
   return out;
 }
 
@@ -179,9 +174,9 @@ std::vector<std::string> frfAccuracy(const ReviewJson& frf) {
   if (frf.contains("mesh_frf_error_estimate") && frf.at("mesh_frf_error_estimate").is_number())
     out.push_back("The mesh's share of the error near the peaks, which the reduced model's error above cannot see: "
                   "about " + reportPercent(frf.at("mesh_frf_error_estimate").get<double>()) + " of the peak at mode " +
-                  jsonText(frf.at("mesh_frf_error_mode")) +
+                  reportText(frf.at("mesh_frf_error_mode")) +
                   " (its frequency's estimated mesh error over its damping ratio; more segments per link lower it).");
-  out.push_back("Damping: " + jsonText(frf.value("damping_model", ReviewJson())) + ".");
+  out.push_back("Damping: " + reportText(frf.value("damping_model", ReviewJson())) + ".");
   return out;
 }
 

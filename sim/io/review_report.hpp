@@ -34,5 +34,22 @@ std::string verdictClass(const std::string& verdict);
 
 /// A number as the page prints it: 4 significant digits ("-" for null or not finite).
 std::string reportNumber(const nlohmann::ordered_json& v, double scale = 1.0);
+/// A relative error as the page prints it: "0.18 %", or "< 0.001 %".
+std::string reportPercent(double e);
+/// A JSON value as text: a string as it is, null as "-", anything else as JSON.
+std::string reportText(const nlohmann::ordered_json& v);
+/// The largest share of a {name: share} object, as "name (42 %)".
+std::string reportLargestShare(const nlohmann::ordered_json& shares);
+
+/// HAM-SAS (sim/io/review_hamsas.cpp), from `modes --json` and `frf --json` of an
+/// isolator scene: the measured features against the model; the modes (frequency, the
+/// body group and direction with most kinetic energy, the largest kinetic and strain
+/// shares, gravity's share); per direction the table-from-ground transmissibility's
+/// peak and its level at 10 Hz against the 70-80 dB goal; their accuracy lines.
+html::Table hamsasFeatureTable(const nlohmann::ordered_json& modes);
+html::Table hamsasModeTable(const nlohmann::ordered_json& modes);
+html::Table transmissibilityTable(const nlohmann::ordered_json& frf);
+std::vector<std::string> hamsasModesAccuracy(const nlohmann::ordered_json& modes);
+std::vector<std::string> transmissibilityAccuracy(const nlohmann::ordered_json& frf);
 
 }  // namespace mmv

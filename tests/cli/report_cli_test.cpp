@@ -1,11 +1,12 @@
 // mmvlab report: the review page and report.json. Its tables are the studies' JSON, so
 // report.json must equal what check, modes, place-sensors and frf print on their own (the
 // same numbers computed by another process); its options are refused at their bounds'
-// other side; a HAM-SAS scene is refused by name. The page in a real browser:
+// other side; a HAM-SAS scene gets its own page (the isolator's parts). The page in a real browser:
 // tests/readback/report_browser.sh.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 #include "support/cli.hpp"
 
@@ -73,14 +74,50 @@ TEST_F(Cli, ReportHoldsWhatEachCommandPrintsOnItsOwn) {
   EXPECT_NE(html.find("mmvlab place-sensors " + scene + " --segments 4 --below-hz 50 --count 8 --out sensors"), std::string::npos);
 }
 
+// HAM-SAS: the isolator's page. report.json equals modes, place-sensors (the modes below
+// 5 Hz, 12 sensors: the report's defaults for an isolator) and frf run on their own, and
+// the page holds the measured features, the transmissibility's goal and no check part.
+TEST_F(Cli, ReportOnHamsasHoldsWhatEachCommandPrintsOnItsOwn) {
+  const std::string scene = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string();
+  const fs::path out = dir_ / "isolator";
+  const Result r = run("report " + scene + " --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("measured features"), std::string::npos) << r.out;
+  const Json doc = Json::parse(slurp(out / "report.json"));
+  const Result modes = run("modes " + scene + " --json"), sensors = run("place-sensors " + scene + " --below-hz 5 --count 12 --json"),
+               frf = run("frf " + scene + " --json");
+  for (const Result* c : {&modes, &sensors, &frf}) ASSERT_EQ(c->code, 0) << c->err;
+  EXPECT_FALSE(doc.contains("check"));
+  expectSameJson(doc.at("modes"), Json::parse(modes.out), 0, "modes");
+  expectSameJson(doc.at("placement"), Json::parse(sensors.out), 0, "placement");
+  expectSameJson(doc.at("frf"), Json::parse(frf.out), 0, "frf");
+  const std::string html = slurp(out / "report.html");
+  for (const char* id : {"isolator", "modes", "sensors", "frf", "scene"})
+    EXPECT_NE(html.find("<section id=\"" + std::string(id) + "\">"), std::string::npos) << id;
+  EXPECT_EQ(html.find("<section id=\"check\">"), std::string::npos);
+  for (const auto& f : doc.at("modes").at("features"))  // every measured feature in its table
+    EXPECT_NE(html.find("<td>" + f.at("feature").get<std::string>() + "</td>"), std::string::npos) << f.at("feature");
+  // The x transmissibility at 10 Hz as the tile says it, and its goal's verdict.
+  const double x10 = doc.at("frf").at("at_10_hz_db").at(0).at(0).get<double>();
+  char tile[64];
+  std::snprintf(tile, sizeof tile, "x at 10 Hz: %.1f dB", x10);
+  EXPECT_NE(html.find(tile), std::string::npos) << tile;
+  EXPECT_NE(html.find(x10 <= -80 ? "meets 80 dB" : x10 <= -70 ? "meets 70 dB" : "misses 70 dB"), std::string::npos);
+  std::size_t images = 0;
+  for (std::size_t at = html.find("<img "); at != std::string::npos; at = html.find("<img ", at + 1)) ++images;
+  EXPECT_EQ(images, static_cast<std::size_t>(doc.at("figures").get<int>()));
+  EXPECT_GE(images, 2u + 1 + 2 + 5);  // two views, the modes, the plan's, the transmissibility's five
+}
+
 TEST_F(Cli, ReportRefusesWhatItCannotDo) {
   const fs::path out = dir_ / "r";
   Result r = run("report");
   EXPECT_EQ(r.code, 64);
   EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
-  r = run("report " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --out " + out.string());
+  // HAM-SAS: the plan's count past the isolator's candidates, named as the report's.
+  r = run("report " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --sensors 100000 --out " + out.string());
   EXPECT_EQ(r.code, 64);
-  EXPECT_NE(r.err.find("HAM-SAS scene is not reported yet"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the sensor plan (report --sensors 100000, modes below 5 Hz)"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
   // --modes 1 .. 500 (the bound and one past it), --sensors within the candidates.
   for (const char* bad : {"--modes 0", "--modes 501", "--sensors 0", "--band 50:1"}) {

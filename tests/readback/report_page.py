@@ -115,6 +115,33 @@ def check_tables(p, ref):
         fail("the frequency-response table is not frf --json's pairs")
 
 
+def check_isolator_tables(p, ref):
+    """A HAM-SAS page: the measured features, the modes, the sensors and the
+    transmissibility at 10 Hz are modes, place-sensors and frf --json's."""
+    fmt = lambda x: "-" if x is None else "%.4g" % x
+    tables = p.tables.get("modes", [])
+    if len(tables) != 2:
+        fail(f"the modes part has {len(tables)} tables, not the features' and the modes'")
+        return
+    features, modes = tables[0][1:], tables[1][1:]
+    want = [(f["feature"], fmt(f["measured_hz"]), fmt(f["model_hz"]) if f["model_hz"] is not None else "none")
+            for f in ref["modes"]["features"]]
+    if [(r[0], r[1], r[2]) for r in features] != want:
+        fail(f"the feature table is not modes --json's features: {features[:2]} against {want[:2]}")
+    want = [fmt(m["frequency_hz"]) for m in ref["modes"]["modes"]]
+    if [r[1] for r in modes] != want:
+        fail(f"mode table frequencies {[r[1] for r in modes]} are not modes --json's {want}")
+    sensors = p.tables.get("sensors", [[]])[0][1:]
+    want = [(c["station"], c["axis"], fmt(c["score"])) for c in ref["place-sensors"]["chosen"]]
+    if [(r[1], r[2], r[7]) for r in sensors] != want:
+        fail(f"the sensor table is not place-sensors --json's choice: {sensors[:2]} against {want[:2]}")
+    frf = p.tables.get("frf", [[]])[0][1:]
+    at10 = ref["frf"]["at_10_hz_db"]
+    want = ["%.1f" % at10[k][k] for k in range(6)]
+    if [r[4] for r in frf] != want:
+        fail(f"the transmissibility at 10 Hz {[r[4] for r in frf]} is not frf --json's {want}")
+
+
 # The page's own chatter aside, Chromium itself asks Google for updates and accounts:
 # a request counts as the page's when its network isolation key is the file:// page's.
 CHROMIUM = ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--hide-scrollbars",
@@ -167,7 +194,7 @@ window.addEventListener('load', () => {
 </script>"""
 
 
-def browse(page, work, figures, shot_size=(1280, 2400)):
+def browse(page, work, figures, sections, shot_size=(1280, 2400)):
     """The page in Chromium: (problems, facts). The page unchanged must log nothing and ask
     for nothing; a copy with a checker script (the page's policy widened for it alone)
     counts its images and broken ones."""
@@ -198,9 +225,9 @@ def browse(page, work, figures, shot_size=(1280, 2400)):
     if not m:
         found.append(f"the checker did not run: {r.stderr[-500:]}")
         return found
-    images, broken, sections, width = map(int, m.groups())
-    if images != figures or broken or sections != 6 or width > shot_size[0]:
-        found.append(f"in the browser: {images} images ({figures} expected), {broken} broken, {sections} sections, "
+    images, broken, shown, width = map(int, m.groups())
+    if images != figures or broken or int(m.group(3)) != sections or width > shot_size[0]:
+        found.append(f"in the browser: {images} images ({figures} expected), {broken} broken, {shown} sections ({sections}), "
                      f"{width} px wide at {shot_size[0]}")
     return found
 
@@ -209,13 +236,16 @@ def main():
     page_dir, ref_dir = sys.argv[1], sys.argv[2]
     page = os.path.join(page_dir, "report.html")
     doc = json.load(open(os.path.join(page_dir, "report.json")))
-    ref = {v: json.load(open(os.path.join(ref_dir, v + ".json"))) for v in ("check", "modes", "place-sensors", "frf")}
+    isolator = "check" not in doc  # a HAM-SAS page: no check part
+    verbs = ("modes", "place-sensors", "frf") if isolator else ("check", "modes", "place-sensors", "frf")
+    ref = {v: json.load(open(os.path.join(ref_dir, v + ".json"))) for v in verbs}
+    sections = 5 if isolator else 6
     text = open(page, encoding="utf-8").read()
     p = check_static(text, doc["figures"])
-    check_tables(p, ref)
+    (check_isolator_tables if isolator else check_tables)(p, ref)
     work = tempfile.mkdtemp()
     try:
-        for f in browse(page, work, doc["figures"]):
+        for f in browse(page, work, doc["figures"], sections):
             fail(f)
         pdf = os.path.join(work, "report.pdf")
         chromium("file://" + os.path.abspath(page), work, f"--print-to-pdf={pdf}", "--no-pdf-header-footer")
@@ -228,7 +258,7 @@ def main():
         with open(bad, "w", encoding="utf-8") as f:
             f.write(text.replace("<main>", '<main><img alt="remote" src="https://example.com/x.png">'
                                            '<img alt="broken" src="data:image/png;base64,iVBORw0KGgo=">', 1))
-        caught = browse(bad, work, doc["figures"] + 2)
+        caught = browse(bad, work, doc["figures"] + 2, sections)
         for what in ("console messages", "2 broken"):
             if not any(what in c for c in caught):
                 fail(f"a page with a remote image and a broken figure was not caught ({what}): {caught}")
