@@ -70,6 +70,47 @@ html::Section sceneSection(const ReportArgs& a, const std::string& text) {
   return s;
 }
 
+void addViewFigures(html::Section& s, const ReportArgs& a, Embedder& em, const std::vector<std::string>& views,
+                    const std::string& prefix, const std::function<DrawList(const std::string& view)>& draw,
+                    const std::string& caption) {
+  s.body += "<div class=\"grid\">";
+  for (const std::string& view : views) {
+    const DrawList d = draw(view);
+    Camera camera;
+    presetCamera(view, d.bounds(), camera, d.up);
+    const std::string file = prefix + "_" + view + ".png";
+    s.body += em.figure(file, [&](const std::string& p) { figures::framePng(p, d, camera, {1280, 720, 3}); },
+                        "the " + prefix + ", " + view + " view", strf(caption.c_str(), view.c_str()));
+    s.commands.push_back(commandFor(a, "render", "--view " + view + " --out " + file));
+  }
+  s.body += "</div>";
+}
+
+std::string modesSheetFigure(Embedder& em, const std::string& view, int n, const std::function<DrawList(int mode)>& tile,
+                             const std::string& about) {
+  std::vector<DrawList> tiles;
+  std::vector<Camera> cameras;
+  for (int m = 1; m <= n; ++m) {
+    tiles.push_back(tile(m));
+    Camera c;
+    presetCamera(view, tiles.back().bounds(), c, tiles.back().up);
+    cameras.push_back(c);
+  }
+  return em.figure("modes.png", [&](const std::string& p) { figures::contactSheetPng(p, tiles, cameras, {480, 320, 2}, 3); },
+                   "the first modes", strf("Modes 1 to %d about ", n) + about +
+                                          ", each drawn at an amplitude that shows it (a mode shape has no physical size).");
+}
+
+std::string writeReport(OutputDir& out, const std::string& dir, const html::Page& page, const Json& doc) {
+  checkResultFinite(doc);
+  const std::string page_html = html::page(page);
+  out.write("report.html", page_html);
+  out.write("report.json", doc.dump(2) + "\n");
+  const std::string where = strf("  page: %s (%.1f MB)\n", (std::filesystem::path(dir) / "report.html").c_str(), page_html.size() / 1e6);
+  out.commit();
+  return where;
+}
+
 }  // namespace report
 
 namespace {
@@ -80,35 +121,19 @@ html::Section articleSection(const ReportArgs& a, const ArticleScene& scene, con
   SimTK::State st = solved.equilibrium.state;
   solved.model->getSystem().realize(st, SimTK::Stage::Position);
   const bool spatial = scene.article.model == ArticleModel::Spatial;
-  html::Section s{"article", "The article and the facility", "<div class=\"grid\">", {}, {}};
-  for (const std::string view : {spatial ? "side" : "front", "iso"}) {
+  html::Section s{"article", "The article and the facility", "", {}, {}};
+  addViewFigures(s, a, em, {spatial ? "side" : "front", "iso"}, "article", [&](const std::string& view) {
     DrawList d = drawArticle(scene, *solved.model, st);
     d.title += "  (static equilibrium, " + view + " view)";
-    Camera camera;
-    presetCamera(view, d.bounds(), camera, d.up);
-    s.body += em.figure("article_" + view + ".png", [&](const std::string& p) { figures::framePng(p, d, camera, {1280, 720, 3}); },
-                        "the article, " + view + " view",
-                        "The article held at its static equilibrium (" + view + " view), with the facility and the scene's sensors.");
-    s.commands.push_back(commandFor(a, "render", "--view " + view + " --out article_" + view + ".png"));
-  }
-  s.body += "</div>";
+    return d;
+  }, "The article held at its static equilibrium (%s view), with the facility and the scene's sensors.");
   s.accuracy.push_back("Drawn at the equilibrium the mode table is computed about; deflections to scale.");
   return s;
 }
 
 std::string modesSheet(const ArticleScene& scene, const SolvedScene& solved, int n, Embedder& em) {
-  std::vector<DrawList> tiles;
-  std::vector<Camera> cameras;
-  const std::string view = scene.article.model == ArticleModel::Spatial ? "iso" : "front";
-  for (int m = 1; m <= n; ++m) {
-    tiles.push_back(ModeFrames(scene, solved, ModeNumber(m), 0.0).frame(1.0, true));
-    Camera c;
-    presetCamera(view, tiles.back().bounds(), c, tiles.back().up);
-    cameras.push_back(c);
-  }
-  return em.figure("modes.png", [&](const std::string& p) { figures::contactSheetPng(p, tiles, cameras, {480, 320, 2}, 3); },
-                   "the first modes", strf("Modes 1 to %d about the equilibrium, each drawn at an amplitude that shows "
-                                           "it (a mode shape has no physical size).", n));
+  return modesSheetFigure(em, scene.article.model == ArticleModel::Spatial ? "iso" : "front", n,
+                          [&](int m) { return ModeFrames(scene, solved, ModeNumber(m), 0.0).frame(1.0, true); }, "the equilibrium");
 }
 
 /// The frequency responses' accuracy at a glance: the reduced model against its target,
@@ -254,16 +279,10 @@ int runReportCommand(const ReportArgs& args) {
     doc["modes"] = p.modes.json;
     doc["placement"] = p.placement.json;
     doc["frf"] = frf;
-    checkResultFinite(doc);
-    const std::string page_html = html::page(page);
-    out.write("report.html", page_html);
-    out.write("report.json", doc.dump(2) + "\n");
-    out.commit();
-    emitResult(strf("report: %s\n  check: %s\n  %zu modes tabulated, %zu sensors, %zu frequency-response pairs, %d figures\n"
-                    "  page: %s (%.1f MB)\n",
+    const std::string where = writeReport(out, args.out, page, doc);
+    emitResult(strf("report: %s\n  check: %s\n  %zu modes tabulated, %zu sensors, %zu frequency-response pairs, %d figures\n",
                     scene.name.c_str(), p.check.json.at("overall").get<std::string>().c_str(), p.modes.json.at("modes").size(),
-                    p.placement.json.at("chosen").size(), frf.at("pairs").size(), em.count(),
-                    (std::filesystem::path(args.out) / "report.html").c_str(), page_html.size() / 1e6));
+                    p.placement.json.at("chosen").size(), frf.at("pairs").size(), em.count()) + where);
     return kOk;
   });
 }

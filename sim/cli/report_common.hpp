@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/cli/commands.hpp"
+#include "sim/core/drawing.hpp"
 #include "sim/core/files.hpp"
 #include "sim/io/html_page.hpp"
 #include "sim/io/output_dir.hpp"
@@ -33,6 +34,23 @@ std::string commandFor(const ReportArgs& a, const std::string& verb, const std::
 std::string tile(const std::string& cls, const std::string& big, const std::string& small);
 /// The scene as read and the overrides the report ran with.
 html::Section sceneSection(const ReportArgs& a, const std::string& text);
+
+/// Writes report.html (the page) and report.json (`doc`, checked finite first) into
+/// `out` (the directory `dir`) and commits them; returns the line that says where the
+/// page is and its size.
+std::string writeReport(OutputDir& out, const std::string& dir, const html::Page& page, const Json& doc);
+
+class Embedder;
+/// A 1280 x 720 figure per view (PREFIX_VIEW.png) of what `draw(view)` draws, in a grid
+/// in `s`'s body, each captioned by `caption` (a printf format of the view's name) with
+/// the render command that reproduces it.
+void addViewFigures(html::Section& s, const ReportArgs& a, Embedder& em, const std::vector<std::string>& views,
+                    const std::string& prefix, const std::function<DrawList(const std::string& view)>& draw,
+                    const std::string& caption);
+/// modes.png: modes 1 to n, `tile(mode)` each, as a contact sheet from `view`; the
+/// caption says they are drawn about `about`.
+std::string modesSheetFigure(Embedder& em, const std::string& view, int n, const std::function<DrawList(int mode)>& tile,
+                             const std::string& about);
 
 /// The figures the page embeds: each drawn into the output's scratch space, read back
 /// and inlined; `count` of them so far.

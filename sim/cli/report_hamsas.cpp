@@ -28,34 +28,14 @@ std::pair<double, int> isolatorPlan(const ReportArgs& a) {
 }
 
 html::Section isolatorSection(const ReportArgs& a, const HamsasScene& scene, const HamsasModes& h, Embedder& em) {
-  html::Section s{"isolator", "The isolator", "<div class=\"grid\">", {}, {}};
-  for (const std::string view : {"front", "iso"}) {
+  html::Section s{"isolator", "The isolator", "", {}, {}};
+  addViewFigures(s, a, em, {"front", "iso"}, "isolator", [&](const std::string& view) {
     DrawList d = drawHamsas(scene, h);
     d.title += "  (" + view + " view)";
-    Camera camera;
-    presetCamera(view, d.bounds(), camera, d.up);
-    s.body += em.figure("isolator_" + view + ".png", [&](const std::string& p) { figures::framePng(p, d, camera, {1280, 720, 3}); },
-                        "the isolator, " + view + " view",
-                        "The isolator's bodies at the design configuration (" + view + " view), with its springs, joints and sensors.");
-    s.commands.push_back(commandFor(a, "render", "--view " + view + " --out isolator_" + view + ".png"));
-  }
-  s.body += "</div>";
+    return d;
+  }, "The isolator's bodies at the design configuration (%s view), with its springs, joints and sensors.");
   s.accuracy.push_back("Each body is drawn as the uniform box of its mass and principal moments of inertia, at its mass centre.");
   return s;
-}
-
-std::string isolatorModesSheet(const HamsasScene& scene, const HamsasModes& h, int n, Embedder& em) {
-  std::vector<DrawList> tiles;
-  std::vector<Camera> cameras;
-  for (int m = 1; m <= n; ++m) {
-    tiles.push_back(drawHamsas(scene, h, ModeNumber(m), 1.0, 0, true));
-    Camera c;
-    presetCamera("iso", tiles.back().bounds(), c, tiles.back().up);
-    cameras.push_back(c);
-  }
-  return em.figure("modes.png", [&](const std::string& p) { figures::contactSheetPng(p, tiles, cameras, {480, 320, 2}, 3); },
-                   "the first modes", strf("Modes 1 to %d about the design configuration, each drawn at an amplitude that "
-                                           "shows it (a mode shape has no physical size).", n));
 }
 
 std::string isolatorTiles(const Json& modes, const Json& placement, const Json& frf) {
@@ -93,7 +73,9 @@ html::Page isolatorPage(const ReportArgs& args, const HamsasScene& scene, const 
   const int sheet = std::min<int>(6, static_cast<int>(h.modes.size()));
   page.sections.push_back({"modes", "Modes against the measured features",
                            html::table(hamsasFeatureTable(modes.json)) + html::table(hamsasModeTable(modes.json)) +
-                               (sheet > 0 ? isolatorModesSheet(scene, h, sheet, em) : ""),
+                               (sheet > 0 ? modesSheetFigure(em, "iso", sheet, [&](int m) { return drawHamsas(scene, h, ModeNumber(m), 1.0, 0, true); },
+                                                             "the design configuration")
+                                          : ""),
                            hamsasModesAccuracy(modes.json),
                            {commandFor(args, "modes", strf("--modes %d --out modes", args.modes)),
                             commandFor(args, "render", strf("--mode 1-%d --view iso --out modes.png", sheet))}});
@@ -160,16 +142,12 @@ int runHamsasReport(const ReportArgs& args, const HamsasScene& scene, OutputDir&
   doc["modes"] = modes.json;
   doc["placement"] = placement.json;
   doc["frf"] = frf.json;
-  checkResultFinite(doc);
-  const std::string page_html = html::page(page);
-  out.write("report.html", page_html);
-  out.write("report.json", doc.dump(2) + "\n");
-  out.commit();
+  const std::string where = writeReport(out, args.out, page, doc);
   emitResult(strf("report: %s\n  %zu modes tabulated, %zu measured features, %zu sensors, transmissibility x at 10 Hz %.1f dB, "
-                  "%d figures\n  page: %s (%.1f MB)\n",
+                  "%d figures\n",
                   scene.name.c_str(), modes.json.at("modes").size(), modes.json.at("features").size(),
-                  placement.json.at("chosen").size(), frf.json.at("at_10_hz_db").at(0).at(0).get<double>(), em.count(),
-                  (std::filesystem::path(args.out) / "report.html").c_str(), page_html.size() / 1e6));
+                  placement.json.at("chosen").size(), frf.json.at("at_10_hz_db").at(0).at(0).get<double>(), em.count()) +
+             where);
   return kOk;
 }
 

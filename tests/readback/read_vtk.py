@@ -84,6 +84,19 @@ def read_sensors(d):
     return len(placement["target_modes"]), poly.GetNumberOfPoints()
 
 
+def check_warp(poly, array, what):
+    """ParaView's Warp By Vector on `array` at scale 0.5 moves each point by half its vector."""
+    warp = vtkWarpVector()
+    warp.SetInputData(poly)
+    warp.SetInputArrayToProcess(0, 0, 0, 0, array)
+    warp.SetScaleFactor(0.5)
+    warp.Update()
+    moved, shape = warp.GetOutput(), poly.GetPointData().GetArray(array)
+    for i in range(poly.GetNumberOfPoints()):
+        p, q, u = poly.GetPoint(i), moved.GetPoint(i), shape.GetTuple3(i)
+        check(all(close(q[c], p[c] + 0.5 * u[c], 1e-9) for c in range(3)), what(i))
+
+
 def read_hamsas(d, js):
     """A HAM-SAS modes.vtp: each moving body a closed box of 8 corners and 6 faces
     (VTK's own normals point out of it), every mode's corner motion the body's
@@ -132,16 +145,7 @@ def read_hamsas(d, js):
             u = arr.GetTuple3(i)
             scale = max(1e-300, max(abs(x) for x in t) + max(abs(x) for x in w))
             check(all(abs(u[c] - want[c]) <= 1e-9 * scale for c in range(3)), f"{where}: {name} at corner {i} of {bodies[b]}: {u}, JSON {want}")
-    first = f"mode01_{js['modes'][0]['frequency_hz']:.4g}Hz"
-    warp = vtkWarpVector()
-    warp.SetInputData(poly)
-    warp.SetInputArrayToProcess(0, 0, 0, 0, first)
-    warp.SetScaleFactor(0.5)
-    warp.Update()
-    moved, shape = warp.GetOutput(), pd.GetArray(first)
-    for i in range(poly.GetNumberOfPoints()):
-        p, q, u = poly.GetPoint(i), moved.GetPoint(i), shape.GetTuple3(i)
-        check(all(close(q[c], p[c] + 0.5 * u[c], 1e-9) for c in range(3)), f"{where}: warped corner {i}")
+    check_warp(poly, f"mode01_{js['modes'][0]['frequency_hz']:.4g}Hz", lambda i: f"{where}: warped corner {i}")
     return len(js["modes"]), poly.GetNumberOfPoints()
 
 
@@ -211,17 +215,7 @@ def read(directory):
 
     # ParaView's use: Warp By Vector with mode 1 moves each point by its shape; Tube
     # with the section radius gives a surface.
-    first = f"mode01_{js['modes'][0]['frequency_hz']:.4g}Hz"
-    warp = vtkWarpVector()
-    warp.SetInputData(poly)
-    warp.SetInputArrayToProcess(0, 0, 0, 0, first)
-    warp.SetScaleFactor(0.5)
-    warp.Update()
-    shape = pd.GetArray(first)
-    moved = warp.GetOutput()
-    for i in range(poly.GetNumberOfPoints()):
-        p, q, u = poly.GetPoint(i), moved.GetPoint(i), shape.GetTuple3(i)
-        check(all(close(q[c], p[c] + 0.5 * u[c], 1e-9) for c in range(3)), f"{where}: warped point {names[i]}")
+    check_warp(poly, f"mode01_{js['modes'][0]['frequency_hz']:.4g}Hz", lambda i: f"{where}: warped point {names[i]}")
     pd.SetActiveScalars("tube_radius_m")
     tube = vtkTubeFilter()
     tube.SetInputData(poly)
