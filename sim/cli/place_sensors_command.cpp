@@ -17,6 +17,7 @@
 #include "sim/view/hamsas_drawing.hpp"
 #include "sim/io/output_dir.hpp"
 #include "sim/io/placement_report.hpp"
+#include "sim/model/stations.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -81,11 +82,21 @@ void writeReviewRenders(const FigurePath& out, const PlacementStudy& s, const st
   figures::contactSheetPng(out("review_modes.png"), tiles, cameras, {480, 320, 2}, std::min<int>(4, tiles.size()));
 }
 
-void writeArticleReviewRenders(const FigurePath& out, const ArticleScene& scene, const PlacementStudy& s) {
+void writeArticleReviewRenders(const FigurePath& out, const ArticleScene& scene, const PlacementStudy& s,
+                               const std::optional<ExciterStudy>& exciter) {
   const SolvedScene solved = solveScene(scene);
   SimTK::State st = solved.equilibrium.state;
   solved.model->getSystem().realize(st, SimTK::Stage::Position);
-  writeReviewRenders(out, s, scene.name, drawArticle(scene, *solved.model, st),
+  DrawList still = drawArticle(scene, *solved.model, st);
+  if (exciter && exciter->chosen) {  // `shaker.at: auto`: where the ranking put it
+    std::string error;
+    const auto at = PointRef::resolve(*solved.model, scene.article, exciter->at, error);
+    if (!at) throw std::runtime_error("the chosen shaker attachment " + exciter->at + ": " + error);
+    const SimTK::Vec3 p = at->position(st);
+    addShakerDrawing(still, {p[0], p[1], p[2]}, {exciter->direction[0], exciter->direction[1], exciter->direction[2]},
+                     strf("shaker at %s %s (ranked first)", exciter->at.c_str(), exciter->axis.c_str()));
+  }
+  writeReviewRenders(out, s, scene.name, std::move(still),
                      [&](ModeNumber m) { return ModeFrames(scene, solved, m, 0.0).frame(1.0, true); },
                      scene.article.model == ArticleModel::Spatial ? "iso" : "front");  // the front view hides z
 }
@@ -111,7 +122,7 @@ void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app
   try {
     figures::heatmap(out("automac.png"), s.result.automac, rows, cols,
                      strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()), "mode", "mode");
-    if (const auto* article = std::get_if<ArticleScene>(&loaded)) writeArticleReviewRenders(out, *article, s);
+    if (const auto* article = std::get_if<ArticleScene>(&loaded)) writeArticleReviewRenders(out, *article, s, study.exciter);
     else writeHamsasReviewRenders(out, std::get<HamsasScene>(loaded), *study.isolator_modes, s);
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());

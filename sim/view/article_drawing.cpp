@@ -26,6 +26,7 @@ const std::array<float, 4> kTorquer{0.35f, 0.35f, 0.38f, 1}, kSensor{0.80f, 0.10
 const std::array<float, 4> kGravity{0.25f, 0.25f, 0.25f, 1};
 /// A placement's proposed sensors: blue, apart from the scene's own (red).
 const std::array<float, 4> kProposed{0.05f, 0.30f, 0.70f, 1};
+const std::array<float, 4> kShaker{0.20f, 0.30f, 0.40f, 1};
 
 Eigen::Vector3d vec(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
 
@@ -123,6 +124,18 @@ void addHardware(DrawList& d, const ArticleScene& scene, const Model& model, con
   addFacility(d, scene, moved);
 }
 
+/// The scene's extra shaker (`shaker:`) where the scene fixes it; at `auto` the place is
+/// place-sensors' choice (its review renders draw that one).
+void addShaker(DrawList& d, const ArticleScene& scene, const Model& model, const SimTK::State& s) {
+  if (!scene.shaker || scene.shaker->autoAt()) return;
+  std::string error;
+  const auto p = PointRef::resolve(model, scene.article, scene.shaker->at, error);
+  MMV_DEMAND(p.has_value());
+  const auto& dir = scene.shaker->direction;
+  addShakerDrawing(d, vec(p->position(s)), Eigen::Vector3d(dir[0], dir[1], dir[2]),
+                   strf("shaker at %s (%.0f N)", scene.shaker->at.c_str(), scene.shaker->hardware.force_limit));
+}
+
 void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, const SimTK::State& s) {
   for (const auto& sensor : scene.sensors) {
     Eigen::Vector3d at;
@@ -165,6 +178,23 @@ void addSensors(DrawList& d, const ArticleScene& scene, const Model& model, cons
 }
 
 }  // namespace
+
+void addShakerDrawing(DrawList& d, const Eigen::Vector3d& at, const Eigen::Vector3d& direction, const std::string& label) {
+  const Eigen::Vector3d dir = direction.normalized();
+  constexpr double kStinger = 0.25, kBody = 0.2;  // m: the stinger's length, the shaker's (schematic)
+  DrawItem stinger;
+  stinger.shape = DrawItem::Shape::Cylinder;
+  stinger.rgba = kShaker;
+  stinger.size = {kStinger, 0.012, 0.012};
+  stinger.pose = poseAlong(at - 0.5 * kStinger * dir, dir);
+  d.items.push_back(stinger);
+  DrawItem body = stinger;
+  body.size = {kBody, 0.16, 0.16};
+  body.pose = poseAlong(at - (kStinger + 0.5 * kBody) * dir, dir);
+  d.items.push_back(body);
+  d.labels.push_back({at - (kStinger + kBody) * dir, label, kShaker});
+  d.legend.push_back({"shaker and stinger (schematic; it pushes along the stinger)", kShaker});
+}
 
 void addProposedSensors(DrawList& d, const std::vector<Eigen::Vector3d>& at, const std::vector<std::string>& names,
                         const std::vector<std::vector<Eigen::Vector3d>>& axes, const std::vector<double>& values,
@@ -238,6 +268,7 @@ DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK:
   d.legend.push_back({"torquers, tip masses (as steel of their mass, at least 60 mm)", kTorquer});
   d.legend.push_back({"sections drawn true to size, at least 15 mm", {1, 1, 1, 1}});
   addHardware(d, scene, model, s);
+  addShaker(d, scene, model, s);
   addSensors(d, scene, model, s);
   return d;
 }

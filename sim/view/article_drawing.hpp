@@ -32,6 +32,12 @@ namespace mmv {
 /// The article at the state `s` (realized to Position).
 DrawList drawArticle(const ArticleScene& scene, const Model& model, const SimTK::State& s);
 
+/// A shaker, schematic: its body off the article and the stinger to the driving point
+/// `at` along the force's `direction` (world), labelled; a legend entry. drawArticle
+/// draws the scene's own (`shaker:` at a station); place-sensors' review renders the
+/// one its ranking chose for `at: auto`.
+void addShakerDrawing(DrawList& d, const Eigen::Vector3d& at, const Eigen::Vector3d& direction, const std::string& label);
+
 /// A placement's proposed sensors (world, m): blue boxes labelled `names` (empty: none),
 /// apart from the scene's own red ones; coloured through the list's colour bar by `values`
 /// when given (one per mark); a rod along each of a sensor's measuring directions (`axes`,
