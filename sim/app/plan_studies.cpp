@@ -98,7 +98,8 @@ void placedInstrument(const ArticleScene& scene, const PlacementRequest& r, Plac
 namespace {
 
 /// The article's test geometry (channels, nodes, the ParaView set) and, on a scene with
-/// a shaker, its attachment and levels on the chosen sensors.
+/// a shaker, its attachment and levels on the chosen sensors; on the base table, the
+/// table's own levels.
 void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
   s.channels_csv = placementChannelsCsv(s.study);
   s.sensors_vtp = placementVtp(s.study);
@@ -111,6 +112,11 @@ void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
     s.text += exciterText(*s.exciter);
     s.exciter_csv = exciterCsv(*s.exciter);
     s.exciter_ranking_csv = exciterRankingCsv(*s.exciter);
+  }
+  if (article.article.base.type == BaseType::Table && !s.study.target_modes.empty()) {
+    s.table_levels = runTableLevels(article, s.study);
+    s.json["table_levels"] = tableLevelsJson(*s.table_levels);
+    s.text += tableLevelsText(*s.table_levels);
   }
 }
 

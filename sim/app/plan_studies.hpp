@@ -11,6 +11,7 @@
 #include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/io/mat_file.hpp"
 #include "sim/linear/exciter.hpp"
+#include "sim/linear/table_levels.hpp"
 #include "sim/modes/place_sensors.hpp"
 #include "sim/plan/check.hpp"
 
@@ -64,6 +65,7 @@ struct PlacementStudyResult {
   std::optional<ExciterStudy> exciter;     ///< the scene's shaker (`shaker:`), on the chosen sensors
   std::string exciter_csv, exciter_ranking_csv;  ///< exciter.csv, exciter_ranking.csv (empty without a shaker)
   std::string sensors_vtp;  ///< sensors.vtp, the chosen channels for ParaView (sim/io/vtk_export.hpp; the article's)
+  std::optional<TableLevels> table_levels;  ///< a scene on the base table: its dwell levels per target mode
 };
 
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& request);

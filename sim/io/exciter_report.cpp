@@ -128,4 +128,52 @@ std::string exciterRankingCsv(const ExciterStudy& e) {
   return fieldsCsv(exciterCandidateFields(), ranked(e, e.ranking.size()), every);
 }
 
+const std::vector<Field<TableLevels::Mode>>& tableLevelFields() {
+  using T = TableLevels::Mode;
+  // clang-format off
+  static const std::vector<Field<T>> fields{
+      {"mode", "", "%d", "the target mode", [](const T& m) -> Opt { return json(m.mode.number()); }},
+      {"frequency_hz", "Hz", "%.8g", "its frequency: the table's sine dwell's", [](const T& m) -> Opt { return json(m.frequency_hz); }},
+      {"axis", "", "%s", "the table's axis of the dwell (x in the plane, z across it): the one that shows the mode best", [](const T& m) -> Opt { return json(m.axis); }},
+      {"table_acc", "m/s^2", "%.6g", "the table's acceleration amplitude: stroke x omega^2, lowered to a sensor's range", [](const T& m) -> Opt { return json(m.table_acc); }},
+      {"table_amplitude_m", "m", "%.6g", "its displacement amplitude", [](const T& m) -> Opt { return json(m.table_amplitude_m); }},
+      {"limit", "", "%s", "what set it: stroke or range", [](const T& m) -> Opt { return json(m.limit); }},
+      {"acc", "m/s^2", "%.6g", "the absolute acceleration amplitude at the sensor that sees the mode most", [](const T& m) -> Opt { return json(m.acc); }},
+      {"best_channel", "", "%s", "that sensor direction (station axis)", [](const T& m) -> Opt { return json(m.best_channel); }},
+      {"snr_db", "dB", "%.6g", "20 log10(acc / the accelerometer's resolution)", [](const T& m) -> Opt { return json(m.snr_db); }},
+      {"channels_seen", "", "%d", "sensor directions at or above 20 dB in the dwell", [](const T& m) -> Opt { return json(m.channels_seen); }},
+      {"within_bandwidth", "", "%d", "the frequency is within the table's servo bandwidth", [](const T& m) -> Opt { return json(m.within_bandwidth); }},
+      {"seen", "", "%d", "within the bandwidth and snr_db >= 20 dB", [](const T& m) -> Opt { return json(m.seen); }},
+  };
+  // clang-format on
+  return fields;
+}
+
+json tableLevelsJson(const TableLevels& t) {
+  json j;
+  j["table"] = {{"stroke_m", t.table.stroke}, {"bandwidth_hz", t.table.bandwidth_hz}};
+  j["sensor"] = {{"resolution_m_per_s2", t.resolution}, {"range_m_per_s2", t.range}};
+  j["criteria"] = {{"seen_snr_db", kSeenSnrDb}};
+  j["modes"] = json::array();
+  for (const auto& m : t.modes) j["modes"].push_back(fieldsJson(tableLevelFields(), m, every));
+  return j;
+}
+
+std::string tableLevelsText(const TableLevels& t) {
+  std::ostringstream os;
+  int seen = 0;
+  for (const auto& m : t.modes) seen += m.seen;
+  os << strf("\nBase table (+-%.4g m stroke, %.4g Hz bandwidth), a sine dwell per target mode at the stroke: %d of %zu "
+             "target modes seen at >= %.0f dB\n",
+             t.table.stroke, t.table.bandwidth_hz, seen, t.modes.size(), kSeenSnrDb);
+  Table tab({"mode", "f_Hz", "axis", "table_m/s2", "table_mm", "limit", "acc_m/s2", "best sensor", "SNR_dB", "seen_by"});
+  for (const auto& m : t.modes)
+    tab.add({std::to_string(m.mode.number()), strf("%.4f", m.frequency_hz), m.axis, strf("%.3g", m.table_acc),
+             strf("%.3g", 1e3 * m.table_amplitude_m), m.limit, strf("%.3g", m.acc), m.best_channel,
+             strf("%.1f%s", m.snr_db, !m.within_bandwidth ? " ABOVE BANDWIDTH" : m.seen ? "" : " LOW"),
+             std::to_string(m.channels_seen)});
+  os << tab.text();
+  return os.str();
+}
+
 }  // namespace mmv

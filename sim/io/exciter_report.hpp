@@ -11,6 +11,7 @@
 
 #include "sim/io/fields.hpp"
 #include "sim/linear/exciter.hpp"
+#include "sim/linear/table_levels.hpp"
 
 namespace mmv {
 
@@ -34,5 +35,13 @@ std::string exciterText(const ExciterStudy& e);
 /// exciter.csv (a row per target mode) and exciter_ranking.csv (every candidate).
 std::string exciterCsv(const ExciterStudy& e);
 std::string exciterRankingCsv(const ExciterStudy& e);
+
+/// The base table's levels (sim/linear/table_levels.hpp), from tableLevelFields: mode,
+/// frequency_hz, axis, table_acc, table_amplitude_m, limit, acc, best_channel, snr_db,
+/// channels_seen, within_bandwidth, seen. placement.json's "table_levels" (the table's
+/// stroke and bandwidth, the sensor's resolution and range, the modes) and the text section.
+const std::vector<Field<TableLevels::Mode>>& tableLevelFields();
+nlohmann::ordered_json tableLevelsJson(const TableLevels& t);
+std::string tableLevelsText(const TableLevels& t);
 
 }  // namespace mmv

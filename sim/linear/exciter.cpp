@@ -17,23 +17,6 @@ namespace {
 
 double along(const std::array<double, 3>& u, const std::array<double, 3>& e) { return u[0] * e[0] + u[1] * e[1] + u[2] * e[2]; }
 
-/// A chosen sensor direction: its station and world axis.
-struct Channel {
-  std::string station, name;
-  std::array<double, 3> world{};
-};
-
-std::vector<Channel> chosenChannels(const PlacementStudy& study) {
-  std::vector<char> kept(study.candidates.size(), 0);
-  for (int b : study.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
-  std::vector<Channel> out;
-  for (const auto& d : study.directions)
-    if (kept[static_cast<std::size_t>(d.block)]) {
-      const std::string& station = study.candidates[static_cast<std::size_t>(d.block)].station;
-      out.push_back({station, station + " " + d.axis, d.world});
-    }
-  return out;
-}
 
 /// The loaded model's modes (over the admissible coordinates), its damping per mode,
 /// and the target modes followed into it.
@@ -46,7 +29,7 @@ struct Loaded {
 /// The article with the armature on it (buildLinearModel: the stinger is stiff along its
 /// axis and free across it, so the armature's mass moves with the driving point along
 /// the direction only; its weight stays on the shaker's flexures).
-Loaded loadedModel(const ArticleScene& scene, const ExciterStudy& e, const std::vector<Channel>& channels) {
+Loaded loadedModel(const ArticleScene& scene, const ExciterStudy& e, const std::vector<SensorChannel>& channels) {
   const int axes = scene.article.model == ArticleModel::Spatial ? 3 : 2;
   InputSpec shaker{"shaker", InputKind::PointForce, e.at, -1};
   shaker.direction = e.direction;
@@ -74,7 +57,7 @@ struct Unit {
   std::complex<double> stroke;
 };
 
-Unit unitResponse(const Loaded& l, const ExciterStudy& e, const std::vector<Channel>& channels, double f_hz) {
+Unit unitResponse(const Loaded& l, const ExciterStudy& e, const std::vector<SensorChannel>& channels, double f_hz) {
   const Eigen::MatrixXcd H = l.lm.second_order.response(2 * M_PI * f_hz);
   const int axes = static_cast<int>(H.rows() / static_cast<Eigen::Index>(channels.size() + 1));
   const Eigen::VectorXcd h = H.col(0);  // per N of the shaker's force
@@ -90,7 +73,7 @@ Unit unitResponse(const Loaded& l, const ExciterStudy& e, const std::vector<Chan
 }
 
 /// Sine dwell at each target's loaded frequency.
-void sineLevels(ExciterStudy& e, const Loaded& l, const std::vector<Channel>& channels) {
+void sineLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChannel>& channels) {
   for (auto& m : e.modes) {
     const Unit u = unitResponse(l, e, channels, m.loaded_hz);
     std::size_t best = 0;
@@ -112,7 +95,7 @@ void sineLevels(ExciterStudy& e, const Loaded& l, const std::vector<Channel>& ch
 
 /// Random: a flat force spectrum over the band, integrated on a grid that resolves every
 /// loaded mode inside it.
-void randomLevels(ExciterStudy& e, const Loaded& l, const std::vector<Channel>& channels) {
+void randomLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChannel>& channels) {
   ExciterStudy::Random& r = e.random;
   double lo = 0.1, hi = 50;  // the accelerometers' band, widened to hold every target
   for (const auto& m : e.modes) lo = std::min(lo, 0.5 * m.loaded_hz), hi = std::max(hi, 1.25 * m.loaded_hz);
@@ -210,7 +193,7 @@ ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) 
   MMV_DEMAND(acc.kind == "accelerometer" && acc.range > 0);
   e.resolution = acc.resolution, e.range = acc.range;
   e.sample_rate_hz = scene.simulation.sample_rate_hz;
-  const std::vector<Channel> channels = chosenChannels(study);
+  const std::vector<SensorChannel> channels = chosenSensorChannels(study);
   const ProgressStage stage("the shaker: its armature on the model, sine and random levels");
   int highest = 0;
   for (const ModeNumber m : study.target_modes) highest = std::max(highest, m.number());
@@ -240,6 +223,18 @@ ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) 
   sineLevels(e, l, channels);
   randomLevels(e, l, channels);
   return e;
+}
+
+std::vector<SensorChannel> chosenSensorChannels(const PlacementStudy& study) {
+  std::vector<char> kept(study.candidates.size(), 0);
+  for (int b : study.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
+  std::vector<SensorChannel> out;
+  for (const auto& d : study.directions)
+    if (kept[static_cast<std::size_t>(d.block)]) {
+      const std::string& station = study.candidates[static_cast<std::size_t>(d.block)].station;
+      out.push_back({station, station + " " + d.axis, d.world});
+    }
+  return out;
 }
 
 }  // namespace mmv

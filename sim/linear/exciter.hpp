@@ -99,6 +99,14 @@ struct ExciterStudy {
   } random;
 };
 
+/// A chosen sensor direction: its station, "station axis" and world axis.
+struct SensorChannel {
+  std::string station, name;
+  std::array<double, 3> world{};
+};
+/// Every measured direction of `study`'s chosen sensors, in the placement's order.
+std::vector<SensorChannel> chosenSensorChannels(const PlacementStudy& study);
+
 /// The shaker of `scene` (MMV_DEMAND: it has one) against `study`'s targets and chosen
 /// sensors. Throws SceneError when a target mode is undamped (below kLeastDampingRatio),
 /// NumericalError when the model cannot respond (a singular model).

@@ -9,7 +9,10 @@
 #include <complex>
 
 #include "facility/sensors.hpp"
+#include "sim/app/linear_study.hpp"
 #include "sim/linear/exciter.hpp"
+#include "sim/linear/table_levels.hpp"
+#include "sim/modes/system_modes.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace mmv {
@@ -200,6 +203,93 @@ TEST(Exciter, TheRankingsArmatureShiftIsFirstOrderAndItsOrderHolds) {
   EXPECT_TRUE(chosen.chosen);
   EXPECT_EQ(chosen.at, heavy.front().station);
   EXPECT_EQ(chosen.axis, heavy.front().axis);
+}
+
+}  // namespace
+}  // namespace mmv
+
+namespace mmv {
+namespace {
+
+// The base table's dwell levels (sim/linear/table_levels.hpp) against the closed form of
+// one mode: per unit table acceleration along x, a sensor direction e reads the table's
+// own e_x and, in quadrature at resonance, the mode's Gamma u_e / (2 zeta) (Gamma^2 the
+// mode's effective mass along x, from runModes; u_e the placement's station shape along
+// e). With a range too large to bind, the stroke sets the dwell (0.15 m x omega^2); with
+// a small one, the best sensor sits exactly on it.
+TEST(TableLevels, ASingleModeMeetsItsClosedFormAndItsLimitsBindExactly) {
+  ArticleScene s = scene({"links.link1.segments=1", "links.link2.segments=rigid", "links.link3.segments=rigid"}, 0.02);
+  s.article.base.type = BaseType::Table;
+  PlacementOptions o;
+  o.modes = {ModeNumber(1)};
+  o.count = 3;
+  PlacementStudy p = runPlacement(s, o);
+  const ModesReport modes = runModes(s);
+  ASSERT_FALSE(modes.modes.empty());
+  const double gamma = std::sqrt(modes.modes[0].effective_mass_x_kg), zeta = 0.02;
+  const double w = 2 * M_PI * p.target_frequencies_hz[0];
+  ASSERT_NEAR(modes.modes[0].frequency_hz / p.target_frequencies_hz[0], 1.0, 1e-9);
+  const std::vector<double> u = sensorShapes(p, 0);
+  const std::vector<SensorChannel> channels = chosenSensorChannels(p);
+  ASSERT_EQ(u.size(), channels.size());
+  double best = 0;
+  for (std::size_t c = 0; c < u.size(); ++c) best = std::max(best, std::hypot(channels[c].world[0], gamma * u[c] / (2 * zeta)));
+  ASSERT_GT(gamma * best, 0.0);
+  p.instrument.spec.range = 1e9;
+  TableLevels t = runTableLevels(s, p);
+  ASSERT_EQ(t.modes.size(), 1u);
+  EXPECT_EQ(t.modes[0].axis, "x");
+  EXPECT_EQ(t.modes[0].limit, "stroke");
+  EXPECT_DOUBLE_EQ(t.modes[0].table_amplitude_m, 0.15);
+  EXPECT_NEAR(t.modes[0].table_acc, 0.15 * w * w, 1e-12 * w * w);
+  EXPECT_NEAR(t.modes[0].acc / (best * t.modes[0].table_acc), 1.0, 1e-8);
+  EXPECT_NEAR(t.modes[0].snr_db, 20 * std::log10(t.modes[0].acc / p.instrument.spec.resolution), 1e-9);
+  EXPECT_EQ(t.modes[0].within_bandwidth, p.target_frequencies_hz[0] <= 10);
+  const double range = 1e-3 * t.modes[0].acc;
+  p.instrument.spec.range = range;
+  t = runTableLevels(s, p);
+  EXPECT_EQ(t.modes[0].limit, "range");
+  EXPECT_NEAR(t.modes[0].acc / range, 1.0, 1e-12);
+  EXPECT_NEAR(t.modes[0].table_acc / (range / best), 1.0, 1e-8);
+}
+
+// On the table scene: the modes above the table's 10 Hz bandwidth are not counted as
+// seen however loud the dwell, those below are, and each level is the frf's response at
+// its sensor times the table's acceleration (the same number by frf's own study).
+TEST(TableLevels, AboveTheBandwidthIsNotSeenAndEachLevelIsTheFrfs) {
+  ArticleScene s = loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml");
+  overrideSegments(s, 4);
+  s.shaker.reset();
+  PlacementOptions o;
+  o.below_hz = 30;
+  o.count = 8;
+  const PlacementStudy p = runPlacement(s, o);
+  const TableLevels t = runTableLevels(s, p);
+  int above = 0, below = 0;
+  for (const auto& m : t.modes) {
+    EXPECT_EQ(m.within_bandwidth, m.frequency_hz <= 10) << m.mode.number();
+    if (!m.within_bandwidth) {
+      ++above;
+      EXPECT_FALSE(m.seen) << m.mode.number();
+    } else {
+      ++below;
+      EXPECT_EQ(m.seen, m.snr_db >= kSeenSnrDb) << m.mode.number();
+    }
+  }
+  EXPECT_GT(above, 0);
+  EXPECT_GT(below, 0);
+  const auto& m = t.modes.front();
+  const std::vector<SensorChannel> channels = chosenSensorChannels(p);
+  const auto ch = std::find_if(channels.begin(), channels.end(), [&](const SensorChannel& c) { return c.name == m.best_channel; });
+  ASSERT_NE(ch, channels.end());
+  app::LinearRequest r;
+  r.inputs = {"table_x"};
+  r.outputs = {ch->station + ":x:acc_abs", ch->station + ":y:acc_abs"};
+  r.f_min = m.frequency_hz, r.f_max = 2 * m.frequency_hz, r.range_given = true, r.points = 2;
+  const app::LinearStudy frf = app::runLinearStudy(s, r);
+  ASSERT_NEAR(frf.f.front(), m.frequency_hz, 1e-12 * m.frequency_hz);
+  const std::complex<double> a = frf.hf.front()(0, 0) * ch->world[0] + frf.hf.front()(1, 0) * ch->world[1];
+  EXPECT_NEAR(std::abs(a) * m.table_acc / m.acc, 1.0, 1e-9);
 }
 
 }  // namespace

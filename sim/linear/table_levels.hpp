@@ -1,0 +1,47 @@
+#pragma once
+/// The base excitation table's own levels in a pre-test analysis (`place-sensors` on a
+/// scene whose base is the table): for each target mode, a sine dwell of the table at
+/// the mode's frequency, as large as its stroke allows (acceleration amplitude
+/// stroke x omega^2), lowered where a chosen sensor would pass its range, along the
+/// table's axis that shows the mode best (x in the plane; on the spatial model also z,
+/// across it); the absolute acceleration of every chosen sensor direction from the
+/// linear model of `frf` (the scene's damping, else 1 % modal), its signal-to-noise
+/// ratio against the accelerometer's resolution at the sensor that sees the mode most,
+/// and whether the frequency is within the table's servo bandwidth (10 Hz: above it the
+/// loop attenuates the motion, and the mode is not counted as seen).
+
+#include <string>
+#include <vector>
+
+#include "facility/table_programs.hpp"
+#include "sim/core/mode_number.hpp"
+#include "sim/modes/place_sensors.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace mmv {
+
+struct TableLevels {
+  facility::TableSpec table;
+  double resolution = 0, range = 0;  ///< m/s^2, each sensor's
+  struct Mode {
+    ModeNumber mode{1};
+    double frequency_hz = 0;
+    std::string axis;              ///< the table's axis of the dwell: x or z
+    double table_acc = 0;          ///< m/s^2, the table's acceleration amplitude
+    double table_amplitude_m = 0;  ///< its displacement amplitude
+    std::string limit;             ///< stroke or range: what set it
+    double acc = 0;                ///< m/s^2, the amplitude at the best sensor
+    std::string best_channel;      ///< "station axis"
+    double snr_db = 0;             ///< 20 log10(acc / resolution)
+    int channels_seen = 0;         ///< sensor directions at or above kSeenSnrDb
+    bool within_bandwidth = true;  ///< frequency_hz <= the table's bandwidth
+    bool seen = false;             ///< within the bandwidth and snr_db >= kSeenSnrDb
+  };
+  std::vector<Mode> modes;
+};
+
+/// The table's dwell levels for `study`'s targets on its chosen sensors. MMV_DEMAND: the
+/// scene's base is the table.
+TableLevels runTableLevels(const ArticleScene& scene, const PlacementStudy& study);
+
+}  // namespace mmv
