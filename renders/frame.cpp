@@ -365,21 +365,26 @@ cv::Mat renderFrame(const DrawList& list, const Camera& preset, const FrameOptio
   glFinish();
   // What the opaque drawing marked (the article, not its surroundings), at the frame's
   // size: labels keep off it where they can.
+  // A sample per pixel is enough to tell a label's place from the drawing (nearest, not
+  // averaged: a video reads one per frame), into buffers kept for the next frame.
   cv::Mat ink;
   if (!list.labels.empty()) {
-    cv::Mat stencil(h, w, CV_8UC1), small_stencil;
+    thread_local cv::Mat stencil, small_stencil;
+    stencil.create(h, w, CV_8UC1);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data);
-    cv::resize(stencil, small_stencil, cv::Size(o.width, o.height), 0, 0, cv::INTER_AREA);
+    cv::resize(stencil, small_stencil, cv::Size(o.width, o.height), 0, 0, cv::INTER_NEAREST);
     cv::flip(small_stencil, ink, 0);
   }
-  // Reduce first (area averaging of the k x k samples), then convert and flip the
-  // small image: OpenGL's rows run bottom-up.
+  // Reduce first (area averaging of the k x k samples), then flip and convert the
+  // small image (OpenGL's rows run bottom-up), through buffers a video's next frame
+  // reuses.
   const cv::Mat rgba(h, w, CV_8UC4, const_cast<unsigned char*>(ctx.buffer().data()));
-  cv::Mat small, bgr_small, out;
+  thread_local cv::Mat small, flipped;
+  cv::Mat out;
   cv::resize(rgba, small, cv::Size(o.width, o.height), 0, 0, cv::INTER_AREA);
-  cv::cvtColor(small, bgr_small, cv::COLOR_RGBA2BGR);
-  cv::flip(bgr_small, out, 0);
+  cv::flip(small, flipped, 0);
+  cv::cvtColor(flipped, out, cv::COLOR_RGBA2BGR);
   layoutNewImage(out.cols, out.rows, "frame");
   annotate(out, list, camera, ink);
   return out;

@@ -80,6 +80,7 @@ void writeFrames(const RenderArgs& args, const std::string& ext, const Drawings&
   }
   if (modes.size() != 1) throw UsageError("--mode " + args.mode + ": a video shows one mode's cycle");
   const Camera cam = cameraFor(dr.mode(ModeNumber(modes[0]), 1.0, false));  // one camera for every frame
+  frame.supersample = kVideoSupersample;
   writeAtomically(args.out, args.force, [&](const std::string& p) {
     render::VideoSink video(p, 24.0, cv::Size(frame.width, frame.height));
     const ProgressStage stage("drawing the mode's cycle");

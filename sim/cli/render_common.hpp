@@ -22,6 +22,11 @@ constexpr int kMaxMp4Side = 8191;               ///< MPEG-4 part 2 codes 13-bit 
 constexpr double kMaxImagePixels = 8192.0 * 8192.0;  ///< one PNG, a contact sheet included.
 
 /// "1280x720" -> width, height (16..8192 each; at most 8191 for an .mp4); UsageError otherwise.
+/// A video's frames are drawn at 2x supersampling (stills: 3x): the encoder's
+/// compression is coarser than the difference, and a 10 s run's video costs about a third
+/// less (docs/benchmarks.md, "Renders").
+inline constexpr int kVideoSupersample = 2;
+
 void parseSize(const std::string& text, render::FrameOptions& o, const std::string& ext);
 /// A contact sheet of `tiles` frames at most kMaxImagePixels; UsageError naming --mode and --size.
 void checkSheetPixels(const std::string& size_text, const std::string& mode_text, std::size_t tiles, const render::FrameOptions& o);

@@ -263,6 +263,7 @@ void renderHistory(const RenderArgs& args, const std::string& ext) {
     return;
   }
   if (args.at >= 0) throw UsageError("--at draws one frame: write a .png");
+  frame.supersample = kVideoSupersample;
   const double frames = std::floor((t1 - t0) / args.speed * args.fps) + 1;
   if (frames > kMaxFrames)
     throw UsageError(strf("render --history: %.0f frames at %g frames/s and speed %g (limit %d): lower --fps or raise --speed",
