@@ -149,8 +149,6 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
       throw UsageError(opt("--tam") + ": unknown test-analysis model '" + name + "' (known: guyan, irs, serep, all)");
     if (std::find(o.tam.begin(), o.tam.end(), m) == o.tam.end()) o.tam.push_back(m);
   }
-  if (!o.tam.empty() && !std::holds_alternative<ArticleScene>(scene))
-    throw UsageError(opt("--tam") + " applies to the article's scenes (the isolator's TAM is not built yet)");
   checkRange(r.front, "--sensor-mass", r.sensor_mass_kg, 0, 100);
   checkRange(r.front, "--min-separation", r.min_separation_m, 0, 100);
   o.min_separation_m = r.min_separation_m;

@@ -3,11 +3,50 @@
 #include <cmath>
 
 #include "sim/core/text.hpp"
+#include "sim/modes/tam.hpp"
 
 namespace mmv {
 
+namespace {
+
+/// The test-analysis models on the chosen sensor directions (`readings`: each candidate
+/// direction's reading per unit free coordinate, the kept blocks' rows in row order),
+/// over the admissible coordinates (Z: ideal joints' null space; the identity for stiff
+/// ones), as the article's (sim/modes/place_sensors.cpp).
+void buildHamsasTams(PlacementStudy& study, const HamsasModes& h, const std::vector<int>& block,
+                     const std::vector<Eigen::RowVectorXd>& readings, const std::vector<TamMethod>& methods) {
+  std::vector<char> kept(study.candidates.size(), 0);
+  for (int b : study.result.kept_blocks) kept[static_cast<std::size_t>(b)] = 1;
+  std::vector<Eigen::Index> chosen;
+  std::vector<int> seen_in_block(study.candidates.size(), 0);  // a triaxial block's rows are x, y, z
+  for (std::size_t r = 0; r < readings.size(); ++r) {
+    const auto b = static_cast<std::size_t>(block[r]);
+    const int within = seen_in_block[b]++;
+    if (!kept[b]) continue;
+    chosen.push_back(static_cast<Eigen::Index>(r));
+    const PlacementCandidate& c = study.candidates[b];
+    study.channels.push_back(c.station + " " + (study.triaxial ? std::string(1, "xyz"[within]) : c.axis));
+  }
+  const SpatialLinearization& lin = h.lin;
+  const Eigen::Index n = lin.M.rows();
+  const Eigen::MatrixXd Z = lin.Z.size() ? lin.Z : Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd P(static_cast<Eigen::Index>(chosen.size()), n), phi(n, static_cast<Eigen::Index>(study.target_modes.size()));
+  for (std::size_t i = 0; i < chosen.size(); ++i) P.row(static_cast<Eigen::Index>(i)) = readings[static_cast<std::size_t>(chosen[i])];
+  TamInput in{Z.transpose() * lin.M * Z, Z.transpose() * lin.K * Z, {}, {}, {}};
+  in.P = P * Z;
+  in.omega2.resize(static_cast<Eigen::Index>(study.target_modes.size()));
+  for (std::size_t j = 0; j < study.target_modes.size(); ++j) {
+    phi.col(static_cast<Eigen::Index>(j)) = h.solution.shapes.col(study.target_modes[j].index());
+    in.omega2[static_cast<Eigen::Index>(j)] = h.solution.omega2[study.target_modes[j].index()];
+  }
+  in.phi = Z.transpose() * phi;
+  for (const TamMethod m : methods) study.tams.push_back(buildTam(in, m));
+}
+
+}  // namespace
+
 PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,
-                                  std::vector<PlacementCandidate>& candidates) {
+                                  std::vector<PlacementCandidate>& candidates, std::vector<Eigen::RowVectorXd>* readings) {
   const int k = static_cast<int>(targets.size());
   PlacementProblem p;
   p.omega.resize(k);
@@ -33,6 +72,12 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNu
       }
       for (int a = 0; a < 3; ++a) {
         rows.push_back(u.row(a));
+        if (readings) {  // along axis a per unit free coordinate: e_a . t + w . (offset x e_a)
+          Eigen::RowVectorXd reading = Eigen::RowVectorXd::Zero(h.solution.shapes.rows());
+          reading(r + a) = 1;
+          reading.segment<3>(r + 3) = offset.cross(Eigen::Vector3d::Unit(a)).transpose();
+          readings->push_back(std::move(reading));
+        }
         masses.push_back(body.mass / 9);
         if (!triaxial || a == 0) candidates.push_back({name, body.name, 0.0, triaxial ? "triaxial" : axes[a], at.x(), at.y(), at.z()});
         p.block.push_back(static_cast<int>(candidates.size()) - 1);
@@ -52,8 +97,10 @@ PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h
   study.triaxial = o.triaxial;
   study.target_modes = placementTargets(h.solution, o);
   for (const ModeNumber m : study.target_modes) study.target_frequencies_hz.push_back(h.solution.frequencyHz(m.index()));
-  const PlacementProblem p = hamsasCandidates(h, study.target_modes, o.triaxial, study.candidates);
+  std::vector<Eigen::RowVectorXd> readings;
+  const PlacementProblem p = hamsasCandidates(h, study.target_modes, o.triaxial, study.candidates, &readings);
   choosePlacement(study, p, o, 3, "the centre and 8 corners of each of " + std::to_string(h.model.bodies.size() - 1) + " bodies");
+  if (!o.tam.empty()) buildHamsasTams(study, h, p.block, readings, o.tam);
   return study;
 }
 

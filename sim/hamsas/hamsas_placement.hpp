@@ -15,9 +15,11 @@
 namespace mmv {
 
 /// The candidates (one per block, appended to `candidates`) and their rows of the
-/// target modes' shapes.
+/// target modes' shapes; with `readings`, each row's reading per unit free coordinate
+/// (the test-analysis models' observation rows).
 PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,
-                                  std::vector<PlacementCandidate>& candidates);
+                                  std::vector<PlacementCandidate>& candidates,
+                                  std::vector<Eigen::RowVectorXd>* readings = nullptr);
 
 /// As runPlacement for an article; `options.spacing_m` does not apply (the points are
 /// the bodies'). Throws UsageError for modes that do not exist or are not vibration

@@ -55,9 +55,15 @@ TEST_F(Cli, PlaceSensorsRefusesATamItCannotBuildByName) {
   EXPECT_EQ(unknown.code, 64);
   EXPECT_NE(unknown.err.find("--tam: unknown test-analysis model 'craig' (known: guyan, irs, serep, all)"), std::string::npos)
       << unknown.err;
-  const Result isolator = run("place-sensors " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() + " --tam irs");
-  EXPECT_EQ(isolator.code, 64);
-  EXPECT_NE(isolator.err.find("--tam applies to the article's scenes"), std::string::npos) << isolator.err;
+  // The isolator's TAMs are built (their identities: HamsasPlacement.Tams...); its
+  // tam.csv has a row per model and target.
+  const fs::path iso = dir_ / "isolator";
+  const Result isolator = run("place-sensors " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() +
+                              " --below-hz 5 --count 9 --tam irs --out " + iso.string());
+  ASSERT_EQ(isolator.code, 0) << isolator.err;
+  const std::string iso_csv = slurp(iso / "tam.csv");
+  EXPECT_EQ(std::count(iso_csv.begin(), iso_csv.end(), '\n'), 1 + 9);
+  EXPECT_TRUE(fs::exists(iso / "tam.mat"));
   // Two sensors (ranked by kinetic energy: EfI refuses fewer than the modes itself) for
   // four target modes: SEREP needs one per mode; named, no output.
   const fs::path out = dir_ / "few";

@@ -3,8 +3,10 @@
 // chosen set tells the target modes apart.
 #include <gtest/gtest.h>
 
+#include "sim/core/errors.hpp"
 #include "sim/hamsas/hamsas_placement.hpp"
 #include "sim/hamsas/spatial_linear.hpp"
+#include "sim/modes/tam.hpp"
 
 namespace mmv {
 namespace {
@@ -55,6 +57,51 @@ TEST(HamsasPlacement, ChosenSetTellsTheLowModesApart) {
   for (int b : t.result.kept_blocks) EXPECT_EQ(t.candidates[static_cast<std::size_t>(b)].axis, "triaxial");
   o.count = 1000;
   EXPECT_THROW(runHamsasPlacement(isolator(), h, o), UsageError);
+}
+
+// The isolator's test-analysis models (issue 34: --tam was refused on HAM-SAS). Each
+// candidate's reading row times the shapes is its placement row (the TAM observes what
+// the placement chose by); on nine sensors for the nine modes below 5 Hz, SEREP
+// reproduces the targets (frequencies, self- and cross-orthogonality 1) and Guyan's
+// frequencies lie at or above them (a Ritz reduction's upper bound). Twelve read only nine
+// independent motions of the rigid bodies: a TAM needs independent directions, and says
+// so by name.
+TEST(HamsasPlacement, TamsOnTheChosenSensorsMeetTheirIdentities) {
+  const HamsasModes h = analyseHamsas(isolator().isolator);
+  const std::vector<ModeNumber> targets = modeNumbers({1, 2, 3});
+  std::vector<PlacementCandidate> candidates;
+  std::vector<Eigen::RowVectorXd> readings;
+  const PlacementProblem p = hamsasCandidates(h, targets, false, candidates, &readings);
+  ASSERT_EQ(readings.size(), static_cast<std::size_t>(p.phi.rows()));
+  double worst = 0;
+  for (std::size_t r = 0; r < readings.size(); ++r)
+    for (std::size_t j = 0; j < targets.size(); ++j)
+      worst = std::max(worst, std::abs(readings[r].dot(h.solution.shapes.col(targets[j].index())) - p.phi(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(j))));
+  EXPECT_LT(worst, 1e-12 * p.phi.cwiseAbs().maxCoeff());
+  PlacementOptions o;
+  o.below_hz = 5;
+  o.count = 12;
+  o.tam = {TamMethod::Guyan, TamMethod::Serep};
+  try {
+    runHamsasPlacement(isolator(), h, o);
+    ADD_FAILURE() << "twelve dependent directions made a TAM";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("are dependent"), std::string::npos) << e.what();
+  }
+  o.count = 9;
+  const PlacementStudy s = runHamsasPlacement(isolator(), h, o);
+  ASSERT_EQ(s.tams.size(), 2u);
+  EXPECT_EQ(s.channels.size(), 9u);
+  const TamResult& guyan = s.tams[0];
+  const TamResult& serep = s.tams[1];
+  ASSERT_EQ(serep.modes.size(), s.target_modes.size());
+  for (std::size_t j = 0; j < serep.modes.size(); ++j) {
+    EXPECT_NEAR(serep.modes[j].frequency_error, 0.0, 1e-6) << j;
+    EXPECT_NEAR(serep.modes[j].self_diagonal, 1.0, 1e-6) << j;
+    EXPECT_NEAR(serep.modes[j].cross_diagonal, 1.0, 1e-6) << j;
+    EXPECT_GE(guyan.modes[j].frequency_error, -1e-6) << j;
+  }
+  EXPECT_TRUE(serep.pass);
 }
 
 }  // namespace
