@@ -220,8 +220,10 @@ std::shared_ptr<const ProfileSamples> parseProfile(const std::string& text, cons
   auto fail = [&](const std::string& what) { throw std::invalid_argument(source + ":" + std::to_string(no) + ": " + what); };
   if (!std::getline(is, line)) fail("empty profile (expected the header time_s,x_m)");
   ++no;
-  if (line.rfind("time_s,x_m", 0) != 0 && line.rfind("time_s,torque_n_m", 0) != 0 && line.rfind("time_s,angle_deg", 0) != 0)
-    fail("header must be time_s,x_m (time_s,torque_n_m for a torque, time_s,angle_deg for an angle program) (got " + line + ")");
+  if (line.rfind("time_s,x_m", 0) != 0 && line.rfind("time_s,torque_n_m", 0) != 0 && line.rfind("time_s,angle_deg", 0) != 0 &&
+      line.rfind("time_s,force_n", 0) != 0)
+    fail("header must be time_s,x_m (time_s,torque_n_m for a torque, time_s,angle_deg for an angle program, time_s,force_n "
+         "for the shaker's force) (got " + line + ")");
   std::vector<double> t, x;
   while (std::getline(is, line)) {
     ++no;

@@ -43,7 +43,7 @@ std::unique_ptr<TableProgram> sineSweep(double amplitude, double f0_hz, double f
 std::unique_ptr<TableProgram> bandLimitedRandom(double rms, double f_lo_hz, double f_hi_hz, double duration,
                                                 std::uint64_t seed, int n_lines = 200);
 /// A deterministic profile read from CSV text with a header `time_s,x_m` (or
-/// `time_s,torque_n_m`, `time_s,angle_deg`: the values as read): piecewise
+/// `time_s,torque_n_m`, `time_s,angle_deg`, `time_s,force_n`: the values as read): piecewise
 /// cubic Hermite through the samples (Catmull-Rom slopes), at rest before and after.
 /// Throws std::invalid_argument "source:line: what is wrong".
 std::unique_ptr<TableProgram> csvProfile(const std::string& csv_text, const std::string& source);

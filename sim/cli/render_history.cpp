@@ -96,7 +96,7 @@ using DrawAt = std::function<DrawList(double t)>;
 
 /// An article run: its model rebuilt, its coordinates set at each time.
 DrawAt articleFrames(const RunDir& run, std::shared_ptr<Model>& model) {
-  model = buildArticleModel(run.scene);
+  model = buildArticleModel(run.scene, ModelUse::TimeRun);
   checkRunModel(run, *model);
   auto state = std::make_shared<SimTK::State>(model->getReferenceState());
   return [&run, model, state](double t) {
@@ -152,7 +152,7 @@ struct PvdFrames {
 };
 
 PvdFrames articlePvd(const RunDir& run) {
-  std::shared_ptr<Model> model = buildArticleModel(run.scene);
+  std::shared_ptr<Model> model = buildArticleModel(run.scene, ModelUse::TimeRun);
   checkRunModel(run, *model);
   auto state = std::make_shared<SimTK::State>(model->getReferenceState());
   auto names = std::make_shared<std::vector<std::string>>();

@@ -67,6 +67,14 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
   if (r.carried_weight_n > 0)
     j["table"] = {{"peak_force_n", r.peak_table_force_n}, {"carried_weight_n", r.carried_weight_n},
                   {"payload_n", facility::TableSpec{}.payload_n}};
+  if (r.shaker)
+    j["shaker"] = {{"at", r.shaker->at},
+                   {"peak_force_n", r.shaker->peak_force_n},
+                   {"force_limit_n", r.shaker->force_limit_n},
+                   {"peak_stroke_m", r.shaker->peak_stroke_m},
+                   {"stroke_m", r.shaker->stroke_m},
+                   {"peak_stinger_force_n", r.shaker->peak_stinger_force_n},
+                   {"stroke_exceeded", r.shaker->stroke_exceeded}};
   if (r.constraint_drift_m > 0) j["constraint_drift_m"] = r.constraint_drift_m;
   j["steps"] = r.steps;
   j["realizations"] = r.realizations;
@@ -125,6 +133,11 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
   if (r.carried_weight_n > 0)
     os << strf("\nTable: peak actuator force %.4g N; carries %.4g N of its %.4g N payload\n", r.peak_table_force_n,
                r.carried_weight_n, facility::TableSpec{}.payload_n);
+  if (const auto& sh = r.shaker)
+    os << strf("\nShaker at %s: peak force %.4g N of its %.4g N; armature travel %.4g mm of its +-%.4g mm stroke%s; "
+               "the stinger passes up to %.4g N\n",
+               sh->at.c_str(), sh->peak_force_n, sh->force_limit_n, sh->peak_stroke_m * 1e3, sh->stroke_m * 1e3,
+               sh->stroke_exceeded ? " (EXCEEDED)" : "", sh->peak_stinger_force_n);
   if (!r.sensors.empty()) {
     Table st({"sensor", "type", "unit", "saturated_samples"});
     for (const auto& s : r.sensors) {  // the cells are the records' values (sensorSummaryFields)
@@ -284,6 +297,10 @@ std::vector<std::string> simulationWarnings(const SimulationResult& r, double ar
     if (t.exceeded)
       warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
                          strf("%.4g", t.capacity_nm) + " N*m");
+  if (r.shaker && r.shaker->stroke_exceeded)
+    warnings.push_back(strf("the shaker's armature travels %.4g mm, beyond its +-%.4g mm stroke (shaker.stroke_m): lower the "
+                            "program's force near the article's resonances, or move the shaker where the article moves less",
+                            r.shaker->peak_stroke_m * 1e3, r.shaker->stroke_m * 1e3));
   if (const std::string w = energyBalanceWarning(r); !w.empty()) warnings.push_back(w);
   if (const std::string w = constraintDriftWarning(r, article_size_m); !w.empty()) warnings.push_back(w);
   if (const std::string w = verificationWarning(r.verification); !w.empty()) warnings.push_back(w);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sim/core/errors.hpp"
+#include "sim/model/attachments.hpp"
 #include "sim/model/motions.hpp"
 #include <limits>
 #include <cmath>
@@ -431,54 +432,9 @@ class Builder {
   std::map<std::string, bool> built_joints_, queued_;
 };
 
-const NamedPoint& requirePoint(const Model& model, const std::string& name, const std::string& where,
-                               const std::string& what) {
-  const NamedPoint* p = model.findPoint(name);
-  // The scene reader checked the name; only a --segments override can remove a hinge.
-  if (!p) throw SceneError(where + ": " + what + " '" + name + "' does not exist with the segment counts in use");
-  return *p;
-}
-
-void addLoadsAndClosures(const ArticleSpec& a, Model& model) {
-  for (std::size_t i = 0; i < a.loads.size(); ++i) {
-    const LoadSpec& l = a.loads[i];
-    const NamedPoint& p = requirePoint(model, l.point, l.where, "loads[" + std::to_string(i) + "].point");
-    model.addPointLoad({p.mobod, p.station_B, SimTK::Vec3(l.force[0], l.force[1], l.force[2])});
-  }
-  for (std::size_t i = 0; i < a.closures.size(); ++i) {
-    const ClosureSpec& cs = a.closures[i];
-    const std::string path = "closures[" + std::to_string(i) + "]";
-    const NamedPoint& pa = requirePoint(model, cs.point, cs.where, path + ".point");
-    Closure c;
-    c.name = cs.name;
-    c.where = cs.where;
-    c.mobod_a = pa.mobod;
-    c.station_a = pa.station_B;
-    if (cs.to != "ground") {
-      const NamedPoint& pb = requirePoint(model, cs.to, cs.where, path + ".to");
-      c.to_ground = false;
-      c.mobod_b = pb.mobod;
-      c.station_b = pb.station_B;
-    } else if (cs.at) {
-      c.has_anchor = true;
-      c.anchor_W = SimTK::Vec3((*cs.at)[0], (*cs.at)[1], (*cs.at)[2]);
-    }
-    if (cs.type == ClosureType::Pin) {
-      c.directions = {SimTK::Vec3(1, 0, 0), SimTK::Vec3(0, 1, 0)};
-    } else {  // held across the line: its normal
-      c.directions = {SimTK::Vec3(-std::sin(cs.direction), std::cos(cs.direction), 0)};
-    }
-    // Spatial: the point is held out of the plane too (a pin is a ball joint, a slider
-    // holds the point on its line) wherever the article can move it there (not when
-    // the chain to it bends in the plane only); the rotations stay free, as in the plane.
-    c.hold_z_if_free = a.model == ArticleModel::Spatial;
-    model.addClosure(c);
-  }
-}
-
 }  // namespace
 
-std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
+std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene, ModelUse use) {
   const auto& g = scene.gravity;
   auto model = std::make_unique<Model>(SimTK::Vec3(g[0], g[1], g[2]));
   for (const auto& l : scene.article.links)
@@ -487,6 +443,7 @@ std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene) {
   if (scene.article.model == ArticleModel::Spatial) model->setSpatial();
   Builder(scene, *model).build();
   addLoadsAndClosures(scene.article, *model);
+  if (use == ModelUse::TimeRun && scene.shaker && scene.shaker->program) addShakerArmature(scene, *model);
   model->setClosedFormForces();  // the builder adds nothing else (the damper below vanishes at rest)
   // A modal ratio or Rayleigh damping: a damping matrix over the free coordinates, set
   // by a time run at its equilibrium (sim/statics/damping_matrix.hpp).

@@ -21,10 +21,15 @@
 
 namespace mmv {
 
+/// What the model is for: the analyses (statics, modes, linear models) see the article
+/// as the scene states it; a time run also builds what only a run drives (the shaker's
+/// armature and stinger when `shaker.program` is given, sim/model/attachments.hpp).
+enum class ModelUse { Analysis, TimeRun };
+
 /// Slews of locked joints and the table's program become Simbody prescribed motions
 /// (sim/model/motions.hpp). Throws
 /// std::invalid_argument from the facility models (a slew outside the joint range,
 /// a bad CSV profile).
-std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene);
+std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene, ModelUse use = ModelUse::Analysis);
 
 }  // namespace mmv

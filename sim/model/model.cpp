@@ -188,9 +188,34 @@ double Model::inputPower(const SimTK::State& s) const {
   return p;
 }
 
+namespace {
+
+/// A dead load F (world) at a station of a body, with its potential energy -F . p: it is
+/// conservative, so a time run's energy balance counts its work (Simbody's ConstantForce
+/// reports no potential energy, and a loaded point that moved showed as a balance error).
+class PointLoadForce : public SimTK::Force::Custom::Implementation {
+ public:
+  PointLoadForce(const SimTK::MobilizedBody& mobod, const SimTK::Vec3& station_B, const SimTK::Vec3& force_W)
+      : mobod_(mobod), station_B_(station_B), force_W_(force_W) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces, SimTK::Vector_<SimTK::Vec3>&,
+                 SimTK::Vector&) const override {
+    mobod_.applyForceToBodyPoint(s, station_B_, force_W_, body_forces);
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override {
+    return -(~force_W_ * mobod_.findStationLocationInGround(s, station_B_));
+  }
+  bool dependsOnlyOnPositions() const override { return true; }
+
+ private:
+  const SimTK::MobilizedBody& mobod_;
+  SimTK::Vec3 station_B_, force_W_;
+};
+
+}  // namespace
+
 void Model::addPointLoad(const PointLoad& load) {
   MMV_DEMAND(!finalized_);
-  SimTK::Force::ConstantForce(forces_, matter_.getMobilizedBody(load.mobod), load.station_B, load.force_W);
+  SimTK::Force::Custom(forces_, new PointLoadForce(matter_.getMobilizedBody(load.mobod), load.station_B, load.force_W));
   loads_.push_back(load);
 }
 
@@ -282,6 +307,7 @@ void Model::finalize() {
   system_.realize(s, SimTK::Stage::Position);
   reference_state_ = s;
   system_.realize(reference_state_, SimTK::Stage::Position);  // a copy's cache is not valid
+  fitClosureCoordinates(s);
   for (auto& c : closures_) {
     if (c.to_ground && !c.has_anchor) {
       c.anchor_W = matter_.getMobilizedBody(c.mobod_a).findStationLocationInGround(s, c.station_a);
@@ -308,6 +334,23 @@ void Model::finalize() {
   finalized_ = true;
   for (auto& c : closures_)
     if (c.hold_z_if_free && pointMovesAlongZ(c)) c.directions.push_back(SimTK::Vec3(0, 0, 1));
+}
+
+void Model::fitClosureCoordinates(SimTK::State& s) {
+  bool moved = false;
+  for (const auto& c : closures_) {
+    if (c.fit_coordinate < 0) continue;
+    MMV_DEMAND(!c.to_ground && c.directions.size() == 1 && coords_[c.fit_coordinate].motion == CoordinateMotion::Translation);
+    const SimTK::Vec3 pa = matter_.getMobilizedBody(c.mobod_a).findStationLocationInGround(s, c.station_a);
+    const SimTK::Vec3 pb = matter_.getMobilizedBody(c.mobod_b).findStationLocationInGround(s, c.station_b);
+    coords_[c.fit_coordinate].reference += ~c.directions[0] * (pa - pb);
+    s.updQ()[qindex_[c.fit_coordinate]] = coords_[c.fit_coordinate].reference;
+    moved = true;
+  }
+  if (!moved) return;
+  system_.realize(s, SimTK::Stage::Position);
+  reference_state_ = s;
+  system_.realize(reference_state_, SimTK::Stage::Position);
 }
 
 bool Model::pointMovesAlongZ(const Closure& c) const {

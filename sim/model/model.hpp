@@ -65,7 +65,8 @@ struct Coordinate {
 /// A part: a link (all its pieces), a torquer, a tip mass, or the excitation table.
 struct Part {
   std::string name;
-  enum class Kind { Link, Torquer, TipMass, Table, Gimbal } kind = Kind::Link;
+  /// Shaker: the extra shaker's armature (time runs with a force program only).
+  enum class Kind { Link, Torquer, TipMass, Table, Gimbal, Shaker } kind = Kind::Link;
   /// The link that carries this part: itself for a link, the link a tip mass is on,
   /// the parent link whose tip holds a torquer; empty for a torquer on the base.
   std::string carrier;
@@ -101,6 +102,10 @@ struct Closure {
   /// The spatial model: finalize also holds the point along world z when a free
   /// coordinate can move it there (along z where nothing moves it, it holds nothing).
   bool hold_z_if_free = false;
+  /// >= 0: a coordinate that moves point B along the closure's one direction (a slider
+  /// along it, m): finalize sets its reference so that the closure holds in the
+  /// reference state (the shaker's armature, placed where the stinger meets the article).
+  int fit_coordinate = -1;
 };
 
 /// A named point fixed on a body: "link1.tip", "link2.h3", "joint2", ...
@@ -168,7 +173,8 @@ class Model {
   double inputPower(const SimTK::State& s) const;
   void addPoint(const NamedPoint& p);
   void addLinkAxis(const LinkAxis& axis) { link_axes_.push_back(axis); }
-  /// Adds a dead load (a Simbody Force::ConstantForce) and records it for stiffness.
+  /// Adds a dead load (a constant force with its potential energy, so time runs' energy
+  /// balance counts its work) and records it for stiffness.
   void addPointLoad(const PointLoad& load);
   void addClosure(const Closure& c);
   /// Declares that the only forces are uniform gravity, point loads, the coordinates'
@@ -271,6 +277,9 @@ class Model {
  private:
   /// Whether a free coordinate moves closure c's point (relative to its partner) along z.
   bool pointMovesAlongZ(const Closure& c) const;
+  /// Sets each closure's fit_coordinate so that its closure holds in `s` (the reference state),
+  /// then makes `s` the reference state again.
+  void fitClosureCoordinates(SimTK::State& s);
   /// addCoordinate without the spring.
   void registerCoordinate(const Coordinate& c);
   SimTK::MultibodySystem system_;

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 
+#include "sim/scene/programs.hpp"
 #include "sim/scene/stations.hpp"
 
 namespace mmv::scene_detail {
@@ -56,8 +57,47 @@ facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n) {
   return lab;
 }
 
+namespace {
+
+/// `shaker.program`: the force program of time runs, within the shaker's force limit
+/// (a random program's RMS times its crest factor), on a station, through an armature
+/// with mass, on segment links (the stinger closes the tree: no links in modal
+/// coordinates).
+void readShakerProgram(const YamlReader& r, const YAML::Node& pn, const ArticleSpec& article, ShakerSceneSpec& s) {
+  const TableMotion p = readTableMotion(r, pn, "shaker.program", {}, " N");
+  if (s.autoAt())
+    r.fail(pn.Mark(), "shaker.program drives the shaker where it is attached: give shaker.at a station and shaker.direction "
+                      "its force's direction ('auto' is place-sensors' choice; it prints the station and direction it ranks first)");
+  if (!(s.hardware.armature_mass > 0))
+    r.fail(pn.Mark(), "shaker.program drives the shaker's armature, which needs its mass: shaker.armature_mass_kg > 0 (got 0; "
+                      "the report's shaker is assumed at 0.5 kg)");
+  for (const auto& l : article.links)
+    if (l.modes > 0)
+      r.fail(pn.Mark(), "shaker.program: the stinger holds the armature to the article, which closes the tree, and links in "
+                        "modal coordinates need an open tree: remove links." + l.name + ".modes (the run uses its segments)");
+  const double limit = s.hardware.force_limit;
+  if (p.type == TableMotion::Type::Random) {
+    if (p.rms * s.hardware.crest_factor > limit * (1 + 1e-12))
+      r.fail(pn.Mark(), strf("shaker.program: an RMS force of %g N at the crest factor %g peaks at %g N, above the shaker's "
+                             "force limit of %g N (shaker.force_limit_n): lower rms to %g N or less",
+                             p.rms, s.hardware.crest_factor, p.rms * s.hardware.crest_factor, limit, limit / s.hardware.crest_factor));
+  } else {
+    const double peak = p.type == TableMotion::Type::Profile
+                            ? facility::checkProgram(*makeTableProgram(p), facility::TableSpec{INFINITY}).peak_displacement
+                            : std::abs(p.amplitude);
+    if (peak > limit * (1 + 1e-12))
+      r.fail(pn.Mark(), strf("shaker.program: its peak force of %g N is above the shaker's force limit of %g N "
+                             "(shaker.force_limit_n): lower it, or set the lab's shaker's limit",
+                             peak, limit));
+  }
+  s.program = p;
+}
+
+}  // namespace
+
 ShakerSceneSpec readShaker(const YamlReader& r, const YAML::Node& n, const ArticleSpec& article) {
-  const auto m = r.mapping(n, "shaker", {"at", "direction", "force_limit_n", "stroke_m", "armature_mass_kg", "crest_factor"});
+  const auto m =
+      r.mapping(n, "shaker", {"at", "direction", "force_limit_n", "stroke_m", "armature_mass_kg", "crest_factor", "program"});
   ShakerSceneSpec s;
   const YAML::Node& at = r.require(m, n, "shaker", "at");
   s.at = r.text(at, "shaker.at");
@@ -95,6 +135,7 @@ ShakerSceneSpec readShaker(const YamlReader& r, const YAML::Node& n, const Artic
   within("stroke_m", 1e-6, 10, " m", s.hardware.stroke);
   within("armature_mass_kg", 0, 1000, " kg", s.hardware.armature_mass);
   within("crest_factor", 1, 10, "", s.hardware.crest_factor);
+  if (m.count("program")) readShakerProgram(r, m.at("program"), article, s);
   return s;
 }
 

@@ -122,6 +122,11 @@ struct ShakerSceneSpec {
   bool auto_direction = false;
   facility::ShakerSpec hardware;
   bool autoAt() const { return at == "auto"; }
+  /// `shaker.program`: the force it drives along `direction` in time runs (N over time;
+  /// sine, sweep, random or csv, as `base.motion`), through its armature
+  /// (sim/model/attachments.hpp). None: the shaker is attached and idle in no run (it is
+  /// built for time runs only when it has a program).
+  std::optional<TableMotion> program;
 };
 
 struct ArticleScene {

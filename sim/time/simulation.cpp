@@ -39,6 +39,7 @@ class ArticleRecorder {
   ArticleRecorder(const Model& model, const ArticleScene& scene, SimulationResult& r) : model_(model), r_(r) {
     r_.record.columns.push_back("time_s");
     addTableColumns();
+    addShakerColumns(scene);
     addJointColumns(scene);
     addTipColumns(scene);
     addElasticColumns();
@@ -62,6 +63,8 @@ class ArticleRecorder {
 
  private:
   void addTableColumns();
+  void addShakerColumns(const ArticleScene& scene);
+  void appendShaker(double t, const SimTK::State& st, std::vector<double>& row);
   void addJointColumns(const ArticleScene& scene);
   void addTipColumns(const ArticleScene& scene);
   void addElasticColumns();
@@ -71,6 +74,9 @@ class ArticleRecorder {
   const Model& model_;
   SimulationResult& r_;
   int table_ = -1, table_z_ = -1;
+  int shaker_ = -1;            ///< the armature's coordinate (runs with shaker.program)
+  double shaker_start_ = NAN;  ///< its position at the first sample
+  double armature_kg_ = 0;
   std::vector<int> joints_;
   std::vector<const NamedPoint*> tips_;
   std::vector<PointRef> stations_;  ///< scored stations, after the tips
@@ -95,7 +101,42 @@ void ArticleRecorder::addTableColumns() {
   const SimTK::State& ref = model_.getReferenceState();
   const auto& matter = model_.getMatter();
   const double table_mass = matter.getMobilizedBody(model_.getCoordinates()[table_].mobod).getBodyMass(ref);
-  r_.carried_weight_n = (matter.calcSystemMass(ref) - table_mass) * model_.getGravity().norm();
+  double armature_mass = 0;  // on the shaker's stand, not the table
+  for (const Coordinate& c : model_.getCoordinates())
+    if (c.part == "shaker") armature_mass = matter.getMobilizedBody(c.mobod).getBodyMass(ref);
+  r_.carried_weight_n = (matter.calcSystemMass(ref) - table_mass - armature_mass) * model_.getGravity().norm();
+}
+
+void ArticleRecorder::addShakerColumns(const ArticleScene& scene) {
+  for (int i = 0; i < model_.getNumCoordinates(); ++i)
+    if (model_.getCoordinates()[i].part == "shaker") shaker_ = i;
+  if (shaker_ < 0) return;
+  for (const char* c : {"shaker_force_n", "shaker_stroke_m", "shaker_stinger_force_n"}) r_.record.columns.push_back(c);
+  const ShakerSceneSpec& sh = *scene.shaker;
+  ShakerRunSummary s;
+  s.at = sh.at;
+  s.force_limit_n = sh.hardware.force_limit;
+  s.stroke_m = sh.hardware.stroke;
+  r_.shaker = s;
+  armature_kg_ = sh.hardware.armature_mass;
+}
+
+/// The program's force, the armature's travel from the start and the stinger's force
+/// (the program's less the armature's m a along the slider).
+void ArticleRecorder::appendShaker(double t, const SimTK::State& st, std::vector<double>& row) {
+  if (shaker_ < 0) return;
+  const Coordinate& c = model_.getCoordinates()[shaker_];
+  const double force = c.input->position(t);
+  const double s = st.getQ()[model_.getQIndex(shaker_)];
+  if (std::isnan(shaker_start_)) shaker_start_ = s;
+  const double stroke = s - shaker_start_;
+  const double stinger = force - armature_kg_ * st.getUDot()[model_.getUIndex(shaker_)];
+  row.insert(row.end(), {force, stroke, stinger});
+  ShakerRunSummary& sum = *r_.shaker;
+  sum.peak_force_n = std::max(sum.peak_force_n, std::abs(force));
+  sum.peak_stroke_m = std::max(sum.peak_stroke_m, std::abs(stroke));
+  sum.peak_stinger_force_n = std::max(sum.peak_stinger_force_n, std::abs(stinger));
+  sum.stroke_exceeded = sum.peak_stroke_m > sum.stroke_m;
 }
 
 void ArticleRecorder::addJointColumns(const ArticleScene& scene) {
@@ -238,6 +279,7 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
       r_.peak_table_force_n = std::max(r_.peak_table_force_n, std::abs(force_z));  // either axis's actuator
     }
   }
+  appendShaker(t, st, row);
   for (std::size_t j = 0; j < joints_.size(); ++j) {
     const int i = joints_[j];
     // Simbody's motion force is the reaction; the torquer applies its negative
@@ -313,7 +355,7 @@ SimTK::State initialState(Model& model, const SimulationSpec& spec, const std::o
 SimulationResult simulate(const ArticleScene& scene, const std::function<void(double)>& progress) {
   const SimulationSpec& spec = scene.simulation;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto model = buildArticleModel(scene);
+  const auto model = buildArticleModel(scene, ModelUse::TimeRun);
   SimulationResult r;
   SimTK::State s = initialState(*model, spec, scene.damping, r.warnings);
   std::unique_ptr<ModalLinks> modal;  // links in modal coordinates

@@ -29,6 +29,7 @@
 /// depend on the sample rate (sim/time/run_integrator.hpp).
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,19 @@ struct RunVerification {
   double amplitude_m = 0;        ///< the scored points' largest motion (companion run)
   double target_m = 0;           ///< what the estimate is held to
   bool target_is_default = true; ///< 1 % of amplitude_m (1e-4 m if nothing moved)
+};
+
+/// The extra shaker in a run with `shaker.program` (sim/model/attachments.hpp): the
+/// program's peak force against the shaker's limit, the armature's travel from its start
+/// against the stroke, and the largest force the stinger passes to the article (the
+/// program's force less the armature's inertia, what a force gauge at the driving point
+/// reads).
+struct ShakerRunSummary {
+  std::string at;
+  double peak_force_n = 0, force_limit_n = 0;
+  double peak_stroke_m = 0, stroke_m = 0;
+  double peak_stinger_force_n = 0;
+  bool stroke_exceeded = false;
 };
 
 struct SimulationResult {
@@ -117,6 +131,8 @@ struct SimulationResult {
   RunVerification verification;  ///< filled by verifyRun on request
   /// Links carried by their modes (`links[i].modes`; sim/time/modal_links.hpp).
   std::vector<ModalLinkSummary> modal_links;
+  /// With `shaker.program`: columns shaker_force_n, shaker_stroke_m, shaker_stinger_force_n.
+  std::optional<ShakerRunSummary> shaker;
 };
 
 /// Runs the scene's time run with its `simulation:` settings. `progress`, if given,
