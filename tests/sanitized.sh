@@ -29,9 +29,12 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 #   Update.NoisyFrequencies...  20 noisy repeats of an update (Update.*, Cli.Update*)
 #   Extremes.LongFreeRunEnergyDrift   a long free run (Extremes.*, Simulation.*)
 #   SegmentsForTarget.TheDefaultArticleMeetsAFineReference   a fine-mesh reference (Converge.*)
+#   readback.report_page_in_a_browser   Chromium loading and printing two report pages
+#                               (the reports themselves: Cli.Report*)
 LONG='^cluster\.|^Progress\.EveryVerbNamesItsStageWhenItRunsLong$|^Signals\.|^Cli\.KilledRunsLeaveNoPartialFile$'
 LONG+='|^Cli\.SweepKilledAtRandomMomentsResumesToTheSameFile$|^Cli\.FrfTargetErrorBoundsTheFrf$'
 LONG+='|^Cli\.TargetErrorMeetsItsTargetOnTheSpatialArticle$|^Update\.NoisyFrequenciesLeaveTheTruthInsideTheIntervals$'
 LONG+='|^Extremes\.LongFreeRunEnergyDrift$|^SegmentsForTarget\.TheDefaultArticleMeetsAFineReference$'
+LONG+='|^readback\.report_page_in_a_browser$'
 ctest --test-dir build-san --output-on-failure -j"$(nproc)" --timeout 900 -E "$LONG"
 
