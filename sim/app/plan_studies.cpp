@@ -184,7 +184,14 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   s.json = placementJson(s.study);
   s.text = placementText(s.study);
   if (!s.study.tams.empty()) s.tam_csv = tamCsv(s.study), s.tam_mat = tamMat(s.study);
-  if (const auto* article = std::get_if<ArticleScene>(&scene)) addTestGeometry(*article, s);  // the isolator's: not yet
+  if (const auto* article = std::get_if<ArticleScene>(&scene)) {
+    addTestGeometry(*article, s);
+  } else {  // the isolator's channels and nodes (its ParaView set is modes.vtp's boxes)
+    s.channels_csv = placementChannelsCsv(s.study);
+    uff::File geometry = placementGeometry(s.study, std::get<HamsasScene>(scene).name);
+    uff::stampNow(geometry);
+    s.geometry_uff = uff::write(geometry);
+  }
   checkResultFinite(s.json);  // before any file is committed
   return s;
 }

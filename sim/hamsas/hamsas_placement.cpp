@@ -45,6 +45,8 @@ void buildHamsasTams(PlacementStudy& study, const HamsasModes& h, const std::vec
 
 }  // namespace
 
+int hamsasNode(int body, int point) { return body * 100 + point + 1; }
+
 PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,
                                   std::vector<PlacementCandidate>& candidates, std::vector<Eigen::RowVectorXd>* readings) {
   const int k = static_cast<int>(targets.size());
@@ -79,7 +81,12 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNu
           readings->push_back(std::move(reading));
         }
         masses.push_back(body.mass / 9);
-        if (!triaxial || a == 0) candidates.push_back({name, body.name, 0.0, triaxial ? "triaxial" : axes[a], at.x(), at.y(), at.z()});
+        if (!triaxial || a == 0) {
+          PlacementCandidate cand{name, body.name, 0.0, triaxial ? "triaxial" : axes[a], at.x(), at.y(), at.z()};
+          cand.node = hamsasNode(static_cast<int>(b), c);
+          for (int j = 0; j < k; ++j) cand.shape.push_back({u(0, j), u(1, j), u(2, j)});
+          candidates.push_back(std::move(cand));
+        }
         p.block.push_back(static_cast<int>(candidates.size()) - 1);
       }
     }
@@ -99,6 +106,10 @@ PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h
   for (const ModeNumber m : study.target_modes) study.target_frequencies_hz.push_back(h.solution.frequencyHz(m.index()));
   std::vector<Eigen::RowVectorXd> readings;
   const PlacementProblem p = hamsasCandidates(h, study.target_modes, o.triaxial, study.candidates, &readings);
+  // Each point's three rows are x, y and z, in that order (hamsasCandidates).
+  for (std::size_t r = 0; r < p.block.size(); ++r)
+    study.directions.push_back({p.block[r], std::string(1, "xyz"[r % 3]),
+                                {r % 3 == 0 ? 1.0 : 0.0, r % 3 == 1 ? 1.0 : 0.0, r % 3 == 2 ? 1.0 : 0.0}});
   choosePlacement(study, p, o, 3, "the centre and 8 corners of each of " + std::to_string(h.model.bodies.size() - 1) + " bodies");
   if (!o.tam.empty()) buildHamsasTams(study, h, p.block, readings, o.tam);
   return study;

@@ -14,7 +14,13 @@
 
 namespace mmv {
 
-/// The candidates (one per block, appended to `candidates`) and their rows of the
+/// A candidate point's test-geometry node, the same in every run: body (its index in the
+/// isolator, 1 = the first moving body) x 100, plus 0 for its mass centre or 1..8 for its
+/// box's corners (spring_box.corner3 of body 2: 203).
+int hamsasNode(int body, int point);
+
+/// The candidates (one per block, appended to `candidates`, with their nodes and target
+/// shapes) and their rows of the
 /// target modes' shapes; with `readings`, each row's reading per unit free coordinate
 /// (the test-analysis models' observation rows).
 PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,

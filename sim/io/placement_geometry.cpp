@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <tuple>
 
 namespace mmv {
 
@@ -25,11 +26,11 @@ const std::vector<Field<PlacementChannel>>& placementChannelFields() {
   // clang-format off
   static const std::vector<Field<C>> fields{
       {"channel", "", "%d", "the acquisition channel (1: the first chosen direction)", [](const C& c) -> Opt { return json(c.channel); }},
-      {"node", "", "%d", "its test-geometry node (link position x 100000 + mm from the root)",
+      {"node", "", "%d", "its test-geometry node (link position x 100000 + mm from the root; HAM-SAS: body x 100 + 0 for the mass centre, 1-8 for a corner)",
        [](const C& c) -> Opt { return json(c.candidate->node); }},
-      {"station", "", "%s", "the station, <link>@<m>m", [](const C& c) -> Opt { return json(c.candidate->station); }},
-      {"link", "", "%s", "the link it is on", [](const C& c) -> Opt { return json(c.candidate->link); }},
-      {"axis", "", "%s", "axial, transverse or normal (of the link at the station)", [](const C& c) -> Opt { return json(c.direction->axis); }},
+      {"station", "", "%s", "the station, <link>@<m>m (HAM-SAS: <body>.com or <body>.corner<k>)", [](const C& c) -> Opt { return json(c.candidate->station); }},
+      {"link", "", "%s", "the link it is on (HAM-SAS: the body)", [](const C& c) -> Opt { return json(c.candidate->link); }},
+      {"axis", "", "%s", "axial, transverse or normal (of the link at the station; HAM-SAS: world x, y or z)", [](const C& c) -> Opt { return json(c.direction->axis); }},
       {"direction_x", "1", "%.6f", "the measuring axis, world x component", [](const C& c) -> Opt { return json(c.direction->world[0]); }},
       {"direction_y", "1", "%.6f", "the measuring axis, world y component", [](const C& c) -> Opt { return json(c.direction->world[1]); }},
       {"direction_z", "1", "%.6f", "the measuring axis, world z component", [](const C& c) -> Opt { return json(c.direction->world[2]); }},
@@ -60,7 +61,7 @@ uff::File placementGeometry(const PlacementStudy& s, const std::string& scene_na
   }
   int trace = 0;
   for (auto& [link, list] : by_link) {
-    std::sort(list.begin(), list.end(), [](const auto* a, const auto* b) { return a->x_m < b->x_m; });
+    std::sort(list.begin(), list.end(), [](const auto* a, const auto* b) { return std::tie(a->x_m, a->node) < std::tie(b->x_m, b->node); });
     uff::TraceLine t{++trace, link, {}};
     for (const auto* c : list) t.nodes.push_back(c->node);
     if (t.nodes.size() >= 2) f.trace_lines.push_back(t);

@@ -3,9 +3,15 @@
 // chosen set tells the target modes apart.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
+
 #include "sim/core/errors.hpp"
 #include "sim/hamsas/hamsas_placement.hpp"
 #include "sim/hamsas/spatial_linear.hpp"
+#include "sim/io/placement_geometry.hpp"
+#include "sim/io/tam_report.hpp"
+#include "sim/io/uff_read.hpp"
 #include "sim/modes/tam.hpp"
 
 namespace mmv {
@@ -57,6 +63,57 @@ TEST(HamsasPlacement, ChosenSetTellsTheLowModesApart) {
   for (int b : t.result.kept_blocks) EXPECT_EQ(t.candidates[static_cast<std::size_t>(b)].axis, "triaxial");
   o.count = 1000;
   EXPECT_THROW(runHamsasPlacement(isolator(), h, o), UsageError);
+}
+
+// The isolator's test geometry (issue 34): a node per chosen point, numbered by body and
+// point whatever else the run chose, read back from the UFF at the points and with the
+// predicted shapes the placement chose by; a channel per chosen direction, and the TAM's
+// .mat holding those channels (it held none before the isolator's directions were listed).
+TEST(HamsasPlacement, TheTestGeometryHoldsTheChosenPointsByStableNodes) {
+  const HamsasModes h = analyseHamsas(isolator().isolator);
+  PlacementOptions o;
+  o.below_hz = 5;
+  o.count = 9;
+  o.tam = {TamMethod::Serep};
+  const PlacementStudy s = runHamsasPlacement(isolator(), h, o);
+  const std::vector<PlacementChannel> channels = placementChannels(s);
+  ASSERT_EQ(channels.size(), 9u);
+  const uff::File back = uff::read(uff::write(placementGeometry(s, "hamsas")), "geometry.uff");
+  std::map<int, std::array<double, 3>> nodes;
+  for (const auto& n : back.nodes) nodes[n.label] = n.xyz;
+  ASSERT_EQ(back.modes.size(), s.target_modes.size());
+  for (const PlacementChannel& c : channels) {
+    const PlacementCandidate& p = *c.candidate;
+    const int body = h.model.bodyIndex(p.link);
+    const bool corner = p.station.find(".corner") != std::string::npos;
+    const int point = corner ? std::stoi(p.station.substr(p.station.find(".corner") + 7)) : 0;
+    EXPECT_EQ(p.node, body * 100 + point) << p.station;
+    ASSERT_TRUE(nodes.count(p.node)) << p.station;
+    EXPECT_NEAR(nodes[p.node][0], p.world_x, 1e-9);
+    EXPECT_NEAR(nodes[p.node][1], p.world_y, 1e-9);
+    EXPECT_NEAR(nodes[p.node][2], p.world_z, 1e-9);
+    // The channel's direction is its axis; the shape read back is the placement's row.
+    const int a = c.direction->axis == "x" ? 0 : c.direction->axis == "y" ? 1 : 2;
+    EXPECT_EQ(c.direction->world[static_cast<std::size_t>(a)], 1.0);
+    for (std::size_t j = 0; j < back.modes.size(); ++j) {
+      const auto& m = back.modes[j];
+      const auto at = std::find(m.nodes.begin(), m.nodes.end(), p.node) - m.nodes.begin();
+      ASSERT_LT(static_cast<std::size_t>(at), m.nodes.size());
+      double scale = 0;  // the UFF's shape fields hold 6 significant digits
+      for (const auto& t : m.translations) scale = std::max({scale, std::abs(t[0]), std::abs(t[1]), std::abs(t[2])});
+      EXPECT_NEAR(m.translations[static_cast<std::size_t>(at)][static_cast<std::size_t>(a)], p.shape[j][static_cast<std::size_t>(a)],
+                  1e-5 * scale);
+    }
+  }
+  // The same point has the same node in a run that chooses differently.
+  o.count = 12;
+  const PlacementStudy more = runHamsasPlacement(isolator(), h, o);
+  for (const auto& c : more.candidates)
+    for (const auto& d : s.candidates)
+      if (c.station == d.station) EXPECT_EQ(c.node, d.node);
+  const MatContents mat = tamMat(s);
+  for (const auto& [name, m] : mat.matrices)
+    if (name == "ChannelNode" || name == "PhiA") EXPECT_EQ(m.rows(), 9) << name;
 }
 
 // The isolator's test-analysis models (issue 34: --tam was refused on HAM-SAS). Each
