@@ -163,15 +163,14 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   if (r.keep_scene_sensors && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--keep-scene-sensors") + " applies to the article's scenes (the isolator's sensors are not scene data)");
   o.sensor_mass_kg = r.sensor_mass_kg;
-  if (o.sensor_mass_kg > 0 && !std::holds_alternative<ArticleScene>(scene))
-    throw UsageError(opt("--sensor-mass") + " applies to the article's scenes (the isolator's loading is not built yet)");
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {
     placedInstrument(*article, r, o);
   } else {
     if (!r.instrument.empty())
       throw UsageError(opt("--instrument") + " applies to the article's scenes (the isolator's sensors are not scene data)");
     if (r.iterate_loaded)
-      throw UsageError(opt("--iterate-loaded") + " applies to the article's scenes (the isolator's loading is not built yet)");
+      throw UsageError(opt("--iterate-loaded") + " applies to the article's scenes (on the isolator --sensor-mass reports the "
+                       "loading of the chosen set; its placement is not iterated on the loaded model)");
   }
   PlacementStudyResult s;
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {

@@ -3,6 +3,9 @@
 #include <cmath>
 
 #include "sim/core/text.hpp"
+#include "sim/core/errors.hpp"
+#include "sim/hamsas/spatial_linear.hpp"
+#include "sim/modes/sensor_loading.hpp"
 #include "sim/modes/tam.hpp"
 
 namespace mmv {
@@ -97,6 +100,50 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNu
   return p;
 }
 
+SpatialSpec isolatorWithSensors(const SpatialSpec& model, const PlacementStudy& study, double mass) {
+  SpatialSpec loaded = model;
+  for (int b : study.result.kept_blocks) {
+    const PlacementCandidate& c = study.candidates[static_cast<std::size_t>(b)];
+    const int index = model.bodyIndex(c.link);
+    MMV_DEMAND(index > 0);
+    SpatialBody& body = loaded.bodies[static_cast<std::size_t>(index)];
+    const Eigen::Vector3d p(c.world_x, c.world_y, c.world_z);
+    const double total = body.mass + mass;
+    const Eigen::Vector3d com = (body.mass * body.com + mass * p) / total;
+    // Both inertias about the new mass centre (parallel axes).
+    auto shift = [](double m, const Eigen::Vector3d& d) {
+      return Eigen::Matrix3d(m * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose()));
+    };
+    body.inertia += shift(body.mass, body.com - com) + shift(mass, p - com);
+    body.mass = total;
+    body.com = com;
+  }
+  return loaded;
+}
+
+SensorLoading hamsasSensorLoading(const HamsasModes& h, const PlacementStudy& study, double sensor_mass_kg) {
+  SensorLoading out;
+  out.weight_in_stiffness = true;
+  firstOrderLoading(study, sensor_mass_kg, out);
+  const SpatialSpec model = isolatorWithSensors(h.model, study, sensor_mass_kg);
+  ModalSolution loaded = spatialModes(linearizeSpatial(model, h.spec.ideal_joints));
+  // The loaded coordinates are each body's motion at its new mass centre c': the motion
+  // at the old one c is t + w x (c - c'), so the shapes compare over the same coordinates.
+  for (std::size_t b = 1; b < model.bodies.size(); ++b) {
+    const Eigen::Vector3d d = h.model.bodies[b].com - model.bodies[b].com;
+    const int r = SpatialLinearization::row(static_cast<int>(b));
+    for (Eigen::Index k = 0; k < loaded.shapes.cols(); ++k) {
+      const Eigen::Vector3d w = loaded.shapes.col(k).segment<3>(r + 3);
+      loaded.shapes.col(k).segment<3>(r) += w.cross(d);
+    }
+  }
+  Eigen::MatrixXd shapes(h.solution.shapes.rows(), static_cast<Eigen::Index>(study.target_modes.size()));
+  for (std::size_t j = 0; j < study.target_modes.size(); ++j)
+    shapes.col(static_cast<Eigen::Index>(j)) = h.solution.shapes.col(study.target_modes[j].index());
+  followLoadedModes(study, h.lin.M, shapes, loaded, out);
+  return out;
+}
+
 PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h, const PlacementOptions& o) {
   PlacementStudy study;
   study.scene_name = scene.name;
@@ -112,6 +159,7 @@ PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h
                                 {r % 3 == 0 ? 1.0 : 0.0, r % 3 == 1 ? 1.0 : 0.0, r % 3 == 2 ? 1.0 : 0.0}});
   choosePlacement(study, p, o, 3, "the centre and 8 corners of each of " + std::to_string(h.model.bodies.size() - 1) + " bodies");
   if (!o.tam.empty()) buildHamsasTams(study, h, p.block, readings, o.tam);
+  if (o.sensor_mass_kg > 0) study.loading = hamsasSensorLoading(h, study, o.sensor_mass_kg);
   return study;
 }
 

@@ -31,6 +31,20 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNu
 /// the bodies'). Throws UsageError for modes that do not exist or are not vibration
 /// modes, or a count above the candidates; NumericalError when the candidates cannot
 /// see every target mode.
+/// `model` with a point mass `mass` at each chosen point of `study` on its body: the
+/// body's mass, mass centre and inertia about it (parallel axes).
+SpatialSpec isolatorWithSensors(const SpatialSpec& model, const PlacementStudy& study, double mass);
+
+/// What the chosen sensors' masses (each `sensor_mass_kg`, a triaxial block one sensor)
+/// do to the isolator's target modes: the isolator rebuilt with them on its bodies
+/// (isolatorWithSensors), linearized again at its design configuration (the springs'
+/// preloads carry the added weight, so gravity's stiffness, the inverted pendulums' and
+/// the blades', feels it as the inertia does), each target followed by MAC
+/// (SensorLoading, sim/modes/place_sensors.hpp). The first-order shift printed beside it
+/// counts the inertia only: a mode whose stiffness is gravity's (a pendulum's g / L)
+/// hardly moves, and shows as beyond first order.
+SensorLoading hamsasSensorLoading(const HamsasModes& h, const PlacementStudy& study, double sensor_mass_kg);
+
 PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h, const PlacementOptions& options);
 
 }  // namespace mmv

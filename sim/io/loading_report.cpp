@@ -60,6 +60,7 @@ std::string iterationOutcome(const SensorLoading& l) {
 
 json loadingJson(const SensorLoading& l) {
   json j = {{"sensor_mass_kg", l.sensor_mass_kg}, {"sensors", l.sensors}, {"added_kg", l.added_kg}};
+  if (l.weight_in_stiffness) j["weight_in_stiffness"] = true;  // the isolator's: the springs carry their weight
   j["modes"] = json::array();
   for (const auto& m : l.modes) j["modes"].push_back(fieldsJson(loadingModeFields(), m, [](const auto&) { return true; }));
   if (!l.iterations.empty()) {
@@ -72,9 +73,12 @@ json loadingJson(const SensorLoading& l) {
 
 std::string loadingText(const SensorLoading& l) {
   std::ostringstream os;
-  os << strf("\nThe sensors' own mass: %d sensors of %.4g kg (%.4g kg in all) welded at their stations, the modes solved "
+  os << strf("\nThe sensors' own mass: %d sensors of %.4g kg (%.4g kg in all) welded at their stations, %sthe modes solved "
              "again\n",
-             l.sensors, l.sensor_mass_kg, l.added_kg);
+             l.sensors, l.sensor_mass_kg, l.added_kg,
+             l.weight_in_stiffness ? "their weight on the springs (gravity's stiffness feels it; first order counts the inertia "
+                                     "only), "
+                                   : "");
   if (!l.iterations.empty()) {
     os << "  placed again on the model carrying them:";
     for (const auto& i : l.iterations) os << strf(" pass %d, %d changed;", i.pass, i.changed);
@@ -99,7 +103,11 @@ std::string loadingText(const SensorLoading& l) {
                     : "-"});
   }
   os << t.text();
-  if (heavy || shared)
+  if ((heavy || shared) && l.weight_in_stiffness)
+    os << strf("warning: the sensors move %d target mode(s) beyond their inertia's first-order shift%s: their weight on "
+               "the gravity-tuned springs counts; trim the isolator for it (as its load is set), or use lighter sensors\n",
+               std::max(heavy, shared), shared ? " and change the shapes of some" : "");
+  else if (heavy || shared)
     os << strf("warning: the sensors are heavy against %d target mode(s)%s: lighter sensors, fewer on the light links, or "
                "place on the model carrying them (--iterate-loaded)\n",
                std::max(heavy, shared), shared ? " and change the shapes of some" : "");

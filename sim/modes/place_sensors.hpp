@@ -109,6 +109,10 @@ struct SensorLoading {
   };
   std::vector<Mode> modes;
   std::vector<LoadedIteration> iterations;  ///< empty: placed on the bare model only
+  /// The isolator's loading: the springs carry the sensors' weight, so gravity's
+  /// stiffness (pendulums, blades) changes with it and first order (the inertia's) is
+  /// not the whole shift; the placement is not iterated there.
+  bool weight_in_stiffness = false;
 };
 
 /// A candidate's measuring direction (a row of the placement problem).

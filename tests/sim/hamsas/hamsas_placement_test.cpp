@@ -116,6 +116,72 @@ TEST(HamsasPlacement, TheTestGeometryHoldsTheChosenPointsByStableNodes) {
     if (name == "ChannelNode" || name == "PhiA") EXPECT_EQ(m.rows(), 9) << name;
 }
 
+// The sensors' masses on the isolator (issue 34: --sensor-mass was refused on HAM-SAS).
+// Without gravity the loading is the inertia's alone, so rebuilding the bodies (mass,
+// mass centre, inertia) must give what adding each sensor's m J^T J to the mass matrix
+// gives, and a light set's shift must be first-order perturbation theory's. With
+// gravity the springs carry the added weight too.
+TEST(HamsasPlacement, SensorMassesLoadTheIsolatorAsPointMassesOnItsBodies) {
+  HamsasModes h = analyseHamsas(isolator().isolator);
+  PlacementOptions o;
+  o.below_hz = 5;
+  o.count = 9;
+  const PlacementStudy s = runHamsasPlacement(isolator(), h, o);
+  // The rebuilt bodies hold the sensors' mass and first moment.
+  const double m = 2.0;
+  const SpatialSpec rebuilt = isolatorWithSensors(h.model, s, m);
+  double before = 0, after = 0;
+  Eigen::Vector3d moment_before = Eigen::Vector3d::Zero(), moment_after = Eigen::Vector3d::Zero();
+  for (std::size_t b = 1; b < h.model.bodies.size(); ++b) {
+    before += h.model.bodies[b].mass, after += rebuilt.bodies[b].mass;
+    moment_before += h.model.bodies[b].mass * h.model.bodies[b].com;
+    moment_after += rebuilt.bodies[b].mass * rebuilt.bodies[b].com;
+  }
+  for (int b : s.result.kept_blocks) {
+    const PlacementCandidate& c = s.candidates[static_cast<std::size_t>(b)];
+    moment_before += m * Eigen::Vector3d(c.world_x, c.world_y, c.world_z);
+  }
+  EXPECT_NEAR(after, before + 9 * m, 1e-9);
+  EXPECT_LT((moment_after - moment_before).norm(), 1e-9 * before);
+
+  // Weightless: the rebuilt isolator against the mass matrix plus m J^T J.
+  h.model.gravity.setZero();
+  h.lin = linearizeSpatial(h.model, h.spec.ideal_joints);
+  h.solution = spatialModes(h.lin);
+  // Weightless, the pendulums have no stiffness: their modes fall to zero. The targets
+  // are the first six that keep a stiffness of their own.
+  std::vector<int> stiff;
+  for (int i = 0; i < static_cast<int>(h.solution.omega2.size()) && stiff.size() < 6; ++i)
+    if (h.solution.frequencyHz(i) > 0.02) stiff.push_back(i + 1);
+  PlacementOptions ow;
+  ow.modes = modeNumbers(stiff);
+  ow.count = 9;
+  const PlacementStudy w = runHamsasPlacement(isolator(), h, ow);
+  SpatialLinearization added = h.lin;
+  for (int b : w.result.kept_blocks) {
+    const PlacementCandidate& c = w.candidates[static_cast<std::size_t>(b)];
+    const Eigen::MatrixXd J = spatialPointJacobian(h.model, h.model.bodyIndex(c.link), {c.world_x, c.world_y, c.world_z})
+                                  .rightCols(added.num_free);
+    added.M += m * J.transpose() * J;
+  }
+  added.Mz = added.Z.transpose() * added.M * added.Z;
+  const ModalSolution by_matrix = spatialModes(added);
+  const SensorLoading heavy = hamsasSensorLoading(h, w, m);
+  ASSERT_EQ(heavy.modes.size(), 6u);
+  for (const auto& mode : heavy.modes) {
+    EXPECT_GT(mode.mac, 0.5);  // 18 kg on the bodies mixes a close pair (0.88)
+    EXPECT_NEAR(mode.loaded_hz, by_matrix.frequencyHz(mode.loaded_mode.index()), 1e-8 * mode.loaded_hz);
+  }
+  const SensorLoading light = hamsasSensorLoading(h, w, 1e-3);
+  for (const auto& mode : light.modes) {
+    EXPECT_LT(mode.shift, 0.0);
+    EXPECT_NEAR(mode.shift, mode.first_order, 0.01 * std::abs(mode.first_order)) << "mode " << mode.mode.number();
+    EXPECT_FALSE(mode.beyond_first_order);
+  }
+  std::printf("[hamsas loading] weightless, 1 g sensors: mode 1 %.4g against first order %.4g\n", light.modes[0].shift,
+              light.modes[0].first_order);
+}
+
 // The isolator's test-analysis models (issue 34: --tam was refused on HAM-SAS). Each
 // candidate's reading row times the shapes is its placement row (the TAM observes what
 // the placement chose by); on nine sensors for the nine modes below 5 Hz, SEREP
