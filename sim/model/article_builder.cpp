@@ -104,12 +104,7 @@ class Builder {
                                          SimTK::Body::Rigid(SimTK::MassProperties(base.table_mass, SimTK::Vec3(0),
                                                                                   SimTK::Inertia(base.table_mass))),
                                          SimTK::Transform());
-      Coordinate c;
-      c.name = "table.x";
-      c.kind = CoordinateKind::Joint;
-      c.motion = CoordinateMotion::Translation;
-      c.part = "table";
-      c.mobod = table.getMobilizedBodyIndex();
+      Coordinate c = sliderCoordinate("table.x", "table", table.getMobilizedBodyIndex());
       c.held = true;  // at rest in statics and modes; driven in time runs
       model_.addCoordinate(c);
       model_.addBody(table.getMobilizedBodyIndex(), part, true);
@@ -298,13 +293,8 @@ class Builder {
     const SimTK::Rotation x_to_z(-SimTK::Pi / 2, SimTK::YAxis);  // the slider's x along world z
     SimTK::MobilizedBody::Slider stage(model_.updMatter().updMobilizedBody(table), SimTK::Transform(x_to_z),
                                        SimTK::Body::Massless(), SimTK::Transform(x_to_z));
-    Coordinate c;
-    c.name = "table.z";
-    c.kind = CoordinateKind::Joint;
-    c.motion = CoordinateMotion::Translation;
+    Coordinate c = sliderCoordinate("table.z", "table", stage.getMobilizedBodyIndex());
     c.axis = HingeAxis::OutOfPlane;  // an excitation out of the plane (the planarity report leaves it out)
-    c.part = "table";
-    c.mobod = stage.getMobilizedBodyIndex();
     c.held = true;
     model_.addCoordinate(c);
     model_.addBody(stage.getMobilizedBodyIndex(), part, true);

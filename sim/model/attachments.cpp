@@ -77,12 +77,7 @@ void addShakerArmature(const ArticleScene& scene, Model& model) {
                                         SimTK::Body::Rigid(SimTK::MassProperties(m, SimTK::Vec3(0), SimTK::Inertia(0))),
                                         SimTK::Transform(X_GF.R()));
   model.addBody(armature.getMobilizedBodyIndex(), part, false);
-  Coordinate c;
-  c.name = "shaker";
-  c.kind = CoordinateKind::Joint;
-  c.motion = CoordinateMotion::Translation;
-  c.part = "shaker";
-  c.mobod = armature.getMobilizedBodyIndex();
+  Coordinate c = sliderCoordinate("shaker", "shaker", armature.getMobilizedBodyIndex());
   c.input = makeTableProgram(*sh.program);
   const int coordinate = model.getNumCoordinates();
   model.addCoordinate(c);

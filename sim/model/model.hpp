@@ -62,6 +62,18 @@ struct Coordinate {
   std::shared_ptr<const facility::TableProgram> input;
 };
 
+/// A translation along a slider of part `part` (the table's axes, the shaker's armature):
+/// a joint coordinate in metres, free unless the caller holds it.
+inline Coordinate sliderCoordinate(const std::string& name, const std::string& part, SimTK::MobilizedBodyIndex mobod) {
+  Coordinate c;
+  c.name = name;
+  c.kind = CoordinateKind::Joint;
+  c.motion = CoordinateMotion::Translation;
+  c.part = part;
+  c.mobod = mobod;
+  return c;
+}
+
 /// A part: a link (all its pieces), a torquer, a tip mass, or the excitation table.
 struct Part {
   std::string name;
