@@ -144,6 +144,8 @@ const std::vector<Field<TableLevels::Mode>>& tableLevelFields() {
       {"channels_seen", "", "%d", "sensor directions at or above 20 dB in the dwell", [](const T& m) -> Opt { return json(m.channels_seen); }},
       {"within_bandwidth", "", "%d", "the frequency is within the table's servo bandwidth", [](const T& m) -> Opt { return json(m.within_bandwidth); }},
       {"seen", "", "%d", "within the bandwidth and snr_db >= 20 dB", [](const T& m) -> Opt { return json(m.seen); }},
+      {"random_snr_db", "dB", "%.6g", "the table's random program: the best sensor's acceleration spectrum at the mode over the quantization noise's (null: above the bandwidth, not in the program)",
+       [](const T& m) -> Opt { return std::isfinite(m.random_snr_db) ? Opt(json(m.random_snr_db)) : std::nullopt; }},
   };
   // clang-format on
   return fields;
@@ -156,6 +158,10 @@ json tableLevelsJson(const TableLevels& t) {
   j["criteria"] = {{"seen_snr_db", kSeenSnrDb}};
   j["modes"] = json::array();
   for (const auto& m : t.modes) j["modes"].push_back(fieldsJson(tableLevelFields(), m, every));
+  if (const auto& r = t.random; r.program)
+    j["random"] = {{"f_min_hz", r.f_min_hz}, {"f_max_hz", r.f_max_hz}, {"rms_m", r.rms_m},
+                   {"crest_factor", kTableCrestFactor}, {"limit", r.limit}, {"rms_acc", r.rms_acc},
+                   {"rms_channel", r.rms_channel}, {"noise_psd", r.noise_psd}, {"grid_points", r.grid_points}};
   return j;
 }
 
@@ -166,13 +172,17 @@ std::string tableLevelsText(const TableLevels& t) {
   os << strf("\nBase table (+-%.4g m stroke, %.4g Hz bandwidth), a sine dwell per target mode at the stroke: %d of %zu "
              "target modes seen at >= %.0f dB\n",
              t.table.stroke, t.table.bandwidth_hz, seen, t.modes.size(), kSeenSnrDb);
-  Table tab({"mode", "f_Hz", "axis", "table_m/s2", "table_mm", "limit", "acc_m/s2", "best sensor", "SNR_dB", "seen_by"});
+  Table tab({"mode", "f_Hz", "axis", "table_m/s2", "table_mm", "limit", "acc_m/s2", "best sensor", "SNR_dB", "seen_by", "random_dB"});
   for (const auto& m : t.modes)
     tab.add({std::to_string(m.mode.number()), strf("%.4f", m.frequency_hz), m.axis, strf("%.3g", m.table_acc),
              strf("%.3g", 1e3 * m.table_amplitude_m), m.limit, strf("%.3g", m.acc), m.best_channel,
              strf("%.1f%s", m.snr_db, !m.within_bandwidth ? " ABOVE BANDWIDTH" : m.seen ? "" : " LOW"),
-             std::to_string(m.channels_seen)});
+             std::to_string(m.channels_seen), std::isfinite(m.random_snr_db) ? strf("%.1f", m.random_snr_db) : "-"});
   os << tab.text();
+  if (const auto& r = t.random; r.program)
+    os << strf("  random along x, %.3g-%.3g Hz, %.3g mm RMS (crest factor %.0f; set by the %s): largest sensor RMS %.3g "
+               "m/s^2 (%s)\n",
+               r.f_min_hz, r.f_max_hz, 1e3 * r.rms_m, kTableCrestFactor, r.limit.c_str(), r.rms_acc, r.rms_channel.c_str());
   return os.str();
 }
 

@@ -41,12 +41,7 @@ Loaded loadedModel(const ArticleScene& scene, const ExciterStudy& e, const std::
   DampingSpec damping;  // frf's default: 1 % in every mode, unless the scene says otherwise
   if (scene.damping) damping = *scene.damping;
   Loaded l{buildLinearModel(scene, {shaker}, outputs, damping), {}, {}};
-  l.modes = solveModes(l.lm.Mz, l.lm.Kz);
-  for (Eigen::Index k = 0; k < l.modes.shapes.cols(); ++k) {
-    const Eigen::VectorXd psi = l.modes.shapes.col(k);
-    const double w = std::sqrt(std::max(l.modes.omega2[k], 0.0));
-    l.zeta.push_back(w > 0 ? psi.dot(l.lm.Cz * psi) / (2 * w) : 0.0);
-  }
+  l.modes = dampedModes(l.lm, l.zeta);
   return l;
 }
 
@@ -223,6 +218,17 @@ ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) 
   sineLevels(e, l, channels);
   randomLevels(e, l, channels);
   return e;
+}
+
+ModalSolution dampedModes(const LinearModel& lm, std::vector<double>& zeta) {
+  ModalSolution modes = solveModes(lm.Mz, lm.Kz);
+  zeta.clear();
+  for (Eigen::Index k = 0; k < modes.shapes.cols(); ++k) {
+    const Eigen::VectorXd psi = modes.shapes.col(k);
+    const double w = std::sqrt(std::max(modes.omega2[k], 0.0));
+    zeta.push_back(w > 0 ? psi.dot(lm.Cz * psi) / (2 * w) : 0.0);
+  }
+  return modes;
 }
 
 std::vector<SensorChannel> chosenSensorChannels(const PlacementStudy& study) {

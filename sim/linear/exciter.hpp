@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "sim/core/mode_number.hpp"
+#include "sim/linear/state_space.hpp"
 #include "sim/modes/place_sensors.hpp"
 
 namespace mmv {
@@ -106,6 +107,10 @@ struct SensorChannel {
 };
 /// Every measured direction of `study`'s chosen sensors, in the placement's order.
 std::vector<SensorChannel> chosenSensorChannels(const PlacementStudy& study);
+
+/// The undamped modes of a linear model's admissible coordinates and each one's damping
+/// ratio, the diagonal of the modal damping (psi^T C psi / 2 omega; 0 for a rigid mode).
+ModalSolution dampedModes(const LinearModel& lm, std::vector<double>& zeta);
 
 /// The shaker of `scene` (MMV_DEMAND: it has one) against `study`'s targets and chosen
 /// sensors. Throws SceneError when a target mode is undamped (below kLeastDampingRatio),

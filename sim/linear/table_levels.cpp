@@ -1,5 +1,6 @@
 #include "sim/linear/table_levels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -10,6 +11,71 @@
 #include "sim/linear/state_space.hpp"
 
 namespace mmv {
+
+namespace {
+
+/// Each channel's absolute acceleration per unit table acceleration along x at f.
+std::vector<double> channelGains(const LinearModel& lm, const std::vector<SensorChannel>& channels, int axes, double f_hz) {
+  const Eigen::MatrixXcd H = lm.second_order.response(2 * M_PI * f_hz);
+  std::vector<double> out;
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    std::complex<double> v = 0;
+    for (int a = 0; a < axes; ++a) v += H(static_cast<Eigen::Index>(c) * axes + a, 0) * channels[c].world[static_cast<std::size_t>(a)];
+    out.push_back(std::abs(v));
+  }
+  return out;
+}
+
+/// The random program (TableLevels::Random): the channels' mean squares under a flat
+/// displacement spectrum G over the band, integrated on a grid that resolves every mode
+/// in it; then the RMS at the stroke (or the range), and each target's SNR in it.
+void randomLevels(const LinearModel& lm, const std::vector<SensorChannel>& channels, int axes, double sample_rate_hz,
+                  TableLevels& t) {
+  TableLevels::Random& r = t.random;
+  double lo = INFINITY;
+  for (const auto& m : t.modes)
+    if (m.within_bandwidth) lo = std::min(lo, std::max(0.1, 0.5 * m.frequency_hz));
+  if (!std::isfinite(lo) || channels.empty()) return;
+  r.program = true;
+  r.f_min_hz = lo, r.f_max_hz = t.table.bandwidth_hz;
+  std::vector<double> ratios, fn, zeta;
+  const ModalSolution modes = dampedModes(lm, ratios);
+  for (Eigen::Index k = 0; k < modes.omega2.size(); ++k)
+    if (modes.omega2[k] > 0) fn.push_back(std::sqrt(modes.omega2[k]) / (2 * M_PI)), zeta.push_back(ratios[static_cast<std::size_t>(k)]);
+  const std::vector<double> f = resolveResonances(logFrequencies(r.f_min_hz, r.f_max_hz, 800), fn, zeta, 8);
+  r.grid_points = static_cast<int>(f.size());
+  // Per unit displacement spectrum (G = 1 m^2/Hz): the table's acceleration spectrum is (2 pi f)^4.
+  std::vector<double> ms(channels.size(), 0.0);
+  const auto psd = [&](double fi) {
+    std::vector<double> g = channelGains(lm, channels, axes, fi);
+    for (double& x : g) x = x * x * std::pow(2 * M_PI * fi, 4);
+    return g;
+  };
+  std::vector<double> prev = psd(f[0]);
+  for (std::size_t i = 1; i < f.size(); ++i) {  // trapezoids
+    const std::vector<double> next = psd(f[i]);
+    for (std::size_t c = 0; c < ms.size(); ++c) ms[c] += 0.5 * (f[i] - f[i - 1]) * (prev[c] + next[c]);
+    prev = next;
+  }
+  const std::size_t worst = static_cast<std::size_t>(std::max_element(ms.begin(), ms.end()) - ms.begin());
+  const double band = r.f_max_hz - r.f_min_hz;
+  r.rms_m = t.table.stroke / kTableCrestFactor, r.limit = "stroke";
+  double G = r.rms_m * r.rms_m / band;
+  if (kTableCrestFactor * std::sqrt(ms[worst] * G) > t.range) {
+    G = std::pow(t.range / kTableCrestFactor, 2) / ms[worst];
+    r.rms_m = std::sqrt(G * band), r.limit = "range";
+  }
+  r.rms_acc = std::sqrt(ms[worst] * G), r.rms_channel = channels[worst].name;
+  r.noise_psd = t.resolution * t.resolution / (6 * sample_rate_hz);
+  for (auto& m : t.modes) {
+    m.random_snr_db = NAN;
+    if (!m.within_bandwidth) continue;
+    const std::vector<double> s = psd(m.frequency_hz);
+    m.random_snr_db = 10 * std::log10(std::max(*std::max_element(s.begin(), s.end()) * G, 1e-24 * r.noise_psd) / r.noise_psd);
+  }
+}
+
+}  // namespace
 
 TableLevels runTableLevels(const ArticleScene& scene, const PlacementStudy& study) {
   MMV_DEMAND(scene.article.base.type == BaseType::Table);
@@ -60,6 +126,7 @@ TableLevels runTableLevels(const ArticleScene& scene, const PlacementStudy& stud
     m.seen = m.within_bandwidth && m.snr_db >= kSeenSnrDb;
     t.modes.push_back(m);
   }
+  randomLevels(lm, channels, axes, scene.simulation.sample_rate_hz, t);
   return t;
 }
 

@@ -8,7 +8,9 @@
 /// linear model of `frf` (the scene's damping, else 1 % modal), its signal-to-noise
 /// ratio against the accelerometer's resolution at the sensor that sees the mode most,
 /// and whether the frequency is within the table's servo bandwidth (10 Hz: above it the
-/// loop attenuates the motion, and the mode is not counted as seen).
+/// loop attenuates the motion, and the mode is not counted as seen). Also a random
+/// program of the table over its band at the stroke (TableLevels::Random) and each
+/// target's signal-to-noise in it.
 
 #include <string>
 #include <vector>
@@ -36,9 +38,32 @@ struct TableLevels {
     int channels_seen = 0;         ///< sensor directions at or above kSeenSnrDb
     bool within_bandwidth = true;  ///< frequency_hz <= the table's bandwidth
     bool seen = false;             ///< within the bandwidth and snr_db >= kSeenSnrDb
+    /// The random program's (below): the best channel's acceleration spectrum at the
+    /// mode's frequency over the sensor's noise floor, dB; NaN when the random program
+    /// does not reach the mode (above the bandwidth, or no program).
+    double random_snr_db = 0;
   };
   std::vector<Mode> modes;
+  /// A band-limited random program of the table along x (a flat displacement spectrum,
+  /// as `base.motion: {type: random}`), over [f_min, f_max]: from half the lowest target
+  /// (at least 0.1 Hz) to the table's bandwidth. Its RMS displacement is the stroke over
+  /// kTableCrestFactor, lowered where the crest factor times a sensor's RMS would pass
+  /// its range. Absent (program = false) when no target lies within the bandwidth.
+  struct Random {
+    bool program = false;
+    double f_min_hz = 0, f_max_hz = 0;
+    double rms_m = 0;         ///< the table's RMS displacement
+    std::string limit;        ///< stroke or range
+    double rms_acc = 0;       ///< the largest sensor RMS, m/s^2 (absolute acceleration)
+    std::string rms_channel;  ///< whose
+    int grid_points = 0;
+    double noise_psd = 0;     ///< (m/s^2)^2/Hz: resolution^2 / (6 x the scene's sample rate)
+  } random;
 };
+
+/// A random program's peak over its RMS (Gaussian, clipped at 3 sigma), as the shaker's
+/// assumed crest factor.
+inline constexpr double kTableCrestFactor = 3;
 
 /// The table's dwell levels for `study`'s targets on its chosen sensors. MMV_DEMAND: the
 /// scene's base is the table.

@@ -253,6 +253,64 @@ TEST(TableLevels, ASingleModeMeetsItsClosedFormAndItsLimitsBindExactly) {
   EXPECT_NEAR(t.modes[0].table_acc / (range / best), 1.0, 1e-8);
 }
 
+// The table's random program, two ways: its largest sensor RMS against frf's own
+// absolute accelerations integrated here on 100,000 log-spaced frequencies (times the
+// table's acceleration spectrum (2 pi f)^4 G of a flat displacement spectrum G), each
+// mode's SNR against frf's spectrum at it, and its two limits met exactly where they bind.
+TEST(TableLevels, TheRandomProgramIsFrfsSpectrumAtTheStrokeOrTheRange) {
+  ArticleScene s = scene({"links.link1.segments=1", "links.link2.segments=rigid", "links.link3.segments=rigid"}, 0.02);
+  s.article.base.type = BaseType::Table;
+  PlacementOptions o;
+  o.modes = {ModeNumber(1)};
+  o.count = 3;
+  PlacementStudy p = runPlacement(s, o);
+  p.instrument.spec.range = 1e9;
+  const TableLevels t = runTableLevels(s, p);
+  ASSERT_TRUE(t.random.program);
+  ASSERT_TRUE(t.modes[0].within_bandwidth);
+  const auto& r = t.random;
+  EXPECT_EQ(r.limit, "stroke");
+  EXPECT_DOUBLE_EQ(r.rms_m, 0.15 / 3);
+  EXPECT_NEAR(r.f_min_hz, std::max(0.1, 0.5 * p.target_frequencies_hz[0]), 1e-12);
+  EXPECT_EQ(r.f_max_hz, 10.0);
+  const std::vector<SensorChannel> channels = chosenSensorChannels(p);
+  app::LinearRequest q;
+  q.inputs = {"table_x"};
+  for (const auto& c : channels) q.outputs.push_back(c.station + ":x:acc_abs"), q.outputs.push_back(c.station + ":y:acc_abs");
+  q.f_min = r.f_min_hz, q.f_max = r.f_max_hz, q.range_given = true, q.points = 100000;
+  const app::LinearStudy frf = app::runLinearStudy(s, q);
+  const double G = r.rms_m * r.rms_m / (r.f_max_hz - r.f_min_hz);
+  auto spectrum = [&](std::size_t i, std::size_t c) {  // channel c's acceleration spectrum at frf.f[i]
+    const std::complex<double> a = frf.hf[i](2 * c, 0) * channels[c].world[0] + frf.hf[i](2 * c + 1, 0) * channels[c].world[1];
+    return std::norm(a) * std::pow(2 * M_PI * frf.f[i], 4) * G;
+  };
+  double worst = 0;
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    double ms = 0;
+    for (std::size_t i = 1; i < frf.f.size(); ++i) ms += 0.5 * (frf.f[i] - frf.f[i - 1]) * (spectrum(i - 1, c) + spectrum(i, c));
+    worst = std::max(worst, ms);
+  }
+  std::printf("[table random] RMS %.6g against frf's %.6g m/s^2\n", r.rms_acc, std::sqrt(worst));
+  EXPECT_NEAR(r.rms_acc / std::sqrt(worst), 1.0, 1e-4);  // measured 8e-6
+  // The SNR at the mode: frf's spectrum there (a grid point of its own run).
+  app::LinearRequest at = q;
+  at.f_min = p.target_frequencies_hz[0], at.f_max = 2 * at.f_min, at.points = 2;
+  const app::LinearStudy one = app::runLinearStudy(s, at);
+  double peak = 0;
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    const std::complex<double> a = one.hf[0](2 * c, 0) * channels[c].world[0] + one.hf[0](2 * c + 1, 0) * channels[c].world[1];
+    peak = std::max(peak, std::norm(a) * std::pow(2 * M_PI * one.f[0], 4) * G);
+  }
+  EXPECT_NEAR(t.modes[0].random_snr_db, 10 * std::log10(peak / r.noise_psd), 1e-6);
+  EXPECT_NEAR(r.noise_psd, std::pow(p.instrument.spec.resolution, 2) / (6 * s.simulation.sample_rate_hz), 1e-30);
+  // The range binds: the crest factor times the largest RMS is the range.
+  p.instrument.spec.range = 0.5 * 3 * r.rms_acc;
+  const TableLevels tight = runTableLevels(s, p);
+  EXPECT_EQ(tight.random.limit, "range");
+  EXPECT_NEAR(3 * tight.random.rms_acc / p.instrument.spec.range, 1.0, 1e-12);
+  EXPECT_NEAR(tight.random.rms_m / r.rms_m, 0.5, 1e-12);
+}
+
 // On the table scene: the modes above the table's 10 Hz bandwidth are not counted as
 // seen however loud the dwell, those below are, and each level is the frf's response at
 // its sensor times the table's acceleration (the same number by frf's own study).
