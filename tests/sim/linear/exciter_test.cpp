@@ -211,6 +211,21 @@ TEST(Exciter, TheRankingsArmatureShiftIsFirstOrderAndItsOrderHolds) {
 namespace mmv {
 namespace {
 
+/// One mode on the table (link 1 in one segment, the rest rigid, 2 % damping), and its
+/// placement of three sensors.
+ArticleScene singleModeOnTable() {
+  ArticleScene s = scene({"links.link1.segments=1", "links.link2.segments=rigid", "links.link3.segments=rigid"}, 0.02);
+  s.article.base.type = BaseType::Table;
+  return s;
+}
+
+PlacementStudy singleModePlacement(const ArticleScene& s) {
+  PlacementOptions o;
+  o.modes = {ModeNumber(1)};
+  o.count = 3;
+  return runPlacement(s, o);
+}
+
 // The base table's dwell levels (sim/linear/table_levels.hpp) against the closed form of
 // one mode: per unit table acceleration along x, a sensor direction e reads the table's
 // own e_x and, in quadrature at resonance, the mode's Gamma u_e / (2 zeta) (Gamma^2 the
@@ -218,12 +233,8 @@ namespace {
 // e). With a range too large to bind, the stroke sets the dwell (0.15 m x omega^2); with
 // a small one, the best sensor sits exactly on it.
 TEST(TableLevels, ASingleModeMeetsItsClosedFormAndItsLimitsBindExactly) {
-  ArticleScene s = scene({"links.link1.segments=1", "links.link2.segments=rigid", "links.link3.segments=rigid"}, 0.02);
-  s.article.base.type = BaseType::Table;
-  PlacementOptions o;
-  o.modes = {ModeNumber(1)};
-  o.count = 3;
-  PlacementStudy p = runPlacement(s, o);
+  const ArticleScene s = singleModeOnTable();
+  PlacementStudy p = singleModePlacement(s);
   const ModesReport modes = runModes(s);
   ASSERT_FALSE(modes.modes.empty());
   const double gamma = std::sqrt(modes.modes[0].effective_mass_x_kg), zeta = 0.02;
@@ -258,12 +269,8 @@ TEST(TableLevels, ASingleModeMeetsItsClosedFormAndItsLimitsBindExactly) {
 // table's acceleration spectrum (2 pi f)^4 G of a flat displacement spectrum G), each
 // mode's SNR against frf's spectrum at it, and its two limits met exactly where they bind.
 TEST(TableLevels, TheRandomProgramIsFrfsSpectrumAtTheStrokeOrTheRange) {
-  ArticleScene s = scene({"links.link1.segments=1", "links.link2.segments=rigid", "links.link3.segments=rigid"}, 0.02);
-  s.article.base.type = BaseType::Table;
-  PlacementOptions o;
-  o.modes = {ModeNumber(1)};
-  o.count = 3;
-  PlacementStudy p = runPlacement(s, o);
+  const ArticleScene s = singleModeOnTable();
+  PlacementStudy p = singleModePlacement(s);
   p.instrument.spec.range = 1e9;
   const TableLevels t = runTableLevels(s, p);
   ASSERT_TRUE(t.random.program);
