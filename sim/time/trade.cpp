@@ -40,7 +40,10 @@ TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
   for (const auto& l : scene.article.links)
     if (!l.rigid) p.finest_segments = std::max(p.finest_segments, l.segments);
   p.has_segments = p.finest_segments > 0;
-  p.has_modes = p.has_segments && scene.article.model == ArticleModel::Planar && scene.article.closures.empty();
+  // Links in modal coordinates need a planar open tree; a shaker's stinger closes it in
+  // time runs (sim/model/attachments.hpp).
+  p.has_modes = p.has_segments && scene.article.model == ArticleModel::Planar && scene.article.closures.empty() &&
+                !(scene.shaker && scene.shaker->program);
   const ArticleSpec article = scene.article;
   p.also_scores = [article](const std::string& name, std::string& error) {
     return isStationName(name) && parseStation(name, article, error).has_value();

@@ -20,6 +20,7 @@
 #include "sim/statics/linearize.hpp"
 #include "sim/statics/statics.hpp"
 #include "sim/time/simulation.hpp"
+#include "sim/time/trade.hpp"
 #include "support/record_column.hpp"
 
 namespace mmv {
@@ -146,6 +147,16 @@ TEST(ShakerRun, TheRunsArmatureIsTheLinearModelsAddedMass) {
   // (measured 4.8 % and 1.6 % in mode 4; 0.08 % at 256 segments, docs/pretest.md).
   EXPECT_LT(fine, coarse / 2.5);
   EXPECT_LT(fine, 0.02);
+}
+
+// The trade and the accuracy contract offer no modal links on a scene whose shaker
+// drives it: the stinger closes the tree (their runs failed as non-finite states).
+TEST(ShakerRun, TheTradeOffersNoModalLinksWhenTheStingerClosesTheTree) {
+  std::string text = kShakenArm;
+  text.replace(text.find("segments: rigid"), 15, "segments: 8");
+  EXPECT_FALSE(articleTradeProblem(std::get<ArticleScene>(parseScene(text, "arm.yaml"))).has_modes);
+  text.erase(text.find("  program:"), text.find("simulation:") - text.find("  program:"));
+  EXPECT_TRUE(articleTradeProblem(std::get<ArticleScene>(parseScene(text, "arm.yaml"))).has_modes);
 }
 
 TEST(ShakerRun, AStrokeTooShortForTheMotionIsFlagged) {
