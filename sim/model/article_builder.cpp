@@ -276,8 +276,7 @@ class Builder {
   void addStationMasses(const LinkSpec& l, const LinkAxis& axis) {
     for (const auto& [x, mass] : l.station_masses) {
       MMV_DEMAND(x >= 0 && x <= l.length && mass > 0);
-      std::size_t k = 0;  // the last axis point at or before x: its right-hand piece carries it
-      while (k + 2 < axis.x.size() && axis.x[k + 1] <= x) ++k;
+      const std::size_t k = axis.nodeBefore(x);  // its right-hand piece carries it
       const int part = model_.addPart(l.name + ".station_mass", Part::Kind::TipMass, l.name);
       SimTK::MobilizedBody::Weld w(model_.updMatter().updMobilizedBody(axis.right[k]),
                                    SimTK::Transform(SimTK::Vec3(x - axis.x[k], 0, 0)), lumpedBody(LumpedMass{mass, 0, {0, 0}}),

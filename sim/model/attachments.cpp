@@ -62,8 +62,7 @@ void addShakerArmature(const ArticleScene& scene, Model& model) {
   if (!st) throw SceneError(scene.positions.where("shaker.at") + ": shaker.at: " + error);
   const LinkAxis* axis = model.findLinkAxis(st->link);
   MMV_DEMAND(axis != nullptr && axis->x.size() >= 2);
-  std::size_t k = 0;  // the last node at or before the station: its right-hand piece carries it
-  while (k + 2 < axis->x.size() && axis->x[k + 1] <= st->x) ++k;
+  const std::size_t k = axis->nodeBefore(st->x);
   const SimTK::MobilizedBodyIndex piece = axis->right[k];
   const SimTK::Vec3 station_B(st->x - axis->x[k], 0, 0);  // a piece's frame starts at its node, x along the link
 

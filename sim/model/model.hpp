@@ -139,6 +139,13 @@ struct LinkAxis {
   std::vector<double> x;  ///< m from the root, increasing: 0, hinges, length.
   std::vector<int> points;
   std::vector<SimTK::MobilizedBodyIndex> left, right;
+  /// The last node at or before x (m from the root): right[k] is the piece x lies on,
+  /// at x - this->x[k] along its frame's x axis (a piece's frame starts at its node).
+  std::size_t nodeBefore(double at) const {
+    std::size_t k = 0;
+    while (k + 2 < x.size() && x[k + 1] <= at) ++k;
+    return k;
+  }
 };
 
 class Model {
