@@ -390,11 +390,26 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
   const SimTK::SimbodyMatterSubsystem& matter = sys.getMatterSubsystem();
   const int n = std::max(1, static_cast<int>(std::ceil(spec.duration * spec.sample_rate_hz)));
   integrator.setEndTime(spec.duration);
-  double last_motion_power = 0, last_dissipation = 0;
+  // The work of the prescribed motions and inputs and the dissipation are integrated by
+  // Simpson's rule on each sample interval, its midpoint an interpolated state (the
+  // integrator's steps do not change): (w h)^4 / 2880 relative on a sinusoid. The
+  // trapezoid on the samples alone was off by (w h)^2 / 12: 3 % of the work of a 10 Hz
+  // table program at 200 samples/s, a balance error that no tolerance could remove.
+  const auto power = [&](const SimTK::State& st) {
+    return matter.calcMotionPower(st) + (input_power ? input_power(st) : 0.0);
+  };
+  const double h = spec.duration / n;
+  double last_power = 0, last_dissipation = 0;
   const auto start = std::chrono::steady_clock::now();
   for (int k = 0; k <= n; ++k) {
     const double t = spec.duration * k / n;
-    if (k > 0) integrator.stepTo(t);
+    double mid_power = 0, mid_dissipation = 0;
+    if (k > 0) {
+      integrator.stepTo(spec.duration * (k - 0.5) / n);
+      mid_power = power(integrator.state());
+      mid_dissipation = dissipation(integrator.state());
+      integrator.stepTo(t);
+    }
     const SimTK::State& st = integrator.state();
     sys.realize(st, SimTK::Stage::Acceleration);
     std::vector<double> row = sample(t, st);
@@ -402,18 +417,14 @@ void recordRun(const SimTK::MultibodySystem& sys, RunIntegrator& integrator, con
       if (!std::isfinite(v))
         throw NumericalError("non-finite state at t = " + std::to_string(t) + " s (" + spec.integrator + ", accuracy " +
                              std::to_string(spec.accuracy) + ")");
-    // Energy bookkeeping (trapezoidal in time).
-    const double motion_power = matter.calcMotionPower(st) + (input_power ? input_power(st) : 0.0);
-    const double diss = dissipation(st);
+    const double p = power(st), d = dissipation(st);
     if (k == 0) {
       r.initial_energy_j = sys.calcEnergy(st);
     } else {
-      const double dt = spec.duration / n;
-      r.motion_work_j += 0.5 * dt * (motion_power + last_motion_power);
-      r.dissipated_j += 0.5 * dt * (diss + last_dissipation);
+      r.motion_work_j += h / 6 * (last_power + 4 * mid_power + p);
+      r.dissipated_j += h / 6 * (last_dissipation + 4 * mid_dissipation + d);
     }
-    last_motion_power = motion_power;
-    last_dissipation = diss;
+    last_power = p, last_dissipation = d;
     r.final_energy_j = sys.calcEnergy(st);
     r.peak_kinetic_energy_j = std::max(r.peak_kinetic_energy_j, matter.calcKineticEnergy(st));
     const double balance = (r.final_energy_j - r.initial_energy_j) - (r.motion_work_j - r.dissipated_j);
