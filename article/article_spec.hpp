@@ -122,6 +122,15 @@ struct LinkSpec {
   /// planar link of a spatial article bends in its plane only (pin hinges: rigid out of
   /// the plane and in torsion) while it moves in 3-D with the rest of the article.
   std::optional<ArticleModel> model;
+  /// Time runs, `modes` 0: set, the link is carried by its modes up to this frequency
+  /// (Hz), at least kFidelityMinModes of them (sim/time/fidelity.hpp sets it: the
+  /// scene's default fidelity). Not a scene key.
+  std::optional<double> modes_up_to_hz;
+  /// With modes_up_to_hz: the rule's count of modes times this (capped at the hinges): a
+  /// verification companion's 2 (sim/time/verify.hpp).
+  int modes_multiplier = 1;
+  /// Whether a time run carries the link in modal coordinates.
+  bool modal() const { return !rigid && (modes > 0 || modes_up_to_hz.has_value()); }
 };
 
 /// A loop closure: a point of the article held to the ground (a fixture) or to

@@ -131,6 +131,12 @@ double Slew::largestAngle() const {
   return std::max(std::abs(from_), std::abs(from_ + delta_));
 }
 
+double Slew::bandHz() const {
+  if (shape_ == SlewShape::Program) return program_->maxFrequencyHz();
+  if (duration_ == 0 || (shape_ != SlewShape::SpinUp && delta_ == 0)) return 0;
+  return shape_ == SlewShape::Trapezoidal ? INFINITY : 2 / duration_;
+}
+
 double Slew::peakAcceleration() const {
   if (shape_ == SlewShape::SpinUp) return 2 * std::abs(cruise_rate_) / duration_;
   if (shape_ == SlewShape::Program) return program_peak_acceleration_;

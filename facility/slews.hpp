@@ -48,6 +48,11 @@ class Slew {
   double duration() const { return duration_; }  ///< a spin-up's: its ramp
   double peakRate() const;
   double peakAcceleration() const;
+  /// The highest frequency its acceleration carries (Hz): a cycloidal move's or a
+  /// spin-up's main lobe, 2 / duration (its side lobes fall as 1 / f^2, the acceleration
+  /// being continuous); an angle program's samples' Nyquist frequency; a trapezoidal
+  /// move's acceleration steps carry every frequency (infinity); 0 for no move.
+  double bandHz() const;
   /// The largest |angle| it reaches (rad): a move's larger end, an angle program's
   /// largest (between its samples too), a spin-up's none (infinity).
   double largestAngle() const;

@@ -52,7 +52,7 @@ void applyOverrides(const SimulateRequest& r, SimulationSpec& spec) {
                           optionName(r.front, "--duration").c_str(), spec.duration,
                           optionName(r.front, "--sample-rate").c_str(), spec.sample_rate_hz,
                           spec.duration * spec.sample_rate_hz, limits::kMaxSamples));
-  if (spec.absolute_tolerance > 0 && !isSundialsIntegrator(spec.integrator))
+  if (spec.absolute_tolerance > 0 && !spec.integrator.empty() && !isSundialsIntegrator(spec.integrator))
     throw UsageError(optionName(r.front, "--absolute-tolerance") +
                      " applies to the SUNDIALS integrators only (got integrator " + spec.integrator + ")");
 }
@@ -125,6 +125,7 @@ SimulateStudy run(SceneT scene, const SimulateRequest& r, const SimulateHooks& h
                   std::vector<std::string> warnings, double size_m) {
   SimulateStudy s;
   s.result = runOrTarget(r, scene, problem, s, hooks);
+  scene.simulation.integrator = s.result.integrator;  // the one the run used (the default fidelity may choose it)
   for (const auto& w : s.result.warnings) {
     warnings.push_back(w);
     if (hooks.warn) hooks.warn(w);

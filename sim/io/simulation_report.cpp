@@ -39,6 +39,7 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
   j["integrator"] = r.integrator;
   j["accuracy"] = r.accuracy;
   if (!r.damping.empty()) j["damping"] = r.damping;
+  if (!r.fidelity.empty()) j["fidelity"] = r.fidelity;
   j["duration_s"] = r.record.rows.empty() ? 0.0 : r.record.rows.back()[0];
   j["samples"] = r.record.rows.size();
   if (!r.modal_links.empty()) {
@@ -93,7 +94,8 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
                          {"target", v.target_is_default ? "1 % of the scored amplitude" : "given"},
                          {"safety_factor", kVerifySafetyFactor},
                          {"met", verificationMet(v)},
-                         {"companion_wall_time_s", v.companion_seconds}};
+                         {"companion_wall_time_s", v.companion_seconds},
+                         {"companion_modes", v.companion_more_modes ? "twice the run's per link" : "the run's"}};
   j["warnings"] = warnings;
   return j;
 }
@@ -105,6 +107,7 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
   os << strf("Time run: %.4g s with %s (accuracy %.1e), %zu samples; %.2f s wall time\n",
              r.record.rows.empty() ? 0.0 : r.record.rows.back()[0], r.integrator.c_str(), r.accuracy, r.record.rows.size(),
              r.wall_seconds);
+  if (!r.fidelity.empty()) os << "Model: " << r.fidelity << "\n";
   if (!r.damping.empty()) os << "Damping: " << r.damping << "\n";
   os << strf("Cost: %d steps (%ld rejected), %d %s, %s; stepping %.3g s, sampling %.3g s\n\n", r.steps, r.rejected_steps,
              r.realizations, isSundialsIntegrator(r.integrator) ? "right-hand sides" : "realizations",
@@ -153,9 +156,10 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
              r.max_energy_balance_error_j, r.max_energy_balance_error_at_s);
   if (r.constraint_drift_m > 0) os << strf("Closures: largest drift %.3g m over the run\n", r.constraint_drift_m);
   if (const RunVerification& v = r.verification; v.done)
-    os << strf("Verification: estimated error %.3g m (%s at t = %.4g s, against accuracy %.1e, %.2f s); target %.3g m%s, "
+    os << strf("Verification: estimated error %.3g m (%s at t = %.4g s, against accuracy %.1e%s, %.2f s); target %.3g m%s, "
                "held with a safety factor %g: %s\n",
-               v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy, v.companion_seconds, v.target_m,
+               v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy,
+               v.companion_more_modes ? " and twice the modes" : "", v.companion_seconds, v.target_m,
                !v.target_is_default                    ? ""
                : v.target_m > 0.01 * v.amplitude_m * (1 + 1e-9) ? " (nothing moved beyond a micrometre per metre: 1 % of that)"
                                                                : " (1 % of the scored motion)",

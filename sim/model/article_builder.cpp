@@ -437,7 +437,7 @@ std::unique_ptr<Model> buildArticleModel(const ArticleScene& scene, ModelUse use
   // A modal ratio or Rayleigh damping: a damping matrix over the free coordinates, set
   // by a time run at its equilibrium (sim/statics/damping_matrix.hpp).
   if (scene.damping && scene.damping->kind != DampingSpec::Kind::HingeViscous) model->addLinearDamper();
-  if (std::any_of(scene.article.links.begin(), scene.article.links.end(), [](const LinkSpec& l) { return l.modes > 0; }))
+  if (std::any_of(scene.article.links.begin(), scene.article.links.end(), [](const LinkSpec& l) { return l.modal(); }))
     model->addReducedMotions();
   model->finalize();
   return model;

@@ -61,7 +61,9 @@ class SceneParser {
     if (top.count("closures")) readClosures(top.at("closures"), a);
     if (top.count("loads")) readLoads(top.at("loads"), a);
     if (top.count("damping")) scene.damping = readDamping(r_, top.at("damping"));
-    if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"));
+    scene.simulation.fidelity = SimulationSpec::Fidelity::Auto;  // a scene file's defaults (sim/time/fidelity.hpp)
+    scene.simulation.integrator.clear();
+    if (top.count("simulation")) scene.simulation = readSimulation(r_, top.at("simulation"), true);
     scene.instruments = reportInstruments();
     if (top.count("instruments")) readInstruments(r_, top.at("instruments"), scene);
     if (top.count("sensors")) readSensors(r_, top.at("sensors"), scene);

@@ -42,7 +42,7 @@ HamsasScene readHamsasScene(const YamlReader& r, const YAML::Node& root, const s
       scene.ground_axis = a == "x" ? 0 : a == "y" ? 1 : 2;
     }
   }
-  if (top.count("simulation")) scene.simulation = readSimulation(r, top.at("simulation"));
+  if (top.count("simulation")) scene.simulation = readSimulation(r, top.at("simulation"), false);
   return scene;
 }
 

@@ -5,10 +5,20 @@
 
 namespace mmv::scene_detail {
 
-SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n) {
+SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n, bool article) {
   auto m = r.mapping(n, "simulation", {"duration", "integrator", "accuracy", "absolute_tolerance", "sample_rate_hz", "start",
-                                        "score_points"});
+                                        "score_points", "fidelity"});
   SimulationSpec s;
+  s.fidelity = article ? SimulationSpec::Fidelity::Auto : SimulationSpec::Fidelity::Segments;
+  if (article) s.integrator.clear();  // none named: the run chooses (sim/time/fidelity.hpp)
+  if (m.count("fidelity") && !article)
+    r.fail(m.at("fidelity").Mark(), "simulation.fidelity chooses how an article's links are carried; the isolator has none");
+  if (m.count("fidelity")) {
+    const std::string f = r.text(m.at("fidelity"), "simulation.fidelity");
+    if (f != "auto" && f != "segments")
+      r.fail(m.at("fidelity").Mark(), "simulation.fidelity: unknown fidelity '" + f + "' (known: auto, segments)");
+    if (f == "segments") s.fidelity = SimulationSpec::Fidelity::Segments;
+  }
   if (m.count("duration")) s.duration = r.positive(m.at("duration"), "simulation.duration", " s");
   if (m.count("integrator")) {
     s.integrator = r.text(m.at("integrator"), "simulation.integrator");
@@ -25,7 +35,7 @@ SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n) {
     s.absolute_tolerance = r.positive(m.at("absolute_tolerance"), "simulation.absolute_tolerance", "");
     if (s.absolute_tolerance >= 1)
       r.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance must be below 1 (got " + m.at("absolute_tolerance").Scalar() + ")");
-    if (!isSundialsIntegrator(s.integrator))
+    if (!s.integrator.empty() && !isSundialsIntegrator(s.integrator))
       r.fail(m.at("absolute_tolerance").Mark(), "simulation.absolute_tolerance applies to the SUNDIALS integrators "
                                                  "(cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ida; got integrator " + s.integrator + ")");
   }

@@ -203,7 +203,7 @@ HamsasScene readHamsasScene(const YamlReader& r, const YAML::Node& root, const s
 TableMotion readTableMotion(const YamlReader& r, const YAML::Node& mn, const std::string& path,
                             const std::vector<std::string>& extra, const std::string& unit = " m");
 SlewSpec readSlew(const YamlReader& r, const YAML::Node& sn, const std::string& path);
-SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n);
+SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n, bool article);
 DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
 /// sections.NAME and materials.NAME (sim/scene/read_section.cpp).
 Section readSection(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);

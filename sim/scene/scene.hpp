@@ -40,6 +40,7 @@ struct DampingSpec {
 /// Settings of a time run (`simulation:` in the scene; the command line overrides).
 struct SimulationSpec {
   double duration = 10;         ///< s.
+  /// Empty: the run chooses (sim/time/fidelity.hpp); a scene file that names none.
   std::string integrator = "rk_merson";
   double accuracy = 1e-6;       ///< integrator relative accuracy.
   double absolute_tolerance = 0;  ///< SUNDIALS integrators only (m, rad, m/s, rad/s); 0: the accuracy.
@@ -49,6 +50,15 @@ struct SimulationSpec {
   /// empty: every one. `--points` overrides.
   std::vector<std::string> score_points;
   std::string score_where;  ///< file:line:col of score_points, for errors found later.
+  /// `simulation.fidelity` (sim/time/fidelity.hpp): Auto lets an article's time run
+  /// carry its links by the modes its programs excite; Segments keeps every hinge. A
+  /// scene read from a file is Auto unless it says so; code-built specs keep the segments.
+  enum class Fidelity { Segments, Auto };
+  Fidelity fidelity = Fidelity::Segments;
+  /// Links in modal coordinates keep 2^this times their modes (the scene's `modes:` or
+  /// the default fidelity's count, capped at the hinges): a verification companion's 1,
+  /// so that its estimate sees the modes left out as well as the tolerance.
+  int modal_refinement = 0;
 };
 
 /// A sensor recorded in time runs (facility/sensors.hpp for the models).

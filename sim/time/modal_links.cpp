@@ -6,6 +6,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/text.hpp"
 #include "sim/statics/linearize.hpp"
+#include "sim/time/fidelity.hpp"
 
 namespace mmv {
 
@@ -56,7 +57,7 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   std::vector<Eigen::VectorXd> columns;
   std::vector<bool> in_a_link(n, false);
   for (const auto& l : article.links) {
-    if (l.modes <= 0) continue;
+    if (!l.modal()) continue;
     std::vector<int> rows;  // into free_
     for (int r = 0; r < n; ++r) {
       const Coordinate& c = model.getCoordinates()[free_[r]];
@@ -126,13 +127,19 @@ void ModalLinks::addLink(const LinkSpec& l, const std::vector<int>& rows, const 
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, Mh);
   if (eig.info() != Eigen::Success) throw NumericalError("link " + l.name + ": its modes did not converge");
   const int n = static_cast<int>(free_.size());
-  for (int j = 0; j < l.modes; ++j) {
+  auto hz = [&](int j) { return std::sqrt(std::max(0.0, eig.eigenvalues()[j])) / (2 * M_PI); };
+  int kept = l.modes;
+  if (kept <= 0) {  // the default fidelity's rule (sim/time/fidelity.hpp): up to the cutoff, at least the minimum
+    kept = std::min(h, kFidelityMinModes);
+    while (kept < h && hz(kept) <= *l.modes_up_to_hz) ++kept;
+    kept = std::min(h, kept * std::max(1, l.modes_multiplier));
+  }
+  for (int j = 0; j < kept; ++j) {
     Eigen::VectorXd col = Eigen::VectorXd::Zero(n);
     for (int r = 0; r < h; ++r) col[rows[r]] = eig.eigenvectors()(r, j);  // M-normalized
     columns.push_back(col);
   }
-  auto hz = [&](int j) { return std::sqrt(std::max(0.0, eig.eigenvalues()[j])) / (2 * M_PI); };
-  summary_.push_back({l.name, l.modes, h, hz(l.modes - 1), l.modes < h ? hz(l.modes) : 0.0});
+  summary_.push_back({l.name, kept, h, hz(kept - 1), kept < h ? hz(kept) : 0.0});
 }
 
 void ModalLinks::project(const SimTK::State& s, double* y) const {

@@ -14,6 +14,7 @@
 #include "sim/model/stations.hpp"
 #include "sim/scene/stations.hpp"
 #include "sim/statics/closures.hpp"
+#include "sim/time/fidelity.hpp"
 #include "sim/time/run_integrator.hpp"
 #include "sim/statics/damping_matrix.hpp"
 #include "sim/statics/linearize.hpp"
@@ -352,11 +353,14 @@ SimTK::State initialState(Model& model, const SimulationSpec& spec, const std::o
 
 }  // namespace
 
-SimulationResult simulate(const ArticleScene& scene, const std::function<void(double)>& progress) {
+SimulationResult simulate(const ArticleScene& asked, const std::function<void(double)>& progress) {
+  ArticleScene scene = asked;
+  const FidelityChoice fidelity = resolveFidelity(scene);
   const SimulationSpec& spec = scene.simulation;
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = buildArticleModel(scene, ModelUse::TimeRun);
   SimulationResult r;
+  r.fidelity = fidelity.reason;
   SimTK::State s = initialState(*model, spec, scene.damping, r.warnings);
   std::unique_ptr<ModalLinks> modal;  // links in modal coordinates
   if (!model->getReducedMotions().empty()) {

@@ -72,6 +72,9 @@ struct RunVerification {
   double amplitude_m = 0;        ///< the scored points' largest motion (companion run)
   double target_m = 0;           ///< what the estimate is held to
   bool target_is_default = true; ///< 1 % of amplitude_m (1e-4 m if nothing moved)
+  /// The run carried links in modal coordinates and the companion twice their modes, so
+  /// the estimate sees the modes left out as well as the tolerance.
+  bool companion_more_modes = false;
 };
 
 /// The extra shaker in a run with `shaker.program` (sim/model/attachments.hpp): the
@@ -133,6 +136,8 @@ struct SimulationResult {
   std::vector<ModalLinkSummary> modal_links;
   /// With `shaker.program`: columns shaker_force_n, shaker_stroke_m, shaker_stinger_force_n.
   std::optional<ShakerRunSummary> shaker;
+  /// Article runs: what the run integrated and why (sim/time/fidelity.hpp).
+  std::string fidelity;
 };
 
 /// Runs the scene's time run with its `simulation:` settings. `progress`, if given,

@@ -1,5 +1,7 @@
 #include "sim/time/trade.hpp"
 
+#include "sim/time/fidelity.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,8 +44,7 @@ TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
   p.has_segments = p.finest_segments > 0;
   // Links in modal coordinates need a planar open tree; a shaker's stinger closes it in
   // time runs (sim/model/attachments.hpp).
-  p.has_modes = p.has_segments && scene.article.model == ArticleModel::Planar && scene.article.closures.empty() &&
-                !(scene.shaker && scene.shaker->program);
+  p.has_modes = p.has_segments && modalLinksAllowed(scene);
   const ArticleSpec article = scene.article;
   p.also_scores = [article](const std::string& name, std::string& error) {
     return isStationName(name) && parseStation(name, article, error).has_value();
@@ -51,6 +52,7 @@ TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
   p.run = [scene](const SimulationSpec& spec, const RunFidelity& f, const std::function<void(double)>& progress) {
     ArticleScene s = scene;
     s.simulation = spec;
+    s.simulation.fidelity = SimulationSpec::Fidelity::Segments;  // the run's fidelity is f's, as named
     if (f.segments > 0) overrideSegments(s, f.segments);
     for (auto& l : s.article.links) l.modes = l.rigid ? 0 : std::min(f.modes, l.segments);
     return simulate(s, progress);

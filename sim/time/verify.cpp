@@ -71,11 +71,13 @@ RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spe
   SimulationSpec tight = spec;
   tight.accuracy = spec.accuracy / 10;
   tight.absolute_tolerance = spec.absolute_tolerance / 10;
+  tight.modal_refinement = spec.modal_refinement + 1;  // links in modal coordinates: twice the modes
   const auto start = std::chrono::steady_clock::now();
   const SimulationResult companion = rerun(tight);
   RunVerification v;
   v.done = true;
   v.companion_accuracy = tight.accuracy;
+  v.companion_more_modes = !run.modal_links.empty();
   v.companion_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const ScoredDistance d = scoredDistance(run.record, companion.record, spec.score_points);
   v.estimated_error_m = d.distance_m;
@@ -91,11 +93,14 @@ bool verificationMet(const RunVerification& v) { return v.done && kVerifySafetyF
 
 std::string verificationWarning(const RunVerification& v) {
   if (!v.done || verificationMet(v)) return {};
-  return strf("the run's estimated error %.3g m (at %s, t = %.4g s, against the same run at accuracy %.1e) times the safety "
-              "factor %g exceeds the %s %.3g m%s: tighten the accuracy",
-              v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy, kVerifySafetyFactor,
+  return strf("the run's estimated error %.3g m (at %s, t = %.4g s, against the same run at accuracy %.1e%s) times the "
+              "safety factor %g exceeds the %s %.3g m%s: tighten the accuracy%s",
+              v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy,
+              v.companion_more_modes ? " with twice the modes per link" : "", kVerifySafetyFactor,
               v.target_is_default ? "target (1 % of the scored motion)" : "target", v.target_m,
-              v.estimated_error_m <= v.target_m ? " (the estimate alone is within it, its uncertainty is not)" : "");
+              v.estimated_error_m <= v.target_m ? " (the estimate alone is within it, its uncertainty is not)" : "",
+              v.companion_more_modes ? ", or keep more modes (links[].modes) or every hinge (simulation.fidelity: segments)"
+                                     : "");
 }
 
 }  // namespace mmv

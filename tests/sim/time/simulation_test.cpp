@@ -81,13 +81,18 @@ TEST(Simulation, StepsAndResultsDoNotDependOnTheSampleRate) {
   }
 }
 
-// The default scene's run (the article held at rest for 2 s) is stiff: its integrator is
-// implicit (scenes/mmv.yaml), and the steps follow the motion, none here. With the
-// explicit rk_merson it was 13 900 steps (8.8 s); the tips stay where they started.
+// The default scene's run (the article held at rest for 2 s) is stiff: the scene names
+// no integrator, and the run chooses an implicit one for the model it chooses (links in
+// their first modes: nothing moves the article; sim/time/fidelity.hpp), and the steps
+// follow the motion, none here. With the explicit rk_merson it was 13 900 steps (8.8 s);
+// the tips stay where they started.
 TEST(Simulation, DefaultSceneAtRestTakesAFewSteps) {
   const ArticleScene s = loadDefaultScene();
-  EXPECT_EQ(s.simulation.integrator, "cpodes");
+  EXPECT_EQ(s.simulation.integrator, "");
   const SimulationResult r = simulate(s);
+  EXPECT_EQ(r.integrator, "cvode_bdf");
+  EXPECT_EQ(r.modal_links.size(), 4u);
+  EXPECT_NE(r.fidelity.find("first 4 modes (no program moves the article)"), std::string::npos) << r.fidelity;
   EXPECT_LT(r.steps, 50);
   ASSERT_FALSE(r.record.scored.empty());
   for (const auto& p : r.record.scored)
