@@ -171,6 +171,7 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
 namespace {
 
 std::string fidelityName(const TargetOutcome& t, const TargetAttempt& a) {
+  if (!a.model.empty()) return strf("%s at %g, the scene's own run", a.integrator.c_str(), a.accuracy);
   const std::string segments = a.segments ? strf(", %d segments per link", a.segments) : std::string(", the scene's segments");
   return strf("%s at %g", a.integrator.c_str(), a.accuracy) + (t.has_segments ? segments : std::string()) +
          (a.modes ? strf(" in %d modes per link", a.modes) : std::string());
@@ -182,21 +183,27 @@ std::string targetText(const TargetOutcome& t) {
   std::ostringstream os;
   int measured = 0;
   for (const auto& r : t.pilot.runs) measured += r.ok;
-  os << strf("Target error %.3g m: pilot over the first %g s (target there %.3g m), %d runs measured of %zu, %.2f s\n",
-             t.target_m, t.window_s, t.window_target_m, measured, t.pilot.runs.size(), t.pilot.total_seconds);
+  const TargetAttempt& first = t.attempts.front();
+  if (!first.model.empty())
+    os << strf("Target error %.3g m: the scene's own run first (%s)%s\n", t.target_m, first.model.c_str(),
+               first.met ? ": met, no pilot" : ": missed, then the pilot");
+  if (t.window_s > 0)
+    os << strf("Target error %.3g m: pilot over the first %g s (target there %.3g m), %d runs measured of %zu, %.2f s\n",
+               t.target_m, t.window_s, t.window_target_m, measured, t.pilot.runs.size(), t.pilot.total_seconds);
   Table a({"whole_run", "run_s", "estimated_error_m", "where", "verified_against", "verification_s", "target"});
   for (const auto& r : t.attempts)
     a.add({fidelityName(t, r), strf("%.3g", r.run_seconds), strf("%.3g", r.estimated_error_m),
            strf("%s at %.4g s", r.point.c_str(), r.at_s),
-           strf("accuracy %g", r.accuracy / 10) + (t.has_segments ? ", the scene's segments, every hinge" : ""),
+           strf("accuracy %g", r.accuracy / 10) +
+               (r.companion_more_modes ? ", twice the modes" : !r.model.empty() ? ", the same model" : t.has_segments ? ", the scene's segments, every hinge" : ""),
            r.companion_reused ? std::string("(the same)") : strf("%.3g", r.companion_seconds),
            r.met ? "met" : !r.energy_ok ? "missed: energy balance" : "missed"});
   os << a.text();
   const TargetAttempt& last = t.attempts.back();
   os << strf("Chosen: %s; estimated error %.3g m within half the %.3g m target (the estimate's margin), energy balance held; cost %.2f s in "
-             "all (pilot %.2f s)\n",
+             "all (pilot %.2f s), %.1f x the run chosen\n",
              fidelityName(t, last).c_str(), last.estimated_error_m, t.target_m,
-             t.total_seconds, t.pilot.total_seconds);
+             t.total_seconds, t.pilot.total_seconds, last.run_seconds > 0 ? t.total_seconds / last.run_seconds : 0.0);
   return os.str();
 }
 
@@ -210,12 +217,13 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
     if (r.ok) one.update({{"error_m", r.error_m}, {"wall_time_s", r.seconds}, {"energy_balance_ok", r.energy_ok}});
     runs.push_back(one);
   }
-  j["pilot"] = {{"window_s", t.window_s},
+  if (t.window_s > 0) j["pilot"] = {{"window_s", t.window_s},
                 {"window_target_m", t.window_target_m},
                 {"reference_uncertainty_m", t.pilot.reference_uncertainty_m},
                 {"reference_wall_time_s", t.pilot.reference_seconds},
                 {"wall_time_s", t.pilot.total_seconds},
                 {"runs", runs}};
+  else j["pilot"] = nullptr;  // the scene's own model met the target first
   nlohmann::ordered_json attempts = nlohmann::ordered_json::array();
   for (const auto& r : t.attempts)
     attempts.push_back({{"integrator", r.integrator},
@@ -229,9 +237,11 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
                         {"companion_accuracy", r.accuracy / 10},
                         {"companion_wall_time_s", r.companion_seconds},
                         {"energy_balance_ok", r.energy_ok},
-                        {"met", r.met}});
+                        {"met", r.met},
+                        {"model", r.model.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.model)}});
   j["attempts"] = attempts;
   j["total_wall_time_s"] = t.total_seconds;
+  j["cost_over_chosen_run"] = t.attempts.back().run_seconds > 0 ? t.total_seconds / t.attempts.back().run_seconds : 0.0;
   return j;
 }
 

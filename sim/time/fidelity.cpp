@@ -94,6 +94,10 @@ FidelityChoice chooseFidelity(ArticleScene& scene) {
     c.reason = "every hinge its own coordinate (the segment model): " + why;
     return c;
   };
+  if (std::all_of(links.begin(), links.end(), [](const LinkSpec& l) { return l.rigid; })) {
+    c.reason = "rigid links only (no hinges to carry)";
+    return c;
+  }
   std::string why;
   if (!modalLinksAllowed(scene, &why)) return segments(why + ", which links in modal coordinates cannot carry");
   if (!spec.integrator.empty() && !integratorInfo(spec.integrator).runs_modal_links)

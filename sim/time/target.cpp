@@ -15,6 +15,11 @@ namespace {
 constexpr double kWindowFraction = 0.2;  ///< of the run, the pilot's window
 constexpr double kMinWindowS = 1.0;
 constexpr double kTightestAccuracy = 1e-12;
+/// Step 0's ladder: when the scene's own run misses by at most this times E, its
+/// companion (already paid for) becomes the run, at most kOwnLadderSteps times; further
+/// off, the pilot looks for another integrator.
+constexpr double kOwnLadderReach = 10;
+constexpr int kOwnLadderSteps = 2;
 /// A run meets E when its estimate is within E / 2: the companion's own error is not
 /// always a tenth of the run's (CVODE Adams on the 170 deg pendulum at 1e-7: estimate
 /// 6.9e-5 m against a true 1.07e-4 m), and the estimate is within a factor of two of the
@@ -49,6 +54,7 @@ class TargetRunner {
   }
 
   TargetOutcome run() {
+    if (sceneDefault()) return out_;
     const Fidelity first = pilot();
     chosen_accuracy_ = first.accuracy;
     Fidelity run = first;
@@ -106,6 +112,64 @@ class TargetRunner {
   /// The same integrator at a 10x tighter tolerance, at the scene's segments with every
   /// hinge its own coordinate: what a reduced model leaves out is in the estimate.
   static Fidelity tighter(const Fidelity& f) { return {f.integrator, f.accuracy / 10, 0, 0}; }
+
+  /// Step 0: the scene's own model over the whole run, held to a companion with twice its
+  /// modes at a 10x tighter tolerance; true when it meets E (out_ then holds it).
+  bool sceneDefault() {
+    if (!problem_.run_default || !o_.scene_run_first) return false;
+    SimulationSpec spec = problem_.simulation;
+    spec.integrator = o_.integrators.empty() ? problem_.default_integrator : o_.integrators.front();
+    TradeOptions named;
+    named.points = o_.points;
+    points_ = scoredPoints(problem_, named);
+    spec.score_points = points_;
+    const auto run = [&](const SimulationSpec& sp, int refinement, const std::string& what) {
+      checkBudget("the " + what);
+      try {
+        return problem_.run_default(sp, refinement, [&](double fraction) {
+          if (stage_) stage_(what, fraction);
+          if (o_.time_budget_s > 0 && since(t0_) > o_.time_budget_s) throw RunBudgetExceeded(fraction, since(t0_), true);
+        });
+      } catch (const RunBudgetExceeded&) {
+        checkBudget("the " + what);
+        throw;
+      }
+    };
+    // The scene's own run, then (when it misses by less than kOwnLadderReach) its
+    // companion as the run, already paid for, against one 10x tighter again.
+    SimulationResult result = run(spec, 0, "run: the scene's own model");
+    for (int refinement = 0; refinement <= kOwnLadderSteps; ++refinement) {
+      SimulationSpec tight = spec;
+      tight.accuracy /= 10;
+      tight.absolute_tolerance /= 10;
+      SimulationResult companion = run(tight, refinement + 1, "verification: the scene's own model, 10x tighter");
+      TargetAttempt a;
+      a.integrator = spec.integrator;
+      a.accuracy = spec.accuracy;
+      a.model = result.fidelity;
+      a.companion_more_modes = result.modal_links.size() > 0;
+      a.run_seconds = result.wall_seconds;
+      a.companion_seconds = companion.wall_seconds;
+      const ScoredDistance d = scoredDistance(result.record, companion.record, points_);
+      a.estimated_error_m = d.distance_m;
+      a.at_s = d.at_s;
+      a.point = d.point;
+      a.energy_ok = energyBalanceWarning(result).empty();
+      a.met = d.distance_m <= kEstimateMargin * o_.target_m && a.energy_ok;
+      out_.attempts.push_back(a);
+      if (a.met) {
+        result.verification = verification(a, {spec.integrator, tight.accuracy, 0, 0}, companion);
+        result.verification.companion_more_modes = a.companion_more_modes;
+        out_.result = std::move(result);
+        out_.total_seconds = since(t0_);
+        return true;
+      }
+      if (d.distance_m > kOwnLadderReach * o_.target_m || tight.accuracy / 10 < kTightestAccuracy * (1 - 1e-9)) break;
+      spec = tight;
+      result = std::move(companion);
+    }
+    return false;
+  }
 
   /// The window's trade, and its cheapest run within the window's target.
   Fidelity pilot() {

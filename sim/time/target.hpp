@@ -4,6 +4,12 @@
 /// points, runs it, verifies it and reports what it chose and what it cost, or says
 /// that E cannot be met within the time budget.
 ///
+///  0. The scene's own run first (its fidelity, sim/time/fidelity.hpp, and integrator;
+///     `--integrator` names another): the whole run and a companion at a 10x tighter
+///     tolerance, links in modal coordinates with twice their modes (as `--verify`).
+///     Met as below, it is the choice, for 2-4x its own cost. Missed by less than 10x E,
+///     the companion (paid for) becomes the run against one 10x tighter again, twice at
+///     most; else the steps below follow.
 ///  1. Pilot: a trade (sim/time/trade.hpp) on the run's first `window` seconds (20 %
 ///     of the run, at least 1 s, at most the run), every integrator from its loosest
 ///     tolerance, runs that pass the cheapest one within the target cut short, then
@@ -43,6 +49,7 @@ struct TargetOptions {
   std::vector<std::string> points;  ///< scored points; empty: the scene's score_points, else every tip.
   std::vector<std::string> integrators;  ///< candidates; empty: TradeOptions' default list.
   double time_budget_s = 0;         ///< > 0: the whole choice, run and verification within it.
+  bool scene_run_first = true;      ///< step 0 below (false: the pilot at once)
 };
 
 /// One whole-duration run and its verification.
@@ -57,6 +64,10 @@ struct TargetAttempt {
   std::string point;
   bool energy_ok = true;  ///< the run's energy balance held at every sample (no energyBalanceWarning)
   bool met = false;       ///< the estimate within E / 2 and the energy balance held
+  /// Non-empty: the scene's own run (step 0 above) and its model (FidelityChoice::reason),
+  /// verified at a 10x tighter tolerance (links in modal coordinates: twice the modes).
+  std::string model;
+  bool companion_more_modes = false;  ///< its companion kept twice the modes of its links in modal coordinates
 };
 
 struct TargetOutcome {

@@ -57,12 +57,19 @@ TradeProblem articleTradeProblem(const ArticleScene& base, double duration) {
     for (auto& l : s.article.links) l.modes = l.rigid ? 0 : std::min(f.modes, l.segments);
     return simulate(s, progress);
   };
+  ArticleScene probe = scene;
+  resolveFidelity(probe);
+  p.default_integrator = probe.simulation.integrator;
+  p.run_default = [scene](const SimulationSpec& spec, int refinement, const std::function<void(double)>& progress) {
+    ArticleScene s = scene;
+    s.simulation = spec;
+    s.simulation.fidelity = scene.simulation.fidelity;
+    s.simulation.modal_refinement = refinement;
+    return simulate(s, progress);
+  };
   return p;
 }
 
-namespace {
-
-/// The points scored: the options', else the scene's `score_points`, each checked.
 std::vector<std::string> scoredPoints(const TradeProblem& problem, const TradeOptions& options) {
   const SimulationSpec& spec0 = problem.simulation;
   const bool from_scene = options.points.empty() && !spec0.score_points.empty();
@@ -81,6 +88,8 @@ std::vector<std::string> scoredPoints(const TradeProblem& problem, const TradeOp
   }
   return points;
 }
+
+namespace {
 
 /// One trade: the references, then every run measured, skipped or cut (trade.hpp).
 class TradeRunner {

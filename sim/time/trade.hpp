@@ -147,6 +147,12 @@ struct TradeProblem {
   std::function<SimulationResult(const SimulationSpec& spec, const RunFidelity& fidelity,
                                  const std::function<void(double)>& progress)>
       run;
+  /// The scene's own run (its fidelity, sim/time/fidelity.hpp) with `spec`, links in modal
+  /// coordinates keeping 2^`refinement` times their modes; empty where there is none to
+  /// try (the isolator). The contract tries it first (sim/time/target.hpp).
+  std::function<SimulationResult(const SimulationSpec& spec, int refinement, const std::function<void(double)>& progress)>
+      run_default;
+  std::string default_integrator;   ///< the integrator the scene's run uses (chosen when it names none)
 };
 
 /// A problem's common part: the scene's name and simulation settings, with `duration`
@@ -155,6 +161,11 @@ TradeProblem tradeProblemBase(const std::string& scene_name, SimulationSpec simu
 
 /// The article's trade problem; `duration` > 0 overrides the scene's.
 TradeProblem articleTradeProblem(const ArticleScene& scene, double duration = 0);
+
+/// The points a trade or the contract scores: `options.points`, else the scene's
+/// `score_points` (empty: every one), each checked (SceneError at the scene's key,
+/// OptionError for --points).
+std::vector<std::string> scoredPoints(const TradeProblem& problem, const TradeOptions& options);
 
 /// Throws, before running anything, when a scored point is not one the problem
 /// scores: SceneError at simulation.score_points for the scene's, UsageError for

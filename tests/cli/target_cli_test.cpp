@@ -50,11 +50,23 @@ TEST_F(Cli, SimulateTargetErrorChoosesRunsAndVerifies) {
   EXPECT_EQ(last["point"], "link3a.tip");
   EXPECT_EQ(j["integrator"], last["integrator"]);  // the run reported is the one chosen
   EXPECT_EQ(j["verification"]["target"], "given");
-  EXPECT_GT(t["pilot"]["runs"].size(), 7u);
+  // The scene's own run (every hinge: its trapezoidal slew) met it first: no pilot.
+  EXPECT_TRUE(t["pilot"].is_null());
+  EXPECT_EQ(t["attempts"].size(), 1u);
+  EXPECT_NE(last["model"].get<std::string>().find("trapezoidal move"), std::string::npos) << last["model"];
+  EXPECT_GT(t["cost_over_chosen_run"].get<double>(), 1.0);
   const Result text = run("simulate " + scene + " --segments 2 --duration 1 --target-error 1e-4 --points link3a.tip");
   ASSERT_EQ(text.code, 0) << text.err;
   EXPECT_NE(text.out.find("Chosen: "), std::string::npos) << text.out;
-  EXPECT_NE(text.out.find("Target error 0.0001 m: pilot over the first 1 s"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("Target error 0.0001 m: the scene's own run first (every hinge"), std::string::npos) << text.out;
+  // A scene whose own run misses (at 1e-3): the pilot follows.
+  const Result loose = run("simulate " + scene +
+                           " --segments 2 --duration 1 --target-error 1e-4 --points link3a.tip --json --set "
+                           "simulation.accuracy=1e-3");
+  ASSERT_EQ(loose.code, 0) << loose.err;
+  const nlohmann::json l = nlohmann::json::parse(loose.out).at("target_error");
+  EXPECT_FALSE(l["attempts"].front()["met"].get<bool>());
+  EXPECT_GT(l["pilot"]["runs"].size(), 7u);
 
   const Result accuracy = run("simulate " + scene + " --target-error 1e-4 --accuracy 1e-6");
   EXPECT_EQ(accuracy.code, 64);
