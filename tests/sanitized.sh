@@ -31,10 +31,13 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 #   SegmentsForTarget.TheDefaultArticleMeetsAFineReference   a fine-mesh reference (Converge.*)
 #   readback.report_page_in_a_browser   Chromium loading and printing two report pages
 #                               (the reports themselves: Cli.Report*)
+#   Fidelity.TheDefaultRunMeetsItsStatedAccuracy...   a segment-model reference run
+#                               (the modal default and its verification:
+#                               TargetError.TheScenesOwnModalRunIsVerifiedAgainstTwiceItsModes)
 LONG='^cluster\.|^Progress\.EveryVerbNamesItsStageWhenItRunsLong$|^Signals\.|^Cli\.KilledRunsLeaveNoPartialFile$'
 LONG+='|^Cli\.SweepKilledAtRandomMomentsResumesToTheSameFile$|^Cli\.FrfTargetErrorBoundsTheFrf$'
 LONG+='|^Cli\.TargetErrorMeetsItsTargetOnTheSpatialArticle$|^Update\.NoisyFrequenciesLeaveTheTruthInsideTheIntervals$'
 LONG+='|^Extremes\.LongFreeRunEnergyDrift$|^SegmentsForTarget\.TheDefaultArticleMeetsAFineReference$'
-LONG+='|^readback\.report_page_in_a_browser$'
+LONG+='|^readback\.report_page_in_a_browser$|^Fidelity\.TheDefaultRunMeetsItsStatedAccuracyAndVerifySeesTheModesLeftOut$'
 ctest --test-dir build-san --output-on-failure -j"$(nproc)" --timeout 900 -E "$LONG"
 

@@ -67,21 +67,7 @@ class TargetRunner {
       const bool reused = verified_by_tight;
       if (!verified_by_tight) tight = wholeRun(companion, "verification");
       verified_by_tight = true;
-      TargetAttempt a;
-      a.integrator = run.integrator;
-      a.accuracy = run.accuracy;
-      a.segments = run.segments;
-      a.modes = run.modes;
-      a.run_seconds = result.wall_seconds;
-      a.companion_seconds = reused ? 0.0 : tight.wall_seconds;
-      a.companion_reused = reused;
-      const ScoredDistance d = scoredDistance(result.record, tight.record, points_);
-      a.estimated_error_m = d.distance_m;
-      a.at_s = d.at_s;
-      a.point = d.point;
-      a.energy_ok = energyBalanceWarning(result).empty();
-      a.met = d.distance_m <= kEstimateMargin * o_.target_m && a.energy_ok;
-      out_.attempts.push_back(a);
+      TargetAttempt a = measure(run, result, tight, reused);
       if (a.met) {
         result.verification = verification(a, companion, tight);
         out_.result = std::move(result);
@@ -113,6 +99,30 @@ class TargetRunner {
   /// hinge its own coordinate: what a reduced model leaves out is in the estimate.
   static Fidelity tighter(const Fidelity& f) { return {f.integrator, f.accuracy / 10, 0, 0}; }
 
+  /// The attempt `result` at `f` makes against `companion` (its run reused when
+  /// `reused`), recorded; `model` non-empty for the scene's own run.
+  TargetAttempt measure(const Fidelity& f, const SimulationResult& result, const SimulationResult& companion, bool reused,
+                        const std::string& model = {}) {
+    TargetAttempt a;
+    a.integrator = f.integrator;
+    a.accuracy = f.accuracy;
+    a.segments = f.segments;
+    a.modes = f.modes;
+    a.model = model;
+    a.companion_more_modes = !model.empty() && !result.modal_links.empty();
+    a.run_seconds = result.wall_seconds;
+    a.companion_seconds = reused ? 0.0 : companion.wall_seconds;
+    a.companion_reused = reused;
+    const ScoredDistance d = scoredDistance(result.record, companion.record, points_);
+    a.estimated_error_m = d.distance_m;
+    a.at_s = d.at_s;
+    a.point = d.point;
+    a.energy_ok = energyBalanceWarning(result).empty();
+    a.met = d.distance_m <= kEstimateMargin * o_.target_m && a.energy_ok;
+    out_.attempts.push_back(a);
+    return a;
+  }
+
   /// Step 0: the scene's own model over the whole run, held to a companion with twice its
   /// modes at a 10x tighter tolerance; true when it meets E (out_ then holds it).
   bool sceneDefault() {
@@ -143,20 +153,7 @@ class TargetRunner {
       tight.accuracy /= 10;
       tight.absolute_tolerance /= 10;
       SimulationResult companion = run(tight, refinement + 1, "verification: the scene's own model, 10x tighter");
-      TargetAttempt a;
-      a.integrator = spec.integrator;
-      a.accuracy = spec.accuracy;
-      a.model = result.fidelity;
-      a.companion_more_modes = result.modal_links.size() > 0;
-      a.run_seconds = result.wall_seconds;
-      a.companion_seconds = companion.wall_seconds;
-      const ScoredDistance d = scoredDistance(result.record, companion.record, points_);
-      a.estimated_error_m = d.distance_m;
-      a.at_s = d.at_s;
-      a.point = d.point;
-      a.energy_ok = energyBalanceWarning(result).empty();
-      a.met = d.distance_m <= kEstimateMargin * o_.target_m && a.energy_ok;
-      out_.attempts.push_back(a);
+      TargetAttempt a = measure({spec.integrator, spec.accuracy, 0, 0}, result, companion, false, result.fidelity);
       if (a.met) {
         result.verification = verification(a, {spec.integrator, tight.accuracy, 0, 0}, companion);
         result.verification.companion_more_modes = a.companion_more_modes;
@@ -164,7 +161,7 @@ class TargetRunner {
         out_.total_seconds = since(t0_);
         return true;
       }
-      if (d.distance_m > kOwnLadderReach * o_.target_m || tight.accuracy / 10 < kTightestAccuracy * (1 - 1e-9)) break;
+      if (a.estimated_error_m > kOwnLadderReach * o_.target_m || tight.accuracy / 10 < kTightestAccuracy * (1 - 1e-9)) break;
       spec = tight;
       result = std::move(companion);
     }

@@ -90,4 +90,20 @@ inline ArticleScene chainScene(int n, double total_length, double mass_per_lengt
   return s;
 }
 
+/// The default article (as `mmvlab scene` writes it: no integrator or fidelity named) at
+/// `segments` per link on the base table under a 0.5-10 Hz random program of 1 mm RMS:
+/// issue 37's user scene (169 s as every hinge under CPodes), `duration` s of it.
+inline ArticleScene templateOnTheTable(int segments, double duration) {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, segments);
+  s.article.base.type = BaseType::Table;
+  s.article.base.table_mass = 100;
+  TableMotion m;
+  m.type = TableMotion::Type::Random;
+  m.rms = 0.001, m.from_hz = 0.5, m.to_hz = 10, m.duration = 10, m.seed = 1;
+  s.article.base.motion = m;
+  s.simulation.duration = duration;
+  return s;
+}
+
 }  // namespace mmv::testing

@@ -11,27 +11,14 @@
 #include "facility/slews.hpp"
 #include "sim/time/simulation.hpp"
 #include "sim/time/verify.hpp"
+#include "support/scenes.hpp"
 
 namespace mmv {
 namespace {
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-/// The default article (as `mmvlab scene` writes it) on the base table under a 0.5-10 Hz
-/// random program: the user's scene of issue 37 (298 s as the template's segments under
-/// CPodes; 169 s on this machine before the default fidelity).
-ArticleScene userTableScene(int segments) {
-  ArticleScene s = loadDefaultScene();
-  overrideSegments(s, segments);
-  s.article.base.type = BaseType::Table;
-  s.article.base.table_mass = 100;
-  TableMotion m;
-  m.type = TableMotion::Type::Random;
-  m.rms = 0.001, m.from_hz = 0.5, m.to_hz = 10, m.duration = 10, m.seed = 1;
-  s.article.base.motion = m;
-  s.simulation.duration = 2;
-  return s;
-}
+ArticleScene userTableScene(int segments) { return testing::templateOnTheTable(segments, 2.0); }
 
 TEST(Fidelity, AFileThatNamesNeitherLeavesBothToTheRun) {
   const ArticleScene s = loadDefaultScene();

@@ -141,21 +141,32 @@ TEST(Simulation, LooseToleranceOnAPendulumIsFlaggedByThePerSampleEnergyCheck) {
   EXPECT_TRUE(energyBalanceWarning(tight).empty()) << energyBalanceWarning(tight);
 }
 
+/// The tests' slender 0.5 m beam.
+testing::Beam halfMetreBeam() {
+  testing::Beam beam;
+  beam.length = 0.5;
+  beam.second_moment = 2e-10;
+  return beam;
+}
+
+/// That beam hanging from the table in `segments`, hinge dampers c = beta k.
+ArticleScene dampedBeamOnTheTable(int segments, double gravity, double beta) {
+  ArticleScene s = testing::cantileverScene(halfMetreBeam(), segments, gravity, -90.0);
+  s.article.base.type = BaseType::Table;
+  DampingSpec d;
+  d.kind = DampingSpec::Kind::HingeViscous;
+  d.hinge_beta = beta;
+  s.damping = d;
+  return s;
+}
+
 // The energy books integrate the table's work and the hinge dampers' dissipation by
 // Simpson's rule with an interpolated midpoint: a 10 Hz table program sampled at 200/s
 // (the power at 20 Hz, 10 samples a period) gives the work and dissipation of a 4000/s
 // run to 1e-4, and its balance closes. The trapezoid on the samples alone was 3 % off
 // (its (w h)^2 / 12) and warned "not accurate" whatever the tolerance.
 TEST(Simulation, TheEnergyBooksDoNotDependOnTheSampleRate) {
-  testing::Beam beam;
-  beam.length = 0.5;
-  beam.second_moment = 2e-10;
-  ArticleScene s = testing::cantileverScene(beam, 2, 9.81, -90.0);
-  s.article.base.type = BaseType::Table;
-  DampingSpec d;
-  d.kind = DampingSpec::Kind::HingeViscous;
-  d.hinge_beta = 0.002;
-  s.damping = d;
+  ArticleScene s = dampedBeamOnTheTable(2, 9.81, 0.002);
   s.article.base.motion = TableMotion::sine(1e-3, 10.0);
   s.simulation.from_equilibrium = true;
   s.simulation.duration = 1.0;
@@ -230,15 +241,9 @@ TEST(Simulation, RigidTwoLinkSlewTorquesMatchInverseDynamics) {
 // near and above resonance: amplitude and phase within 1e-3 (the transient has decayed
 // to below 1e-5 in the settling time).
 TEST(Simulation, OneDofOnTheTableMatchesTheAnalyticTransmissibility) {
-  testing::Beam beam;
-  beam.length = 0.5;
-  beam.second_moment = 2e-10;
-  ArticleScene s = testing::cantileverScene(beam, 1, 0.0, -90.0);
-  s.article.base.type = BaseType::Table;
-  DampingSpec d;
-  d.kind = DampingSpec::Kind::HingeViscous;
-  d.hinge_beta = 0.01;
-  s.damping = d;
+  const testing::Beam beam = halfMetreBeam();
+  ArticleScene s = dampedBeamOnTheTable(1, 0.0, 0.01);
+  const DampingSpec& d = *s.damping;
   const double l = beam.length / 2, m = beam.massPerLength() * l, Ih = m * l * l / 3;
   const double k = beam.bendingStiffness() / beam.length, c = d.hinge_beta * k;
   const double fn = std::sqrt(k / Ih) / (2 * M_PI);

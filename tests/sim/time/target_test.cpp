@@ -158,14 +158,7 @@ TEST(TargetError, TheScenesOwnRunIsTriedFirstAndKeptWhenItMeetsTheTarget) {
 // modes; within 1e-3 m it is kept, and its true error against the segment model at
 // 1e-9 is within the target.
 TEST(TargetError, TheScenesOwnModalRunIsVerifiedAgainstTwiceItsModes) {
-  ArticleScene s = loadDefaultScene();
-  overrideSegments(s, 8);
-  s.article.base.type = BaseType::Table;
-  TableMotion m;
-  m.type = TableMotion::Type::Random;
-  m.rms = 0.001, m.from_hz = 0.5, m.to_hz = 10, m.duration = 10, m.seed = 1;
-  s.article.base.motion = m;
-  s.simulation.duration = 1.0;
+  const ArticleScene s = testing::templateOnTheTable(8, 1.0);
   TargetOptions o;
   o.target_m = 1e-3;
   const TradeProblem problem = articleTradeProblem(s);
