@@ -96,6 +96,19 @@ TEST(SceneFlags, AnIsolatorRefusesThemByName) {
   g.gravity_label = "no_gravity=True";
   EXPECT_THROW(loadSceneFile(hamsas, {}, g), UsageError);
   EXPECT_NO_THROW(loadSceneFile(hamsas, {}, {}));
+  // simulation.fidelity (docs/scene-format.md: article scenes only) is an error at its key,
+  // not a setting the isolator's run would ignore; the article takes it.
+  try {
+    loadSceneFile(hamsas, {"simulation.fidelity=segments"});
+    ADD_FAILURE() << "simulation.fidelity accepted on HAM-SAS";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("simulation.fidelity chooses how an article's links are carried; the isolator has "
+                                         "none"),
+              std::string::npos)
+        << e.what();
+  }
+  const Scene article = loadSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv.yaml", {"simulation.fidelity=segments"});
+  EXPECT_EQ(std::get<ArticleScene>(article).simulation.fidelity, SimulationSpec::Fidelity::Segments);
 }
 
 }  // namespace
