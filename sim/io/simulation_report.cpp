@@ -197,7 +197,7 @@ std::string targetText(const TargetOutcome& t) {
            strf("accuracy %g", r.accuracy / 10) +
                (r.companion_more_modes ? ", twice the modes" : !r.model.empty() ? ", the same model" : t.has_segments ? ", the scene's segments, every hinge" : ""),
            r.companion_reused ? std::string("(the same)") : strf("%.3g", r.companion_seconds),
-           r.met ? "met" : !r.energy_ok ? "missed: energy balance" : "missed"});
+           r.met ? "met" : r.failed ? "failed" : !r.energy_ok ? "missed: energy balance" : "missed"});
   os << a.text();
   const TargetAttempt& last = t.attempts.back();
   os << strf("Chosen: %s; estimated error %.3g m within half the %.3g m target (the estimate's margin), energy balance held; cost %.2f s in "
@@ -238,6 +238,7 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t) {
                         {"companion_wall_time_s", r.companion_seconds},
                         {"energy_balance_ok", r.energy_ok},
                         {"met", r.met},
+                        {"failed", r.failed},
                         {"model", r.model.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.model)}});
   j["attempts"] = attempts;
   j["total_wall_time_s"] = t.total_seconds;

@@ -143,8 +143,30 @@ class TargetRunner {
       } catch (const RunBudgetExceeded&) {
         checkBudget("the " + what);
         throw;
+      } catch (const NumericalError& e) {  // the integrator gave up: the pilot may find one that does not
+        throw OwnRunFailed{e.what()};
       }
     };
+    try {
+      return ownLadder(spec, run);
+    } catch (const OwnRunFailed& f) {
+      TargetAttempt a;
+      a.integrator = spec.integrator;
+      a.accuracy = spec.accuracy;
+      a.model = "the scene's own run failed: " + f.what;
+      a.failed = true;
+      out_.attempts.push_back(a);
+      return false;
+    }
+  }
+
+  struct OwnRunFailed {
+    std::string what;
+  };
+
+  /// Step 0's runs: the scene's own, then its companions as runs (see kOwnLadderReach).
+  template <class Run>
+  bool ownLadder(SimulationSpec spec, const Run& run) {
     // The scene's own run, then (when it misses by less than kOwnLadderReach) its
     // companion as the run, already paid for, against one 10x tighter again.
     SimulationResult result = run(spec, 0, "run: the scene's own model");

@@ -9,7 +9,7 @@
 ///     tolerance, links in modal coordinates with twice their modes (as `--verify`).
 ///     Met as below, it is the choice, for 2-4x its own cost. Missed by less than 10x E,
 ///     the companion (paid for) becomes the run against one 10x tighter again, twice at
-///     most; else the steps below follow.
+///     most; else (or when the run fails) the steps below follow.
 ///  1. Pilot: a trade (sim/time/trade.hpp) on the run's first `window` seconds (20 %
 ///     of the run, at least 1 s, at most the run), every integrator from its loosest
 ///     tolerance, runs that pass the cheapest one within the target cut short, then
@@ -68,6 +68,7 @@ struct TargetAttempt {
   /// verified at a 10x tighter tolerance (links in modal coordinates: twice the modes).
   std::string model;
   bool companion_more_modes = false;  ///< its companion kept twice the modes of its links in modal coordinates
+  bool failed = false;  ///< the run stopped (its integrator gave up; `model` says why): the pilot follows
 };
 
 struct TargetOutcome {

@@ -84,6 +84,15 @@ TEST_F(Cli, SimulateTargetErrorChoosesRunsAndVerifies) {
   EXPECT_TRUE(budget.out.empty());
 }
 
+// With no integrator named (the default scene), an absolute tolerance is taken: the run
+// chooses an integrator that has one (with a Simbody integrator named it is refused:
+// Cli.SimulateBadInput) and says so on its Model line.
+TEST_F(Cli, SimulateChoosesAnIntegratorThatTakesTheAbsoluteTolerance) {
+  const Result chosen = run("simulate --duration 0.1 --set simulation.absolute_tolerance=1e-9");
+  EXPECT_EQ(chosen.code, 0) << chosen.err;
+  EXPECT_NE(chosen.out.find("under cvode_bdf (the scene names no integrator)"), std::string::npos) << chosen.out;
+}
+
 // modes --target-error: the segments chosen, the ladder that chose them, and the modes
 // reported at that count; what it cannot hold is refused.
 TEST_F(Cli, ModesTargetErrorChoosesTheSegments) {

@@ -230,6 +230,44 @@ TEST(TargetError, WhenTheScenesOwnRunMissesThePilotFollows) {
   EXPECT_LE(trueError(s, t, {}), 1e-4);
 }
 
+// A scene's own run whose integrator gives up (a stub: its run_default throws) does not
+// end the contract: the attempt is recorded as failed and the pilot finds a run.
+TEST(TargetError, WhenTheScenesOwnRunFailsThePilotFollows) {
+  TradeProblem p = tradeProblemBase("failing stub", SimulationSpec{}, 2.0);
+  p.simulation.sample_rate_hz = 10;
+  p.scorable = {"p"};
+  p.scorable_kind = "point";
+  p.has_segments = false;
+  p.default_integrator = "cvode_bdf";
+  p.run = [](const SimulationSpec& s, const RunFidelity&, const std::function<void(double)>&) {
+    SimulationResult r;
+    r.integrator = s.integrator;
+    r.accuracy = s.accuracy;
+    r.record.columns = {"time_s", "p_x_m"};
+    r.record.scored = {{"p", {1}}};
+    for (int k = 0; k <= static_cast<int>(std::lround(s.duration * 10)); ++k)
+      r.record.rows.push_back({0.1 * k, 0.1 * k + (s.accuracy < 1e-9 ? 0.0 : 0.01 * s.accuracy)});
+    r.wall_seconds = 1.0 - 0.05 * std::log10(s.accuracy);
+    return r;
+  };
+  int own_runs = 0;
+  p.run_default = [&own_runs](const SimulationSpec&, int, const std::function<void(double)>&) -> SimulationResult {
+    ++own_runs;
+    throw NumericalError("CV_CONV_FAILURE at t = 0.3 s");
+  };
+  TargetOptions o;
+  o.target_m = 1e-4;
+  o.integrators = {"cvode_bdf"};
+  const TargetOutcome t = runToTarget(p, o);
+  EXPECT_EQ(own_runs, 1);
+  ASSERT_GE(t.attempts.size(), 2u);
+  EXPECT_TRUE(t.attempts.front().failed);
+  EXPECT_FALSE(t.attempts.front().met);
+  EXPECT_NE(t.attempts.front().model.find("CV_CONV_FAILURE at t = 0.3 s"), std::string::npos);
+  EXPECT_GT(t.window_s, 0.0);
+  EXPECT_TRUE(t.attempts.back().met);
+}
+
 // Modal candidates (a stub problem, 5 s, whose runs cost what the test says): K modes per
 // link leave out 5e-2 / K^4.6 m, growing as (t / 5 s)^2, so the 1 s window sees a 25th
 // of it. 1 mode (window 2e-3 m) misses the window's 2e-4 m; 2 modes (8e-5 m) come within
