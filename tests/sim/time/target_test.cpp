@@ -230,14 +230,20 @@ TEST(TargetError, WhenTheScenesOwnRunMissesThePilotFollows) {
   EXPECT_LE(trueError(s, t, {}), 1e-4);
 }
 
-// A scene's own run whose integrator gives up (a stub: its run_default throws) does not
-// end the contract: the attempt is recorded as failed and the pilot finds a run.
-TEST(TargetError, WhenTheScenesOwnRunFailsThePilotFollows) {
-  TradeProblem p = tradeProblemBase("failing stub", SimulationSpec{}, 2.0);
+/// A problem of one scored point "p" sampled at 10 Hz, no segments; its runs are the test's.
+TradeProblem stubProblem(const std::string& name, double duration) {
+  TradeProblem p = tradeProblemBase(name, SimulationSpec{}, duration);
   p.simulation.sample_rate_hz = 10;
   p.scorable = {"p"};
   p.scorable_kind = "point";
   p.has_segments = false;
+  return p;
+}
+
+// A scene's own run whose integrator gives up (a stub: its run_default throws) does not
+// end the contract: the attempt is recorded as failed and the pilot finds a run.
+TEST(TargetError, WhenTheScenesOwnRunFailsThePilotFollows) {
+  TradeProblem p = stubProblem("failing stub", 2.0);
   p.default_integrator = "cvode_bdf";
   p.run = [](const SimulationSpec& s, const RunFidelity&, const std::function<void(double)>&) {
     SimulationResult r;
@@ -275,11 +281,7 @@ TEST(TargetError, WhenTheScenesOwnRunFailsThePilotFollows) {
 // 1e-3 m target; the contract then tries 4 modes once, held to the same companion (the
 // segment model 10x tighter, not run again), and they meet it.
 TEST(TargetError, AModalRunThatMissesIsTriedWithTwiceItsModesAgainstTheSameCompanion) {
-  TradeProblem p = tradeProblemBase("modal stub", SimulationSpec{}, 5.0);
-  p.simulation.sample_rate_hz = 10;
-  p.scorable = {"p"};
-  p.scorable_kind = "point";
-  p.has_segments = false;
+  TradeProblem p = stubProblem("modal stub", 5.0);
   p.has_modes = true;
   p.finest_segments = 8;
   int segment_runs = 0;
