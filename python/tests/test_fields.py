@@ -189,7 +189,7 @@ def test_place_sensors_with_an_instrument_iterated_as_the_cli():
     assert cli.returncode == 0, cli.stderr
     assert p.json["mass_loading"] == json.loads(cli.stdout)["mass_loading"]
     assert p.json["instrument"]["mass_kg"] == 0.002
-    assert [f["key"] for f in mmvlab.fields("mass_loading_iterations")] == ["pass", "changed", "settled", "repeats"]
+    assert [f["key"] for f in mmvlab.fields("mass_loading_iterations")] == ["pass", "changed", "tie", "settled", "repeats"]
     with pytest.raises(mmvlab.UsageError, match="instrument='accelerometr'|unknown instrument 'accelerometr'"):
         mmvlab.place_sensors(scene, segments=8, count=8, instrument="accelerometr")
 

@@ -168,9 +168,9 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   } else {
     if (!r.instrument.empty())
       throw UsageError(opt("--instrument") + " applies to the article's scenes (the isolator's sensors are not scene data)");
-    if (r.iterate_loaded)
-      throw UsageError(opt("--iterate-loaded") + " applies to the article's scenes (on the isolator --sensor-mass reports the "
-                       "loading of the chosen set; its placement is not iterated on the loaded model)");
+    o.iterate_loaded = r.iterate_loaded;
+    if (r.iterate_loaded && o.sensor_mass_kg == 0)
+      throw UsageError(opt("--iterate-loaded") + ": the sensors are massless: nothing loads the isolator (give " + opt("--sensor-mass") + ")");
   }
   PlacementStudyResult s;
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {

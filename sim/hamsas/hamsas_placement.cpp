@@ -51,7 +51,10 @@ void buildHamsasTams(PlacementStudy& study, const HamsasModes& h, const std::vec
 int hamsasNode(int body, int point) { return body * 100 + point + 1; }
 
 PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,
-                                  std::vector<PlacementCandidate>& candidates, std::vector<Eigen::RowVectorXd>* readings) {
+                                  std::vector<PlacementCandidate>& candidates, std::vector<Eigen::RowVectorXd>* readings,
+                                  const SpatialSpec* points) {
+  const SpatialSpec& geometry = points ? *points : h.model;
+  MMV_DEMAND(geometry.bodies.size() == h.model.bodies.size());
   const int k = static_cast<int>(targets.size());
   PlacementProblem p;
   p.omega.resize(k);
@@ -60,15 +63,17 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNu
   std::vector<double> masses;
   const char* axes[3] = {"x", "y", "z"};
   for (std::size_t b = 1; b < h.model.bodies.size(); ++b) {
-    const SpatialBody& body = h.model.bodies[b];
+    const SpatialBody& body = geometry.bodies[b];
     const Eigen::Vector3d half = 0.5 * equivalentBox(body);
     const int r = SpatialLinearization::row(static_cast<int>(b));
     for (int c = -1; c < 8; ++c) {  // -1: the mass centre; 0..7: the box's corners
-      const Eigen::Vector3d offset = c < 0 ? Eigen::Vector3d::Zero()
+      const Eigen::Vector3d corner = c < 0 ? Eigen::Vector3d::Zero()
                                            : Eigen::Vector3d((c & 1) ? half.x() : -half.x(), (c & 2) ? half.y() : -half.y(),
                                                              (c & 4) ? half.z() : -half.z());
       const std::string name = c < 0 ? body.name + ".com" : strf("%s.corner%d", body.name.c_str(), c + 1);
-      const Eigen::Vector3d at = body.com + offset;
+      const Eigen::Vector3d at = body.com + corner;
+      // From the mass centre of `h`'s body, where its coordinates are.
+      const Eigen::Vector3d offset = at - h.model.bodies[b].com;
       // Each target mode's translation there: the body's translation plus its small rotation x offset.
       Eigen::MatrixXd u(3, k);
       for (int j = 0; j < k; ++j) {
@@ -83,7 +88,7 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNu
           reading.segment<3>(r + 3) = offset.cross(Eigen::Vector3d::Unit(a)).transpose();
           readings->push_back(std::move(reading));
         }
-        masses.push_back(body.mass / 9);
+        masses.push_back(h.model.bodies[b].mass / 9);
         if (!triaxial || a == 0) {
           PlacementCandidate cand{name, body.name, 0.0, triaxial ? "triaxial" : axes[a], at.x(), at.y(), at.z()};
           cand.node = hamsasNode(static_cast<int>(b), c);
@@ -125,8 +130,9 @@ SensorLoading hamsasSensorLoading(const HamsasModes& h, const PlacementStudy& st
   SensorLoading out;
   out.weight_in_stiffness = true;
   firstOrderLoading(study, sensor_mass_kg, out);
-  const SpatialSpec model = isolatorWithSensors(h.model, study, sensor_mass_kg);
-  ModalSolution loaded = spatialModes(linearizeSpatial(model, h.spec.ideal_joints));
+  const HamsasModes carrying = isolatorCarrying(h, study, sensor_mass_kg);
+  const SpatialSpec& model = carrying.model;
+  ModalSolution loaded = carrying.solution;
   // The loaded coordinates are each body's motion at its new mass centre c': the motion
   // at the old one c is t + w x (c - c'), so the shapes compare over the same coordinates.
   for (std::size_t b = 1; b < model.bodies.size(); ++b) {
@@ -144,7 +150,19 @@ SensorLoading hamsasSensorLoading(const HamsasModes& h, const PlacementStudy& st
   return out;
 }
 
-PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h, const PlacementOptions& o) {
+HamsasModes isolatorCarrying(const HamsasModes& h, const PlacementStudy& study, double mass) {
+  HamsasModes loaded;
+  loaded.spec = h.spec;
+  loaded.model = isolatorWithSensors(h.model, study, mass);
+  loaded.lin = linearizeSpatial(loaded.model, h.spec.ideal_joints);
+  loaded.solution = spatialModes(loaded.lin);
+  return loaded;
+}
+
+namespace {
+
+/// One placement on the isolator `h`, at the points of the bare isolator `bare`'s bodies.
+PlacementStudy placeOnIsolator(const HamsasScene& scene, const HamsasModes& h, const SpatialSpec& bare, const PlacementOptions& o) {
   PlacementStudy study;
   study.scene_name = scene.name;
   study.method = placementMethodName(o.method);
@@ -152,15 +170,32 @@ PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h
   study.target_modes = placementTargets(h.solution, o);
   for (const ModeNumber m : study.target_modes) study.target_frequencies_hz.push_back(h.solution.frequencyHz(m.index()));
   std::vector<Eigen::RowVectorXd> readings;
-  const PlacementProblem p = hamsasCandidates(h, study.target_modes, o.triaxial, study.candidates, &readings);
+  PlacementProblem p = hamsasCandidates(h, study.target_modes, o.triaxial, study.candidates, &readings, &bare);
+  keepChosenSet(o, study, p);
   // Each point's three rows are x, y and z, in that order (hamsasCandidates).
   for (std::size_t r = 0; r < p.block.size(); ++r)
     study.directions.push_back({p.block[r], std::string(1, "xyz"[r % 3]),
                                 {r % 3 == 0 ? 1.0 : 0.0, r % 3 == 1 ? 1.0 : 0.0, r % 3 == 2 ? 1.0 : 0.0}});
   choosePlacement(study, p, o, 3, "the centre and 8 corners of each of " + std::to_string(h.model.bodies.size() - 1) + " bodies");
   if (!o.tam.empty()) buildHamsasTams(study, h, p.block, readings, o.tam);
-  if (o.sensor_mass_kg > 0) study.loading = hamsasSensorLoading(h, study, o.sensor_mass_kg);
   return study;
+}
+
+}  // namespace
+
+PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h, const PlacementOptions& o) {
+  MMV_DEMAND(!o.iterate_loaded || o.sensor_mass_kg > 0);
+  const PlacementStudy bare = placeOnIsolator(scene, h, h.model, o);
+  if (o.sensor_mass_kg == 0) return bare;
+  std::vector<LoadedIteration> iterations;
+  PlacementStudy chosen = !o.iterate_loaded ? bare : placeOnLoadedModel(bare, [&](const PlacementStudy& carried, bool keep) {
+    PlacementOptions on_loaded = o;
+    if (keep) on_loaded.keep_set = chosenSet(carried);
+    return placeOnIsolator(scene, isolatorCarrying(h, carried, o.sensor_mass_kg), h.model, on_loaded);
+  }, iterations);
+  chosen.loading = hamsasSensorLoading(h, withChosenSet(bare, chosen), o.sensor_mass_kg);
+  chosen.loading->iterations = iterations;
+  return chosen;
 }
 
 }  // namespace mmv

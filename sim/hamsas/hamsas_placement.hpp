@@ -22,15 +22,14 @@ int hamsasNode(int body, int point);
 /// The candidates (one per block, appended to `candidates`, with their nodes and target
 /// shapes) and their rows of the
 /// target modes' shapes; with `readings`, each row's reading per unit free coordinate
-/// (the test-analysis models' observation rows).
+/// (the test-analysis models' observation rows). The points are the mass centres and box
+/// corners of `points`' bodies (default: `h.model`'s); given the bare isolator while `h`
+/// is the isolator loaded with sensors, they stay the same physical points while each
+/// body's mass centre, the origin of its coordinates, moves.
 PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNumber>& targets, bool triaxial,
                                   std::vector<PlacementCandidate>& candidates,
-                                  std::vector<Eigen::RowVectorXd>* readings = nullptr);
+                                  std::vector<Eigen::RowVectorXd>* readings = nullptr, const SpatialSpec* points = nullptr);
 
-/// As runPlacement for an article; `options.spacing_m` does not apply (the points are
-/// the bodies'). Throws UsageError for modes that do not exist or are not vibration
-/// modes, or a count above the candidates; NumericalError when the candidates cannot
-/// see every target mode.
 /// `model` with a point mass `mass` at each chosen point of `study` on its body: the
 /// body's mass, mass centre and inertia about it (parallel axes).
 SpatialSpec isolatorWithSensors(const SpatialSpec& model, const PlacementStudy& study, double mass);
@@ -45,6 +44,18 @@ SpatialSpec isolatorWithSensors(const SpatialSpec& model, const PlacementStudy& 
 /// hardly moves, and shows as beyond first order.
 SensorLoading hamsasSensorLoading(const HamsasModes& h, const PlacementStudy& study, double sensor_mass_kg);
 
+/// The isolator `h` with a point mass `mass` at each chosen point of `study`, linearized
+/// again at its design configuration and solved (its coordinates at the loaded bodies'
+/// mass centres).
+HamsasModes isolatorCarrying(const HamsasModes& h, const PlacementStudy& study, double mass);
+
+/// As runPlacement for an article; `options.spacing_m` does not apply (the points are
+/// the bodies'). With `options.iterate_loaded` (and a sensor mass) placed again on the
+/// isolator carrying the chosen set (isolatorCarrying) until a set carries itself, as
+/// the article's (placeOnLoadedModel): the target modes, frequencies, shapes and TAMs are
+/// then the loaded isolator's, the loading reported against the bare one. Throws
+/// UsageError for modes that do not exist or are not vibration modes, or a count above
+/// the candidates; NumericalError when the candidates cannot see every target mode.
 PlacementStudy runHamsasPlacement(const HamsasScene& scene, const HamsasModes& h, const PlacementOptions& options);
 
 }  // namespace mmv

@@ -41,7 +41,8 @@ const std::vector<Field<LoadedIteration>>& loadedIterationFields() {
   static const std::vector<Field<I>> fields{
       {"pass", "", "%d", "placement on the model carrying the previous pass's set (pass 1: the bare model's)", [](const I& i) -> Opt { return json(i.pass); }},
       {"changed", "", "%d", "chosen blocks not in the set the pass's model carried", [](const I& i) -> Opt { return json(i.changed); }},
-      {"settled", "", "%d", "no block changed: the set carries itself", [](const I& i) -> Opt { return json(i.settled); }},
+      {"tie", "", "%d", "another set exactly as informative as the one carried (Fisher determinants within 1e-6): a tie between equivalent points", [](const I& i) -> Opt { return json(i.tie); }},
+      {"settled", "", "%d", "no block changed, or a tie: the set carries itself", [](const I& i) -> Opt { return json(i.settled); }},
       {"repeats", "", "%d", "a set an earlier pass chose: the passes cycle", [](const I& i) -> Opt { return json(i.repeats); }},
   };
   // clang-format on
@@ -81,7 +82,7 @@ std::string loadingText(const SensorLoading& l) {
                                    : "");
   if (!l.iterations.empty()) {
     os << "  placed again on the model carrying them:";
-    for (const auto& i : l.iterations) os << strf(" pass %d, %d changed;", i.pass, i.changed);
+    for (const auto& i : l.iterations) os << strf(" pass %d, %d changed%s;", i.pass, i.changed, i.tie ? " (a tie: as informative as the set carried)" : "");
     const std::string outcome = iterationOutcome(l);
     os << (outcome == "settled" ? " the set carries itself (placed on the model it loads)\n"
            : outcome == "cycle"  ? "\nwarning: the passes cycle between sets (the choice turns on the sensors' masses): the last is kept\n"

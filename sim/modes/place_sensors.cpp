@@ -244,6 +244,7 @@ PlacementStudy placeOn(const ArticleScene& scene, const PlacementOptions& o, con
     if (o.count < fixed)
       throw OptionError("--count", strf(" %d: below the %ld accelerometers of the scene that --keep-scene-sensors keeps", o.count, fixed));
   }
+  keepChosenSet(o, study, p);
   p.min_separation = o.min_separation_m;
   const std::vector<Eigen::RowVectorXd>& rows = acc.rows;
   const std::vector<double>& masses = acc.masses;
@@ -258,7 +259,8 @@ PlacementStudy placeOn(const ArticleScene& scene, const PlacementOptions& o, con
   return study;
 }
 
-/// "station axis" of each chosen block, sorted: a placement's set.
+}  // namespace
+
 std::vector<std::string> chosenSet(const PlacementStudy& s) {
   std::vector<std::string> out;
   for (int b : s.result.kept_blocks) {
@@ -269,38 +271,69 @@ std::vector<std::string> chosenSet(const PlacementStudy& s) {
   return out;
 }
 
+namespace {
+
+/// The Fisher determinant det(A^T A) of the set `names` ("station axis", sorted) on
+/// `s`'s model: A's rows are each of its directions' target shapes (as placeSensors
+/// builds them: the candidate's translations along the direction), 0 when singular.
+double fisherDeterminantOf(const PlacementStudy& s, const std::vector<std::string>& names) {
+  const Eigen::Index k = static_cast<Eigen::Index>(s.target_modes.size());
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(k, k);
+  for (const PlacementDirection& d : s.directions) {
+    const PlacementCandidate& c = s.candidates[static_cast<std::size_t>(d.block)];
+    if (!std::binary_search(names.begin(), names.end(), c.station + " " + c.axis)) continue;
+    Eigen::RowVectorXd row(k);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      const auto& u = c.shape[static_cast<std::size_t>(j)];
+      row[j] = d.world[0] * u[0] + d.world[1] * u[1] + d.world[2] * u[2];
+    }
+    Q += row.transpose() * row;
+  }
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(Q).singularValues();
+  return !sv.size() || !(sv[sv.size() - 1] > 1e-14 * sv[0]) ? 0.0 : sv.prod();
+}
+
 }  // namespace
 
-PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {
-  MMV_DEMAND(!o.iterate_loaded || o.sensor_mass_kg > 0);
-  const SolvedScene s = solveScene(scene);
-  Eigen::MatrixXd shapes;
-  const PlacementStudy bare = placeOn(scene, o, s, shapes);
-  if (o.sensor_mass_kg == 0) return bare;
-  PlacementStudy chosen = bare;
-  std::vector<LoadedIteration> iterations;
-  if (o.iterate_loaded) {
-    // Placed again on the model that carries the last set, until a set carries itself.
-    std::vector<std::vector<std::string>> seen{chosenSet(bare)};
-    for (int it = 1; it <= kMaxLoadedIterations; ++it) {
-      const ProgressStage stage(strf("placement on the model with the sensors: pass %d", it));
-      const ArticleScene loaded = sceneWithSensors(scene, chosen, o.sensor_mass_kg);
-      Eigen::MatrixXd loaded_shapes;
-      PlacementStudy next = placeOn(loaded, o, solveScene(loaded), loaded_shapes);
-      const std::vector<std::string> set = chosenSet(next);
-      LoadedIteration step;
-      step.pass = it;
-      for (const auto& name : set) step.changed += !std::binary_search(seen.back().begin(), seen.back().end(), name);
-      step.settled = step.changed == 0;
-      step.repeats = !step.settled && std::find(seen.begin(), seen.end(), set) != seen.end();
-      iterations.push_back(step);
-      chosen = std::move(next);
-      if (step.settled || step.repeats) break;
-      seen.push_back(set);
-    }
+void keepChosenSet(const PlacementOptions& o, const PlacementStudy& study, PlacementProblem& p) {
+  if (o.keep_set.empty()) return;
+  p.fixed_block.resize(study.candidates.size(), 0);
+  for (const std::string& name : o.keep_set) {
+    const auto at = std::find_if(study.candidates.begin(), study.candidates.end(),
+                                 [&](const PlacementCandidate& c) { return c.station + " " + c.axis == name; });
+    MMV_DEMAND(at != study.candidates.end());
+    p.fixed_block[static_cast<std::size_t>(at - study.candidates.begin())] = 1;
   }
-  // The loading of the final set, against the article without it: the bare study with
-  // the chosen blocks (the candidates are the same stations on either model).
+}
+
+PlacementStudy placeOnLoadedModel(const PlacementStudy& bare,
+                                  const std::function<PlacementStudy(const PlacementStudy&, bool)>& placeCarrying,
+                                  std::vector<LoadedIteration>& iterations) {
+  PlacementStudy chosen = bare;
+  std::vector<std::vector<std::string>> seen{chosenSet(bare)};
+  for (int it = 1; it <= kMaxLoadedIterations; ++it) {
+    const ProgressStage stage(strf("placement on the model with the sensors: pass %d", it));
+    PlacementStudy next = placeCarrying(chosen, false);
+    const std::vector<std::string> set = chosenSet(next);
+    LoadedIteration step;
+    step.pass = it;
+    for (const auto& name : set) step.changed += !std::binary_search(seen.back().begin(), seen.back().end(), name);
+    if (step.changed > 0) {  // the set its model carried, on that model: as informative?
+      const double mine = next.result.fisher_determinant, carried = fisherDeterminantOf(next, seen.back());
+      step.tie = mine > 0 && std::abs(carried - mine) <= kTiedInformation * mine;
+    }
+    step.settled = step.changed == 0 || step.tie;
+    step.repeats = !step.settled && std::find(seen.begin(), seen.end(), set) != seen.end();
+    iterations.push_back(step);
+    // A tie keeps the set the model carried, evaluated on that model.
+    chosen = step.tie ? placeCarrying(chosen, true) : std::move(next);
+    if (step.settled || step.repeats) break;
+    seen.push_back(set);
+  }
+  return chosen;
+}
+
+PlacementStudy withChosenSet(const PlacementStudy& bare, const PlacementStudy& chosen) {
   PlacementStudy on_bare = bare;
   on_bare.result.kept_blocks.clear();
   for (int b : chosen.result.kept_blocks) {
@@ -310,7 +343,25 @@ PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o
     MMV_DEMAND(same != bare.candidates.end());
     on_bare.result.kept_blocks.push_back(static_cast<int>(same - bare.candidates.begin()));
   }
-  chosen.loading = sensorLoading(scene, s, shapes, on_bare, o.sensor_mass_kg);
+  return on_bare;
+}
+
+PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {
+  MMV_DEMAND(!o.iterate_loaded || o.sensor_mass_kg > 0);
+  const SolvedScene s = solveScene(scene);
+  Eigen::MatrixXd shapes;
+  const PlacementStudy bare = placeOn(scene, o, s, shapes);
+  if (o.sensor_mass_kg == 0) return bare;
+  std::vector<LoadedIteration> iterations;
+  PlacementStudy chosen = !o.iterate_loaded ? bare : placeOnLoadedModel(bare, [&](const PlacementStudy& carried, bool keep) {
+    const ArticleScene loaded = sceneWithSensors(scene, carried, o.sensor_mass_kg);
+    PlacementOptions on_loaded = o;
+    if (keep) on_loaded.keep_set = chosenSet(carried);
+    Eigen::MatrixXd loaded_shapes;
+    return placeOn(loaded, on_loaded, solveScene(loaded), loaded_shapes);
+  }, iterations);
+  // The loading of the final set, against the article without it.
+  chosen.loading = sensorLoading(scene, s, shapes, withChosenSet(bare, chosen), o.sensor_mass_kg);
   chosen.loading->iterations = iterations;
   return chosen;
 }

@@ -14,6 +14,7 @@
 /// shape functions (sim/model/stations.hpp), so the choice does not depend on the mesh.
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,10 @@ struct PlacementOptions {
   /// With `sensor_mass_kg` > 0: placed again on the model that carries the chosen set
   /// until a set carries itself (at most kMaxLoadedIterations passes).
   bool iterate_loaded = false;
+  /// Blocks ("station axis", as PlacementCandidate names them) chosen in advance, the
+  /// count's whole: the placement evaluates that set (its scores, AutoMAC, TAMs) on the
+  /// model. placeOnLoadedModel's, to keep a set that carries itself.
+  std::vector<std::string> keep_set;
 };
 
 /// Passes of PlacementOptions::iterate_loaded before it stops unsettled.
@@ -60,9 +65,18 @@ inline constexpr int kMaxLoadedIterations = 8;
 struct LoadedIteration {
   int pass = 0;
   int changed = 0;       ///< chosen blocks not in the set the pass's model carried
-  bool settled = false;  ///< none: the set carries itself
+  /// The pass chose another set exactly as informative as the one its model carried
+  /// (Fisher determinants on that model within kTiedInformation): a tie between
+  /// equivalent points (a symmetric article's mirror points), broken by round-off.
+  bool tie = false;
+  bool settled = false;  ///< none changed, or a tie: the set carries itself
   bool repeats = false;  ///< a set seen before, not the last: the passes cycle
 };
+
+/// Relative difference of two sets' Fisher determinants on one model within which
+/// they are a tie (LoadedIteration::tie): round-off, far below what a sensor's mass does
+/// (a 0.1 kg sensor on HAM-SAS changes a determinant by 1e-4 and more).
+inline constexpr double kTiedInformation = 1e-6;
 
 struct PlacementCandidate {
   std::string station;  ///< e.g. "link1@1.20m".
@@ -111,7 +125,7 @@ struct SensorLoading {
   std::vector<LoadedIteration> iterations;  ///< empty: placed on the bare model only
   /// The isolator's loading: the springs carry the sensors' weight, so gravity's
   /// stiffness (pendulums, blades) changes with it and first order (the inertia's) is
-  /// not the whole shift; the placement is not iterated there.
+  /// not the whole shift.
   bool weight_in_stiffness = false;
 };
 
@@ -150,5 +164,29 @@ std::vector<ModeNumber> placementTargets(const ModalSolution& modes, const Place
 /// `study.result` from `p`.
 void choosePlacement(PlacementStudy& study, const PlacementProblem& p, const PlacementOptions& options, int directions,
                      const std::string& where);
+
+/// Placement on the model that carries its own chosen set (PlacementOptions::iterate_loaded),
+/// for the article and the isolator alike: `placeCarrying(set)` places on the model that
+/// carries `set`'s sensors, starting from `bare`'s; the passes stop when a set carries
+/// itself (the pass chose the set its model carried, or one tied with it:
+/// LoadedIteration::tie), when a set repeats (the passes cycle), or after
+/// kMaxLoadedIterations. Returns the last pass's placement; a record
+/// per pass goes to `iterations`. `placeCarrying(set, keep)` with `keep` evaluates `set`
+/// itself on the model carrying it (PlacementOptions::keep_set): after a tie the carried
+/// set is kept, on its own model, so the study's modes are those of the model carrying it.
+PlacementStudy placeOnLoadedModel(const PlacementStudy& bare,
+                                  const std::function<PlacementStudy(const PlacementStudy&, bool)>& placeCarrying,
+                                  std::vector<LoadedIteration>& iterations);
+
+/// Marks `options.keep_set`'s blocks among `study`'s candidates fixed in `p` (each must
+/// be a candidate: MMV_DEMAND).
+void keepChosenSet(const PlacementOptions& options, const PlacementStudy& study, PlacementProblem& p);
+
+/// "station axis" of each chosen block of `study`, sorted: a placement's set.
+std::vector<std::string> chosenSet(const PlacementStudy& study);
+
+/// `bare` with `chosen`'s set: the candidates of `bare` at the same stations and axes
+/// (the candidates are the same physical points on the bare and the loaded model).
+PlacementStudy withChosenSet(const PlacementStudy& bare, const PlacementStudy& chosen);
 
 }  // namespace mmv

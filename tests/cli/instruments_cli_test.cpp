@@ -75,7 +75,7 @@ TEST_F(Cli, InstrumentRequestsAreRefusedByName) {
            Refusal{"--segments 4 --instrument accelerometer --sensor-mass 0.001", "--sensor-mass and --instrument both give the sensors' mass"},
            Refusal{"--segments 4 --iterate-loaded", "--iterate-loaded: the accelerometer is massless"},
            Refusal{hamsas + " --instrument accelerometer", "--instrument applies to the article's scenes"},
-           Refusal{hamsas + " --iterate-loaded", "--iterate-loaded applies to the article's scenes"},
+           Refusal{hamsas + " --iterate-loaded", "--iterate-loaded: the sensors are massless: nothing loads the isolator (give --sensor-mass)"},
            Refusal{"--segments 4 --set instruments.accelerometer.mass_kg=11", "--set instruments.accelerometer.mass_kg=11: instruments.accelerometer.mass_kg must be between 0 and 10 kg"},
        }) {
     const fs::path none = dir_ / "refused";

@@ -22,6 +22,10 @@ const HamsasScene& isolator() {
   return scene;
 }
 
+/// kg per sensor for the iterated placement's test: heavy enough that the passes move
+/// sensors for real before a set carries itself (measured: 4 moved, then 1, then a tie).
+constexpr double kIteratedSensorKg = 1.0;
+
 TEST(HamsasPlacement, RowsAreThePointJacobianTimesTheShapes) {
   const HamsasModes h = analyseHamsas(isolator().isolator);
   const std::vector<ModeNumber> targets = modeNumbers({1, 4, 5, 7, 9});
@@ -227,5 +231,94 @@ TEST(HamsasPlacement, TamsOnTheChosenSensorsMeetTheirIdentities) {
   EXPECT_TRUE(serep.pass);
 }
 
+// --iterate-loaded on the isolator (issue 34): each pass places on the isolator rebuilt
+// with the last set's masses. The candidates stay the bare isolator's points while the
+// loaded bodies' mass centres move: a loaded pass's rows are the loaded model's own point
+// Jacobian at those points times its shapes. The symmetric isolator's mirror points tie
+// (nine sensors for nine modes: every kept one has EfI 1), so a pass that only swaps
+// points as informative as the carried ones settles (LoadedIteration::tie); a set that
+// settled, carried and placed once more by the placement's own core, comes back as
+// informative; weightless sensors settle at once on the bare choice's information.
+TEST(HamsasPlacement, AnIteratedSetCarriesItselfOnTheLoadedIsolator) {
+  const HamsasModes h = analyseHamsas(isolator().isolator);
+  PlacementOptions o;
+  o.below_hz = 5;
+  o.count = 9;
+  o.sensor_mass_kg = kIteratedSensorKg;
+  o.iterate_loaded = true;
+  const PlacementStudy p = runHamsasPlacement(isolator(), h, o);
+  ASSERT_TRUE(p.loading.has_value());
+  const auto& it = p.loading->iterations;
+  ASSERT_FALSE(it.empty());
+  ASSERT_TRUE(it.back().settled) << "pass " << it.back().pass << ": " << it.back().changed << " changed";
+  EXPECT_GE(it.size(), 2u);
+  EXPECT_GT(it.front().changed, 0);
+  EXPECT_FALSE(it.front().tie);  // the first pass moved sensors for real
+  EXPECT_EQ(p.loading->sensors, 9);  // the loading is the final set's on the bare isolator, each sensor once
+  EXPECT_TRUE(p.loading->weight_in_stiffness);
+
+  // The isolator carrying the final set, its candidates at the bare points.
+  const HamsasModes carrying = isolatorCarrying(h, p, o.sensor_mass_kg);
+  const std::vector<ModeNumber> targets = placementTargets(carrying.solution, o);
+  std::vector<PlacementCandidate> candidates;
+  const PlacementProblem q = hamsasCandidates(carrying, targets, false, candidates, nullptr, &h.model);
+  // The iterated study's target modes are those of the isolator carrying its set.
+  for (std::size_t j = 0; j < targets.size(); ++j)
+    EXPECT_NEAR(p.target_frequencies_hz[j], carrying.solution.frequencyHz(targets[j].index()), 1e-12 * p.target_frequencies_hz[j]);
+  // Placed once more by the placement's core: the same set, or one as informative.
+  const PlacementResult again = placeSensors(q, o.method, o.count);
+  auto determinant = [&](const std::vector<int>& blocks) {  // det(A^T A) over the blocks' rows of q
+    Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(q.phi.cols(), q.phi.cols());
+    for (Eigen::Index r = 0; r < q.phi.rows(); ++r)
+      if (std::find(blocks.begin(), blocks.end(), q.block[static_cast<std::size_t>(r)]) != blocks.end())
+        Q += q.phi.row(r).transpose() * q.phi.row(r);
+    return Q.determinant();
+  };
+  std::vector<int> mine;
+  for (int b : p.result.kept_blocks) {
+    const PlacementCandidate& c = p.candidates[static_cast<std::size_t>(b)];
+    const auto at = std::find_if(candidates.begin(), candidates.end(),
+                                 [&](const PlacementCandidate& d) { return d.station == c.station && d.axis == c.axis; });
+    ASSERT_NE(at, candidates.end());
+    mine.push_back(static_cast<int>(at - candidates.begin()));
+  }
+  EXPECT_NEAR(determinant(mine), again.fisher_determinant, kTiedInformation * again.fisher_determinant);
+  EXPECT_NEAR(p.result.fisher_determinant, determinant(mine), 1e-9 * determinant(mine));  // the study's own, on that model
+
+  // Loaded rows at the bare points: the loaded model's point Jacobian there times its shapes.
+  std::vector<PlacementCandidate> bare_points;
+  hamsasCandidates(h, targets, false, bare_points);
+  ASSERT_EQ(bare_points.size(), candidates.size());
+  Eigen::MatrixXd shapes(carrying.solution.shapes.rows(), static_cast<Eigen::Index>(targets.size()));
+  for (std::size_t j = 0; j < targets.size(); ++j) shapes.col(static_cast<Eigen::Index>(j)) = carrying.solution.shapes.col(targets[j].index());
+  double worst = 0, scale = 0, moved = 0;
+  for (std::size_t r = 0; r < candidates.size(); r += 3) {
+    const PlacementCandidate &c = candidates[r], &b = bare_points[r];
+    EXPECT_EQ(c.station, b.station);
+    EXPECT_EQ(c.world_x, b.world_x);
+    EXPECT_EQ(c.world_y, b.world_y);
+    EXPECT_EQ(c.world_z, b.world_z);
+    const int body = carrying.model.bodyIndex(c.link);
+    moved = std::max(moved, (carrying.model.bodies[static_cast<std::size_t>(body)].com - h.model.bodies[static_cast<std::size_t>(body)].com).norm());
+    const Eigen::MatrixXd u = spatialPointJacobian(carrying.model, body, {c.world_x, c.world_y, c.world_z}).rightCols(shapes.rows()) * shapes;
+    worst = std::max(worst, (u - q.phi.middleRows(static_cast<Eigen::Index>(r), 3)).cwiseAbs().maxCoeff());
+    scale = std::max(scale, u.cwiseAbs().maxCoeff());
+  }
+  EXPECT_GT(moved, 1e-4);  // the loaded mass centres did move: the check is not the bare one again
+  EXPECT_LT(worst, 1e-12 * scale);
+
+  // Weightless sensors settle at once, on a set as informative as the bare choice.
+  o.sensor_mass_kg = 1e-9;
+  const PlacementStudy light = runHamsasPlacement(isolator(), h, o);
+  ASSERT_EQ(light.loading->iterations.size(), 1u);
+  EXPECT_TRUE(light.loading->iterations[0].settled);
+  PlacementOptions once = o;
+  once.sensor_mass_kg = 0;
+  once.iterate_loaded = false;
+  const PlacementStudy bare = runHamsasPlacement(isolator(), h, once);
+  EXPECT_NEAR(light.result.fisher_determinant, bare.result.fisher_determinant, 1e-6 * bare.result.fisher_determinant);
+  std::printf("[hamsas iterate] %g kg sensors: %zu passes (first changed %d, last %d%s); mass centres moved up to %.3g m\n",
+              kIteratedSensorKg, it.size(), it.front().changed, it.back().changed, it.back().tie ? ", a tie" : "", moved);
+}
 }  // namespace
 }  // namespace mmv
