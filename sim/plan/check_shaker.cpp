@@ -11,8 +11,11 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/text.hpp"
 #include "sim/linear/exciter.hpp"
+#include "sim/linear/state_space.hpp"
+#include "sim/linear/time_response.hpp"
 #include "sim/modes/place_sensors.hpp"
 #include "sim/plan/check_parts.hpp"
+#include "sim/scene/programs.hpp"
 #include "sim/scene/stations.hpp"
 
 namespace mmv::plan {
@@ -46,11 +49,81 @@ InstrumentSpec levelsInstrument(const ArticleScene& scene, int& directions, bool
   return out;
 }
 
+/// The shaker's program (`shaker.program`) before any run: the linear model with the
+/// armature on the article (as frf's `--input shaker`), driven from rest by the program's
+/// force and the table's programs over the scene's run, sampled finely enough for the
+/// program's highest frequency (20 samples a period at least, and never coarser than
+/// simulate's rate), with the run's damping. The armature's travel is the driving point's displacement along the
+/// force (it rides the stinger), the stinger's force the program's less the armature's
+/// m a. Against the stroke: what `simulate` records as shaker_stroke_m.
+void addProgramLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+  const ArticleScene& scene = in.scene;
+  const ShakerSceneSpec& sh = *scene.shaker;
+  const auto force = makeTableProgram(*sh.program);
+  std::vector<InputSpec> inputs;
+  InputSpec shaker{"shaker", InputKind::PointForce, sh.at, -1};
+  shaker.direction = sh.direction;
+  shaker.armature_kg = sh.hardware.armature_mass;
+  inputs.push_back(shaker);
+  // The table's own programs move the article (and so the driving point) too.
+  std::vector<std::shared_ptr<const facility::TableProgram>> programs{force};
+  std::vector<int> table_axis{-1};  // the world axis each table program moves the base along
+  const auto& base = scene.article.base;
+  double f_max = force->maxFrequencyHz();
+  for (const auto& [motion, axis] : {std::pair{&base.motion, 0}, std::pair{&base.motion_z, 2}})
+    if (base.type == BaseType::Table && *motion) {
+      inputs.push_back({axis == 0 ? "table_x" : "table_z", InputKind::BaseAcceleration, "", axis});
+      programs.push_back(makeTableProgram(**motion));
+      table_axis.push_back(axis);
+      f_max = std::max(f_max, programs.back()->maxFrequencyHz());
+    }
+  const int axes = scene.article.model == ArticleModel::Spatial ? 3 : 2;
+  // The driving point's displacement relative to the base (the table's own displacement,
+  // its program's, is added below: the armature stands on the floor) and its absolute
+  // acceleration (the armature's, for the stinger's force).
+  std::vector<OutputSpec> outputs;
+  for (int a = 0; a < axes; ++a) outputs.push_back({strf("driving point %s", axisName(a)), OutputKind::Displacement, sh.at, a, false});
+  for (int a = 0; a < axes; ++a) outputs.push_back({strf("driving point a%s", axisName(a)), OutputKind::Acceleration, sh.at, a, true});
+  // The run's damping: the scene's, and none without `damping:` (simulate's), not frf's
+  // default 1 %: an undamped run's travel is what the run will show.
+  DampingSpec damping;
+  damping.modal_ratio = 0;
+  if (scene.damping) damping = *scene.damping;
+  const LinearModel lm = buildLinearModel(scene, inputs, outputs, damping, /*prepare_responses=*/false);
+  const double duration = scene.simulation.duration;
+  const double dt_max = std::min(1 / scene.simulation.sample_rate_hz, f_max > 0 ? 1 / (20 * f_max) : 1 / scene.simulation.sample_rate_hz);
+  const int steps = std::max(1, static_cast<int>(std::ceil(duration / dt_max)));
+  const double dt = duration / steps;
+  const Eigen::MatrixXd run = timeResponse(lm.full, [&](double t) {
+    Eigen::VectorXd u(static_cast<Eigen::Index>(programs.size()));
+    u[0] = programs[0]->position(t);
+    for (std::size_t i = 1; i < programs.size(); ++i) u[static_cast<Eigen::Index>(i)] = programs[i]->acceleration(t);
+    return u;
+  }, dt, steps);
+  double travel = 0, stinger = 0, at_t = 0;
+  for (Eigen::Index k = 0; k < run.rows(); ++k) {
+    const double t = static_cast<double>(k) * dt;
+    double x = 0, a = 0;
+    for (int d = 0; d < axes; ++d) x += sh.direction[static_cast<std::size_t>(d)] * run(k, d), a += sh.direction[static_cast<std::size_t>(d)] * run(k, axes + d);
+    for (std::size_t i = 1; i < programs.size(); ++i)
+      x += sh.direction[static_cast<std::size_t>(table_axis[i])] * (programs[i]->position(t) - programs[i]->position(0));
+    if (std::abs(x) > travel) travel = std::abs(x), at_t = t;
+    stinger = std::max(stinger, std::abs(programs[0]->position(t) - sh.hardware.armature_mass * a));
+  }
+  const std::string model = strf("flexible linear model with the %.3g kg armature, from rest over the scene's %.3g s run "
+                                 "(%d samples)%s", sh.hardware.armature_mass, duration, steps + 1,
+                                 programs.size() > 1 ? ", the table's program included" : "");
+  out.push_back(makeLine("shaker", "shaker.program_stroke", "the armature's travel under the shaker's program", travel, sh.hardware.stroke,
+                         "m", strf("%s; largest at t = %.3g s; the stinger passes up to %.4g N", model.c_str(), at_t, stinger),
+                         in.options.required_margin_pct));
+}
+
 }  // namespace
 
 void addShakerLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const ArticleScene& scene = in.scene;
   if (!scene.shaker) return;
+  if (scene.shaker->program) addProgramLines(in, out);
   const auto notChecked = [&](const std::string& why) {
     CheckLine l = makeLine("shaker", "shaker.levels", "the shaker's levels at the scene's accelerometers", 0, 0, "dB", why, 0);
     l.verdict = Verdict::NotChecked;
