@@ -106,7 +106,8 @@ py::tuple correlate(const PyScene& scene, int segments, const std::string& measu
 py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int>& target_modes, std::optional<double> below_hz,
                        double spacing, int count, bool triaxial, const std::string& method, const std::vector<std::string>& tam,
                        double sensor_mass, double min_separation, const std::vector<std::string>& keep_out, int channels,
-                       bool keep_scene_sensors, const std::string& instrument, bool iterate_loaded, py::object progress) {
+                       bool keep_scene_sensors, const std::string& instrument, bool iterate_loaded, double strain_span,
+                       py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   mmv::app::PlacementRequest r;
   r.modes = target_modes;
@@ -124,6 +125,7 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   r.keep_scene_sensors = keep_scene_sensors;
   r.instrument = instrument;
   r.iterate_loaded = iterate_loaded;
+  r.strain_span_m = strain_span;
   r.front = Front::Python;
   const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(prepared.scene, r); });
   return py::make_tuple(s.json.dump(), s.text, s.tam_csv, prepared.warnings);
@@ -440,5 +442,5 @@ PYBIND11_MODULE(_mmvlab, m) {
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),
         py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("tam"), py::arg("sensor_mass"),
         py::arg("min_separation"), py::arg("keep_out"), py::arg("channels"), py::arg("keep_scene_sensors"), py::arg("instrument"),
-        py::arg("iterate_loaded"), py::arg("progress"));
+        py::arg("iterate_loaded"), py::arg("strain_span"), py::arg("progress"));
 }

@@ -580,7 +580,7 @@ def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None)
 
 def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, count=8, triaxial=False, method="efi",
                   tam=(), sensor_mass=0.0, min_separation=0.0, keep_out=(), channels=0, keep_scene_sensors=False,
-                  instrument="", iterate_loaded=False, progress=None):
+                  instrument="", iterate_loaded=False, strain_span=0.0, progress=None):
     """`mmvlab place-sensors`: sensor stations for the target modes (`modes`, 1-based,
     or every vibration mode below `below_hz`, 50 Hz by default); `tam`: test-analysis
     models to build on them ("guyan", "irs", "serep" or "all"); `sensor_mass`: each sensor's
@@ -591,7 +591,8 @@ def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, co
     `--keep-out`, `--channels` and `--keep-scene-sensors`; `instrument` (the scene's
     `instruments:` entry placed: its mass, range and resolution, `--instrument`) and
     `iterate_loaded` (placed again on the loaded model until the set carries itself,
-    `--iterate-loaded`)."""
+    `--iterate-loaded`); `strain_span` (m: strain gauges or piezo films of that length
+    instead of accelerometers, `--strain-span`)."""
     if isinstance(keep_out, str):
         keep_out = [keep_out]
     if isinstance(tam, str):
@@ -602,7 +603,7 @@ def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, co
                                                             float(sensor_mass), float(min_separation),
                                                             [str(k) for k in keep_out], int(channels),
                                                             bool(keep_scene_sensors), str(instrument),
-                                                            bool(iterate_loaded), progress)
+                                                            bool(iterate_loaded), float(strain_span), progress)
     _warn(warns)
     return PlacementResult(json_text, text, tam_csv)
 

@@ -194,6 +194,18 @@ def test_place_sensors_with_an_instrument_iterated_as_the_cli():
         mmvlab.place_sensors(scene, segments=8, count=8, instrument="accelerometr")
 
 
+def test_place_sensors_films_as_the_cli():
+    p = mmvlab.place_sensors(mmvlab.load_scene(), segments=8, count=6, modes=[1, 2, 3, 4], strain_span=0.3)
+    cli = subprocess.run([MMVLAB, "place-sensors", "--segments", "8", "--count", "6", "--modes", "1-4", "--strain-span", "0.3",
+                          "--json"], capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    assert p.json == json.loads(cli.stdout) | {"mmvlab_version": p.json["mmvlab_version"]}
+    assert p.json["sensor"] == "strain" and p.json["strain_span_m"] == 0.3
+    assert all(c["axis"] == "strain" for c in p.json["chosen"])
+    with pytest.raises(mmvlab.UsageError, match="effective independence only"):
+        mmvlab.place_sensors(mmvlab.load_scene(), segments=8, count=6, strain_span=0.3, method="mke")
+
+
 def test_modes_strains_as_the_cli():
     span = "link3a@0.1m:link3a@0.5m"
     m = mmvlab.modes(mmvlab.load_scene(), segments=4, modes=3, strains=span, error_estimate=False)

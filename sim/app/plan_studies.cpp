@@ -103,6 +103,13 @@ namespace {
 void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
   s.channels_csv = placementChannelsCsv(s.study);
   s.sensors_vtp = placementVtp(s.study);
+  if (s.study.strain) {  // strain readings: no motion at nodes, no accelerometer levels
+    const bool levels = article.shaker || article.article.base.type == BaseType::Table;
+    s.text += std::string("\nStrain sensors: channels.csv lists them (quantity strain, m/m); no test_geometry.uff (its records "
+                          "hold motions at nodes)") +
+              (levels ? "; the shaker's and the table's levels are planned on accelerometers (place those to see them)" : "") + "\n";
+    return;
+  }
   uff::File geometry = placementGeometry(s.study, article.name);
   uff::stampNow(geometry);
   s.geometry_uff = uff::write(geometry);
@@ -118,6 +125,34 @@ void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
     s.json["table_levels"] = tableLevelsJson(*s.table_levels);
     s.text += tableLevelsText(*s.table_levels);
   }
+}
+
+}  // namespace
+
+namespace {
+
+/// --strain-span: strain gauges or films in place of accelerometers, checked against
+/// everything else the request asks (each combination they cannot meet named).
+void strainOptions(const Scene& scene, const PlacementRequest& r, PlacementOptions& o) {
+  const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
+  const std::string flag = opt("--strain-span");
+  checkRange(r.front, "--strain-span", r.strain_span_m, 1e-3, 100);
+  const auto* article = std::get_if<ArticleScene>(&scene);
+  if (!article) throw UsageError(flag + " applies to the article's scenes (the isolator's bodies are rigid: nothing bends)");
+  if (article->article.model != ArticleModel::Planar)
+    throw UsageError(flag + ": strain sensors are placed on the planar model only (their in-plane bending; drop --set model=spatial)");
+  const auto refuse = [&](bool given, const char* other, const std::string& why) {
+    if (given) throw UsageError(flag + " and " + opt(other) + ": " + why);
+  };
+  refuse(o.method != PlacementMethod::EffectiveIndependence, "--method",
+         "strain sensors are placed by effective independence only (kinetic energy and driving-point residue rank motions)");
+  refuse(r.triaxial, "--triaxial", "a strain gauge or film reads one strain: place them uniaxial");
+  refuse(r.sensor_mass_kg > 0 || r.iterate_loaded || !r.instrument.empty(),
+         r.sensor_mass_kg > 0 ? "--sensor-mass" : r.iterate_loaded ? "--iterate-loaded" : "--instrument",
+         "strain sensors are placed massless (foil or film on the surface)");
+  refuse(r.keep_scene_sensors, "--keep-scene-sensors", "the scene's accelerometers are kept in an accelerometer placement");
+  o.strain_span_m = r.strain_span_m;
+  o.instrument = *findInstrument(*article, "strain");
 }
 
 }  // namespace
@@ -163,7 +198,9 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   if (r.keep_scene_sensors && !std::holds_alternative<ArticleScene>(scene))
     throw UsageError(opt("--keep-scene-sensors") + " applies to the article's scenes (the isolator's sensors are not scene data)");
   o.sensor_mass_kg = r.sensor_mass_kg;
-  if (const auto* article = std::get_if<ArticleScene>(&scene)) {
+  if (r.strain_span_m != 0) {
+    strainOptions(scene, r, o);
+  } else if (const auto* article = std::get_if<ArticleScene>(&scene)) {
     placedInstrument(*article, r, o);
   } else {
     if (!r.instrument.empty())

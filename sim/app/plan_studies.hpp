@@ -51,6 +51,11 @@ struct PlacementRequest {
   /// its range and resolution set the exciter's levels, a triaxial one places blocks.
   std::string instrument;
   bool iterate_loaded = false;  ///< placed again on the loaded model until the set carries itself
+  /// > 0: place strain gauges or piezo films of this length (m, 1e-3 .. 100) instead of
+  /// accelerometers (PlacementOptions::strain_span_m): the planar article, effective
+  /// independence, uniaxial, massless; no shaker or table levels (they are planned on
+  /// accelerometers) and no test_geometry.uff (its records hold motions).
+  double strain_span_m = 0;
   Front front = Front::Cli;
 };
 

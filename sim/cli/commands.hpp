@@ -165,6 +165,7 @@ struct PlaceSensorsArgs : SceneArgs {
   bool keep_scene_sensors = false;  ///< --keep-scene-sensors
   std::string instrument;        ///< --instrument NAME (the scene's instruments:)
   bool iterate_loaded = false;   ///< --iterate-loaded
+  double strain_span = 0;        ///< --strain-span M; 0: accelerometers
   std::string out;
   bool force = false;
 };

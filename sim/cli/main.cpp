@@ -264,8 +264,8 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   p->add_option("--instrument", ps.instrument,
                 "The accelerometer placed, from the scene's instruments: (default: accelerometer, the report's): its mass loads "
                 "the model, its range and resolution set the shaker's levels, a triaxial one (axes: 3) places blocks");
-  p->add_flag("--iterate-loaded", ps.iterate_loaded,
-              "Place again on the model carrying the chosen sensors' masses until the set carries itself (at most 8 passes)");
+  p->add_flag("--iterate-loaded", ps.iterate_loaded, "Place again on the model carrying the sensors' masses until the set carries itself");
+  p->add_option("--strain-span", ps.strain_span, "Place strain gauges or films this long, m, not accelerometers (planar, EfI)");
   p->add_option("--tam", ps.tam,
                 "Test-analysis models on the chosen sensors, with self- and cross-orthogonality against NASA-STD-5002's "
                 "criteria: guyan, irs, serep or all, comma-separated")

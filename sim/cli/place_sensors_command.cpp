@@ -147,6 +147,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.keep_scene_sensors = args.keep_scene_sensors;
     r.instrument = args.instrument;
     r.iterate_loaded = args.iterate_loaded;
+    r.strain_span_m = args.strain_span;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const app::PlacementStudyResult study = app::runPlacementStudy(loaded, r);

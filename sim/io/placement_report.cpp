@@ -29,11 +29,15 @@ std::vector<std::pair<int, int>> indistinguishableModes(const PlacementStudy& s)
 std::string placementText(const PlacementStudy& s) {
   std::ostringstream os;
   const PlacementResult& r = s.result;
-  os << s.scene_name << ": " << r.kept_blocks.size() << (s.triaxial ? " triaxial blocks" : " uniaxial sensors") << " by "
+  os << s.scene_name << ": " << r.kept_blocks.size()
+     << (s.strain ? strf(" strain sensors (spans of %g m)", s.strain_span_m) : s.triaxial ? " triaxial blocks" : " uniaxial sensors") << " by "
      << s.method << " from " << s.candidates.size() << " candidates";
-  if (!s.instrument.name.empty() && (s.instrument.name != "accelerometer" || s.instrument.mass_kg > 0))
+  if (!s.strain && !s.instrument.name.empty() && (s.instrument.name != "accelerometer" || s.instrument.mass_kg > 0))
     os << strf(" (instrument %s, %.4g g)", s.instrument.name.c_str(), 1e3 * s.instrument.mass_kg);
   os << "\n";
+  if (s.requested > static_cast<int>(r.kept_blocks.size()))
+    os << strf("warning: %zu of the %d asked for: resolving the separation%s left no more (lower it, or place more densely)\n",
+               r.kept_blocks.size(), s.requested, s.strain ? " (films at least a span apart: they do not overlap)" : "");
   const bool iterated = s.loading && !s.loading->iterations.empty();
   os << (iterated ? "Target modes of the model carrying them (Hz):" : "Target modes (Hz):");
   for (std::size_t j = 0; j < s.target_modes.size(); ++j)
@@ -101,8 +105,12 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   j["command"] = "place-sensors";
   j["scene"] = s.scene_name;
   j["method"] = s.method;
-  j["sensor"] = s.triaxial ? "triaxial" : "uniaxial";
-  if (!s.instrument.name.empty())  // the article's (the isolator's sensors are not scene data)
+  j["sensor"] = s.strain ? "strain" : s.triaxial ? "triaxial" : "uniaxial";
+  if (s.strain) j["strain_span_m"] = s.strain_span_m;
+  if (s.strain)  // the strain instrument's figures, in its unit
+    j["instrument"] = {{"name", s.instrument.name}, {"mass_kg", 0.0}, {"axes", 1}, {"range_m_per_m", s.instrument.spec.range},
+                       {"resolution_m_per_m", s.instrument.spec.resolution}};
+  else if (!s.instrument.name.empty())  // the article's (the isolator's sensors are not scene data)
     j["instrument"] = {{"name", s.instrument.name},           {"mass_kg", s.instrument.mass_kg},
                        {"axes", s.instrument.axes},           {"range_m_per_s2", s.instrument.spec.range},
                        {"resolution_m_per_s2", s.instrument.spec.resolution}};
@@ -110,6 +118,7 @@ nlohmann::ordered_json placementJson(const PlacementStudy& s) {
   for (const ModeNumber m : s.target_modes) j["target_modes"].push_back(m.number());
   j["target_frequencies_hz"] = s.target_frequencies_hz;
   j["candidates"] = s.candidates.size();
+  j["requested"] = s.requested;  // the count asked for: the chosen list may be shorter (the separation)
   auto chosen = nlohmann::ordered_json::array();
   const std::vector<PlacementRow> rows = placementRows(s);
   const auto record = [](const Field<PlacementRow>& f) { return std::string(f.key) != "chosen"; };

@@ -51,6 +51,7 @@ void choosePlacement(PlacementStudy& study, const PlacementProblem& p, const Pla
     throw OptionError("--count", " " + std::to_string(o.count) + ": effective independence needs at least one measured direction per target mode (" +
                      std::to_string(k) + ")");
   study.result = placeSensors(p, o.method, o.count);
+  study.requested = o.count;
 }
 
 namespace {
@@ -113,10 +114,64 @@ void addStation(PlacementStudy& study, PlacementProblem& p, StationRows& acc, co
   }
 }
 
-/// Whether station x of `link` lies in one of the keep-out stretches.
-bool keptOut(const PlacementOptions& o, const std::string& link, double x) {
+/// Whether station x of `link` lies in one of the keep-out stretches (a span [x, x_end]
+/// when it touches one).
+bool keptOut(const PlacementOptions& o, const std::string& link, double x, double x_end = -1) {
+  const double hi = std::max(x, x_end);
   return std::any_of(o.keep_out.begin(), o.keep_out.end(),
-                     [&](const PlacementOptions::KeepOut& k) { return k.link == link && x >= k.from_m && x <= k.to_m; });
+                     [&](const PlacementOptions::KeepOut& k) { return k.link == link && hi >= k.from_m && x <= k.to_m; });
+}
+
+/// The strain candidates (PlacementOptions::strain_span_m): on every flexible link, spans
+/// of that length from the root every `spacing`, each one block and one row, the mean
+/// surface strain over it per unit modal coordinate (frf's and modes' strain row,
+/// -c / span (theta_B - theta_A), from the stations' interpolated rotations: no mesh in
+/// it), measuring along the link's axis at the span's middle, where its node sits.
+void addStrainCandidates(const ArticleScene& scene, const Model& model, const SimTK::State& st, const SolvedScene& s,
+                         const Eigen::MatrixXd& shapes, const PlacementOptions& o, PlacementStudy& study, PlacementProblem& p,
+                         StationRows& acc) {
+  const double L = o.strain_span_m;
+  auto station = [](const std::string& link, double x) { return strf("%s@%.6gm", link.c_str(), x); };
+  for (std::size_t li = 0; li < scene.article.links.size(); ++li) {
+    const LinkSpec& link = scene.article.links[li];
+    if (link.rigid) continue;
+    const Material& mat = *scene.article.findMaterial(link.material);
+    const double rho_a = mat.density * sectionArea(*scene.article.findSection(link.section));
+    for (int i = 0; i * o.spacing_m + L <= link.length * (1 + 1e-12); ++i) {
+      const double xa = i * o.spacing_m, xb = std::min(xa + L, link.length), mid = 0.5 * (xa + xb);
+      if (keptOut(o, link.name, xa, xb)) continue;
+      const std::string a = station(link.name, xa), b = station(link.name, xb);
+      std::string why;
+      const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why);
+      if (!span) throw OptionError("--strain-span", strf(" %g: link %s cannot carry one: %s", L, link.name.c_str(), why.c_str()));
+      std::string error;
+      const std::optional<PointRef> ra = PointRef::resolve(model, scene.article, a, error),
+                                    rb = PointRef::resolve(model, scene.article, b, error),
+                                    rm = PointRef::resolve(model, scene.article, station(link.name, mid), error);
+      MMV_DEMAND(ra && rb && rm);
+      const Eigen::RowVectorXd reading = -span->surface_m / (xb - xa) *
+                                         (rb->rotationJacobian(st, s.linearized.dofs).row(2) - ra->rotationJacobian(st, s.linearized.dofs).row(2));
+      PlacementCandidate c{a + ":" + b, link.name, mid, "strain", 0, 0, 0, rho_a * (xb - xa),
+                           static_cast<int>(li + 1) * 100000 + static_cast<int>(std::lround(1e3 * mid)), {}};
+      const SimTK::Vec3 pos = rm->position(st), e = rm->localAxis(st, 0);
+      c.world_x = pos[0], c.world_y = pos[1], c.world_z = pos[2];
+      const Eigen::MatrixXd u = rm->translationJacobian(st, s.linearized.dofs, 2) * shapes;  // the middle's motion, for the drawings
+      for (Eigen::Index j = 0; j < u.cols(); ++j) c.shape.push_back({u(0, j), u(1, j), 0.0});
+      const Eigen::RowVectorXd row = reading * shapes;
+      c.strain.assign(row.data(), row.data() + row.size());
+      study.candidates.push_back(c);
+      const int block = static_cast<int>(study.candidates.size()) - 1;
+      acc.rows.push_back(row);
+      acc.readings.push_back(reading);
+      acc.names.push_back(c.station + " strain");
+      acc.masses.push_back(c.mass_kg);
+      p.block.push_back(block);
+      p.block_at.push_back(Eigen::Vector3d(pos[0], pos[1], pos[2]));
+      study.directions.push_back({block, "strain", {e[0], e[1], e[2]}});
+    }
+  }
+  if (study.candidates.empty())
+    throw OptionError("--strain-span", strf(" %g: no flexible link is that long (or the keep-outs cover every span)", L));
 }
 
 /// The chosen sensor directions (the kept blocks' rows, in row order).
@@ -209,7 +264,8 @@ PlacementStudy placeOn(const ArticleScene& scene, const PlacementOptions& o, con
   // The spatial model adds each station's normal axis (out of the plane).
   const int directions = model.isSpatial() ? 3 : 2;
   const ProgressStage stage("candidate stations: their mode shapes");
-  for (std::size_t li = 0; li < scene.article.links.size(); ++li) {
+  if (o.strain_span_m > 0) addStrainCandidates(scene, model, st, s, shapes, o, study, p, acc);
+  for (std::size_t li = 0; li < scene.article.links.size() && o.strain_span_m == 0; ++li) {
     const LinkSpec& link = scene.article.links[li];
     const Material& mat = *scene.article.findMaterial(link.material);
     const double rho_a = mat.density * sectionArea(*scene.article.findSection(link.section));
@@ -245,7 +301,9 @@ PlacementStudy placeOn(const ArticleScene& scene, const PlacementOptions& o, con
       throw OptionError("--count", strf(" %d: below the %ld accelerometers of the scene that --keep-scene-sensors keeps", o.count, fixed));
   }
   keepChosenSet(o, study, p);
-  p.min_separation = o.min_separation_m;
+  // Films or gauges do not overlap on the link's face: their middles at least a span
+  // apart (a part in 1e6 less, for the sag's and the stations' rounding).
+  p.min_separation = std::max(o.min_separation_m, o.strain_span_m * (1 - 1e-6));
   const std::vector<Eigen::RowVectorXd>& rows = acc.rows;
   const std::vector<double>& masses = acc.masses;
   p.phi.resize(rows.size(), k);
@@ -255,6 +313,8 @@ PlacementStudy placeOn(const ArticleScene& scene, const PlacementOptions& o, con
   chosenChannels(study, p.block, acc.names);
   if (!o.tam.empty()) buildPlacementTams(study, s, shapes, p.block, acc.readings, o.tam);
   study.instrument = o.instrument;
+  study.strain = o.strain_span_m > 0;
+  study.strain_span_m = o.strain_span_m;
   shapes_out = shapes;
   return study;
 }

@@ -56,6 +56,12 @@ struct PlacementOptions {
   /// count's whole: the placement evaluates that set (its scores, AutoMAC, TAMs) on the
   /// model. placeOnLoadedModel's, to keep a set that carries itself.
   std::vector<std::string> keep_set;
+  /// > 0: the candidates are strain gauges or piezo films of this length (m) instead of
+  /// accelerometers: spans along every flexible link, from its root every `spacing_m`,
+  /// each reading the mean in-plane bending strain at the section's face (planar model;
+  /// effective independence only; massless). A candidate's station is "A:B", its axis
+  /// "strain", its node and position the span's middle.
+  double strain_span_m = 0;
 };
 
 /// Passes of PlacementOptions::iterate_loaded before it stops unsettled.
@@ -95,6 +101,9 @@ struct PlacementCandidate {
   /// the planar model), for the test geometry's predicted shapes.
   std::vector<std::array<double, 3>> shape;
   bool fixed = false;  ///< a scene accelerometer kept in advance (keep_scene_sensors)
+  /// A strain candidate's reading in each target mode: the mean surface strain over its
+  /// span per unit modal coordinate (its placement row; empty for an accelerometer).
+  std::vector<double> strain;
 };
 
 /// What the chosen sensors' own masses do to the article's modes: each sensor welded at
@@ -149,6 +158,9 @@ struct PlacementStudy {
   std::vector<TamResult> tams;        ///< one per options.tam, on `channels`
   std::optional<SensorLoading> loading;  ///< options.sensor_mass_kg > 0
   InstrumentSpec instrument;             ///< what is placed (options.instrument)
+  int requested = 0;                     ///< the count asked for (the separation may leave room for fewer)
+  bool strain = false;                   ///< strain gauges or films (options.strain_span_m), not accelerometers
+  double strain_span_m = 0;              ///< their length
 };
 
 /// Throws UsageError for target modes that do not exist or are not vibration modes
