@@ -131,6 +131,67 @@ void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
 
 namespace {
 
+/// PlacementStudyResult::summary_lines, from the study's own numbers.
+std::vector<std::string> summaryLines(const PlacementStudyResult& s) {
+  const PlacementStudy& p = s.study;
+  std::vector<std::string> out;
+  const auto& f = p.target_frequencies_hz;
+  out.push_back(strf("Target modes: %zu, %.4g-%.4g Hz", f.size(), f.empty() ? 0.0 : f.front(), f.empty() ? 0.0 : f.back()));
+  out.push_back(strf("Sensors: %zu %s by %s, of %zu candidates", p.result.kept_blocks.size(),
+                     p.strain ? strf("strain films of %g m", p.strain_span_m).c_str() : p.triaxial ? "triaxial blocks" : "uniaxial",
+                     p.method.c_str(), p.candidates.size()));
+  if (p.requested > static_cast<int>(p.result.kept_blocks.size()))
+    out.push_back(strf("warning: %zu of the %d asked for (the separation)", p.result.kept_blocks.size(), p.requested));
+  const auto alike = indistinguishableModes(p);
+  std::string pairs;
+  for (const auto& [a, b] : alike) pairs += strf(" %d&%d", a, b);
+  out.push_back(strf("Fisher information: condition %s; largest off-diagonal AutoMAC %.3f",
+                     std::isfinite(p.result.fisher_condition) ? strf("%.3g", p.result.fisher_condition).c_str() : "singular",
+                     p.result.max_offdiagonal_mac));
+  out.push_back(alike.empty() ? std::string("Every pair of target modes told apart (AutoMAC <= 0.9)")
+                              : "warning: modes alike (AutoMAC > 0.9):" + pairs);
+  for (const TamResult& t : p.tams) {
+    int fail = 0;
+    double worst = 0;
+    for (const auto& m : t.modes) {
+      fail += !m.pass;
+      if (std::abs(m.frequency_error) >= std::abs(worst)) worst = m.frequency_error;
+    }
+    out.push_back(strf("TAM %s: %zu of %zu targets pass%s; worst frequency error %+.3g %%", tamMethodName(t.method), t.modes.size() - fail,
+                       t.modes.size(), t.pass ? "" : " (FAIL)", 100 * worst));
+  }
+  if (p.loading) {
+    const SensorLoading& l = *p.loading;
+    double worst = 0;
+    int mode = 0, heavy = 0;
+    for (const auto& m : l.modes) {
+      heavy += m.beyond_first_order || m.lost;
+      if (std::abs(m.shift) >= std::abs(worst)) worst = m.shift, mode = m.mode.number();
+    }
+    out.push_back(strf("%ssensors' mass %.3g kg each (%.3g kg): mode %d shifts %+.2f %%; %d beyond first order",
+                       heavy ? "warning: " : "", l.sensor_mass_kg, l.added_kg, mode, 100 * worst, heavy));
+    if (!l.iterations.empty()) {
+      const LoadedIteration& last = l.iterations.back();
+      out.push_back(last.settled ? strf("Placed on the model carrying them: settled after %zu passes%s", l.iterations.size(),
+                                        last.tie ? " (a tie)" : "")
+                                 : strf("warning: placed on the model carrying them: %s after %zu passes, the last kept",
+                                        last.repeats ? "the passes cycle" : "unsettled", l.iterations.size()));
+    }
+  }
+  if (s.exciter) {
+    int seen = 0;
+    for (const auto& m : s.exciter->modes) seen += m.seen;
+    out.push_back(strf("Shaker at %s %s: %d of %zu targets seen at >= 20 dB under a sine dwell", s.exciter->at.c_str(),
+                       s.exciter->axis.c_str(), seen, s.exciter->modes.size()));
+  }
+  if (s.table_levels) {
+    int seen = 0, above = 0;
+    for (const auto& m : s.table_levels->modes) seen += m.seen, above += !m.within_bandwidth;
+    out.push_back(strf("Base table: %d of %zu targets seen at >= 20 dB (%d above its bandwidth)", seen, s.table_levels->modes.size(), above));
+  }
+  return out;
+}
+
 /// --strain-span: strain gauges or films in place of accelerometers, checked against
 /// everything else the request asks (each combination they cannot meet named).
 void strainOptions(const Scene& scene, const PlacementRequest& r, PlacementOptions& o) {
@@ -228,6 +289,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
     uff::stampNow(geometry);
     s.geometry_uff = uff::write(geometry);
   }
+  s.summary_lines = summaryLines(s);
   checkResultFinite(s.json);  // before any file is committed
   return s;
 }

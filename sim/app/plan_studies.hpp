@@ -71,6 +71,9 @@ struct PlacementStudyResult {
   std::string exciter_csv, exciter_ranking_csv;  ///< exciter.csv, exciter_ranking.csv (empty without a shaker)
   std::string sensors_vtp;  ///< sensors.vtp, the chosen channels for ParaView (sim/io/vtk_export.hpp; the article's)
   std::optional<TableLevels> table_levels;  ///< a scene on the base table: its dwell levels per target mode
+  /// The verdicts a review reads first, a line each (summary.png's text): the targets,
+  /// the set, its information and AutoMAC, each TAM, the sensors' mass, the exciters.
+  std::vector<std::string> summary_lines;
 };
 
 PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementRequest& request);

@@ -260,7 +260,9 @@ CLI::App* addReportCommand(CLI::App& app, ReportArgs& r, const std::function<voi
 /// OutputDir::scratch for the figures a report embeds.
 using FigurePath = std::function<std::string(const std::string& name)>;
 /// place-sensors' figures: automac.png, review_sensors.png, review_modes.png.
-void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app::PlacementStudyResult& study);
+/// automac.png and the review renders; with `summary` also summary.png, the one-page
+/// summary of them and the study's verdicts (place-sensors; the report has its own page).
+void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app::PlacementStudyResult& study, bool summary = false);
 /// frf's Bode plot of every input-output pair, full and reduced: bode_OUT__IN.png.
 void writeBodePlots(const FigurePath& out, const app::LinearStudy& a, bool rad);
 /// HAM-SAS frf's figures: transmissibility_horizontal.png, _tilt_to_horizontal.png,

@@ -70,6 +70,11 @@ void contactSheetPng(const std::string& path, const std::vector<DrawList>& lists
   drawing([&] { api().contact_sheet_png(path, lists, cameras, size, columns); });
 }
 
+void summaryPng(const std::string& path, const std::string& title, const std::vector<std::string>& images,
+                const std::vector<std::string>& lines) {
+  drawing([&] { api().summary_png(path, title, images, lines); });
+}
+
 int renderCommand(const cli::RenderArgs& args) { return api().render_command(args); }
 
 }  // namespace mmv::figures

@@ -39,6 +39,11 @@ void framePng(const std::string& path, const DrawList& list, const Camera& camer
 void contactSheetPng(const std::string& path, const std::vector<DrawList>& lists, const std::vector<Camera>& cameras,
                      const FrameSize& size, int columns);
 
+/// renders/summary.hpp: a one-page summary of figures already written (`images`, read
+/// back from their files) and lines of text, as a PNG.
+void summaryPng(const std::string& path, const std::string& title, const std::vector<std::string>& images,
+                const std::vector<std::string>& lines);
+
 /// `mmvlab render` (sim/cli/render_command.cpp, in the plugin): its exit code.
 int renderCommand(const cli::RenderArgs& args);
 
@@ -57,7 +62,8 @@ struct Api {
   /// The plugin's stages (a history's frames) recorded in the host's progress state,
   /// which the host's watchdog prints (sim/core/progress.hpp).
   void (*adopt_progress)(ProgressState*);
+  void (*summary_png)(const std::string&, const std::string&, const std::vector<std::string>&, const std::vector<std::string>&);
 };
-constexpr int kApiVersion = 3;
+constexpr int kApiVersion = 4;
 
 }  // namespace mmv::figures

@@ -6,6 +6,7 @@
 #include "renders/frame.hpp"
 #include "renders/layout.hpp"
 #include "renders/plot.hpp"
+#include "renders/summary.hpp"
 #include "sim/cli/commands.hpp"
 #include "sim/cli/figures.hpp"
 
@@ -30,7 +31,7 @@ void contactSheetImpl(const std::string& path, const std::vector<DrawList>& list
 }();
 
 const Api kApi{kApiVersion,  render::writeLinePlotPng, render::writeHeatmapPng, render::writeBodePng, framePngImpl,
-               contactSheetImpl, cli::runRenderCommand, adoptProgressState};
+               contactSheetImpl, cli::runRenderCommand, adoptProgressState, render::writeSummaryPng};
 
 }  // namespace
 }  // namespace mmv::figures

@@ -3,6 +3,7 @@
 // heat map and the review renders (the chosen sensors on the article and on each
 // target mode) by renders/.
 #include <fstream>
+#include <map>
 #include <functional>
 #include <optional>
 #include <iostream>
@@ -112,8 +113,13 @@ void writeHamsasReviewRenders(const FigurePath& out, const HamsasScene& scene, c
 
 }  // namespace
 
-void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app::PlacementStudyResult& study) {
+void writePlacementFigures(const FigurePath& to, const Scene& loaded, const app::PlacementStudyResult& study, bool summary) {
   const PlacementStudy& s = study.study;
+  std::map<std::string, std::string> staged;  // each figure staged once: the summary reads them back
+  const FigurePath out = [&](const std::string& name) {
+    const auto at = staged.find(name);
+    return at != staged.end() ? at->second : staged[name] = to(name);
+  };
   std::vector<std::string> rows, cols;
   for (std::size_t j = 0; j < s.target_modes.size(); ++j) {
     rows.push_back(strf("%d (%.3g Hz)", s.target_modes[j].number(), s.target_frequencies_hz[j]));
@@ -124,6 +130,9 @@ void writePlacementFigures(const FigurePath& out, const Scene& loaded, const app
                      strf("AutoMAC seen by %zu sensors (%s)", s.result.kept_blocks.size(), s.method.c_str()), "mode", "mode");
     if (const auto* article = std::get_if<ArticleScene>(&loaded)) writeArticleReviewRenders(out, *article, s, study.exciter);
     else writeHamsasReviewRenders(out, std::get<HamsasScene>(loaded), *study.isolator_modes, s);
+    if (summary)  // one page: the sensors on the article, the AutoMAC, the modes, the verdicts
+      figures::summaryPng(out("summary.png"), strf("%s: pre-test summary (place-sensors)", s.scene_name.c_str()),
+                          {out("review_sensors.png"), out("automac.png"), out("review_modes.png")}, study.summary_lines);
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }
@@ -163,7 +172,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
       if (!study.sensors_vtp.empty()) out->write("sensors.vtp", study.sensors_vtp);
       if (!study.exciter_csv.empty()) out->write("exciter.csv", study.exciter_csv);
       if (!study.exciter_ranking_csv.empty()) out->write("exciter_ranking.csv", study.exciter_ranking_csv);
-      writePlacementFigures([&](const std::string& name) { return out->stage(name); }, loaded, study);
+      writePlacementFigures([&](const std::string& name) { return out->stage(name); }, loaded, study, /*summary=*/true);
       out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(study.json) : emitResult(study.text);

@@ -73,7 +73,7 @@ TEST_F(Cli, PlaceSensorsOnTheDefaultArticle) {
   for (const auto& f : j["target_frequencies_hz"]) EXPECT_LT(f.get<double>(), 50.0);
   EXPECT_GE(j["target_modes"].size(), 6u);
   EXPECT_GT(j["fisher_determinant"].get<double>(), 0.0);
-  for (const char* f : {"placement.json", "candidates.csv", "automac.csv", "automac.png", "review_sensors.png", "review_modes.png"})
+  for (const char* f : {"placement.json", "candidates.csv", "automac.csv", "automac.png", "review_sensors.png", "review_modes.png", "summary.png"})
     EXPECT_TRUE(isPng(out / f) || std::string(f).find(".png") == std::string::npos) << f;
   const std::string csv = slurp(out / "candidates.csv");
   EXPECT_EQ(csv.rfind("station,link,x_along_link_m,axis,world_x_m,world_y_m,world_z_m,chosen,score,fixed\n", 0), 0u);
@@ -92,7 +92,7 @@ TEST_F(Cli, PlaceSensorsOnHamsas) {
   EXPECT_EQ(j["target_modes"].size(), 9u);
   EXPECT_EQ(j["candidates"].get<int>(), 270);  // 10 moving bodies x 9 points x 3 axes
   EXPECT_LT(j["max_offdiagonal_automac"].get<double>(), 0.1);
-  for (const char* f : {"review_sensors.png", "review_modes.png", "automac.png"}) EXPECT_TRUE(isPng(out / f)) << f;
+  for (const char* f : {"review_sensors.png", "review_modes.png", "automac.png", "summary.png"}) EXPECT_TRUE(isPng(out / f)) << f;
 }
 
 TEST_F(Cli, PlaceSensorsBadInput) {
