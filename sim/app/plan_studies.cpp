@@ -172,7 +172,7 @@ std::vector<std::string> summaryLines(const PlacementStudyResult& s) {
                        heavy ? "warning: " : "", l.sensor_mass_kg, l.added_kg, mode, 100 * worst, heavy));
     if (!l.iterations.empty()) {
       const LoadedIteration& last = l.iterations.back();
-      out.push_back(last.settled ? strf("Placed on the model carrying them: settled after %zu passes%s", l.iterations.size(),
+      out.push_back(last.settled ? strf("Placed on the model carrying them: settled after %zu pass%s%s", l.iterations.size(), l.iterations.size() == 1 ? "" : "es",
                                         last.tie ? " (a tie)" : "")
                                  : strf("warning: placed on the model carrying them: %s after %zu passes, the last kept",
                                         last.repeats ? "the passes cycle" : "unsettled", l.iterations.size()));

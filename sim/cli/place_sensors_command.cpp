@@ -19,6 +19,7 @@
 #include "sim/io/output_dir.hpp"
 #include "sim/io/placement_report.hpp"
 #include "sim/model/stations.hpp"
+#include "sim/modes/sensor_loading.hpp"
 
 namespace mmv::cli {
 namespace {
@@ -83,8 +84,11 @@ void writeReviewRenders(const FigurePath& out, const PlacementStudy& s, const st
   figures::contactSheetPng(out("review_modes.png"), tiles, cameras, {480, 320, 2}, std::min<int>(4, tiles.size()));
 }
 
-void writeArticleReviewRenders(const FigurePath& out, const ArticleScene& scene, const PlacementStudy& s,
+void writeArticleReviewRenders(const FigurePath& out, const ArticleScene& bare, const PlacementStudy& s,
                                const std::optional<ExciterStudy>& exciter) {
+  // The model the study's target modes are of: the bare article, or the one carrying the
+  // set the iterated placement settled on (its mode numbers and frequencies).
+  const ArticleScene scene = s.carried.empty() ? bare : sceneWithSensors(bare, withNamedSet(s, s.carried), s.loading->sensor_mass_kg);
   const SolvedScene solved = solveScene(scene);
   SimTK::State st = solved.equilibrium.state;
   solved.model->getSystem().realize(st, SimTK::Stage::Position);
@@ -102,7 +106,9 @@ void writeArticleReviewRenders(const FigurePath& out, const ArticleScene& scene,
                      scene.article.model == ArticleModel::Spatial ? "iso" : "front");  // the front view hides z
 }
 
-void writeHamsasReviewRenders(const FigurePath& out, const HamsasScene& scene, const HamsasModes& h, const PlacementStudy& s) {
+void writeHamsasReviewRenders(const FigurePath& out, const HamsasScene& scene, const HamsasModes& unloaded, const PlacementStudy& s) {
+  const HamsasModes h =
+      s.carried.empty() ? unloaded : isolatorCarrying(unloaded, withNamedSet(s, s.carried), s.loading->sensor_mass_kg);
   auto bare = [](DrawList d) {
     d.labels.clear();  // the scene's own sensors would crowd the chosen ones
     return d;

@@ -133,6 +133,12 @@ void matchFeatures(const HamsasSpec& spec, HamsasModes& h) {
 
 }  // namespace
 
+void describeModes(HamsasModes& h) {
+  h.modes.clear();
+  for (int i = 0; i < static_cast<int>(h.solution.omega2.size()); ++i)
+    h.modes.push_back(describeMode(h.model, h.lin, h.solution.shapes.col(i), h.solution.frequencyHz(i)));
+}
+
 HamsasModes analyseHamsas(const HamsasSpec& spec) {
   HamsasModes h;
   h.spec = spec;
@@ -141,9 +147,9 @@ HamsasModes analyseHamsas(const HamsasSpec& spec) {
   h.solution = spatialModes(h.lin);
   const SpatialLinearization& lin = h.lin;
   const ModalSolution& sol = h.solution;
+  describeModes(h);
   for (int i = 0; i < static_cast<int>(sol.omega2.size()); ++i) {
     const Eigen::VectorXd phi = sol.shapes.col(i);
-    h.modes.push_back(describeMode(h.model, lin, phi, sol.frequencyHz(i)));
     if (sol.isStable(i) && !sol.isRigidBody(i)) {
       const Eigen::VectorXd eta = lin.Z.transpose() * phi;
       const Eigen::VectorXd mv = lin.Mz * eta;

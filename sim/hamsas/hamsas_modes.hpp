@@ -50,6 +50,8 @@ struct HamsasModes {
 
 /// Linearizes and solves; identifies the measured features. Throws NumericalError.
 HamsasModes analyseHamsas(const HamsasSpec& spec);
+/// `h.modes` from `h.solution` (energy shares and labels per mode).
+void describeModes(HamsasModes& h);
 
 /// The measured features (docs/sources.md section 3), Hz.
 const std::vector<std::pair<std::string, double>>& hamsasMeasuredFeatures();

@@ -156,6 +156,7 @@ HamsasModes isolatorCarrying(const HamsasModes& h, const PlacementStudy& study, 
   loaded.model = isolatorWithSensors(h.model, study, mass);
   loaded.lin = linearizeSpatial(loaded.model, h.spec.ideal_joints);
   loaded.solution = spatialModes(loaded.lin);
+  describeModes(loaded);
   return loaded;
 }
 

@@ -45,8 +45,8 @@ SpatialSpec isolatorWithSensors(const SpatialSpec& model, const PlacementStudy& 
 SensorLoading hamsasSensorLoading(const HamsasModes& h, const PlacementStudy& study, double sensor_mass_kg);
 
 /// The isolator `h` with a point mass `mass` at each chosen point of `study`, linearized
-/// again at its design configuration and solved (its coordinates at the loaded bodies'
-/// mass centres).
+/// again at its design configuration, solved and its modes described (its coordinates at
+/// the loaded bodies' mass centres; no measured features).
 HamsasModes isolatorCarrying(const HamsasModes& h, const PlacementStudy& study, double mass);
 
 /// As runPlacement for an article; `options.spacing_m` does not apply (the points are

@@ -387,23 +387,30 @@ PlacementStudy placeOnLoadedModel(const PlacementStudy& bare,
     iterations.push_back(step);
     // A tie keeps the set the model carried, evaluated on that model.
     chosen = step.tie ? placeCarrying(chosen, true) : std::move(next);
+    chosen.carried = seen.back();
     if (step.settled || step.repeats) break;
     seen.push_back(set);
   }
   return chosen;
 }
 
-PlacementStudy withChosenSet(const PlacementStudy& bare, const PlacementStudy& chosen) {
-  PlacementStudy on_bare = bare;
-  on_bare.result.kept_blocks.clear();
-  for (int b : chosen.result.kept_blocks) {
-    const PlacementCandidate& c = chosen.candidates[static_cast<std::size_t>(b)];
-    const auto same = std::find_if(bare.candidates.begin(), bare.candidates.end(),
-                                   [&](const PlacementCandidate& d) { return d.station == c.station && d.axis == c.axis; });
-    MMV_DEMAND(same != bare.candidates.end());
-    on_bare.result.kept_blocks.push_back(static_cast<int>(same - bare.candidates.begin()));
+PlacementStudy withNamedSet(const PlacementStudy& s, const std::vector<std::string>& names) {
+  PlacementStudy out = s;
+  out.result.kept_blocks.clear();
+  for (const std::string& name : names) {
+    const auto same = std::find_if(s.candidates.begin(), s.candidates.end(),
+                                   [&](const PlacementCandidate& d) { return d.station + " " + d.axis == name; });
+    MMV_DEMAND(same != s.candidates.end());
+    out.result.kept_blocks.push_back(static_cast<int>(same - s.candidates.begin()));
   }
-  return on_bare;
+  return out;
+}
+
+PlacementStudy withChosenSet(const PlacementStudy& bare, const PlacementStudy& chosen) {
+  std::vector<std::string> names;  // in chosen's order
+  for (int b : chosen.result.kept_blocks)
+    names.push_back(chosen.candidates[static_cast<std::size_t>(b)].station + " " + chosen.candidates[static_cast<std::size_t>(b)].axis);
+  return withNamedSet(bare, names);
 }
 
 PlacementStudy runPlacement(const ArticleScene& scene, const PlacementOptions& o) {

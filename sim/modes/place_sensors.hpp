@@ -159,6 +159,9 @@ struct PlacementStudy {
   std::optional<SensorLoading> loading;  ///< options.sensor_mass_kg > 0
   InstrumentSpec instrument;             ///< what is placed (options.instrument)
   int requested = 0;                     ///< the count asked for (the separation may leave room for fewer)
+  /// The set ("station axis", sorted) whose sensors' masses the study's model carries
+  /// (options.iterate_loaded; empty: the bare model): its target modes are that model's.
+  std::vector<std::string> carried;
   bool strain = false;                   ///< strain gauges or films (options.strain_span_m), not accelerometers
   double strain_span_m = 0;              ///< their length
 };
@@ -200,5 +203,7 @@ std::vector<std::string> chosenSet(const PlacementStudy& study);
 /// `bare` with `chosen`'s set: the candidates of `bare` at the same stations and axes
 /// (the candidates are the same physical points on the bare and the loaded model).
 PlacementStudy withChosenSet(const PlacementStudy& bare, const PlacementStudy& chosen);
+/// `s` with the set `names` ("station axis", each one of its candidates) chosen.
+PlacementStudy withNamedSet(const PlacementStudy& s, const std::vector<std::string>& names);
 
 }  // namespace mmv

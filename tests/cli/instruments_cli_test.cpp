@@ -64,6 +64,31 @@ TEST_F(Cli, IteratedPlacementReportsItsPasses) {
   EXPECT_NE(text.out.find("Target modes of the model carrying them (Hz):"), std::string::npos);
 }
 
+// The review renders of an iterated placement draw the model its target modes are of
+// (the one carrying the settled set), not the bare one: the mode panels' titles, read
+// from the figure layout log, carry the target frequencies placement.json lists.
+TEST_F(Cli, AnIteratedPlacementsModePanelsAreTheCarryingModels) {
+  const fs::path out = dir_ / "iterated", log = dir_ / "layout.jsonl";
+  const Result r = run("place-sensors " + (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string() +
+                           " --below-hz 5 --count 12 --sensor-mass 0.1 --iterate-loaded --out " + out.string(),
+                       "MMVLAB_FIGURE_LAYOUT=" + log.string() + " ");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(std::ifstream(out / "placement.json"));
+  std::ifstream in(log);
+  std::string panels;
+  for (std::string line; std::getline(in, line);)
+    if (line.find("review_modes.png") != std::string::npos) panels = line;
+  ASSERT_FALSE(panels.empty());
+  const auto f = j["target_frequencies_hz"];
+  ASSERT_EQ(f.size(), 9u);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    char title[64];
+    std::snprintf(title, sizeof title, "mode %zu: %.4g Hz", k + 1, f[k].get<double>());
+    EXPECT_NE(panels.find(title), std::string::npos) << title;
+  }
+  EXPECT_EQ(panels.find("mode 1: 0.05083 Hz"), std::string::npos);  // the bare isolator's mode 1
+}
+
 TEST_F(Cli, InstrumentRequestsAreRefusedByName) {
   const std::string hamsas = (fs::path(MMVLAB_SOURCE_DIR) / "scenes" / "hamsas.yaml").string();
   struct Refusal {
