@@ -92,7 +92,11 @@ void addProgramLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const LinearModel lm = buildLinearModel(scene, inputs, outputs, damping, /*prepare_responses=*/false);
   const double duration = scene.simulation.duration;
   const double dt_max = std::min(1 / scene.simulation.sample_rate_hz, f_max > 0 ? 1 / (20 * f_max) : 1 / scene.simulation.sample_rate_hz);
-  const int steps = std::max(1, static_cast<int>(std::ceil(duration / dt_max)));
+  // A CSV program's content reaches its rows' Nyquist frequency: the samples are capped
+  // (the response costs O(samples x states^2)), and the note says when that binds.
+  constexpr double kMaxSamples = 200000;
+  const bool capped = duration / dt_max > kMaxSamples;
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::min(duration / dt_max, kMaxSamples))));
   const double dt = duration / steps;
   const Eigen::MatrixXd run = timeResponse(lm.full, [&](double t) {
     Eigen::VectorXd u(static_cast<Eigen::Index>(programs.size()));
@@ -111,7 +115,8 @@ void addProgramLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     stinger = std::max(stinger, std::abs(programs[0]->position(t) - sh.hardware.armature_mass * a));
   }
   const std::string model = strf("flexible linear model with the %.3g kg armature, from rest over the scene's %.3g s run "
-                                 "(%d samples)%s", sh.hardware.armature_mass, duration, steps + 1,
+                                 "(%d samples%s)%s", sh.hardware.armature_mass, duration, steps + 1,
+                                 capped ? strf(", capped: content above %.3g Hz is sampled under 20 points a period", 1 / (20 * dt)).c_str() : "",
                                  programs.size() > 1 ? ", the table's program included" : "");
   out.push_back(makeLine("shaker", "shaker.program_stroke", "the armature's travel under the shaker's program", travel, sh.hardware.stroke,
                          "m", strf("%s; largest at t = %.3g s; the stinger passes up to %.4g N", model.c_str(), at_t, stinger),

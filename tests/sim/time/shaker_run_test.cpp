@@ -257,6 +257,16 @@ TEST(ShakerRun, CheckPredictsTheProgramsTravelBeforeTheRun) {
   std::string short_stroke = kShakenArm;
   short_stroke.replace(short_stroke.find("armature_mass_kg: 0.5"), 21, strf("armature_mass_kg: 0.5\n  stroke_m: %.6g", 0.99 * peak));
   EXPECT_EQ(travel(runCheck(std::get<ArticleScene>(parseScene(short_stroke, "arm.yaml"))))->verdict, Verdict::Fail);
+  // The samples are capped at 200000 (20 a period of the program's highest frequency
+  // over the 3 s run): 3333.33 Hz needs 199999.98 of them, 3334 Hz 200040; the note says
+  // when the cap binds.
+  for (const auto& [hz, capped] : {std::pair{"3333.333", false}, std::pair{"3334", true}}) {
+    std::string fast = kShakenArm;
+    fast.replace(fast.find("frequency_hz: 1.0"), 17, std::string("frequency_hz: ") + hz);
+    const CheckReport c = runCheck(std::get<ArticleScene>(parseScene(fast, "arm.yaml")));
+    ASSERT_NE(travel(c), nullptr);
+    EXPECT_EQ(travel(c)->note.find("capped") != std::string::npos, capped) << hz << ": " << travel(c)->note;
+  }
 
   // The article on the table (its hinge dampers), shaken at link 1's 0.6 m node of 8
   // segments by a 2 s, 10 N sine at 3 Hz near mode 2, the table still.
