@@ -288,6 +288,18 @@ TEST(ShakerRun, CheckPredictsTheProgramsTravelBeforeTheRun) {
   // Linear against nonlinear (gravity's preload and the closure held exactly), and the
   // run's samples against the check's finer ones.
   EXPECT_NEAR(predicted->demand, run.shaker->peak_stroke_m, 0.02 * run.shaker->peak_stroke_m);
+
+  // With the table moving too (its 2 Hz sine, 0.5 mm) the run's travel (11.2 mm) and the
+  // linear prediction (0.61 mm) disagree, unexplained yet: the line is not checked, and
+  // says why, rather than print a number.
+  const ArticleScene both = std::get<ArticleScene>(loadSceneFile(
+      table, {"base.motion.amplitude=0.0005", "shaker.at=link1@0.61m", "shaker.direction=[0.8745, 0.485, 0]",
+              "shaker.program={type: sine, amplitude: 10, frequency_hz: 3}", "simulation.duration=2", "simulation.sample_rate_hz=400"},
+      eight));
+  const CheckReport both_check = runCheck(both);
+  ASSERT_NE(travel(both_check), nullptr);
+  EXPECT_EQ(travel(both_check)->verdict, Verdict::NotChecked);
+  EXPECT_NE(travel(both_check)->note.find("run `mmvlab simulate`"), std::string::npos);
 }
 
 }  // namespace
