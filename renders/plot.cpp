@@ -263,7 +263,11 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& gi
     // Where this series drew (its line's core and markers), to tell later what of it shows.
     masks.emplace_back(img.size(), CV_8UC1, cv::Scalar(0));
     drawSeriesLine(masks.back(), s, cv::Scalar(255), px, py, usable, 2, cv::LINE_8);
-    if ((s.x.size() < 80 && !s.dashed) || s.markers_only)  // a dashed line (a limit) has no markers
+    // A dashed line (a limit) has no markers, unless it is one point: a line of one point
+    // draws nothing, and its legend entry would name an invisible series.
+    std::size_t usable_points = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i) usable_points += usable(s.x[i], s.y[i]) ? 1 : 0;
+    if ((s.x.size() < 80 && !s.dashed) || s.markers_only || usable_points == 1)
       for (std::size_t i = 0; i < s.x.size(); ++i)
         if (usable(s.x[i], s.y[i])) {
           const cv::Point at(px(s.x[i]), py(s.y[i]));

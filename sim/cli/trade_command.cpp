@@ -22,9 +22,13 @@ namespace {
 /// the Pareto front.
 void writeTradePlot(const std::string& path, const TradeStudy& s) {
   std::map<std::string, render::Series> by;
-  render::Series front{"Pareto front", {}, {}};
-  front.dashed = true;
-  front.colour_index = 0;  // black: never an integrator's colour
+  // The front: a black ring on each of its runs (the legend's entry), joined by a dashed
+  // line when it has two or more. A dashed line alone drew nothing when one run dominated
+  // every other (CI's layout check caught the empty legend entry on a 0.3 s trade).
+  render::Series front{"Pareto front", {}, {}}, front_line{"", {}, {}};
+  front.markers_only = front.hollow = true;
+  front.colour_index = front_line.colour_index = 0;  // black: never an integrator's colour
+  front_line.dashed = true;
   // Each integrator's colour is its place in the integrator table (from 1), in every trade
   // plot; a modal rung's follows the table's (the palette's 13 colours after black repeat).
   auto colourOf = [](const TradeRun& r) {
@@ -53,12 +57,14 @@ void writeTradePlot(const std::string& path, const TradeStudy& s) {
     front.x.push_back(r->seconds);
     front.y.push_back(std::max(r->error_m, 1e-15));
   }
+  front_line.x = front.x, front_line.y = front.y;
   std::vector<render::Series> all;
   double t0 = INFINITY, t1 = -INFINITY;
   for (auto& [name, series] : by) {
     all.push_back(series);
     for (double x : series.x) t0 = std::min(t0, x), t1 = std::max(t1, x);
   }
+  if (front.x.size() > 1) all.push_back(front_line);
   all.push_back(front);
   if (s.target_m > 0 && t1 >= t0) {  // the error the cheapest run was named for (issue 36: no target line)
     render::Series target{strf("target %.2g m", s.target_m), {t0, t1}, {s.target_m, s.target_m}};

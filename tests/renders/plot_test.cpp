@@ -68,6 +68,18 @@ TEST(Plot, CoincidentSeriesShareAnEntryAndNearOnesBothShow) {
     EXPECT_LE(t1[1].get<int>() + t1[3].get<int>(), fig["width"].get<int>()) << t1;
 }
 
+// CI's layout check found trade.png's "Pareto front" (a dashed line) drawn with 0 pixels
+// when one run dominated all others: a line of one point. Such a series is a marker.
+TEST(Plot, ADashedSeriesOfOnePointIsDrawn) {
+  Series runs{"runs", {1, 2, 3}, {3, 1, 2}}, front{"front", {2}, {1}};
+  runs.markers_only = true;
+  front.dashed = true;
+  front.colour_index = 0;
+  const auto fig = layoutOf([&](const std::string& p) { writeLinePlotPng(p, {runs, front}, "t", "x", "y"); });
+  ASSERT_EQ(fig["legend"].size(), 2u);
+  for (const auto& e : fig["legend"]) EXPECT_GE(e[5].get<long>(), 10) << e;
+}
+
 // Point labels (trade's tolerances) never overprint: CI's slower machine put two trade
 // runs a pixel apart and "1e-03" was drawn over "1e-04".
 TEST(Plot, PointLabelsOfNearbyPointsDoNotOverlap) {
