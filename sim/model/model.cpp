@@ -353,6 +353,23 @@ void Model::fitClosureCoordinates(SimTK::State& s) {
   system_.realize(reference_state_, SimTK::Stage::Position);
 }
 
+void Model::startClosureSpeeds(SimTK::State& s) const {
+  system_.realize(s, SimTK::Stage::Time);
+  system_.prescribeQ(s);
+  system_.realize(s, SimTK::Stage::Position);
+  system_.prescribeU(s);
+  system_.realize(s, SimTK::Stage::Velocity);
+  bool moved = false;
+  for (const auto& c : closures_) {
+    if (c.fit_coordinate < 0) continue;
+    const SimTK::Vec3 va = matter_.getMobilizedBody(c.mobod_a).findStationVelocityInGround(s, c.station_a);
+    const SimTK::Vec3 vb = matter_.getMobilizedBody(c.mobod_b).findStationVelocityInGround(s, c.station_b);
+    s.updU()[uindex_[c.fit_coordinate]] += ~c.directions[0] * (va - vb);
+    moved = true;
+  }
+  if (moved) system_.realize(s, SimTK::Stage::Velocity);
+}
+
 bool Model::pointMovesAlongZ(const Closure& c) const {
   std::vector<SimTK::MobilizedBodyIndex> b{c.mobod_a};
   std::vector<SimTK::Vec3> st{c.station_a};

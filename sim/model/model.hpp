@@ -221,6 +221,13 @@ class Model {
   /// the topology: states made before are invalid; returns a new state with `at`'s q.
   /// Statics, linearization and modes keep their own treatment of closures.
   SimTK::State addClosureConstraints(const SimTK::State& at);
+  /// A time run's start in `s` (time set): the prescribed speeds (a table's program may
+  /// start moving), then each fitted coordinate's speed (the shaker's armature) set so that
+  /// its closure's point moves with its partner's along the held direction. Without it a
+  /// table starting in motion left the armature at rest against a moving stinger: Simbody's
+  /// integrators projected the mismatch onto the article (a kick of about 1 mm/s) and
+  /// SUNDIALS' drifted off the closure (11 mm over 2 s).
+  void startClosureSpeeds(SimTK::State& s) const;
 
   // --- use ----------------------------------------------------------------------
   const SimTK::MultibodySystem& getSystem() const { return system_; }

@@ -347,7 +347,11 @@ SimTK::State initialState(Model& model, const SimulationSpec& spec, const std::o
   }
   s.updU() = 0;
   s.setTime(0);
-  if (!model.getClosures().empty()) s = model.addClosureConstraints(s);
+  if (!model.getClosures().empty()) {
+    s = model.addClosureConstraints(s);
+    s.setTime(0);
+    model.startClosureSpeeds(s);
+  }
   return s;
 }
 
