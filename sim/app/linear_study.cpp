@@ -19,13 +19,6 @@
 namespace mmv::app {
 namespace {
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  for (std::string p; std::getline(ss, p, sep);) out.push_back(p);
-  return out;
-}
-
 /// x, y, z (0..2) and, where `rotations`, rx, ry, rz (3..5: about world x, y, z). Out of
 /// the plane (z, rx, ry) the spatial model only (checked with the model).
 int axisOf(const std::string& a, const std::string& what, bool translations, bool rotations) {
@@ -56,31 +49,32 @@ InputSpec parseInput(const std::string& text, const std::string& option, const A
   throw UsageError(what + ": expected table_x, table_y, table_z, torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz or shaker");
 }
 
-/// strain:A:B, two stations of one link (sim/linear/state_space.hpp, OutputSpec::span_end):
-/// the span and the face's distance from the neutral axis, from the scene.
-OutputSpec strainOutput(const ArticleScene& scene, const std::string& text, const std::string& a, const std::string& b,
+/// strain:A:B[:in|out], two stations of one link and the bending read (sim/linear/
+/// state_space.hpp, OutputSpec::span_end): the span and the face's distance from the
+/// neutral axis, from the scene.
+OutputSpec strainOutput(const ArticleScene& scene, const std::string& text, const std::vector<std::string>& p,
                         const std::string& what) {
-  if (scene.article.model != ArticleModel::Planar)
-    throw UsageError(what + ": a strain output is built for the planar model only (its in-plane bending)");
+  const std::optional<bool> out = p.size() == 4 ? strainBendsOutOfPlane(p[3]) : std::optional<bool>(false);
+  if (p.size() < 3 || p.size() > 4 || !out)
+    throw UsageError(what + ": expected strain:STATION:STATION[:in|out], two stations of one link and the bending read (in "
+                            "the plane, the default, or out of it), e.g. strain:link3a@0.1m:link3a@0.3m");
   std::string why;
-  const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why);
+  const std::optional<StrainSpan> span = strainSpan(scene.article, p[1], p[2], why, *out);
   if (!span) throw UsageError(what + ": " + why);
-  OutputSpec o{text, OutputKind::Displacement, a, 5, false};
-  o.span_end = b;
+  OutputSpec o{text, OutputKind::Displacement, p[1], 5, false};
+  o.span_end = p[2];
   o.surface_m = span->surface_m;
   o.span_m = span->x_b - span->x_a;
+  o.out_of_plane = *out;
   return o;
 }
 
 OutputSpec parseOutput(const std::string& text, const std::string& option, const ArticleScene& scene) {
   const auto p = split(text, ':');
   const std::string what = option + " " + text;
-  if (p[0] == "strain") {
-    if (p.size() != 3) throw UsageError(what + ": expected strain:STATION:STATION, two stations of one link, e.g. strain:link3a@0.1m:link3a@0.3m");
-    return strainOutput(scene, text, p[1], p[2], what);
-  }
+  if (p[0] == "strain") return strainOutput(scene, text, p, what);
   if (p.size() < 2 || p.size() > 3)
-    throw UsageError(what + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] or strain:STATION:STATION");
+    throw UsageError(what + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] or strain:STATION:STATION[:in|out]");
   OutputSpec o{text, OutputKind::Acceleration, p[0], axisOf(p[1], what, true, true), true};
   if (p.size() == 3) {
     if (p[2] == "disp") o = {text, OutputKind::Displacement, p[0], o.axis, false};

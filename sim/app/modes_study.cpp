@@ -49,16 +49,15 @@ ModesStudy articleModes(ArticleScene scene, const ModesRequest& r) {
   opt.points = checkedPoints(r.points, scene.article, optionName(r.front, "--points"));
   for (const std::string& text : r.strains) {
     const std::string what = optionName(r.front, "--strain") + " " + text;
-    const auto colon = text.find(':');
-    if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
-      throw UsageError(what + ": expected A:B, two stations of one link, e.g. link3a@0.1m:link3a@0.5m");
-    if (scene.article.model != ArticleModel::Planar)
-      throw UsageError(what + ": a strain is built for the planar model only (its in-plane bending)");
+    const auto p = split(text, ':');
+    const std::optional<bool> out = p.size() == 3 ? strainBendsOutOfPlane(p[2]) : std::optional<bool>(false);
+    if (p.size() < 2 || p.size() > 3 || !out)
+      throw UsageError(what + ": expected A:B[:in|out], two stations of one link and the bending read (in the plane, the "
+                              "default, or out of it), e.g. link3a@0.1m:link3a@0.5m");
     std::string why;
-    const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
-    const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why);
+    const std::optional<StrainSpan> span = strainSpan(scene.article, p[0], p[1], why, *out);
     if (!span) throw UsageError(what + ": " + why);
-    opt.strains.push_back({text, a, b, span->surface_m, span->x_b - span->x_a});
+    opt.strains.push_back({text, p[0], p[1], span->surface_m, span->x_b - span->x_a, *out});
   }
   opt.damping = scene.damping;
   ModesReport rep = runModes(scene, opt);

@@ -200,8 +200,6 @@ void strainOptions(const Scene& scene, const PlacementRequest& r, PlacementOptio
   checkRange(r.front, "--strain-span", r.strain_span_m, 1e-3, 100);
   const auto* article = std::get_if<ArticleScene>(&scene);
   if (!article) throw UsageError(flag + " applies to the article's scenes (the isolator's bodies are rigid: nothing bends)");
-  if (article->article.model != ArticleModel::Planar)
-    throw UsageError(flag + ": strain sensors are placed on the planar model only (their in-plane bending; drop --set model=spatial)");
   const auto refuse = [&](bool given, const char* other, const std::string& why) {
     if (given) throw UsageError(flag + " and " + opt(other) + ": " + why);
   };

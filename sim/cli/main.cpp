@@ -68,8 +68,9 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
                 "Comma-separated points or stations whose mode shapes are tabulated, e.g. link1@0.5,link3a@0.762m,link2.tip")
       ->delimiter(',');
   m->add_option("--strain", modes.strains,
-                "A:B, two stations of one link (repeatable): each mode's mean surface strain over the span, the piezo film's "
-                "or a gauge's reading per unit modal coordinate, e.g. link3a@0.1m:link3a@0.5m");
+                "A:B[:in|out], two stations of one link (repeatable): each mode's mean surface strain over the span, the piezo "
+                "film's or a gauge's reading per unit modal coordinate, bending in the plane (default) or out of it (spatial "
+                "model), e.g. link3a@0.1m:link3a@0.5m");
   m->add_flag("--no-error-estimate", modes.no_error_estimate,
               "Skip each mode's discretization error estimate (the scene solved again with segments / 2 and / 4)");
   m->add_option("--target-error", modes.target_error,
@@ -141,8 +142,8 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
                     "shaker (the scene's, with its armature) (default: table_x, table_y)");
     cmd->add_option("--output", lin.outputs,
                     "POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] (z, rx, ry: spatial model; default: every link tip, absolute "
-                    "acceleration), or strain:STATION:STATION, the mean bending strain over a span of one link (a gauge or "
-                    "piezo film; planar model)");
+                    "acceleration), or strain:STATION:STATION[:in|out], the mean bending strain over a span of one link (a "
+                    "gauge or piezo film; out: bending out of the plane, spatial model)");
     cmd->add_option("--from", lin.f_min, "Lowest frequency, Hz")->capture_default_str();
     cmd->add_option("--to", lin.f_max, "Highest frequency, Hz")->capture_default_str();
     cmd->add_option("--points", lin.points, "Log-spaced frequencies, 2 .. 100000")->capture_default_str();
@@ -265,7 +266,7 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
                 "The accelerometer placed, from the scene's instruments: (default: accelerometer, the report's): its mass loads "
                 "the model, its range and resolution set the shaker's levels, a triaxial one (axes: 3) places blocks");
   p->add_flag("--iterate-loaded", ps.iterate_loaded, "Place again on the model carrying the sensors' masses until the set carries itself");
-  p->add_option("--strain-span", ps.strain_span, "Place strain gauges or films this long, m, not accelerometers (planar, EfI)");
+  p->add_option("--strain-span", ps.strain_span, "Place strain gauges or films this long, m, not accelerometers (EfI; spatial: each span's in- and out-of-plane faces)");
   p->add_option("--tam", ps.tam,
                 "Test-analysis models on the chosen sensors, with self- and cross-orthogonality against NASA-STD-5002's "
                 "criteria: guyan, irs, serep or all, comma-separated")

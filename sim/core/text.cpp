@@ -144,6 +144,13 @@ bool isValidUtf8(const std::string& s) {
   return true;
 }
 
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string p; std::getline(ss, p, sep);) out.push_back(p);
+  return out;
+}
+
 std::string didYouMean(const std::string& name, const std::vector<std::string>& known) {
   std::size_t best_d = 3;  // at most two edits away
   std::vector<const std::string*> best;

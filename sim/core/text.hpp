@@ -28,6 +28,8 @@ std::string shortest(double v);
 /// " (did you mean 'x'?)" for the entry of `known` closest to `name` (at most two
 /// edits away, Levenshtein; all entries at that distance, up to four: " (did you mean
 /// 'a', 'b' or 'c'?)"), or "" when none is that close.
+/// `s` cut at every `sep` ("a:b" gives a, b; "a:" gives a only, as std::getline does).
+std::vector<std::string> split(const std::string& s, char sep);
 std::string didYouMean(const std::string& name, const std::vector<std::string>& known);
 
 /// `s` safe to print on a terminal: control bytes and bytes that are not valid UTF-8

@@ -34,7 +34,7 @@ const std::vector<Field<PlacementChannel>>& placementChannelFields() {
       {"direction_x", "1", "%.6f", "the measuring axis, world x component", [](const C& c) -> Opt { return json(c.direction->world[0]); }},
       {"direction_y", "1", "%.6f", "the measuring axis, world y component", [](const C& c) -> Opt { return json(c.direction->world[1]); }},
       {"direction_z", "1", "%.6f", "the measuring axis, world z component", [](const C& c) -> Opt { return json(c.direction->world[2]); }},
-      {"quantity", "", "%s", "what it measures: acceleration, or strain (a gauge or film, --strain-span; its station A:B, its node the span's middle, its direction the link's axis there)",
+      {"quantity", "", "%s", "what it measures: acceleration, or strain (a gauge or film, --strain-span; its station A:B, or A:B:out for the +z face's bending out of the plane (spatial model), its node the span's middle, its direction the link's axis there)",
        [](const C& c) -> Opt { return json(c.direction->axis == "strain" ? "strain" : "acceleration"); }},
       {"unit", "", "%s", "of the reading: m/s^2, or m/m", [](const C& c) -> Opt { return json(c.direction->axis == "strain" ? "m/m" : "m/s^2"); }},
       {"sensitivity_mv_per_unit", "mV/(m/s^2)", "%.6g", "the sensor's calibration, for the lab to fill (empty)",

@@ -124,9 +124,11 @@ void outputMatrices(const ArticleScene& scene, const Model& model, const SimTK::
     const OutputSpec& out = outputs[r];
     if (out.isStrain()) {  // the mean curvature between two stations, at the face
       MMV_DEMAND(out.kind == OutputKind::Displacement && out.axis == 5 && out.span_m != 0 && out.surface_m > 0);
-      const Eigen::RowVectorXd a = pointRow(scene, model, st, dofs, out.point, 5, "output " + out.name),
-                               b = pointRow(scene, model, st, dofs, out.span_end, 5, "output " + out.name);
-      so.Cd.row(r) = -out.surface_m / out.span_m * (b - a) * Z;
+      std::string error;
+      const std::optional<PointRef> a = PointRef::resolve(model, scene.article, out.point, error),
+                                    b = PointRef::resolve(model, scene.article, out.span_end, error);
+      if (!a || !b) throw SceneError(scene.source + ": output " + out.name + ": " + error);
+      so.Cd.row(r) = strainRow(*a, *b, st, dofs, out.surface_m / out.span_m, out.out_of_plane) * Z;
       continue;
     }
     const Eigen::RowVectorXd P = pointRow(scene, model, st, dofs, out.point, out.axis, "output " + out.name) * Z;

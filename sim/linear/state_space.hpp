@@ -68,15 +68,18 @@ struct OutputSpec {
   /// world x, y, z (rad, rad/s, rad/s^2: the point's body's, or a station's interpolated).
   int axis = 0;
   bool absolute = false;  ///< add the base's own motion (the base translates only).
-  /// A bending strain gauge or piezo film over a span of one link (`strain:A:B`): its
-  /// mean surface strain (m/m) on the section's +y face (local y, in the plane),
+  /// A bending strain gauge or piezo film over a span of one link (`strain:A:B[:in|out]`):
+  /// its mean surface strain (m/m) on the section's +y face (local y, in the plane),
   ///     eps = -c (theta_B - theta_A) / (x_B - x_A),
   /// the mean curvature between two stations times the distance c of the face from the
-  /// neutral axis (compression where the link bends towards +y). `point` is station A,
-  /// `span_end` station B; kind Displacement, axis 5 (the in-plane rotation).
+  /// neutral axis (compression where the link bends towards +y); out of the plane (the
+  /// spatial model) on the +z face, eps = +c (phi_B - phi_A) / (x_B - x_A), phi about
+  /// local y (sim/model/stations.hpp strainRow). `point` is station A, `span_end`
+  /// station B; kind Displacement, axis 5.
   std::string span_end;
-  double surface_m = 0;  ///< c: the section's half depth in the plane (or its radius).
+  double surface_m = 0;  ///< c: the section's half depth (in the plane) or half width (out of it), or its radius.
   double span_m = 0;     ///< x_B - x_A along the link (nonzero).
+  bool out_of_plane = false;
   bool isStrain() const { return !span_end.empty(); }
 };
 

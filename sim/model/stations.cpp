@@ -1,6 +1,7 @@
 #include "sim/model/stations.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "sim/core/errors.hpp"
 
@@ -221,6 +222,23 @@ Eigen::MatrixXd PointRef::translationJacobian(const SimTK::State& s, const std::
 Eigen::MatrixXd PointRef::rotationJacobian(const SimTK::State& s, const std::vector<int>& dofs) const {
   if (station_) return station_->rotationJacobian(s, dofs);
   return model_->calcFrameJacobians(s, {point_->mobod}, {point_->station_B}, dofs).topRows(3);
+}
+
+Eigen::RowVectorXd strainRow(const PointRef& a, const PointRef& b, const SimTK::State& s, const std::vector<int>& dofs,
+                             double c_over_span, bool out_of_plane) {
+  const int k = out_of_plane ? 1 : 2;
+  auto turn = [&](const PointRef& p) {
+    const SimTK::Vec3 n = p.localAxis(s, k);
+    return Eigen::RowVectorXd(Eigen::RowVector3d(n[0], n[1], n[2]) * p.rotationJacobian(s, dofs));
+  };
+  return (out_of_plane ? c_over_span : -c_over_span) * (turn(b) - turn(a));
+}
+
+double strainReading(const PointRef& a, const PointRef& b, const SimTK::State& s, double c_over_span, bool out_of_plane) {
+  const SimTK::Vec3 xb = b.localAxis(s, 0);
+  const double along = ~xb * a.localAxis(s, 0);
+  if (out_of_plane) return c_over_span * std::atan2(-(~xb * a.localAxis(s, 2)), along);
+  return -c_over_span * std::atan2(~xb * a.localAxis(s, 1), along);
 }
 
 }  // namespace mmv

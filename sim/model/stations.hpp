@@ -105,4 +105,17 @@ class PointRef {
   std::optional<StationPoint> station_;
 };
 
+/// A strain gauge's or film's mean surface strain over a span between stations A and B
+/// of one link (sim/scene/stations.hpp StrainSpan; `c_over_span` = c / (x_B - x_A)):
+///  - in the plane, on the section's +y face: eps = -c (theta_B - theta_A) / span, theta
+///    the rotation about the section's normal (local z; world z on the planar model);
+///  - out of the plane (spatial model), on the section's +z face: eps = +c (phi_B - phi_A)
+///    / span, phi the rotation about local y (a positive phi tilts the link towards -z).
+/// Per unit rate of `dofs` (a linear row, at `s`):
+Eigen::RowVectorXd strainRow(const PointRef& a, const PointRef& b, const SimTK::State& s, const std::vector<int>& dofs,
+                             double c_over_span, bool out_of_plane);
+/// The same of a state, exact for any rotation: B's link direction in A's section frame,
+/// its turn about A's local z (in the plane) or y (out of it).
+double strainReading(const PointRef& a, const PointRef& b, const SimTK::State& s, double c_over_span, bool out_of_plane);
+
 }  // namespace mmv

@@ -125,12 +125,16 @@ bool keptOut(const PlacementOptions& o, const std::string& link, double x, doubl
 /// The strain candidates (PlacementOptions::strain_span_m): on every flexible link, spans
 /// of that length from the root every `spacing`, each one block and one row, the mean
 /// surface strain over it per unit modal coordinate (frf's and modes' strain row,
-/// -c / span (theta_B - theta_A), from the stations' interpolated rotations: no mesh in
-/// it), measuring along the link's axis at the span's middle, where its node sits.
+/// strainRow, from the stations' interpolated rotations: no mesh in it), measuring along
+/// the link's axis at the span's middle, where its node sits. On the spatial model each
+/// span is two candidates, the +y face's bending in the plane and the +z face's out of
+/// it (named A:B:out); both may be chosen (co-located blocks never conflict: the faces
+/// do not overlap).
 void addStrainCandidates(const ArticleScene& scene, const Model& model, const SimTK::State& st, const SolvedScene& s,
                          const Eigen::MatrixXd& shapes, const PlacementOptions& o, PlacementStudy& study, PlacementProblem& p,
                          StationRows& acc) {
   const double L = o.strain_span_m;
+  const bool spatial = scene.article.model == ArticleModel::Spatial;
   auto station = [](const std::string& link, double x) { return strf("%s@%.6gm", link.c_str(), x); };
   for (std::size_t li = 0; li < scene.article.links.size(); ++li) {
     const LinkSpec& link = scene.article.links[li];
@@ -141,33 +145,34 @@ void addStrainCandidates(const ArticleScene& scene, const Model& model, const Si
       const double xa = i * o.spacing_m, xb = std::min(xa + L, link.length), mid = 0.5 * (xa + xb);
       if (keptOut(o, link.name, xa, xb)) continue;
       const std::string a = station(link.name, xa), b = station(link.name, xb);
-      std::string why;
-      const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why);
-      if (!span) throw OptionError("--strain-span", strf(" %g: link %s cannot carry one: %s", L, link.name.c_str(), why.c_str()));
       std::string error;
       const std::optional<PointRef> ra = PointRef::resolve(model, scene.article, a, error),
                                     rb = PointRef::resolve(model, scene.article, b, error),
                                     rm = PointRef::resolve(model, scene.article, station(link.name, mid), error);
       MMV_DEMAND(ra && rb && rm);
-      const Eigen::RowVectorXd reading = -span->surface_m / (xb - xa) *
-                                         (rb->rotationJacobian(st, s.linearized.dofs).row(2) - ra->rotationJacobian(st, s.linearized.dofs).row(2));
-      PlacementCandidate c{a + ":" + b, link.name, mid, "strain", 0, 0, 0, rho_a * (xb - xa),
-                           static_cast<int>(li + 1) * 100000 + static_cast<int>(std::lround(1e3 * mid)), {}};
-      const SimTK::Vec3 pos = rm->position(st), e = rm->localAxis(st, 0);
-      c.world_x = pos[0], c.world_y = pos[1], c.world_z = pos[2];
-      const Eigen::MatrixXd u = rm->translationJacobian(st, s.linearized.dofs, 2) * shapes;  // the middle's motion, for the drawings
-      for (Eigen::Index j = 0; j < u.cols(); ++j) c.shape.push_back({u(0, j), u(1, j), 0.0});
-      const Eigen::RowVectorXd row = reading * shapes;
-      c.strain.assign(row.data(), row.data() + row.size());
-      study.candidates.push_back(c);
-      const int block = static_cast<int>(study.candidates.size()) - 1;
-      acc.rows.push_back(row);
-      acc.readings.push_back(reading);
-      acc.names.push_back(c.station + " strain");
-      acc.masses.push_back(c.mass_kg);
-      p.block.push_back(block);
-      p.block_at.push_back(Eigen::Vector3d(pos[0], pos[1], pos[2]));
-      study.directions.push_back({block, "strain", {e[0], e[1], e[2]}});
+      for (const bool out : spatial ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
+        std::string why;
+        const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why, out);
+        if (!span) throw OptionError("--strain-span", strf(" %g: link %s cannot carry one: %s", L, link.name.c_str(), why.c_str()));
+        const Eigen::RowVectorXd reading = strainRow(*ra, *rb, st, s.linearized.dofs, span->surface_m / (xb - xa), out);
+        PlacementCandidate c{a + ":" + b + (out ? ":out" : ""), link.name, mid, "strain", 0, 0, 0, rho_a * (xb - xa),
+                             static_cast<int>(li + 1) * 100000 + static_cast<int>(std::lround(1e3 * mid)), {}};
+        const SimTK::Vec3 pos = rm->position(st), e = rm->localAxis(st, 0);
+        c.world_x = pos[0], c.world_y = pos[1], c.world_z = pos[2];
+        const Eigen::MatrixXd u = rm->translationJacobian(st, s.linearized.dofs, spatial ? 3 : 2) * shapes;  // the middle's motion, for the drawings
+        for (Eigen::Index j = 0; j < u.cols(); ++j) c.shape.push_back({u(0, j), u(1, j), spatial ? u(2, j) : 0.0});
+        const Eigen::RowVectorXd row = reading * shapes;
+        c.strain.assign(row.data(), row.data() + row.size());
+        study.candidates.push_back(c);
+        const int block = static_cast<int>(study.candidates.size()) - 1;
+        acc.rows.push_back(row);
+        acc.readings.push_back(reading);
+        acc.names.push_back(c.station + " strain");
+        acc.masses.push_back(c.mass_kg);
+        p.block.push_back(block);
+        p.block_at.push_back(Eigen::Vector3d(pos[0], pos[1], pos[2]));
+        study.directions.push_back({block, "strain", {e[0], e[1], e[2]}});
+      }
     }
   }
   if (study.candidates.empty())

@@ -346,8 +346,8 @@ Eigen::VectorXd geometricShares(const LinearizedModel& lin, const ModalSolution&
   return share;
 }
 
-/// Each span's strain per unit coordinate, -c / span (theta_B - theta_A): frf's strain
-/// output row (sim/linear/state_space.hpp).
+/// Each span's strain per unit coordinate (strainRow: -c / span (theta_B - theta_A) in
+/// the plane, +c / span (phi_B - phi_A) out of it): frf's strain output row.
 std::vector<Eigen::RowVectorXd> strainRows(const ArticleScene& scene, const Model& model, const SimTK::State& eqs,
                                            const std::vector<int>& dofs, const std::vector<StrainGaugeSpec>& spans) {
   std::vector<Eigen::RowVectorXd> rows;
@@ -356,7 +356,7 @@ std::vector<Eigen::RowVectorXd> strainRows(const ArticleScene& scene, const Mode
     const std::optional<PointRef> a = PointRef::resolve(model, scene.article, g.a, error),
                                   b = PointRef::resolve(model, scene.article, g.b, error);
     MMV_DEMAND(a && b && g.span_m != 0 && g.surface_m > 0);  // checked by the front end
-    rows.push_back(-g.surface_m / g.span_m * (b->rotationJacobian(eqs, dofs).row(2) - a->rotationJacobian(eqs, dofs).row(2)));
+    rows.push_back(strainRow(*a, *b, eqs, dofs, g.surface_m / g.span_m, g.out_of_plane));
   }
   return rows;
 }

@@ -56,6 +56,7 @@ struct StrainGaugeSpec {
   std::string name;  ///< "A:B", as asked for
   std::string a, b;
   double surface_m = 0, span_m = 0;
+  bool out_of_plane = false;  ///< the +z face's strain (spatial model), not the +y face's
 };
 /// A mode's mean surface strain over a span, -c (theta_B - theta_A) / span per unit modal
 /// coordinate of the mass-normalised shape (kg^-1/2; frf's strain output, mode by mode).

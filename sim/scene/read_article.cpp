@@ -431,8 +431,9 @@ class SceneParser {
       l.point = readPoint(r_, r_.require(m, ln, path, "point"), path + ".point", a);
       const YAML::Node& f = r_.require(m, ln, path, "force");
       l.force = r_.vec3(f, path + ".force");
-      if (l.force[2] != 0.0)
-        r_.fail(f[2].Mark(), path + ".force[2] must be 0 N: the article moves in the x-y plane (got " + f[2].Scalar() + ")");
+      if (l.force[2] != 0.0 && a.model != ArticleModel::Spatial)
+        r_.fail(f[2].Mark(), path + ".force[2] must be 0 N: the planar article moves in the x-y plane (got " + f[2].Scalar() +
+                                 "; a load out of the plane needs model: spatial)");
       l.where = r_.position(ln.Mark());
       a.loads.push_back(l);
     }

@@ -62,16 +62,21 @@ SimulationSpec readSimulation(const YamlReader& r, const YAML::Node& n, bool art
 
 namespace {
 
-/// span: [A, B]: a strain sensor's two stations (sim/scene/stations.hpp StrainSpan).
-void readStrainSpan(const YamlReader& r, const YAML::Node& sp, const std::string& path, const ArticleSpec& article, SensorSceneSpec& s) {
+/// span: [A, B]: a strain sensor's two stations (sim/scene/stations.hpp StrainSpan), and
+/// `bending: in|out`, the bending it reads (in the plane by default).
+void readStrainSpan(const YamlReader& r, const YAML::Node& sp, const YAML::Node* bending, const std::string& path,
+                    const ArticleSpec& article, SensorSceneSpec& s) {
   if (!sp.IsSequence() || sp.size() != 2)
     r.fail(sp.Mark(), path + ".span must be [STATION, STATION], two stations of one link (got " + YamlReader::show(sp) + ")");
-  if (article.model != ArticleModel::Planar)
-    r.fail(sp.Mark(), path + ".span: a strain sensor reads the in-plane bending of the planar model (this article is spatial)");
+  if (bending) {
+    const std::optional<bool> out = strainBendsOutOfPlane(r.text(*bending, path + ".bending"));
+    if (!out) r.fail(bending->Mark(), path + ".bending: '" + r.text(*bending, path + ".bending") + "' is not in or out (the plane's bending or the bending out of it)");
+    s.out_of_plane = *out;
+  }
   const std::string a = r.text(sp[0], path + ".span[0]"), b = r.text(sp[1], path + ".span[1]");
   std::string why;
-  const std::optional<StrainSpan> span = strainSpan(article, a, b, why);
-  if (!span) r.fail(sp.Mark(), path + ".span: " + why);
+  const std::optional<StrainSpan> span = strainSpan(article, a, b, why, s.out_of_plane);
+  if (!span) r.fail((bending && s.out_of_plane ? *bending : sp).Mark(), path + (bending && s.out_of_plane ? ".bending: " : ".span: ") + why);
   s.target = a;
   s.span_end = b;
   s.surface_m = span->surface_m;
@@ -86,7 +91,7 @@ void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) 
   for (std::size_t i = 0; i < count; ++i) {
     const YAML::Node& sn = n[i];
     const std::string path = "sensors[" + std::to_string(i) + "]";
-    auto m = r.mapping(sn, path, {"name", "type", "instrument", "joint", "point", "span", "axis", "noise_sigma", "seed"});
+    auto m = r.mapping(sn, path, {"name", "type", "instrument", "joint", "point", "span", "bending", "axis", "noise_sigma", "seed"});
     SensorSceneSpec s;
     s.name = r.text(r.require(m, sn, path, "name"), path + ".name");
     if (m.count("instrument")) {
@@ -102,9 +107,10 @@ void readSensors(const YamlReader& r, const YAML::Node& n, ArticleScene& scene) 
         r.fail(tn.Mark(), path + ".type: " + type + ", but its instrument " + s.instrument + " is " + withArticle(s.type));
       s.type = type;
     }
-    if (m.count("span") && s.type != "strain") r.fail(m.at("span").Mark(), path + ".span applies only to strain sensors");
+    for (const char* key : {"span", "bending"})
+      if (m.count(key) && s.type != "strain") r.fail(m.at(key).Mark(), path + "." + key + " applies only to strain sensors");
     if (s.type == "strain") {
-      readStrainSpan(r, r.require(m, sn, path, "span"), path, scene.article, s);
+      readStrainSpan(r, r.require(m, sn, path, "span"), m.count("bending") ? &m.at("bending") : nullptr, path, scene.article, s);
       if (m.count("point") || m.count("joint") || m.count("axis"))
         r.fail(sn.Mark(), path + ": a strain sensor reads its span (span: [STATION, STATION]), not a point, joint or axis");
     } else if (s.type == "encoder") {

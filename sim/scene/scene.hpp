@@ -77,9 +77,11 @@ struct SensorSceneSpec {
   std::string instrument;  ///< its model in the scene's catalogue (`instruments:`); empty: the type's own (the report's)
   /// A strain sensor's span (`span: [A, B]`, sim/scene/stations.hpp StrainSpan): `target`
   /// is station A, `span_end` station B; its mean surface strain is
-  /// -surface_m (theta_B - theta_A) / span_m.
+  /// -surface_m (theta_B - theta_A) / span_m in the plane; with `bending: out` (spatial
+  /// model) the +z face's, +surface_m (phi_B - phi_A) / span_m.
   std::string span_end;
   double surface_m = 0, span_m = 0;
+  bool out_of_plane = false;
 };
 
 /// A sensor model of the scene's catalogue (`instruments:`, docs/scene-format.md). The

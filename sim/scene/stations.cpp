@@ -98,7 +98,18 @@ std::optional<StationSpec> parseStation(const std::string& name, const ArticleSp
   return s;
 }
 
-std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::string& a, const std::string& b, std::string& why) {
+std::optional<bool> strainBendsOutOfPlane(const std::string& word) {
+  if (word == "in") return false;
+  if (word == "out") return true;
+  return std::nullopt;
+}
+
+std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::string& a, const std::string& b, std::string& why,
+                                     bool out_of_plane) {
+  if (out_of_plane && article.model != ArticleModel::Spatial) {
+    why = "the planar model does not bend out of its plane: a strain out of the plane needs the spatial article (model: spatial)";
+    return std::nullopt;
+  }
   std::optional<StationSpec> sa, sb;
   for (const auto& [name, spec] : {std::pair{&a, &sa}, std::pair{&b, &sb}}) {
     if (!isStationName(*name)) {
@@ -126,12 +137,12 @@ std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::stri
     return std::nullopt;
   }
   const Section& s = *article.findSection(link.section);
-  const double c = s.shape == SectionShape::RoundRod ? s.radius : s.shape == SectionShape::Explicit ? 0.0 : 0.5 * s.h;
+  const double c = s.shape == SectionShape::RoundRod ? s.radius : s.shape == SectionShape::Explicit ? 0.0 : 0.5 * (out_of_plane ? s.b : s.h);
   if (!(c > 0)) {
-    why = "section '" + s.name + "' of " + link.name + " gives no depth (an explicit section): give its shape";
+    why = "section '" + s.name + "' of " + link.name + " gives no " + (out_of_plane ? "width" : "depth") + " (an explicit section): give its shape";
     return std::nullopt;
   }
-  return StrainSpan{sa->link, sa->x, sb->x, c};
+  return StrainSpan{sa->link, sa->x, sb->x, c, out_of_plane};
 }
 
 std::optional<std::pair<std::string, double>> pointAlongLink(const ArticleSpec& a, const std::string& target, std::string& why) {

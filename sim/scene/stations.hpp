@@ -37,16 +37,24 @@ bool isStationName(const std::string& name);
 std::optional<StationSpec> parseStation(const std::string& name, const ArticleSpec& article, std::string& error);
 
 /// A bending strain gauge's or piezo film's span: two stations on one flexible link's
-/// axis, and the distance `surface_m` of the section's face from its neutral axis (half
-/// the depth in the plane, or the rod's radius). Its mean surface strain is
-/// -surface_m (theta_b - theta_a) / (x_b - x_a) for the in-plane rotations theta.
+/// axis, and the distance `surface_m` of the section's face from its neutral axis: in
+/// the plane (the +y face) half the depth h, out of it (the +z face, spatial model) half
+/// the width b; a rod's radius either way. Its mean surface strain is
+/// -surface_m (theta_b - theta_a) / (x_b - x_a) for the in-plane rotations theta, and
+/// +surface_m (phi_b - phi_a) / (x_b - x_a) for the rotations phi out of the plane
+/// (sim/model/stations.hpp strainRow).
 struct StrainSpan {
   std::string link;
   double x_a = 0, x_b = 0, surface_m = 0;
+  bool out_of_plane = false;
 };
 /// Nothing, with the reason, for a station with an offset, two links, an empty span, a
-/// rigid link or a section without depth (an explicit one).
-std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::string& a, const std::string& b, std::string& why);
+/// rigid link, a section without depth (an explicit one) or bending out of the plane of
+/// a planar article.
+std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::string& a, const std::string& b, std::string& why,
+                                     bool out_of_plane = false);
+/// "in" or "out" (the bending a strain reads), else nothing.
+std::optional<bool> strainBendsOutOfPlane(const std::string& word);
 
 /// Where a point sits along its link, (link, m from its root): a station (its offset
 /// across the section dropped), or a link's root or tip. Nothing, with the reason, for a

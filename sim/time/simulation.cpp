@@ -31,7 +31,8 @@ struct LiveSensor {
   int axis = 0;
   bool gyro = false;
   std::optional<PointRef> span_end;   ///< strain: station B (`point` is A)
-  double strain_scale = 0;            ///< strain: -surface / span
+  double strain_scale = 0;            ///< strain: surface / span
+  bool out_of_plane = false;          ///< strain: the +z face's (bending out of the plane)
 };
 
 /// The columns of an article's run and the row at each sample (see simulation.hpp).
@@ -223,7 +224,8 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
       std::string error;
       live.span_end = PointRef::resolve(model_, scene.article, ss.span_end, error);
       if (!live.span_end) throw SceneError(ss.where + ": sensor '" + ss.name + "': " + error);
-      live.strain_scale = -ss.surface_m / ss.span_m;
+      live.strain_scale = ss.surface_m / ss.span_m;
+      live.out_of_plane = ss.out_of_plane;
     }
     const char* unit = ss.type == "encoder"     ? "rad"
                        : ss.type == "rate_gyro" ? "rad_per_s"
@@ -238,13 +240,9 @@ void ArticleRecorder::addSensors(const ArticleScene& scene) {
 double ArticleRecorder::sensorTruth(const LiveSensor& live, const SimTK::State& st) const {
   if (live.joint >= 0) return st.getQ()[model_.getQIndex(live.joint)];
   if (live.gyro) return live.point->angularRate(st, live.axis);
-  if (live.span_end) {
-    // The mean curvature over the span times the face's distance: the in-plane turn of
-    // the axis from A to B (exact for any rotation, as the linear model's theta_B -
-    // theta_A is to first order).
-    const SimTK::Vec3 a = live.point->localAxis(st, 0), b = live.span_end->localAxis(st, 0);
-    return live.strain_scale * std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
-  }
+  // The mean curvature over the span times the face's distance: the turn of the axis from
+  // A to B (exact for any rotation, as the linear model's theta_B - theta_A is to first order).
+  if (live.span_end) return strainReading(*live.point, *live.span_end, st, live.strain_scale, live.out_of_plane);
   const SimTK::Vec3 f_W = live.point->acceleration(st) - model_.getGravity();  // specific force
   return ~f_W * live.point->localAxis(st, live.axis);
 }

@@ -356,8 +356,23 @@ TEST_F(Cli, StrainOutputsMeetTheBeamAndAreRefusedByName) {
   }
   EXPECT_NE(run("frf --segments 4 --set links.link2.segments=rigid --output strain:link2@0.1m:link2@0.5m").err.find("it does not bend"),
             std::string::npos);
-  EXPECT_NE(run("frf --segments 4 --set model=spatial --output strain:link2@0.1m:link2@0.5m").err.find("planar model only"),
-            std::string::npos);
+  // Out of the plane (the spatial model): a tip moment about world y bends a cantilever
+  // along x about its width, and the +z face's strain is c M / (E I_out) everywhere.
+  const fs::path bar = dir_ / "bar.yaml";
+  std::ofstream(bar) << "name: bar\nmodel: spatial\ngravity: [0, 0, 0]\nmaterials:\n  steel: {density: 7800, youngs_modulus: 2.0e11, poisson_ratio: 0.3}\n"
+                        "sections:\n  flat: {shape: rectangle, b: 0.02, h: 0.01}\njoints:\n  - {name: j1, parent: base, hold: locked}\n"
+                        "links:\n  - {name: beam, joint: j1, material: steel, section: flat, length: 1.0, segments: 8}\n";
+  const Result out_of_plane = run("frf " + bar.string() + " --input moment:beam.tip:ry --output strain:beam@0.2m:beam@0.6m:out "
+                                  "--from 0.001 --to 0.002 --points 2 --json");
+  ASSERT_EQ(out_of_plane.code, 0) << out_of_plane.err;
+  const double I_out = 0.01 * 0.02 * 0.02 * 0.02 / 12;
+  EXPECT_NEAR(nlohmann::json::parse(out_of_plane.out).at("pairs").at(0).at("peak_db").get<double>(), 20 * std::log10(0.01 / (2.0e11 * I_out)), 1e-4);
+  EXPECT_NE(run("frf --segments 4 --output strain:link2@0.1m:link2@0.5m:out").err.find("does not bend out of its plane"), std::string::npos);
+  const Result sideways = run("frf --segments 4 --set model=spatial --output strain:link2@0.1m:link2@0.5m:sideways");
+  EXPECT_EQ(sideways.code, 64);
+  EXPECT_NE(sideways.err.find("[:in|out]"), std::string::npos) << sideways.err;
+  const Result modes = run("modes --segments 4 --set model=spatial --strain link2@0.1m:link2@0.5m:out --json");
+  EXPECT_EQ(modes.code, 0) << modes.err;
 }
 
 // The TAM exported (tam.mat) and used by correlate: the predicted modes of the placement's

@@ -35,6 +35,11 @@ links:
   - {name: beam, joint: j1, material: steel, section: bar, length: 1.0, segments: 32}
 )";
 
+std::string spatialCantilever() {
+  std::string text = std::string(kCantilever) + "model: spatial\n";
+  return text.replace(text.find("youngs_modulus: 2.0e11}"), 23, "youngs_modulus: 2.0e11, poisson_ratio: 0.3}");
+}
+
 ArticleScene cantilever() { return std::get<ArticleScene>(parseScene(kCantilever, "cantilever.yaml")); }
 
 TEST(StrainPlacement, ACandidatesRowIsModesStrainOverItsSpan) {
@@ -131,6 +136,73 @@ TEST(StrainPlacement, OnACantileverTheRowIsTheModesMeanCurvatureAndOneFilmGoesAt
   ASSERT_EQ(three.tams.size(), 1u);
   for (const auto& m : three.tams[0].modes) EXPECT_NEAR(m.frequency_error, 0.0, 1e-6);
   EXPECT_TRUE(three.tams[0].pass);
+}
+
+// The spatial model: every span is two candidates, the +y face's bending in the plane and
+// the +z face's out of it (A:B:out). Each row is modes --strain's over the same span and
+// face (two ways), and an out-of-plane mode's is the Euler-Bernoulli mode's mean
+// curvature about the 20 mm width (c = b / 2, I = h b^3 / 12) written here; one film for
+// that mode goes at the root, on the +z face.
+TEST(StrainPlacement, OnTheSpatialModelFilmsReadBendingOutOfThePlaneToo) {
+  ArticleScene scene = std::get<ArticleScene>(parseScene(spatialCantilever(), "cantilever.yaml"));
+  PlacementOptions o;
+  o.modes = modeNumbers({1, 2, 3, 4});
+  o.count = 4;
+  o.strain_span_m = 0.1;
+  o.spacing_m = 0.05;
+  const PlacementStudy p = runPlacement(scene, o);
+  ModesOptions m;
+  m.max_modes = 4;
+  int out = 0;
+  for (const PlacementCandidate& c : p.candidates) {
+    const auto parts = split(c.station, ':');
+    ASSERT_TRUE(parts.size() == 2 || (parts.size() == 3 && parts[2] == "out")) << c.station;
+    std::string why;
+    const auto span = strainSpan(scene.article, parts[0], parts[1], why, parts.size() == 3);
+    ASSERT_TRUE(span.has_value()) << why;
+    m.strains.push_back({c.station, parts[0], parts[1], span->surface_m, span->x_b - span->x_a, parts.size() == 3});
+    out += parts.size() == 3 ? 1 : 0;
+  }
+  EXPECT_EQ(2 * out, static_cast<int>(p.candidates.size()));
+  const ModesReport r = runModes(scene, m);
+  double worst = 0, scale = 0;
+  for (std::size_t i = 0; i < p.candidates.size(); ++i)
+    for (std::size_t j = 0; j < 4; ++j) {
+      worst = std::max(worst, std::abs(r.modes[j].strains[i].strain - p.candidates[i].strain[j]));
+      scale = std::max(scale, std::abs(r.modes[j].strains[i].strain));
+    }
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(worst, 1e-10 * scale);
+  // The first out-of-plane mode: bending about the 20 mm width, 2x the in-plane frequency.
+  const double L = 1.0, rhoA = 7800 * 0.02 * 0.01, b = 0.02, h = 0.01, E = 2.0e11, I_out = h * b * b * b / 12;
+  const double beta = beamRoots(BeamEnd::Clamped, BeamEnd::Free, 0.0, 0.0, 1)[0] / L;
+  const double f_out = beta * beta * std::sqrt(E * I_out / rhoA) / (2 * M_PI);
+  std::size_t j = 4;
+  for (std::size_t k = 0; k < 4; ++k)
+    if (std::abs(r.modes[k].frequency_hz / f_out - 1) < 0.01) j = k;
+  ASSERT_LT(j, 4u) << "no mode near " << f_out << " Hz";
+  const double bl = beta * L, sg = (std::cosh(bl) + std::cos(bl)) / (std::sinh(bl) + std::sin(bl));
+  const auto slope = [&](double x) {
+    return beta * (std::sinh(beta * x) + std::sin(beta * x) - sg * (std::cosh(beta * x) - std::cos(beta * x))) / std::sqrt(rhoA * L);
+  };
+  double peak = 0, err = 0, in_plane = 0;
+  for (const PlacementCandidate& c : p.candidates) {
+    if (c.station.find(":out") == std::string::npos) {
+      in_plane = std::max(in_plane, std::abs(c.strain[j]));  // the out-of-plane mode bends no +y face
+      continue;
+    }
+    const double closed = b / 2 * (slope(c.x_m + 0.05) - slope(c.x_m - 0.05)) / 0.1;
+    peak = std::max(peak, std::abs(closed));
+    err = std::max(err, std::abs(std::abs(c.strain[j]) - std::abs(closed)));
+  }
+  std::printf("[strain placement] spatial cantilever: out-of-plane mode %zu (%.4g Hz) against the closed form, %.3g of the peak\n",
+              j + 1, r.modes[j].frequency_hz, err / peak);
+  EXPECT_LT(err / peak, 0.015);
+  EXPECT_LT(in_plane, 1e-9 * peak);
+  o.modes = modeNumbers({static_cast<int>(j) + 1});
+  o.count = 1;
+  const PlacementStudy one = runPlacement(scene, o);
+  EXPECT_EQ(one.candidates[static_cast<std::size_t>(one.result.kept_blocks[0])].station, "beam@0m:beam@0.1m:out");
 }
 
 TEST(StrainPlacement, RequestsTheFilmsCannotMeetAreRefusedByName) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "sim/time/simulation.hpp"
 #include "support/record_column.hpp"
@@ -15,7 +16,7 @@ namespace {
 const char* kCantilever = R"(name: sagging cantilever
 gravity: [0, -9.81, 0]
 materials:
-  steel: {density: 7800, youngs_modulus: 2.0e11}
+  steel: {density: 7800, youngs_modulus: 2.0e11, poisson_ratio: 0.3}
 sections:
   flat: {shape: rectangle, b: 0.05, h: 0.01}
 joints:
@@ -75,8 +76,63 @@ TEST(StrainSensor, BadSpansAreRefusedAtTheirKeys) {
   std::string rigid = base;
   rigid.replace(rigid.find("segments: 32"), 12, "segments: rigid");
   EXPECT_THROW(parseScene(rigid, "c.yaml"), SceneError);
-  std::string spatial = base + "model: spatial\n";
-  EXPECT_THROW(parseScene(spatial, "c.yaml"), SceneError);
+  // Bending out of the plane: the spatial model's; the planar one is refused at the key,
+  // as is a word other than in or out.
+  for (const auto& [extra, bending, message] :
+       {std::tuple{"", "out", "sensors[0].bending: the planar model does not bend out of its plane"},
+        std::tuple{"model: spatial\n", "sideways", "sensors[0].bending: 'sideways' is not in or out"}}) {
+    std::string text = base + extra;
+    text.replace(text.find(good), good.size(), good + ", bending: " + bending);
+    try {
+      parseScene(text, "c.yaml");
+      ADD_FAILURE() << bending << ": accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  std::string accel = base;
+  const std::string film = "- {name: film, type: strain, span: [beam@0.2m, beam@0.6m]}";
+  accel.replace(accel.find(film), film.size(),
+                "- {name: film, type: accelerometer, point: beam.tip, bending: in}");
+  EXPECT_THROW(parseScene(accel, "c.yaml"), SceneError);
+}
+
+// The spatial model (issue 34: the report's film reads deflection in and out of the
+// plane): the same cantilever under a 10 N tip load along -z (a dead load; gravity stays
+// in the plane) bends about its 50 mm width, I = h b^3 / 12, and the +z face's gauge
+// (bending: out) reads the closed form c P (L - x_mid) / (E I) with c = b / 2, while the
+// in-plane gauge reads nothing; sagging in the plane under gravity, the spatial model's
+// in-plane gauge reads the planar closed form (two models, one number).
+TEST(StrainSensor, TheSpatialModelsGaugesReadBendingInAndOutOfThePlane) {
+  const double E = 2.0e11, b = 0.05, h = 0.01, rho = 7800, g = 9.81, L = 1.0, xa = 0.2, xb = 0.6, P = 10;
+  const double w = rho * b * h * g, sag = w * (std::pow(L - xa, 3) - std::pow(L - xb, 3)) / (6 * (xb - xa));
+  const double in_plane = h / 2 * sag / (E * b * h * h * h / 12), out_of_plane = b / 2 * P * (L - 0.5 * (xa + xb)) / (E * h * b * b * b / 12);
+  std::string text = kCantilever;
+  text += "model: spatial\n";
+  const std::string film = "- {name: film, type: strain, span: [beam@0.2m, beam@0.6m]}";
+  text.replace(text.find(film), film.size(), "- {name: out, instrument: gauge, span: [beam@0.2m, beam@0.6m], bending: out}");
+  using testing::column;
+  const SimulationResult sag_in = simulate(std::get<ArticleScene>(parseScene(text, "c.yaml")));
+  text.replace(text.find("gravity: [0, -9.81, 0]"), 22, "gravity: [0, 0, 0]");
+  text += "loads:\n  - {point: beam.tip, force: [0, 0, -10]}\n";
+  const SimulationResult load_out = simulate(std::get<ArticleScene>(parseScene(text, "c.yaml")));
+  for (const auto* r : {&sag_in, &load_out}) ASSERT_FALSE(r->record.rows.empty());
+  const int gi = column(sag_in.record, "g_m_per_m"), go = column(load_out.record, "out_m_per_m");
+  const double read_in = sag_in.record.rows[0][gi], read_out = load_out.record.rows[0][go];
+  std::printf("[strain] spatial: in the plane %.6g against %.6g, out of it %.6g against %.6g\n", read_in, in_plane, read_out, out_of_plane);
+  EXPECT_NEAR(read_in, in_plane, 0.005 * in_plane);
+  EXPECT_NEAR(read_out, out_of_plane, 0.005 * out_of_plane);  // the +z face in tension under a load towards -z
+  EXPECT_NEAR(sag_in.record.rows[0][column(sag_in.record, "out_m_per_m")], 0.0, 1e-6 * in_plane);
+  EXPECT_NEAR(load_out.record.rows[0][column(load_out.record, "g_m_per_m")], 0.0, 1e-6 * out_of_plane);
+  // A load out of the plane is the spatial model's: the planar one refuses it at its key.
+  std::string planar = kCantilever;
+  planar += "loads:\n  - {point: beam.tip, force: [0, 0, -10]}\n";
+  try {
+    parseScene(planar, "c.yaml");
+    ADD_FAILURE() << "a load along z on the planar model: accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("loads[0].force[2] must be 0 N: the planar article"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
