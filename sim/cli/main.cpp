@@ -68,9 +68,8 @@ CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
                 "Comma-separated points or stations whose mode shapes are tabulated, e.g. link1@0.5,link3a@0.762m,link2.tip")
       ->delimiter(',');
   m->add_option("--strain", modes.strains,
-                "A:B[:in|out], two stations of one link (repeatable): each mode's mean surface strain over the span, the piezo "
-                "film's or a gauge's reading per unit modal coordinate, bending in the plane (default) or out of it (spatial "
-                "model), e.g. link3a@0.1m:link3a@0.5m");
+                "A:B[:in|out], two stations of one link (repeatable): each mode's mean surface strain over the span (a film's or gauge's "
+                "reading per unit modal coordinate), in the plane or out of it (spatial model), e.g. link3a@0.1m:link3a@0.5m");
   m->add_flag("--no-error-estimate", modes.no_error_estimate,
               "Skip each mode's discretization error estimate (the scene solved again with segments / 2 and / 4)");
   m->add_option("--target-error", modes.target_error,

@@ -1,5 +1,10 @@
 #include "sim/model/attachments.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "sim/model/stations.hpp"
+
 #include "sim/core/errors.hpp"
 #include "sim/scene/programs.hpp"
 #include "sim/scene/stations.hpp"
@@ -93,6 +98,10 @@ void addShakerArmature(const ArticleScene& scene, Model& model) {
   stinger.station_b = SimTK::Vec3(0);
   stinger.directions = {SimTK::Vec3(d)};
   stinger.fit_coordinate = coordinate;
+  // Between mesh nodes the stinger holds the station the linear models drive (the beam's
+  // Hermite interpolation), not the chord's point of the piece it lies on.
+  const bool at_node = std::any_of(axis->x.begin(), axis->x.end(), [&](double x) { return std::abs(x - st->x) <= 1e-12 * axis->length; });
+  if (!at_node) stinger.points_a = StationPoint(model, *st).weightedPoints();
   model.addClosure(stinger);
 }
 

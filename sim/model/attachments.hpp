@@ -18,18 +18,18 @@ void addLoadsAndClosures(const ArticleSpec& a, Model& model);
 ///   carried by the shaker's suspension (a dead load cancels it), so only its inertia
 ///   loads the article;
 /// - the stinger, stiff along its axis and free across it: a closure that holds the
-///   driving point (the point of the segment piece at `shaker.at`) to the armature along
+///   driving point (the station at `shaker.at`) to the armature along
 ///   the direction, so the armature moves with it along the direction only (the linear
 ///   models' M + m b b^T, sim/linear/exciter.hpp);
 /// - the program's force on the armature's slider (coordinate `shaker`, in metres from
 ///   the point the stinger meets at the scene's angles): its work enters the run's energy
 ///   balance as a commanded torque's does.
 ///
-/// The driving point is a material point of the piece the station lies on; the linear
-/// models interpolate a station between the mesh nodes (sim/model/stations.hpp), which
-/// differs from it by the piece's chord against the bent link (O(h^2) in the segment
-/// length h). A tree with the stinger is closed: the run holds the closure as Simbody's
-/// integrators (and IDA) do, and its drift is reported.
+/// The driving point is the station as the linear models interpolate it between the
+/// mesh nodes (sim/model/stations.hpp: the beam's Hermite functions of the two nodes'
+/// positions and directions), held by a weighted closure (sim/model/weighted_closure.hpp);
+/// at a mesh node, that node's point. A tree with the stinger is closed: the run holds
+/// the closure as Simbody's integrators (and IDA) do, and its drift is reported.
 void addShakerArmature(const ArticleScene& scene, Model& model);
 
 }  // namespace mmv

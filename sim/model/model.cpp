@@ -1,4 +1,5 @@
 #include "sim/model/model.hpp"
+#include "sim/model/weighted_closure.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -228,6 +229,10 @@ SimTK::State Model::addClosureConstraints(const SimTK::State& at) {
   system_.realize(at, SimTK::Stage::Position);
   const SimTK::Vector q = at.getQ();
   for (const auto& c : closures_) {
+    if (!c.points_a.empty()) {  // point A interpolated between mesh nodes
+      addWeightedClosure(matter_, c, at);
+      continue;
+    }
     SimTK::MobilizedBody& a = matter_.updMobilizedBody(c.mobod_a);
     for (const SimTK::Vec3& e : c.directions) {
       if (c.to_ground) {
@@ -341,7 +346,7 @@ void Model::fitClosureCoordinates(SimTK::State& s) {
   for (const auto& c : closures_) {
     if (c.fit_coordinate < 0) continue;
     MMV_DEMAND(!c.to_ground && c.directions.size() == 1 && coords_[c.fit_coordinate].motion == CoordinateMotion::Translation);
-    const SimTK::Vec3 pa = matter_.getMobilizedBody(c.mobod_a).findStationLocationInGround(s, c.station_a);
+    const SimTK::Vec3 pa = findWeightedLocation(s, c.pointsA());
     const SimTK::Vec3 pb = matter_.getMobilizedBody(c.mobod_b).findStationLocationInGround(s, c.station_b);
     coords_[c.fit_coordinate].reference += ~c.directions[0] * (pa - pb);
     s.updQ()[qindex_[c.fit_coordinate]] = coords_[c.fit_coordinate].reference;
@@ -353,6 +358,18 @@ void Model::fitClosureCoordinates(SimTK::State& s) {
   system_.realize(reference_state_, SimTK::Stage::Position);
 }
 
+SimTK::Vec3 Model::findWeightedLocation(const SimTK::State& s, const std::vector<WeightedPoint>& points) const {
+  SimTK::Vec3 p(0);
+  for (const WeightedPoint& w : points) p += w.weight * matter_.getMobilizedBody(w.mobod).findStationLocationInGround(s, w.station_B);
+  return p;
+}
+
+SimTK::Vec3 Model::findWeightedVelocity(const SimTK::State& s, const std::vector<WeightedPoint>& points) const {
+  SimTK::Vec3 v(0);
+  for (const WeightedPoint& w : points) v += w.weight * matter_.getMobilizedBody(w.mobod).findStationVelocityInGround(s, w.station_B);
+  return v;
+}
+
 void Model::startClosureSpeeds(SimTK::State& s) const {
   system_.realize(s, SimTK::Stage::Time);
   system_.prescribeQ(s);
@@ -362,7 +379,7 @@ void Model::startClosureSpeeds(SimTK::State& s) const {
   bool moved = false;
   for (const auto& c : closures_) {
     if (c.fit_coordinate < 0) continue;
-    const SimTK::Vec3 va = matter_.getMobilizedBody(c.mobod_a).findStationVelocityInGround(s, c.station_a);
+    const SimTK::Vec3 va = findWeightedVelocity(s, c.pointsA());
     const SimTK::Vec3 vb = matter_.getMobilizedBody(c.mobod_b).findStationVelocityInGround(s, c.station_b);
     s.updU()[uindex_[c.fit_coordinate]] += ~c.directions[0] * (va - vb);
     moved = true;
@@ -371,15 +388,18 @@ void Model::startClosureSpeeds(SimTK::State& s) const {
 }
 
 bool Model::pointMovesAlongZ(const Closure& c) const {
-  std::vector<SimTK::MobilizedBodyIndex> b{c.mobod_a};
-  std::vector<SimTK::Vec3> st{c.station_a};
+  const std::vector<WeightedPoint> pa = c.pointsA();
+  std::vector<SimTK::MobilizedBodyIndex> b;
+  std::vector<SimTK::Vec3> st;
+  for (const WeightedPoint& p : pa) b.push_back(p.mobod), st.push_back(p.station_B);
   if (!c.to_ground) {
     b.push_back(c.mobod_b);
     st.push_back(c.station_b);
   }
   const Eigen::MatrixXd J = calcFrameJacobians(reference_state_, b, st, dofs_);
-  Eigen::RowVectorXd z = J.row(5);
-  if (!c.to_ground) z -= J.row(11);
+  Eigen::RowVectorXd z = Eigen::RowVectorXd::Zero(J.cols());
+  for (std::size_t i = 0; i < pa.size(); ++i) z += pa[i].weight * J.row(6 * static_cast<Eigen::Index>(i) + 5);
+  if (!c.to_ground) z -= J.row(6 * static_cast<Eigen::Index>(pa.size()) + 5);
   // Planar pins move a point along z by exactly 0; a bending hinge out of the plane by
   // its lever arm (m/rad).
   return z.size() > 0 && z.cwiseAbs().maxCoeff() > 1e-12;

@@ -97,6 +97,15 @@ struct PointLoad {
   SimTK::Vec3 force_W;    ///< N, world frame.
 };
 
+/// A point of a body weighted in a sum: a closure's point A interpolated between mesh
+/// nodes is sum w_i p_i over a few of them (sim/model/stations.hpp, StationPoint::
+/// weightedPoints), the weights summing to 1.
+struct WeightedPoint {
+  SimTK::MobilizedBodyIndex mobod;
+  SimTK::Vec3 station_B;
+  double weight = 1;
+};
+
 /// A loop closure: point A (on the article) held to a ground anchor or to point B,
 /// in both in-plane directions (pin) or across a line (slider). Its rows are the
 /// world directions e_r it holds: constraint e_r . (p_A - p_B) = 0.
@@ -118,6 +127,14 @@ struct Closure {
   /// along it, m): finalize sets its reference so that the closure holds in the
   /// reference state (the shaker's armature, placed where the stinger meets the article).
   int fit_coordinate = -1;
+  /// Non-empty: point A is sum w_i p_i of these (a station interpolated between the mesh
+  /// nodes, as the linear models take it), not mobod_a's station_a; only with !to_ground,
+  /// one direction, and a point B whose body does not turn (the shaker's armature).
+  std::vector<WeightedPoint> points_a;
+  /// Point A's weighted points: points_a, or station_a of mobod_a with weight 1.
+  std::vector<WeightedPoint> pointsA() const {
+    return points_a.empty() ? std::vector<WeightedPoint>{{mobod_a, station_a, 1.0}} : points_a;
+  }
 };
 
 /// A named point fixed on a body: "link1.tip", "link2.h3", "joint2", ...
@@ -273,6 +290,10 @@ class Model {
   }
   /// Index into getBodies() of the body that coordinate c's pin moves.
   int getCoordinateBody(int c) const { return coord_body_[c]; }
+
+  /// sum w_i p_i (m, world; Stage::Position) and its velocity (Stage::Velocity).
+  SimTK::Vec3 findWeightedLocation(const SimTK::State& s, const std::vector<WeightedPoint>& points) const;
+  SimTK::Vec3 findWeightedVelocity(const SimTK::State& s, const std::vector<WeightedPoint>& points) const;
 
   /// Coordinate values of a state, in coordinate order (rad).
   Eigen::VectorXd getQ(const SimTK::State& s) const;

@@ -54,6 +54,28 @@ SimTK::Vec3 StationPoint::interpolate(const NodeVector& point, const BodyVector&
   return p;
 }
 
+std::vector<WeightedPoint> StationPoint::weightedPoints() const {
+  const Hermite h = hermite(xi_);
+  std::vector<WeightedPoint> out{{a_.point_body, a_.station_B, h.h1}, {b_.point_body, b_.station_B, h.h3}};
+  // c times a node's body axis k, the mean of its two pieces': c/2 (p(e_k) - p(0)) on each.
+  auto axis = [&](const Node& n, int k, double c) {
+    for (const SimTK::MobilizedBodyIndex piece : {n.left, n.right}) {
+      SimTK::Vec3 e(0);
+      e[k] = 1;
+      out.push_back({piece, e, 0.5 * c});
+      out.push_back({piece, SimTK::Vec3(0), -0.5 * c});
+    }
+  };
+  axis(a_, 0, h.h2 * ell_);
+  axis(b_, 0, h.h4 * ell_);
+  for (const auto& [k, offset] : {std::pair{1, spec_.offset}, std::pair{2, spec_.offset_z}})
+    if (offset != 0) {
+      axis(a_, k, offset * (1 - xi_));
+      axis(b_, k, offset * xi_);
+    }
+  return out;
+}
+
 SimTK::Vec3 StationPoint::position(const SimTK::State& s) const {
   const auto& m = model_->getMatter();
   return interpolate(

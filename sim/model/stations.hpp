@@ -38,6 +38,11 @@ class StationPoint {
   SimTK::Vec3 position(const SimTK::State& s) const;      ///< m, world; needs Stage::Position.
   SimTK::Vec3 velocity(const SimTK::State& s) const;      ///< m/s; needs Stage::Velocity.
   SimTK::Vec3 acceleration(const SimTK::State& s) const;  ///< m/s^2; needs Stage::Acceleration.
+  /// The Hermite formula (above) as sum w_i p_i over body points (weights summing to 1): a
+  /// node's point with H1 or H3, and each body axis term c e_k as c (p(e_k) - p(0)) on its
+  /// piece (a body's axis is the difference of two of its points). A closure holds this
+  /// sum (Closure::points_a): the shaker's stinger between mesh nodes.
+  std::vector<WeightedPoint> weightedPoints() const;
   /// The unit direction along the link at the station (world).
   SimTK::Vec3 direction(const SimTK::State& s) const;
   /// The rotation rate about z (rad/s): the nodes' rates, interpolated linearly.

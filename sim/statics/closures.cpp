@@ -27,7 +27,7 @@ Eigen::VectorXd calcClosureErrors(const Model& model, const SimTK::State& s) {
   Eigen::VectorXd phi(model.getNumClosureRows());
   int r = 0;
   for (const auto& c : model.getClosures()) {
-    const SimTK::Vec3 pa = locate(model, s, c.mobod_a, c.station_a);
+    const SimTK::Vec3 pa = model.findWeightedLocation(s, c.pointsA());
     const SimTK::Vec3 pb = c.to_ground ? c.anchor_W : locate(model, s, c.mobod_b, c.station_b);
     for (const auto& e : c.directions) phi[r++] = ~e * (pa - pb);
   }
@@ -38,15 +38,18 @@ Eigen::MatrixXd calcClosureJacobian(const Model& model, const SimTK::State& s, c
   Eigen::MatrixXd G(model.getNumClosureRows(), cols.size());
   int r = 0;
   for (const auto& c : model.getClosures()) {
-    std::vector<SimTK::MobilizedBodyIndex> b{c.mobod_a};
-    std::vector<SimTK::Vec3> st{c.station_a};
+    const std::vector<WeightedPoint> pa = c.pointsA();
+    std::vector<SimTK::MobilizedBodyIndex> b;
+    std::vector<SimTK::Vec3> st;
+    for (const WeightedPoint& p : pa) b.push_back(p.mobod), st.push_back(p.station_B);
     if (!c.to_ground) {
       b.push_back(c.mobod_b);
       st.push_back(c.station_b);
     }
     const Eigen::MatrixXd J = model.calcFrameJacobians(s, b, st, cols);
-    Eigen::MatrixXd Jrel = J.middleRows(3, 3);
-    if (!c.to_ground) Jrel -= J.middleRows(9, 3);
+    Eigen::MatrixXd Jrel = Eigen::MatrixXd::Zero(3, J.cols());
+    for (std::size_t i = 0; i < pa.size(); ++i) Jrel += pa[i].weight * J.middleRows(6 * static_cast<Eigen::Index>(i) + 3, 3);
+    if (!c.to_ground) Jrel -= J.middleRows(6 * static_cast<Eigen::Index>(pa.size()) + 3, 3);
     for (const auto& e : c.directions) G.row(r++) = Eigen::Vector3d(e[0], e[1], e[2]).transpose() * Jrel;
   }
   return G;
@@ -58,7 +61,7 @@ std::vector<PointForce> closureForces(const Model& model, const Eigen::VectorXd&
   for (const auto& c : model.getClosures()) {
     SimTK::Vec3 f(0);
     for (const auto& e : c.directions) f += lambda[r++] * e;
-    out.push_back({model.findBody(c.mobod_a), c.station_a, f});
+    for (const WeightedPoint& p : c.pointsA()) out.push_back({model.findBody(p.mobod), p.station_B, p.weight * f});
     if (!c.to_ground) out.push_back({model.findBody(c.mobod_b), c.station_b, -f});
   }
   return out;

@@ -126,6 +126,15 @@ void expectConsistentKinematics(ArticleScene s, const std::string& name, int row
     const SimTK::Vec3 d = (p->position(a) - p->position(b)) / (2 * dt);
     for (int r = 0; r < rows; ++r) EXPECT_NEAR(J(r, c), d[r], 1e-6 * (1 + std::abs(d[r]))) << "row " << r << ", q " << c;
   }
+  // The same formula as weighted body points (the shaker's stinger holds it between
+  // nodes): its sum and its velocity are the station's, and its weights sum to 1.
+  const StationPoint station(*model, *parseStation(name, s.article, error));
+  const std::vector<WeightedPoint> w = station.weightedPoints();
+  double total = 0;
+  for (const WeightedPoint& x : w) total += x.weight;
+  EXPECT_NEAR(total, 1.0, 1e-14);
+  EXPECT_LT((model->findWeightedLocation(st, w) - p->position(st)).norm(), 1e-14);
+  EXPECT_LT((model->findWeightedVelocity(st, w) - p->velocity(st)).norm(), 1e-12 * p->velocity(st).norm());
 }
 
 TEST(Stations, KinematicsAreConsistent) {
