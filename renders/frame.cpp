@@ -3,6 +3,7 @@
 #include "renders/label_space.hpp"
 
 #include <GL/osmesa.h>
+#include <sys/mman.h>
 #include <GL/gl.h>
 
 #include <opencv2/imgcodecs.hpp>
@@ -23,25 +24,39 @@ namespace {
 
 constexpr double kNear = 0.01;  ///< m, the near clip distance.
 
-/// The OSMesa context and its colour buffer (RAII).
+/// The OSMesa context and its colour buffer (RAII): an anonymous mapping on transparent
+/// huge pages where the kernel gives them (madvise mode), zero pages until the clear
+/// writes them (a zero-filled vector wrote all of it once more, on 4 kB pages).
 class Context {
  public:
-  Context(int w, int h) : buffer_(static_cast<std::size_t>(w) * h * 4) {
+  Context(int w, int h) : bytes_(static_cast<std::size_t>(w) * h * 4) {
+    void* p = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::runtime_error("cannot map a " + std::to_string(w) + " x " + std::to_string(h) + " frame buffer");
+    buffer_ = static_cast<unsigned char*>(p);
+    madvise(buffer_, bytes_, MADV_HUGEPAGE);
     ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
-    if (!ctx_) throw std::runtime_error("OSMesa: cannot create a context");
-    if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w, h)) {
+    if (!ctx_) {
+      munmap(buffer_, bytes_);
+      throw std::runtime_error("OSMesa: cannot create a context");
+    }
+    if (!OSMesaMakeCurrent(ctx_, buffer_, GL_UNSIGNED_BYTE, w, h)) {
       OSMesaDestroyContext(ctx_);
+      munmap(buffer_, bytes_);
       throw std::runtime_error("OSMesa: cannot bind a " + std::to_string(w) + " x " + std::to_string(h) + " buffer");
     }
   }
-  ~Context() { OSMesaDestroyContext(ctx_); }
+  ~Context() {
+    OSMesaDestroyContext(ctx_);
+    munmap(buffer_, bytes_);
+  }
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
-  const std::vector<unsigned char>& buffer() const { return buffer_; }
+  const unsigned char* buffer() const { return buffer_; }
 
  private:
   OSMesaContext ctx_ = nullptr;
-  std::vector<unsigned char> buffer_;
+  std::size_t bytes_ = 0;
+  unsigned char* buffer_ = nullptr;
 };
 
 /// World to camera (OpenGL's view matrix).
@@ -379,7 +394,7 @@ cv::Mat renderFrame(const DrawList& list, const Camera& preset, const FrameOptio
   // Reduce first (area averaging of the k x k samples), then flip and convert the
   // small image (OpenGL's rows run bottom-up), through buffers a video's next frame
   // reuses.
-  const cv::Mat rgba(h, w, CV_8UC4, const_cast<unsigned char*>(ctx.buffer().data()));
+  const cv::Mat rgba(h, w, CV_8UC4, const_cast<unsigned char*>(ctx.buffer()));
   thread_local cv::Mat small, flipped;
   cv::Mat out;
   cv::resize(rgba, small, cv::Size(o.width, o.height), 0, 0, cv::INTER_AREA);

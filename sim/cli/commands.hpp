@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/cli/huge_pages.hpp"
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"

@@ -488,7 +488,7 @@ int main(int argc, char** argv) {
     if (si->parsed()) return runSimulateCommand(sim);
     if (tp->parsed()) return runTradeCommand(tr);
     if (pl->parsed()) return runPlaceSensorsCommand(ps);
-    if (rn->parsed()) return mmv::figures::renderCommand(rd);
+    if (rn->parsed()) return reexecWithHugePages(argv), mmv::figures::renderCommand(rd);
     if (fr->parsed()) return runFrfCommand(lin);
     if (rpc->parsed()) return runReportCommand(rp);
     if (ro->parsed()) return runRomCommand(lin);

@@ -82,5 +82,19 @@ TEST_F(Cli, SweepConfigRefusesAGridAxisPastItsBoundBeforeMakingIt) {
   EXPECT_FALSE(fs::exists(dir_ / "s"));
 }
 
+// render runs again with glibc's malloc on transparent huge pages (sim/cli/huge_pages.hpp:
+// the frame buffers' page faults were a third of its whole process): the frame is the
+// same, byte for byte, with the re-execution, without it (MMVLAB_NO_HUGE_PAGES), and when
+// the user's own GLIBC_TUNABLES is extended, and a frame within the budget stays there.
+TEST_F(Cli, RenderOnHugePagesDrawsTheSameFrame) {
+  const fs::path a = dir_ / "huge.png", b = dir_ / "small.png", c = dir_ / "user.png";
+  ASSERT_EQ(run("render --size 640x360 --out " + a.string()).code, 0);
+  ASSERT_EQ(run("render --size 640x360 --out " + b.string(), "MMVLAB_NO_HUGE_PAGES=1 ").code, 0);
+  ASSERT_EQ(run("render --size 640x360 --out " + c.string(), "GLIBC_TUNABLES=glibc.malloc.trim_threshold=1048576 ").code, 0);
+  EXPECT_EQ(slurp(a), slurp(b));
+  EXPECT_EQ(slurp(a), slurp(c));
+  EXPECT_FALSE(slurp(a).empty());
+}
+
 }  // namespace
 }  // namespace mmv::cli_testing
