@@ -9,6 +9,10 @@
 namespace mmv::cli {
 
 void reexecWithHugePages(char** argv) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  (void)argv;
+  return;  // the sanitizers' allocators replace glibc's malloc: its tunable means nothing there
+#else
   if (std::getenv("MMVLAB_NO_HUGE_PAGES")) return;
   const char* old = std::getenv("GLIBC_TUNABLES");
   const std::string tunables = old ? std::string(old) : std::string();
@@ -20,6 +24,7 @@ void reexecWithHugePages(char** argv) {
   // Not executed: go on as we are, on small pages, without leaving the tunable for children.
   if (old) setenv("GLIBC_TUNABLES", old, 1);
   else unsetenv("GLIBC_TUNABLES");
+#endif
 }
 
 }  // namespace mmv::cli
