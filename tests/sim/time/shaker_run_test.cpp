@@ -269,16 +269,19 @@ TEST(ShakerRun, CheckPredictsTheProgramsTravelBeforeTheRun) {
     EXPECT_EQ(travel(c)->note.find("capped") != std::string::npos, capped) << hz << ": " << travel(c)->note;
   }
 
-  // The article on the table (its hinge dampers), shaken at link 1's 0.6 m node of 8
-  // segments by a 2 s, 10 N sine at 3 Hz near mode 2, the table still.
-  const std::string table = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml";
-  SceneFlags eight;
-  eight.segments = 8;
-  eight.segments_label = "segments=8";
-  const ArticleScene shaken = std::get<ArticleScene>(loadSceneFile(
-      table, {"base.motion.amplitude=0", "shaker.at=link1@0.61m", "shaker.direction=[0.8745, 0.485, 0]",
-              "shaker.program={type: sine, amplitude: 10, frequency_hz: 3}", "simulation.duration=2", "simulation.sample_rate_hz=400"},
-      eight));
+  // The article on the table (its hinge dampers), shaken at link 1's 0.61 m (between the
+  // nodes of 8 segments) by a 2 s, 10 N sine at 3 Hz near mode 2, the table still.
+  const auto tableScene = [](const std::string& table_amplitude) {
+    SceneFlags eight;
+    eight.segments = 8;
+    eight.segments_label = "segments=8";
+    return std::get<ArticleScene>(loadSceneFile(
+        std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml",
+        {"base.motion.amplitude=" + table_amplitude, "shaker.at=link1@0.61m", "shaker.direction=[0.8745, 0.485, 0]",
+         "shaker.program={type: sine, amplitude: 10, frequency_hz: 3}", "simulation.duration=2", "simulation.sample_rate_hz=400"},
+        eight));
+  };
+  const ArticleScene shaken = tableScene("0");
   const CheckReport shaken_check = runCheck(shaken);
   const CheckLine* predicted = travel(shaken_check);
   ASSERT_NE(predicted, nullptr);
@@ -295,10 +298,7 @@ TEST(ShakerRun, CheckPredictsTheProgramsTravelBeforeTheRun) {
   // the closure (11.2 mm of travel), Simbody's integrators projected the mismatch onto the
   // article (0.568 mm); started with the armature's speed fitted, every integrator gives
   // the linear prediction's 0.61 mm.
-  const ArticleScene both = std::get<ArticleScene>(loadSceneFile(
-      table, {"base.motion.amplitude=0.0005", "shaker.at=link1@0.61m", "shaker.direction=[0.8745, 0.485, 0]",
-              "shaker.program={type: sine, amplitude: 10, frequency_hz: 3}", "simulation.duration=2", "simulation.sample_rate_hz=400"},
-      eight));
+  const ArticleScene both = tableScene("0.0005");
   const CheckReport both_check = runCheck(both);
   const CheckLine* both_predicted = travel(both_check);
   ASSERT_NE(both_predicted, nullptr);
