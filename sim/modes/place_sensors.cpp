@@ -128,7 +128,7 @@ bool keptOut(const PlacementOptions& o, const std::string& link, double x, doubl
 /// strainRow, from the stations' interpolated rotations: no mesh in it), measuring along
 /// the link's axis at the span's middle, where its node sits. On the spatial model each
 /// span is two candidates, the +y face's bending in the plane and the +z face's out of
-/// it (named A:B:out); both may be chosen (co-located blocks never conflict: the faces
+/// it (named A:B:out; a link kept planar in it has the first only); both may be chosen (co-located blocks never conflict: the faces
 /// do not overlap).
 void addStrainCandidates(const ArticleScene& scene, const Model& model, const SimTK::State& st, const SolvedScene& s,
                          const Eigen::MatrixXd& shapes, const PlacementOptions& o, PlacementStudy& study, PlacementProblem& p,
@@ -150,7 +150,7 @@ void addStrainCandidates(const ArticleScene& scene, const Model& model, const Si
                                     rb = PointRef::resolve(model, scene.article, b, error),
                                     rm = PointRef::resolve(model, scene.article, station(link.name, mid), error);
       MMV_DEMAND(ra && rb && rm);
-      for (const bool out : spatial ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
+      for (const bool out : spatial && scene.article.bendsOutOfPlane(link) ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
         std::string why;
         const std::optional<StrainSpan> span = strainSpan(scene.article, a, b, why, out);
         if (!span) throw OptionError("--strain-span", strf(" %g: link %s cannot carry one: %s", L, link.name.c_str(), why.c_str()));

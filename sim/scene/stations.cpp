@@ -136,6 +136,10 @@ std::optional<StrainSpan> strainSpan(const ArticleSpec& article, const std::stri
     why = link.name + " is rigid (segments: rigid): it does not bend";
     return std::nullopt;
   }
+  if (out_of_plane && !article.bendsOutOfPlane(link)) {
+    why = link.name + " is planar in this spatial article (its model: planar): it does not bend out of its plane";
+    return std::nullopt;
+  }
   const Section& s = *article.findSection(link.section);
   const double c = s.shape == SectionShape::RoundRod ? s.radius : s.shape == SectionShape::Explicit ? 0.0 : 0.5 * (out_of_plane ? s.b : s.h);
   if (!(c > 0)) {

@@ -373,6 +373,27 @@ TEST_F(Cli, StrainOutputsMeetTheBeamAndAreRefusedByName) {
   EXPECT_NE(sideways.err.find("[:in|out]"), std::string::npos) << sideways.err;
   const Result modes = run("modes --segments 4 --set model=spatial --strain link2@0.1m:link2@0.5m:out --json");
   EXPECT_EQ(modes.code, 0) << modes.err;
+  // A link kept planar in a spatial article does not bend out of the plane: refused there,
+  // and placement offers its in-plane face only.
+  const Result kept = run("frf --segments 4 --set model=spatial --set links.link2.model=planar --output strain:link2@0.1m:link2@0.5m:out");
+  EXPECT_EQ(kept.code, 64);
+  EXPECT_NE(kept.err.find("link2 is planar in this spatial article"), std::string::npos) << kept.err;
+  const fs::path mixed = dir_ / "mixed";
+  const Result placed = run("place-sensors --segments 4 --set model=spatial --set links.link2.model=planar --strain-span 0.3 "
+                            "--modes 1-4 --count 6 --out " + mixed.string());
+  ASSERT_EQ(placed.code, 0) << placed.err;
+  int out_faces = 0, link2_in = 0, link2_out = 0;
+  std::istringstream rows(slurp(mixed / "candidates.csv"));
+  for (std::string row; std::getline(rows, row);) {
+    const std::string station = row.substr(0, row.find(','));
+    const bool out = station.find(":out") != std::string::npos, on2 = station.rfind("link2@", 0) == 0;
+    out_faces += out ? 1 : 0;
+    link2_in += on2 && !out ? 1 : 0;
+    link2_out += on2 && out ? 1 : 0;
+  }
+  EXPECT_GT(out_faces, 0);
+  EXPECT_GT(link2_in, 0);
+  EXPECT_EQ(link2_out, 0);
 }
 
 // The TAM exported (tam.mat) and used by correlate: the predicted modes of the placement's
