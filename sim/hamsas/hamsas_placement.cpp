@@ -90,7 +90,11 @@ PlacementProblem hamsasCandidates(const HamsasModes& h, const std::vector<ModeNu
         }
         masses.push_back(h.model.bodies[b].mass / 9);
         if (!triaxial || a == 0) {
-          PlacementCandidate cand{name, body.name, 0.0, triaxial ? "triaxial" : axes[a], at.x(), at.y(), at.z()};
+          PlacementCandidate cand;
+          cand.station = name;
+          cand.link = body.name;
+          cand.axis = triaxial ? "triaxial" : axes[a];
+          cand.world_x = at.x(), cand.world_y = at.y(), cand.world_z = at.z();
           cand.node = hamsasNode(static_cast<int>(b), c);
           for (int j = 0; j < k; ++j) cand.shape.push_back({u(0, j), u(1, j), u(2, j)});
           candidates.push_back(std::move(cand));

@@ -7,7 +7,7 @@ namespace mmv {
 namespace {
 using json = nlohmann::ordered_json;
 using Opt = std::optional<json>;
-Opt text(const std::string& s) { return json(s); }
+Opt jsonText(const std::string& s) { return json(s); }
 Opt unlessEmpty(const std::string& s) { return s.empty() ? Opt() : Opt(json(s)); }
 }  // namespace
 
@@ -19,9 +19,9 @@ const std::vector<Field<SystemModeRow>>& systemModeFields() {
       {"stable", "", nullptr, "a positive stiffness (omega^2 > 0)", [](const R& m) -> Opt { return json(m.stable); }},
       {"frequency_hz", "Hz", "%.8g", "its frequency (null: unstable)",
        [](const R& m) -> Opt { return m.stable ? json(m.frequency_hz) : json(nullptr); }},
-      {"strain_link", "", "%s", "the link with the most strain energy", [](const R& m) { return text(m.strain_link); }},
+      {"strain_link", "", "%s", "the link with the most strain energy", [](const R& m) { return jsonText(m.strain_link); }},
       {"strain_share", "1", "%.6f", "that link's share of the strain energy", [](const R& m) -> Opt { return json(m.strain_share); }},
-      {"kinetic_link", "", "%s", "the link with the most kinetic energy", [](const R& m) { return text(m.kinetic_link); }},
+      {"kinetic_link", "", "%s", "the link with the most kinetic energy", [](const R& m) { return jsonText(m.kinetic_link); }},
       {"kinetic_share", "1", "%.6f", "that link's share of the kinetic energy", [](const R& m) -> Opt { return json(m.kinetic_share); }},
       {"nearest_component_mode", "", "%d", "the strain link's component mode nearest in frequency (0: none)",
        [](const R& m) -> Opt { return json(m.component_mode ? m.component_mode->number() : 0); }},
@@ -41,7 +41,7 @@ const std::vector<Field<SynthesisRowView>>& synthesisFields() {
   // clang-format off
   static const std::vector<Field<V>> fields{
       {"method", "", "%s", "the synthesis (assumed modes or Craig-Bampton, with its boundary condition and modes)",
-       [](const V& v) { return text(v.method->method); }},
+       [](const V& v) { return jsonText(v.method->method); }},
       {"mode", "", "%d", "the full model's mode", [](const V& v) -> Opt { return json(v.row->mode); }},
       {"full_frequency_hz", "Hz", "%.8g", "its frequency", [](const V& v) -> Opt { return json(v.row->full_hz); }},
       {"synthesized_mode", "", "%d", "the synthesized mode that matches it best (by MAC)",
@@ -50,9 +50,9 @@ const std::vector<Field<SynthesisRowView>>& synthesisFields() {
       {"relative_error", "1", "%.6g", "synthesized_frequency_hz / full_frequency_hz - 1",
        [](const V& v) -> Opt { return json(v.row->relative_error); }},
       {"mac", "1", "%.6f", "MAC of the two shapes at the named points", [](const V& v) -> Opt { return json(v.row->mac); }},
-      {"verdict", "", "%s", "predicted, shifted or missed", [](const V& v) { return text(v.row->verdict); }},
+      {"verdict", "", "%s", "predicted, shifted or missed", [](const V& v) { return jsonText(v.row->verdict); }},
       {"dominant_link", "", "%s", "the link with the most strain energy in the full mode",
-       [](const V& v) { return text(v.row->dominant_link); }},
+       [](const V& v) { return jsonText(v.row->dominant_link); }},
       {"family", "", nullptr, "the spatial model's family of the full mode", [](const V& v) { return unlessEmpty(v.row->family); }},
   };
   // clang-format on

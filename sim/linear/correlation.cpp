@@ -302,7 +302,10 @@ FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes, b
   const std::string out_point = station(f.response_node, "response");
   if (!m.skipped.empty()) return m;
   const bool absolute = base && kind == OutputKind::Acceleration;
-  m.output = OutputSpec{strf("%s:%s:%s", out_point.c_str(), axisName(rd - 1), kind_name), kind, out_point, rd - 1, absolute};
+  OutputSpec out;
+  out.name = strf("%s:%s:%s", out_point.c_str(), axisName(rd - 1), kind_name);
+  out.kind = kind, out.point = out_point, out.axis = rd - 1, out.absolute = absolute;
+  m.output = std::move(out);
   if (base) {
     if (fd > 3) {
       m.skipped = strf("direction %d: the table translates only (its inputs are x, y, z)", f.reference_direction);

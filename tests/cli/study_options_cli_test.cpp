@@ -13,13 +13,13 @@
 namespace mmv::cli_testing {
 namespace {
 
-struct Case {
+struct OptionCase {
   std::string verb, flag, bad, good;
 };
 
 TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
   const std::string scene = write("singular.yaml", singularPendulumScene("2")).string();
-  const std::vector<Case> cases = {
+  const std::vector<OptionCase> cases = {
       {"modes", "--modes", "-1", "3"},
       {"modes", "--points", "l9.tip", "l1.tip"},
       {"modes", "--target-error", "-1", ""},
@@ -75,7 +75,7 @@ TEST_F(Cli, EveryStudyOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
       {"trade", "--time-budget", "0", ""},
       {"simulate", "--verify-target", "0", ""},
   };
-  for (const Case& c : cases) {
+  for (const OptionCase& c : cases) {
     const std::string out = c.verb == "rom" ? " --out " + (dir_ / "rom").string() : "";
     const Result bad = run(c.verb + " " + scene + " " + c.flag + " " + c.bad + out);
     EXPECT_EQ(bad.code, 64) << c.verb << " " << c.flag << " " << c.bad << ": " << bad.err;
@@ -93,7 +93,7 @@ TEST_F(Cli, EveryCorrelateOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
   ASSERT_EQ(run("frf --segments 2 --out " + (dir_ / "measured").string()).code, 0);
   const std::string scene = write("singular.yaml", singularPendulumScene("2")).string();
   const std::string measured = " --measured " + (dir_ / "measured" / "frf.uff").string();
-  const std::vector<Case> cases = {
+  const std::vector<OptionCase> cases = {
       {"correlate", "--pair-distance", "0", "100"},       {"correlate", "--pair-distance", "100.1", ""},
       {"correlate", "--modes", "501", "500"},             {"correlate", "--modes", "0", ""},
       {"correlate", "--mac-threshold", "1.01", "1"},      {"correlate", "--mac-threshold", "-0.01", "0"},
@@ -101,7 +101,7 @@ TEST_F(Cli, EveryCorrelateOptionIsRefusedByNameBeforeAnyModelIsBuilt) {
       {"correlate", "--pair", "1=l9.tip", "1=l1.tip"},   {"correlate", "--pair", "x=l1.tip", ""},
       {"correlate", "--pair", "1=l1@2", "1=l1@1"},
   };
-  for (const Case& c : cases) {
+  for (const OptionCase& c : cases) {
     const Result bad = run(c.verb + " " + scene + measured + " " + c.flag + " " + c.bad);
     EXPECT_EQ(bad.code, 64) << c.flag << " " << c.bad << ": " << bad.err;
     EXPECT_NE(bad.err.find(c.flag), std::string::npos) << c.flag << ": " << bad.err;
