@@ -443,23 +443,6 @@ Eigen::VectorXd Model::calcAppliedForces(SimTK::State& s) const {
   return out;
 }
 
-Eigen::MatrixXd Model::calcFrameJacobians(const SimTK::State& s,
-                                          const std::vector<SimTK::MobilizedBodyIndex>& bodies,
-                                          const std::vector<SimTK::Vec3>& stations,
-                                          const std::vector<int>& cols) const {
-  MMV_DEMAND(bodies.size() == stations.size());
-  SimTK::Array_<SimTK::MobilizedBodyIndex> b(bodies.begin(), bodies.end());
-  SimTK::Array_<SimTK::Vec3> p(stations.begin(), stations.end());
-  SimTK::Matrix jf;
-  matter_.calcFrameJacobian(s, b, p, jf);
-  Eigen::MatrixXd out(jf.nrow(), cols.size());
-  for (std::size_t j = 0; j < cols.size(); ++j) {
-    const int u = uindex_[cols[j]];
-    for (int i = 0; i < jf.nrow(); ++i) out(i, j) = jf(i, u);
-  }
-  return out;
-}
-
 Eigen::VectorXd Model::calcFrameVelocities(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
                                            const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols,
                                            const Eigen::VectorXd& rates) const {
