@@ -87,8 +87,8 @@ submit() {  # submit WORKDIR SPEC: the job id in $job and in WORKDIR/jobid
   echo "$job" > "$work/jobid"
 }
 # finished JOB: waits until every task of the array job has ended, true if each completed.
-# Polled every 0.2 s: sbatch --wait polls at intervals that grow to 10 s, which was most
-# of this test's minute (the jobs themselves take seconds).
+# Polled every 0.2 s: sbatch --wait polls at intervals that grow to 10 s, so it can see
+# the end of a job of a few seconds that much late.
 finished() {
   local states
   for _ in $(seq 3000); do
