@@ -102,13 +102,20 @@ std::optional<std::string> setTarget(const std::string& text) {
 
 std::optional<std::string> runDirTarget(const std::string& text) {
   namespace fs = std::filesystem;
-  static const fs::path dir = fs::temp_directory_path() / ("mmvlab_fuzz_run_" + std::to_string(::getpid()));
-  static const bool made = [] {
-    fs::create_directories(dir);
-    std::ofstream(dir / "scene.yaml") << defaultSceneYaml();
-    return true;
-  }();
-  (void)made;
+  // One directory for the process's inputs, removed when the process ends.
+  struct RunDir {
+    fs::path path = fs::temp_directory_path() / ("mmvlab_fuzz_run_" + std::to_string(::getpid()));
+    RunDir() {
+      fs::create_directories(path);
+      std::ofstream(path / "scene.yaml") << defaultSceneYaml();
+    }
+    ~RunDir() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static const RunDir run_dir;
+  const fs::path& dir = run_dir.path;
   const std::size_t at = text.find("\n@@\n");
   const std::string json = at == std::string::npos ? text : text.substr(0, at);
   const std::string csv = at == std::string::npos ? std::string() : text.substr(at + 4);

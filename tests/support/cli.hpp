@@ -37,9 +37,14 @@ inline std::string singularPendulumScene(const std::string& segments) {
          "links: [{name: l1, joint: j1, material: m, section: s, length: 1.0, segments: " + segments + "}]\n";
 }
 
+/// A directory of its own for the running test. A parameterised test's name has a '/'
+/// ("KeepsTheContract/3"): it is flattened so that the directory removed at the end is
+/// the one made here, not a child of a directory left behind in /tmp.
 inline fs::path freshTestDir(const std::string& prefix) {
-  const fs::path d = fs::temp_directory_path() / (prefix + std::to_string(::getpid()) + "_" +
-                                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  for (char& c : name)
+    if (c == '/') c = '_';
+  const fs::path d = fs::temp_directory_path() / (prefix + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(d);
   fs::create_directories(d);
   return d;
