@@ -5,7 +5,8 @@
 # (tests/sanitizers/lsan.supp).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build-san -DMMVLAB_SANITIZE=ON -DMMVLAB_SANITIZED_READER_TEST=OFF >/dev/null
+# The benchmarks are not built: no test runs them, and their figures are the plain build's.
+cmake -S . -B build-san -DMMVLAB_SANITIZE=ON -DMMVLAB_SANITIZED_READER_TEST=OFF -DMMVLAB_BUILD_BENCH=OFF >/dev/null
 cmake --build build-san -j"$(nproc)"
 # intercept_tls_get_addr=0: Debian 12's sanitizer runtime (GCC 12) takes a dynamic TLS
 # block whose address is 16 past a page boundary for a pre-2.25 glibc block with a header
