@@ -1,5 +1,6 @@
 #include "sim/cli/huge_pages.hpp"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -25,6 +26,11 @@ void reexecWithHugePages(char** argv) {
   if (old) setenv("GLIBC_TUNABLES", old, 1);
   else unsetenv("GLIBC_TUNABLES");
 #endif
+}
+
+void keepFreedMemory() {
+  mallopt(M_MMAP_THRESHOLD, 256 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
 }  // namespace mmv::cli

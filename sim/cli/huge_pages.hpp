@@ -5,7 +5,8 @@
 /// (docs/benchmarks.md, 2026-11-28). glibc's malloc asks for transparent huge pages on
 /// its large blocks when the tunable glibc.malloc.hugetlb=1 is set, which it reads only at
 /// start-up; Mesa's buffers are malloc'd, so the tunable must be there before the
-/// process starts.
+/// process starts. Only render: the second start costs about 20 ms (half of a
+/// `modes`), more than huge pages save frf and rom on the default scene (docs/benchmarks.md).
 
 namespace mmv::cli {
 
@@ -14,5 +15,15 @@ namespace mmv::cli {
 /// MMVLAB_NO_HUGE_PAGES is set; returns only when it does not (also when the exec fails:
 /// the render then runs on small pages). Call it before any work or output.
 void reexecWithHugePages(char** argv);
+
+/// Keeps freed memory in the process for the next allocation of its size: glibc's malloc
+/// gives a block of 128 kB or more back to the kernel when it is freed (it was mapped for
+/// it) and trims the heap's top past 128 kB, so a study that builds one dense matrix after
+/// another (a 512-state model's are 2 MB each) takes every page of each as a fresh fault.
+/// Blocks up to 256 MB come from the heap and the heap is not trimmed below 1 GB: the peak
+/// memory is the same, it is only not returned before the process ends (`frf --segments
+/// 64` 0.40 -> 0.34 s, `rom` 0.57 -> 0.49 s, `modes --segments 1024` 0.62 -> 0.57 s).
+/// Call it first; the sanitizers' allocators ignore it.
+void keepFreedMemory();
 
 }  // namespace mmv::cli

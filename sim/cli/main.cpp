@@ -450,7 +450,6 @@ int main(int argc, char** argv) {
   CLI::App* cr = addCorrelateCommand(app, co);
   UpdateArgs up;
   CLI::App* ud = addUpdateCommand(app, up);
-
   ReportArgs rp;
   CLI::App* rpc = addReportCommand(app, rp, addSceneOptions);
   DesignSweepArgs ds;
@@ -494,6 +493,7 @@ int main(int argc, char** argv) {
     if (ro->parsed()) return runRomCommand(lin);
     return runSceneCommand();
   };
+  keepFreedMemory();
   const Watchdog watchdog;
   const mmv::ProgressStage stage(app.get_subcommands().empty() ? std::string("mmvlab") : app.get_subcommands().front()->get_name());
   return withStdoutChecked(run());
