@@ -11,7 +11,7 @@ set -euo pipefail
 build_pkgs=(
   build-essential cmake pkg-config
   libsimbody-dev libeigen3-dev libsundials-dev
-  libopencv-dev libosmesa6-dev libgl-dev
+  libopencv-dev libpng-dev libosmesa6-dev libgl-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev libspectra-dev
   python3-dev pybind11-dev python3-numpy   # the Python module (python/): `import mmvlab`
 )

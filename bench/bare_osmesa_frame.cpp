@@ -1,18 +1,20 @@
 // The floor a frame of `mmvlab render` is measured against (issue 37: a 1280x720 frame at
 // most 1.5x a bare OSMesa frame of the same size, whole process): one OSMesa context of
 // that size, cleared, one lit triangle, read back, flipped and written as a PNG with
-// OpenCV, as mmvlab writes its own. No scene, no supersampling, no labels.
+// mmvlab's own encoder (renders/png.hpp, libpng). No scene, no supersampling, no labels.
 //   /usr/bin/time build/bench/bare_osmesa_frame 1280 720 /tmp/bare.png
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include "renders/png.hpp"
 
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <vector>
 
 int main(int argc, char** argv) {
   if (argc != 4) {
@@ -40,7 +42,9 @@ int main(int argc, char** argv) {
   cv::Mat rgba(h, w, CV_8UC4, buffer.get()), bgr;
   cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
   cv::flip(bgr, bgr, 0);
-  const bool ok = cv::imwrite(argv[3], bgr);
+  const std::vector<unsigned char> png = mmv::render::encodePng(bgr);
+  std::FILE* f = std::fopen(argv[3], "wb");
+  const bool ok = f && std::fwrite(png.data(), 1, png.size(), f) == png.size() && std::fclose(f) == 0;
   OSMesaDestroyContext(ctx);
   return ok ? 0 : 74;
 }

@@ -1,14 +1,14 @@
 #include "renders/frame.hpp"
 #include "renders/layout.hpp"
+#include "renders/png.hpp"
+#include "renders/video_api.hpp"
 #include "renders/label_space.hpp"
 
 #include <GL/osmesa.h>
 #include <sys/mman.h>
 #include <GL/gl.h>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "sim/core/files.hpp"
+#include "sim/core/plugins.hpp"
 
 namespace mmv::render {
 namespace {
@@ -420,46 +421,63 @@ cv::Mat contactSheet(const std::vector<cv::Mat>& tiles, int columns) {
 void writePng(const std::string& path, const cv::Mat& image) {
   std::vector<unsigned char> png;
   try {
-    if (!cv::imencode(".png", image, png)) throw std::runtime_error(path + ": cannot encode the PNG");
-  } catch (const cv::Exception& e) {
+    png = encodePng(image);
+  } catch (const std::runtime_error& e) {
     throw std::runtime_error(path + ": cannot encode the PNG: " + e.what());
   }
   writeFileChecked(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
   layoutFlush(path);
 }
 
+namespace {
+
+/// The video plugin's table (renders/video_api.hpp), loaded on the first video.
+const VideoApi& videoApi() {
+  static const VideoApi* api = [] {
+    std::string failure;
+    const void* t = loadPluginTable(
+        "libmmvlab_video.so", MMVLAB_VIDEO_PLUGIN, "mmvlab_video_api",
+        [](const void* p) { return static_cast<const VideoApi*>(p)->version == kVideoApiVersion; }, "video plugin", failure);
+    if (!t) throw std::runtime_error("cannot load the video plugin: " + failure);
+    return static_cast<const VideoApi*>(t);
+  }();
+  return *api;
+}
+
+}  // namespace
+
 VideoSink::VideoSink(const std::string& path, double fps, cv::Size size) : path_(path), size_(size) {
   const auto dot = path.rfind('.');
   const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-  int fourcc = 0;
-  if (ext == ".mp4") fourcc = cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-  else if (ext == ".avi") fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
-  else throw std::runtime_error(path + ": a video is .mp4 or .avi");
-  writer_ = std::make_unique<cv::VideoWriter>(path, cv::CAP_FFMPEG, fourcc, fps, size);
-  if (!writer_->isOpened()) throw std::runtime_error(path + ": cannot open the video encoder");
+  if (ext != ".mp4" && ext != ".avi") throw std::runtime_error(path + ": a video is .mp4 or .avi");
+  api_ = &videoApi();
+  writer_ = api_->open(path.c_str(), ext == ".mp4" ? VideoApi::kMp4 : VideoApi::kAvi, fps, size.width, size.height);
+  if (!writer_) throw std::runtime_error(path + ": cannot open the video encoder");
 }
 
-VideoSink::~VideoSink() = default;
+VideoSink::~VideoSink() {
+  if (writer_) api_->release(writer_);
+}
 
 void VideoSink::close() {
   if (!writer_) return;
-  writer_->release();
-  writer_.reset();
+  api_->release(writer_);
+  writer_ = nullptr;
   // The encoder does not report a failed write: read the file back (a truncated MP4 has
   // no index and does not open, or opens short).
   syncFileChecked(path_);
-  cv::VideoCapture back(path_, cv::CAP_FFMPEG);
-  const double n = back.isOpened() ? back.get(cv::CAP_PROP_FRAME_COUNT) : -1;
-  if (!back.isOpened() || std::lround(n) != frames_)
+  const long n = api_->frame_count(path_.c_str());
+  if (n != frames_)
     throw std::runtime_error(path_ + ": the video did not write whole (" +
-                             (back.isOpened() ? std::to_string(std::lround(n)) + " of " + std::to_string(frames_) + " frames"
-                                              : std::string("it does not open")) +
+                             (n >= 0 ? std::to_string(n) + " of " + std::to_string(frames_) + " frames"
+                                     : std::string("it does not open")) +
                              "; disk full?)");
 }
 
 void VideoSink::write(const cv::Mat& frame) {
   if (frame.size() != size_) throw std::runtime_error(path_ + ": a frame of another size");
-  writer_->write(frame);
+  if (frame.type() != CV_8UC3) throw std::runtime_error(path_ + ": a frame is 8-bit BGR");
+  api_->write(writer_, frame.data, frame.cols, frame.rows, frame.step[0]);
   ++frames_;
 }
 

@@ -15,11 +15,9 @@
 
 #include "sim/core/drawing.hpp"
 
-namespace cv {
-class VideoWriter;
-}
-
 namespace mmv::render {
+
+struct VideoApi;
 
 struct FrameOptions {
   int width = 1280, height = 720;  ///< pixels.
@@ -84,7 +82,8 @@ class VideoSink {
   std::string path_;
   cv::Size size_;
   int frames_ = 0;
-  std::unique_ptr<cv::VideoWriter> writer_;
+  const VideoApi* api_ = nullptr;         ///< the video plugin's (renders/video_api.hpp)
+  void* writer_ = nullptr;                ///< its encoder, open until close()
 };
 
 /// Writes frames as a video (VideoSink).

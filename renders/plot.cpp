@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <functional>
 #include <optional>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <tuple>

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "renders/frame.hpp"
+#include "renders/png.hpp"
 #include "renders/plot_helpers.hpp"
 
 namespace mmv::render {
@@ -18,9 +18,11 @@ constexpr int kPageWidth = 2400, kPageMargin = 30, kPageLeft = 1440, kPageTitleB
 constexpr double kPageLineScale = 0.75, kPageTitleScale = 1.2;
 
 cv::Mat readImage(const std::string& path) {
-  const cv::Mat m = cv::imread(path, cv::IMREAD_COLOR);
-  if (m.empty()) throw std::runtime_error(path + ": cannot read the figure back for the summary");
-  return m;
+  try {
+    return readPng(path);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string(e.what()) + ": cannot read the figure back for the summary");
+  }
 }
 
 /// `m` scaled to at most `width` pixels wide (never enlarged).
