@@ -2,7 +2,7 @@
 /// Figures and frames, drawn by the renders plugin (libmmvlab_figures.so: renders/ with
 /// OpenCV and OSMesa) that the executable loads on the first figure it writes. A
 /// command that writes no image never loads the image stack: `mmvlab` itself links
-/// neither OpenCV nor OSMesa (their ~200 shared libraries cost 0.2 s at start-up;
+/// neither OpenCV nor OSMesa (the plugin's 39 shared libraries, about 70 ms to load;
 /// docs/benchmarks.md). Every function throws UnavailableError (exit 69) when the
 /// plugin cannot be loaded, and what renders/ throws otherwise.
 
