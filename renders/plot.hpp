@@ -19,12 +19,12 @@ void writeHeatmapPng(const std::string& path, const Eigen::MatrixXd& values, con
 
 struct Series {
   std::string label;
-  std::vector<double> x, y;  ///< equal lengths; non-finite points break the line.
+  std::vector<double> x = {}, y = {};  ///< equal lengths; non-finite points break the line.
   bool dashed = false;
   bool markers_only = false;  ///< points without connecting lines.
   int colour_index = -1;      ///< >= 0: a fixed colour of the palette (the same series the same colour in every figure).
   bool hollow = false;        ///< markers as rings (e.g. points that failed a check), drawn over filled ones.
-  std::vector<std::string> point_labels;  ///< optional, one per point: a small label beside its marker.
+  std::vector<std::string> point_labels = {};  ///< optional, one per point: a small label beside its marker.
 };
 
 /// A solid polyline's pixels with each pixel column's run of points reduced to its
@@ -43,9 +43,9 @@ void writeLinePlotPng(const std::string& path, const std::vector<Series>& series
 
 struct BodeTrace {
   std::string label;
-  std::vector<double> frequency;     ///< Hz (or rad/s, see x_label), > 0.
-  std::vector<double> magnitude_db;
-  std::vector<double> phase_deg;
+  std::vector<double> frequency = {};     ///< Hz (or rad/s, see x_label), > 0.
+  std::vector<double> magnitude_db = {};
+  std::vector<double> phase_deg = {};
   bool dashed = false;
 };
 

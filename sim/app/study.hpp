@@ -35,7 +35,7 @@ struct SceneRequest {
 struct LoadedScene {
   Scene scene;
   std::vector<std::string> warnings;  ///< as the CLI prints them on stderr, one per line.
-  SceneRequest request;               ///< what was read, for withSegments.
+  SceneRequest request = {};          ///< what was read, for withSegments.
 };
 
 /// Reads and checks the scene with its patches: `--segments` and `--no-gravity` are

@@ -76,7 +76,7 @@ struct OutputSpec {
   /// spatial model) on the +z face, eps = +c (phi_B - phi_A) / (x_B - x_A), phi about
   /// local y (sim/model/stations.hpp strainRow). `point` is station A, `span_end`
   /// station B; kind Displacement, axis 5.
-  std::string span_end;
+  std::string span_end = {};
   double surface_m = 0;  ///< c: the section's half depth (in the plane) or half width (out of it), or its radius.
   double span_m = 0;     ///< x_B - x_A along the link (nonzero).
   bool out_of_plane = false;

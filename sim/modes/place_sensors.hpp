@@ -103,7 +103,7 @@ struct PlacementCandidate {
   bool fixed = false;  ///< a scene accelerometer kept in advance (keep_scene_sensors)
   /// A strain candidate's reading in each target mode: the mean surface strain over its
   /// span per unit modal coordinate (its placement row; empty for an accelerometer).
-  std::vector<double> strain;
+  std::vector<double> strain = {};
 };
 
 /// What the chosen sensors' own masses do to the article's modes: each sensor welded at

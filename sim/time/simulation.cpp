@@ -27,10 +27,10 @@ namespace {
 struct LiveSensor {
   facility::Sensor model;
   int joint = -1;                     ///< encoder: the coordinate.
-  std::optional<PointRef> point;      ///< gyro, accelerometer: a named point or a station.
+  std::optional<PointRef> point = {}; ///< gyro, accelerometer: a named point or a station.
   int axis = 0;
   bool gyro = false;
-  std::optional<PointRef> span_end;   ///< strain: station B (`point` is A)
+  std::optional<PointRef> span_end = {};  ///< strain: station B (`point` is A)
   double strain_scale = 0;            ///< strain: surface / span
   bool out_of_plane = false;          ///< strain: the +z face's (bending out of the plane)
 };

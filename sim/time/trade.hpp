@@ -68,7 +68,7 @@ struct TradeRun {
   /// Why a run has no numbers: "failed" (the integrator's diagnostic in `failure`),
   /// "over_budget" (cut), "costlier" or "not_run" (skipped; `failure` says why); "ok".
   std::string status = "ok";
-  std::string failure;
+  std::string failure = {};
   double error_m = 0, seconds = 0;
   long evaluations = 0;
   bool pareto = false;
