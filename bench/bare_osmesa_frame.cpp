@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
   cv::flip(bgr, bgr, 0);
   const std::vector<unsigned char> png = mmv::render::encodePng(bgr);
   std::FILE* f = std::fopen(argv[3], "wb");
-  const bool ok = f && std::fwrite(png.data(), 1, png.size(), f) == png.size() && std::fclose(f) == 0;
+  const bool written = f && std::fwrite(png.data(), 1, png.size(), f) == png.size();
+  const bool ok = (f ? std::fclose(f) == 0 : false) && written;
   OSMesaDestroyContext(ctx);
   return ok ? 0 : 74;
 }

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "sim/core/errors.hpp"
 #include "sim/core/files.hpp"
 #include "sim/core/plugins.hpp"
 
@@ -438,7 +439,7 @@ const VideoApi& videoApi() {
     const void* t = loadPluginTable(
         "libmmvlab_video.so", MMVLAB_VIDEO_PLUGIN, "mmvlab_video_api",
         [](const void* p) { return static_cast<const VideoApi*>(p)->version == kVideoApiVersion; }, "video plugin", failure);
-    if (!t) throw std::runtime_error("cannot load the video plugin: " + failure);
+    if (!t) throw UnavailableError("videos need libmmvlab_video.so (OpenCV's video I/O, FFmpeg): tried " + failure);
     return static_cast<const VideoApi*>(t);
   }();
   return *api;

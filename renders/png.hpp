@@ -17,7 +17,8 @@ std::vector<unsigned char> encodePng(const cv::Mat& image);
 
 /// A PNG file as an 8-bit 3-channel BGR image (grey expanded, alpha dropped, 16 bits
 /// reduced to 8, as cv::imread(path, IMREAD_COLOR)). Throws std::runtime_error naming
-/// `path` when it cannot be read or is not a PNG.
+/// `path` when it cannot be read, is not a PNG, or is over 65536 pixels a side (mmvlab
+/// draws at most 8192).
 cv::Mat readPng(const std::string& path);
 
 }  // namespace mmv::render

@@ -40,7 +40,9 @@ Camera chooseCamera(const std::string& view, const DrawList& d, const std::vecto
 /// Writes through a temporary name in the same directory, renamed on success, so a
 /// failed or interrupted run leaves no partial file (SIGINT, SIGTERM, SIGHUP remove the
 /// temporary; one a SIGKILL left is removed by the next run writing there); refuses to
-/// replace a file unless `force` (OutputError, exit 73).
+/// replace a file unless `force` (OutputError, exit 73). A failure while writing is an
+/// OutputError unless it has an exit code of its own (usage, numerical, unavailable,
+/// internal).
 template <class Write>
 void writeAtomically(const std::string& path, bool force, Write write) {
   namespace fs = std::filesystem;
@@ -58,9 +60,23 @@ void writeAtomically(const std::string& path, bool force, Write write) {
   try {
     write(tmp.string());
     syncFileChecked(tmp.string());  // there, whole and on the disk before it is renamed
-  } catch (const std::exception& e) {
+  } catch (...) {
     fs::remove(tmp, ec);
-    throw OutputError(e.what());
+    // An error with an exit code of its own keeps it (a missing video plugin is 69, not
+    // 73); whatever else failed while writing is the output's.
+    try {
+      throw;
+    } catch (const UsageError&) {
+      throw;
+    } catch (const NumericalError&) {
+      throw;
+    } catch (const UnavailableError&) {
+      throw;
+    } catch (const InternalError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw OutputError(e.what());
+    }
   }
   fs::rename(tmp, target, ec);
   if (ec) {

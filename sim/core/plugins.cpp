@@ -16,7 +16,10 @@ std::vector<std::string> pluginCandidates(const std::string& file, const std::st
     exe[n] = '\0';
     candidates.push_back((std::filesystem::path(exe).parent_path() / file).string());
   }
-  if (!built_path.empty()) candidates.push_back(built_path);
+  // The build's own path is often the one beside the executable: tried (and named) once.
+  if (!built_path.empty() && (candidates.empty() || std::filesystem::path(built_path).lexically_normal() !=
+                                                         std::filesystem::path(candidates[0]).lexically_normal()))
+    candidates.push_back(built_path);
   return candidates;
 }
 
