@@ -51,6 +51,36 @@ void drawSeriesLine(cv::Mat& img, const Series& s, const cv::Scalar& colour, con
   }
 }
 
+/// Markers drawn over by others' (runs of two integrators on one pixel, under the Pareto
+/// front's rings): again on top as dots inside their markers, each point's dot nudged by
+/// at most its marker's radius when the dots of series redrawn before would hide it or it
+/// them. `shown` is the fewest pixels this series or one redrawn before it shows; the
+/// first nudge that shows them all (kMinShownPixels) is kept, or else the best.
+void redrawMarkers(cv::Mat& img, cv::Mat& mask, const Series& s, const cv::Scalar& colour,
+                   const std::function<int(double)>& px, const std::function<int(double)>& py,
+                   const std::function<bool(double, double)>& usable, const std::function<int()>& shown) {
+  static const cv::Point kNudges[] = {{0, 0}, {5, 0}, {-5, 0}, {0, -5}, {0, 5}, {4, -4}, {-4, 4}, {4, 4}, {-4, -4}};
+  const cv::Mat img0 = img.clone(), mask0 = mask.clone();
+  auto draw = [&](const cv::Point& nudge) {
+    img0.copyTo(img), mask0.copyTo(mask);
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (usable(s.x[i], s.y[i])) {
+        const cv::Point at = cv::Point(px(s.x[i]), py(s.y[i])) + nudge;
+        cv::circle(img, at, 4, colour, cv::FILLED, cv::LINE_8);
+        cv::circle(mask, at, 4, cv::Scalar(255), cv::FILLED, cv::LINE_8);
+      }
+    return shown();
+  };
+  cv::Point best = kNudges[0];
+  int most = -1;
+  for (const cv::Point& nudge : kNudges) {
+    const int n = draw(nudge);
+    if (n >= kMinShownPixels) return;
+    if (n > most) most = n, best = nudge;
+  }
+  draw(best);
+}
+
 /// A point's label (a trade run's tolerance) beside its marker: the first of ten places
 /// around it, nearest first, that stays inside the frame and clear of the labels placed
 /// before (`placed`, which receives its box); none free, it is left out rather than drawn
@@ -286,13 +316,17 @@ void drawPanel(cv::Mat& img, const cv::Rect& area, const std::vector<Series>& gi
     cv::inRange(img(inner), colours[k], colours[k], same);
     return cv::countNonZero(same & masks[k](inner));
   };
+  std::vector<std::size_t> redrawn;
   for (std::size_t k = 0; k < series.size(); ++k) {
     const Series& s = series[k];
     if (s.label.empty() || shown(k) >= kMinShownPixels) continue;
     if (!s.markers_only) drawSeriesLine(img, s, colours[k], px, py, usable, 1, cv::LINE_8);
-    else  // markers under others' markers: again on top, smaller
-      for (std::size_t i = 0; i < s.x.size(); ++i)
-        if (usable(s.x[i], s.y[i])) cv::circle(img, {px(s.x[i]), py(s.y[i])}, 2, colours[k], cv::FILLED, cv::LINE_8);
+    else redrawMarkers(img, masks[k], s, colours[k], px, py, usable, [&] {
+        int fewest = shown(k);
+        for (std::size_t j : redrawn) fewest = std::min(fewest, shown(j));
+        return fewest;
+      });
+    redrawn.push_back(k);
   }
   // The legend: one entry per labelled series (a capacity's mirror line has none), its
   // line dashed or a marker as the series is drawn; rows closer together when many.

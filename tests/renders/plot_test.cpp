@@ -68,6 +68,23 @@ TEST(Plot, CoincidentSeriesShareAnEntryAndNearOnesBothShow) {
     EXPECT_LE(t1[1].get<int>() + t1[3].get<int>(), fig["width"].get<int>()) << t1;
 }
 
+// CI's layout check found trade.png's "arkode_dirk" (two runs) showing 25 pixels: its
+// markers lay under other integrators' runs and the Pareto front's rings, and the redraw
+// on top (two dots of radius 2) was smaller than what the check asks. Three runs of
+// different series on one pixel, under a ring, all show.
+TEST(Plot, MarkersUnderOthersMarkersAllShow) {
+  Series wide{"wide", {1e-3, 1e-1}, {1e-6, 1e-3}}, a{"a", {1e-2}, {1e-5}}, b{"b", {1.0001e-2}, {1.0001e-5}},
+      c{"c", {1.0002e-2}, {0.9999e-5}}, ring{"front", {1e-2}, {1e-5}};
+  for (Series* s : {&wide, &a, &b, &c, &ring}) s->markers_only = true;
+  ring.hollow = true;
+  ring.colour_index = 0;
+  c.point_labels = {"1e-05"};
+  const auto fig =
+      layoutOf([&](const std::string& p) { writeLinePlotPng(p, {wide, a, b, c, ring}, "t", "x", "y", true, true); });
+  ASSERT_EQ(fig["legend"].size(), 5u);
+  for (const auto& e : fig["legend"]) EXPECT_GE(e[5].get<long>(), 30) << e;
+}
+
 // CI's layout check found trade.png's "Pareto front" (a dashed line) drawn with 0 pixels
 // when one run dominated all others: a line of one point. Such a series is a marker.
 TEST(Plot, ADashedSeriesOfOnePointIsDrawn) {
