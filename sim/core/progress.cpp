@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 
@@ -54,7 +55,16 @@ ProgressStage::~ProgressStage() {
   if (!recorded_) return;
   ProgressState& s = *state;
   std::lock_guard<std::mutex> lock(s.mutex);
-  if (!s.stages.empty()) s.stages.pop_back();
+  if (s.stages.empty()) return;
+  // MMVLAB_STAGE_TIMES: each stage's wall time on stderr as it closes, indented by depth
+  // (docs/benchmarks.md: where a command's time goes, without a profiler).
+  static const bool timed = std::getenv("MMVLAB_STAGE_TIMES") != nullptr;
+  if (timed) {
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s.stages.back().opened).count();
+    std::fprintf(stderr, "mmvlab: stage %*s%.1f ms  %s\n", static_cast<int>(2 * (s.stages.size() - 1)), "", ms,
+                 s.stages.back().what.c_str());
+  }
+  s.stages.pop_back();
 }
 
 void progressCount(long done, long total, const char* unit) {
