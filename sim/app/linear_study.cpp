@@ -143,6 +143,15 @@ void estimateMeshError(const LinearRequest& r, LinearStudy& a) {
   mo.max_modes = 60;
   mo.with_shapes = false;
   mo.damping = a.lm.damping;
+  if (a.lm.proportional) {
+    // Only the modes up to the band's end count: the linear model's say how many (with a
+    // shaker's armature on it, no fewer than the scene's own), and under proportional
+    // damping a mode's ratio does not depend on how many are solved for beside it.
+    const double w_max = 2 * M_PI * r.f_max;
+    const auto below = std::count_if(a.lm.proportional->omega2.begin(), a.lm.proportional->omega2.end(),
+                                     [&](double w2) { return w2 <= w_max * w_max; });
+    mo.max_modes = static_cast<int>(std::min<long>(60, below + 2));
+  }
   const ModesReport rep = runModes(a.scene, mo);
   const DiscretizationEstimate d = estimateDiscretization(a.scene, rep);
   if (!d.available) {
@@ -168,7 +177,7 @@ void respond(const LinearRequest& r, const std::vector<double>& grid, LinearStud
   a.err = compareResponses(a.hf, a.red.model, a.w);
   const ProgressStage stage("the reduced model's error: fewest modes within the target");
   if (r.rom_target > 0)  // how many modes the stated accuracy needs (a bisection over reductions)
-    modesForTarget(a.lm.full, reductionOptions(r), a.hf, a.w, r.rom_target,
+    modesForTarget(a.lm.full, reductionOptions(r, a.lm), a.hf, a.w, r.rom_target,
                    std::max(1, std::min(60, a.lm.full.numStates() / 2)), a.err);
 }
 
@@ -257,6 +266,12 @@ ReductionOptions reductionOptions(const LinearRequest& r) {
   return o;
 }
 
+ReductionOptions reductionOptions(const LinearRequest& r, const LinearModel& lm) {
+  ReductionOptions o = reductionOptions(r);
+  o.proportional = lm.proportional;
+  return o;
+}
+
 LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& request) {
   const std::vector<double> grid = checkLinearRequest(request);
   if (!request.vary.empty()) throw UsageError(optionName(request.front, "--vary") + " applies to HAM-SAS scenes only");
@@ -270,7 +285,7 @@ LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& re
     // first-order matrix) on another core while the reduction runs.
     const ProgressStage stage(strf("reducing: the state-space model's modes (%d states), the full model factorized beside it",
                                    a.lm.full.numStates()));
-    tbb::parallel_invoke([&] { a.lm.second_order.prepare(); }, [&] { a.red = reduceModal(a.lm.full, reductionOptions(r)); });
+    tbb::parallel_invoke([&] { a.lm.second_order.prepare(); }, [&] { a.red = reduceModal(a.lm.full, reductionOptions(r, a.lm)); });
   }
   a.scene = std::move(scene);
   a.geometry = linearTestGeometry(a.lm, a.scene, kLinearModelModes);
@@ -280,7 +295,7 @@ LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& re
     // The fewest modes within the target, compared on the same grid (it resolves every
     // candidate's half-power band, so the kept ones' too): no second full response.
     r.rom_modes = a.err.needed.modes;
-    a.red = reduceModal(a.lm.full, reductionOptions(r));
+    a.red = reduceModal(a.lm.full, reductionOptions(r, a.lm));
     const ModelError::ModesNeeded needed = a.err.needed;
     a.err = compareResponses(a.hf, a.red.model, a.w);
     a.err.needed = needed;

@@ -43,6 +43,8 @@ struct LinearRequest {
 std::vector<double> checkLinearRequest(const LinearRequest& request);
 /// The reduction the request asks for.
 ReductionOptions reductionOptions(const LinearRequest& request);
+/// The same for the article's model `lm`: with its proportional modes, if any.
+ReductionOptions reductionOptions(const LinearRequest& request, const LinearModel& lm);
 
 struct LinearStudy {
   ArticleScene scene;  ///< at the segments used

@@ -39,7 +39,8 @@ Damping dampingMatrix(const LinearModel& lm, const Model& model, const std::vect
     d.c = Eigen::VectorXd::Constant(w2.size(), damping.alpha) + damping.beta * w2;
   } else {
     d.c = 2 * damping.modal_ratio * w2.cwiseMax(0.0).cwiseSqrt();
-    d.C = lm.Mz * d.modes.shapes * d.c.asDiagonal() * d.modes.shapes.transpose() * lm.Mz;
+    const Eigen::MatrixXd MPhi = lm.Mz * d.modes.shapes;  // C = (M Phi) diag(c) (M Phi)^T: two products, not three
+    d.C = MPhi * d.c.asDiagonal() * MPhi.transpose();
   }
   symmetrize(d.C);
   return d;
@@ -242,7 +243,11 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   so.C = lm.Cz;
   so.K = lm.Kz;
   so.Bq = lm.Bq;
-  if (damped.c.size()) so.setModalBasis(damped.modes.omega2, std::move(damped.modes.shapes), damped.c);
+  if (damped.c.size()) {
+    so.setModalBasis(damped.modes.omega2, damped.modes.shapes, damped.c);
+    lm.proportional = std::make_shared<const ProportionalModes>(
+        ProportionalModes{std::move(damped.modes.omega2), std::move(damped.c), std::move(damped.modes.shapes)});
+  }
   step.reset();
   if (prepare_responses) so.prepare();
   const ProgressStage ss("state-space model");

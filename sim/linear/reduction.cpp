@@ -120,6 +120,9 @@ StateEigen stateModes(const StateSpace& full, const ReductionOptions& o) {
   const bool lowest_possible = o.modes > 0 && !o.drop_unseen;
   if (o.solver == S::Lowest && !lowest_possible)
     throw NumericalError("modal reduction: the lowest-modes solver needs a mode count and no dropping of unseen modes");
+  if (o.solver == S::Automatic && o.proportional)
+    if (std::optional<StateEigen> sm = detail::proportionalStateModes(full, o.proportional, lowest_possible ? o.modes : 0))
+      return std::move(*sm);
   if (o.solver != S::Dense && lowest_possible)
     if (std::optional<StateEigen> sm = detail::lowestStateModes(full, o.modes)) return std::move(*sm);
   if (o.solver == S::Lowest) throw NumericalError("modal reduction: the lowest-modes solver does not apply to this model");

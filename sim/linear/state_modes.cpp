@@ -20,8 +20,9 @@ bool isComplexMember(const cd& l) { return l.imag() > 1e-12 * std::abs(l); }
 
 }  // namespace
 
-void normalizeEigenvectors(Eigen::MatrixXcd& V) {
+Eigen::VectorXcd normalizeEigenvectors(Eigen::MatrixXcd& V) {
   const Eigen::Index N = V.rows();
+  Eigen::VectorXcd scale(V.cols());
   Eigen::VectorXd r(N);
   for (Eigen::Index i = 0; i < N; ++i) r[i] = 1.0 + 0.5 * std::sin(1.6180339887 * double(i + 1));
   for (Eigen::Index j = 0; j < V.cols(); ++j) {
@@ -32,7 +33,9 @@ void normalizeEigenvectors(Eigen::MatrixXcd& V) {
       s = V(k, j);
     }
     V.col(j) /= s;
+    scale[j] = s;
   }
+  return scale;
 }
 
 void collectModes(const StateSpace& full, StateEigen& sm, const std::vector<int>& indices) {
@@ -294,6 +297,153 @@ std::optional<StateEigen> lowestStateModes(const StateSpace& full, int pairs, st
     return sm;
   }
   return decline("the modes needed are more than a quarter of the model's");
+}
+
+namespace {
+
+/// One root of lambda^2 + c lambda + omega^2 = 0 of undamped mode `mode` (a pair's upper member).
+struct ModalRoot {
+  Eigen::Index mode;
+  cd lambda;
+};
+
+/// Each undamped mode's roots (a pair's upper member, or two real ones), by magnitude;
+/// an empty `why` when every mode is stiff and not critically damped.
+std::vector<ModalRoot> modalRoots(const ProportionalModes& b, std::string& why) {
+  std::vector<ModalRoot> roots;
+  for (Eigen::Index k = 0; k < b.omega2.size(); ++k) {
+    const double w2 = b.omega2[k], c = b.c[k], disc = c * c - 4 * w2;
+    if (!(w2 > 0) || !std::isfinite(c)) return why = "a mode of zero or negative stiffness (K is singular or indefinite)", roots;
+    if (std::abs(disc) <= 1e-8 * (c * c + 4 * w2)) return why = "a critically damped mode (a defective eigenvalue)", roots;
+    if (disc < 0) {
+      roots.push_back({k, cd(-c / 2, std::sqrt(-disc) / 2)});
+    } else {  // overdamped: the larger root without cancellation, the smaller from the product
+      const double q = -(c + std::sqrt(disc)) / 2;
+      roots.push_back({k, q});
+      roots.push_back({k, w2 / q});
+    }
+  }
+  std::stable_sort(roots.begin(), roots.end(), [](const ModalRoot& a, const ModalRoot& b) { return std::abs(a.lambda) < std::abs(b.lambda); });
+  return roots;
+}
+
+/// Whether the modes solve the model: K phi = omega^2 M phi and C phi = c M phi, each to a
+/// residual on the quadratic problem of 1e-9 of its scale (residualsSmall's).
+bool proportionalResidualsSmall(const SecondOrderParts& p, const ProportionalModes& b, const std::vector<ModalRoot>& roots) {
+  const double m = p.M.cwiseAbs().rowwise().sum().maxCoeff(), c = p.C.cwiseAbs().rowwise().sum().maxCoeff(),
+               kk = p.K.cwiseAbs().rowwise().sum().maxCoeff();
+  std::vector<Eigen::Index> used;
+  for (const ModalRoot& r : roots) used.push_back(r.mode);
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  const Eigen::MatrixXd phi = b.shapes(Eigen::all, used);
+  const Eigen::MatrixXd Mphi = p.M * phi;
+  const Eigen::VectorXd w2 = b.omega2(used), cm = b.c(used);
+  const Eigen::VectorXd ek = (p.K * phi - Mphi * w2.asDiagonal()).cwiseAbs().colwise().maxCoeff();
+  const Eigen::VectorXd ec = (p.C * phi - Mphi * cm.asDiagonal()).cwiseAbs().colwise().maxCoeff();
+  for (const ModalRoot& r : roots) {
+    const auto j = std::lower_bound(used.begin(), used.end(), r.mode) - used.begin();
+    const double l = std::abs(r.lambda);
+    const double scale = (l * l * m + l * c + kk) * phi.col(j).cwiseAbs().maxCoeff();
+    if (!(l * ec[j] + ek[j] <= 1e-9 * scale)) return false;
+  }
+  return true;
+}
+
+/// structuredProducts from the modes, no factorization: M^-1 = Phi Phi^T and
+/// K^-1 = Phi diag(1 / omega^2) Phi^T (Phi^T M Phi = I, Phi^T K Phi = diag(omega^2)), each
+/// O(n^2) per column applied to.
+void modalProducts(const StateSpace& full, SecondOrderParts p, std::shared_ptr<const ProportionalModes> modes, StateEigen& sm) {
+  struct Held {
+    Eigen::MatrixXd C, K, B;
+    std::shared_ptr<const ProportionalModes> modes;
+  };
+  const auto h = std::make_shared<const Held>(Held{std::move(p.C), std::move(p.K), full.B, std::move(modes)});
+  const Eigen::MatrixXd& phi = h->modes->shapes;
+  const Eigen::Index n = phi.rows();
+  sm.Bt = full.B;
+  sm.Bt.bottomRows(n) = phi * (phi.transpose() * full.B.bottomRows(n));
+  sm.times_state_matrix = [h, n](const Eigen::MatrixXd& X) -> Eigen::MatrixXd {
+    const Eigen::MatrixXd& phi = h->modes->shapes;
+    Eigen::MatrixXd Y(X.rows(), X.cols());
+    Y.topRows(n) = X.bottomRows(n);
+    Y.bottomRows(n) = -phi * (phi.transpose() * (h->K * X.topRows(n) + h->C * X.bottomRows(n)));
+    return Y;
+  };
+  sm.static_solution = [h, n]() -> std::optional<Eigen::MatrixXd> {
+    const Eigen::MatrixXd& phi = h->modes->shapes;
+    const Eigen::MatrixXd& B = h->B;
+    Eigen::MatrixXd X(B.rows(), B.cols());  // A X = B: X2 = B1, -K X1 - C X2 = B2
+    X.bottomRows(n) = B.topRows(n);
+    X.topRows(n) = -phi * (h->modes->omega2.cwiseInverse().asDiagonal() * (phi.transpose() * (B.bottomRows(n) + h->C * B.topRows(n))));
+    return X;
+  };
+}
+
+}  // namespace
+
+std::optional<StateEigen> proportionalStateModes(const StateSpace& full, std::shared_ptr<const ProportionalModes> modes,
+                                                 int pairs, std::string* declined) {
+  MMV_DEMAND(modes != nullptr);
+  const ProportionalModes& b = *modes;
+  const auto decline = [&](const std::string& why) -> std::optional<StateEigen> {
+    if (declined) *declined = why;
+    return std::nullopt;
+  };
+  const std::optional<SecondOrderParts> parts = secondOrderParts(full);
+  if (!parts) return decline("not the first-order form of a second-order model with symmetric M, C, K");
+  const Eigen::Index n = parts->K.rows();
+  if (b.shapes.rows() != n || b.shapes.cols() != n || b.omega2.size() != n || b.c.size() != n)
+    return decline("the proportional modes are not of this model's size");
+  std::string why;
+  std::vector<ModalRoot> roots = modalRoots(b, why);
+  if (!why.empty()) return decline(why);
+  // The lowest `pairs` pairs and every root no larger than the last of them (what the
+  // reduction keeps, selectModes), or every root.
+  std::size_t count = roots.size();
+  for (std::size_t i = 0, seen = 0; pairs > 0 && i < roots.size(); ++i)
+    if (isComplexMember(roots[i].lambda) && ++seen == static_cast<std::size_t>(pairs)) {
+      const double reach = std::abs(roots[i].lambda);
+      for (count = i + 1; count < roots.size() && std::abs(roots[count].lambda) <= reach;) ++count;
+      break;
+    }
+  const bool every_mode = count == roots.size();
+  roots.resize(count);
+  if (!proportionalResidualsSmall(*parts, b, roots)) return decline("the proportional modes do not solve this model's M, C, K");
+  // v = [phi; lambda phi]; w = [-(omega^2 / lambda) phi^T M, phi^T M] / (lambda - omega^2 / lambda)
+  // (phi^T K = omega^2 phi^T M), so w v = 1 and, by the modes' M- and K-orthogonality,
+  // w_i v_j = 0 for i != j (a pair's two roots too: their product is omega^2).
+  Eigen::Index pairs_found = 0;
+  for (const ModalRoot& r : roots) pairs_found += isComplexMember(r.lambda);
+  const Eigen::Index cols = static_cast<Eigen::Index>(roots.size()) + pairs_found;
+  StateEigen sm;
+  sm.lambda.resize(cols);
+  sm.V.resize(2 * n, cols);
+  sm.W.resize(cols, 2 * n);
+  Eigen::Index col = 0;
+  const auto add = [&](Eigen::Index k, const cd& l) {
+    const Eigen::VectorXd& phi = b.shapes.col(k);
+    const Eigen::RowVectorXd phiM = (parts->M * phi).transpose();
+    const double w2 = b.omega2[k];
+    sm.lambda[col] = l;
+    sm.V.col(col).head(n) = phi.cast<cd>();
+    sm.V.col(col).tail(n) = l * phi.cast<cd>();
+    const cd s = l - w2 / l;
+    sm.W.row(col).head(n) = (-(w2 / l) / s) * phiM.cast<cd>();
+    sm.W.row(col).tail(n) = (1.0 / s) * phiM.cast<cd>();
+    ++col;
+  };
+  for (const ModalRoot& r : roots) add(r.mode, r.lambda);
+  for (const ModalRoot& r : roots)
+    if (isComplexMember(r.lambda)) add(r.mode, std::conj(r.lambda));
+  const Eigen::VectorXcd scale = normalizeEigenvectors(sm.V);
+  sm.W = scale.asDiagonal() * sm.W;
+  modalProducts(full, std::move(*parts), modes, sm);
+  sm.every_mode = every_mode;
+  std::vector<int> order(roots.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  collectModes(full, sm, order);
+  return sm;
 }
 
 }  // namespace mmv::detail

@@ -6,6 +6,7 @@
 // how the article's models are built. The partial solution costs O(n^2) per Krylov step
 // after one factorization of K, where the dense one costs O((2n)^3).
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,9 +51,18 @@ StateEigen allStateModes(const StateSpace& full);
 std::optional<StateEigen> lowestStateModes(const StateSpace& full, int pairs, std::string* declined = nullptr,
                                            const Eigen::VectorXd* start = nullptr);
 
+/// The modes of smallest magnitude as lowestStateModes chooses them (or every mode when
+/// `pairs` is 0), in closed form from the model's proportional modes (ReductionOptions::
+/// proportional): no eigen solution. nullopt (`declined` says why) when the model is not
+/// of second-order form with symmetric matrices, a mode is rigid, unstable or critically
+/// damped (a defective eigenvalue), or the modes do not solve its M, C and K to 1e-9.
+std::optional<StateEigen> proportionalStateModes(const StateSpace& full, std::shared_ptr<const ProportionalModes> modes,
+                                                 int pairs, std::string* declined = nullptr);
+
 /// Eigenvectors scaled to a canonical phase and size (a fixed real weighting of their
-/// components is 1), so both solvers give the same reduced-model basis.
-void normalizeEigenvectors(Eigen::MatrixXcd& V);
+/// components is 1), so every solver gives the same reduced-model basis; returns what
+/// each column was divided by.
+Eigen::VectorXcd normalizeEigenvectors(Eigen::MatrixXcd& V);
 
 /// The modes' residues and each pair's largest (fills modes and pair_max).
 void collectModes(const StateSpace& full, StateEigen& sm, const std::vector<int>& indices);

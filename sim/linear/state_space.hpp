@@ -27,6 +27,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -147,6 +148,15 @@ struct SecondOrderResponse {
   Eigen::MatrixXd basis_;  ///< setModalBasis' shapes, until prepare().
 };
 
+/// Undamped modes of a model's M and K that also diagonalise its C: Phi^T M Phi = I,
+/// Phi^T K Phi = diag(omega2), Phi^T C Phi = diag(c) (modal and Rayleigh damping, whose
+/// C is built from them). Each gives the state matrix's modes in closed form,
+/// lambda^2 + c lambda + omega^2 = 0 with the right vector [phi; lambda phi].
+struct ProportionalModes {
+  Eigen::VectorXd omega2, c;
+  Eigen::MatrixXd shapes;
+};
+
 /// How many undamped modes a linear model carries (LinearModel::solved.modes): the
 /// shapes written with its responses.
 inline constexpr int kLinearModelModes = 12;
@@ -161,6 +171,7 @@ struct LinearModel {
   std::vector<InputSpec> inputs;
   std::vector<OutputSpec> outputs;
   DampingSpec damping;  ///< what Cz was built from.
+  std::shared_ptr<const ProportionalModes> proportional;  ///< proportional damping only: Mz, Cz, Kz's modes.
 };
 
 /// Builds the linear model. Throws SceneError for an input or output naming an
@@ -188,6 +199,10 @@ struct ReductionOptions {
   /// solver, O(n^3)) when that does not apply or a check fails. Dense and Lowest force
   /// one (Lowest throws NumericalError where it does not apply): for tests.
   enum class Solver { Automatic, Dense, Lowest } solver = Solver::Automatic;
+  /// The model's proportional modes when its damping is (LinearModel::proportional):
+  /// Automatic then takes the state matrix's modes from them, no eigen solution, after
+  /// checking they solve the model's M, C and K (else as without).
+  std::shared_ptr<const ProportionalModes> proportional = {};
 };
 
 struct ReducedModel {

@@ -99,6 +99,98 @@ TEST(StateModes, LowestAndDenseReductionsAgreeOnAClosedTree) {
   expectSameReduction(lm.full, 8, w, fullResponses(lm.second_order, w));
 }
 
+/// The reduction from a model's proportional modes (closed form) against the dense
+/// solver's, on the model as the commands build it, for a count and for every mode.
+void expectProportionalIsDense(const LinearModel& lm, int modes) {
+  ASSERT_TRUE(lm.proportional);
+  ReductionOptions o;
+  o.modes = modes;
+  o.proportional = lm.proportional;
+  std::string why;
+  const std::optional<detail::StateEigen> sm = detail::proportionalStateModes(lm.full, lm.proportional, modes, &why);
+  ASSERT_TRUE(sm.has_value()) << why;
+  EXPECT_FALSE(sm->every_mode);
+  EXPECT_LT(worstResidual(lm.full, *sm), 1e-11);
+  const ReducedModel closed = reduceModal(lm.full, o), dense = reduceWith(lm.full, modes, Solver::Dense);
+  ASSERT_EQ(closed.kept_frequencies_hz.size(), dense.kept_frequencies_hz.size());
+  for (std::size_t k = 0; k < dense.kept_frequencies_hz.size(); ++k) {
+    EXPECT_NEAR(closed.kept_frequencies_hz[k], dense.kept_frequencies_hz[k], 1e-7 * dense.kept_frequencies_hz[k]) << k;
+    EXPECT_NEAR(closed.kept_damping[k], dense.kept_damping[k], 1e-7) << k;
+  }
+  ASSERT_EQ(closed.model.numStates(), dense.model.numStates());
+  const std::vector<double> w = omegas(0.01, 100, 300);
+  const std::vector<Eigen::MatrixXcd> truth = fullResponses(lm.second_order, w);
+  EXPECT_LT(compareResponses(dense.model, closed.model, w).max_relative, 1e-7);
+  EXPECT_LE(compareResponses(truth, closed.model, w).max_relative,
+            compareResponses(truth, dense.model, w).max_relative + 1e-9);
+  // Every mode (a band, or dropping the unseen ones, needs them): W V = I, to the dense
+  // symmetric solver's M-orthogonality (1e-13) times the ratio of the stiffest hinge's
+  // omega to the first mode's (1e4 at 16 segments), which w_i v_j carries.
+  const std::optional<detail::StateEigen> all = detail::proportionalStateModes(lm.full, lm.proportional, 0);
+  ASSERT_TRUE(all.has_value());
+  EXPECT_TRUE(all->every_mode);
+  ASSERT_EQ(all->V.cols(), lm.full.numStates());
+  const Eigen::MatrixXcd WV = all->W * all->V;
+  EXPECT_LT((WV - Eigen::MatrixXcd::Identity(WV.rows(), WV.cols())).cwiseAbs().maxCoeff(), 1e-7);
+  o.modes = 0;
+  o.band_min_hz = 0, o.band_max_hz = 30;
+  o.drop_unseen = true;
+  ReductionOptions od = o;
+  od.proportional = nullptr;
+  const ReducedModel band = reduceModal(lm.full, o), band_dense = reduceModal(lm.full, od);
+  EXPECT_EQ(band.kept_modes, band_dense.kept_modes);
+  EXPECT_EQ(band.unseen_modes, band_dense.unseen_modes);
+  EXPECT_LT(compareResponses(band_dense.model, band.model, w).max_relative, 1e-7);
+}
+
+// frf and rom take the state matrix's modes of a proportionally damped model (modal or
+// Rayleigh: the scenes' default) in closed form from its undamped ones: the same reduced
+// model as the dense solver's, with Rayleigh's overdamped low roots (alpha = 40 /s:
+// below 3.2 Hz c > 2 omega) among the kept.
+TEST(StateModes, ProportionalModesGiveTheDenseSolversReduction) {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, 16);
+  DampingSpec modal;
+  modal.modal_ratio = 0.02;
+  expectProportionalIsDense(buildLinearModel(s, defaultInputs(), defaultOutputs(s), modal), 8);
+  DampingSpec rayleigh;
+  rayleigh.kind = DampingSpec::Kind::Rayleigh;
+  rayleigh.alpha = 40;
+  rayleigh.beta = 1e-5;
+  const LinearModel lm = buildLinearModel(s, defaultInputs(), defaultOutputs(s), rayleigh);
+  const std::optional<detail::StateEigen> sm = detail::proportionalStateModes(lm.full, lm.proportional, 6);
+  ASSERT_TRUE(sm.has_value());
+  int real_roots = 0;
+  for (const auto& m : sm->modes) real_roots += m.pair ? 0 : 1;
+  EXPECT_GE(real_roots, 2);
+  expectProportionalIsDense(lm, 6);
+}
+
+// The closed form applies only where it is exact: modes of another model, or a
+// critically damped mode (a defective eigenvalue), are declined, and the reduction is
+// then the dense solver's.
+TEST(StateModes, ProportionalModesThatDoNotFitAreDeclined) {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, 4);
+  const LinearModel lm = buildLinearModel(s, defaultInputs(), defaultOutputs(s), DampingSpec{});
+  ASSERT_TRUE(lm.proportional);
+  std::string why;
+  ProportionalModes other = *lm.proportional;
+  other.omega2[3] *= 1.001;
+  EXPECT_FALSE(detail::proportionalStateModes(lm.full, std::make_shared<const ProportionalModes>(other), 4, &why).has_value());
+  EXPECT_NE(why.find("do not solve"), std::string::npos) << why;
+  ProportionalModes critical = *lm.proportional;
+  critical.c[0] = 2 * std::sqrt(critical.omega2[0]);
+  EXPECT_FALSE(detail::proportionalStateModes(lm.full, std::make_shared<const ProportionalModes>(critical), 4, &why).has_value());
+  EXPECT_NE(why.find("critically damped"), std::string::npos) << why;
+  ReductionOptions o;
+  o.modes = 4;
+  o.proportional = std::make_shared<const ProportionalModes>(other);
+  const ReducedModel fallback = reduceModal(lm.full, o), dense = reduceWith(lm.full, 4, Solver::Dense);
+  const std::vector<double> w = omegas(0.01, 100, 200);
+  EXPECT_LT(compareResponses(dense.model, fallback.model, w).max_relative, 1e-7);
+}
+
 /// M q'' + C q' + K q = B u over a chain of n unit masses with springs k between them
 /// and to ground, damping c_i on each mass, force on the last, displacement of the first.
 StateSpace chain(int n, const Eigen::VectorXd& c, double k = 1e4) {
