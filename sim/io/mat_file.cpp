@@ -51,13 +51,22 @@ MatContents readMat(const std::string& path, long max_bytes) {
 }
 
 void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
-  const StateSpace s = d.standardForm();
-  writeMat(path, {{{"A", s.A}, {"B", s.B}, {"C", s.C}, {"D", s.D}, {"E", s.E}, {"Ad", d.A}, {"Bd", d.B}, {"Ed", d.E}},
-                  {{"InputName", d.input_names},
-                   {"OutputName", d.output_names},
-                   {"StateName", d.state_names},
-                   {"InputUnit", d.input_units},
-                   {"OutputUnit", d.output_units}}});
+  StateSpace s = d.standardForm();
+  // The standard form's matrices are moved in, not copied (the full model's are 2 MB each
+  // at 64 segments a link; an initializer list would copy each twice).
+  MatContents c;
+  c.matrices.reserve(8);
+  const std::pair<const char*, Eigen::MatrixXd*> standard[] = {{"A", &s.A}, {"B", &s.B}, {"C", &s.C}, {"D", &s.D}, {"E", &s.E}};
+  for (const auto& [name, m] : standard) c.matrices.emplace_back(name, std::move(*m));
+  c.matrices.emplace_back("Ad", d.A);
+  c.matrices.emplace_back("Bd", d.B);
+  c.matrices.emplace_back("Ed", d.E);
+  c.strings = {{"InputName", d.input_names},
+               {"OutputName", d.output_names},
+               {"StateName", d.state_names},
+               {"InputUnit", d.input_units},
+               {"OutputUnit", d.output_units}};
+  writeMat(path, c);
 }
 
 }  // namespace mmv

@@ -33,10 +33,13 @@ MatStatus writeVar(mat_t* mat, MatVar var, const std::string& what) {
 }
 
 MatStatus writeMatrix(mat_t* mat, const std::string& name, const Eigen::MatrixXd& m) {
-  // matio copies nothing: the data must live until the write; Eigen is column-major like MATLAB.
-  Eigen::MatrixXd copy = m;
+  // Written from the matrix itself (Eigen is column-major like MATLAB): without
+  // MAT_F_DONT_COPY_DATA matio copies the data (2 MB a matrix of the full model at 64
+  // segments a link), with it it keeps the pointer, frees nothing and only reads (the
+  // const_cast is for its non-const parameter). The matrix outlives the write.
   size_t dims[2] = {static_cast<size_t>(m.rows()), static_cast<size_t>(m.cols())};
-  return writeVar(mat, MatVar(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, copy.data(), 0)), name);
+  return writeVar(mat, MatVar(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, const_cast<double*>(m.data()),
+                                            MAT_F_DONT_COPY_DATA)), name);
 }
 
 MatStatus writeStrings(mat_t* mat, const std::string& name, const std::vector<std::string>& items) {
