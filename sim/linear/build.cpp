@@ -245,8 +245,12 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   so.Bq = lm.Bq;
   if (damped.c.size()) {
     so.setModalBasis(damped.modes.omega2, damped.modes.shapes, damped.c);
-    lm.proportional = std::make_shared<const ProportionalModes>(
-        ProportionalModes{std::move(damped.modes.omega2), std::move(damped.c), std::move(damped.modes.shapes)});
+    // A rigid-body mode's omega^2 is round-off of either sign: with a singular K the
+    // reductions take their modes from the solvers, which decline it by this same test
+    // (and residualization then refuses the model), never from a 1 / omega^2 of noise.
+    if (EquilibratedLu(lm.Kz).isInvertible())
+      lm.proportional = std::make_shared<const ProportionalModes>(
+          ProportionalModes{std::move(damped.modes.omega2), std::move(damped.c), std::move(damped.modes.shapes)});
   }
   step.reset();
   if (prepare_responses) so.prepare();

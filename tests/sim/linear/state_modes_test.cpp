@@ -166,9 +166,9 @@ TEST(StateModes, ProportionalModesGiveTheDenseSolversReduction) {
   expectProportionalIsDense(lm, 6);
 }
 
-// The closed form applies only where it is exact: modes of another model, or a
-// critically damped mode (a defective eigenvalue), are declined, and the reduction is
-// then the dense solver's.
+// The closed form applies only where it is exact: modes of another model, a critically
+// damped mode (a defective eigenvalue) or a rigid-body mode are declined, and the
+// reduction is then the solvers'.
 TEST(StateModes, ProportionalModesThatDoNotFitAreDeclined) {
   ArticleScene s = loadDefaultScene();
   overrideSegments(s, 4);
@@ -183,8 +183,16 @@ TEST(StateModes, ProportionalModesThatDoNotFitAreDeclined) {
   critical.c[0] = 2 * std::sqrt(critical.omega2[0]);
   EXPECT_FALSE(detail::proportionalStateModes(lm.full, std::make_shared<const ProportionalModes>(critical), 4, &why).has_value());
   EXPECT_NE(why.find("critically damped"), std::string::npos) << why;
+  // A rigid-body mode (no gravity, joint 1 free): its omega^2 is round-off, so the model
+  // keeps no proportional modes and residualization refuses it, as with the solvers.
+  ArticleScene free = s;
+  free.gravity = {0, 0, 0};
+  free.article.joints[0].hold = JointHold::Free;
+  const LinearModel rigid = buildLinearModel(free, defaultInputs(), defaultOutputs(free), DampingSpec{});
+  EXPECT_FALSE(rigid.proportional);
   ReductionOptions o;
   o.modes = 4;
+  EXPECT_THROW(reduceModal(rigid.full, o), NumericalError);
   o.proportional = std::make_shared<const ProportionalModes>(other);
   const ReducedModel fallback = reduceModal(lm.full, o), dense = reduceWith(lm.full, 4, Solver::Dense);
   const std::vector<double> w = omegas(0.01, 100, 200);
