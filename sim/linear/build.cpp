@@ -28,7 +28,9 @@ Damping dampingMatrix(const LinearModel& lm, const Model& model, const std::vect
   const Eigen::MatrixXd& Z = lm.Z;
   Damping d;
   if (damping.kind == DampingSpec::Kind::HingeViscous) {
-    d.C = Z.transpose() * hingeDampers(model, dofs, damping.hinge_beta).asDiagonal() * Z;
+    const Eigen::VectorXd c = hingeDampers(model, dofs, damping.hinge_beta);
+    d.C = Z.rows() == Z.cols() && Z.isIdentity(0.0) ? Eigen::MatrixXd(c.asDiagonal())  // an open tree
+                                                     : Eigen::MatrixXd(Z.transpose() * c.asDiagonal() * Z);
     symmetrize(d.C);
     return d;
   }
@@ -205,8 +207,9 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
                      "no response to compute: give a link segments or a joint `hold: free` or `servo`");
   const Eigen::MatrixXd& Z = lm.Z;
   std::optional<ProgressStage> step(std::in_place, strf("projecting M and K (%ld DOF)", static_cast<long>(Z.cols())));
-  lm.Mz = Z.transpose() * lin.M * Z;
-  lm.Kz = Z.transpose() * lin.K * Z;
+  const bool open_tree = Z.rows() == Z.cols() && Z.isIdentity(0.0);  // no products (four n^3 of them)
+  lm.Mz = open_tree ? lin.M : Eigen::MatrixXd(Z.transpose() * lin.M * Z);
+  lm.Kz = open_tree ? lin.K : Eigen::MatrixXd(Z.transpose() * lin.K * Z);
   symmetrize(lm.Mz);
   symmetrize(lm.Kz);
   // Symmetric by construction, to round-off that grows with the model (M Phi c Phi^T M
