@@ -69,5 +69,21 @@ TEST_F(Progress, AShortRunPrintsNone) {
   EXPECT_EQ(r.err.find("still working"), std::string::npos) << r.err;
 }
 
+// MMVLAB_STAGE_TIMES (docs/benchmarks.md): each stage's wall time as it closes, nested
+// stages indented under the command's, which closes last; none without the variable.
+TEST_F(Progress, StageTimesNameEveryStageAndTheCommandLast) {
+  const Result r = run("modes --segments 8", "MMVLAB_STAGE_TIMES=1 ");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> lines;
+  std::istringstream is(r.err);
+  for (std::string line; std::getline(is, line);)
+    if (line.rfind("mmvlab: stage ", 0) == 0) lines.push_back(line);
+  ASSERT_GE(lines.size(), 3u) << r.err;
+  EXPECT_TRUE(std::regex_search(r.err, std::regex("mmvlab: stage   +[0-9.]+ ms  eigen-solution: [0-9]+ modes of 32 DOF\\n")))
+      << r.err;
+  EXPECT_TRUE(std::regex_match(lines.back(), std::regex("mmvlab: stage [0-9.]+ ms  modes"))) << lines.back();
+  EXPECT_EQ(run("modes --segments 8").err.find("mmvlab: stage"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mmv::cli_testing
