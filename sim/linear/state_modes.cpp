@@ -350,19 +350,28 @@ bool proportionalResidualsSmall(const SecondOrderParts& p, const ProportionalMod
   return true;
 }
 
+/// Largest |X| entry.
+double largest(const Eigen::MatrixXd& X) { return X.size() ? X.cwiseAbs().maxCoeff() : 0.0; }
+
 /// structuredProducts from the modes, no factorization: M^-1 = Phi Phi^T and
 /// K^-1 = Phi diag(1 / omega^2) Phi^T (Phi^T M Phi = I, Phi^T K Phi = diag(omega^2)), each
-/// O(n^2) per column applied to.
-void modalProducts(const StateSpace& full, SecondOrderParts p, std::shared_ptr<const ProportionalModes> modes, StateEigen& sm) {
+/// O(n^2) per column applied to. The residual check on the used modes does not see the
+/// others, which these inverses use too, so each is checked where it is applied: E^-1 B
+/// on M (false when it fails: the solvers then take over), A^-1 B on K and C (a
+/// factorization of K instead when it fails).
+bool modalProducts(const StateSpace& full, SecondOrderParts p, std::shared_ptr<const ProportionalModes> modes, StateEigen& sm) {
   struct Held {
     Eigen::MatrixXd C, K, B;
     std::shared_ptr<const ProportionalModes> modes;
   };
-  const auto h = std::make_shared<const Held>(Held{std::move(p.C), std::move(p.K), full.B, std::move(modes)});
-  const Eigen::MatrixXd& phi = h->modes->shapes;
+  const Eigen::MatrixXd& phi = modes->shapes;
   const Eigen::Index n = phi.rows();
   sm.Bt = full.B;
   sm.Bt.bottomRows(n) = phi * (phi.transpose() * full.B.bottomRows(n));
+  const double m = p.M.cwiseAbs().rowwise().sum().maxCoeff();
+  if (!(largest(p.M * sm.Bt.bottomRows(n) - full.B.bottomRows(n)) <= 1e-9 * (m * largest(sm.Bt.bottomRows(n)) + 1e-300)))
+    return false;
+  const auto h = std::make_shared<const Held>(Held{std::move(p.C), std::move(p.K), full.B, std::move(modes)});
   sm.times_state_matrix = [h, n](const Eigen::MatrixXd& X) -> Eigen::MatrixXd {
     const Eigen::MatrixXd& phi = h->modes->shapes;
     Eigen::MatrixXd Y(X.rows(), X.cols());
@@ -375,9 +384,16 @@ void modalProducts(const StateSpace& full, SecondOrderParts p, std::shared_ptr<c
     const Eigen::MatrixXd& B = h->B;
     Eigen::MatrixXd X(B.rows(), B.cols());  // A X = B: X2 = B1, -K X1 - C X2 = B2
     X.bottomRows(n) = B.topRows(n);
-    X.topRows(n) = -phi * (h->modes->omega2.cwiseInverse().asDiagonal() * (phi.transpose() * (B.bottomRows(n) + h->C * B.topRows(n))));
+    const Eigen::MatrixXd rhs = B.bottomRows(n) + h->C * B.topRows(n);
+    X.topRows(n) = -phi * (h->modes->omega2.cwiseInverse().asDiagonal() * (phi.transpose() * rhs));
+    const double k = h->K.cwiseAbs().rowwise().sum().maxCoeff();
+    if (largest(h->K * X.topRows(n) + rhs) <= 1e-9 * (k * largest(X.topRows(n)) + 1e-300)) return X;
+    const EquilibratedLu klu(h->K);
+    if (!klu.isInvertible()) return std::nullopt;
+    X.topRows(n) = -klu.solve(rhs);
     return X;
   };
+  return true;
 }
 
 }  // namespace
@@ -438,7 +454,8 @@ std::optional<StateEigen> proportionalStateModes(const StateSpace& full, std::sh
     if (isComplexMember(r.lambda)) add(r.mode, std::conj(r.lambda));
   const Eigen::VectorXcd scale = normalizeEigenvectors(sm.V);
   sm.W = scale.asDiagonal() * sm.W;
-  modalProducts(full, std::move(*parts), modes, sm);
+  if (!modalProducts(full, std::move(*parts), modes, sm))
+    return decline("the proportional modes do not invert this model's M (a mode outside those kept is not M-orthonormal)");
   sm.every_mode = every_mode;
   std::vector<int> order(roots.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
