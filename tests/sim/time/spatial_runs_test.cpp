@@ -126,8 +126,8 @@ namespace {
 // of its swing, almost all of it out of the plane (the in-plane part is L (1 - cos 20)).
 TEST(SpatialTrade, TheScoredMotionIncludesTheSwingOutOfThePlane) {
   const double L = 1.0;
-  ArticleScene s = testing::spatialCantilever(testing::explicitSection(1e-4, 2e-8, 2e-8, 4e-8), 3.0 / 1e-4, 7e12,
-                                              2.7e12, L, 2);
+  ArticleScene s = testing::spatialCantilever(testing::explicitSection(1e-4, 2e-8, 2e-8, 4e-8), 3.0 / 1e-4, 7e11,
+                                              2.7e11, L, 2);
   s.gravity = {0, -9.81, 0};
   s.article.base.direction = -M_PI / 2;
   s.article.base.gimbal = GimbalSpec{};
