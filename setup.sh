@@ -5,7 +5,7 @@
 #
 #   ./setup.sh          what building and running mmvlab needs (the README's first command)
 #   ./setup.sh --test   that, plus what the test suite and the benchmarks add
-#                       (GoogleTest, Google Benchmark, Octave, pytest, Slurm)
+#                       (GoogleTest, Google Benchmark, Octave, pytest, Slurm, MuJoCo)
 set -euo pipefail
 
 build_pkgs=(
@@ -24,6 +24,7 @@ test_pkgs=(
   python3-pytest                 # the Python module's tests (python/tests)
   python3-pandas python3-matplotlib   # ... and docs/python.md's worked study, run by them
   slurmctld slurmd slurm-client munge   # a single-node Slurm runs the sharded sweep (tests/cluster/slurm_test.sh)
+  libmujoco-dev                  # MuJoCo computes the article's modes beside mmvlab (bench/mujoco, mujoco.modes_agree_with_mmvlab)
 )
 want=("${build_pkgs[@]}")
 case "${1:-}" in
