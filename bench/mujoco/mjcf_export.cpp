@@ -91,6 +91,8 @@ int main(int argc, char** argv) try {
     } else if (!pin && !SimTK::MobilizedBody::Weld::isInstanceOf(mb)) {
       throw std::runtime_error("body " + std::to_string(i) + ": a mobilizer other than a pin or a weld");
     }
+    for (const auto& p : model->getPoints())  // named points (tips, hinges) as sites
+      if (p.mobod == i) b << "<site name=\"" << p.name << "\" pos=\"" << vec(p.station_B) << "\"/>\n";
     b << children[i] << "</body>\n";
     children[parent] += b.str();
   }
