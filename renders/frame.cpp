@@ -200,24 +200,18 @@ float* writeItem(float* out, const DrawItem& it, const DrawList& list) {
   const Eigen::Matrix3f A = (R * scale.asDiagonal()).cast<float>();
   const Eigen::Matrix3f N = (R * scale.cwiseMax(1e-12).cwiseInverse().asDiagonal()).cast<float>();
   const Eigen::Vector3f t = it.pose.translation().cast<float>();
-  // The 3 x 3 products written out: Eigen's fixed-size product is a call per vertex
-  // where it is not inlined (the sanitized -O1 build, where a 8191 x 16 video spent 15 %
-  // of its time there).
-  const auto times = [](const Eigen::Matrix3f& R, const Eigen::Vector3f& v, int r) {
-    return R(r, 0) * v.x() + R(r, 1) * v.y() + R(r, 2) * v.z();
-  };
   for (std::size_t i = 0; i < m.p.size(); ++i, out += 10) {
+    const Eigen::Vector3f &p = m.p[i], &n = m.n[i];
     out[0] = rgba[0], out[1] = rgba[1], out[2] = rgba[2], out[3] = rgba[3];
-    for (int r = 0; r < 3; ++r) {
-      out[4 + r] = times(N, m.n[i], r);
-      out[7 + r] = times(A, m.p[i], r) + t[r];
+    for (int r = 0; r < 3; ++r) {  // written out: Eigen's 3 x 3 product is a call a vertex at -O1
+      out[4 + r] = N(r, 0) * n.x() + N(r, 1) * n.y() + N(r, 2) * n.z();
+      out[7 + r] = A(r, 0) * p.x() + A(r, 1) * p.y() + A(r, 2) * p.z() + t[r];
     }
   }
   return out;
 }
 
-/// Floats appendItem adds for `it`.
-std::size_t vertexFloats(const DrawItem& it) { return 10 * unitMesh(it.shape).p.size(); }
+std::size_t vertexFloats(const DrawItem& it) { return 10 * unitMesh(it.shape).p.size(); }  ///< writeItem's
 
 void drawBuffer(const VertexBuffer& vb) {
   if (vb.empty()) return;
@@ -347,7 +341,6 @@ int effectiveSupersample(const FrameOptions& o) {
   return std::max(1, std::min(o.supersample, kMaxBufferSide / std::max({o.width, o.height, 1})));
 }
 
-
 cv::Mat renderFrame(const DrawList& list, const Camera& preset, const FrameOptions& o) {
   const Camera camera = framedCamera(preset, list, o.width, o.height);
   const int k = effectiveSupersample(o), w = o.width * k, h = o.height * k;
@@ -368,21 +361,16 @@ cv::Mat renderFrame(const DrawList& list, const Camera& preset, const FrameOptio
   // the translucent rest, then translucent surroundings only where nothing is marked: a
   // translucent platform over the article would grey it (issue 36: slew.png).
   VertexBuffer opaque_context, opaque, translucent, translucent_context;
-  const auto bufferOf = [&](const DrawItem& it) -> VertexBuffer& {
-    const bool solid = it.rgba[3] >= 1;
-    return it.context ? (solid ? opaque_context : translucent_context) : (solid ? opaque : translucent);
+  const auto bufferOf = [&](const DrawItem& it) -> VertexBuffer& {  // solid or not, context or not
+    return it.context ? (it.rgba[3] >= 1 ? opaque_context : translucent_context) : (it.rgba[3] >= 1 ? opaque : translucent);
   };
-  // Each buffer sized once, then written in place: no regrowth, no copies, one fill.
-  std::map<VertexBuffer*, std::size_t> floats;
+  std::map<VertexBuffer*, std::size_t> size;  // each buffer sized once, written in place
   for (const auto& it : list.items)
-    if (!it.room || camera.room) floats[&bufferOf(it)] += vertexFloats(it);
+    if (!it.room || camera.room) size[&bufferOf(it)] += vertexFloats(it);
   std::map<VertexBuffer*, float*> end;
-  for (const auto& [buffer, n] : floats) buffer->resize(n), end[buffer] = buffer->data();
+  for (const auto& [buffer, n] : size) buffer->resize(n), end[buffer] = buffer->data();
   for (const auto& it : list.items)
-    if (!it.room || camera.room) {
-      float*& out = end[&bufferOf(it)];
-      out = writeItem(out, it, list);
-    }
+    if (!it.room || camera.room) end[&bufferOf(it)] = writeItem(end[&bufferOf(it)], it, list);
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 1, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
