@@ -11,9 +11,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
-#include <map>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string_view>

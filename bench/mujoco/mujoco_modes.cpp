@@ -37,7 +37,10 @@ Eigen::MatrixXd jacobian(const mjModel* m, mjData* d, const Eigen::VectorXd& q) 
 
 }  // namespace
 
+static void warn(const char* message) { std::fprintf(stderr, "mujoco_modes: MuJoCo: %s\n", message); }  // no MUJOCO_LOG.TXT
+
 int main(int argc, char** argv) {
+  mju_user_warning = warn;
   if (argc < 2) {
     std::fprintf(stderr, "usage: mujoco_modes article.xml [modes]\n");
     return 64;
@@ -61,12 +64,20 @@ int main(int argc, char** argv) {
     q -= jacobian(m, d, q).lu().solve(f);
     f = force(m, d, q);
   }
+  if (f.cwiseAbs().maxCoeff() > 1e-10) {
+    std::fprintf(stderr, "mujoco_modes: no equilibrium after %d Newton steps (residual %g)\n", steps, f.cwiseAbs().maxCoeff());
+    return 2;
+  }
   Eigen::MatrixXd K = -jacobian(m, d, q);
   K = 0.5 * (K + K.transpose()).eval();
   force(m, d, q);  // d at the equilibrium: its mass matrix
   Eigen::MatrixXd M(m->nv, m->nv);
   mj_fullM(m, M.data(), d->qM);  // row-major and symmetric: the same matrix
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
+  if (es.info() != Eigen::Success) {
+    std::fprintf(stderr, "mujoco_modes: the eigen solution failed\n");
+    return 2;
+  }
   std::printf("equilibrium %d %.3g\n", steps, f.cwiseAbs().maxCoeff());
   for (int k = 0; k < std::min<int>(want, m->nv); ++k)
     std::printf("%.12g\n", std::sqrt(std::max(es.eigenvalues()[k], 0.0)) / (2 * M_PI));

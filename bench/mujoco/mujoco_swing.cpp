@@ -9,7 +9,16 @@
 #include <cstdio>
 #include <cstdlib>
 
+namespace {
+
+// MuJoCo's warnings to stderr: its default handler also appends them to MUJOCO_LOG.TXT in
+// the working directory (the source tree, under the test suite).
+void warn(const char* message) { std::fprintf(stderr, "mujoco_swing: MuJoCo: %s\n", message); }
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  mju_user_warning = warn;
   if (argc < 6) {
     std::fprintf(stderr, "usage: mujoco_swing article.xml site timestep duration sample_rate\n");
     return 64;
@@ -35,6 +44,11 @@ int main(int argc, char** argv) {
   std::printf("t,x,y\n%.17g,%.17g,%.17g\n", 0.0, d->site_xpos[3 * site], d->site_xpos[3 * site + 1]);
   for (long k = 1; k <= samples; ++k) {
     for (long i = 0; i < per_sample; ++i) mj_step(m, d);
+    for (int w = 0; w < mjNWARNING; ++w)
+      if (d->warning[w].number > 0) {  // a NaN or huge state: MuJoCo reset it; the run is void
+        std::fprintf(stderr, "mujoco_swing: unstable at t = %g s with a step of %g s\n", k / rate, h);
+        return 3;
+      }
     mj_kinematics(m, d);  // the site where the state now is (mj_step leaves it at the step's start)
     std::printf("%.17g,%.17g,%.17g\n", k / rate, d->site_xpos[3 * site], d->site_xpos[3 * site + 1]);
   }
