@@ -129,6 +129,10 @@ struct LinkSpec {
   /// With modes_up_to_hz: the rule's count of modes times this (capped at the hinges): a
   /// verification companion's 2 (sim/time/verify.hpp).
   int modes_multiplier = 1;
+  /// With modes_up_to_hz, a start at rest (a release): also the modes until those left
+  /// out carry at most kReleaseStaticShare of the link's static response to the load it
+  /// is released under (sim/time/fidelity.hpp). Not a scene key.
+  bool modes_cover_release = false;
   /// Whether a time run carries the link in modal coordinates.
   bool modal() const { return !rigid && (modes > 0 || modes_up_to_hz.has_value()); }
 };

@@ -14,8 +14,9 @@ The reference is MuJoCo's RK4 at 1e-5 s, checked against mmvlab's ARKODE ERK at 
 (the two must agree within 1e-6 m, or the script exits 1). Then the largest RK4 step (of
 those dividing the 10 ms sample interval) within 1e-4 m of it, and for each of mmvlab's
 integrators the loosest tolerance within 1e-4 m, on the same model and with each link in
-its 3 or 4 lowest modes (`links.<name>.modes`), each timed whole-process (MuJoCo's median
-of 5, mmvlab's of 3).
+its 3 or 4 lowest modes (`links.<name>.modes`), and the scene's default run (`simulation.
+fidelity: auto`: the modes a release needs, CVODE BDF at the default tolerance), each
+timed whole-process (MuJoCo's median of 5, mmvlab's of 3).
 """
 import csv
 import math
@@ -53,9 +54,10 @@ def mujoco_tip(build, xml, h, runs=1, duration=2.0):
 
 
 def mmvlab_tip(build, tmp, integrator, tol, runs=1, extra=()):
+    """integrator None: the scene's default fidelity (`simulation.fidelity: auto`), integrator and tolerance."""
     out = os.path.join(tmp, "run")
-    args = [os.path.join(build, "mmvlab"), "simulate", SCENE, "--integrator", integrator, "--accuracy", repr(tol), "--out", out,
-            "--force"] + list(extra)
+    chosen = ["--set", "simulation.fidelity=auto"] if integrator is None else ["--integrator", integrator, "--accuracy", repr(tol)]
+    args = [os.path.join(build, "mmvlab"), "simulate", SCENE, "--out", out, "--force"] + chosen + list(extra)
     seconds, p = timed(args, runs)
     if p.returncode != 0:
         return seconds, None
@@ -104,6 +106,12 @@ def main():
         for modes in (3, 4):
             extra = ["--set", "links.upper.modes=%d" % modes, "--set", "links.lower.modes=%d" % modes]
             candidates += [("%d modes a link" % modes, integrator, extra) for integrator in MODAL_INTEGRATORS]
+        # What a user gets who names neither the model nor the integrator (docs/accuracy.md,
+        # "The default fidelity"): the rule's modes for a release, its integrator and tolerance.
+        seconds, tip = mmvlab_tip(build, tmp, None, None, runs=3)
+        e = error(tip, ref)
+        print("mmvlab the scene's default run (fidelity auto) tip error %.2g m%s: %.3f s whole process (median of 3), %.2fx MuJoCo"
+              % (e, "" if e <= TARGET else " (NOT within 1e-4 m)", seconds, seconds / mj_seconds))
         for label, integrator, extra in candidates:
             for tol in TOLERANCES:
                 seconds, tip = mmvlab_tip(build, tmp, integrator, tol, extra=extra)

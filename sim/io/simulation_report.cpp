@@ -44,9 +44,11 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
   j["samples"] = r.record.rows.size();
   if (!r.modal_links.empty()) {
     auto links = nlohmann::ordered_json::array();
-    for (const auto& m : r.modal_links)
+    for (const auto& m : r.modal_links) {
       links.push_back({{"link", m.link}, {"modes", m.modes}, {"hinges", m.hinges}, {"highest_kept_hz", m.highest_kept_hz},
                        {"first_dropped_hz", m.first_dropped_hz > 0 ? nlohmann::ordered_json(m.first_dropped_hz) : nlohmann::ordered_json(nullptr)}});
+      if (m.release_share_left) links.back()["release_share_left"] = *m.release_share_left;
+    }
     j["modal_links"] = links;
   }
   const auto all = [](const auto&) { return true; };
@@ -116,8 +118,11 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
   if (!r.modal_links.empty()) {
     os << "Links in modal coordinates (root held, the rest rigid, at the start):\n";
     for (const auto& m : r.modal_links)
-      os << strf("  %s: %d of %d modes, up to %.4g Hz%s\n", m.link.c_str(), m.modes, m.hinges, m.highest_kept_hz,
-                 m.first_dropped_hz > 0 ? strf("; the first left out %.4g Hz", m.first_dropped_hz).c_str() : " (all kept)");
+      os << strf("  %s: %d of %d modes, up to %.4g Hz%s%s\n", m.link.c_str(), m.modes, m.hinges, m.highest_kept_hz,
+                 m.first_dropped_hz > 0 ? strf("; the first left out %.4g Hz", m.first_dropped_hz).c_str() : " (all kept)",
+                 m.release_share_left
+                     ? strf("; the modes left out carry %.2g of the release's static response", *m.release_share_left).c_str()
+                     : "");
     os << "\n";
   }
   Table t({"joint", "peak_torque_N*m", "capacity_N*m", "within"});

@@ -108,7 +108,7 @@ class Builder {
       c.held = true;  // at rest in statics and modes; driven in time runs
       model_.addCoordinate(c);
       model_.addBody(table.getMobilizedBodyIndex(), part, true);
-      if (base.motion) model_.setPrescribedAcceleration(c.mobod, prescribeTableProgram(table, makeTableProgram(*base.motion)));
+      if (base.motion) model_.setPrescribedMotion(c.mobod, prescribeTableProgram(table, makeTableProgram(*base.motion)));
       // Held in statics and modes, so what is welded to it counts as fixed there.
       ground = Frame{table.getMobilizedBodyIndex(), rotZ(base.direction), true};
       if (base.motion_z) ground = buildTableZStage(*base.motion_z, table.getMobilizedBodyIndex(), part, ground);
@@ -137,11 +137,10 @@ class Builder {
   /// held the slew to the range; check's holding grid moves its start).
   void holdOrSlew(SimTK::MobilizedBody& pin, double angle, const std::optional<SlewSpec>& spec, bool continuous) {
     if (spec) {
-      model_.setPrescribedAcceleration(pin.getMobilizedBodyIndex(),
+      model_.setPrescribedMotion(pin.getMobilizedBodyIndex(),
                                        prescribeSlew(pin, makeSlew(*spec, angle, INFINITY, continuous), spec->start_time));
     } else {
-      SimTK::Motion::Steady(pin, 0.0);
-      model_.setPrescribedAcceleration(pin.getMobilizedBodyIndex(), [](double) { return 0.0; });
+      model_.setPrescribedMotion(pin.getMobilizedBodyIndex(), prescribeRest(pin));
     }
   }
 
@@ -297,7 +296,7 @@ class Builder {
     c.held = true;
     model_.addCoordinate(c);
     model_.addBody(stage.getMobilizedBodyIndex(), part, true);
-    model_.setPrescribedAcceleration(c.mobod, prescribeTableProgram(stage, makeTableProgram(motion)));
+    model_.setPrescribedMotion(c.mobod, prescribeTableProgram(stage, makeTableProgram(motion)));
     return Frame{stage.getMobilizedBodyIndex(), on_table.X_BF, true};
   }
 

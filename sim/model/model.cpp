@@ -284,13 +284,13 @@ void Model::addReducedMotions() {
   reduced_motions_.addTo(matter_, free, static_cast<int>(coords_.size()));  // one u per coordinate (finalize checks)
 }
 
-void Model::setPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod, std::function<double(double)> udot) {
-  prescribed_udot_[mobod] = std::move(udot);
+void Model::setPrescribedMotion(SimTK::MobilizedBodyIndex mobod, PrescribedMotion motion) {
+  prescribed_[mobod] = std::move(motion);
 }
 
-const std::function<double(double)>* Model::findPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod) const {
-  const auto it = prescribed_udot_.find(mobod);
-  return it == prescribed_udot_.end() ? nullptr : &it->second;
+const PrescribedMotion* Model::findPrescribedMotion(SimTK::MobilizedBodyIndex mobod) const {
+  const auto it = prescribed_.find(mobod);
+  return it == prescribed_.end() ? nullptr : &it->second;
 }
 
 void Model::finalize() {

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "facility/table_programs.hpp"
+#include "sim/model/motions.hpp"
 #include "sim/model/reduced_motions.hpp"
 #include "sim/model/rotation_spring.hpp"
 
@@ -224,11 +225,11 @@ class Model {
   /// no Motion drives an acceleration-level one, disabled by default
   /// (sim/model/reduced_motions.hpp). Call before finalize.
   void addReducedMotions();
-  /// The acceleration a one-coordinate mobilizer's Motion prescribes (the builder
-  /// registers each Motion's; runs in reduced coordinates use them).
-  void setPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod, std::function<double(double)> udot);
+  /// The motion a one-coordinate mobilizer's Motion prescribes (the builder registers
+  /// each Motion's; runs in reduced coordinates use them).
+  void setPrescribedMotion(SimTK::MobilizedBodyIndex mobod, PrescribedMotion motion);
   /// Registered for `mobod`, or null.
-  const std::function<double(double)>* findPrescribedAcceleration(SimTK::MobilizedBodyIndex mobod) const;
+  const PrescribedMotion* findPrescribedMotion(SimTK::MobilizedBodyIndex mobod) const;
   const ReducedMotions& getReducedMotions() const { return reduced_motions_; }
   /// Realizes topology and builds the reference state. Call once, last.
   void finalize();
@@ -356,7 +357,7 @@ class Model {
   std::shared_ptr<LinearDamping> linear_damper_;
   /// Shared with their Simbody force element, made with the first.
   std::shared_ptr<std::vector<RotationSpring>> rotation_springs_ = std::make_shared<std::vector<RotationSpring>>();
-  std::map<SimTK::MobilizedBodyIndex, std::function<double(double)>> prescribed_udot_;
+  std::map<SimTK::MobilizedBodyIndex, PrescribedMotion> prescribed_;
 };
 
 }  // namespace mmv

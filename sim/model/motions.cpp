@@ -40,14 +40,22 @@ class TableProgramMotion : public SimTK::Motion::Custom::Implementation {
 
 }  // namespace
 
-PrescribedAcceleration prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program) {
+PrescribedMotion prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program) {
   SimTK::Motion::Custom(mobod, new TableProgramMotion(program));
-  return [program](double t) { return program->acceleration(t); };
+  return {[program](double t) { return program->position(t); }, [program](double t) { return program->velocity(t); },
+          [program](double t) { return program->acceleration(t); }};
 }
 
-PrescribedAcceleration prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s) {
+PrescribedMotion prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s) {
   SimTK::Motion::Custom(mobod, new SlewMotion(slew, start_s));
-  return [slew, start_s](double t) { return slew.at(t - start_s).acceleration; };
+  return {[slew, start_s](double t) { return slew.at(t - start_s).angle; },
+          [slew, start_s](double t) { return slew.at(t - start_s).rate; },
+          [slew, start_s](double t) { return slew.at(t - start_s).acceleration; }};
+}
+
+PrescribedMotion prescribeRest(SimTK::MobilizedBody& mobod) {
+  SimTK::Motion::Steady(mobod, 0.0);
+  return {{}, {}, [](double) { return 0.0; }};
 }
 
 }  // namespace mmv

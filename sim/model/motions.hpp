@@ -15,15 +15,24 @@
 
 namespace mmv {
 
-/// A prescribed coordinate's acceleration over time (rad/s^2 or m/s^2): what a run in
-/// reduced coordinates (sim/time/modal_links.hpp) needs without realizing Acceleration.
-using PrescribedAcceleration = std::function<double(double t)>;
+/// A prescribed coordinate over time: what a run in reduced coordinates
+/// (sim/time/modal_links.hpp) needs without realizing Simbody's stages.
+struct PrescribedMotion {
+  /// Position (rad or m) and rate; empty for a coordinate held where the state has it,
+  /// at rest (a locked joint).
+  std::function<double(double t)> q, u;
+  std::function<double(double t)> udot;  ///< rad/s^2 or m/s^2
+};
 
-/// Prescribes a one-coordinate mobilizer's position by a program; returns its acceleration.
-PrescribedAcceleration prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program);
+/// Prescribes a one-coordinate mobilizer's position by a program; returns the motion.
+PrescribedMotion prescribeTableProgram(SimTK::MobilizedBody& mobod, std::shared_ptr<const facility::TableProgram> program);
 
 /// Prescribes a one-coordinate mobilizer's angle by a slew that starts at `start_s` (s);
-/// returns its acceleration.
-PrescribedAcceleration prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s);
+/// returns the motion.
+PrescribedMotion prescribeSlew(SimTK::MobilizedBody& mobod, const facility::Slew& slew, double start_s);
+
+/// Holds a one-coordinate mobilizer at rest where the state has it (Simbody's Steady
+/// Motion at 0); returns the motion.
+PrescribedMotion prescribeRest(SimTK::MobilizedBody& mobod);
 
 }  // namespace mmv

@@ -103,19 +103,22 @@ FidelityChoice chooseFidelity(ArticleScene& scene) {
   if (!spec.integrator.empty() && !integratorInfo(spec.integrator).runs_modal_links)
     return segments("the scene's integrator, " + spec.integrator +
                     ", cannot carry links in modal coordinates (cvode_bdf, cvode_adams, arkode_erk, arkode_dirk can)");
-  if (!spec.from_equilibrium) return segments("a start at rest away from the equilibrium excites every mode");
   c.band_hz = excitedBandHz(scene, &c.band_from);
   if (!std::isfinite(c.band_hz)) return segments(c.band_from + " is a trapezoidal move, whose acceleration steps excite every mode");
   c.modal = c.by_rule = true;
   c.cutoff_hz = kFidelityBandFactor * c.band_hz;
   for (LinkSpec& l : links)
-    if (!l.rigid) l.modes_up_to_hz = c.cutoff_hz;
+    if (!l.rigid) l.modes_up_to_hz = c.cutoff_hz, l.modes_cover_release = !spec.from_equilibrium;
   c.reason = c.band_hz > 0
                  ? strf("links in modal coordinates: each link's modes up to %.4g Hz (%g x the %.4g Hz %s reaches), at "
                         "least %d",
                         c.cutoff_hz, kFidelityBandFactor, c.band_hz, c.band_from.c_str(), kFidelityMinModes)
                  : strf("links in modal coordinates: each link's first %d modes (no program moves the article)",
                         kFidelityMinModes);
+  if (!spec.from_equilibrium)
+    c.reason += strf(", and those the release needs (a start at rest: the modes left out carry at most %g of each "
+                     "link's static response to its load at the start)",
+                     kReleaseStaticShare);
   return c;
 }
 

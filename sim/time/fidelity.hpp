@@ -7,10 +7,15 @@
 /// the article rigid, at the run's start: sim/time/modal_links.hpp) up to
 /// kFidelityBandFactor times the highest frequency the scene's programs excite, and at
 /// least kFidelityMinModes of them, under CVODE BDF unless the scene names an ODE
-/// method. The segment model (every hinge its own coordinate) is kept, with the reason,
-/// where modal links cannot represent the run: a closed tree (closures, a shaker's
-/// stinger), the spatial model, a start at rest away from equilibrium (it excites every
-/// mode), a trapezoidal move (its acceleration steps do too), or an integrator the scene
+/// method. A start at rest away from the equilibrium (a release) applies the link's
+/// load at once, a step that excites every mode, each with at most twice its static
+/// response, which falls as 1 / omega^2 as a program's does above its band: the same
+/// rule, and the link also keeps its modes until those left out carry at most
+/// kReleaseStaticShare of its static response to that load (stiffness norm; with a tip
+/// or spread load 4 modes leave 6e-4 and less, a load near the root needs more). The segment model (every hinge its own
+/// coordinate) is kept, with the reason, where modal links cannot represent the run: a
+/// closed tree (closures, a shaker's stinger), the spatial model, a trapezoidal move (its
+/// acceleration steps excite every mode at full strength), or an integrator the scene
 /// names that cannot carry them. `simulation.fidelity: segments` keeps it always; a
 /// link's own `modes:` is the scene's choice and is kept as written.
 
@@ -22,6 +27,7 @@ namespace mmv {
 
 constexpr double kFidelityBandFactor = 10;
 constexpr int kFidelityMinModes = 4;
+constexpr double kReleaseStaticShare = 1e-3;
 
 struct FidelityChoice {
   bool modal = false;      ///< links in modal coordinates (the scene's `modes:` or the rule's)

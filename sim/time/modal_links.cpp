@@ -31,7 +31,50 @@ Eigen::MatrixXd dampingOverFree(const Model& model, const std::vector<int>& free
   return C;
 }
 
+/// The generalized forces at the start over the free mobilities `free_u` (gravity, the
+/// hinges' springs: minus the inverse dynamics' residual at rest with no acceleration),
+/// the load a release applies at once; empty when no link keeps modes for a release.
+Eigen::VectorXd releaseLoad(const Model& model, const ArticleSpec& article, const SimTK::State& start,
+                            const std::vector<int>& free_u) {
+  if (std::none_of(article.links.begin(), article.links.end(), [](const LinkSpec& l) { return l.modes_cover_release; }))
+    return {};
+  SimTK::State s = start;
+  const SimTK::MultibodySystem& sys = model.getSystem();
+  s.updU() = 0;
+  sys.realize(s, SimTK::Stage::Dynamics);
+  SimTK::Vector residual;
+  model.getMatter().calcResidualForceIgnoringConstraints(s, sys.getMobilityForces(s, SimTK::Stage::Dynamics),
+                                                         sys.getRigidBodyForces(s, SimTK::Stage::Dynamics),
+                                                         SimTK::Vector(s.getNU(), 0.0), residual);
+  Eigen::VectorXd f(free_u.size());
+  for (std::size_t r = 0; r < free_u.size(); ++r) f[static_cast<Eigen::Index>(r)] = -residual[free_u[r]];
+  return f;
+}
+
+/// Body b's transform in ground from a State realized to Position.
+auto simbodyTransforms(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& s) {
+  return [&matter, &s](int b) -> const SimTK::Transform& {
+    return matter.getMobilizedBody(SimTK::MobilizedBodyIndex(b)).getBodyTransform(s);
+  };
+}
+
 }  // namespace
+
+Eigen::VectorXd staticShares(const Eigen::MatrixXd& Phi, const Eigen::VectorXd& lambda, const Eigen::VectorXd& f) {
+  const Eigen::VectorXd p = Phi.transpose() * f;
+  Eigen::VectorXd energy = Eigen::VectorXd::Zero(lambda.size());
+  for (Eigen::Index j = 0; j < lambda.size(); ++j)
+    if (lambda[j] > 0) energy[j] = p[j] * p[j] / lambda[j];
+  const double total = energy.sum();
+  return total > 0 ? (energy / total).eval() : energy;
+}
+
+int modesForRelease(const Eigen::VectorXd& shares, int at_least) {
+  const int h = static_cast<int>(shares.size());
+  int kept = std::min(h, at_least);
+  while (kept < h && shares.tail(h - kept).sum() > kReleaseStaticShare) ++kept;
+  return kept;
+}
 
 ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const SimTK::State& start)
     : model_(model), rhs_(start) {
@@ -54,6 +97,7 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   // and the Newton iteration's Jacobian the projection.
   Eigen::MatrixXd K = calcStiffness(model, start, free_);
   K = 0.5 * (K + K.transpose()).eval();
+  const Eigen::VectorXd load = releaseLoad(model, article, start, free_u_);
   std::vector<Eigen::VectorXd> columns;
   std::vector<bool> in_a_link(n, false);
   for (const auto& l : article.links) {
@@ -63,7 +107,7 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
       const Coordinate& c = model.getCoordinates()[free_[r]];
       if (c.kind == CoordinateKind::Hinge && c.part == l.name) rows.push_back(r), in_a_link[r] = true;
     }
-    addLink(l, rows, M, K, columns);
+    addLink(l, rows, M, K, load, columns);
   }
   for (int r = 0; r < n; ++r) {  // every other free coordinate is its own
     if (in_a_link[r]) continue;
@@ -78,6 +122,10 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   const int nu = start.getNU();
   udot_ = SimTK::Vector(nu, 0.0);
   v_ = SimTK::Vector(nu, 0.0);
+  readBodies(model, start);
+}
+
+void ModalLinks::readBodies(const Model& model, const SimTK::State& start) {
   // The mass matrix in closed form when every free coordinate is a pin (one per
   // mobilizer) and their axes are parallel, the planar article's case; else M v products.
   // (The planar article's pins stay parallel as it moves: only the gimbal, below all
@@ -85,6 +133,7 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   const SimTK::SimbodyMatterSubsystem& matter = model.getMatter();
   bodies_.assign(matter.getNumBodies(), PinBody{});
   parallel_pins_ = true;
+  const int n = static_cast<int>(free_.size());
   for (int r = 0; r < n; ++r) {
     const Coordinate& c = model.getCoordinates()[free_[r]];
     const SimTK::MobilizedBody& mb = matter.getMobilizedBody(c.mobod);
@@ -108,14 +157,25 @@ ModalLinks::ModalLinks(const Model& model, const ArticleSpec& article, const Sim
   for (int i = 0; i < model.getNumCoordinates(); ++i) {
     const Coordinate& c = model.getCoordinates()[i];
     if (std::find(free_.begin(), free_.end(), i) != free_.end()) continue;
-    const auto* udot = model.findPrescribedAcceleration(c.mobod);
-    if (!udot) throw InternalError("coordinate " + c.name + " is neither free nor prescribed with a known acceleration");
-    prescribed_.push_back({model.getUIndex(i), udot});
+    const PrescribedMotion* motion = model.findPrescribedMotion(c.mobod);
+    if (!motion) throw InternalError("coordinate " + c.name + " is neither free nor prescribed with a known motion");
+    prescribed_.push_back({i, motion});
+  }
+  // The own inverse dynamics where it writes the model out and the pins are parallel
+  // (its mass matrix is the closed form's).
+  if (parallel_pins_ && TreeDynamics::supports(model)) {
+    tree_ = std::make_unique<TreeDynamics>(model, start);
+    const int nc = model.getNumCoordinates();
+    q_start_.resize(nc);
+    for (int i = 0; i < nc; ++i) q_start_[i] = start.getQ()[model.getQIndex(i)];
+    tq_ = q_start_;
+    tu_.setZero(nc);
+    tudot_.setZero(nc);
   }
 }
 
 void ModalLinks::addLink(const LinkSpec& l, const std::vector<int>& rows, const Eigen::MatrixXd& M,
-                         const Eigen::MatrixXd& K_free, std::vector<Eigen::VectorXd>& columns) {
+                         const Eigen::MatrixXd& K_free, const Eigen::VectorXd& load, std::vector<Eigen::VectorXd>& columns) {
   const int h = static_cast<int>(rows.size());
   if (h < l.modes) throw InternalError(strf("link %s: %d modes asked of %d hinges", l.name.c_str(), l.modes, h));
   Eigen::MatrixXd Mh(h, h), K(h, h);
@@ -129,17 +189,26 @@ void ModalLinks::addLink(const LinkSpec& l, const std::vector<int>& rows, const 
   const int n = static_cast<int>(free_.size());
   auto hz = [&](int j) { return std::sqrt(std::max(0.0, eig.eigenvalues()[j])) / (2 * M_PI); };
   int kept = l.modes;
+  std::optional<double> release_left;
   if (kept <= 0) {  // the default fidelity's rule (sim/time/fidelity.hpp): up to the cutoff, at least the minimum
     kept = std::min(h, kFidelityMinModes);
     while (kept < h && hz(kept) <= *l.modes_up_to_hz) ++kept;
+    Eigen::VectorXd share;
+    if (l.modes_cover_release) {  // and what the release's step needs
+      Eigen::VectorXd f(h);
+      for (int r = 0; r < h; ++r) f[r] = load[rows[r]];
+      share = staticShares(eig.eigenvectors(), eig.eigenvalues(), f);
+      kept = modesForRelease(share, kept);
+    }
     kept = std::min(h, kept * std::max(1, l.modes_multiplier));
+    if (l.modes_cover_release) release_left = share.tail(h - kept).sum();
   }
   for (int j = 0; j < kept; ++j) {
     Eigen::VectorXd col = Eigen::VectorXd::Zero(n);
     for (int r = 0; r < h; ++r) col[rows[r]] = eig.eigenvectors()(r, j);  // M-normalized
     columns.push_back(col);
   }
-  summary_.push_back({l.name, kept, h, hz(kept - 1), kept < h ? hz(kept) : 0.0});
+  summary_.push_back({l.name, kept, h, hz(kept - 1), kept < h ? hz(kept) : 0.0, release_left});
 }
 
 void ModalLinks::project(const SimTK::State& s, double* y) const {
@@ -156,7 +225,7 @@ void ModalLinks::load(double t, const double* y, SimTK::State& s, double* ydot, 
   // A right-hand side in a State of its own without the reduced Motions; a sample in the
   // run's State, whose reduced Motions then take the accelerations, realized to
   // Acceleration (outputs, motion forces, energy).
-  accelerations(t, y, full ? s : rhs_);
+  accelerations(t, y, full ? s : rhs_, !full);
   for (int j = 0; j < k; ++j) ydot[j] = y[k + j], ydot[k + j] = a_[j];
   if (!full) return;
   const int n = static_cast<int>(free_.size());
@@ -181,10 +250,33 @@ bool ModalLinks::jacobian(double t, const double* y, double* J) const {
   return true;
 }
 
-void ModalLinks::accelerations(double t, const double* y, SimTK::State& s) const {
+void ModalLinks::ownResidual(double t, const double* y) const {
+  const int n = static_cast<int>(free_.size()), k = static_cast<int>(T_.cols());
+  const Eigen::Map<const Eigen::VectorXd> q(y, k), u(y + k, k);
+  x_.noalias() = T_ * q;
+  for (int r = 0; r < n; ++r) tq_[free_[r]] = start_[r] + x_[r];
+  x_.noalias() = T_ * u;
+  for (int r = 0; r < n; ++r) tu_[free_[r]] = x_[r], tudot_[free_[r]] = 0.0;
+  for (const auto& [i, motion] : prescribed_) {
+    if (motion->q) tq_[i] = motion->q(t), tu_[i] = motion->u(t);
+    tudot_[i] = motion->udot(t);
+  }
+  tree_->residual(t, tq_, tu_, tudot_, tr_);
+  for (int r = 0; r < n; ++r) x_[r] = -tr_[free_[r]];
+}
+
+void ModalLinks::accelerations(double t, const double* y, SimTK::State& s, bool own) const {
+  const int k = static_cast<int>(T_.cols());
+  if (own && tree_) {
+    ownResidual(t, y);
+    b_.noalias() = T_.transpose() * x_;
+    planarMassMatrix([&](int b) -> const SimTK::Transform& { return tree_->bodyTransform(b); });
+    a_ = G_.llt().solve(b_);
+    return;
+  }
   const SimTK::MultibodySystem& sys = model_.getSystem();
   const SimTK::SimbodyMatterSubsystem& matter = model_.getMatter();
-  const int n = static_cast<int>(free_.size()), k = static_cast<int>(T_.cols());
+  const int n = static_cast<int>(free_.size());
   const Eigen::Map<const Eigen::VectorXd> q(y, k), u(y + k, k);
   x_.noalias() = T_ * q;
   s.setTime(t);
@@ -200,7 +292,7 @@ void ModalLinks::accelerations(double t, const double* y, SimTK::State& s) const
   // The residual M udot + c - f of the inverse dynamics with the reduced accelerations
   // zero and the prescribed ones as commanded: O(n), no forward dynamics (it ignores
   // Motions, so `s` may have the reduced ones enabled).
-  for (const auto& [ui, udot] : prescribed_) udot_[ui] = (*udot)(t);
+  for (const auto& [i, motion] : prescribed_) udot_[model_.getUIndex(i)] = motion->udot(t);
   sys.realize(s, SimTK::Stage::Dynamics);
   matter.calcResidualForceIgnoringConstraints(s, sys.getMobilityForces(s, SimTK::Stage::Dynamics),
                                               sys.getRigidBodyForces(s, SimTK::Stage::Dynamics), udot_, f_);
@@ -209,7 +301,7 @@ void ModalLinks::accelerations(double t, const double* y, SimTK::State& s) const
   x_.resize(n);
   for (int r = 0; r < n; ++r) x_[r] = -f_[free_u_[r]];
   b_.noalias() = T_.transpose() * x_;
-  if (parallel_pins_) planarMassMatrix(s);
+  if (parallel_pins_) planarMassMatrix(simbodyTransforms(matter, s));
   else productsMassMatrix(s);
   // T^T (r0 + M T a) = 0: the projected forces do no work on the reduced coordinates.
   a_ = G_.llt().solve(b_);
@@ -229,10 +321,10 @@ void ModalLinks::productsMassMatrix(const SimTK::State& s) const {
 }
 
 std::pair<Eigen::MatrixXd, Eigen::MatrixXd> ModalLinks::massMatrices(double t, const double* y) const {
-  accelerations(t, y, rhs_);
+  accelerations(t, y, rhs_, false);
   std::pair<Eigen::MatrixXd, Eigen::MatrixXd> out;
   if (parallel_pins_) {
-    planarMassMatrix(rhs_);
+    planarMassMatrix(simbodyTransforms(model_.getMatter(), rhs_));
     out.first = G_;
   }
   productsMassMatrix(rhs_);
@@ -240,21 +332,21 @@ std::pair<Eigen::MatrixXd, Eigen::MatrixXd> ModalLinks::massMatrices(double t, c
   return out;
 }
 
-void ModalLinks::planarMassMatrix(const SimTK::State& s) const {
+template <class BodyTransform>
+void ModalLinks::planarMassMatrix(const BodyTransform& X) const {
   // Free pins with one axis a through points o_i: a unit rate of reduced coordinate j
   // turns body b at S_bj = sum_i T_ij (i: its free ancestors and itself) and moves its
   // mass centre p_b at a x (p_b S_bj - P_bj), P_bj = sum_i T_ij o_i; both accumulate
   // outward. G = sum_b m_b v_b^T v_b + (a^T I_b a) S_b^T S_b = A^T A.
-  const SimTK::SimbodyMatterSubsystem& matter = model_.getMatter();
   const int k = static_cast<int>(T_.cols()), nb = static_cast<int>(bodies_.size());
   S_.setZero(nb, k);
   P_.setZero(3 * nb, k);
   A_.setZero(4 * nb, k);
-  const SimTK::Vec3 axis_G = matter.getMobilizedBody(axis_body_).getBodyRotation(s) * axis_M_;
+  const SimTK::Vec3 axis_G = X(axis_body_).R() * axis_M_;
   const Eigen::Vector3d axis(axis_G[0], axis_G[1], axis_G[2]);
   for (int b = 1; b < nb; ++b) {  // parents come before children
     const PinBody& body = bodies_[b];
-    const SimTK::Transform& X_GB = matter.getMobilizedBody(SimTK::MobilizedBodyIndex(b)).getBodyTransform(s);
+    const SimTK::Transform& X_GB = X(b);
     S_.row(b) = S_.row(body.parent);
     P_.middleRows(3 * b, 3) = P_.middleRows(3 * body.parent, 3);
     if (body.free_row >= 0) {

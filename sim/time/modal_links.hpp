@@ -20,9 +20,11 @@
 /// model's run. What is dropped is the truncated modes' motion and so their stiffness:
 /// the stiff hinge modes leave the time run, and with them most of its cost.
 ///
-/// Simbody evaluates it: the inverse dynamics with a = 0 and the prescribed joints'
-/// accelerations as commanded gives the residual forces (O(n)), and K products M v give
-/// T^T M T. Every free mobilizer carries an acceleration-level Motion
+/// The inverse dynamics with a = 0 and the prescribed joints' accelerations as
+/// commanded gives the residual forces (O(n)): sim/model/tree_dynamics.hpp's own pass for
+/// a tree of pins, sliders and welds (the planar article), else Simbody's from a State
+/// realized to Dynamics; T^T M T is summed in closed form over the bodies (parallel
+/// pins), else from K of Simbody's products M v. Every free mobilizer carries an acceleration-level Motion
 /// (sim/model/reduced_motions.hpp), so at a sample the state is realized with the
 /// reduced accelerations, so every output (points, sensors, joint torques, energy
 /// books) is the reduced model's. The projected constraint forces do no work
@@ -31,12 +33,15 @@
 #include <Simbody.h>
 
 #include <Eigen/Dense>
+#include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "article/article_spec.hpp"
 #include "sim/model/model.hpp"
+#include "sim/model/tree_dynamics.hpp"
 #include "sim/time/external_stepper.hpp"
 
 namespace mmv {
@@ -47,7 +52,19 @@ struct ModalLinkSummary {
   int modes = 0, hinges = 0;
   double highest_kept_hz = 0;   ///< the last kept mode at the start
   double first_dropped_hz = 0;  ///< the first mode left out (0: none)
+  /// A release (LinkSpec::modes_cover_release): the share of the link's static response
+  /// to its load at the start that the modes left out carry (stiffness norm).
+  std::optional<double> release_share_left;
 };
+
+/// Each of a link's modes' share of its static response to the load `f` in the
+/// stiffness norm, (phi_j^T f)^2 / lambda_j over sum_j of the same (M-normalized `Phi`,
+/// eigenvalues `lambda` ascending; modes of no positive stiffness carry none); all zero
+/// when `f` loads none. Their sum before normalizing is f^T K^-1 f.
+Eigen::VectorXd staticShares(const Eigen::MatrixXd& Phi, const Eigen::VectorXd& lambda, const Eigen::VectorXd& f);
+/// A release's rule (sim/time/fidelity.hpp): the fewest modes, at least `at_least`, whose
+/// left-out `shares` sum to at most kReleaseStaticShare.
+int modesForRelease(const Eigen::VectorXd& shares, int at_least);
 
 class ModalLinks final : public ReducedCoordinates {
  public:
@@ -70,14 +87,22 @@ class ModalLinks final : public ReducedCoordinates {
   const std::vector<int>& freeCoordinates() const { return free_; }
 
  private:
+  /// What the mass matrix's closed form and the own inverse dynamics need of the bodies
+  /// (and the prescribed coordinates' motions) at `start`.
+  void readBodies(const Model& model, const SimTK::State& start);
+  /// `load`: the free coordinates' generalized forces at the start (a release's).
   void addLink(const LinkSpec& l, const std::vector<int>& hinges, const Eigen::MatrixXd& M, const Eigen::MatrixXd& K_free,
-               std::vector<Eigen::VectorXd>& columns);
+               const Eigen::VectorXd& load, std::vector<Eigen::VectorXd>& columns);
 
-  /// a_ = q'' at (t, y), evaluated in `s` (set to t and y, realized to Dynamics).
-  void accelerations(double t, const double* y, SimTK::State& s) const;
+  /// a_ = q'' at (t, y): by tree_ when `own` and there is one, else evaluated in `s`
+  /// (set to t and y, realized to Dynamics).
+  void accelerations(double t, const double* y, SimTK::State& s, bool own = true) const;
+  /// tree_'s residual at (t, y) into x_ (the free rows' generalized forces, minus).
+  void ownResidual(double t, const double* y) const;
   /// G_ = T^T M T for parallel pins (planar articles), O(bodies k + bodies k^2) flops
-  /// without Simbody's k M v products.
-  void planarMassMatrix(const SimTK::State& s) const;
+  /// without Simbody's k M v products; X(b) is body b's transform in ground.
+  template <class BodyTransform>
+  void planarMassMatrix(const BodyTransform& X) const;
   /// G_ by K of Simbody's M v products (any mobilizers).
   void productsMassMatrix(const SimTK::State& s) const;
 
@@ -89,7 +114,7 @@ class ModalLinks final : public ReducedCoordinates {
   Eigen::MatrixXd T_;
   Eigen::MatrixXd K_, C_;  ///< T^T K T, T^T C T at the start (the Jacobian's)
   std::vector<ModalLinkSummary> summary_;
-  std::vector<std::pair<int, const std::function<double(double)>*>> prescribed_;  ///< u index, acceleration(t)
+  std::vector<std::pair<int, const PrescribedMotion*>> prescribed_;  ///< coordinate, its motion
   // Work space of load() (one run, one thread).
   mutable SimTK::Vector udot_, v_, Mv_, f_;
   mutable Eigen::MatrixXd G_, S_, P_, A_;
@@ -107,6 +132,11 @@ class ModalLinks final : public ReducedCoordinates {
   SimTK::MobilizedBodyIndex axis_body_;  ///< a free pin's body: the common axis is its
   SimTK::Vec3 axis_M_{0}, axis_{0};      ///< axis in that body's frame; at the start
   mutable Eigen::VectorXd b_, a_, x_;
+  /// The own inverse dynamics (null: Simbody's) and its coordinates' work space: every
+  /// model coordinate's q, u and udot (the prescribed ones from their motions).
+  std::unique_ptr<TreeDynamics> tree_;
+  Eigen::VectorXd q_start_;
+  mutable Eigen::VectorXd tq_, tu_, tudot_, tr_;
 };
 
 }  // namespace mmv

@@ -6,9 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
+#include <functional>
 
 #include "facility/slews.hpp"
+#include "sim/time/modal_links.hpp"
 #include "sim/time/simulation.hpp"
 #include "sim/time/verify.hpp"
 #include "support/scenes.hpp"
@@ -89,10 +92,6 @@ TEST(Fidelity, TheSegmentModelStaysWhereModalLinksCannotCarryTheRun) {
   trapezoid.article.joints[1].slew = sl;
   segments(trapezoid, "joint2's slew is a trapezoidal move", "cpodes");
 
-  ArticleScene rest = loadDefaultScene();
-  rest.simulation.from_equilibrium = false;
-  segments(rest, "a start at rest away from the equilibrium excites every mode", "cpodes");
-
   ArticleScene explicit_method = userTableScene(16);
   explicit_method.simulation.integrator = "rk_merson";
   segments(explicit_method, "the scene's integrator, rk_merson, cannot carry", "rk_merson");
@@ -111,6 +110,86 @@ TEST(Fidelity, TheSegmentModelStaysWhereModalLinksCannotCarryTheRun) {
   EXPECT_FALSE(c.by_rule);
   EXPECT_EQ(own.article.links[0].modes, 2);
   EXPECT_FALSE(own.article.links[1].modal());
+}
+
+// A release's static shares two ways: (phi_j^T f)^2 / lambda_j, and the static response
+// u = K^-1 f split into its modes (q_j = phi_j^T M u, energy lambda_j q_j^2 of u^T K u).
+TEST(Fidelity, AReleasesStaticSharesAreTheStaticResponseSplitIntoModes) {
+  const int h = 7;
+  std::srand(7);
+  const Eigen::MatrixXd A = Eigen::MatrixXd::Random(h, h), B = Eigen::MatrixXd::Random(h, h);
+  const Eigen::MatrixXd K = A * A.transpose() + h * Eigen::MatrixXd::Identity(h, h);
+  const Eigen::MatrixXd M = B * B.transpose() + Eigen::MatrixXd::Identity(h, h);
+  const Eigen::VectorXd f = Eigen::VectorXd::Random(h);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, M);
+  const Eigen::VectorXd shares = staticShares(eig.eigenvectors(), eig.eigenvalues(), f);
+  const Eigen::VectorXd u = K.ldlt().solve(f);
+  const Eigen::VectorXd q = eig.eigenvectors().transpose() * M * u;
+  for (int j = 0; j < h; ++j)
+    EXPECT_NEAR(shares[j], eig.eigenvalues()[j] * q[j] * q[j] / u.dot(K * u), 1e-12) << j;
+  EXPECT_NEAR(shares.sum(), 1.0, 1e-12);
+  EXPECT_EQ(staticShares(eig.eigenvectors(), eig.eigenvalues(), Eigen::VectorXd::Zero(h)).sum(), 0.0);
+  // The rule at its bound: the modes left out may carry kReleaseStaticShare, not more.
+  Eigen::VectorXd s(6);
+  s << 0.9, 0.05, 0.03, 0.01, 0.009, kReleaseStaticShare;
+  EXPECT_EQ(modesForRelease(s, 4), 5);
+  s[5] = kReleaseStaticShare * (1 + 1e-6);
+  EXPECT_EQ(modesForRelease(s, 4), 6);
+  s[4] = 0, s[5] = 0;
+  EXPECT_EQ(modesForRelease(s, 4), 4);  // at least the minimum
+  EXPECT_EQ(modesForRelease(s, 9), 6);  // within the hinges
+}
+
+ArticleScene freeSwing(int upper_segments, int lower_segments, double duration) {
+  ArticleScene s = loadArticleSceneFile(MMVLAB_SOURCE_DIR "/bench/mujoco/free-swing.yaml");
+  s.simulation.fidelity = SimulationSpec::Fidelity::Auto;
+  s.simulation.duration = duration;
+  s.article.links[0].segments = upper_segments;
+  s.article.links[1].segments = lower_segments;
+  return s;
+}
+
+// A start at rest (a release) is carried in modal coordinates: at least 4 modes, and
+// more where the modes left out would carry more than kReleaseStaticShare of a link's
+// static response to its load at the start. The free swing's links, loaded by their
+// weight (the masses' own: the low modes, mass-weighted, carry it), keep 4; with a dead
+// load of 800 N at the upper link's second hinge (12.5 cm from its root) it needs more.
+TEST(Fidelity, AReleaseKeepsTheModesItsStepNeeds) {
+  ArticleScene rest = loadDefaultScene();
+  rest.simulation.from_equilibrium = false;
+  const FidelityChoice c = resolveFidelity(rest);
+  EXPECT_TRUE(c.modal && c.by_rule);
+  EXPECT_TRUE(has(c.reason, "and those the release needs")) << c.reason;
+  EXPECT_EQ(rest.simulation.integrator, "cvode_bdf");
+  for (const auto& l : rest.article.links) EXPECT_EQ(l.modes_cover_release, !l.rigid) << l.name;
+
+  const SimulationResult tip = simulate(freeSwing(16, 8, 0.01));
+  ASSERT_EQ(tip.modal_links.size(), 2u);
+  for (const auto& l : tip.modal_links) {
+    EXPECT_EQ(l.modes, kFidelityMinModes) << l.link;
+    ASSERT_TRUE(l.release_share_left.has_value()) << l.link;
+    EXPECT_GT(*l.release_share_left, 0.0) << l.link;  // measured, not assumed
+    EXPECT_LE(*l.release_share_left, kReleaseStaticShare) << l.link;
+  }
+  ArticleScene near_root = freeSwing(16, 8, 0.01);
+  LoadSpec dead;  // a dead load, not a weight: the modes are not weighted by it
+  dead.point = "upper.h2";
+  dead.force = {0, -800, 0};
+  near_root.article.loads.push_back(dead);
+  const SimulationResult root = simulate(near_root);
+  EXPECT_GT(root.modal_links[0].modes, kFidelityMinModes);
+  EXPECT_LE(*root.modal_links[0].release_share_left, kReleaseStaticShare);
+  // A link's own `modes:` is kept as written (no rule, no share); the verification
+  // companion's twice the modes leave less.
+  ArticleScene own = near_root;
+  own.article.links[0].modes = root.modal_links[0].modes - 1;
+  const SimulationResult own_run = simulate(own);
+  EXPECT_EQ(own_run.modal_links[0].modes, root.modal_links[0].modes - 1);
+  EXPECT_FALSE(own_run.modal_links[0].release_share_left.has_value());
+  near_root.simulation.modal_refinement = 1;
+  const SimulationResult twice = simulate(near_root);
+  EXPECT_EQ(twice.modal_links[0].modes, std::min(16, 2 * root.modal_links[0].modes));
+  EXPECT_LT(*twice.modal_links[0].release_share_left, *root.modal_links[0].release_share_left);
 }
 
 /// The run's kept modes for a table sine at f Hz (the modes are the start's: 10 ms do).
@@ -147,6 +226,46 @@ TEST(Fidelity, EachLinkKeepsItsModesUpToTheCutoffAndAtLeastFour) {
   EXPECT_EQ(keptFor(f5 / kFidelityBandFactor * (1 - 1e-6))[0].modes, 4);
 }
 
+/// A scene's default run against the segment model at 1e-8 (CVODE BDF), and `--verify`
+/// of it with the companion `spec` asks for.
+struct DefaultRunCheck {
+  SimulationResult run;
+  double error = 0, target = 0;
+  std::function<RunVerification(const SimulationSpec&)> verify;
+};
+
+DefaultRunCheck checkDefaultRun(const ArticleScene& s) {
+  DefaultRunCheck c;
+  c.run = simulate(s);
+  ArticleScene reference = s;
+  reference.simulation.fidelity = SimulationSpec::Fidelity::Segments;
+  reference.simulation.integrator = "cvode_bdf";
+  reference.simulation.accuracy = 1e-8;
+  const SimulationResult ref = simulate(reference);
+  EXPECT_TRUE(ref.modal_links.empty());
+  c.error = scoredDistance(c.run.record, ref.record, {}).distance_m;
+  c.target = defaultErrorTarget(scoredAmplitude(ref.record, {}), scoredScale(ref.record, {}));
+  c.verify = [s, run = c.run](const SimulationSpec& spec) {
+    const auto rerun = [&](const SimulationSpec& companion) {
+      ArticleScene t = s;
+      t.simulation = companion;
+      return simulate(t);
+    };
+    return verifyRun(run, spec, rerun, 0);
+  };
+  return c;
+}
+
+/// `--verify`'s companion (twice the modes) sees the run's actual error within a factor
+/// of two, and calls it met.
+void expectVerifySeesTheError(const DefaultRunCheck& c, const SimulationSpec& spec) {
+  const RunVerification v = c.verify(spec);
+  EXPECT_TRUE(v.companion_more_modes);
+  EXPECT_GT(v.estimated_error_m, 0.5 * c.error);
+  EXPECT_LT(v.estimated_error_m, 2 * c.error);
+  EXPECT_TRUE(verificationMet(v));
+}
+
 // The user's scene at 8 segments per link: the default run (4 modes per link under
 // CVODE BDF at 1e-6) is within 1 % of the tips' motion of the segment model at 1e-8
 // (6.5e-5 m of 0.124 m measured), and `--verify`'s estimate, against a companion with
@@ -154,33 +273,29 @@ TEST(Fidelity, EachLinkKeepsItsModesUpToTheCutoffAndAtLeastFour) {
 // companion with the run's own modes sees the tolerance only and misses most of it.
 TEST(Fidelity, TheDefaultRunMeetsItsStatedAccuracyAndVerifySeesTheModesLeftOut) {
   const ArticleScene s = userTableScene(8);
-  const SimulationResult run = simulate(s);
-  ASSERT_EQ(run.modal_links.size(), 4u);
-  for (const auto& l : run.modal_links) EXPECT_EQ(l.modes, 4) << l.link;
-  ArticleScene reference = s;
-  reference.simulation.fidelity = SimulationSpec::Fidelity::Segments;
-  reference.simulation.integrator = "cvode_bdf";
-  reference.simulation.accuracy = 1e-8;
-  const SimulationResult ref = simulate(reference);
-  ASSERT_TRUE(ref.modal_links.empty());
-  const double error = scoredDistance(run.record, ref.record, {}).distance_m;
-  const double target = defaultErrorTarget(scoredAmplitude(ref.record, {}), scoredScale(ref.record, {}));
-  EXPECT_GT(error, 1e-6);  // the modes left out are seen at all
-  EXPECT_LT(error, target);
-  const auto rerun = [&](const SimulationSpec& spec) {
-    ArticleScene t = s;
-    t.simulation = spec;
-    return simulate(t);
-  };
-  const RunVerification v = verifyRun(run, s.simulation, rerun, 0);
-  EXPECT_TRUE(v.companion_more_modes);
-  EXPECT_GT(v.estimated_error_m, 0.5 * error);
-  EXPECT_LT(v.estimated_error_m, 2 * error);
-  EXPECT_TRUE(verificationMet(v));
+  const DefaultRunCheck c = checkDefaultRun(s);
+  ASSERT_EQ(c.run.modal_links.size(), 4u);
+  for (const auto& l : c.run.modal_links) EXPECT_EQ(l.modes, 4) << l.link;
+  EXPECT_GT(c.error, 1e-6);  // the modes left out are seen at all
+  EXPECT_LT(c.error, c.target);
+  expectVerifySeesTheError(c, s.simulation);
   SimulationSpec same_modes = s.simulation;
   same_modes.modal_refinement = -1;  // the companion then keeps the run's modes (-1 + 1 = 0)
-  const RunVerification blind = verifyRun(run, same_modes, rerun, 0);
-  EXPECT_LT(blind.estimated_error_m, 0.2 * error);
+  EXPECT_LT(c.verify(same_modes).estimated_error_m, 0.2 * c.error);
+}
+
+// A release's default run (the free swing at 8 + 4 segments, 0.5 s, 4 modes per link
+// under CVODE BDF at the scene's tolerance) is within 1 % of the tips' motion of the
+// segment model at 1e-8 (2.0e-6 m against 4.4e-3 m measured), and `--verify`'s
+// companion with twice the modes sees that error (2.0e-6 m).
+TEST(Fidelity, TheDefaultRunOfAReleaseMeetsItsStatedAccuracy) {
+  const ArticleScene s = freeSwing(8, 4, 0.5);
+  const DefaultRunCheck c = checkDefaultRun(s);
+  ASSERT_EQ(c.run.modal_links.size(), 2u);
+  EXPECT_TRUE(has(c.run.fidelity, "and those the release needs")) << c.run.fidelity;
+  EXPECT_GT(c.error, 1e-7);  // the modes left out and the tolerance are seen at all
+  EXPECT_LT(c.error, c.target);
+  expectVerifySeesTheError(c, s.simulation);
 }
 
 }  // namespace
