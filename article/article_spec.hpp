@@ -126,9 +126,11 @@ struct LinkSpec {
   /// (Hz), at least kFidelityMinModes of them (sim/time/fidelity.hpp sets it: the
   /// scene's default fidelity). Not a scene key.
   std::optional<double> modes_up_to_hz;
-  /// With modes_up_to_hz: the rule's count of modes times this (capped at the hinges): a
-  /// verification companion's 2 (sim/time/verify.hpp).
-  int modes_multiplier = 1;
+  /// Time runs in modal coordinates, above 1: the link also keeps its modes up to this
+  /// times the highest frequency its `modes:` or the rule keep, and at least one more
+  /// (capped at the hinges): a verification companion's 2 (sim/time/verify.hpp). Not a
+  /// scene key.
+  double modes_frequency_factor = 1;
   /// With modes_up_to_hz, a start at rest (a release): also the modes until those left
   /// out carry at most kReleaseStaticShare of the link's static response to the load it
   /// is released under (sim/time/fidelity.hpp). Not a scene key.

@@ -164,7 +164,7 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
     os << strf("Verification: estimated error %.3g m (%s at t = %.4g s, against accuracy %.1e%s, %.2f s); target %.3g m%s, "
                "held with a safety factor %g: %s\n",
                v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy,
-               v.companion_more_modes ? " and twice the modes" : "", v.companion_seconds, v.target_m,
+               v.companion_more_modes ? " and the modes up to twice the frequency" : "", v.companion_seconds, v.target_m,
                !v.target_is_default                    ? ""
                : v.target_m > 0.01 * v.amplitude_m * (1 + 1e-9) ? " (nothing moved beyond a micrometre per metre: 1 % of that)"
                                                                : " (1 % of the scored motion)",
@@ -200,7 +200,7 @@ std::string targetText(const TargetOutcome& t) {
     a.add({fidelityName(t, r), strf("%.3g", r.run_seconds), strf("%.3g", r.estimated_error_m),
            strf("%s at %.4g s", r.point.c_str(), r.at_s),
            strf("accuracy %g", r.accuracy / 10) +
-               (r.companion_more_modes ? ", twice the modes" : !r.model.empty() ? ", the same model" : t.has_segments ? ", the scene's segments, every hinge" : ""),
+               (r.companion_more_modes ? ", modes to twice the frequency" : !r.model.empty() ? ", the same model" : t.has_segments ? ", the scene's segments, every hinge" : ""),
            r.companion_reused ? std::string("(the same)") : strf("%.3g", r.companion_seconds),
            r.met ? "met" : r.failed ? "failed" : !r.energy_ok ? "missed: energy balance" : "missed"});
   os << a.text();

@@ -55,9 +55,12 @@ struct SimulationSpec {
   /// scene read from a file is Auto unless it says so; code-built specs keep the segments.
   enum class Fidelity { Segments, Auto };
   Fidelity fidelity = Fidelity::Segments;
-  /// Links in modal coordinates keep 2^this times their modes (the scene's `modes:` or
-  /// the default fidelity's count, capped at the hinges): a verification companion's 1,
-  /// so that its estimate sees the modes left out as well as the tolerance.
+  /// Links in modal coordinates also keep their modes up to 2^this times the highest
+  /// frequency the scene's `modes:` or the default fidelity's rule keep, and at least one
+  /// more (capped at the hinges): a verification companion's 1, so that its estimate sees
+  /// the modes left out as well as the tolerance (the next octave: for a beam, whose
+  /// frequencies grow as n^2, about 1.4 times the modes, where twice the modes cost four
+  /// times the frequency to resolve).
   int modal_refinement = 0;
 };
 

@@ -67,13 +67,12 @@ double excitedBandHz(const ArticleScene& scene, std::string* from) {
 
 namespace {
 
-/// A verification companion's modes: 2^refinement times the count, within the hinges.
+/// A verification companion's modes: up to 2^refinement times the run's highest
+/// frequency, at least one more, within the hinges (sim/time/modal_links.hpp).
 void refine(ArticleScene& scene) {
-  const int factor = 1 << std::min(scene.simulation.modal_refinement, 10);
-  for (LinkSpec& l : scene.article.links) {
-    if (l.modes > 0) l.modes = std::min(l.segments, l.modes * factor);
-    if (l.modes_up_to_hz) l.modes_multiplier = factor;
-  }
+  const double factor = std::ldexp(1.0, std::min(scene.simulation.modal_refinement, 10));
+  for (LinkSpec& l : scene.article.links)
+    if (l.modal()) l.modes_frequency_factor = factor;
 }
 
 /// What the run integrates (the links' `modes_up_to_hz` set when the rule chooses modes).
@@ -136,7 +135,8 @@ FidelityChoice resolveFidelity(ArticleScene& scene) {
   }
   if (c.modal && spec.modal_refinement > 0) {
     refine(scene);
-    c.reason += strf("; a verification companion: %d times the modes", 1 << std::min(spec.modal_refinement, 10));
+    c.reason += strf("; a verification companion: the modes up to %d times the highest frequency kept, at least one more",
+                     1 << std::min(spec.modal_refinement, 10));
   }
   if (c.by_rule)
     c.reason += "; `simulation.fidelity: segments` for every hinge";

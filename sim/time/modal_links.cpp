@@ -69,6 +69,16 @@ Eigen::VectorXd staticShares(const Eigen::MatrixXd& Phi, const Eigen::VectorXd& 
   return total > 0 ? (energy / total).eval() : energy;
 }
 
+int companionModes(const Eigen::VectorXd& lambda, int kept, double factor) {
+  const int h = static_cast<int>(lambda.size());
+  if (!(factor > 1) || kept >= h) return kept;
+  // Frequencies as the eigenvalues: omega_j <= factor omega_k when lambda_j <= factor^2 lambda_k.
+  const double up_to = factor * factor * std::max(0.0, lambda[kept - 1]);
+  int more = kept + 1;
+  while (more < h && lambda[more] <= up_to) ++more;
+  return more;
+}
+
 int modesForRelease(const Eigen::VectorXd& shares, int at_least) {
   const int h = static_cast<int>(shares.size());
   int kept = std::min(h, at_least);
@@ -189,20 +199,20 @@ void ModalLinks::addLink(const LinkSpec& l, const std::vector<int>& rows, const 
   const int n = static_cast<int>(free_.size());
   auto hz = [&](int j) { return std::sqrt(std::max(0.0, eig.eigenvalues()[j])) / (2 * M_PI); };
   int kept = l.modes;
-  std::optional<double> release_left;
+  Eigen::VectorXd share;  // a release's static shares
   if (kept <= 0) {  // the default fidelity's rule (sim/time/fidelity.hpp): up to the cutoff, at least the minimum
     kept = std::min(h, kFidelityMinModes);
     while (kept < h && hz(kept) <= *l.modes_up_to_hz) ++kept;
-    Eigen::VectorXd share;
     if (l.modes_cover_release) {  // and what the release's step needs
       Eigen::VectorXd f(h);
       for (int r = 0; r < h; ++r) f[r] = load[rows[r]];
       share = staticShares(eig.eigenvectors(), eig.eigenvalues(), f);
       kept = modesForRelease(share, kept);
     }
-    kept = std::min(h, kept * std::max(1, l.modes_multiplier));
-    if (l.modes_cover_release) release_left = share.tail(h - kept).sum();
   }
+  kept = companionModes(eig.eigenvalues(), kept, l.modes_frequency_factor);
+  std::optional<double> release_left;
+  if (share.size() > 0) release_left = share.tail(h - kept).sum();
   for (int j = 0; j < kept; ++j) {
     Eigen::VectorXd col = Eigen::VectorXd::Zero(n);
     for (int r = 0; r < h; ++r) col[rows[r]] = eig.eigenvectors()(r, j);  // M-normalized

@@ -62,6 +62,11 @@ struct ModalLinkSummary {
 /// eigenvalues `lambda` ascending; modes of no positive stiffness carry none); all zero
 /// when `f` loads none. Their sum before normalizing is f^T K^-1 f.
 Eigen::VectorXd staticShares(const Eigen::MatrixXd& Phi, const Eigen::VectorXd& lambda, const Eigen::VectorXd& f);
+/// A verification companion's count (LinkSpec::modes_frequency_factor): the modes up to
+/// `factor` times the frequency of the run's highest kept (of `kept`, eigenvalues
+/// `lambda` = omega^2 ascending) and at least one more, within the hinges; `kept` when
+/// `factor` is 1 or less.
+int companionModes(const Eigen::VectorXd& lambda, int kept, double factor);
 /// A release's rule (sim/time/fidelity.hpp): the fewest modes, at least `at_least`, whose
 /// left-out `shares` sum to at most kReleaseStaticShare.
 int modesForRelease(const Eigen::VectorXd& shares, int at_least);

@@ -72,8 +72,9 @@ struct RunVerification {
   double amplitude_m = 0;        ///< the scored points' largest motion (companion run)
   double target_m = 0;           ///< what the estimate is held to
   bool target_is_default = true; ///< 1 % of amplitude_m (1e-4 m if nothing moved)
-  /// The run carried links in modal coordinates and the companion twice their modes, so
-  /// the estimate sees the modes left out as well as the tolerance.
+  /// The run carried links in modal coordinates and the companion their modes up to twice
+  /// the frequency (at least one more), so the estimate sees the modes left out as well
+  /// as the tolerance.
   bool companion_more_modes = false;
 };
 

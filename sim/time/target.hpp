@@ -6,7 +6,7 @@
 ///
 ///  0. The scene's own run first (its fidelity, sim/time/fidelity.hpp, and integrator;
 ///     `--integrator` names another): the whole run and a companion at a 10x tighter
-///     tolerance, links in modal coordinates with twice their modes (as `--verify`).
+///     tolerance, links in modal coordinates with their modes up to twice the frequency (as `--verify`).
 ///     Met as below, it is the choice, for 2-4x its own cost. Missed by less than 10x E,
 ///     the companion (paid for) becomes the run against one 10x tighter again, twice at
 ///     most; else (or when the run fails) the steps below follow.
@@ -65,9 +65,9 @@ struct TargetAttempt {
   bool energy_ok = true;  ///< the run's energy balance held at every sample (no energyBalanceWarning)
   bool met = false;       ///< the estimate within E / 2 and the energy balance held
   /// Non-empty: the scene's own run (step 0 above) and its model (FidelityChoice::reason),
-  /// verified at a 10x tighter tolerance (links in modal coordinates: twice the modes).
+  /// verified at a 10x tighter tolerance (links in modal coordinates: modes to twice the frequency).
   std::string model;
-  bool companion_more_modes = false;  ///< its companion kept twice the modes of its links in modal coordinates
+  bool companion_more_modes = false;  ///< its companion kept its modal links' modes up to twice the frequency
   bool failed = false;  ///< the run stopped (its integrator gave up; `model` says why): the pilot follows
 };
 

@@ -71,7 +71,7 @@ RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spe
   SimulationSpec tight = spec;
   tight.accuracy = spec.accuracy / 10;
   tight.absolute_tolerance = spec.absolute_tolerance / 10;
-  tight.modal_refinement = spec.modal_refinement + 1;  // links in modal coordinates: twice the modes
+  tight.modal_refinement = spec.modal_refinement + 1;  // links in modal coordinates: the next octave of modes
   const auto start = std::chrono::steady_clock::now();
   const SimulationResult companion = rerun(tight);
   RunVerification v;
@@ -96,7 +96,7 @@ std::string verificationWarning(const RunVerification& v) {
   return strf("the run's estimated error %.3g m (at %s, t = %.4g s, against the same run at accuracy %.1e%s) times the "
               "safety factor %g exceeds the %s %.3g m%s: tighten the accuracy%s",
               v.estimated_error_m, v.point.c_str(), v.at_s, v.companion_accuracy,
-              v.companion_more_modes ? " with twice the modes per link" : "", kVerifySafetyFactor,
+              v.companion_more_modes ? " with each link's modes up to twice the frequency" : "", kVerifySafetyFactor,
               v.target_is_default ? "target (1 % of the scored motion)" : "target", v.target_m,
               v.estimated_error_m <= v.target_m ? " (the estimate alone is within it, its uncertainty is not)" : "",
               v.companion_more_modes ? ", or keep more modes (links[].modes) or every hinge (simulation.fidelity: segments)"
