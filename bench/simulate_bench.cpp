@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/model/article_builder.hpp"
+#include "sim/model/tree_dynamics.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/scene/scene.hpp"
 #include "facility/table_programs.hpp"
@@ -147,6 +148,43 @@ void BM_ModalRightHandSide(benchmark::State& st) {
   st.counters["coordinates"] = static_cast<double>(modal.size()) / 2;
 }
 BENCHMARK(BM_ModalRightHandSide)->Unit(benchmark::kMicrosecond);
+
+// The residual M udot + c - f of the slew scene's segment model (8 segments a link, every
+// coordinate moving) at a bent, moving state: /0 mmvlab's own pass
+// (sim/model/tree_dynamics.hpp), /1 Simbody's (set q, u and time, realize to Dynamics,
+// calcResidualForceIgnoringConstraints), what a modal run's right-hand side took before.
+void BM_InverseDynamics(benchmark::State& st) {
+  const mmv::ArticleScene s = mmv::loadArticleSceneFile(MMVLAB_SOURCE_DIR "/scenes/mmv-slew.yaml");
+  const auto model = mmv::buildArticleModel(s, mmv::ModelUse::TimeRun);
+  SimTK::State state = model->getReferenceState();
+  const int n = model->getNumCoordinates();
+  Eigen::VectorXd q(n), u(n), udot(n), r;
+  SimTK::Vector knownUdot(state.getNU(), 0.0), residual;
+  for (int i = 0; i < n; ++i) {
+    q[i] = state.getQ()[model->getQIndex(i)] + 0.01 * std::sin(1.0 + i);
+    u[i] = 0.1 * std::cos(2.0 + i), udot[i] = std::sin(3.0 + i);
+    knownUdot[model->getUIndex(i)] = udot[i];
+  }
+  const mmv::TreeDynamics tree(*model, state);
+  const SimTK::MultibodySystem& sys = model->getSystem();
+  for (auto _ : st) {
+    if (st.range(0) == 0) {
+      tree.residual(1.3, q, u, udot, r);
+      benchmark::DoNotOptimize(r.data());
+    } else {
+      for (int i = 0; i < n; ++i) state.updQ()[model->getQIndex(i)] = q[i], state.updU()[model->getUIndex(i)] = u[i];
+      state.setTime(1.3);
+      sys.realize(state, SimTK::Stage::Dynamics);
+      model->getMatter().calcResidualForceIgnoringConstraints(state, sys.getMobilityForces(state, SimTK::Stage::Dynamics),
+                                                              sys.getRigidBodyForces(state, SimTK::Stage::Dynamics),
+                                                              knownUdot, residual);
+      benchmark::DoNotOptimize(&residual[0]);
+    }
+  }
+  st.counters["coordinates"] = n;
+  st.SetLabel(st.range(0) == 0 ? "own" : "Simbody");
+}
+BENCHMARK(BM_InverseDynamics)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -235,9 +235,13 @@ void ModalLinks::load(double t, const double* y, SimTK::State& s, double* ydot, 
   // A right-hand side in a State of its own without the reduced Motions; a sample in the
   // run's State, whose reduced Motions then take the accelerations, realized to
   // Acceleration (outputs, motion forces, energy).
-  accelerations(t, y, full ? s : rhs_, !full);
+  // A sample whose accelerations the own inverse dynamics gave realizes Dynamics once,
+  // after they are set (Simbody's path realized it for the residual, and setting them
+  // invalidated it).
+  accelerations(t, y, full ? s : rhs_);
   for (int j = 0; j < k; ++j) ydot[j] = y[k + j], ydot[k + j] = a_[j];
   if (!full) return;
+  if (tree_) setState(t, y, s);
   const int n = static_cast<int>(free_.size());
   x_.noalias() = T_ * a_;
   for (int r = 0; r < n; ++r) udot_[free_u_[r]] = x_[r];
@@ -275,18 +279,9 @@ void ModalLinks::ownResidual(double t, const double* y) const {
   for (int r = 0; r < n; ++r) x_[r] = -tr_[free_[r]];
 }
 
-void ModalLinks::accelerations(double t, const double* y, SimTK::State& s, bool own) const {
-  const int k = static_cast<int>(T_.cols());
-  if (own && tree_) {
-    ownResidual(t, y);
-    b_.noalias() = T_.transpose() * x_;
-    planarMassMatrix([&](int b) -> const SimTK::Transform& { return tree_->bodyTransform(b); });
-    a_ = G_.llt().solve(b_);
-    return;
-  }
+void ModalLinks::setState(double t, const double* y, SimTK::State& s) const {
   const SimTK::MultibodySystem& sys = model_.getSystem();
-  const SimTK::SimbodyMatterSubsystem& matter = model_.getMatter();
-  const int n = static_cast<int>(free_.size());
+  const int n = static_cast<int>(free_.size()), k = static_cast<int>(T_.cols());
   const Eigen::Map<const Eigen::VectorXd> q(y, k), u(y + k, k);
   x_.noalias() = T_ * q;
   s.setTime(t);
@@ -299,6 +294,21 @@ void ModalLinks::accelerations(double t, const double* y, SimTK::State& s, bool 
   sys.prescribeQ(s);
   sys.realize(s, SimTK::Stage::Position);
   sys.prescribeU(s);
+}
+
+void ModalLinks::accelerations(double t, const double* y, SimTK::State& s, bool own) const {
+  const int k = static_cast<int>(T_.cols());
+  if (own && tree_) {
+    ownResidual(t, y);
+    b_.noalias() = T_.transpose() * x_;
+    planarMassMatrix([&](int b) -> const SimTK::Transform& { return tree_->bodyTransform(b); });
+    a_ = G_.llt().solve(b_);
+    return;
+  }
+  const SimTK::MultibodySystem& sys = model_.getSystem();
+  const SimTK::SimbodyMatterSubsystem& matter = model_.getMatter();
+  const int n = static_cast<int>(free_.size());
+  setState(t, y, s);
   // The residual M udot + c - f of the inverse dynamics with the reduced accelerations
   // zero and the prescribed ones as commanded: O(n), no forward dynamics (it ignores
   // Motions, so `s` may have the reduced ones enabled).

@@ -102,6 +102,9 @@ class ModalLinks final : public ReducedCoordinates {
   /// a_ = q'' at (t, y): by tree_ when `own` and there is one, else evaluated in `s`
   /// (set to t and y, realized to Dynamics).
   void accelerations(double t, const double* y, SimTK::State& s, bool own = true) const;
+  /// Sets `s` to time t and y, the prescribed coordinates as commanded, realized to
+  /// Position (velocities set).
+  void setState(double t, const double* y, SimTK::State& s) const;
   /// tree_'s residual at (t, y) into x_ (the free rows' generalized forces, minus).
   void ownResidual(double t, const double* y) const;
   /// G_ = T^T M T for parallel pins (planar articles), O(bodies k + bodies k^2) flops
