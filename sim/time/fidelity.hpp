@@ -11,8 +11,9 @@
 /// load at once, a step that excites every mode, each with at most twice its static
 /// response, which falls as 1 / omega^2 as a program's does above its band: the same
 /// rule, and the link also keeps its modes until those left out carry at most
-/// kReleaseStaticShare of its static response to that load (stiffness norm; with a tip
-/// or spread load 4 modes leave 6e-4 and less, a load near the root needs more). The segment model (every hinge its own
+/// kReleaseStaticShare of its static response to that load (stiffness norm; weight,
+/// which weights the modes too, leaves 3e-7 to 3e-4 with 4 modes on the free swing; a
+/// dead load near a root needs more: docs/accuracy.md). The segment model (every hinge its own
 /// coordinate) is kept, with the reason, where modal links cannot represent the run: a
 /// closed tree (closures, a shaker's stinger), the spatial model, a trapezoidal move (its
 /// acceleration steps excite every mode at full strength), or an integrator the scene
