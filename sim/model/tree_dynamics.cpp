@@ -76,10 +76,10 @@ void TreeDynamics::residual(double t, const Eigen::VectorXd& q, const Eigen::Vec
   const Eigen::MatrixXd& C = model_.getLinearDamping();
   if (C.size() > 0) {
     const std::vector<int>& coords = model_.getLinearDampingCoordinates();
-    Eigen::VectorXd v(static_cast<Eigen::Index>(coords.size()));
-    for (std::size_t a = 0; a < coords.size(); ++a) v[static_cast<Eigen::Index>(a)] = u[coords[a]];
-    const Eigen::VectorXd f = C * v;
-    for (std::size_t a = 0; a < coords.size(); ++a) r[coords[a]] += f[static_cast<Eigen::Index>(a)];
+    damped_u_.resize(static_cast<Eigen::Index>(coords.size()));
+    for (std::size_t a = 0; a < coords.size(); ++a) damped_u_[static_cast<Eigen::Index>(a)] = u[coords[a]];
+    damped_f_.noalias() = C * damped_u_;
+    for (std::size_t a = 0; a < coords.size(); ++a) r[coords[a]] += damped_f_[static_cast<Eigen::Index>(a)];
   }
 }
 

@@ -70,6 +70,7 @@ class TreeDynamics {
   const Model& model_;
   SimTK::Vec3 gravity_;
   mutable std::vector<Body> bodies_;
+  mutable Eigen::VectorXd damped_u_, damped_f_;  ///< the damping matrix's speeds and forces (no allocation a call)
 };
 
 }  // namespace mmv
