@@ -8,6 +8,7 @@
 #include "sim/modes/system_modes.hpp"
 #include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/statics/linearize.hpp"
+#include "sim/statics/tree_operator.hpp"
 #include "sim/modes/modal.hpp"
 #include "sim/statics/statics.hpp"
 
@@ -43,6 +44,18 @@ void BM_Linearize(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(mmv::linearize(*model, eq.state));
 }
 BENCHMARK(BM_Linearize)->Apply(segmentArgs);
+
+// The same dense M and K from the tree's operators (what the linear model reads).
+void BM_LinearizeDenseByTree(benchmark::State& st) {
+  const auto model = mmv::buildArticleModel(sceneWith(static_cast<int>(st.range(0))));
+  const mmv::EquilibriumResult eq = mmv::solveEquilibrium(*model);
+  for (auto _ : st) {
+    const mmv::TreeOperator op(*model, eq.state, model->getDofs());
+    benchmark::DoNotOptimize(op.denseM());
+    benchmark::DoNotOptimize(op.denseK());
+  }
+}
+BENCHMARK(BM_LinearizeDenseByTree)->Apply(segmentArgs);
 
 void BM_Eigen(benchmark::State& st) {
   const auto model = mmv::buildArticleModel(sceneWith(static_cast<int>(st.range(0))));

@@ -48,25 +48,6 @@ Damping dampingMatrix(const LinearModel& lm, const Model& model, const std::vect
   return d;
 }
 
-/// Base coupling M_qb e_a = sum_b m_b J_b^T e_a (mass centres), over the DOFs, for
-/// a = x, y, z (z moves nothing in the planar model).
-Eigen::MatrixXd baseCoupling(const Model& model, const SimTK::State& st, const std::vector<int>& dofs) {
-  Eigen::MatrixXd Mqb = Eigen::MatrixXd::Zero(dofs.size(), 3);
-  std::vector<SimTK::MobilizedBodyIndex> ix;
-  std::vector<SimTK::Vec3> com;
-  std::vector<double> mass;
-  for (const auto& b : model.getBodies()) {
-    const auto mp = model.getMatter().getMobilizedBody(b.mobod).getBodyMassProperties(st);
-    ix.push_back(b.mobod);
-    com.push_back(mp.getMassCenter());
-    mass.push_back(mp.getMass());
-  }
-  const Eigen::MatrixXd J = model.calcFrameJacobians(st, ix, com, dofs);
-  for (std::size_t b = 0; b < ix.size(); ++b)
-    for (int a = 0; a < 3; ++a) Mqb.col(a) += mass[b] * J.row(6 * b + 3 + a).transpose();
-  return Mqb;
-}
-
 /// The Jacobian row of a named point's (or a station's) translation along world axis
 /// `axis` (0..2), or its rotation about world axis axis - 3 (3..5), over the DOFs.
 Eigen::RowVectorXd pointRow(const ArticleScene& scene, const Model& model, const SimTK::State& st,
@@ -193,7 +174,10 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   LinearModel lm;
   // The undamped modes serve only the UFF file's first 12 shapes (linear_report.cpp):
   // on large models only those are solved for (shift-invert Lanczos).
-  lm.solved = solveScene(scene, {}, kLinearModelModes);
+  // On a large open tree the lowest modes come from the tree's operators, and the dense
+  // matrices the state-space model needs are made from them (O(n^2)).
+  lm.solved = solveScene(scene, {}, kLinearModelModes, true);
+  addDenseMatrices(lm.solved.linearized);
   lm.inputs = inputs;
   lm.outputs = outputs;
   lm.damping = damping;
@@ -224,7 +208,8 @@ LinearModel buildLinearModel(const ArticleScene& scene, const std::vector<InputS
   // Out-of-plane inputs and outputs of a planar model are refused by the study (sim/app).
   for (const auto& in : inputs) MMV_DEMAND(in.kind == InputKind::JointTorque || !leavesThePlane(in.axis) || model.isSpatial());
   for (const auto& out : outputs) MMV_DEMAND(!leavesThePlane(out.axis) || model.isSpatial());
-  const Eigen::MatrixXd Mqb = baseCoupling(model, st, dofs);
+  // Base coupling M_qb e_a = sum_b m_b J_b^T e_a (mass centres), a = x, y, z.
+  const Eigen::MatrixXd Mqb = model.calcMassCentreCoupling(st, dofs);
   lm.Bq = Eigen::MatrixXd::Zero(Z.cols(), inputs.size());
   for (std::size_t k = 0; k < inputs.size(); ++k)
     lm.Bq.col(k) = Z.transpose() * inputForce(scene, model, st, dofs, Mqb, inputs[k]);

@@ -41,4 +41,40 @@ Eigen::MatrixXd Model::calcFrameJacobians(const SimTK::State& s, const std::vect
   return out;
 }
 
+Eigen::MatrixXd Model::calcMassCentreCoupling(const SimTK::State& s, const std::vector<int>& cols) const {
+  // Subtree mass and first moment about ground's origin, tips inward (a child's index is
+  // above its parent's in Simbody's tree).
+  const int nb = matter_.getNumBodies();
+  std::vector<double> mass(static_cast<std::size_t>(nb), 0.0);
+  std::vector<SimTK::Vec3> moment(static_cast<std::size_t>(nb), SimTK::Vec3(0));
+  for (const BodyInfo& b : bodies_) {
+    const SimTK::MobilizedBody& body = matter_.getMobilizedBody(b.mobod);
+    const SimTK::MassProperties mp = body.getBodyMassProperties(s);
+    mass[b.mobod] += mp.getMass();
+    moment[b.mobod] += mp.getMass() * body.findStationLocationInGround(s, mp.getMassCenter());
+  }
+  for (int i = nb - 1; i > 0; --i) {
+    const int p = matter_.getMobilizedBody(SimTK::MobilizedBodyIndex(i)).getParentMobilizedBody().getMobilizedBodyIndex();
+    mass[p] += mass[i];
+    moment[p] += moment[i];
+  }
+  std::vector<int> column(static_cast<std::size_t>(s.getNU()), -1);
+  for (std::size_t j = 0; j < cols.size(); ++j) column[uindex_[cols[j]]] = static_cast<int>(j);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(cols.size()), 3);
+  for (int i = 1; i < nb; ++i) {
+    const SimTK::MobilizedBody& body = matter_.getMobilizedBody(SimTK::MobilizedBodyIndex(i));
+    // sum m_b (H_v + H_w x (c_b - o)) = M H_v + H_w x (S - M o) over the subtree.
+    const SimTK::Vec3 arm = moment[i] - mass[i] * body.getBodyOriginLocation(s);
+    const int first = body.getFirstUIndex(s), nu = body.getNumU(s);
+    for (int k = 0; k < nu; ++k) {
+      const int j = column[static_cast<std::size_t>(first + k)];
+      if (j < 0) continue;
+      const SimTK::SpatialVec h = body.getHCol(s, SimTK::MobilizerUIndex(k));
+      const SimTK::Vec3 f = mass[i] * h[1] + h[0] % arm;
+      for (int a = 0; a < 3; ++a) out(j, a) = f[a];
+    }
+  }
+  return out;
+}
+
 }  // namespace mmv

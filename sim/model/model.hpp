@@ -310,6 +310,11 @@ class Model {
   /// coordinate rate), rows 6t+3..6t+5 the station's linear velocity (m/s), world frame.
   Eigen::MatrixXd calcFrameJacobians(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,
                                      const std::vector<SimTK::Vec3>& stations, const std::vector<int>& cols) const;
+  /// sum over getBodies() of m_b J_b^T e_a (J_b: the translation Jacobian of b's mass
+  /// centre over `cols`), for world axes a = x, y, z: the generalized force per unit of a
+  /// uniform acceleration field (the base's coupling), cols x 3. One pass: each body's
+  /// mass and first moment summed into its subtree, then each mobility's hinge column.
+  Eigen::MatrixXd calcMassCentreCoupling(const SimTK::State& s, const std::vector<int>& cols) const;
   /// calcFrameJacobians(s, bodies, stations, cols) * rates, without the Jacobian: one
   /// O(bodies) pass for rates over `cols` (what a mode shape moves), same row layout.
   Eigen::VectorXd calcFrameVelocities(const SimTK::State& s, const std::vector<SimTK::MobilizedBodyIndex>& bodies,

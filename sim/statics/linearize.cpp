@@ -3,6 +3,7 @@
 #include "sim/core/linalg.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/statics/closures.hpp"
+#include "sim/statics/tree_operator.hpp"
 
 #include <stdexcept>
 
@@ -160,10 +161,20 @@ LinearizedModel linearize(const Model& model, const SimTK::State& equilibrium,
   LinearizedModel lin;
   lin.dofs = model.getDofs();
   const int n = static_cast<int>(lin.dofs.size());
-  lin.M = calcMass(model, equilibrium, lin.dofs);
-  symmetrize(lin.M);
-  Eigen::MatrixXd K_raw = calcStiffness(model, equilibrium, lin.dofs);
   const int m = model.getNumClosureRows();
+  Eigen::MatrixXd K_raw;
+  if (m == 0 && TreeOperator::appliesTo(model)) {
+    // An open tree with closed-form forces: the same matrices from the tree's recursions
+    // (tree_operator.hpp; equal to Simbody's M and the closed-form K to 1e-12,
+    // TreeOperator.EqualsTheDenseMatrices*), 0.6 ms against 15 ms at 256 DOF.
+    const TreeOperator op(model, equilibrium, lin.dofs);
+    lin.M = op.denseM();
+    K_raw = op.denseK();
+  } else {
+    lin.M = calcMass(model, equilibrium, lin.dofs);
+    K_raw = calcStiffness(model, equilibrium, lin.dofs);
+  }
+  symmetrize(lin.M);
   if (m > 0) {
     MMV_DEMAND(closure_multipliers.size() == m);  // one multiplier per closure row
     K_raw += calcPointForceStiffness(model, equilibrium, lin.dofs, closureForces(model, closure_multipliers));
@@ -191,6 +202,17 @@ LinearizedModel linearizeOperators(const Model& model, const SimTK::State& equil
   lin.dofs = model.getDofs();
   lin.tree = std::make_shared<const TreeOperator>(model, equilibrium, lin.dofs);
   return lin;
+}
+
+void addDenseMatrices(LinearizedModel& lin) {
+  if (!lin.tree || lin.M.size()) return;
+  const int n = lin.tree->size();
+  lin.M = lin.tree->denseM();
+  lin.K = lin.tree->denseK();
+  lin.K_elastic = Eigen::MatrixXd(lin.tree->springs().asDiagonal());
+  lin.K_geometric = lin.K - lin.K_elastic;
+  lin.G.resize(0, n);
+  lin.Z = Eigen::MatrixXd::Identity(n, n);
 }
 
 Eigen::MatrixXd massTimes(const LinearizedModel& lin, const Eigen::MatrixXd& V) {

@@ -44,9 +44,14 @@ struct LinearizedModel {
   double asymmetry = 0;         ///< ||K_raw - K_raw^T||_max / ||K_raw||_max.
   /// Set by linearizeOperators on a large open tree: M and K as O(n) operators
   /// (sim/statics/tree_operator.hpp). The matrices above are then empty (0 x 0): read
-  /// M and K through massTimes, stiffnessTimes and springDiagonal.
+  /// M and K through massTimes, stiffnessTimes and springDiagonal (or fill them with
+  /// addDenseMatrices).
   std::shared_ptr<const TreeOperator> tree;
 };
+
+/// The dense matrices (M, K, its parts, G and Z) of a model linearizeOperators kept as
+/// operators, from the operators (O(n^2)); the operators stay. Nothing if it has them.
+void addDenseMatrices(LinearizedModel& lin);
 
 /// M V, K V and K's elastic (spring) diagonal, whichever form `lin` holds.
 Eigen::MatrixXd massTimes(const LinearizedModel& lin, const Eigen::MatrixXd& V);

@@ -41,7 +41,13 @@ Matrix6d forceStiffness(const SimTK::Vec3& p, const SimTK::Vec3& f) {
 
 }  // namespace
 
-bool TreeOperator::appliesTo(const Model& model) { return model.getClosures().empty() && model.hasClosedFormForces(); }
+bool TreeOperator::appliesTo(const Model& model) {
+  if (!model.getClosures().empty() || !model.hasClosedFormForces()) return false;
+  std::vector<int> on(static_cast<std::size_t>(model.getMatter().getNumBodies()), 0);  // coordinates a mobilizer
+  for (const Coordinate& c : model.getCoordinates())
+    if (++on[c.mobod] > kMaxNodeDofs) return false;
+  return true;
+}
 
 TreeOperator::TreeOperator(const Model& model, const SimTK::State& state, const std::vector<int>& dofs) {
   MMV_DEMAND(appliesTo(model));

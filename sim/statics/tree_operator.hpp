@@ -33,7 +33,8 @@
 /// eigenvalues below sigma (a Sturm check in O(n)).
 ///
 /// Applies to open trees whose only forces are gravity, dead loads, the coordinates'
-/// linear springs and the hinges' rotation springs (no closures): appliesTo.
+/// linear springs and the hinges' rotation springs (no closures), with at most three
+/// coordinates on a mobilizer (the node blocks' size; a free body's six are not): appliesTo.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -44,8 +45,9 @@ namespace mmv {
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 /// A mobilizer's axes (6 x m), a block over its m <= 3 degrees of freedom, a vector of them.
-using NodeAxes = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 3>;
-using NodeBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+inline constexpr int kMaxNodeDofs = 3;  ///< a mobilizer's coordinates the node blocks hold.
+using NodeAxes = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxNodeDofs>;
+using NodeBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxNodeDofs, kMaxNodeDofs>;
 using NodeVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
 
 class TreeFactor;
@@ -62,8 +64,8 @@ std::vector<StiffnessEntry> rotationSpringCoupling(const Model& model, const Sim
 
 class TreeOperator {
  public:
-  /// Whether the model's M and K have the structure above: no closures and closed-form
-  /// forces (Model::hasClosedFormForces).
+  /// Whether the model's M and K have the structure above: no closures, closed-form
+  /// forces (Model::hasClosedFormForces) and at most kMaxNodeDofs coordinates a mobilizer.
   static bool appliesTo(const Model& model);
 
   /// At state `s` over the coordinates `dofs` (held ones

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iomanip>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -45,10 +47,12 @@ double worstResidual(const StateSpace& full, const detail::StateEigen& sm) {
 }
 
 /// The two reductions are the same model to the dense solver's accuracy, and the
-/// partial one is the more accurate: its modes solve the quadratic problem to round-off
+/// partial one is at least as accurate: its modes solve the quadratic problem to round-off
 /// (the dense solver works on the explicit M^-1 K, whose norm, the stiffest hinge's
 /// omega^2, costs the low modes digits: 1e-9 backward error, 1e-8 in frequency), and its
-/// reduced model is no farther from the full model.
+/// reduced model is no farther from the full model, to what those 1e-8 move a response
+/// near a 1 % damped peak (1e-6 of the error: the table scene's M and K from the tree's
+/// recursions or from Simbody's, equal to 1e-12, put either ahead by 1.3e-7 of it).
 /// `truth`: the full model's responses at w.
 void expectSameReduction(const StateSpace& full, int modes, const std::vector<double>& w,
                          const std::vector<Eigen::MatrixXcd>& truth) {
@@ -67,7 +71,7 @@ void expectSameReduction(const StateSpace& full, int modes, const std::vector<do
   ASSERT_EQ(dense.model.numStates(), lowest.model.numStates());
   const double e_dense = compareResponses(truth, dense.model, w).max_relative;
   const double e_lowest = compareResponses(truth, lowest.model, w).max_relative;
-  EXPECT_LE(e_lowest, e_dense + 1e-9);
+  EXPECT_LE(e_lowest, e_dense * (1 + 1e-6) + 1e-12) << std::setprecision(12) << e_lowest - e_dense;
 }
 
 // The table scene's hinge dampers under gravity: non-proportional damping, and past the

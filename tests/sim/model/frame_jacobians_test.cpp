@@ -1,7 +1,9 @@
 // Model::calcFrameJacobians (by the tree, sim/model/frame_jacobians.cpp) against
 // Simbody's own SimbodyMatterSubsystem::calcFrameJacobian: the same matrix two ways, on
 // the planar article, the spatial article and the table scene with its shaker armature,
-// in states where every coordinate is away from zero.
+// in states where every coordinate is away from zero. And Model::calcMassCentreCoupling
+// (subtree masses and moments) against the sum of m_b J_b^T over Simbody's Jacobians of
+// the bodies' mass centres.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,6 +50,35 @@ void expectSimbodysJacobian(ArticleScene s) {
     }
   EXPECT_GT(largest, 0.5);
   EXPECT_LT(worst, 1e-12 * largest) << bodies.size() << " frames, " << cols.size() << " columns";
+
+  // The mass-centre coupling: sum_b m_b J_b^T e_a, Simbody's Jacobian rows summed.
+  std::vector<SimTK::MobilizedBodyIndex> owners;
+  std::vector<SimTK::Vec3> centres;
+  std::vector<double> masses;
+  for (const BodyInfo& body : model->getBodies()) {
+    const SimTK::MassProperties mp = matter.getMobilizedBody(body.mobod).getBodyMassProperties(st);
+    owners.push_back(body.mobod);
+    centres.push_back(mp.getMassCenter());
+    masses.push_back(mp.getMass());
+  }
+  SimTK::Array_<SimTK::MobilizedBodyIndex> ob(owners.begin(), owners.end());
+  SimTK::Array_<SimTK::Vec3> oc(centres.begin(), centres.end());
+  SimTK::Matrix Jc;
+  matter.calcFrameJacobian(st, ob, oc, Jc);
+  const Eigen::MatrixXd coupling = model->calcMassCentreCoupling(st, cols);
+  ASSERT_EQ(coupling.rows(), static_cast<Eigen::Index>(cols.size()));
+  ASSERT_EQ(coupling.cols(), 3);
+  double big = 0, off = 0;
+  for (std::size_t j = 0; j < cols.size(); ++j)
+    for (int a = 0; a < 3; ++a) {
+      double sum = 0;
+      for (std::size_t b = 0; b < owners.size(); ++b)
+        sum += masses[b] * Jc(static_cast<int>(6 * b + 3 + a), model->getUIndex(cols[j]));
+      big = std::max(big, std::abs(sum));
+      off = std::max(off, std::abs(coupling(static_cast<Eigen::Index>(j), a) - sum));
+    }
+  EXPECT_GT(big, 1.0);
+  EXPECT_LT(off, 1e-12 * big) << owners.size() << " bodies";
 }
 
 TEST(FrameJacobians, AreSimbodysOnThePlanarArticle) {
@@ -57,6 +88,12 @@ TEST(FrameJacobians, AreSimbodysOnThePlanarArticle) {
 }
 
 TEST(FrameJacobians, AreSimbodysOnTheSpatialArticle) { expectSimbodysJacobian(testing::spatialDefault(3)); }
+
+TEST(FrameJacobians, AreSimbodysOnTheGimbal) {
+  ArticleScene s = loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml");
+  overrideSegments(s, 3);
+  expectSimbodysJacobian(s);
+}
 
 TEST(FrameJacobians, AreSimbodysOnTheTableWithItsShaker) {
   ArticleScene s = loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml");

@@ -99,6 +99,31 @@ TEST(TreeOperator, EqualsTheDenseMatricesOnSpatialHingesAndRefusesClosedLoops) {
   expectAgreesWithDense(spatial, "spatial default article");
   const auto closed = buildArticleModel(loadArticleSceneFile(std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-closed.yaml"));
   EXPECT_FALSE(TreeOperator::appliesTo(*closed));
+  // A free-floating spatial link (a component's free-free root): six coordinates on one
+  // mobilizer, more than a node holds (it overran them: a crash in linearize). Refused,
+  // and linearize takes Simbody's M and the closed-form K.
+  ArticleScene floating = cantilever;
+  floating.article.base.type = BaseType::Floating;
+  const auto free_body = buildArticleModel(floating);
+  EXPECT_FALSE(TreeOperator::appliesTo(*free_body));
+  const SimTK::State st = bentState(*free_body);
+  const LinearizedModel lin = linearize(*free_body, st);
+  EXPECT_LT(relativeGap(lin.M, calcMass(*free_body, st, free_body->getDofs())), 1e-15);
+}
+
+// linearize's dense matrices on an open tree come from the operators (the tree's
+// recursions): the same as Simbody's M and the closed-form K, at any size.
+TEST(TreeOperator, LinearizeOnAnOpenTreeIsTheDenseMatrices) {
+  ArticleScene s = loadDefaultScene();
+  overrideSegments(s, 3);
+  const auto model = buildArticleModel(s);
+  const SimTK::State st = bentState(*model);
+  const LinearizedModel lin = linearize(*model, st);
+  const Eigen::MatrixXd K = calcStiffnessClosedForm(*model, st, model->getDofs());
+  EXPECT_LT(relativeGap(lin.M, calcMass(*model, st, model->getDofs())), 1e-12);
+  EXPECT_LT(relativeGap(lin.K, 0.5 * (K + K.transpose())), 1e-12);
+  EXPECT_LT(relativeGap(lin.K_elastic + lin.K_geometric, lin.K), 1e-15);
+  EXPECT_EQ(lin.Z.cols(), lin.M.rows());
 }
 
 // The pivots count the eigenvalues below a shift (the Sturm check of the partial eigen
