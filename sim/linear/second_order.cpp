@@ -9,41 +9,13 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
+#include "sim/linear/hessenberg.hpp"
 #include "sim/linear/state_space.hpp"
 
 namespace mmv {
 
 using cd = std::complex<double>;
 
-namespace {
-
-/// Parlett-Reinsch balancing (as LAPACK's dgebal, without permutations): A := D^-1 A D
-/// with D a diagonal of powers of two (exact), each row and column brought to a similar
-/// norm; returns D's diagonal.
-Eigen::VectorXd balance(Eigen::MatrixXd& A) {
-  const Eigen::Index N = A.rows();
-  Eigen::VectorXd d = Eigen::VectorXd::Ones(N);
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (Eigen::Index i = 0; i < N; ++i) {
-      double c = A.col(i).cwiseAbs().sum() - std::abs(A(i, i)), r = A.row(i).cwiseAbs().sum() - std::abs(A(i, i));
-      if (c == 0 || r == 0) continue;
-      const double s0 = c + r;
-      double f = 1;
-      while (c < r / 2) c *= 2, r /= 2, f *= 2;
-      while (c >= r * 2) c /= 2, r *= 2, f /= 2;
-      if (c + r < 0.95 * s0) {
-        changed = true;
-        d[i] *= f;
-        A.row(i) /= f;
-        A.col(i) *= f;
-      }
-    }
-  }
-  return d;
-}
-
-}  // namespace
 
 void SecondOrderResponse::prepareHessenberg() {
   const Eigen::Index n = K.rows(), N = 2 * n;
@@ -54,7 +26,7 @@ void SecondOrderResponse::prepareHessenberg() {
   A1.bottomRightCorner(n, n) = -mlu.solve(C);
   // Balanced first (stiff hinges put omega_max^2 ~ 1e8 beside the identity block, and
   // the reduction's backward error is eps times the matrix's norm): A1 := D^-1 A1 D.
-  const Eigen::VectorXd d = balance(A1);
+  const Eigen::VectorXd d = detail::balance(A1);
   const Eigen::HessenbergDecomposition<Eigen::MatrixXd> hd(A1);
   H_ = hd.matrixH();
   const Eigen::MatrixXd Q = hd.matrixQ();
@@ -79,95 +51,10 @@ void SecondOrderResponse::prepareHessenberg() {
   hessenberg_ = H_.allFinite() && Bh_.allFinite() && Qq_.allFinite() && Rv_.allFinite();
 }
 
-namespace {
-
-using RowMajorXcd = Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-/// i w I - H (H upper Hessenberg) eliminated to upper triangular U by adjacent-row
-/// partial pivoting: step k swaps rows k, k+1 if swap[k], then row k+1 -= l[k] row k.
-/// U's rows are packed (row k holds columns k..N-1) with real and imaginary parts apart
-/// (real vector arithmetic, twice as wide as complex), in buffers each thread keeps, so
-/// a frequency neither copies H nor touches fresh pages.
-class HessenbergLu {
- public:
-  HessenbergLu(const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& H, double w)
-      : N_(H.rows()), swap_(N_, 0), l_(N_, 0.0) {
-    thread_local std::vector<double> packed_re, packed_im, carry_re, carry_im;
-    for (auto* v : {&packed_re, &packed_im}) v->resize(N_ * (N_ + 1) / 2);
-    for (auto* v : {&carry_re, &carry_im}) v->resize(N_);
-    re_ = packed_re.data(), im_ = packed_im.data();
-    using Vec = Eigen::Map<Eigen::ArrayXd>;
-    Vec rr(carry_re.data(), N_), ri(carry_im.data(), N_);  // the row carried down, columns k..N-1
-    rr = -H.row(0).transpose().array();
-    ri.setZero();
-    ri[0] = w;
-    for (Eigen::Index k = 0; k + 1 < N_; ++k) {
-      const Eigen::Index len = N_ - k, m = len - 1;
-      Vec ur(re_ + offset(k), len), ui(im_ + offset(k), len);
-      const auto t = -H.row(k + 1).segment(k, len).transpose().array();  // row k + 1 of -H from column k
-      const double tk = t[0];
-      if (std::abs(tk) > std::hypot(rr[k], ri[k])) {  // the next row is the pivot
-        swap_[k] = 1;
-        ur = t;
-        ui.setZero();
-        ui[1] = w;
-        const cd l = cd(rr[k], ri[k]) / tk;
-        l_[k] = l;
-        rr.segment(k + 1, m) -= l.real() * ur.tail(m) - l.imag() * ui.tail(m);
-        ri.segment(k + 1, m) -= l.real() * ui.tail(m) + l.imag() * ur.tail(m);
-      } else {
-        ur = rr.segment(k, len);
-        ui = ri.segment(k, len);
-        const cd l = tk != 0.0 ? tk / cd(ur[0], ui[0]) : cd(0.0);
-        l_[k] = l;
-        rr.segment(k + 1, m) = t.tail(m) - (l.real() * ur.tail(m) - l.imag() * ui.tail(m));
-        ri.segment(k + 1, m) = -(l.real() * ui.tail(m) + l.imag() * ur.tail(m));
-        ri[k + 1] += w;
-      }
-    }
-    re_[offset(N_ - 1)] = rr[N_ - 1];
-    im_[offset(N_ - 1)] = ri[N_ - 1];
-  }
-
-  /// Solves in place (rows of X over the N states).
-  void solve(RowMajorXcd& X) const {
-    for (Eigen::Index k = 0; k + 1 < N_; ++k) {
-      if (swap_[k]) X.row(k).swap(X.row(k + 1));
-      X.row(k + 1) -= l_[k] * X.row(k);
-    }
-    Eigen::VectorXd xr(N_), xi(N_);
-    for (Eigen::Index c = 0; c < X.cols(); ++c) {
-      xr = X.col(c).real();
-      xi = X.col(c).imag();
-      for (Eigen::Index k = N_ - 1; k >= 0; --k) {
-        const Eigen::Index len = N_ - k, m = len - 1;
-        const Eigen::Map<const Eigen::VectorXd> ur(re_ + offset(k), len), ui(im_ + offset(k), len);
-        cd x(xr[k], xi[k]);
-        if (m > 0) {
-          const auto br = xr.tail(m), bi = xi.tail(m);
-          x -= cd(ur.tail(m).dot(br) - ui.tail(m).dot(bi), ur.tail(m).dot(bi) + ui.tail(m).dot(br));
-        }
-        x /= cd(ur[0], ui[0]);
-        xr[k] = x.real(), xi[k] = x.imag();
-      }
-      X.col(c).real() = xr;
-      X.col(c).imag() = xi;
-    }
-  }
-
- private:
-  Eigen::Index offset(Eigen::Index k) const { return k * N_ - k * (k - 1) / 2; }
-  Eigen::Index N_;
-  std::vector<char> swap_;
-  std::vector<cd> l_;
-  double *re_, *im_;
-};
-
-}  // namespace
 
 Eigen::MatrixXcd SecondOrderResponse::hessenbergResponse(double w) const {
-  const HessenbergLu lu(H_, w);
-  RowMajorXcd Z = Bh_.cast<cd>();
+  const detail::HessenbergLu lu(H_, w);
+  detail::RowMajorXcd Z = Bh_.cast<cd>();
   lu.solve(Z);
   // q = (D Q)_q z, refined once on the residual of the second-order form,
   // r = Bq - (K - w^2 M + i w C) q (the explicit M^-1 K of the Hessenberg matrix costs
@@ -195,7 +82,7 @@ Eigen::MatrixXcd SecondOrderResponse::hessenbergResponse(double w) const {
     r -= cd(0, w) * (C.diagonal().cast<cd>().asDiagonal() * q);
   else
     r -= cd(0, w) * real(C, q);
-  RowMajorXcd dz = real(Rv_, r);
+  detail::RowMajorXcd dz = real(Rv_, r);
   lu.solve(dz);
   // y = C1 [q; i w q] + D1 with q + (D Q)_q dz, the correction taken to the outputs directly.
   return real(C1q_, q) + cd(0, w) * real(C1v_, q) + real(C1qQq_, dz) + cd(0, w) * real(C1vQq_, dz) + D1_.cast<cd>();

@@ -11,6 +11,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
+#include "sim/linear/hessenberg.hpp"
 
 namespace mmv {
 
@@ -20,6 +21,41 @@ Eigen::MatrixXcd StateSpace::response(double omega) const {
   const Eigen::MatrixXcd sEA = cd(0, omega) * E.cast<cd>() - A.cast<cd>();
   const Eigen::MatrixXcd X = sEA.partialPivLu().solve(B.cast<cd>());
   return C.cast<cd>() * X + D.cast<cd>();
+}
+
+StateSpaceResponses::StateSpaceResponses(const StateSpace& s, const std::vector<double>& check_omegas) : s_(s) {
+  const Eigen::Index N = s.A.rows();
+  if (N == 0 || check_omegas.empty()) return;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(s.E);
+  if (!(lu.rcond() > 1e-12)) return;  // singular E: the LU of i w E - A at each frequency
+  Eigen::MatrixXd A1 = lu.solve(s.A);
+  const Eigen::VectorXd d = detail::balance(A1);  // A1 := D^-1 E^-1 A D
+  const Eigen::HessenbergDecomposition<Eigen::MatrixXd> hd(A1);
+  H_ = hd.matrixH();
+  const Eigen::MatrixXd Q = hd.matrixQ();
+  Bh_ = Q.transpose() * (d.cwiseInverse().asDiagonal() * lu.solve(s.B));
+  Ch_ = s.C * d.asDiagonal() * Q;
+  if (!H_.allFinite() || !Bh_.allFinite() || !Ch_.allFinite()) return;
+  hessenberg_ = true;
+  for (std::size_t k : {std::size_t{0}, check_omegas.size() / 2, check_omegas.size() - 1}) {
+    const Eigen::MatrixXcd ref = s.response(check_omegas[k]);
+    const double scale = std::max(ref.cwiseAbs().maxCoeff(), 1e-300);
+    if (!((at(check_omegas[k]) - ref).cwiseAbs().maxCoeff() <= 1e-10 * scale)) {
+      hessenberg_ = false;
+      return;
+    }
+  }
+}
+
+Eigen::MatrixXcd StateSpaceResponses::at(double omega) const {
+  if (!hessenberg_) return s_.response(omega);
+  const detail::HessenbergLu lu(H_, omega);
+  detail::RowMajorXcd z = Bh_.cast<cd>();
+  lu.solve(z);
+  Eigen::MatrixXcd y(Ch_.rows(), z.cols());
+  y.real() = Ch_ * z.real();
+  y.imag() = Ch_ * z.imag();
+  return y + s_.D.cast<cd>();
 }
 
 StateSpace StateSpace::standardForm() const {
@@ -110,9 +146,10 @@ ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vecto
   // The frequencies on every core (each its own LU of the reduced model), then the
   // maxima in order: the same numbers as one after the other.
   std::atomic<long> done{0};
+  const StateSpaceResponses hb_at(b, omegas);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, omegas.size(), 16), [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      const Eigen::MatrixXcd ha = full(k, omegas[k]), hb = b.response(omegas[k]);
+      const Eigen::MatrixXcd ha = full(k, omegas[k]), hb = hb_at.at(omegas[k]);
       gap[k] = (ha - hb).cwiseAbs();
       size[k] = ha.cwiseAbs();
       progressCount(++done, static_cast<long>(omegas.size()), "frequency");

@@ -98,6 +98,26 @@ struct StateSpace {
   int numStates() const { return static_cast<int>(A.rows()); }
 };
 
+/// A state-space model's responses at many frequencies for O(N^2) each, not the O(N^3)
+/// of StateSpace::response's LU: E^-1 A balanced and reduced once to Hessenberg form
+/// (Q H Q^T, Householder), each frequency solving (i w I - H) z = Q^T D^-1 E^-1 B by
+/// elimination between adjacent rows (sim/linear/hessenberg.hpp). Used only after it
+/// reproduces the LU to 1e-10 of the largest response at the check frequencies given;
+/// otherwise (or when E is singular to working precision) every frequency takes the LU.
+class StateSpaceResponses {
+ public:
+  StateSpaceResponses(const StateSpace& s, const std::vector<double>& check_omegas);
+  /// C (i w E - A)^-1 B + D, as StateSpace::response.
+  Eigen::MatrixXcd at(double omega) const;
+  bool hessenberg() const { return hessenberg_; }
+
+ private:
+  const StateSpace& s_;
+  bool hessenberg_ = false;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;
+  Eigen::MatrixXd Bh_, Ch_;
+};
+
 /// First-order descriptor model of M q'' + C q' + K q = Bq u with outputs
 /// y = Cd q + Cv q' + Ca q'' + Dextra u (acceleration rows eliminated with M^-1).
 /// Any of Cd, Cv, Ca may be empty (zero). M must be invertible.
