@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <tbb/parallel_invoke.h>
+#include <tbb/task_group.h>
 
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
@@ -280,17 +281,30 @@ LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& re
   ArticleScene scene = scene_in;
   if (r.target_error > 0) chooseForTarget(r, scene, a);
   a.lm = build(r, scene, false);
-  {
-    // The full model's responses are prepared (one Hessenberg reduction of the
-    // first-order matrix) on another core while the reduction runs.
-    const ProgressStage stage(strf("reducing: the state-space model's modes (%d states), the full model factorized beside it",
-                                   a.lm.full.numStates()));
-    tbb::parallel_invoke([&] { a.lm.second_order.prepare(); }, [&] { a.red = reduceModal(a.lm.full, reductionOptions(r, a.lm)); });
-  }
   a.scene = std::move(scene);
-  a.geometry = linearTestGeometry(a.lm, a.scene, kLinearModelModes);
-  respond(r, grid, a);
-  estimateMeshError(r, a);
+  // The mesh's share (the scene solved again, and on coarser meshes: serial work) on
+  // another core beside the reduction, the test geometry and the responses, which stay
+  // on this thread (its progress stages); each writes its own fields.
+  tbb::task_group mesh;
+  mesh.run([&] { estimateMeshError(r, a); });
+  try {
+    {
+      // The full model's responses are prepared (one Hessenberg reduction of the
+      // first-order matrix) on another core while the reduction runs.
+      const ProgressStage stage(strf("reducing: the state-space model's modes (%d states), the full model factorized beside it",
+                                     a.lm.full.numStates()));
+      tbb::parallel_invoke([&] { a.lm.second_order.prepare(); }, [&] { a.red = reduceModal(a.lm.full, reductionOptions(r, a.lm)); });
+    }
+    a.geometry = linearTestGeometry(a.lm, a.scene, kLinearModelModes);
+    respond(r, grid, a);
+  } catch (...) {
+    try {
+      mesh.wait();  // nothing may outlive `a`; this error, not the estimate's, is told
+    } catch (...) {
+    }
+    throw;
+  }
+  mesh.wait();
   if (a.segments && a.err.needed.reached && a.err.needed.modes != r.rom_modes) {
     // The fewest modes within the target, compared on the same grid (it resolves every
     // candidate's half-power band, so the kept ones' too): no second full response.

@@ -80,10 +80,11 @@ int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene) {
 
 int runHamsasRom(const LinearArgs& args, const HamsasScene& scene) {
   OutputDir out(args.out, args.force);
+  const std::future<void> plugin = preloadMatPlugin();
   const app::HamsasRomStudy s = app::runHamsasRomStudy(scene, linearRequest(args));
   try {
-    writeStateSpaceMat(out.stage("rom.mat"), s.red.model);
-    writeStateSpaceMat(out.stage("full.mat"), s.full);
+    const std::string rom_path = out.stage("rom.mat"), full_path = out.stage("full.mat");
+    writeStateSpaceMats(rom_path, s.red.model, full_path, s.full);
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }

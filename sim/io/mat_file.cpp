@@ -4,8 +4,12 @@
 #include <filesystem>
 #include <mutex>
 
+#include <tbb/parallel_invoke.h>
+
 #include "sim/core/errors.hpp"
 #include "sim/core/plugins.hpp"
+#include "sim/core/progress.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv {
 namespace {
@@ -50,10 +54,11 @@ MatContents readMat(const std::string& path, long max_bytes) {
   return c;
 }
 
-void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
-  StateSpace s = d.standardForm();
-  // The standard form's matrices are moved in, not copied (the full model's are 2 MB each
-  // at 64 segments a link; an initializer list would copy each twice).
+namespace {
+
+/// `s` is d's standard form (moved in, not copied: the full model's matrices are 2 MB
+/// each at 64 segments a link).
+void writeForms(const std::string& path, StateSpace s, const StateSpace& d) {
   MatContents c;
   c.matrices.reserve(8);
   const std::pair<const char*, Eigen::MatrixXd*> standard[] = {{"A", &s.A}, {"B", &s.B}, {"C", &s.C}, {"D", &s.D}, {"E", &s.E}};
@@ -68,5 +73,20 @@ void writeStateSpaceMat(const std::string& path, const StateSpace& d) {
                {"OutputUnit", d.output_units}};
   writeMat(path, c);
 }
+
+}  // namespace
+
+void writeStateSpaceMat(const std::string& path, const StateSpace& d) { writeForms(path, d.standardForm(), d); }
+
+void writeStateSpaceMats(const std::string& reduced_path, const StateSpace& reduced, const std::string& full_path,
+                         const StateSpace& full) {
+  const ProgressStage stage(strf("writing the reduced model (%d states) and the full one (%d states)", reduced.numStates(),
+                                 full.numStates()));
+  StateSpace full_standard;
+  tbb::parallel_invoke([&] { writeStateSpaceMat(reduced_path, reduced); }, [&] { full_standard = full.standardForm(); });
+  writeForms(full_path, std::move(full_standard), full);
+}
+
+void loadMatPlugin() { api(); }
 
 }  // namespace mmv

@@ -27,4 +27,15 @@ MatContents readMat(const std::string& path, long max_bytes);
 /// Writes `path`; throws std::runtime_error if matio cannot create or write it.
 void writeStateSpaceMat(const std::string& path, const StateSpace& descriptor);
 
+/// A reduced model and its full model, as writeStateSpaceMat writes each: the full
+/// model's standard form (an n^3 solve) is made on another core while the reduced one
+/// is written.
+void writeStateSpaceMats(const std::string& reduced_path, const StateSpace& reduced, const std::string& full_path,
+                         const StateSpace& full);
+
+/// Loads the plugin now (otherwise the first read or write does): a command that will
+/// write .mat files starts it on another thread while it computes. Throws
+/// UnavailableError without it (as the first read or write then does again).
+void loadMatPlugin();
+
 }  // namespace mmv

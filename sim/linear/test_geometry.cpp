@@ -19,28 +19,31 @@ void addNode(TestGeometry& g, const std::string& name, const std::array<double, 
   g.nodes.push_back({id, name, xyz});
 }
 
-/// The first `count` modes' shapes at the mesh points.
+/// The first `count` modes' shapes at the mesh points: each mode's velocity pass over the
+/// tree (Model::calcFrameVelocities, O(bodies)), not every point's Jacobian (O(points x
+/// depth x DOF), 6 % of frf at 64 segments a link, for twelve products).
 void addShapes(const LinearModel& lm, const SimTK::State& st, int count, TestGeometry& g) {
   const Model& model = *lm.solved.model;
-  const Eigen::MatrixXd P = pointTranslationMatrix(model, st, lm.solved.linearized.dofs);
-  const std::size_t d = model.isSpatial() ? 3 : 2;
-  // Each point's body rotation too (about z only on the planar model).
   std::vector<SimTK::MobilizedBodyIndex> bodies;
-  for (const auto& p : model.getPoints()) bodies.push_back(p.mobod);
-  const Eigen::MatrixXd Jp = model.calcFrameJacobians(st, bodies, std::vector<SimTK::Vec3>(bodies.size(), SimTK::Vec3(0)),
-                                                      lm.solved.linearized.dofs);
+  std::vector<SimTK::Vec3> stations;
+  for (const auto& p : model.getPoints()) {
+    bodies.push_back(p.mobod);
+    stations.push_back(p.station_B);
+  }
   const ModalSolution& modes = lm.solved.modes;
   const int n = std::min<int>(count, static_cast<int>(modes.omega2.size()));
   const ModalDamping damping = modalDamping(model, lm.solved.linearized, modes, lm.damping, n);
+  const bool spatial = model.isSpatial();
   for (int k = 0; k < n; ++k) {
     TestModeShape m;
     m.mode = ModeNumber::atIndex(k);
     m.frequency_hz = modes.frequencyHz(k);
     m.damping_ratio = k < static_cast<int>(damping.ratio.size()) ? damping.ratio[k] : 0.0;
-    const Eigen::VectorXd u = P * modes.shapes.col(k), w = Jp * modes.shapes.col(k);
-    for (std::size_t p = 0; p < model.getPoints().size(); ++p) {
-      m.translation.push_back({u[d * p], u[d * p + 1], d == 3 ? u[d * p + 2] : 0.0});
-      m.rotation.push_back({w[6 * p], w[6 * p + 1], w[6 * p + 2]});
+    // Rows 6p..6p+2: the point's body rotation; 6p+3..6p+5: the point's translation.
+    const Eigen::VectorXd v = model.calcFrameVelocities(st, bodies, stations, lm.solved.linearized.dofs, modes.shapes.col(k));
+    for (std::size_t p = 0; p < bodies.size(); ++p) {
+      m.translation.push_back({v[6 * p + 3], v[6 * p + 4], spatial ? v[6 * p + 5] : 0.0});
+      m.rotation.push_back({v[6 * p], v[6 * p + 1], v[6 * p + 2]});
     }
     g.modes.push_back(m);
   }
