@@ -104,6 +104,7 @@ struct StateSpace {
 /// elimination between adjacent rows (sim/linear/hessenberg.hpp). Used only after it
 /// reproduces the LU to 1e-10 of the largest response at the check frequencies given;
 /// otherwise (or when E is singular to working precision) every frequency takes the LU.
+/// It keeps a reference to `s`, which must outlive it.
 class StateSpaceResponses {
  public:
   StateSpaceResponses(const StateSpace& s, const std::vector<double>& check_omegas);

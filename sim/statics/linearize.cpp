@@ -209,6 +209,7 @@ void addDenseMatrices(LinearizedModel& lin) {
   const int n = lin.tree->size();
   lin.M = lin.tree->denseM();
   lin.K = lin.tree->denseK();
+  symmetrize(lin.K);  // as linearize makes it (a spatial rotation spring's coupling entries)
   lin.K_elastic = Eigen::MatrixXd(lin.tree->springs().asDiagonal());
   lin.K_geometric = lin.K - lin.K_elastic;
   lin.G.resize(0, n);
