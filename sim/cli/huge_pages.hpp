@@ -6,7 +6,7 @@
 /// its large blocks when the tunable glibc.malloc.hugetlb=1 is set, which it reads only at
 /// start-up; Mesa's buffers are malloc'd, so the tunable must be there before the
 /// process starts. Only render: the second start costs about 20 ms (half of a
-/// `modes`), more than huge pages save frf and rom on the default scene (docs/benchmarks.md).
+/// `modes`); the other commands get huge pages on the heap in-process (keepFreedMemory).
 
 namespace mmv::cli {
 
@@ -23,7 +23,13 @@ void reexecWithHugePages(char** argv);
 /// Blocks up to 256 MB come from the heap and the heap is not trimmed below 1 GB: the peak
 /// memory is the same, it is only not returned before the process ends (`frf --segments
 /// 64` 0.40 -> 0.34 s, `rom` 0.57 -> 0.49 s, `modes --segments 1024` 0.62 -> 0.57 s).
-/// Call it first; the sanitizers' allocators ignore it.
+/// Then the heap's first 128 MB are advised for transparent huge pages (madvise on a
+/// block malloc'd and freed at once: nothing is touched, and the address space stays the
+/// heap's), what glibc.malloc.hugetlb=1 does without a second start: each 2 MB is one
+/// fault instead of 512 (`rom --segments 64` 9,300 -> 1,300 faults, 0.24 -> 0.15 s;
+/// docs/benchmarks.md). Not where GLIBC_TUNABLES already sets hugetlb (render's second
+/// start) or MMVLAB_NO_HUGE_PAGES is set. Call it first; the sanitizers' allocators
+/// ignore it.
 void keepFreedMemory();
 
 }  // namespace mmv::cli
