@@ -12,7 +12,7 @@ build_pkgs=(
   build-essential cmake pkg-config
   libsimbody-dev libeigen3-dev libsundials-dev
   libopencv-dev libpng-dev libosmesa6-dev libgl-dev
-  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev libspectra-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libmatio-dev libtbb-dev libspectra-dev liblapack-dev
   python3-dev pybind11-dev python3-numpy   # the Python module (python/): `import mmvlab`
 )
 test_pkgs=(

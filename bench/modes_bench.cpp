@@ -10,6 +10,7 @@
 #include "sim/statics/linearize.hpp"
 #include "sim/statics/tree_operator.hpp"
 #include "sim/modes/modal.hpp"
+#include "sim/core/symmetric_eigen.hpp"
 #include "sim/statics/statics.hpp"
 
 namespace {
@@ -64,6 +65,32 @@ void BM_Eigen(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(mmv::solveModes(lin.M, lin.K));
 }
 BENCHMARK(BM_Eigen)->Apply(segmentArgs);
+
+// Every eigenpair of the symmetric L^-1 K L^-T that solveModes forms for all modes (the
+// modal damping matrix's): MRRR on the tridiagonal (symmetricEigen) against Eigen's
+// implicit QR (symmetricEigenByQr), at 4 x segments DOF.
+Eigen::MatrixXd standardProblem(int segments) {
+  const auto model = mmv::buildArticleModel(sceneWith(segments));
+  const mmv::EquilibriumResult eq = mmv::solveEquilibrium(*model);
+  const mmv::LinearizedModel lin = mmv::linearize(*model, eq.state);
+  const Eigen::LLT<Eigen::MatrixXd> llt(lin.M);
+  Eigen::MatrixXd S = lin.K;
+  llt.matrixL().solveInPlace<Eigen::OnTheLeft>(S);
+  llt.matrixU().solveInPlace<Eigen::OnTheRight>(S);
+  return S;
+}
+
+void BM_SymmetricEigenMrrr(benchmark::State& st) {
+  const Eigen::MatrixXd S = standardProblem(static_cast<int>(st.range(0)));
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::symmetricEigen(S));
+}
+BENCHMARK(BM_SymmetricEigenMrrr)->Apply(segmentArgs)->Arg(128);
+
+void BM_SymmetricEigenQr(benchmark::State& st) {
+  const Eigen::MatrixXd S = standardProblem(static_cast<int>(st.range(0)));
+  for (auto _ : st) benchmark::DoNotOptimize(mmv::symmetricEigenByQr(S));
+}
+BENCHMARK(BM_SymmetricEigenQr)->Apply(segmentArgs)->Arg(128);
 
 void BM_ModesPipeline(benchmark::State& st) {
   const mmv::ArticleScene s = sceneWith(static_cast<int>(st.range(0)));

@@ -34,17 +34,22 @@ Damping dampingMatrix(const LinearModel& lm, const Model& model, const std::vect
     symmetrize(d.C);
     return d;
   }
-  d.modes = solveModes(lm.Mz, lm.Kz);
+  Eigen::MatrixXd MPhi;  // M Phi, as solveModes' checks formed it
+  d.modes = solveModes(lm.Mz, lm.Kz, 0, &MPhi);
   const Eigen::VectorXd& w2 = d.modes.omega2;
   if (damping.kind == DampingSpec::Kind::Rayleigh) {
     d.C = damping.alpha * lm.Mz + damping.beta * lm.Kz;
     d.c = Eigen::VectorXd::Constant(w2.size(), damping.alpha) + damping.beta * w2;
+    symmetrize(d.C);
   } else {
+    // C = (M Phi) diag(c) (M Phi)^T = W W^T with W = M Phi diag(sqrt(c)), c >= 0: one
+    // symmetric rank-n update (half a product), symmetric by construction.
     d.c = 2 * damping.modal_ratio * w2.cwiseMax(0.0).cwiseSqrt();
-    const Eigen::MatrixXd MPhi = lm.Mz * d.modes.shapes;  // C = (M Phi) diag(c) (M Phi)^T: two products, not three
-    d.C = MPhi * d.c.asDiagonal() * MPhi.transpose();
+    MPhi = MPhi * d.c.cwiseSqrt().asDiagonal();
+    d.C = Eigen::MatrixXd::Zero(MPhi.rows(), MPhi.rows());
+    d.C.selfadjointView<Eigen::Lower>().rankUpdate(MPhi);
+    for (Eigen::Index j = 1; j < d.C.cols(); ++j) d.C.col(j).head(j) = d.C.row(j).head(j).transpose();
   }
-  symmetrize(d.C);
   return d;
 }
 

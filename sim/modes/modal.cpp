@@ -5,7 +5,10 @@
 #include <optional>
 #include <sstream>
 
+#include <tbb/parallel_invoke.h>
+
 #include "sim/core/errors.hpp"
+#include "sim/core/symmetric_eigen.hpp"
 
 namespace mmv {
 
@@ -50,12 +53,16 @@ void refineLowestModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, Modal
   }
   sol.omega2.head(k) = lam.head(k);
   sol.shapes.leftCols(k) = X.leftCols(k);
-  // Keep the other shapes M-orthogonal to the refined ones (and mass-normalised).
+  // Keep the other shapes M-orthogonal to the refined ones (and mass-normalised):
+  // r <- r - Xk a with a = (M Xk)^T r, products with the k refined columns, then each
+  // column's M-norm from one product M R (a product with M per column cost more than
+  // the refinement).
   const Eigen::MatrixXd Xk = X.leftCols(k);
-  Eigen::MatrixXd rest = sol.shapes.rightCols(n - k);
-  rest -= Xk * (Xk.transpose() * (M * rest));
-  for (Eigen::Index j = 0; j < rest.cols(); ++j) rest.col(j) /= std::sqrt(rest.col(j).dot(M * rest.col(j)));
-  sol.shapes.rightCols(n - k) = rest;
+  auto rest = sol.shapes.rightCols(n - k);
+  const Eigen::MatrixXd a = (M * Xk).transpose() * rest;
+  rest.noalias() -= Xk * a;
+  const Eigen::MatrixXd MR = M * rest;
+  for (Eigen::Index j = 0; j < rest.cols(); ++j) rest.col(j) /= std::sqrt(rest.col(j).dot(MR.col(j)));
 }
 
 }  // namespace
@@ -65,21 +72,26 @@ namespace {
 /// All modes by the dense solver, balanced first: with D = diag(M)^(-1/2), solve
 /// (D K D) psi = w^2 (D M D) psi and phi = D psi. The scaled mass matrix has a unit
 /// diagonal, which keeps the Cholesky factor well conditioned when heavy torquers sit
-/// next to gram-scale rods.
+/// next to gram-scale rods. With D M D = L L^T the problem is the symmetric
+/// L^-1 (D K D) L^-T y = w^2 y, psi = L^-T y (as Eigen's generalized solver forms it),
+/// solved by symmetricEigen (MRRR on the tridiagonal form).
 ModalSolution solveAllModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   const Eigen::Index n = M.rows();
   const Eigen::VectorXd d = M.diagonal().cwiseSqrt().cwiseInverse();
   const Eigen::MatrixXd Ms = d.asDiagonal() * M * d.asDiagonal();
   const Eigen::MatrixXd Ks = d.asDiagonal() * K * d.asDiagonal();
-  Eigen::LLT<Eigen::MatrixXd> llt(Ms);
+  Eigen::MatrixXd S = Ks.selfadjointView<Eigen::Lower>();  // exactly symmetric (D K D is not, by an ulp)
+  const Eigen::LLT<Eigen::MatrixXd> llt(Ms);
   if (llt.info() != Eigen::Success) {
     throw NumericalError("mass matrix is not positive definite (a degree of freedom without inertia?)");
   }
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Ks, Ms, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
-  if (es.info() != Eigen::Success) throw NumericalError("generalized eigen solver did not converge");
+  llt.matrixL().solveInPlace<Eigen::OnTheLeft>(S);
+  llt.matrixU().solveInPlace<Eigen::OnTheRight>(S);
+  SymmetricEigen es = symmetricEigen(S);
+  llt.matrixU().solveInPlace(es.vectors);
   ModalSolution sol;
-  sol.omega2 = es.eigenvalues();
-  sol.shapes = d.asDiagonal() * es.eigenvectors();
+  sol.omega2 = std::move(es.values);
+  sol.shapes = d.asDiagonal() * es.vectors;
   MMV_DEMAND(sol.shapes.cols() == n);
   refineLowestModes(M, K, sol);
   return sol;
@@ -94,8 +106,10 @@ void fixSigns(ModalSolution& sol) {
   }
 }
 
-/// The checks of the modes returned, from KV = K V and MV = M V.
+/// The checks of the modes returned, from KV = K V and MV = M V: residuals, and
+/// M-orthogonality from V^T (M V) (its lower triangle: the matrix is symmetric).
 void checkModes(const Eigen::MatrixXd& KV, const Eigen::MatrixXd& MV, ModalSolution& sol) {
+  const Eigen::MatrixXd& V = sol.shapes;
   const Eigen::Index k = sol.omega2.size();
   for (Eigen::Index i = 0; i < k; ++i) {
     const double denom = KV.col(i).norm() + std::abs(sol.omega2[i]) * MV.col(i).norm();
@@ -103,14 +117,31 @@ void checkModes(const Eigen::MatrixXd& KV, const Eigen::MatrixXd& MV, ModalSolut
     sol.residuals.push_back(r);
     sol.max_residual = std::max(sol.max_residual, r);
   }
-  const Eigen::MatrixXd ortho = sol.shapes.transpose() * MV - Eigen::MatrixXd::Identity(k, k);
+  Eigen::MatrixXd ortho = Eigen::MatrixXd::Zero(k, k);
+  ortho.triangularView<Eigen::Lower>() = V.transpose() * MV;
+  ortho.diagonal().array() -= 1.0;
   sol.orthogonality_error = k ? ortho.cwiseAbs().maxCoeff() : 0.0;
   if (!sol.omega2.allFinite() || !sol.shapes.allFinite()) throw NumericalError("eigen solution has non-finite values");
 }
 
+/// The same from dense M and K; MV is kept. The two products on two cores when there
+/// are many modes (all 256 of a 64-segment article: 2 x 34 Mflop; below about 200,
+/// waking the other core costs more than it saves).
+void checkModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, ModalSolution& sol, Eigen::MatrixXd& MV) {
+  const Eigen::MatrixXd& V = sol.shapes;
+  Eigen::MatrixXd KV;
+  if (V.cols() >= 192) {
+    tbb::parallel_invoke([&] { KV.noalias() = K * V; }, [&] { MV.noalias() = M * V; });
+  } else {
+    KV.noalias() = K * V;
+    MV.noalias() = M * V;
+  }
+  checkModes(KV, MV, sol);
+}
+
 }  // namespace
 
-ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count) {
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count, Eigen::MatrixXd* mass_shapes) {
   const Eigen::Index n = M.rows();
   MMV_DEMAND(M.cols() == n && K.rows() == n && K.cols() == n && count >= 0);
   if (!M.allFinite() || !K.allFinite()) throw NumericalError("mass or stiffness matrix has non-finite entries");
@@ -124,7 +155,9 @@ ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int
   if (count > 0 && n >= kPartialModesMinDofs && 3 * count <= n) sol = solveLowestModes(M, K, count);
   if (!sol) sol = solveAllModes(M, K);
   fixSigns(*sol);
-  checkModes(K * sol->shapes, M * sol->shapes, *sol);
+  Eigen::MatrixXd MV;
+  checkModes(M, K, *sol, MV);
+  if (mass_shapes) *mass_shapes = std::move(MV);
   return std::move(*sol);
 }
 

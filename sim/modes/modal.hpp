@@ -3,8 +3,9 @@
 ///
 ///     K phi = omega^2 M phi,   M = M^T > 0 (checked by Cholesky),  K = K^T,
 ///
-/// solved as a symmetric-definite generalized eigenproblem (Eigen's
-/// GeneralizedSelfAdjointEigenSolver: Cholesky of M, then a symmetric QR iteration).
+/// solved as a symmetric-definite generalized eigenproblem (Cholesky of M, then every
+/// eigenpair of the symmetric L^-1 K L^-T by sim/core/symmetric_eigen.hpp), or for the
+/// lowest modes of a large model by shift-invert Lanczos.
 /// Shapes are mass-normalised, phi^T M phi = 1. A negative omega^2 means the
 /// equilibrium is unstable in that shape (e.g. an upright link past buckling); it is
 /// reported as unstable, never as a NaN frequency.
@@ -46,10 +47,13 @@ struct ModalSolution {
 /// modes (omega^2 ascending, unstable ones first); from kPartialModesMinDofs DOF on
 /// (and count <= n / 3) only those, by shift-invert Lanczos (solveLowestModes), which
 /// falls back to the dense solver whenever it cannot prove its answer complete.
-/// Residuals and orthogonality are computed for the modes returned.
+/// Residuals and orthogonality are computed for the modes returned; `mass_shapes`, if
+/// given, receives M * shapes as those checks formed it (the modal damping matrix's
+/// factor, not formed twice).
 /// Throws NumericalError (sim/statics/statics.hpp) if M is not positive definite or the
 /// eigen solver fails.
-ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count = 0);
+ModalSolution solveModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, int count = 0,
+                         Eigen::MatrixXd* mass_shapes = nullptr);
 
 /// Below this many DOF the dense solver is cheap enough (a few ms) to return every mode.
 inline constexpr int kPartialModesMinDofs = 96;
