@@ -4,7 +4,6 @@
 /// writes nothing to stdout; diagnostics go to stderr.
 
 #include <functional>
-#include <future>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -296,9 +295,6 @@ int runHamsasRom(const LinearArgs& args, const HamsasScene& scene);
 /// --rom-modes / --band / --no-residualize as reduction options.
 /// The frf/rom options as the study layer's request (--band parsed; ranges checked by the study).
 app::LinearRequest linearRequest(const LinearArgs& args);
-/// The .mat plugin loading on another thread while `rom` computes (loadMatPlugin); the
-/// future waits for it. A failure to load surfaces at the first write, as without it.
-std::future<void> preloadMatPlugin();
 // Shared by the command implementations.
 /// The scene (file or embedded default) with --segments and --no-gravity applied
 /// (app::loadScene; its warnings printed on stderr); the command dispatches on its kind

@@ -80,7 +80,6 @@ int runHamsasFrf(const LinearArgs& args, const HamsasScene& scene) {
 
 int runHamsasRom(const LinearArgs& args, const HamsasScene& scene) {
   OutputDir out(args.out, args.force);
-  const std::future<void> plugin = preloadMatPlugin();
   const app::HamsasRomStudy s = app::runHamsasRomStudy(scene, linearRequest(args));
   try {
     const std::string rom_path = out.stage("rom.mat"), full_path = out.stage("full.mat");

@@ -16,15 +16,6 @@
 
 namespace mmv::cli {
 
-std::future<void> preloadMatPlugin() {
-  return std::async(std::launch::async, [] {
-    try {
-      loadMatPlugin();
-    } catch (const std::exception&) {  // told again by the write that needs it
-    }
-  });
-}
-
 app::LinearRequest linearRequest(const LinearArgs& args) {
   app::LinearRequest r;
   r.inputs = args.inputs;
@@ -140,7 +131,6 @@ int runRomCommand(const LinearArgs& args) {
     const app::LinearRequest request = linearRequest(args);
     if (const auto* h = std::get_if<HamsasScene>(&loaded)) return runHamsasRom(args, *h);
     OutputDir out(args.out, args.force);
-    const std::future<void> plugin = preloadMatPlugin();
     const app::LinearStudy a = app::runLinearStudy(std::get<ArticleScene>(loaded), request);
     try {
       const std::string rom_path = out.stage("rom.mat"), full_path = out.stage("full.mat");

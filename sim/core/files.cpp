@@ -48,18 +48,24 @@ namespace {
 }  // namespace
 
 void writeFileChecked(const std::string& path, std::string_view bytes) {
+  writeFileChecked(path, std::vector<std::string_view>{bytes});
+}
+
+void writeFileChecked(const std::string& path, const std::vector<std::string_view>& pieces) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) cannotWrite(path, errno);
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {  // 0: a short write that cannot progress
-      const int err = n < 0 ? errno : ENOSPC;
-      ::close(fd);
-      cannotWrite(path, err);
+  for (const std::string_view bytes : pieces) {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+      const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {  // 0: a short write that cannot progress
+        const int err = n < 0 ? errno : ENOSPC;
+        ::close(fd);
+        cannotWrite(path, err);
+      }
+      done += static_cast<std::size_t>(n);
     }
-    done += static_cast<std::size_t>(n);
   }
   if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) {  // EINVAL: a file system without fsync (a pipe, /dev/null)
     const int err = errno;

@@ -6,6 +6,7 @@
 // output file with every step checked (writeFileChecked, syncFileChecked).
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace mmv {
 
@@ -23,6 +24,9 @@ bool readInputFile(const std::string& path, long max_bytes, std::string& content
 /// OutputError ("PATH: cannot write: No space left on device") and never a short file
 /// with exit 0.
 void writeFileChecked(const std::string& path, std::string_view bytes);
+/// The same for a file made of pieces, written in order (a .mat file's headers between
+/// its matrices' data, written from the matrices themselves).
+void writeFileChecked(const std::string& path, const std::vector<std::string_view>& pieces);
 
 /// Flushes a file a library wrote (a PNG, a .mat, a video) to the disk and checks it is
 /// there, regular and at least `min_bytes` long; an OutputError otherwise.

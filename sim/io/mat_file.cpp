@@ -7,9 +7,11 @@
 #include <tbb/parallel_invoke.h>
 
 #include "sim/core/errors.hpp"
+#include "sim/core/files.hpp"
 #include "sim/core/plugins.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
+#include "sim/io/mat5_writer.hpp"
 
 namespace mmv {
 namespace {
@@ -36,8 +38,8 @@ const MatApi& api() {
 }  // namespace
 
 void writeMat(const std::string& path, const MatContents& c) {
-  const MatStatus s = api().write(path, c);
-  if (s.kind != 0) throw OutputError(s.message);
+  std::string headers;
+  writeFileChecked(path, mat5Pieces(c, headers));
 }
 
 MatContents readMat(const std::string& path, long max_bytes) {
@@ -87,6 +89,6 @@ void writeStateSpaceMats(const std::string& reduced_path, const StateSpace& redu
   writeForms(full_path, std::move(full_standard), full);
 }
 
-void loadMatPlugin() { api(); }
+
 
 }  // namespace mmv

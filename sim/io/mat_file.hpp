@@ -1,7 +1,8 @@
 #pragma once
-/// MATLAB/Octave .mat (version 5) files through matio, in libmmvlab_mat.so, loaded on
-/// the first read or write (sim/io/mat_plugin.hpp: matio's HDF5 brings a network stack
-/// no other command needs at start-up). The state-space export:
+/// MATLAB/Octave .mat (version 5) files: written by mmvlab itself (sim/io/mat5_writer.hpp:
+/// one checked write of headers and the matrices' own data), read through matio in
+/// libmmvlab_mat.so, loaded on the first read (sim/io/mat_plugin.hpp: matio's HDF5
+/// brings a network stack no other command needs). The state-space export:
 /// double matrices A, B, C, D, E (E = I: A and B are in standard form, so
 /// `sys = ss(A, B, C, D)` works directly), the descriptor form as Ed, Ad, Bd, and cell
 /// arrays InputName, OutputName, StateName, InputUnit, OutputUnit.
@@ -15,8 +16,8 @@
 
 namespace mmv {
 
-/// Writes `path` (MAT 5) and reads every variable back (matio buffers its writes: a full
-/// disk surfaces there); throws OutputError, UnavailableError without the plugin.
+/// Writes `path` (MAT 5), every write, the flush to the disk and the close checked
+/// (writeFileChecked); throws OutputError (a full disk, a variable past MAT 5's sizes).
 void writeMat(const std::string& path, const MatContents& contents);
 
 /// Reads `path`: every double matrix and every cell array of strings in it. Throws
@@ -24,7 +25,7 @@ void writeMat(const std::string& path, const MatContents& contents);
 /// variable is neither.
 MatContents readMat(const std::string& path, long max_bytes);
 
-/// Writes `path`; throws std::runtime_error if matio cannot create or write it.
+/// Writes `path`; throws OutputError if it cannot be written.
 void writeStateSpaceMat(const std::string& path, const StateSpace& descriptor);
 
 /// A reduced model and its full model, as writeStateSpaceMat writes each: the full
@@ -32,10 +33,5 @@ void writeStateSpaceMat(const std::string& path, const StateSpace& descriptor);
 /// is written.
 void writeStateSpaceMats(const std::string& reduced_path, const StateSpace& reduced, const std::string& full_path,
                          const StateSpace& full);
-
-/// Loads the plugin now (otherwise the first read or write does): a command that will
-/// write .mat files starts it on another thread while it computes. Throws
-/// UnavailableError without it (as the first read or write then does again).
-void loadMatPlugin();
 
 }  // namespace mmv

@@ -1,5 +1,5 @@
-// The .mat plugin (sim/io/mat_plugin.hpp): MAT 5 through matio. Writes are read back
-// (matio buffers them: a full disk surfaces only there).
+// The .mat plugin (sim/io/mat_plugin.hpp): MAT 5 read through matio (mmvlab writes
+// its own: sim/io/mat5_writer.hpp).
 #include "sim/io/mat_plugin.hpp"
 
 #include <matio.h>
@@ -10,7 +10,7 @@
 namespace mmv {
 namespace {
 
-/// RAII for a matio file and for variables not yet handed to a cell.
+/// RAII for a matio file and its variables.
 struct MatCloser {
   void operator()(mat_t* m) const {
     if (m) Mat_Close(m);
@@ -24,61 +24,34 @@ struct VarFreer {
 using MatFile = std::unique_ptr<mat_t, MatCloser>;
 using MatVar = std::unique_ptr<matvar_t, VarFreer>;
 
-MatStatus output(const std::string& message) { return {1, message}; }
-
-MatStatus writeVar(mat_t* mat, MatVar var, const std::string& what) {
-  if (!var) return output("cannot create .mat variable " + what);
-  if (Mat_VarWrite(mat, var.get(), MAT_COMPRESSION_NONE) != 0) return output("cannot write .mat variable " + what);
-  return {};
-}
-
-MatStatus writeMatrix(mat_t* mat, const std::string& name, const Eigen::MatrixXd& m) {
-  // Written from the matrix itself (Eigen is column-major like MATLAB): without
-  // MAT_F_DONT_COPY_DATA matio copies the data (2 MB a matrix of the full model at 64
-  // segments a link), with it it keeps the pointer, frees nothing and only reads (the
-  // const_cast is for its non-const parameter). The matrix outlives the write.
-  size_t dims[2] = {static_cast<size_t>(m.rows()), static_cast<size_t>(m.cols())};
-  return writeVar(mat, MatVar(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, const_cast<double*>(m.data()),
-                                            MAT_F_DONT_COPY_DATA)), name);
-}
-
-MatStatus writeStrings(mat_t* mat, const std::string& name, const std::vector<std::string>& items) {
-  size_t dims[2] = {items.size(), 1};
-  MatVar cell(Mat_VarCreate(name.c_str(), MAT_C_CELL, MAT_T_CELL, 2, dims, nullptr, 0));
-  if (!cell) return output("cannot create .mat cell " + name);
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    size_t sdims[2] = {1, items[i].size()};
-    // MAT_F_DONT_COPY_DATA is not used: matio copies the characters, the cell owns them.
-    matvar_t* s = Mat_VarCreate(nullptr, MAT_C_CHAR, MAT_T_UINT8, 2, sdims, const_cast<char*>(items[i].data()), 0);
-    if (!s) return output("cannot create .mat string in " + name);
-    Mat_VarSetCell(cell.get(), static_cast<int>(i), s);
+/// UTF-16 code units (MATLAB's char) as UTF-8; a lone surrogate becomes U+FFFD.
+std::string utf8(const std::uint16_t* u, std::size_t n) {
+  std::string out;
+  for (std::size_t k = 0; k < n; ++k) {
+    char32_t cp = u[k];
+    if (cp >= 0xd800 && cp < 0xdc00 && k + 1 < n && u[k + 1] >= 0xdc00 && u[k + 1] < 0xe000) {
+      cp = 0x10000 + ((cp - 0xd800) << 10) + (u[k + 1] - 0xdc00);
+      ++k;
+    } else if (cp >= 0xd800 && cp < 0xe000) {
+      cp = 0xfffd;
+    }
+    if (cp < 0x80) {
+      out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+      out += static_cast<char>(0xc0 | cp >> 6);
+      out += static_cast<char>(0x80 | (cp & 0x3f));
+    } else if (cp < 0x10000) {
+      out += static_cast<char>(0xe0 | cp >> 12);
+      out += static_cast<char>(0x80 | (cp >> 6 & 0x3f));
+      out += static_cast<char>(0x80 | (cp & 0x3f));
+    } else {
+      out += static_cast<char>(0xf0 | cp >> 18);
+      out += static_cast<char>(0x80 | (cp >> 12 & 0x3f));
+      out += static_cast<char>(0x80 | (cp >> 6 & 0x3f));
+      out += static_cast<char>(0x80 | (cp & 0x3f));
+    }
   }
-  return writeVar(mat, std::move(cell), name);
-}
-
-/// Whether `name` reads back from the closed file as the matrix written.
-bool sameMatrix(mat_t* mat, const std::string& name, const Eigen::MatrixXd& m) {
-  MatVar v(Mat_VarRead(mat, name.c_str()));
-  return v && v->class_type == MAT_C_DOUBLE && v->rank == 2 && v->dims[0] == static_cast<size_t>(m.rows()) &&
-         v->dims[1] == static_cast<size_t>(m.cols()) &&
-         (m.size() == 0 || (v->data && Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(v->data), m.rows(), m.cols()) == m));
-}
-
-MatStatus write(const std::string& path, const MatContents& c) {
-  MatFile mat(Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5));
-  if (!mat) return output(path + ": cannot create .mat file");
-  for (const auto& [name, m] : c.matrices)
-    if (MatStatus s = writeMatrix(mat.get(), name, m); s.kind) return s;
-  for (const auto& [name, items] : c.strings)
-    if (MatStatus s = writeStrings(mat.get(), name, items); s.kind) return s;
-  if (Mat_Close(mat.release()) != 0) return output(path + ": cannot write the .mat file (disk full?)");
-  MatFile back(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
-  if (!back) return output(path + ": the .mat file written does not open (disk full?)");
-  for (const auto& [name, m] : c.matrices)
-    if (!sameMatrix(back.get(), name, m)) return output(path + ": " + name + " did not write whole (disk full?)");
-  for (const auto& [name, items] : c.strings)
-    if (!MatVar(Mat_VarReadInfo(back.get(), name.c_str()))) return output(path + ": " + name + " did not write whole (disk full?)");
-  return {};
+  return out;
 }
 
 /// A cell of strings, as MATLAB (UTF-16) or matio (UTF-8) writes char.
@@ -91,7 +64,7 @@ MatStatus readStrings(const std::string& path, const std::string& name, matvar_t
       return {3, path + ": " + name + ": a cell that is not a string (mmvlab writes strings only)"};
     std::string text;
     if (e->data_type == MAT_T_UINT16 || e->data_type == MAT_T_UTF16) {
-      for (std::size_t k = 0; k < len; ++k) text += static_cast<char>(static_cast<const std::uint16_t*>(e->data)[k] & 0x7f);
+      text = utf8(static_cast<const std::uint16_t*>(e->data), len);
     } else if (e->data_type == MAT_T_UINT8 || e->data_type == MAT_T_UTF8 || e->data_type == MAT_T_INT8) {
       text.assign(static_cast<const char*>(e->data), len);
     } else {
@@ -122,7 +95,7 @@ MatStatus read(const std::string& path, MatContents& c) {
   return {};
 }
 
-const MatApi kApi{kMatApiVersion, &write, &read};
+const MatApi kApi{kMatApiVersion, &read};
 
 }  // namespace
 }  // namespace mmv

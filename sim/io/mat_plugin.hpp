@@ -1,8 +1,9 @@
 #pragma once
 /// The .mat plugin's interface (sim/io/mat_file.hpp loads it). matio brings HDF5 and,
 /// through it, curl, gnutls, Kerberos and ssh: about 30 shared libraries a command
-/// writing no .mat file should not load at start-up, so matio lives in
-/// libmmvlab_mat.so, loaded on the first .mat read or write. No exception crosses the
+/// reading no .mat file should not load (26 ms of a process on this machine), so matio
+/// lives in libmmvlab_mat.so, loaded on the first .mat read; mmvlab writes .mat files
+/// itself (sim/io/mat5_writer.hpp). No exception crosses the
 /// boundary: each call returns its failure, and the loader throws mmvlab's own error.
 
 #include <string>
@@ -28,10 +29,10 @@ struct MatStatus {
 
 struct MatApi {
   int version;
-  MatStatus (*write)(const std::string& path, const MatContents& contents);
   MatStatus (*read)(const std::string& path, MatContents& contents);
 };
 
-inline constexpr int kMatApiVersion = 1;
+/// 2: read only (mmvlab writes MAT 5 itself, sim/io/mat5_writer.hpp).
+inline constexpr int kMatApiVersion = 2;
 
 }  // namespace mmv

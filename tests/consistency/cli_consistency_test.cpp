@@ -11,10 +11,13 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "sim/io/mat_file.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/scene/scene.hpp"
 #include "consistency/consistency_support.hpp"
@@ -179,6 +182,70 @@ Eigen::MatrixXd readMatMatrix(const fs::path& path, const char* name) {
   Mat_VarFree(v);
   Mat_Close(mat);
   return m;
+}
+
+/// The same contents written by matio itself (uncompressed MAT 5, char as UTF-8), as
+/// mmvlab wrote its .mat files before it wrote them itself.
+void writeWithMatio(const fs::path& path, const mmv::MatContents& c) {
+  mat_t* mat = Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5);
+  ASSERT_NE(mat, nullptr);
+  for (const auto& [name, m] : c.matrices) {
+    size_t dims[2] = {static_cast<size_t>(m.rows()), static_cast<size_t>(m.cols())};
+    matvar_t* v = Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, const_cast<double*>(m.data()), MAT_F_DONT_COPY_DATA);
+    ASSERT_EQ(Mat_VarWrite(mat, v, MAT_COMPRESSION_NONE), 0);
+    Mat_VarFree(v);
+  }
+  for (const auto& [name, items] : c.strings) {
+    size_t dims[2] = {items.size(), 1};
+    matvar_t* cell = Mat_VarCreate(name.c_str(), MAT_C_CELL, MAT_T_CELL, 2, dims, nullptr, 0);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      size_t sdims[2] = {1, items[i].size()};
+      Mat_VarSetCell(cell, static_cast<int>(i), Mat_VarCreate(nullptr, MAT_C_CHAR, MAT_T_UINT8, 2, sdims, const_cast<char*>(items[i].data()), 0));
+    }
+    ASSERT_EQ(Mat_VarWrite(mat, cell, MAT_COMPRESSION_NONE), 0);
+    Mat_VarFree(cell);
+  }
+  Mat_Close(mat);
+}
+
+// mmvlab's own MAT 5 writer (sim/io/mat5_writer.hpp) and matio write the same file: after
+// the 128-byte header (its free text names the writer), byte for byte, for matrices of
+// every shape (empty, 1 x 1, tall, wide), names of 1 to 6 characters (the small element
+// format ends at 4) and cells of ASCII strings (empty ones too); and for rom's own
+// full.mat and rom.mat, whose contents are read back here and written again by matio.
+TEST_F(Consistency, MatFilesAreMatiosByteForByte) {
+  mmv::MatContents c;
+  c.matrices.emplace_back("A", Eigen::MatrixXd::Random(7, 3));
+  c.matrices.emplace_back("Bd", Eigen::MatrixXd::Random(1, 9));
+  c.matrices.emplace_back("Emp", Eigen::MatrixXd(0, 3));
+  c.matrices.emplace_back("Four", Eigen::MatrixXd::Constant(1, 1, 2.5));
+  c.matrices.emplace_back("Fives", Eigen::MatrixXd::Random(5, 5));
+  c.matrices.emplace_back("Sixsix", Eigen::MatrixXd::Random(2, 1));
+  c.strings.emplace_back("InputName", std::vector<std::string>{"table_x", "", "a", "link3b.tip:y"});
+  c.strings.emplace_back("U", std::vector<std::string>{"m/s^2"});
+  auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  auto same = [&](const mmv::MatContents& contents, const std::string& what) {
+    mmv::writeMat((dir_ / "ours.mat").string(), contents);
+    writeWithMatio(dir_ / "matio.mat", contents);
+    const std::string ours = bytes(dir_ / "ours.mat"), theirs = bytes(dir_ / "matio.mat");
+    ASSERT_EQ(ours.size(), theirs.size()) << what;
+    EXPECT_EQ(ours.substr(0, 20), theirs.substr(0, 20)) << what;  // "MATLAB 5.0 MAT-file,"
+    EXPECT_EQ(ours.substr(124, 4), theirs.substr(124, 4)) << what;  // version, endianness
+    EXPECT_TRUE(ours.substr(128) == theirs.substr(128)) << what;
+  };
+  same(c, "the mixed contents");
+  const std::string table = (fs::path(MMVLAB_SOURCE_DIR) / "scenes/mmv-table.yaml").string();
+  ASSERT_EQ(run("rom " + table + " --rom-modes 6 --out " + (dir_ / "rom").string()).code, 0);
+  for (const char* file : {"rom.mat", "full.mat"}) {
+    const mmv::MatContents back = mmv::readMat((dir_ / "rom" / file).string(), 1 << 28);
+    EXPECT_EQ(back.matrices.size(), 8u) << file;
+    EXPECT_EQ(back.strings.size(), 5u) << file;
+    same(back, file);
+    EXPECT_TRUE(bytes(dir_ / "ours.mat") == bytes(dir_ / "rom" / file)) << file << ": written again, not the same file";
+  }
 }
 
 // The exported models against the responses frf prints: rom's full.mat and rom.mat,

@@ -1,8 +1,11 @@
 #include "sim/io/mat_file.hpp"
+#include "sim/io/mat5_writer.hpp"
+#include "sim/core/errors.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -89,7 +92,12 @@ TEST(MatFile, WhatIsWrittenIsReadBack) {
   c.matrices.emplace_back("M", Eigen::MatrixXd::Random(4, 3));
   c.matrices.emplace_back("Empty", Eigen::MatrixXd(0, 3));
   c.matrices.emplace_back("Node", (Eigen::MatrixXd(2, 1) << 102440, 300762).finished());
+  c.matrices.emplace_back("Four", Eigen::MatrixXd::Constant(1, 1, -0.0));  // a name at the small format's 4 bytes ...
+  c.matrices.emplace_back("Fives", Eigen::MatrixXd::Constant(2, 2, 1e-300));  // ... and one past it
   c.strings.emplace_back("Channel", std::vector<std::string>{"link1@2.44m transverse", "", "link3a@0.762m axial"});
+  // Beyond ASCII (written as UTF-16, read back as UTF-8): a Greek letter, a degree sign,
+  // a code point past U+FFFF (a surrogate pair).
+  c.strings.emplace_back("Unit", std::vector<std::string>{"\xcf\x89 (rad/s)", "\xc2\xb0", "\xf0\x9d\x9c\x94 tip", "x"});
   const std::string path = (dir / "t.mat").string();
   writeMat(path, c);
   const long size = static_cast<long>(fs::file_size(path));
@@ -102,10 +110,84 @@ TEST(MatFile, WhatIsWrittenIsReadBack) {
     ASSERT_EQ(back.matrices[i].second.cols(), c.matrices[i].second.cols());
     EXPECT_TRUE(back.matrices[i].second == c.matrices[i].second) << c.matrices[i].first;
   }
-  ASSERT_EQ(back.strings.size(), 1u);
-  EXPECT_EQ(back.strings[0].first, "Channel");
-  EXPECT_EQ(back.strings[0].second, c.strings[0].second);
+  ASSERT_EQ(back.strings.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(back.strings[i].first, c.strings[i].first);
+    EXPECT_EQ(back.strings[i].second, c.strings[i].second);
+  }
   EXPECT_THROW(readMat((dir / "absent.mat").string(), size), SceneFileError);
+  fs::remove_all(dir);
+}
+
+// The file's layout, read here without matio: the 128-byte header ends in version
+// 0x0100 and 'IM'; the top-level elements are miMATRIX (14), each a multiple of 8 bytes,
+// and they add up to the file; a matrix's data is its doubles, bit for bit.
+TEST(MatFile, LayoutIsMat5) {
+  const fs::path dir = fs::temp_directory_path() / ("mmvlab_mat_layout_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  MatContents c;
+  const Eigen::MatrixXd A = Eigen::MatrixXd::Random(3, 5);
+  c.matrices.emplace_back("A", A);
+  c.strings.emplace_back("Names", std::vector<std::string>{"a", "bc"});
+  const std::string path = (dir / "l.mat").string();
+  writeMat(path, c);
+  std::ifstream in(path, std::ios::binary);
+  const std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(b.size(), 128u);
+  EXPECT_EQ(b.substr(0, 10), "MATLAB 5.0");
+  EXPECT_EQ(b[124], '\x00');
+  EXPECT_EQ(b[125], '\x01');
+  EXPECT_EQ(b.substr(126, 2), "IM");
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, b.data() + at, 4);
+    return v;
+  };
+  std::size_t at = 128;
+  int elements = 0;
+  while (at < b.size()) {
+    EXPECT_EQ(u32(at), 14u) << "element " << elements;
+    EXPECT_EQ(u32(at + 4) % 8, 0u) << "element " << elements;
+    if (elements == 0) {  // flags (16), dims (16), name "A" (small, 8), then miDOUBLE
+      EXPECT_EQ(u32(at + 8), 6u);
+      EXPECT_EQ(u32(at + 16), 6u);  // mxDOUBLE_CLASS
+      EXPECT_EQ(u32(at + 32), 3u);  // rows
+      EXPECT_EQ(u32(at + 36), 5u);  // cols
+      EXPECT_EQ(u32(at + 48), 9u);  // miDOUBLE
+      EXPECT_EQ(u32(at + 52), 8u * 15);
+      EXPECT_EQ(std::memcmp(b.data() + at + 56, A.data(), 8 * 15), 0);
+    }
+    at += 8 + u32(at + 4);
+    ++elements;
+  }
+  EXPECT_EQ(at, b.size());
+  EXPECT_EQ(elements, 2);
+  fs::remove_all(dir);
+}
+
+// MAT 5's limits, enforced before a byte is written: a variable's byte count is 32
+// bits (at the bound and one past it), a dimension 2^31 - 1 (an empty matrix of that many
+// rows is written; one more row is refused, and no file is left).
+TEST(MatFile, Mat5LimitsAreEnforced) {
+  EXPECT_TRUE(mat5Fits(kMat5MaxElementBytes));
+  EXPECT_FALSE(mat5Fits(kMat5MaxElementBytes + 1));
+  const fs::path dir = fs::temp_directory_path() / ("mmvlab_mat_limits_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string path = (dir / "x.mat").string();
+  MatContents at_bound;
+  at_bound.matrices.emplace_back("Tall", Eigen::MatrixXd(2147483647L, 0));
+  writeMat(path, at_bound);
+  EXPECT_EQ(readMat(path, 1 << 20).matrices.at(0).second.rows(), 2147483647L);
+  fs::remove(path);
+  MatContents past;
+  past.matrices.emplace_back("Taller", Eigen::MatrixXd(2147483648L, 0));
+  try {
+    writeMat(path, past);
+    ADD_FAILURE() << "a dimension past 2^31 - 1 was written";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Taller"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(path));
   fs::remove_all(dir);
 }
 
