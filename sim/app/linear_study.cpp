@@ -137,22 +137,14 @@ LinearModel build(const LinearRequest& r, const ArticleScene& scene, bool prepar
 
 /// The mesh's share (LinearStudy::mesh_*): each vibration mode up to f_max, its
 /// estimated frequency error (estimateDiscretization: the scene at segments / 2 and / 4)
-/// over its damping ratio.
+/// over its damping ratio. Reads the request and a.scene only (it runs beside the
+/// linear model's construction): the damping is the request's, as the linear model's.
 void estimateMeshError(const LinearRequest& r, LinearStudy& a) {
   const ProgressStage stage("the mesh's share of the FRF error (the modes again, and on a coarser mesh)");
   ModesOptions mo;
-  mo.max_modes = 60;
+  mo.max_modes = 60;  // the modes up to f_max are picked below
   mo.with_shapes = false;
-  mo.damping = a.lm.damping;
-  if (a.lm.proportional) {
-    // Only the modes up to the band's end count: the linear model's say how many (with a
-    // shaker's armature on it, no fewer than the scene's own), and under proportional
-    // damping a mode's ratio does not depend on how many are solved for beside it.
-    const double w_max = 2 * M_PI * r.f_max;
-    const auto below = std::count_if(a.lm.proportional->omega2.begin(), a.lm.proportional->omega2.end(),
-                                     [&](double w2) { return w2 <= w_max * w_max; });
-    mo.max_modes = static_cast<int>(std::min<long>(60, below + 2));
-  }
+  mo.damping = requestDamping(r, a.scene);
   const ModesReport rep = runModes(a.scene, mo);
   const DiscretizationEstimate d = estimateDiscretization(a.scene, rep);
   if (!d.available) {
@@ -280,14 +272,15 @@ LinearStudy runLinearStudy(const ArticleScene& scene_in, const LinearRequest& re
   LinearStudy a;
   ArticleScene scene = scene_in;
   if (r.target_error > 0) chooseForTarget(r, scene, a);
-  a.lm = build(r, scene, false);
   a.scene = std::move(scene);
   // The mesh's share (the scene solved again, and on coarser meshes: serial work) on
-  // another core beside the reduction, the test geometry and the responses, which stay
-  // on this thread (its progress stages); each writes its own fields.
+  // another core from the start, beside the linear model's construction (the other core
+  // idles there otherwise), the reduction, the test geometry and the responses, which
+  // stay on this thread (its progress stages); each writes its own fields.
   tbb::task_group mesh;
   mesh.run([&] { estimateMeshError(r, a); });
   try {
+    a.lm = build(r, a.scene, false);
     {
       // The full model's responses are prepared (one Hessenberg reduction of the
       // first-order matrix) on another core while the reduction runs.
