@@ -23,7 +23,6 @@ class Builder {
   explicit Builder(std::string& storage) : s_(storage) {}
 
   void u32(std::uint32_t v) { bytes(&v, 4); }
-  void i32(std::int32_t v) { bytes(&v, 4); }
   void bytes(const void* p, std::size_t n) { s_.append(static_cast<const char*>(p), n); }
   void pad() { s_.append(padded(total()) - total(), '\0'); }
 
@@ -65,9 +64,12 @@ class Builder {
     this->name(name);
     return at;
   }
-  void endMatrix(std::size_t at) {
-    const auto n = static_cast<std::uint32_t>(total() - open_.back());
+  void endMatrix(std::size_t at, const std::string& name) {
+    const std::uint64_t bytes = total() - open_.back();
     open_.pop_back();
+    if (!mat5Fits(bytes))  // a cell of strings past 4 GB (a matrix is refused before it is built)
+      throw OutputError(".mat variable " + name + ": " + std::to_string(bytes) + " bytes, more than MAT 5's 4 GB a variable");
+    const auto n = static_cast<std::uint32_t>(bytes);
     std::memcpy(&s_[at], &n, 4);
   }
   std::uint64_t total() const { return external_bytes_ + s_.size(); }
@@ -147,14 +149,14 @@ void writeString(Builder& b, const std::string& s) {
     checkDimension("string", static_cast<long>(s.size()));
     const std::size_t at = b.beginMatrix(mxCHAR_CLASS, 1, static_cast<std::int32_t>(s.size()), "");
     b.element(miUTF8, s.data(), s.size());
-    b.endMatrix(at);
+    b.endMatrix(at, "string");
     return;
   }
   const std::u16string u = utf16(s);
   checkDimension("string", static_cast<long>(u.size()));
   const std::size_t at = b.beginMatrix(mxCHAR_CLASS, 1, static_cast<std::int32_t>(u.size()), "");
   b.element(miUTF16, u.data(), 2 * u.size());
-  b.endMatrix(at);
+  b.endMatrix(at, "string");
 }
 
 }  // namespace
@@ -183,13 +185,13 @@ std::vector<std::string_view> mat5Pieces(const MatContents& c, std::string& stor
   for (const auto& [name, m] : c.matrices) {
     const std::size_t at = b.beginMatrix(mxDOUBLE_CLASS, static_cast<std::int32_t>(m.rows()), static_cast<std::int32_t>(m.cols()), name);
     b.element(miDOUBLE, m.data(), 8 * static_cast<std::uint64_t>(m.size()), true);
-    b.endMatrix(at);
+    b.endMatrix(at, name);
   }
   for (const auto& [name, items] : c.strings) {
     checkDimension(name, static_cast<long>(items.size()));
     const std::size_t at = b.beginMatrix(mxCELL_CLASS, static_cast<std::int32_t>(items.size()), 1, name);
     for (const std::string& s : items) writeString(b, s);
-    b.endMatrix(at);
+    b.endMatrix(at, name);
   }
   return b.pieces();
 }
