@@ -89,6 +89,4 @@ void writeStateSpaceMats(const std::string& reduced_path, const StateSpace& redu
   writeForms(full_path, std::move(full_standard), full);
 }
 
-
-
 }  // namespace mmv
