@@ -62,6 +62,10 @@ struct SimulationSpec {
   /// frequencies grow as n^2, about 1.4 times the modes, where twice the modes cost four
   /// times the frequency to resolve).
   int modal_refinement = 0;
+  /// A verification companion's run (sim/time/verify.hpp): only the time and the scored
+  /// points are recorded (no torques, sensors, states, energies or Simpson midpoints),
+  /// which is all its comparison reads. Never from a scene file.
+  bool scored_only = false;
 };
 
 /// A sensor recorded in time runs (facility/sensors.hpp for the models).

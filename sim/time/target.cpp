@@ -174,6 +174,10 @@ class TargetRunner {
       SimulationSpec tight = spec;
       tight.accuracy /= 10;
       tight.absolute_tolerance /= 10;
+      // The first companion is recorded in full: a scene's own run that misses narrowly
+      // hands it the run. Later ones record the scored points only (all the comparison
+      // reads) and are run again in full on the rare second miss.
+      tight.scored_only = refinement > 0;
       SimulationResult companion = run(tight, refinement + 1, "verification: the scene's own model, 10x tighter");
       TargetAttempt a = measure({spec.integrator, spec.accuracy, 0, 0}, result, companion, false, result.fidelity);
       if (a.met) {
@@ -185,7 +189,9 @@ class TargetRunner {
       }
       if (a.estimated_error_m > kOwnLadderReach * o_.target_m || tight.accuracy / 10 < kTightestAccuracy * (1 - 1e-9)) break;
       spec = tight;
-      result = std::move(companion);
+      spec.scored_only = false;
+      result = tight.scored_only ? run(spec, refinement + 1, "run: the scene's own model, recorded in full")
+                                 : std::move(companion);
     }
     return false;
   }

@@ -9,7 +9,10 @@
 ///     tolerance, links in modal coordinates with their modes up to twice the frequency (as `--verify`).
 ///     Met as below, it is the choice, for 2-4x its own cost. Missed by less than 10x E,
 ///     the companion (paid for) becomes the run against one 10x tighter again, twice at
-///     most; else (or when the run fails) the steps below follow.
+///     most; else (or when the run fails) the steps below follow. The first companion is
+///     recorded in full (a narrow miss hands it the run); later ones, which seldom
+///     become the run, record the scored points only (SimulationSpec::scored_only) and
+///     are run again in full when they do.
 ///  1. Pilot: a trade (sim/time/trade.hpp) on the run's first `window` seconds (20 %
 ///     of the run, at least 1 s, at most the run), every integrator from its loosest
 ///     tolerance, runs that pass the cheapest one within the target cut short, then

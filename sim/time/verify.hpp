@@ -47,7 +47,9 @@ constexpr double kMotionFloor = 1e-6;
 /// if both are 0 (one point scored that does not move).
 double defaultErrorTarget(double amplitude_m, double scale_m);
 
-/// Runs `rerun` at the run's tolerances / 10 and fills the estimate. `target_m` <= 0:
+/// Runs `rerun` at the run's tolerances / 10, recording the scored points only
+/// (SimulationSpec::scored_only: the same steps, so the same positions as a full
+/// record, without its outputs' cost), and fills the estimate. `target_m` <= 0:
 /// defaultErrorTarget of the companion's amplitude and scale. Throws what `rerun` throws.
 RunVerification verifyRun(const SimulationResult& run, const SimulationSpec& spec,
                           const std::function<SimulationResult(const SimulationSpec&)>& rerun, double target_m);

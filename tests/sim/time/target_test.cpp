@@ -240,6 +240,52 @@ TradeProblem stubProblem(const std::string& name, double duration) {
   return p;
 }
 
+// The scene's own ladder (a stub whose error falls as the square root of the tolerance):
+// the run at 1e-6 and its companion at 1e-7 miss, the companion becomes the run; its own
+// companion (1e-8) is recorded on the scored points only, and when 1e-7 misses too it is
+// run again in full to become the run, held to 1e-9 (scored only), which it meets. The
+// first companion is recorded in full: it becomes the run without a second run.
+TEST(TargetError, TheOwnLaddersLaterCompanionsRecordOnlyTheScoredPoints) {
+  TradeProblem p = stubProblem("ladder stub", 2.0);
+  p.default_integrator = "cvode_bdf";
+  p.simulation.accuracy = 1e-6;
+  std::vector<std::pair<double, bool>> calls;  // (accuracy, scored only) of each own run
+  p.run_default = [&calls](const SimulationSpec& s, int, const std::function<void(double)>&) {
+    calls.push_back({s.accuracy, s.scored_only});
+    SimulationResult r;
+    r.integrator = s.integrator;
+    r.accuracy = s.accuracy;
+    r.record.columns = {"time_s", "p_x_m"};
+    r.record.scored = {{"p", {1}}};
+    for (int k = 0; k <= 20; ++k) r.record.rows.push_back({0.1 * k, 0.1 * k + 0.2924 * std::sqrt(s.accuracy)});
+    r.wall_seconds = s.scored_only ? 0.1 : 1.0;
+    return r;
+  };
+  p.run = [](const SimulationSpec&, const RunFidelity&, const std::function<void(double)>&) -> SimulationResult {
+    ADD_FAILURE() << "the pilot ran";
+    return {};
+  };
+  TargetOptions o;
+  o.target_m = 1e-4;
+  const TargetOutcome t = runToTarget(p, o);
+  std::string tried;
+  for (const auto& a : t.attempts) tried += strfAttempt(a);
+  ASSERT_EQ(t.attempts.size(), 3u) << tried;
+  EXPECT_FALSE(t.attempts[0].met);
+  EXPECT_FALSE(t.attempts[1].met);
+  EXPECT_TRUE(t.attempts[2].met);
+  EXPECT_DOUBLE_EQ(t.attempts[2].accuracy, 1e-8);
+  EXPECT_EQ(t.attempts[2].run_seconds, 1.0);  // the full run, not the scored-only companion
+  EXPECT_EQ(t.attempts[2].companion_seconds, 0.1);
+  const std::vector<std::pair<double, bool>> expected = {{1e-6, false}, {1e-7, false}, {1e-8, true}, {1e-8, false}, {1e-9, true}};
+  ASSERT_EQ(calls.size(), expected.size());
+  for (std::size_t k = 0; k < calls.size(); ++k) {
+    EXPECT_NEAR(calls[k].first, expected[k].first, 1e-9 * expected[k].first) << k;
+    EXPECT_EQ(calls[k].second, expected[k].second) << k;
+  }
+  EXPECT_EQ(t.result.accuracy, t.attempts[2].accuracy);
+}
+
 // A scene's own run whose integrator gives up (a stub: its run_default throws) does not
 // end the contract: the attempt is recorded as failed and the pilot finds a run.
 TEST(TargetError, WhenTheScenesOwnRunFailsThePilotFollows) {

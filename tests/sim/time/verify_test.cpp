@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "support/scenes.hpp"
@@ -120,6 +121,41 @@ TEST(Verify, ARunAtRestMeetsItsDefaultTargetWithoutAWarning) {
   EXPECT_NEAR(verified(moved, moved.simulation.accuracy).verification.target_m, r.verification.target_m,
               1e-6 * r.verification.target_m);
   EXPECT_GT(std::abs(r.max_energy_balance_error_j), 0.0);
+}
+
+// A companion records the time and the scored points only (SimulationSpec::scored_only):
+// the same steps, so the same positions, bit for bit, as the run recorded in full, for
+// Simbody's integrators, SUNDIALS' through the plugin, and links in modal coordinates
+// (the default fidelity of the template on the table, a station scored beside the tips).
+TEST(Verify, ACompanionRecordsTheScoredPointsAsTheFullRunDoes) {
+  ArticleScene table = testing::templateOnTheTable(8, 0.4);
+  table.simulation.score_points = {"link2@0.5"};
+  const std::vector<std::pair<ArticleScene, std::string>> runs = {
+      {pendulumFrom170Degrees("cpodes"), "cpodes"},         {pendulumFrom170Degrees("rk_merson"), "rk_merson"},
+      {pendulumFrom170Degrees("cvode_bdf"), "cvode_bdf"},   {pendulumFrom170Degrees("arkode_erk"), "arkode_erk"},
+      {table, "the template on the table, modal links"}};
+  for (const auto& [scene, what] : runs) {
+    ArticleScene s = scene;
+    s.simulation.duration = std::min(s.simulation.duration, 2.0);
+    const SimulationResult full = simulate(s);
+    s.simulation.scored_only = true;
+    const SimulationResult scored = simulate(s);
+    ASSERT_EQ(scored.record.rows.size(), full.record.rows.size()) << what;
+    ASSERT_EQ(scored.record.scored.size(), full.record.scored.size()) << what;
+    EXPECT_LT(scored.record.columns.size(), full.record.columns.size()) << what;
+    EXPECT_TRUE(scored.states.rows.empty()) << what;
+    EXPECT_EQ(scored.steps, full.steps) << what;
+    if (what.rfind("the template", 0) == 0) EXPECT_FALSE(full.modal_links.empty());
+    for (std::size_t i = 0; i < full.record.scored.size(); ++i) {
+      const auto& [name, cf] = full.record.scored[i];
+      const auto& [name_s, cs] = scored.record.scored[i];
+      ASSERT_EQ(name_s, name) << what;
+      for (std::size_t k = 0; k < full.record.rows.size(); ++k)
+        for (std::size_t c = 0; c < cf.size(); ++c)
+          ASSERT_EQ(scored.record.rows[k][cs[c]], full.record.rows[k][cf[c]]) << what << " " << name << " row " << k;
+    }
+    EXPECT_EQ(scoredDistance(full.record, scored.record, {}).distance_m, 0.0) << what;
+  }
 }
 
 }  // namespace
