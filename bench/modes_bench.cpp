@@ -4,6 +4,10 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
 #include "sim/model/article_builder.hpp"
 #include "sim/modes/system_modes.hpp"
 #include "sim/hamsas/hamsas_modes.hpp"
@@ -136,6 +140,28 @@ void BM_ModesPipelineFirst12(benchmark::State& st) {
 }
 BENCHMARK(BM_ModesPipelineFirst12)->Apply(treeArgs);
 
+// Issue 37's growth exponent of the modes pipeline from 256 to 4096 DOF (64 and 1024
+// segments per link): each iteration times both, and the counter `exponent` is
+// log(t_4096 / t_256) / log(16) from the fastest of each (the target is 1.2 at most).
+void BM_ModesPipelineGrowth(benchmark::State& st) {
+  const mmv::ArticleScene coarse = sceneWith(64), fine = sceneWith(1024);
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](const mmv::ArticleScene& s) {
+    const auto t0 = Clock::now();
+    benchmark::DoNotOptimize(mmv::solveSceneModes(s, {}, 12));
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  };
+  double t_coarse = 1e300, t_fine = 1e300;
+  for (auto _ : st) {
+    t_coarse = std::min(t_coarse, seconds(coarse));
+    t_fine = std::min(t_fine, seconds(fine));
+  }
+  st.counters["t_256_dof_ms"] = 1e3 * t_coarse;
+  st.counters["t_4096_dof_ms"] = 1e3 * t_fine;
+  st.counters["exponent"] = std::log(t_fine / t_coarse) / std::log(16.0);
+}
+BENCHMARK(BM_ModesPipelineGrowth)->Iterations(5)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 // Linear models and synthesis (issues 3 and 5), at the default 16 segments unless the
@@ -196,8 +222,6 @@ void BM_HamsasTransmissibilityPoint(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(mmv::spatialTransmissibility(h.model, h.lin, 2 * M_PI * 10.0));
 }
 BENCHMARK(BM_HamsasTransmissibilityPoint)->Unit(benchmark::kMicrosecond);
-
-#include <cmath>
 
 namespace {
 
