@@ -35,6 +35,9 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 #   Fidelity.TheDefaultRunMeetsItsStatedAccuracy...   a segment-model reference run
 #                               (the modal default and its verification:
 #                               TargetError.TheScenesOwnModalRunIsVerifiedAgainstTwiceItsModes)
+#   Cli.EveryShippedScenesDefaultRun...   every shipped scene's whole default run and its
+#                               companion (9 s plain, HAM-SAS's RK-Merson at 1e-8 most of it;
+#                               --verify and its companions: Verify.*, Cli.SimulateVerify*)
 #   figures.layout_of_every_shipped_figure, golden.figures_reproduced, readback.csv_*,
 #   readback.vtk_*              every verb's files judged by their content (layout, bytes,
 #                               Python's, Octave's and VTK's readers): the same numbers under
@@ -47,6 +50,6 @@ LONG+='|^Cli\.TargetErrorMeetsItsTargetOnTheSpatialArticle$|^Update\.NoisyFreque
 LONG+='|^Extremes\.LongFreeRunEnergyDrift$|^SegmentsForTarget\.TheDefaultArticleMeetsAFineReference$'
 LONG+='|^readback\.report_page_in_a_browser$|^Fidelity\.TheDefaultRunMeetsItsStatedAccuracyAndVerifySeesTheModesLeftOut$'
 LONG+='|^figures\.layout_of_every_shipped_figure$|^golden\.figures_reproduced$|^readback\.csv_files_read_as_written$'
-LONG+='|^readback\.vtk_files_read_by_vtk$'
+LONG+='|^readback\.vtk_files_read_by_vtk$|^Cli\.EveryShippedScenesDefaultRunStatesItsFidelityAndMeetsItsAccuracy$'
 ctest --test-dir build-san --output-on-failure -j"$(nproc)" --timeout 900 -E "$LONG"
 

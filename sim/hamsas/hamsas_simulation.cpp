@@ -9,6 +9,7 @@
 #include "sim/time/run_integrator.hpp"
 #include "sim/hamsas/spatial_linear.hpp"
 #include "sim/core/errors.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv {
 namespace {
@@ -186,6 +187,10 @@ SimulationResult simulate(const HamsasScene& scene, const std::function<void(dou
   SimulationResult r;
   r.integrator = spec.integrator;
   r.accuracy = spec.accuracy;
+  r.fidelity = strf("the base on the ground's program and %zu rigid bodies, each free in space, joined by the "
+                    "isolator's springs (the effective spherical joints as %.3g N/m springs, spherical_joints: stiff): "
+                    "the authors' MBDyn model, nothing to discretize",
+                    model.bodies.size() - 1, hs.joint_stiffness);
   auto& cols = r.record.columns;
   const char* axes[] = {"x", "y", "z"};
   cols = {"time_s", std::string("ground_") + axes[scene.ground_axis] + "_m"};

@@ -137,7 +137,7 @@ struct SimulationResult {
   std::vector<ModalLinkSummary> modal_links;
   /// With `shaker.program`: columns shaker_force_n, shaker_stroke_m, shaker_stinger_force_n.
   std::optional<ShakerRunSummary> shaker;
-  /// Article runs: what the run integrated and why (sim/time/fidelity.hpp).
+  /// What the run integrated and why (article runs: sim/time/fidelity.hpp; HAM-SAS: its one model).
   std::string fidelity;
 };
 

@@ -35,6 +35,28 @@ TEST_F(Cli, SimulateVerifyReportsAnErrorEstimate) {
   EXPECT_NE(run("simulate " + scene + " --verify-target -1").code, 0);
 }
 
+// Issue 37: the default run of every shipped scene (no option but --verify) states what
+// it integrates (`fidelity`: the model and why) and meets its stated accuracy: the
+// companion's estimate, with its safety factor, within the default target (1 % of the
+// scored motion), and the energy balance without a warning.
+TEST_F(Cli, EveryShippedScenesDefaultRunStatesItsFidelityAndMeetsItsAccuracy) {
+  int count = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(MMVLAB_SOURCE_DIR) / "scenes")) {
+    if (e.path().extension() != ".yaml") continue;
+    ++count;
+    const Result r = run("simulate " + e.path().string() + " --verify --json");
+    ASSERT_EQ(r.code, 0) << e.path() << ": " << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(j.contains("fidelity")) << e.path();
+    EXPECT_GT(j["fidelity"].get<std::string>().size(), 20u) << e.path();
+    const auto& v = j.at("verification");
+    EXPECT_TRUE(v["met"].get<bool>()) << e.path();
+    EXPECT_LE(2 * v["estimated_error_m"].get<double>(), v["target_m"].get<double>()) << e.path();
+    for (const auto& w : j["warnings"]) EXPECT_EQ(w.get<std::string>().find("energy balance"), std::string::npos) << e.path() << ": " << w;
+  }
+  EXPECT_EQ(count, 7);
+}
+
 // --target-error: the slew's chosen run, its verification and the pilot in the JSON and
 // the text; an --out directory records the chosen run; what it cannot do is refused.
 TEST_F(Cli, SimulateTargetErrorChoosesRunsAndVerifies) {
