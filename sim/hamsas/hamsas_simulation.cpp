@@ -140,6 +140,14 @@ std::vector<double> bodyMotionRow(const SimTK::SimbodyMatterSubsystem& matter, c
   return q;
 }
 
+/// What a HAM-SAS run integrates (its `Model:` line): the one model it has.
+std::string runFidelity(const SpatialSpec& model, const HamsasSpec& hs) {
+  return strf("the base on the ground's program and %zu rigid bodies, each free in space, joined by the isolator's "
+              "springs (the effective spherical joints as %.3g N/m springs, spherical_joints: stiff): the authors' MBDyn "
+              "model, nothing to discretize",
+              model.bodies.size() - 1, hs.joint_stiffness);
+}
+
 }  // namespace
 
 SimulationResult simulate(const HamsasScene& scene, const std::function<void(double)>& progress) {
@@ -187,10 +195,7 @@ SimulationResult simulate(const HamsasScene& scene, const std::function<void(dou
   SimulationResult r;
   r.integrator = spec.integrator;
   r.accuracy = spec.accuracy;
-  r.fidelity = strf("the base on the ground's program and %zu rigid bodies, each free in space, joined by the "
-                    "isolator's springs (the effective spherical joints as %.3g N/m springs, spherical_joints: stiff): "
-                    "the authors' MBDyn model, nothing to discretize",
-                    model.bodies.size() - 1, hs.joint_stiffness);
+  r.fidelity = runFidelity(model, hs);
   auto& cols = r.record.columns;
   const char* axes[] = {"x", "y", "z"};
   cols = {"time_s", std::string("ground_") + axes[scene.ground_axis] + "_m"};
