@@ -20,15 +20,6 @@ double ModalSolution::frequencyHz(int i) const {
 
 namespace {
 
-/// The dense solver's eigenvalues carry an absolute error of about eps * max|omega^2|:
-/// on a fine mesh (omega^2 spanning 1e8 and more) that is a visible relative error in
-/// the lowest modes, the ones users read (a 0.6457 Hz pendulum mode printed as 0.6462 Hz
-/// at 512 segments). When that error could exceed 1e-9 of a low mode, the lowest modes
-/// are refined by two steps of shifted subspace iteration, X <- (K - s M)^-1 M X, each
-/// followed by a Rayleigh-Ritz solution on span(X): the eigenvalues then come from
-/// Rayleigh quotients, accurate to round-off relative to the mode itself. The shift s
-/// lies below every eigenvalue, so K - s M is positive definite (unstable and rigid
-/// modes included).
 /// Keeps the shapes after the first k (refined) M-orthogonal to them and mass-normalised:
 /// r <- r - Xk a with a = (M Xk)^T r, products with the k refined columns, then each
 /// column's M-norm from one product M R (a product with M per column cost more than the
@@ -42,6 +33,16 @@ void keepRestOrthogonal(const Eigen::MatrixXd& M, ModalSolution& sol, Eigen::Ind
   for (Eigen::Index j = 0; j < rest.cols(); ++j) rest.col(j) /= std::sqrt(rest.col(j).dot(MR.col(j)));
 }
 
+/// The dense solver's eigenvalues carry an absolute error of about eps * max|omega^2|:
+/// on a fine mesh (omega^2 spanning 1e8 and more) that is a visible relative error in
+/// the lowest modes, the ones users read (a 0.6457 Hz pendulum mode printed as 0.6462 Hz
+/// at 512 segments). When that error could exceed 1e-9 of a low mode, the lowest modes
+/// are refined by two steps of shifted subspace iteration, X <- (K - s M)^-1 M X, each
+/// followed by a Rayleigh-Ritz solution on span(X): the eigenvalues then come from
+/// Rayleigh quotients, accurate to round-off relative to the mode itself. The shift s
+/// lies below every eigenvalue, so K - s M is positive definite (unstable and rigid
+/// modes included). A model of 36 DOF or fewer takes its lowest third from shift-invert
+/// Lanczos instead (a subspace of every mode would change nothing).
 void refineLowestModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, ModalSolution& sol) {
   const Eigen::Index n = sol.omega2.size();
   const double big = sol.omega2.cwiseAbs().maxCoeff();

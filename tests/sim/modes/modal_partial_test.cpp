@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <variant>
 #include <random>
 
 #include "sim/model/article_builder.hpp"
@@ -193,9 +195,11 @@ TEST(ModalPartial, ModesOfALargeTreeUseTheOperatorsAndEqualTheDensePath) {
 // runModes itself solves densely (below kPartialModesMinDofs), so the partial paths are
 // called here by name.
 TEST(ModalPartial, EveryShippedArticleSceneAndTheDemoAt512MatchTheDensePath) {
-  std::vector<std::pair<std::string, int>> cases;
-  for (const char* name : {"mmv", "mmv-closed", "mmv-slew", "mmv-table", "spin-up-beam", "two-link-demo"})
-    cases.push_back({name, 16});
+  std::vector<std::pair<std::string, int>> cases;  // every article scene in scenes/ (HAM-SAS has no links)
+  for (const auto& e : std::filesystem::directory_iterator(MMVLAB_SOURCE_DIR "/scenes"))
+    if (e.path().extension() == ".yaml" && std::holds_alternative<ArticleScene>(loadSceneFile(e.path().string())))
+      cases.push_back({e.path().stem().string(), 16});
+  ASSERT_EQ(cases.size(), 6u);
   cases.push_back({"two-link-demo", 512});
   int tree_cases = 0, closed_cases = 0;
   for (const auto& [name, segments] : cases) {
