@@ -22,7 +22,18 @@ SymmetricEigen symmetricEigenByQr(const Eigen::MatrixXd& S) {
   return {es.eigenvalues(), es.eigenvectors(), false};
 }
 
-SymmetricEigen symmetricEigen(const Eigen::MatrixXd& S) {
+int mrrrTridiagonal(Eigen::VectorXd& d, Eigen::VectorXd& e, Eigen::VectorXd& values, Eigen::MatrixXd& Z, int& m) {
+  const int ni = static_cast<int>(d.size()), lwork = 18 * ni, liwork = 10 * ni;
+  int info = 0, tryrac = 1, il = 1, iu = ni;
+  const double vl = 0, vu = 0;
+  std::vector<int> isuppz(2 * static_cast<std::size_t>(ni)), iwork(static_cast<std::size_t>(liwork));
+  std::vector<double> work(static_cast<std::size_t>(lwork));
+  dstemr_("V", "A", &ni, d.data(), e.data(), &vl, &vu, &il, &iu, &m, values.data(), Z.data(), &ni, &ni,
+          isuppz.data(), &tryrac, work.data(), &lwork, iwork.data(), &liwork, &info, 1, 1);
+  return info;
+}
+
+SymmetricEigen symmetricEigen(const Eigen::MatrixXd& S, TridiagonalEigenSolver tridiagonal) {
   const Eigen::Index n = S.rows();
   if (n < kMrrrMinSize || n > 1 << 20) return symmetricEigenByQr(S);
   if (!S.allFinite()) throw NumericalError("symmetric eigen solution: the matrix has non-finite entries");
@@ -34,19 +45,15 @@ SymmetricEigen symmetricEigen(const Eigen::MatrixXd& S) {
   Eigen::VectorXd d = tri.diagonal(), e(n);
   e.head(n - 1) = tri.subDiagonal();
   e[n - 1] = 0;
-  const int ni = static_cast<int>(n), lwork = 18 * ni, liwork = 10 * ni;
-  int m = 0, info = 0, tryrac = 1, il = 1, iu = ni;
-  const double vl = 0, vu = 0;
   SymmetricEigen r;
   r.values.resize(n);
   Eigen::MatrixXd Z(n, n);
-  std::vector<int> isuppz(2 * static_cast<std::size_t>(n)), iwork(static_cast<std::size_t>(liwork));
-  std::vector<double> work(static_cast<std::size_t>(lwork));
-  dstemr_("V", "A", &ni, d.data(), e.data(), &vl, &vu, &il, &iu, &m, r.values.data(), Z.data(), &ni, &ni,
-          isuppz.data(), &tryrac, work.data(), &lwork, iwork.data(), &liwork, &info, 1, 1);
-  // dstemr can fail where many eigenvalues are nearly equal (info 22, from its dlarrv,
-  // on 60 of them within 2e-12 beside 60 equal ones): Eigen's QR then, as for any failure.
-  if (info != 0 || m != ni || !r.values.allFinite() || !Z.allFinite()) return symmetricEigenByQr(S);
+  int m = 0;
+  const int info = tridiagonal(d, e, r.values, Z, m);
+  // dstemr can fail where many eigenvalues are nearly equal (info 22, from its dlarrv;
+  // whether it does depends on the machine and the LAPACK): Eigen's QR then, as for any
+  // failure or non-finite result.
+  if (info != 0 || m != n || !r.values.allFinite() || !Z.allFinite()) return symmetricEigenByQr(S);
   r.vectors = tri.matrixQ() * Z;
   r.values *= scale;
   r.by_mrrr = true;

@@ -20,9 +20,21 @@ struct SymmetricEigen {
 /// From this size on, MRRR; below it, Eigen's implicit QR.
 inline constexpr long kMrrrMinSize = 192;
 
+/// Every eigenpair of the symmetric tridiagonal matrix (diagonal d, sub-diagonal e with a
+/// trailing slot; both overwritten) into `values` (ascending) and the columns of `Z`
+/// (n x n, allocated by the caller). Returns LAPACK's info: 0 on success. `m` is the
+/// number of eigenpairs found.
+using TridiagonalEigenSolver = int (*)(Eigen::VectorXd& d, Eigen::VectorXd& e, Eigen::VectorXd& values,
+                                       Eigen::MatrixXd& Z, int& m);
+
+/// LAPACK's dstemr (MRRR), the production tridiagonal solver.
+int mrrrTridiagonal(Eigen::VectorXd& d, Eigen::VectorXd& e, Eigen::VectorXd& values, Eigen::MatrixXd& Z, int& m);
+
 /// All eigenpairs of the symmetric S (its lower triangle is read). Throws NumericalError
-/// if neither method converges or S has non-finite entries.
-SymmetricEigen symmetricEigen(const Eigen::MatrixXd& S);
+/// if neither method converges or S has non-finite entries. `tridiagonal` is the MRRR
+/// step: the tests pass one that fails (as dstemr may on clustered spectra, depending on
+/// the machine) to check the fallback by construction rather than by a crafted matrix.
+SymmetricEigen symmetricEigen(const Eigen::MatrixXd& S, TridiagonalEigenSolver tridiagonal = &mrrrTridiagonal);
 
 /// The same by Eigen's SelfAdjointEigenSolver alone (the reference the tests compare with).
 SymmetricEigen symmetricEigenByQr(const Eigen::MatrixXd& S);
