@@ -13,11 +13,12 @@ run="${cmds[0]}"; test="${cmds[1]}"
 [[ "$run" == *"--target mmvlab"* ]] || fail "README command 1 must build only the executable: $run"
 [[ "$test" == "./setup.sh --test && "* ]] || fail "README command 2 must start with './setup.sh --test && ': $test"
 [[ "$test" != *sanitized* ]] || fail "README command 2 must run the plain suite only: $test"
-grep -qxF "$test && tests/sanitized.sh" "$root/.ci/run" || fail ".ci/run does not run README command 2 verbatim followed by tests/sanitized.sh"
+grep -qxF "$test && tests/second_arithmetic.sh build && tests/sanitized.sh" "$root/.ci/run" ||
+  fail ".ci/run does not run README command 2 verbatim followed by tests/second_arithmetic.sh build and tests/sanitized.sh"
 
 # setup.sh without --test names no test-only package; with --test it adds them.
 plain=$(sed -n '/^build_pkgs=(/,/^)/p' "$root/setup.sh")
-for p in libgtest-dev libbenchmark-dev octave python3-pytest python3-vtk9 chromium; do
+for p in libgtest-dev libbenchmark-dev octave python3-pytest python3-vtk9 chromium python3-pip python3-venv; do
   ! grep -qw -- "$p" <<<"$plain" || fail "setup.sh installs $p without --test"
   sed -n '/^test_pkgs=(/,/^)/p' "$root/setup.sh" | grep -qw -- "$p" || fail "setup.sh --test does not install $p"
 done
