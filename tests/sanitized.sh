@@ -22,6 +22,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # Left to the plain suite: tests that run at length code the sanitized suite runs in
 # shorter tests, which took 580 of its 1900 CPU-seconds (CI has 45 minutes on 2 cores):
 #   cluster.*                   the sweep through slurmctld and srun (SweepRunner.*, Cli.Sweep*)
+#   install.*                   the same binaries copied to a prefix (the plain suite installs them)
 #   Progress.EveryVerbNames...  every verb made to run long (each verb runs in Cli.*)
 #   Signals.*, Cli.*Killed*     kills at timed moments (the handlers run in
 #                               Cli.RenderLeavesNoTemporaryBehind, OutputDirTest.ASignal*)
@@ -44,7 +45,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 #                               the sanitizers; the verbs and their figures run under them in
 #                               Cli.*, Consistency.* and Faults.* (309 of the suite's 2911
 #                               CPU-seconds with these, 2026-11-29)
-LONG='^cluster\.|^Progress\.EveryVerbNamesItsStageWhenItRunsLong$|^Signals\.|^Cli\.KilledRunsLeaveNoPartialFile$'
+LONG='^cluster\.|^install\.|^Progress\.EveryVerbNamesItsStageWhenItRunsLong$|^Signals\.|^Cli\.KilledRunsLeaveNoPartialFile$'
 LONG+='|^Cli\.SweepKilledAtRandomMomentsResumesToTheSameFile$|^Cli\.FrfTargetErrorBoundsTheFrf$'
 LONG+='|^Cli\.TargetErrorMeetsItsTargetOnTheSpatialArticle$|^Update\.NoisyFrequenciesLeaveTheTruthInsideTheIntervals$'
 LONG+='|^Extremes\.LongFreeRunEnergyDrift$|^SegmentsForTarget\.TheDefaultArticleMeetsAFineReference$'

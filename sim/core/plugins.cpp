@@ -9,17 +9,28 @@
 namespace mmv {
 
 std::vector<std::string> pluginCandidates(const std::string& file, const std::string& built_path) {
+  namespace fs = std::filesystem;
   std::vector<std::string> candidates;
+  const auto add = [&](const fs::path& p) {
+    const std::string s = p.lexically_normal().string();
+    for (const auto& c : candidates)
+      if (c == s) return;
+    candidates.push_back(s);
+  };
+  // The shared object (or executable) holding this function: the Python module finds the
+  // plugins installed beside it in its package.
+  Dl_info info{};
+  if (::dladdr(reinterpret_cast<const void*>(&pluginCandidates), &info) != 0 && info.dli_fname && info.dli_fname[0] == '/')
+    add(fs::path(info.dli_fname).parent_path() / file);
   char exe[PATH_MAX];
   const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
   if (n > 0) {
     exe[n] = '\0';
-    candidates.push_back((std::filesystem::path(exe).parent_path() / file).string());
+    const fs::path dir = fs::path(exe).parent_path();
+    add(dir / file);
+    add(dir.parent_path() / "lib" / "mmvlab" / file);
   }
-  // The build's own path is often the one beside the executable: tried (and named) once.
-  if (!built_path.empty() && (candidates.empty() || std::filesystem::path(built_path).lexically_normal() !=
-                                                         std::filesystem::path(candidates[0]).lexically_normal()))
-    candidates.push_back(built_path);
+  if (!built_path.empty()) add(built_path);
   return candidates;
 }
 

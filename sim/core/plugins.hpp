@@ -1,6 +1,9 @@
 #pragma once
-/// Where mmvlab's plugins (the SUNDIALS steppers, the figures) are looked for: next to
-/// the running executable first, then where the build put them.
+/// Where mmvlab's plugins (the SUNDIALS steppers, the figures, the .mat reader, the
+/// video writer) are looked for: beside the object this code is linked into (the
+/// executable, or the Python module's _mmvlab*.so in its package), beside the running
+/// executable, in the installed layout's PREFIX/lib/mmvlab/ (the executable in
+/// PREFIX/bin, `cmake --install`), then where the build put them.
 
 #include <functional>
 #include <string>
@@ -8,7 +11,7 @@
 
 namespace mmv {
 
-/// `file` beside /proc/self/exe, then `built_path` (when not empty).
+/// `file` in those places, in that order, each once (`built_path` last, when not empty).
 std::vector<std::string> pluginCandidates(const std::string& file, const std::string& built_path);
 
 /// The table of the first of pluginCandidates(file, built_path) that loads, exports

@@ -21,7 +21,7 @@ double shareOf(const std::vector<PartShare>& shares, const std::string& part) {
 
 }  // namespace
 
-const char* mmvlabVersion() { return "0.1.0"; }
+const char* mmvlabVersion() { return MMVLAB_VERSION; }  // CMakeLists.txt's project(VERSION)
 
 namespace {
 
