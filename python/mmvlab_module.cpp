@@ -29,6 +29,8 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/io/hamsas_report.hpp"
+#include "sim/io/report.hpp"
+#include "sim/scene/scene.hpp"
 #include "sim/core/text.hpp"
 #include "study_runner.hpp"
 
@@ -408,7 +410,31 @@ PYBIND11_MODULE(_mmvlab, m) {
       .def_property_readonly("name", [](const PyScene& s) { return mmv::sceneName(s.scene); })
       .def_property_readonly("source", [](const PyScene& s) { return mmv::sceneSource(s.scene); })
       .def_property_readonly("kind", &sceneKind)
-      .def_readonly("warnings", &PyScene::warnings);
+      .def_readonly("warnings", &PyScene::warnings)
+      // Picklable (a process pool takes scenes): the scene's own text, its source (relative
+      // program files resolve against it, so the receiving process must see the same
+      // files), and the patches it was read with, read again by the same reader.
+      .def(py::pickle(
+          [](const PyScene& s) {
+            const std::string& source = std::visit([](const auto& x) -> const std::string& { return x.positions.file; }, s.scene);
+            return py::make_tuple(1, mmv::sceneText(s.scene), source, s.request.path, s.request.sets,
+                                  s.request.segments ? py::object(py::int_(*s.request.segments)) : py::object(py::none()),
+                                  s.request.no_gravity, s.request.strict, s.warnings);
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 9 || t[0].cast<int>() != 1) throw std::runtime_error("mmvlab.Scene: not a pickled scene of this version");
+            mmv::app::SceneRequest r;
+            r.path = t[3].cast<std::string>();
+            r.sets = t[4].cast<std::vector<std::string>>();
+            if (!t[5].is_none()) r.segments = t[5].cast<int>();
+            r.no_gravity = t[6].cast<bool>();
+            r.strict = t[7].cast<bool>();
+            r.front = Front::Python;
+            mmv::Scene scene = mmv::parseScene(t[1].cast<std::string>(), t[2].cast<std::string>(), r.sets,
+                                               mmv::app::sceneFlags(r.segments, r.no_gravity, r.front));
+            return PyScene{std::move(scene), t[8].cast<std::vector<std::string>>(), std::move(r)};
+          }));
+  m.attr("__version__") = mmv::mmvlabVersion();
   m.def("load_scene", &loadScene, py::arg("path"), py::arg("sets"), py::arg("segments"), py::arg("no_gravity"),
         py::arg("strict"));
   m.def("modes", &modes, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("points"), py::arg("strains"),

@@ -26,6 +26,7 @@ import warnings as _warnings
 import numpy as _np
 
 from . import _mmvlab
+from ._mmvlab import __version__  # noqa: F401  (CMakeLists.txt's project VERSION)
 from ._mmvlab import (Error, InternalError, NumericalError, OutputError, Scene,  # noqa: F401
                       SceneError, SceneFileError, UnavailableError, UsageError)
 
@@ -66,9 +67,29 @@ def _yaml_value(key, value):
 
 
 def load_scene(path=None, *, set=None, segments=0, no_gravity=False, strict=False):
-    """Reads a scene file (None: the embedded default MMV scene) with `set`, a dict of
-    scene keys to values (`{"links.link2.E": 45e9}`, as `--set` on the command line),
-    checked with their position. `segments`, `no_gravity`, `strict` as the CLI's options."""
+    """Reads a scene file (or the embedded default MMV scene), checked as `mmvlab` checks it.
+
+    Parameters
+    ----------
+    path : str, os.PathLike or None
+        The scene file (YAML, docs/scene-format.md); None: the embedded MMV article.
+    set : dict or None
+        Scene keys to values, e.g. ``{"links.link2.E": 45e9}`` (as `--set KEY=VALUE`;
+        SI units as in the file: Pa, m, kg), each checked with its position.
+    segments : int
+        Every flexible link's segments (0: the scene's own), as `--segments`.
+    no_gravity : bool
+        Gravity set to zero, as `--no-gravity`.
+    strict : bool
+        A value no lab article has (a likely unit slip) raises SceneError instead of
+        warning (`--strict`).
+
+    Returns
+    -------
+    Scene
+        Picklable; `name`, `source`, `kind` ("article" or "hamsas"), `warnings`.
+        Raises SceneError (file:line:col), SceneFileError or UsageError.
+    """
     sets = []
     for key, value in (set or {}).items():
         if not isinstance(key, str):
@@ -216,10 +237,20 @@ class PlacementResult(Result):
 
 
 def fields(name):
-    """A result's field list, described once in the library (sim/io/fields.hpp): a list of
-    dicts {key, unit, csv (a CSV column), number (numbers, else text), meaning}. The JSON
-    records, the CSV columns and the results' `table()` of that kind are all made from it.
-    `field_list_names()` gives the names ("correlation_pairs", "trade_runs", ...)."""
+    """A result's field list, described once in the library (sim/io/fields.hpp).
+
+    Parameters
+    ----------
+    name : str
+        A field list's name (`field_list_names()`: "correlation_pairs", "trade_runs", ...).
+
+    Returns
+    -------
+    list of dict
+        {key, unit, csv (a CSV column), number (numbers, else text), meaning}: the JSON
+        records, the CSV columns and the results' `table()` of that kind are all made
+        from it.
+    """
     return _mmvlab.fields(str(name))
 
 
@@ -268,8 +299,38 @@ def mode_fields():
 
 def modes(scene, *, segments=0, modes=12, points=(), strains=(), error_estimate=True, target_error=0.0, time_budget=0.0,
           progress=None):
-    """`mmvlab modes`: the system modes about the held equilibrium (0 modes: all); `strains`:
-    "A:B" spans whose modal strain each mode reports (`--strain`, JSON `modes[].strains`)."""
+    """`mmvlab modes`: the static equilibrium with the torquers holding and the system modes about it.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    modes : int
+        Modes reported (0: all).
+    points : sequence of str
+        Points or stations whose mode shapes are reported (`link1.tip`, `link1@0.75`,
+        `link2@1.2m`), as `--points`.
+    strains : str or sequence of str
+        "A:B" spans (stations) whose modal bending strain each mode reports (`--strain`).
+    error_estimate : bool
+        Estimate each frequency's discretization error (False: `--no-error-estimate`).
+    target_error : float
+        Relative frequency error (0 < E < 1; 0: off): the fewest segments holding every
+        mode shown within it (`--target-error`).
+    time_budget : float
+        Wall seconds `target_error` may take choosing the segments (0: no limit).
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    ModesResult
+        `frequencies_hz` (Hz), `modal_masses_kg`, `shapes` (m or rad per unit modal
+        coordinate), `.json` (modes --json), `.text`, `table()`.
+    """
     if isinstance(strains, str):
         strains = [strains]
     json_text, text, csv, warns = _mmvlab.modes(scene, int(segments), int(modes), list(points), [str(s) for s in strains],
@@ -336,18 +397,93 @@ def _linear(scene, rom, segments, inputs, outputs, f_min_hz, f_max_hz, points, r
 
 def frf(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
         residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, vary=None, progress=None):
-    """`mmvlab frf`: responses between `inputs` (table_x, torque:JOINT, force:POINT:AXIS, ...)
-    and `outputs` (POINT:AXIS[:disp|vel|acc|acc_abs]), full and reduced, from f_min_hz
-    (0.01) to f_max_hz (100). `damping`: every mode's ratio (None: the scene's, else 0.01).
-    On a HAM-SAS scene: its transmissibility (a `TransmissibilityResult`), optionally over
-    `vary`, one parameter's values ("KEY=V1,V2" or (key, values))."""
+    """`mmvlab frf`: frequency responses of the full and a reduced linear model.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    inputs : sequence of str
+        table_x, table_y, torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz, shaker
+        (empty: the command's defaults).
+    outputs : sequence of str
+        POINT:AXIS[:disp|vel|acc|acc_abs], strain:A:B[:in|out] (empty: the defaults).
+    f_min_hz, f_max_hz : float or None
+        The grid's lowest and highest frequency, Hz (None: 0.01 and 100).
+    points : int
+        Log-spaced frequencies, 2 .. 100000.
+    rom_modes : int
+        Modes kept in the reduced model, 1 .. 10000.
+    band_hz : (float, float) or None
+        Keep the modes in this band (Hz) instead of `rom_modes`.
+    residualize : bool
+        Static residualization of the modes left out (False: plain truncation).
+    damping : float or None
+        Every mode's damping ratio, 0 .. 1 (None: the scene's damping, else 0.01).
+    rom_target : float
+        The reduced model's relative error that the modes-needed search aims at.
+    target_error : float
+        Relative error of the responses' discretization (0: off): the fewest segments meeting it.
+    time_budget : float
+        Wall seconds `target_error` may take (0: no limit).
+    vary : str, (str, sequence of float) or None
+        HAM-SAS only: one parameter over values, "KEY=V1,V2" or (key, values).
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    FrfResult, or TransmissibilityResult on a HAM-SAS scene
+        `frequencies_hz`, complex `H` and `H_reduced` [frequency, output, input] in
+        output units per input unit, the reduced model's E, A, B, C, D.
+    """
     return _linear(scene, False, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize,
                    damping, rom_target, target_error, time_budget, progress, vary)
 
 
 def rom(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
         residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, progress=None):
-    """`mmvlab rom`: the reduced-order state-space model (and the full one) for control design."""
+    """`mmvlab rom`: the reduced-order state-space model (and the full one) for control design.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    inputs, outputs : sequence of str
+        As `frf`'s (empty: the command's defaults).
+    f_min_hz, f_max_hz : float or None
+        The band the reduced model's error is measured over, Hz (None: 0.01 and 100).
+    points : int
+        Log-spaced frequencies of that grid, 2 .. 100000.
+    rom_modes : int
+        Modes kept, 1 .. 10000.
+    band_hz : (float, float) or None
+        Keep the modes in this band (Hz) instead of `rom_modes`.
+    residualize : bool
+        Static residualization of the modes left out (every DC gain exact).
+    damping : float or None
+        Every mode's damping ratio, 0 .. 1 (None: the scene's damping, else 0.01).
+    rom_target : float
+        The relative error the modes-needed search aims at.
+    target_error : float
+        Relative discretization error of the responses (0: off).
+    time_budget : float
+        Wall seconds `target_error` may take (0: no limit).
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    RomResult
+        `reduced` and `full`: E, A, B, C, D (numpy, SI units, with input and output
+        names and units), as rom.mat and full.mat hold them.
+    """
     return _linear(scene, True, segments, inputs, outputs, f_min_hz, f_max_hz, points, rom_modes, band_hz, residualize,
                    damping, rom_target, target_error, time_budget, progress)
 
@@ -385,9 +521,47 @@ def _optional(x):
 def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tolerance=None, duration=None,
              sample_rate=None, verify=False, verify_target=None, target_error=None, points=(), time_budget=None,
              progress=None):
-    """`mmvlab simulate`: the scene's time run (slews, table programs, free motion), or with
-    `target_error` (m) the cheapest run that meets it, chosen, run and verified. A None
-    option keeps the scene's setting; a given one is checked (0 s is not "the scene's")."""
+    """`mmvlab simulate`: the scene's time run (slews, table programs, free motion).
+
+    A None option keeps the scene's setting; a given one is checked (0 s is not "the scene's").
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    integrator : str or None
+        rk_merson, rk3, cpodes, cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ...
+    accuracy : float or None
+        The integrator's relative accuracy, in (0, 1).
+    absolute_tolerance : float or None
+        Its absolute tolerance (state units).
+    duration : float or None
+        Seconds of run time.
+    sample_rate : float or None
+        History rows per second.
+    verify : bool
+        Estimate the run's error by a run 10x tighter (`--verify`).
+    verify_target : float or None
+        The error (m) `verify` judges against.
+    target_error : float or None
+        Tip error (m): the cheapest integrator, tolerance, segments and modes that
+        meet it, chosen, run and verified.
+    points : sequence of str
+        Tips or stations the error is scored at (default: every tip).
+    time_budget : float or None
+        Wall seconds the `target_error` search may take.
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    SimulateResult
+        `history[column]` (numpy, units in the column names, e.g. `time_s`), `states`,
+        `.json` (summary.json).
+    """
     d = _mmvlab.simulate(scene, int(segments), "" if integrator is None else str(integrator), _optional(accuracy),
                          _optional(absolute_tolerance), _optional(duration), _optional(sample_rate), bool(verify),
                          _optional(verify_target), _optional(target_error), [str(p) for p in points],
@@ -435,10 +609,35 @@ class ConfigSweepResult(Result):
 
 def sweep_config(scene, grids, *, segments=0, modes=6, component_modes=4, bc="clamped-free", tip_mass="torquer",
                  method="assumed", progress=None):
-    """`mmvlab sweep-config`: the scene's system modes over a grid of joint angles, tracked
-    by shape, and the component synthesis (`method`: assumed or craig-bampton, with `bc`,
-    `tip_mass`, `component_modes` per link) judged at each point. `grids`: one or two
-    "JOINT:FROM_DEG:TO_DEG:STEP_DEG" (a string alone is one grid)."""
+    """`mmvlab sweep-config`: system modes over a grid of joint angles, tracked by shape.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    grids : str or sequence of str
+        One or two "JOINT:FROM_DEG:TO_DEG:STEP_DEG" (degrees).
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    modes : int
+        Modes tracked, 1 .. 100.
+    component_modes : int
+        Modes per link in the synthesis, 1 .. 200.
+    bc : str
+        Component boundary condition (assumed modes).
+    tip_mass : str
+        Component tip mass: torquer, outboard, none.
+    method : str
+        Synthesis: assumed or craig-bampton.
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    ConfigSweepResult
+        `points`, `table[column]`, `columns`, `csv`.
+    """
     if isinstance(grids, str):
         grids = [grids]
     json_text, text, csv, warns = _mmvlab.sweep_config(scene, int(segments), [str(g) for g in grids], int(modes),
@@ -465,9 +664,47 @@ class TradeResult(Result):
 
 def trade(scene, *, segments=0, integrators=(), accuracies=(), segment_ladder=(), modes_ladder=(), modes_accuracies=(),
           points=(), duration=None, target_error=None, all=False, run_budget=None, time_budget=None, progress=None):
-    """`mmvlab trade`: each integrator at each accuracy, the segments ladder and the modes
-    ladder against a reference run, error against cost. Empty lists and None keep the
-    command's defaults (the scene's duration, 1 % of the scored motion as the target)."""
+    """`mmvlab trade`: integrators, accuracies, meshes and modal links: error against cost.
+
+    Empty lists and None keep the command's defaults.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    integrators : sequence of str
+        Integrator names (default: rk_merson, rk3, cpodes, cvode_bdf, cvode_adams, arkode_erk, arkode_dirk).
+    accuracies : sequence of float
+        Relative accuracies tried (default 1e-3 .. 1e-7).
+    segment_ladder : sequence of int
+        Segments per link tried (default 2, 4, 8).
+    modes_ladder : sequence of int
+        Modes per link of the modal runs tried.
+    modes_accuracies : sequence of float
+        The modal runs' accuracies (CVODE BDF; default 1e-5, 1e-6, 1e-7).
+    points : sequence of str
+        Tips or stations the error is scored at (default: every tip).
+    duration : float or None
+        Seconds of run time (None: the scene's).
+    target_error : float or None
+        The error target, m (None: 1 % of the scored motion).
+    all : bool
+        Run every combination, also those that cannot be the cheapest within the target.
+    run_budget : float or None
+        Wall seconds a run may take; a run over it is cut and listed.
+    time_budget : float or None
+        Wall seconds for the whole trade.
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    TradeResult
+        `runs`, `table[column]`, `target_error_m` (m), `cheapest`.
+    """
     def opt(x):
         return None if x is None else float(x)
     json_text, text, csv, warns = _mmvlab.trade(scene, int(segments), [str(i) for i in integrators],
@@ -494,11 +731,30 @@ class SweepResult(Result):
 
 
 def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):
-    """`mmvlab sweep SPEC --out OUT`: the design sweep of a spec file (docs/planning.md),
-    its points on `jobs` threads (0: every core), resumable in `out` (journal.csv; a
-    journal of another sweep there is refused unless `restart`), `shard=(i, n)` for the
-    i-th of n slices. Writes journal.csv and sweep.csv into `out` (sweep.json and the
-    figures are the command line's); returns the table."""
+    """`mmvlab sweep SPEC --out OUT`: the design sweep of a spec file (docs/planning.md).
+
+    Parameters
+    ----------
+    spec : str or os.PathLike
+        The sweep spec (YAML).
+    out : str or os.PathLike
+        The results folder: journal.csv and sweep.csv (a rerun resumes the journal).
+    jobs : int
+        Threads, 0 .. 1024 (0: every core).
+    shard : (int, int) or None
+        (i, n): the i-th of n deterministic slices, into OUT/shard-i-of-n.
+    restart : bool
+        Start over in a folder that holds another sweep's journal (else refused).
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    SweepResult
+        `table[column]` (numpy; text columns as lists), `fields[column]` ({key, unit,
+        number, meaning}), `csv`, `csv_path`.
+    """
     if shard is not None and len(shard) != 2:
         raise UsageError(f"shard: expected (i, n) (got {shard!r})")
     json_text, text, table = _mmvlab.sweep(str(spec), str(out), int(jobs),
@@ -552,16 +808,59 @@ class CompareResult(Result):
 
 
 def converge(scene, *, max_segments=64, modes=6, progress=None):
-    """`mmvlab converge`: each mode's frequency at 1, 2, 4, ... segments per link up to
-    `max_segments`, with its Richardson extrapolation and observed order."""
+    """`mmvlab converge`: each mode's frequency at 1, 2, 4, ... segments per link.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    max_segments : int
+        The finest mesh, 1 .. 1024 (a power of two is reached).
+    modes : int
+        Modes tabulated, 1 .. 1000.
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    ConvergeResult
+        `segments`, `frequencies_hz[mesh, mode]` (Hz), `richardson_hz`, `.csv`.
+    """
     json_text, text, csv = _mmvlab.converge(scene, int(max_segments), int(modes), progress)
     return ConvergeResult(json_text, text, csv)
 
 
 def compare(scene, *, segments=0, bc="clamped-free", tip_mass="torquer", component_modes=4, modes=10, topologies=(),
             progress=None):
-    """`mmvlab compare`: component modes (each link alone, boundary condition `bc`, tip
-    mass rule or "MASS_KG[,INERTIA]") against the system modes, synthesis errors and MAC."""
+    """`mmvlab compare`: component modes of each link alone against the system modes.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    bc : str
+        Component boundary condition: clamped-free, pinned-free, free-free,
+        clamped-pinned, pinned-pinned.
+    tip_mass : str
+        torquer, outboard, none, or "MASS_KG[,INERTIA_KG_M2]".
+    component_modes : int
+        Modes per link in the synthesis, 1 .. 200.
+    modes : int
+        System modes compared, 1 .. 500.
+    topologies : sequence of str
+        "open", "closed" or both (empty: the scene's).
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    CompareResult
+        `.json` (compare --json), `.markdown`, `table()`, `synthesis_table()`.
+    """
     json_text, text, markdown, warns = _mmvlab.compare(scene, int(segments), str(bc), str(tip_mass), int(component_modes),
                                                        int(modes), [str(t) for t in topologies], progress)
     _warn(warns)
@@ -569,7 +868,27 @@ def compare(scene, *, segments=0, bc="clamped-free", tip_mass="torquer", compone
 
 
 def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):
-    """`mmvlab check`: the feasibility report (torquers, gimbal, table, modes, sensors, lab)."""
+    """`mmvlab check`: the feasibility report (torquers, gimbal, table, modes, sensors, lab).
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    margin : float
+        Required margin, 0 .. 99 %: a smaller one is a warning.
+    band_hz : (float, float)
+        The modes of interest, Hz.
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    CheckResult
+        `.json` (check.json: demand, capacity, margin and verdict per line), `.markdown`, `table()`.
+    """
     if len(band_hz) != 2:
         raise UsageError(f"band_hz: expected (f_min_hz, f_max_hz) (got {band_hz!r})")
     json_text, text, markdown, warns = _mmvlab.check(scene, int(segments), float(margin), float(band_hz[0]),
@@ -581,18 +900,53 @@ def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None)
 def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, count=8, triaxial=False, method="efi",
                   tam=(), sensor_mass=0.0, min_separation=0.0, keep_out=(), channels=0, keep_scene_sensors=False,
                   instrument="", iterate_loaded=False, strain_span=0.0, progress=None):
-    """`mmvlab place-sensors`: sensor stations for the target modes (`modes`, 1-based,
-    or every vibration mode below `below_hz`, 50 Hz by default); `tam`: test-analysis
-    models to build on them ("guyan", "irs", "serep" or "all"); `sensor_mass`: each sensor's
-    mass, kg, welded on and the modes solved again (placement.json's `mass_loading`);
-    `min_separation` (m), `keep_out` ("LINK:FROM_M:TO_M" strings), `channels` (a budget
-    that sets `count`; a triaxial block takes 3), `keep_scene_sensors` (the scene's own
-    accelerometers kept, counted in `count`): the constraints of `--min-separation`,
-    `--keep-out`, `--channels` and `--keep-scene-sensors`; `instrument` (the scene's
-    `instruments:` entry placed: its mass, range and resolution, `--instrument`) and
-    `iterate_loaded` (placed again on the loaded model until the set carries itself,
-    `--iterate-loaded`); `strain_span` (m: strain gauges or piezo films of that length
-    instead of accelerometers, `--strain-span`)."""
+    """`mmvlab place-sensors`: sensor stations that tell the target modes apart.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    modes : sequence of int
+        Target modes, 1-based (empty: every vibration mode below `below_hz`).
+    below_hz : float or None
+        Target every vibration mode below this frequency, Hz (None: 50).
+    spacing : float
+        Distance between candidate stations along each link, 0.001 .. 100 m.
+    count : int
+        Sensors to place (triaxial: blocks), 1 .. 100000.
+    triaxial : bool
+        Place triaxial blocks instead of uniaxial sensors.
+    method : str
+        efi (effective independence), mke (modal kinetic energy) or dpr (driving-point residue).
+    tam : str or sequence of str
+        Test-analysis models to build: "guyan", "irs", "serep" or "all".
+    sensor_mass : float
+        Each sensor's mass, kg, welded on and the modes solved again.
+    min_separation : float
+        Least distance between two sensors, m.
+    keep_out : str or sequence of str
+        "LINK:FROM_M:TO_M" stretches no sensor may go on.
+    channels : int
+        A channel budget that sets `count` (a triaxial block takes 3; 0: none).
+    keep_scene_sensors : bool
+        The scene's own accelerometers kept, counted in `count`.
+    instrument : str
+        The scene's `instruments:` entry placed (its mass, range, resolution).
+    iterate_loaded : bool
+        Place again on the model carrying the sensors until the set carries itself.
+    strain_span : float
+        Strain gauges or films this long, m, instead of accelerometers (0: accelerometers).
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    PlacementResult
+        `.json` (placement.json), `exciter_table()`, `tam_table()`.
+    """
     if isinstance(keep_out, str):
         keep_out = [keep_out]
     if isinstance(tam, str):
@@ -634,11 +988,39 @@ class CorrelateResult(Result):
 
 def correlate(scene, measured, *, segments=0, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,
               max_frequency_error=0.3, damping=None, tam="", progress=None):
-    """`mmvlab correlate`: the measured UFF file `measured` (nodes, mode shapes, FRFs)
-    against the scene's model. `pairs`: "NODE=POINT" strings or a dict {node: point};
-    `damping`: every mode's ratio (None: the scene's damping, else 0.01); `tam`:
-    "FILE[:METHOD]", a tam.mat of place_sensors' --out for the measured modes' test
-    orthogonality (`.json["test_orthogonality"]`)."""
+    """`mmvlab correlate`: a measured UFF file against the scene's model.
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    measured : str or os.PathLike
+        The measured UFF file (datasets 15/2411 nodes, 55 modes, 58 functions, 164 units).
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    pairs : sequence of str or dict
+        "NODE=POINT" strings or {node: point}: nodes paired by name.
+    pair_distance : float
+        A node farther than this from the article is not paired, 1e-6 .. 100 m.
+    modes : int
+        Model modes compared, 1 .. 500.
+    mac_threshold : float
+        A test and a model mode pair only at or above this MAC, 0 .. 1.
+    max_frequency_error : float
+        A pair's largest relative frequency error (0.3: +-30 %).
+    damping : float or None
+        Every mode's damping ratio, 0 .. 1 (None: the scene's damping, else 0.01).
+    tam : str
+        "FILE[:METHOD]": a tam.mat of place_sensors' output for the test orthogonality.
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    CorrelateResult
+        `mac[test, model]`, `pairs`, `frequency_errors`, `frac`, `table()`.
+    """
     if isinstance(pairs, dict):
         pairs = [f"{node}={point}" for node, point in pairs.items()]
     json_text, text, mac_csv, warns = _mmvlab.correlate(scene, int(segments), str(measured), [str(p) for p in pairs],
@@ -680,11 +1062,40 @@ class UpdateResult(Result):
 def update(scene, params, *, measured=None, segments=0, frequency_sigma=0.01, mac_sigma=0.05, mac=True,
            regularization=0.0, max_iterations=30, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,
            max_frequency_error=0.3, progress=None):
-    """`mmvlab update`: the scene keys `params` ("KEY" or "KEY:LO:HI" strings, or a dict
-    {key: (lo, hi)} or {key: None}) adjusted so that the model reproduces the measured UFF
-    file `measured` (an article; None for HAM-SAS: the slides' measured features).
-    `mac=False` fits the frequencies only. Pairing options as `correlate`'s
-    (docs/updating.md)."""
+    """`mmvlab update`: scene keys fitted to measured modes (docs/updating.md).
+
+    Parameters
+    ----------
+    scene : Scene
+        From `load_scene`.
+    params : sequence of str or dict
+        "KEY" or "KEY:LO:HI" strings, or {key: (lo, hi)} / {key: None}: the numbers of the
+        scene file to fit, within bounds (the key's unit, SI).
+    measured : str, os.PathLike or None
+        An article's measured UFF file; None for HAM-SAS (the slides' measured features).
+    segments : int
+        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    frequency_sigma : float
+        A frequency error's stated uncertainty, relative, 1e-6 .. 1.
+    mac_sigma : float
+        (1 - MAC)'s stated uncertainty, 1e-6 .. 1.
+    mac : bool
+        Fit (1 - MAC) too (False: the frequencies only, `--no-mac`).
+    regularization : float
+        Pull toward the nominal, residuals per 100 % change, 0 .. 1e6.
+    max_iterations : int
+        Levenberg-Marquardt iterations, 1 .. 1000.
+    pairs, pair_distance, modes, mac_threshold, max_frequency_error
+        As `correlate`'s.
+    progress : callable or None
+        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
+        study advances (None: silent).
+
+    Returns
+    -------
+    UpdateResult
+        `parameters`, `updated` ({key: value}), `pairs`, `updated_scene` (text), `converged`.
+    """
     if isinstance(params, dict):
         params = [k if b is None else f"{k}:{b[0]!r}:{b[1]!r}" for k, b in params.items()]
     if isinstance(pairs, dict):

@@ -545,3 +545,28 @@ def test_arrays_own_their_data_and_outlive_the_result():
         mmvlab.modes(mmvlab.load_scene(), segments=4, modes=5)
     np.testing.assert_array_equal(f, expected)
     assert np.isfinite(shapes[:, :, 0]).all()
+
+
+def test_version_is_the_cli_and_cmake_version():
+    import re
+    cmake = open(os.path.join(SOURCE, "CMakeLists.txt")).read()
+    version = re.search(r"project\(mmvlab VERSION ([0-9.]+)", cmake).group(1)
+    assert mmvlab.__version__ == version
+    r = subprocess.run([MMVLAB, "--version"], capture_output=True, text=True)
+    assert r.stdout.strip() == "mmvlab " + version
+
+
+def test_scenes_and_results_pickle_and_give_the_same_study():
+    import pickle
+    scene = mmvlab.load_scene(os.path.join(SOURCE, "scenes", "mmv-table.yaml"), set={"links.link2.length": 1.5},
+                              segments=4, no_gravity=True)
+    again = pickle.loads(pickle.dumps(scene))
+    assert (again.name, again.source, again.kind, again.warnings) == (scene.name, scene.source, scene.kind,
+                                                                      scene.warnings)
+    a, b = mmvlab.modes(scene, modes=4), mmvlab.modes(again, modes=4)
+    assert without_timing(a.json) == without_timing(b.json)  # the same patches, segments and gravity
+    r = pickle.loads(pickle.dumps(a))
+    assert (r.frequencies_hz == a.frequencies_hz).all() and r.json == a.json and r.text == a.text
+    # A pickle of another format is refused by name, not read as a scene.
+    with pytest.raises(Exception, match="not a pickled scene"):
+        mmvlab.Scene.__new__(mmvlab.Scene).__setstate__((2, "", "", "", [], None, False, False, []))
