@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "sim/core/files.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
 #include "sim/app/design_sweep_points.hpp"
@@ -56,6 +57,45 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
                 spec.source.c_str(), context.points.size(), j["design"].get<std::string>().c_str(), run.shard.text().c_str(),
                 s.result.computed, s.result.reused, s.result.seconds, run.jobs) +
            "wrote " + s.result.csv + "\n";
+  return s;
+}
+
+DesignSweepStudy mergeDesignSweepStudy(const std::vector<std::string>& dirs, const std::string& csv_path) {
+  DesignSweepStudy s;
+  s.result.table = mergeSweepTables(dirs);
+  s.result.csv = csv_path;
+  nlohmann::ordered_json merged;
+  long computed = 0, reused = 0;
+  double seconds = 0;
+  int jobs = 1;
+  for (const std::string& d : dirs) {
+    const std::string path = (std::filesystem::path(d) / "sweep.json").string();
+    std::string text, why;
+    if (!readInputFile(path, 64L << 20, text, why))
+      throw OutputError(path + ": " + why + " (a shard writes it when its last point is done: run the shard again to finish it)");
+    nlohmann::ordered_json j = nlohmann::ordered_json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (j.is_discarded() || !j.is_object() || !j.contains("fingerprint") || !j["fingerprint"].is_string() ||
+        !j.contains("computed") || !j["computed"].is_number_integer() || !j.contains("reused") ||
+        !j["reused"].is_number_integer() || !j.contains("seconds") || !j["seconds"].is_number() || !j.contains("jobs") ||
+        !j["jobs"].is_number_integer())
+      throw OutputError(path + ": not a shard's sweep.json (it lacks fingerprint, computed, reused, seconds or jobs)");
+    if (j["fingerprint"].get<std::string>() != readSweepJournal(d).fingerprint)
+      throw OutputError(path + ": belongs to another sweep than " + d + "/journal.csv (run the shard again)");
+    computed += j["computed"].get<long>();
+    reused += j["reused"].get<long>();
+    seconds += j["seconds"].get<double>();
+    jobs = std::max(jobs, j["jobs"].get<int>());
+    if (merged.is_null()) merged = std::move(j);
+  }
+  merged["shard"] = Shard{}.text();
+  merged["jobs"] = jobs;
+  merged["computed"] = computed;
+  merged["reused"] = reused;
+  merged["seconds"] = seconds;
+  merged["csv"] = csv_path;
+  merged["merged_from"] = dirs;
+  s.json = std::move(merged);
+  s.jobs = jobs;
   return s;
 }
 

@@ -35,4 +35,12 @@ struct DesignSweepStudy {
 
 DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& request);
 
+/// `sweep-merge`: the shards' journals joined into the table an unsharded run writes
+/// (mergeSweepTables' checks) and its sweep.json, made from the shards' own: the same
+/// keys as a local sweep's, with shard "1/1", computed, reused and seconds summed over
+/// the shards, jobs their largest, `csv` = `csv_path`, and `merged_from` the shard
+/// directories. A shard without a sweep.json (it never finished), or whose sweep.json
+/// names another sweep than its journal, is refused by name (OutputError).
+DesignSweepStudy mergeDesignSweepStudy(const std::vector<std::string>& shard_dirs, const std::string& csv_path);
+
 }  // namespace mmv::app

@@ -71,22 +71,25 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
 int runSweepMergeCommand(const SweepMergeArgs& args) {
   return guarded([&] {
     OutputDir out(args.out, args.force);
-    const std::string table = mergeSweepTables(args.shards);
-    out.write("sweep.csv", table);
-    writeDesignSweepPlots(table, out);
+    const std::string csv_target = (std::filesystem::path(args.out) / "sweep.csv").string();
+    const app::DesignSweepStudy s = app::mergeDesignSweepStudy(args.shards, csv_target);
+    out.write("sweep.csv", s.result.table);
+    out.write("sweep.json", s.json.dump(2) + "\n");
+    writeDesignSweepPlots(s.result.table, out);
     std::vector<std::string> figures = out.targets();
     const std::string csv = figures.front();
-    figures.erase(figures.begin());
+    figures.erase(figures.begin(), figures.begin() + 2);  // sweep.csv, sweep.json
     out.commit();
     if (args.json) {
       nlohmann::ordered_json j;
       j["command"] = "sweep-merge";
       j["shards"] = args.shards;
       j["csv"] = csv;
+      j["summary"] = (std::filesystem::path(csv).parent_path() / "sweep.json").string();
       j["figures"] = figures;
       emitResult(j);
     } else {
-      emitResult("merged " + std::to_string(args.shards.size()) + " shards into " + csv + "\n");
+      emitResult("merged " + std::to_string(args.shards.size()) + " shards into " + csv + " and sweep.json\n");
     }
     return kOk;
   });

@@ -173,6 +173,23 @@ TEST_F(Cli, SweepFiguresAndTheParetoFrontComeFromTheCsvAlsoWhenMerged) {
                 (dir_ / "sh" / "shard-2-of-2").string()).code, 0);
   EXPECT_EQ(slurp(dir_ / "merged" / "sweep.csv"), slurp(dir_ / "whole" / "sweep.csv"));
   EXPECT_EQ(slurp(dir_ / "merged" / "pareto.csv"), slurp(dir_ / "whole" / "pareto.csv"));
+  // The merge writes the summary a local sweep writes: the same keys in the same order,
+  // the same sweep (fingerprint, columns, fields), every point computed once.
+  const nlohmann::json whole = nlohmann::json::parse(slurp(dir_ / "whole" / "sweep.json"));
+  const nlohmann::json merged = nlohmann::json::parse(slurp(dir_ / "merged" / "sweep.json"));
+  for (const auto& [key, value] : whole.items()) EXPECT_TRUE(merged.contains(key)) << key;
+  for (const char* same : {"spec", "scene", "fingerprint", "design", "points", "shard", "columns", "fields"})
+    EXPECT_EQ(merged[same], whole[same]) << same;
+  EXPECT_EQ(merged["computed"].get<long>() + merged["reused"].get<long>(), whole["points"].get<long>());
+  EXPECT_EQ(merged["csv"], (dir_ / "merged" / "sweep.csv").string());
+  EXPECT_EQ(merged["merged_from"].size(), 2u);
+  // A shard that never wrote its summary is refused by name, and nothing is written.
+  fs::remove(dir_ / "sh" / "shard-2-of-2" / "sweep.json");
+  const Result r = run("sweep-merge --out " + (dir_ / "merged2").string() + " " + (dir_ / "sh" / "shard-1-of-2").string() +
+                       " " + (dir_ / "sh" / "shard-2-of-2").string());
+  EXPECT_EQ(r.code, 73) << r.err;
+  EXPECT_NE(r.err.find("shard-2-of-2/sweep.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "merged2"));
 }
 
 TEST_F(Cli, BadSweepSpecsExit65AndWriteNothing) {
