@@ -292,7 +292,15 @@ py::tuple sweep(const std::string& spec, const std::string& out, int jobs, std::
   if (shard) r.shard.index = shard->first, r.shard.count = shard->second;
   r.restart = restart;
   r.front = Front::Python;
-  const mmv::app::DesignSweepStudy s = released(progress, [&] { return mmv::app::runDesignSweepStudy(r); });
+  const mmv::app::DesignSweepStudy s = released(progress, [&] {
+    mmv::app::DesignSweepStudy study = mmv::app::runDesignSweepStudy(r);
+    mmv::OutputDir dir(study.dir, /*force=*/true);  // sweep.csv and sweep.json, as the CLI commits them
+    dir.replaceOnlyOwnFiles();
+    dir.reportNothing();
+    mmv::app::stageDesignSweepOutputs(study, dir);
+    dir.commit();
+    return study;
+  });
   return py::make_tuple(s.json.dump(), s.text, s.result.table);
 }
 

@@ -738,7 +738,9 @@ def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):
     spec : str or os.PathLike
         The sweep spec (YAML).
     out : str or os.PathLike
-        The results folder: journal.csv and sweep.csv (a rerun resumes the journal).
+        The results folder: journal.csv, sweep.csv and sweep.json (a rerun resumes the
+        journal). A file there of an output's name that mmvlab did not write is refused
+        before anything is computed.
     jobs : int
         Threads, 0 .. 1024 (0: every core).
     shard : (int, int) or None
@@ -755,6 +757,8 @@ def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):
         `table[column]` (numpy; text columns as lists), `fields[column]` ({key, unit,
         number, meaning}), `csv`, `csv_path`.
     """
+    if out is None or spec is None:
+        raise UsageError(f"{'out' if out is None else 'spec'}: a path is required (got None)")
     if shard is not None and len(shard) != 2:
         raise UsageError(f"shard: expected (i, n) (got {shard!r})")
     json_text, text, table = _mmvlab.sweep(str(spec), str(out), int(jobs),

@@ -570,3 +570,34 @@ def test_scenes_and_results_pickle_and_give_the_same_study():
     # A pickle of another format is refused by name, not read as a scene.
     with pytest.raises(Exception, match="not a pickled scene"):
         mmvlab.Scene.__new__(mmvlab.Scene).__setstate__((2, "", "", "", [], None, False, False, []))
+
+
+def test_a_path_with_a_nul_and_a_sweep_without_a_folder_are_refused(tmp_path, monkeypatch):
+    # "mmv.yaml\0junk" loaded mmv.yaml; sweep(spec, None) wrote into a folder named ./None.
+    with pytest.raises(mmvlab.UsageError, match="NUL"):
+        mmvlab.load_scene(os.path.join(SOURCE, "scenes", "mmv.yaml") + "\0junk")
+    monkeypatch.chdir(tmp_path)
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(f"scene: {SOURCE}/scenes/mmv.yaml\nparameters:\n  - {{key: links.link2.length, values: [1.5]}}\n"
+                    "outputs: [mass]\n")
+    with pytest.raises(mmvlab.UsageError, match="out"):
+        mmvlab.sweep(spec, None)
+    assert not (tmp_path / "None").exists()
+
+
+def test_a_sweep_replaces_only_its_own_files(tmp_path):
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(f"scene: {SOURCE}/scenes/mmv.yaml\nsegments: 4\nparameters:\n"
+                    "  - {key: links.link2.length, values: [1.4, 1.6]}\noutputs: [mass]\n")
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "sweep.csv").write_text("the user's own\n")
+    with pytest.raises(mmvlab.OutputError, match="was not written by mmvlab"):
+        mmvlab.sweep(spec, out, restart=True)
+    assert sorted(p.name for p in out.iterdir()) == ["sweep.csv"]
+    assert (out / "sweep.csv").read_text() == "the user's own\n"
+    (out / "sweep.csv").unlink()
+    first = mmvlab.sweep(spec, out)
+    assert (out / "sweep.json").exists() and (out / ".mmvlab-outputs").exists()
+    again = mmvlab.sweep(spec, out)  # its own files: replaced on the resume
+    assert again.csv == first.csv

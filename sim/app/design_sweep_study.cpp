@@ -32,6 +32,7 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
     progressCount(done, total, "point");
     if (r.progress) r.progress(done, total);
   };
+  checkOwnOutputs(run.dir, designSweepOutputNames(context.header));  // before computing
   DesignSweepStudy s;
   {
     const ProgressStage stage("sweep points");
@@ -58,6 +59,20 @@ DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& r) {
                 s.result.computed, s.result.reused, s.result.seconds, run.jobs) +
            "wrote " + s.result.csv + "\n";
   return s;
+}
+
+std::vector<std::string> designSweepOutputNames(const std::vector<std::string>& header) {
+  std::vector<std::string> names = {"sweep.csv", "sweep.json", "pareto.csv", "pareto.png", "frequency_map.png"};
+  for (std::size_t c = 1; c < header.size() && header[c] != "status"; ++c) {
+    names.push_back("frequencies_vs_" + fileNameSafe(header[c]) + ".png");
+    names.push_back("margins_vs_" + fileNameSafe(header[c]) + ".png");
+  }
+  return names;
+}
+
+void stageDesignSweepOutputs(const DesignSweepStudy& s, OutputDir& out) {
+  out.write("sweep.csv", s.result.table);
+  out.write("sweep.json", s.json.dump(2) + "\n");
 }
 
 DesignSweepStudy mergeDesignSweepStudy(const std::vector<std::string>& dirs, const std::string& csv_path) {

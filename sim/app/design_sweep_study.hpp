@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/app/study.hpp"
+#include "sim/io/output_dir.hpp"
 #include "sim/plan/design_sweep.hpp"
 
 namespace mmv::app {
@@ -33,7 +34,22 @@ struct DesignSweepStudy {
   std::string text;
 };
 
+/// Checks, before computing, that DIR holds no file of the sweep's outputs' names that
+/// mmvlab did not write there (designSweepOutputNames against DIR's outputs record,
+/// sim/io/output_dir.hpp: a user's file, folder or link is refused with or without
+/// --force), runs or resumes the sweep (the journal) and makes sweep.json; the outputs
+/// themselves are the caller's to commit (stageDesignSweepOutputs), so that they are
+/// placed with its figures in one transaction.
 DesignSweepStudy runDesignSweepStudy(const DesignSweepRequest& request);
+
+/// Every name a sweep of these columns may write into its folder: sweep.csv,
+/// sweep.json, pareto.csv, pareto.png, frequency_map.png, and per parameter
+/// frequencies_vs_<key>.png and margins_vs_<key>.png.
+std::vector<std::string> designSweepOutputNames(const std::vector<std::string>& header);
+
+/// sweep.csv and sweep.json staged into `out` (an OutputDir on study.dir that replaces
+/// only its own files).
+void stageDesignSweepOutputs(const DesignSweepStudy& study, OutputDir& out);
 
 /// `sweep-merge`: the shards' journals joined into the table an unsharded run writes
 /// (mergeSweepTables' checks) and its sweep.json, made from the shards' own: the same

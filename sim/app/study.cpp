@@ -30,6 +30,10 @@ SceneFlags sceneFlags(std::optional<int> segments, bool no_gravity, Front front)
 }
 
 LoadedScene loadScene(const SceneRequest& r) {
+  // A path holds no NUL: one would end it at the system call, and another file be read.
+  if (r.path.find('\0') != std::string::npos)
+    throw UsageError(std::string(r.front == Front::Cli ? "SCENE" : "path") + ": the path holds a NUL character (got '" +
+                     printable(r.path.substr(0, r.path.find('\0'))) + "\\0...')");
   const SceneFlags flags = sceneFlags(r.segments, r.no_gravity, r.front);
   std::vector<std::string> notes;
   LoadedScene out{r.path.empty() ? parseScene(defaultSceneYaml(), "<default scene>", r.sets, flags, &notes)

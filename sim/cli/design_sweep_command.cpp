@@ -57,10 +57,12 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
       r.progress = [&progress](long done, long total) { progress.report(double(done), double(total)); };
       return app::runDesignSweepStudy(r);
     }();
-    // sweep.csv is the journal's table (runDesignSweep wrote it whole); the summary and the
-    // figures are one transaction on top of it: all of them replace the last run's, or none.
+    // sweep.csv (the journal's table), the summary and the figures are one transaction:
+    // all of them replace the last run's, or none; only files this sweep's folder's record
+    // lists as mmvlab wrote them are replaced (checked before computing too).
     OutputDir out(s.dir, /*force=*/true);
-    out.write("sweep.json", s.json.dump(2) + "\n");
+    out.replaceOnlyOwnFiles();
+    app::stageDesignSweepOutputs(s, out);
     if (r.shard.count == 1) writeDesignSweepPlots(s.result.table, out);
     out.commit();
     args.json ? emitResult(s.json) : emitResult(s.text);
@@ -71,6 +73,7 @@ int runDesignSweepCommand(const DesignSweepArgs& args) {
 int runSweepMergeCommand(const SweepMergeArgs& args) {
   return guarded([&] {
     OutputDir out(args.out, args.force);
+    out.replaceOnlyOwnFiles();  // --force replaces an earlier merge's files, never a user's
     const std::string csv_target = (std::filesystem::path(args.out) / "sweep.csv").string();
     const app::DesignSweepStudy s = app::mergeDesignSweepStudy(args.shards, csv_target);
     out.write("sweep.csv", s.result.table);

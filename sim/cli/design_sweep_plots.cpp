@@ -55,12 +55,6 @@ SweepTable readTable(const std::string& csv_text) {
   return t;
 }
 
-std::string fileSafe(std::string s) {
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return s;
-}
-
 /// The columns ending in `suffix` (mode<k>_hz; torque_*_margin_pct).
 std::vector<int> columnsLike(const SweepTable& t, const std::string& prefix, const std::string& suffix) {
   std::vector<int> out;
@@ -219,10 +213,10 @@ void writeDesignSweepPlots(const std::string& csv_text, OutputDir& out) {
   for (std::size_t k = 0; k < t.parameters.size(); ++k) {
     const int p = static_cast<int>(k) + 1;
     if (!freqs.empty())
-      againstParameter(t, out.stage("frequencies_vs_" + fileSafe(t.parameters[k]) + ".png"), p, freqs,
+      againstParameter(t, out.stage("frequencies_vs_" + fileNameSafe(t.parameters[k]) + ".png"), p, freqs,
                        "Tracked modes against " + t.parameters[k], "frequency (Hz)");
     if (!margins.empty())
-      againstParameter(t, out.stage("margins_vs_" + fileSafe(t.parameters[k]) + ".png"), p, margins,
+      againstParameter(t, out.stage("margins_vs_" + fileNameSafe(t.parameters[k]) + ".png"), p, margins,
                        "Check margins against " + t.parameters[k], "margin (%)", true);
   }
   pareto(t, out);

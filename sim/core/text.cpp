@@ -173,4 +173,10 @@ std::string csvEscape(const std::string& s) {
   return out;
 }
 
+std::string fileNameSafe(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+
 }  // namespace mmv

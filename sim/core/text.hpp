@@ -53,6 +53,10 @@ std::string csvEscape(const std::string& s);
 std::string unitSlug(const std::string& unit);
 
 /// printf into a std::string.
+/// `s` with every character but letters and digits made '_': a scene key as part of a
+/// file name ("links.link1.length" -> "links_link1_length").
+std::string fileNameSafe(std::string s);
+
 std::string strf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 }  // namespace mmv

@@ -12,9 +12,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 #include "sim/core/files.hpp"
+#include "sim/core/text.hpp"
 
 namespace mmv {
 
@@ -122,7 +126,89 @@ long temporaryOwner(const std::string& name) {
   return end && *end == '-' && end != name.c_str() + prefix.size() ? pid : 0;
 }
 
+/// A file's size and FNV-1a 64-bit hash, as the outputs record lists it; nullopt-like
+/// (false) when it cannot be read.
+bool fingerprintOf(const fs::path& p, std::uintmax_t& size, std::uint64_t& hash) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return false;
+  hash = 1469598103934665603ull;
+  size = 0;
+  char buf[65536];
+  while (in) {
+    in.read(buf, sizeof buf);
+    const std::streamsize n = in.gcount();
+    for (std::streamsize i = 0; i < n; ++i) hash = (hash ^ static_cast<unsigned char>(buf[i])) * 1099511628211ull;
+    size += static_cast<std::uintmax_t>(n);
+  }
+  return in.eof();
+}
+
+struct RecordEntry {
+  std::uintmax_t size = 0;
+  std::uint64_t hash = 0;
+};
+constexpr const char* kRecordMagic = "# mmvlab outputs v1";
+
+/// DIR's outputs record (empty when there is none or it is not one). A name may have two
+/// entries: the file it replaced and the new one, both listed while the files are moved
+/// in (a SIGKILL between two renames leaves each file, old or new, listed as it is).
+using Record = std::multimap<std::string, RecordEntry>;
+Record readRecord(const fs::path& dir) {
+  Record entries;
+  std::string text, why;
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(dir / kOutputsRecord, ec))) return entries;
+  if (!readInputFile((dir / kOutputsRecord).string(), 16L << 20, text, why)) return entries;
+  std::istringstream is(text);
+  std::string line;
+  if (!std::getline(is, line) || line != kRecordMagic) return entries;
+  while (std::getline(is, line)) {
+    std::istringstream ls(line);
+    RecordEntry e;
+    std::string hex, name;
+    if (!(ls >> e.size >> hex) || !std::getline(ls, name) || name.size() < 2 || name[0] != ' ') continue;
+    e.hash = std::strtoull(hex.c_str(), nullptr, 16);
+    entries.emplace(name.substr(1), e);
+  }
+  return entries;
+}
+
+/// Empty when `dir/name` is absent or is, as it is now, a file the record lists; else why not.
+std::string notOwn(const fs::path& dir, const std::string& name, const Record& record) {
+  std::error_code ec;
+  const fs::path t = dir / name;
+  const fs::file_status st = fs::symlink_status(t, ec);
+  if (!fs::exists(st)) return {};
+  if (!fs::is_regular_file(st)) return t.string() + " exists and is not a regular file (a folder, a link or a device)";
+  std::uintmax_t size = 0;
+  std::uint64_t hash = 0;
+  const bool readable = record.count(name) && fingerprintOf(t, size, hash);
+  const auto [from, to] = record.equal_range(name);
+  for (auto it = from; readable && it != to; ++it)
+    if (size == it->second.size && hash == it->second.hash) return {};
+  return t.string() + " exists and was not written by mmvlab here (or was changed since)";
+}
+
+std::string recordLine(const std::string& name, std::uintmax_t size, std::uint64_t hash) {
+  return std::to_string(size) + " " + strf("%016llx", static_cast<unsigned long long>(hash)) + " " + name + "\n";
+}
+
 }  // namespace
+
+void checkOwnOutputs(const std::string& dir, const std::vector<std::string>& names) {
+  std::error_code ec;
+  const fs::file_status ds = fs::status(dir, ec);
+  if (!fs::exists(ds)) return;
+  if (!fs::is_directory(ds)) throw OutputError(dir + ": exists and is not a directory: nothing was computed");
+  const fs::file_status rs = fs::symlink_status(fs::path(dir) / kOutputsRecord, ec);
+  if (fs::exists(rs) && !fs::is_regular_file(rs))
+    throw OutputError((fs::path(dir) / kOutputsRecord).string() + " exists and is not a regular file: nothing was computed");
+  const auto record = readRecord(dir);
+  for (const auto& n : names) {
+    const std::string why = notOwn(dir, n, record);
+    if (!why.empty()) throw OutputError(why + ": nothing was computed (mmvlab replaces only files it wrote; move it or use another --out)");
+  }
+}
 
 void removeOnSignal(const std::string& path) { remember(path, false); }
 void forgetRemovalsOnSignal() { forgetAll(); }
@@ -163,10 +249,12 @@ OutputDir::OutputDir(const std::string& dir, bool force) : force_(force), except
 OutputDir::~OutputDir() {
   const SignalsHeld held;  // the undo (or the drop of the replaced files) runs whole
   if (committed_ && std::uncaught_exceptions() > exceptions_at_start_) undoCommit();
-  else if (!report_as_.empty() && !placed_.empty())
+  else if (silent_) {
+  } else if (!report_as_.empty() && !placed_.empty())
     std::cerr << "mmvlab: wrote " << placed_.size() << ' ' << report_as_ << " in " << target_.string() << '\n';
   else
-    for (const auto& n : placed_) std::cerr << "mmvlab: wrote " << (target_ / n).string() << '\n';
+    for (const auto& n : placed_)
+      if (n != kOutputsRecord) std::cerr << "mmvlab: wrote " << (target_ / n).string() << '\n';
   std::error_code ec;
   fs::remove_all(staging_, ec);
   forgetAll();  // before `held` acts on a signal that came meanwhile: nothing left to remove
@@ -198,9 +286,43 @@ void OutputDir::undoCommit() {
   if (created_target_) fs::remove(target_, ignore);  // only if empty: a directory this run made
 }
 
+void OutputDir::stageRecord() {
+  // Only files the record lists as they are now are replaced. The record written lists
+  // each file it listed that is there as listed (a file about to be replaced too, so
+  // that a SIGKILL between two renames leaves every file listed as it then is), and every
+  // file placed now; it is placed first.
+  const Record record = readRecord(target_);
+  std::error_code ec;
+  const fs::file_status rs = fs::symlink_status(target_ / kOutputsRecord, ec);
+  if (fs::exists(rs) && !fs::is_regular_file(rs))
+    throw OutputError((target_ / kOutputsRecord).string() + " exists and is not a regular file: nothing was written");
+  for (const auto& n : names_) {
+    const std::string why = notOwn(target_, n, record);
+    if (!why.empty()) throw OutputError(why + ": nothing was written (mmvlab replaces only files it wrote)");
+  }
+  std::string text = std::string(kRecordMagic) + "\n";
+  for (const auto& [name, e] : record) {
+    std::uintmax_t size = 0;
+    std::uint64_t hash = 0;
+    const fs::path t = target_ / name;
+    if (fs::is_regular_file(fs::symlink_status(t, ec)) && fingerprintOf(t, size, hash) && size == e.size && hash == e.hash)
+      text += recordLine(name, e.size, e.hash);
+  }
+  for (const auto& n : names_) {
+    std::uintmax_t size = 0;
+    std::uint64_t hash = 0;
+    if (!fingerprintOf(staging_ / n, size, hash)) throw OutputError((target_ / n).string() + ": cannot read back what was written");
+    text += recordLine(n, size, hash);
+  }
+  write(kOutputsRecord, text);
+  syncFileChecked((staging_ / kOutputsRecord).string());
+  std::rotate(names_.begin(), names_.end() - 1, names_.end());  // the record moves in first
+}
+
 std::vector<std::string> OutputDir::targets() const {
   std::vector<std::string> out;
-  for (const auto& n : names_) out.push_back((target_ / n).string());
+  for (const auto& n : names_)
+    if (!own_only_ || n != kOutputsRecord) out.push_back((target_ / n).string());
   return out;
 }
 
@@ -212,6 +334,7 @@ void OutputDir::commit() {
   // Every staged file is there in full and on the disk before any is placed (writers of
   // their own, PNG and .mat libraries, may have failed quietly).
   for (const auto& n : names_) syncFileChecked((staging_ / n).string());
+  if (own_only_) stageRecord();
   for (const auto& n : names_) {
     const fs::path t = target_ / n;
     const fs::file_status st = fs::symlink_status(t, ec);

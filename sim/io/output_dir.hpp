@@ -28,6 +28,17 @@ void removeOnSignal(const std::string& path);
 void forgetRemovalsOnSignal();
 void removeStaleTemporaries(const std::string& dir);
 
+/// The record of the files mmvlab placed in a folder (OutputDir::replaceOnlyOwnFiles):
+/// "# mmvlab outputs v1", then a line per file: its size, its FNV-1a 64-bit content hash
+/// (hex) and its name.
+inline constexpr const char* kOutputsRecord = ".mmvlab-outputs";
+
+/// Before computing: throws OutputError naming the first of `names` that stands in `dir`
+/// and is not, as it is now, a file of dir's record (a user's file, folder, link or FIFO
+/// of an output's name); the record itself must be a regular file if it exists. Nothing
+/// is written. A missing `dir` holds nothing.
+void checkOwnOutputs(const std::string& dir, const std::vector<std::string>& names);
+
 class OutputDir {
  public:
   OutputDir(const std::string& dir, bool force);
@@ -51,15 +62,24 @@ class OutputDir {
   /// Reports the files as one line, "mmvlab: wrote N WHAT in DIR", instead of a line
   /// each (a run's hundreds of frames).
   void reportAsOne(std::string what) { report_as_ = std::move(what); }
+  /// Reports nothing on stderr (a library front end: Python).
+  void reportNothing() { silent_ = true; }
+  /// Replace only what mmvlab wrote here: commit() then replaces an existing file only
+  /// if DIR's record of its outputs (kOutputsRecord: each file mmvlab placed there, with
+  /// its size and content hash) lists it as it is now, with or without --force (a user's
+  /// file of an output's name, or one they edited, is an OutputError and nothing is
+  /// written), and writes the record of what it placed with the rest.
+  void replaceOnlyOwnFiles() { own_only_ = true; }
 
  private:
   std::filesystem::path target_, staging_;
   std::vector<std::string> names_, scratch_;
   std::vector<std::string> aside_, placed_;  ///< replaced (kept in staging) and placed by commit()
-  bool force_ = false, committed_ = false, created_target_ = false;
+  bool force_ = false, committed_ = false, created_target_ = false, silent_ = false, own_only_ = false;
   std::string report_as_;  ///< reportAsOne's WHAT (empty: a line per file)
   int exceptions_at_start_ = 0;  ///< std::uncaught_exceptions() when made: more at the end means a failure
   void undoCommit();
+  void stageRecord();
 };
 
 }  // namespace mmv

@@ -4,6 +4,7 @@
 #include "sim/core/files.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -85,7 +86,8 @@ ParsedJournal parseJournal(const fs::path& path) {
   };
   std::string id, header;
   if (!nextLine(id) || id.rfind(kMagic, 0) != 0 || !nextLine(header))
-    throw OutputError(path.string() + ": not an mmvlab sweep journal");
+    throw OutputError(path.string() + ": not an mmvlab sweep journal (a file of the journal's name that no sweep wrote: "
+                      "nothing was computed; move it or use another --out)");
   std::istringstream is(id.substr(std::string(kMagic).size()));
   std::string field;
   while (is >> field) {
@@ -113,15 +115,22 @@ ParsedJournal parseJournal(const fs::path& path) {
   return p;
 }
 
-/// Writes `text` to `path` through a temporary file and a rename: never half a file.
+/// Writes `text` to `path` through a temporary file and a rename: never half a file, and
+/// no temporary left behind when the write or the rename fails.
 void writeAtomically(const fs::path& path, const std::string& text) {
   const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp");
-  writeFileChecked(tmp.string(), text);
   std::error_code ec;
+  try {
+    writeFileChecked(tmp.string(), text);
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
   fs::rename(tmp, path, ec);
   if (ec) {
+    const std::string why = ec.message();
     fs::remove(tmp, ec);
-    throw OutputError(path.string() + ": cannot write (" + ec.message() + ")");
+    throw OutputError(path.string() + ": cannot write (" + why + ")");
   }
 }
 
@@ -154,48 +163,79 @@ class JournalWriter {
   std::mutex mutex_;
 };
 
-/// The journal in `dir` for this run: read (resume) or created.
-SweepJournal openJournal(const DesignSweepRun& run, bool restart) {
+/// The journal in `dir` for this run: read (resume) or created. `created` says this run
+/// made it; a journal of another sweep that `restart` replaces is first set aside as
+/// `aside` (put back by the caller if the run ends having computed nothing). Only the
+/// sweep's own journal is ever replaced: a folder, link, device or FIFO in its place, or
+/// a file that is not a sweep journal, is refused, with or without --force.
+SweepJournal openJournal(const DesignSweepRun& run, bool restart, bool& created, fs::path& aside) {
   const fs::path path = fs::path(run.dir) / kJournal;
-  if (fs::exists(path) && restart) fs::remove(path);
-  if (!fs::exists(path)) {
-    writeAtomically(path, identity(run.fingerprint, run.total_points, run.shard) + "\n" + headerLine(run.header) + "\n");
-    SweepJournal j;
-    j.fingerprint = run.fingerprint;
-    j.total_points = run.total_points;
-    j.shard = run.shard;
-    j.header = run.header;
-    return j;
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(path, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw OutputError(path.string() + " is not a regular file (a folder, a link or a device), so not a sweep journal: "
+                      "nothing was computed (--force replaces only the sweep's own journal)");
+  if (fs::exists(st)) {
+    ParsedJournal p = parseJournal(path);
+    const bool same = p.journal.fingerprint == run.fingerprint && p.journal.header == run.header &&
+                      p.journal.total_points == run.total_points;
+    const bool same_shard = p.journal.shard.index == run.shard.index && p.journal.shard.count == run.shard.count;
+    if (same && same_shard) {
+      if (fs::file_size(path) != p.valid_bytes) fs::resize_file(path, p.valid_bytes);  // drop a torn or malformed tail
+      return p.journal;
+    }
+    if (!restart && !same)
+      throw OutputError(run.dir + " holds another sweep (its spec, scene or outputs differ): use another --out, or --force to start over");
+    if (!restart)
+      throw OutputError(run.dir + " holds shard " + p.journal.shard.text() + " of this sweep, not " + run.shard.text());
+    aside = fs::path(run.dir) / (".journal.csv.old-" + std::to_string(::getpid()));
+    fs::rename(path, aside, ec);
+    if (ec) throw OutputError(path.string() + ": cannot set the old journal aside: " + ec.message());
   }
-  ParsedJournal p = parseJournal(path);
-  if (p.journal.fingerprint != run.fingerprint || p.journal.header != run.header || p.journal.total_points != run.total_points)
-    throw OutputError(run.dir + " holds another sweep (its spec, scene or outputs differ): use another --out, or --force to start over");
-  if (p.journal.shard.index != run.shard.index || p.journal.shard.count != run.shard.count)
-    throw OutputError(run.dir + " holds shard " + p.journal.shard.text() + " of this sweep, not " + run.shard.text());
-  if (fs::file_size(path) != p.valid_bytes) fs::resize_file(path, p.valid_bytes);  // drop a torn or malformed tail
-  return p.journal;
+  writeAtomically(path, identity(run.fingerprint, run.total_points, run.shard) + "\n" + headerLine(run.header) + "\n");
+  created = true;
+  SweepJournal j;
+  j.fingerprint = run.fingerprint;
+  j.total_points = run.total_points;
+  j.shard = run.shard;
+  j.header = run.header;
+  return j;
 }
 
 /// An exclusive lock on `dir` for this process's life in it: a second sweep on the same
-/// --out (which would compute every point twice into one journal) is refused.
+/// --out (which would compute every point twice into one journal) is refused. The lock
+/// file is removed when the sweep ends, well or not (while still locked: a sweep that
+/// opened it meanwhile finds it unlinked and takes a new one).
 class DirectoryLock {
  public:
   explicit DirectoryLock(const fs::path& dir) : path_(dir / kLock) {
-    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-    if (fd_ < 0) throw OutputError(path_.string() + ": cannot create the sweep's lock file");
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      char pid[32] = {0};
-      const ssize_t n = ::pread(fd_, pid, sizeof pid - 1, 0);
+    for (int attempt = 0;; ++attempt) {
+      fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+      if (fd_ < 0) throw OutputError(path_.string() + ": cannot create the sweep's lock file");
+      if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        char pid[32] = {0};
+        const ssize_t n = ::pread(fd_, pid, sizeof pid - 1, 0);
+        ::close(fd_);
+        throw OutputError(dir.string() + " is in use by another sweep" + (n > 0 ? std::string(" (process ") + pid + ")" : std::string()) +
+                          ": wait for it to finish, or use another --out");
+      }
+      // Locked: still the file at that name (not one its last holder removed meanwhile)?
+      struct stat held{}, named{};
+      if (::fstat(fd_, &held) == 0 && ::lstat(path_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+          held.st_dev == named.st_dev)
+        break;
       ::close(fd_);
-      throw OutputError(dir.string() + " is in use by another sweep" + (n > 0 ? std::string(" (process ") + pid + ")" : std::string()) +
-                        ": wait for it to finish, or use another --out");
+      if (attempt == 100) throw OutputError(path_.string() + ": the sweep's lock file keeps changing");
     }
     const std::string me = std::to_string(::getpid());
     if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, me.data(), me.size(), 0) != static_cast<ssize_t>(me.size())) {
       // The pid is a courtesy for the message above; the lock itself is held.
     }
   }
-  ~DirectoryLock() { ::close(fd_); }
+  ~DirectoryLock() {
+    ::unlink(path_.c_str());
+    ::close(fd_);
+  }
   DirectoryLock(const DirectoryLock&) = delete;
   DirectoryLock& operator=(const DirectoryLock&) = delete;
 
@@ -204,53 +244,86 @@ class DirectoryLock {
   int fd_ = -1;
 };
 
+/// The folders a run creates (DIR, and OUT above a shard's DIR), removed again if the run
+/// fails leaving them empty.
+std::vector<fs::path> createFolders(const fs::path& dir) {
+  std::vector<fs::path> made;
+  std::error_code ec;
+  for (fs::path p = fs::absolute(dir, ec); !p.empty() && !fs::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    made.push_back(p);
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir, ec)) {
+    for (const auto& p : made) fs::remove(p, ec);
+    throw OutputError(dir.string() + ": cannot create the output directory" + (ec ? ": " + ec.message() : std::string()));
+  }
+  return made;  // innermost first
+}
+
 }  // namespace
 
 DesignSweepRunResult runDesignSweep(const DesignSweepRun& run, bool restart) {
   const auto t0 = std::chrono::steady_clock::now();
   MMV_DEMAND(!run.header.empty() && run.header.front() == "point" && run.shard.count >= 1 && run.jobs >= 1);
-  std::error_code ec;
-  fs::create_directories(run.dir, ec);
-  if (!fs::is_directory(run.dir)) throw OutputError(run.dir + ": cannot create the output directory");
-  const DirectoryLock lock(run.dir);
-  SweepJournal journal = openJournal(run, restart);
-  std::vector<long> todo;
-  long in_shard = 0;
-  for (long p = 0; p < run.total_points; ++p)
-    if (run.shard.contains(p)) {
-      ++in_shard;
-      if (!journal.rows.count(p)) todo.push_back(p);
-    }
+  const std::vector<fs::path> made = createFolders(run.dir);
+  bool created = false;
+  fs::path aside;
+  long computed = 0;
   DesignSweepRunResult result;
-  result.reused = in_shard - static_cast<long>(todo.size());
-  std::atomic<long> done{result.reused};
-  if (run.progress) run.progress(done, in_shard);
-  std::mutex rows_mutex;
-  {
-    JournalWriter writer(fs::path(run.dir) / kJournal);
-    tbb::task_arena arena(run.jobs);
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-          const std::vector<std::string> cells = run.evaluate(todo[i]);
-          MMV_DEMAND(cells.size() + 1 == run.header.size());
-          std::string line = std::to_string(todo[i]);
-          for (const auto& c : cells) line += "," + c;
-          writer.append(line);
-          {
-            std::lock_guard<std::mutex> lock(rows_mutex);
-            journal.rows.emplace(todo[i], line);
+  try {
+    const DirectoryLock lock(run.dir);
+    SweepJournal journal = openJournal(run, restart, created, aside);
+    std::vector<long> todo;
+    long in_shard = 0;
+    for (long p = 0; p < run.total_points; ++p)
+      if (run.shard.contains(p)) {
+        ++in_shard;
+        if (!journal.rows.count(p)) todo.push_back(p);
+      }
+    result.reused = in_shard - static_cast<long>(todo.size());
+    std::atomic<long> done{result.reused};
+    if (run.progress) run.progress(done, in_shard);
+    std::mutex rows_mutex;
+    {
+      JournalWriter writer(fs::path(run.dir) / kJournal);
+      tbb::task_arena arena(run.jobs);
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+          for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const std::vector<std::string> cells = run.evaluate(todo[i]);
+            MMV_DEMAND(cells.size() + 1 == run.header.size());
+            std::string line = std::to_string(todo[i]);
+            for (const auto& c : cells) line += "," + c;
+            writer.append(line);
+            {
+              std::lock_guard<std::mutex> lock(rows_mutex);
+              journal.rows.emplace(todo[i], line);
+              ++computed;
+            }
+            const long d = ++done;
+            if (run.progress) run.progress(d, in_shard);
           }
-          const long d = ++done;
-          if (run.progress) run.progress(d, in_shard);
-        }
+        });
       });
-    });
+    }
+    result.computed = static_cast<long>(todo.size());
+    result.csv = (fs::path(run.dir) / "sweep.csv").string();
+    result.table = tableText(run.header, journal.rows);
+  } catch (...) {
+    // Nothing computed: the folder goes back as it was (the journal this run made or the
+    // one it set aside, the folders it made). Points computed stay in the journal, which
+    // the same command resumes.
+    std::error_code ec;
+    if (computed == 0) {
+      if (created) fs::remove(fs::path(run.dir) / kJournal, ec);
+      if (!aside.empty()) fs::rename(aside, fs::path(run.dir) / kJournal, ec);
+      for (const auto& p : made) fs::remove(p, ec);  // only if empty
+    } else if (!aside.empty()) {
+      fs::remove(aside, ec);  // the new journal holds this run's points
+    }
+    throw;
   }
-  result.computed = static_cast<long>(todo.size());
-  result.csv = (fs::path(run.dir) / "sweep.csv").string();
-  result.table = tableText(run.header, journal.rows);
-  writeAtomically(result.csv, result.table);
+  std::error_code ec;
+  if (!aside.empty()) fs::remove(aside, ec);  // the sweep it replaced is gone for good
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
@@ -287,16 +360,6 @@ std::string mergeSweepTables(const std::vector<std::string>& dirs) {
                            parts[0].total_points, list.c_str(), missing.size() > 10 ? ", ..." : ""));
   }
   return tableText(parts[0].header, rows);
-}
-
-std::string mergeSweepShards(const std::vector<std::string>& dirs, const std::string& out_dir, bool force) {
-  const std::string table = mergeSweepTables(dirs);
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  const fs::path csv = fs::path(out_dir) / "sweep.csv";
-  if (fs::exists(csv) && !force) throw OutputError(csv.string() + " exists: use --force to replace it");
-  writeAtomically(csv, table);
-  return csv.string();
 }
 
 }  // namespace mmv

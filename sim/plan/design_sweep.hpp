@@ -7,8 +7,11 @@
 /// any moment (SIGKILL included) leaves complete rows and at most one torn last line.
 /// A new run in the same DIR checks that the journal belongs to the same sweep (its
 /// fingerprint), drops a torn or malformed tail, skips the rows it has, and computes
-/// the rest. When every point of the run's shard is in the journal, DIR/sweep.csv is
-/// written (rows sorted by point, via a temporary file and a rename).
+/// the rest. When every point of the run's shard is in the journal, the table of
+/// sweep.csv (rows sorted by point) is returned: the caller commits it with the rest of
+/// the outputs (sim/app/design_sweep_study.hpp). A run that fails having computed no
+/// point leaves DIR as it was (no journal, lock or temporary of its own, no folder it
+/// made); one that computed points leaves them in the journal for a resume.
 ///
 /// Parallelism: oneTBB's parallel_for in a task arena of `jobs` threads.
 
@@ -42,12 +45,15 @@ struct DesignSweepRun {
 struct DesignSweepRunResult {
   long computed = 0, reused = 0;  ///< this run's points and those the journal already had.
   double seconds = 0;
-  std::string csv;  ///< the path of sweep.csv.
+  std::string csv;  ///< the path sweep.csv is committed to.
   std::string table;  ///< its contents.
 };
 
 /// Runs (or resumes) the sweep. Throws OutputError when DIR holds another sweep's
-/// journal (a different fingerprint) unless `restart`, which empties it first.
+/// journal (a different fingerprint) unless `restart`, which replaces it (only once the
+/// run has computed a point: until then the old one is set aside, and put back on a
+/// failure); a journal.csv that is not a sweep journal (a user's file, a folder, a
+/// link) is refused whatever `restart` says.
 DesignSweepRunResult runDesignSweep(const DesignSweepRun& run, bool restart);
 
 /// A finished shard (or whole sweep) directory as read back for merging.
@@ -62,11 +68,9 @@ struct SweepJournal {
 /// there is none or it is not a journal.
 SweepJournal readSweepJournal(const std::string& dir);
 
-/// Joins shard directories into OUT/sweep.csv, the file an unsharded run writes.
-/// Throws OutputError (and writes nothing) when the shards belong to different sweeps,
-/// overlap, or leave points missing (named).
-std::string mergeSweepShards(const std::vector<std::string>& dirs, const std::string& out_dir, bool force);
-/// The merged table itself (what mergeSweepShards writes), checked the same way.
+/// Joins shard directories into the table an unsharded run's sweep.csv holds. Throws
+/// OutputError when the shards belong to different sweeps, overlap, or leave points
+/// missing (named).
 std::string mergeSweepTables(const std::vector<std::string>& dirs);
 
 }  // namespace mmv

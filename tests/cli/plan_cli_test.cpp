@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 #include "support/cli.hpp"
@@ -190,6 +191,81 @@ TEST_F(Cli, SweepFiguresAndTheParetoFrontComeFromTheCsvAlsoWhenMerged) {
   EXPECT_EQ(r.code, 73) << r.err;
   EXPECT_NE(r.err.find("shard-2-of-2/sweep.json"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "merged2"));
+}
+
+/// A folder's entries, each as its kind and bytes (a link as its target), for a
+/// before-and-after comparison.
+std::map<std::string, std::string> listing(const fs::path& root) {
+  std::map<std::string, std::string> t;
+  if (!fs::exists(fs::symlink_status(root))) return t;
+  for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
+    const std::string rel = fs::relative(it->path(), root).string();
+    const fs::file_status st = fs::symlink_status(it->path());
+    t[rel] = fs::is_symlink(st) ? "link:" + fs::read_symlink(it->path()).string()
+             : fs::is_directory(st) ? "<dir>"
+             : fs::is_regular_file(st) ? slurp(it->path())
+                                       : "<special>";
+    if (fs::is_symlink(st)) it.disable_recursion_pending();
+  }
+  return t;
+}
+
+// The sweep under every other verb's output rule (issue 68): a user's file, folder or
+// link of an output's name (sweep.csv, sweep.json, a figure, pareto.csv, journal.csv) is
+// refused before any point is computed (exit 73), with or without --force, and the
+// folder is left byte for byte as it was; what the sweep wrote itself (its folder's
+// record lists it) a rerun replaces, with or without --force, and a file of its own the
+// user edited since is the user's.
+TEST_F(Cli, SweepReplacesOnlyItsOwnFilesAndRefusesBeforeComputing) {
+  const fs::path spec = write("spec.yaml", std::string("scene: ") + MMVLAB_SOURCE_DIR +
+                                               "/scenes/mmv.yaml\nsegments: 4\nparameters:\n"
+                                               "  - {key: links.link2.length, values: [1.4, 1.6]}\noutputs: [frequencies, mass, check]\nmodes: 2\n");
+  const std::string sweep = "sweep " + spec.string() + " --out ";
+  // A finished sweep, and its rerun (resumed: its own files replaced, no --force needed).
+  const fs::path own = dir_ / "own";
+  ASSERT_EQ(run(sweep + own.string()).code, 0);
+  const std::string first = slurp(own / "sweep.csv");
+  ASSERT_TRUE(fs::exists(own / "frequencies_vs_links_link2_length.png"));
+  EXPECT_FALSE(fs::exists(own / ".mmvlab-sweep.lock"));  // the lock goes with the run
+  const Result again = run(sweep + own.string());
+  EXPECT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(slurp(own / "sweep.csv"), first);
+  // A file of its own the user changed since is theirs: refused, kept.
+  std::ofstream(own / "sweep.json", std::ios::app) << "edited\n";
+  const auto edited = listing(own);
+  for (const char* force : {"", " --force"}) {
+    const Result r = run(sweep + own.string() + force);
+    EXPECT_EQ(r.code, 73) << force << r.err;
+    EXPECT_NE(r.err.find("sweep.json exists and was not written by mmvlab here"), std::string::npos) << r.err;
+    EXPECT_EQ(listing(own), edited) << force;
+  }
+  struct Conflict {
+    std::string name, kind;  // kind: file, dir, full-dir, link
+  };
+  const std::vector<Conflict> conflicts = {
+      {"sweep.csv", "file"}, {"sweep.json", "file"}, {"pareto.csv", "file"}, {"pareto.png", "file"},
+      {"frequencies_vs_links_link2_length.png", "file"}, {"sweep.csv", "link"}, {"sweep.json", "dir"},
+      {"journal.csv", "file"}, {"journal.csv", "dir"}, {"journal.csv", "full-dir"}, {"journal.csv", "link"}};
+  int k = 0;
+  for (const Conflict& c : conflicts)
+    for (const char* force : {"", " --force"}) {
+      const fs::path out = dir_ / ("c" + std::to_string(k++));
+      fs::create_directories(out);
+      std::ofstream(dir_ / "target.txt") << "the link's target\n";
+      std::ofstream(out / "notes.txt") << "mine\n";
+      if (c.kind == "file") std::ofstream(out / c.name) << "the user's own " << c.name << "\n";
+      if (c.kind == "dir" || c.kind == "full-dir") fs::create_directory(out / c.name);
+      if (c.kind == "full-dir") std::ofstream(out / c.name / "inside.txt") << "keep\n";
+      if (c.kind == "link") fs::create_symlink(dir_ / "target.txt", out / c.name);
+      const auto before = listing(out);
+      const std::string where = c.name + " (" + c.kind + ")" + force;
+      const Result r = run(sweep + out.string() + force);
+      EXPECT_EQ(r.code, 73) << where << "\n" << r.err;
+      EXPECT_EQ(r.err.find("internal error"), std::string::npos) << where << "\n" << r.err;
+      EXPECT_NE(r.err.find(c.name), std::string::npos) << where << "\n" << r.err;
+      EXPECT_EQ(listing(out), before) << where;
+      EXPECT_EQ(slurp(dir_ / "target.txt"), "the link's target\n") << where;
+    }
 }
 
 TEST_F(Cli, BadSweepSpecsExit65AndWriteNothing) {

@@ -29,8 +29,9 @@ Tree snapshot(const fs::path& root) {
   if (!fs::exists(root)) return t;
   for (const auto& e : fs::recursive_directory_iterator(root)) {
     const std::string rel = fs::relative(e.path(), root).string();
-    // Staging and temporaries (.mmvlab-*): not outputs; leftovers() looks for them.
-    if (rel.rfind(".mmvlab-", 0) == 0) continue;
+    // Staging and temporaries (.mmvlab-*): not outputs; leftovers() looks for them. The
+    // record of what mmvlab wrote (.mmvlab-outputs) is part of the folder.
+    if (rel.rfind(".mmvlab-", 0) == 0 && rel != ".mmvlab-outputs") continue;
     t[rel] = e.is_directory() ? "<dir>" : slurp(e.path());
   }
   return t;
@@ -42,7 +43,8 @@ std::vector<std::string> leftovers(const fs::path& dir) {
     if (fs::is_directory(where))
       for (const auto& e : fs::directory_iterator(where)) {
         const std::string n = e.path().filename().string();
-        if (n.rfind(".mmvlab", 0) == 0 && n != ".mmvlab-sweep.lock") out.push_back(e.path().string());
+        if (n.rfind(".mmvlab", 0) == 0 && n != ".mmvlab-outputs") out.push_back(e.path().string());
+        if (n.rfind(".journal.csv", 0) == 0 || n.rfind(".sweep.csv", 0) == 0) out.push_back(e.path().string());
       }
   return out;
 }
@@ -56,6 +58,9 @@ class Faults : public Cli {
     /// The user's earlier output is made by these args instead of `args` (when the verb's
     /// output is the same every run: the new one must differ to be seen).
     std::string earlier;
+    /// The writes counted on a second run into the first one's folder (a sweep resumes
+    /// its journal there and writes only its outputs).
+    bool count_rerun = false;
   };
 
   Result runWith(const std::string& args, const std::string& fault) {
@@ -89,7 +94,9 @@ class Faults : public Cli {
     const fs::path out = !v.file.empty() ? home / v.file : home / "out";
     const std::string args = with(v.args, out) + " --force";
     // A clean run: the count, and the earlier outputs that --force replaces.
-    const Result counted = runWith(args, "count");
+    Result counted = runWith(args, "count");
+    ASSERT_EQ(counted.code, 0) << v.name << ": " << counted.err;
+    if (v.count_rerun) counted = runWith(args, "count");
     ASSERT_EQ(counted.code, 0) << v.name << ": " << counted.err;
     const long writes = std::atol(slurp(dir_ / "count").c_str());
     ASSERT_GT(writes, 0) << v.name << ": no write to a regular file was seen";
@@ -189,6 +196,26 @@ TEST_F(Faults, SimulateSweepConfigAndPlaceSensorsLeaveOutAsItWas) {
   exercise({"simulate", "simulate " + scene("mmv-slew.yaml") + " --segments 2 --duration 0.2 --out {out}"}, 8);
   exercise({"sweep-config", "sweep-config --segments 4 --grid joint2:0:20:10 --out {out}"}, 6);
   exercise({"place-sensors", "place-sensors --segments 4 --out {out}"}, 6);
+}
+
+// The sweep under the same rule (issue 68): over a finished sweep of the same spec (its
+// resume writes sweep.csv, sweep.json, the figures and the record) every failed write
+// leaves the folder as it was; into a new folder, a full disk or an I/O error at the
+// journal's first write leaves no folder, no lock, no temporary behind.
+TEST_F(Faults, SweepLeavesOutAsItWas) {
+  const fs::path spec = dir_ / "spec.yaml";
+  std::ofstream(spec) << "scene: " << scene("mmv.yaml") << "\nsegments: 4\nparameters:\n"
+                      << "  - {key: links.link2.length, values: [1.4, 1.6]}\noutputs: [frequencies, mass, check]\nmodes: 2\n";
+  Verb sweep{"sweep", "sweep " + spec.string() + " --out {out}"};
+  sweep.count_rerun = true;
+  exercise(sweep, 6);
+  for (const char* fault : {"enospc:1", "eio:1", "enospc:2"}) {
+    const fs::path fresh = dir_ / "fresh" / "out";
+    const Result r = runWith("sweep " + spec.string() + " --out " + fresh.string(), fault);
+    EXPECT_EQ(r.code, 73) << fault << ": " << r.err;
+    EXPECT_FALSE(fs::exists(fresh)) << fault << ": the run's new folder is left";
+    EXPECT_EQ(leftovers(fresh), std::vector<std::string>{}) << fault;
+  }
 }
 
 TEST_F(Faults, CorrelateUpdateAndRenderLeaveOutAsItWas) {
