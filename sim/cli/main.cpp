@@ -463,7 +463,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kUsage;  // --help
+    if (e.get_exit_code() == 0) return withStdoutChecked(app.exit(e) == 0 ? kOk : kUsage);  // --help, --version: delivered or 74
     // CLI11 quotes the argument as given: escaped, like every other message.
     std::cerr << "mmvlab: " << mmv::printable(e.what()) << "\nRun with --help for more information.\n";
     return kUsage;

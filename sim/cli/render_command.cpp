@@ -101,6 +101,7 @@ int runRenderCommand(const RenderArgs& given) {
     const std::string ext = extensionOf(args.out);
     render::FrameOptions check;
     parseSize(args.size, check, ext);  // a bad size is refused before any work
+    checkOutputFile(args.out, args.force);  // and an --out it may not write (a link, a FIFO, a file without --force)
     if (!args.history.empty()) {
       if (!args.mode.empty()) throw UsageError("render: --mode and --history draw different things; give one");
       renderHistory(args, ext);

@@ -43,14 +43,29 @@ Camera chooseCamera(const std::string& view, const DrawList& d, const std::vecto
 /// replace a file unless `force` (OutputError, exit 73). A failure while writing is an
 /// OutputError unless it has an exit code of its own (usage, numerical, unavailable,
 /// internal).
+/// The checks writeAtomically makes before it writes, made before any drawing too: an
+/// existing file only with `force`, and never anything but a regular file (a link, a
+/// FIFO, a device or a folder of that name: --force replaces only a file).
+inline void checkOutputFile(const std::string& path, bool force) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(target, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw OutputError(path + ": exists and is not a regular file (a link, a FIFO, a device or a folder): nothing was "
+                             "written (--force replaces only a file)");
+  if (fs::exists(st) && !force) throw OutputError(path + ": exists (use --force to replace it)");
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir, ec)) throw OutputError(path + ": the directory " + dir.string() + " does not exist");
+}
+
 template <class Write>
 void writeAtomically(const std::string& path, bool force, Write write) {
   namespace fs = std::filesystem;
   const fs::path target(path);
   std::error_code ec;
-  if (fs::exists(target, ec) && !force) throw OutputError(path + ": exists (use --force to replace it)");
+  checkOutputFile(path, force);
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir, ec)) throw OutputError(path + ": the directory " + dir.string() + " does not exist");
   removeStaleTemporaries(dir.string());
   const fs::path tmp = dir / (".mmvlab-" + std::to_string(::getpid()) + "-" + target.filename().string());
   removeOnSignal(tmp.string());

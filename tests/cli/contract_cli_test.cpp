@@ -90,11 +90,14 @@ TEST_F(Cli, NumericOptionsStateWhatTheyNeed) {
 }
 
 TEST_F(Cli, FullStandardOutputIsAFailure) {
-  const std::string cmd = std::string(MMVLAB_BINARY) + " modes --segments 2 >/dev/full 2>" + (dir_ / "err").string();
-  const int status = std::system(cmd.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 74);
-  EXPECT_NE(slurp(dir_ / "err").find("cannot write to standard output"), std::string::npos);
+  // --version and --help too (they exited 0 with their text lost, issue 68).
+  for (const char* args : {"modes --segments 2", "--version", "--help", "modes --help"}) {
+    const std::string cmd = std::string(MMVLAB_BINARY) + " " + args + " >/dev/full 2>" + (dir_ / "err").string();
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << args;
+    EXPECT_EQ(WEXITSTATUS(status), 74) << args;
+    EXPECT_NE(slurp(dir_ / "err").find("cannot write to standard output"), std::string::npos) << args;
+  }
 }
 
 }  // namespace
@@ -203,6 +206,32 @@ TEST_F(Cli, RenderLeavesNoTemporaryBehind) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / stale));
   EXPECT_TRUE(fs::exists(dir_ / ".mmvlab-staging-notmine"));
+}
+
+// render --force replaced a link or a FIFO of the output's name (exit 0; issue 68): it
+// refuses them as every other verb does, before drawing, with or without --force, and
+// the link's target and the FIFO stay as they were.
+TEST_F(Cli, RenderNeverReplacesALinkOrAFifo) {
+  write("target.png", "the link's target");
+  fs::create_symlink(dir_ / "target.png", dir_ / "link.png");
+  ASSERT_EQ(::mkfifo((dir_ / "fifo.png").c_str(), 0600), 0);
+  fs::create_directory(dir_ / "dir.png");
+  for (const char* name : {"link.png", "fifo.png", "dir.png"})
+    for (const char* force : {"", " --force"}) {
+      const Result r = run("render --size 64x64 --out " + (dir_ / name).string() + force);
+      EXPECT_EQ(r.code, 73) << name << force << r.err;
+      EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << name << force << r.err;
+    }
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.png"));
+  EXPECT_EQ(slurp(dir_ / "target.png"), "the link's target");
+  EXPECT_TRUE(fs::is_fifo(dir_ / "fifo.png"));
+  EXPECT_TRUE(fs::is_directory(dir_ / "dir.png"));
+  // A regular file: refused without --force, replaced with it.
+  write("mine.png", "x");
+  EXPECT_EQ(run("render --size 64x64 --out " + (dir_ / "mine.png").string()).code, 73);
+  EXPECT_EQ(slurp(dir_ / "mine.png"), "x");
+  EXPECT_EQ(run("render --size 64x64 --out " + (dir_ / "mine.png").string() + " --force").code, 0);
+  EXPECT_TRUE(isPng(dir_ / "mine.png"));
 }
 
 TEST_F(Cli, KilledRunsLeaveNoPartialFile) {
