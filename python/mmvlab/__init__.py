@@ -48,6 +48,30 @@ class RunWarning(UserWarning):
     (model modes that stop below the test band: the `warnings` of correlation.json)."""
 
 
+# The parameters most studies share, written once: a docstring's line "    @scene" (and
+# @segments, @progress) becomes the text below (help() and the stubs' readers see it).
+_SHARED_PARAMETERS = {
+    "@scene": ("scene : Scene", "From `load_scene`."),
+    "@segments": ("segments : int", "Segments per flexible link for this study (0: the scene's own; as `--segments`)."),
+    "@progress": ("progress : callable or None",
+                  "Called with a list of (stage, done, total, unit) tuples, outermost first, as the\n"
+                  "        study advances (None: silent)."),
+}
+
+
+def _documented(f):
+    lines = []
+    for line in (f.__doc__ or "").split("\n"):
+        key = line.strip()
+        if key in _SHARED_PARAMETERS:
+            name, text = _SHARED_PARAMETERS[key]
+            lines += ["    " + name, "        " + text]
+        else:
+            lines.append(line)
+    f.__doc__ = "\n".join(lines)
+    return f
+
+
 def _warn(messages, category=SceneWarning):
     for w in messages:
         _warnings.warn(w, category, stacklevel=3)
@@ -297,16 +321,15 @@ def mode_fields():
     return _mmvlab.mode_fields()
 
 
+@_documented
 def modes(scene, *, segments=0, modes=12, points=(), strains=(), error_estimate=True, target_error=0.0, time_budget=0.0,
           progress=None):
     """`mmvlab modes`: the static equilibrium with the torquers holding and the system modes about it.
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     modes : int
         Modes reported (0: all).
     points : sequence of str
@@ -321,9 +344,7 @@ def modes(scene, *, segments=0, modes=12, points=(), strains=(), error_estimate=
         mode shown within it (`--target-error`).
     time_budget : float
         Wall seconds `target_error` may take choosing the segments (0: no limit).
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -395,16 +416,15 @@ def _linear(scene, rom, segments, inputs, outputs, f_min_hz, f_max_hz, points, r
     return RomResult(d) if rom else FrfResult(d)
 
 
+@_documented
 def frf(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
         residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, vary=None, progress=None):
     """`mmvlab frf`: frequency responses of the full and a reduced linear model.
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     inputs : sequence of str
         table_x, table_y, torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz, shaker
         (empty: the command's defaults).
@@ -430,9 +450,7 @@ def frf(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=Non
         Wall seconds `target_error` may take (0: no limit).
     vary : str, (str, sequence of float) or None
         HAM-SAS only: one parameter over values, "KEY=V1,V2" or (key, values).
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -444,16 +462,15 @@ def frf(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=Non
                    damping, rom_target, target_error, time_budget, progress, vary)
 
 
+@_documented
 def rom(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=None, points=400, rom_modes=8, band_hz=None,
         residualize=True, damping=None, rom_target=0.01, target_error=0.0, time_budget=0.0, progress=None):
     """`mmvlab rom`: the reduced-order state-space model (and the full one) for control design.
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     inputs, outputs : sequence of str
         As `frf`'s (empty: the command's defaults).
     f_min_hz, f_max_hz : float or None
@@ -474,9 +491,7 @@ def rom(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=Non
         Relative discretization error of the responses (0: off).
     time_budget : float
         Wall seconds `target_error` may take (0: no limit).
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -518,6 +533,7 @@ def _optional(x):
     return None if x is None else float(x)
 
 
+@_documented
 def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tolerance=None, duration=None,
              sample_rate=None, verify=False, verify_target=None, target_error=None, points=(), time_budget=None,
              progress=None):
@@ -527,10 +543,8 @@ def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tole
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     integrator : str or None
         rk_merson, rk3, cpodes, cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ...
     accuracy : float or None
@@ -552,9 +566,7 @@ def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tole
         Tips or stations the error is scored at (default: every tip).
     time_budget : float or None
         Wall seconds the `target_error` search may take.
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -607,18 +619,17 @@ class ConfigSweepResult(Result):
         self.points = self.json["points"]
 
 
+@_documented
 def sweep_config(scene, grids, *, segments=0, modes=6, component_modes=4, bc="clamped-free", tip_mass="torquer",
                  method="assumed", progress=None):
     """`mmvlab sweep-config`: system modes over a grid of joint angles, tracked by shape.
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
+    @scene
     grids : str or sequence of str
         One or two "JOINT:FROM_DEG:TO_DEG:STEP_DEG" (degrees).
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @segments
     modes : int
         Modes tracked, 1 .. 100.
     component_modes : int
@@ -629,9 +640,7 @@ def sweep_config(scene, grids, *, segments=0, modes=6, component_modes=4, bc="cl
         Component tip mass: torquer, outboard, none.
     method : str
         Synthesis: assumed or craig-bampton.
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -662,6 +671,7 @@ class TradeResult(Result):
         self.cheapest = self.json.get("cheapest_within_target")
 
 
+@_documented
 def trade(scene, *, segments=0, integrators=(), accuracies=(), segment_ladder=(), modes_ladder=(), modes_accuracies=(),
           points=(), duration=None, target_error=None, all=False, run_budget=None, time_budget=None, progress=None):
     """`mmvlab trade`: integrators, accuracies, meshes and modal links: error against cost.
@@ -670,10 +680,8 @@ def trade(scene, *, segments=0, integrators=(), accuracies=(), segment_ladder=()
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     integrators : sequence of str
         Integrator names (default: rk_merson, rk3, cpodes, cvode_bdf, cvode_adams, arkode_erk, arkode_dirk).
     accuracies : sequence of float
@@ -696,9 +704,7 @@ def trade(scene, *, segments=0, integrators=(), accuracies=(), segment_ladder=()
         Wall seconds a run may take; a run over it is cut and listed.
     time_budget : float or None
         Wall seconds for the whole trade.
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -730,6 +736,7 @@ class SweepResult(Result):
         self.columns, self.table = _csv_table(table, {k: f["number"] for k, f in self.fields.items()})
 
 
+@_documented
 def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):
     """`mmvlab sweep SPEC --out OUT`: the design sweep of a spec file (docs/planning.md).
 
@@ -747,9 +754,7 @@ def sweep(spec, out, *, jobs=0, shard=None, restart=False, progress=None):
         (i, n): the i-th of n deterministic slices, into OUT/shard-i-of-n.
     restart : bool
         Start over in a folder that holds another sweep's journal (else refused).
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -811,20 +816,18 @@ class CompareResult(Result):
         return _columns(records, [f for f in fields("compare_synthesis") if f["csv"]])
 
 
+@_documented
 def converge(scene, *, max_segments=64, modes=6, progress=None):
     """`mmvlab converge`: each mode's frequency at 1, 2, 4, ... segments per link.
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
+    @scene
     max_segments : int
         The finest mesh, 1 .. 1024 (a power of two is reached).
     modes : int
         Modes tabulated, 1 .. 1000.
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -835,16 +838,15 @@ def converge(scene, *, max_segments=64, modes=6, progress=None):
     return ConvergeResult(json_text, text, csv)
 
 
+@_documented
 def compare(scene, *, segments=0, bc="clamped-free", tip_mass="torquer", component_modes=4, modes=10, topologies=(),
             progress=None):
     """`mmvlab compare`: component modes of each link alone against the system modes.
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     bc : str
         Component boundary condition: clamped-free, pinned-free, free-free,
         clamped-pinned, pinned-pinned.
@@ -856,9 +858,7 @@ def compare(scene, *, segments=0, bc="clamped-free", tip_mass="torquer", compone
         System modes compared, 1 .. 500.
     topologies : sequence of str
         "open", "closed" or both (empty: the scene's).
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -871,22 +871,19 @@ def compare(scene, *, segments=0, bc="clamped-free", tip_mass="torquer", compone
     return CompareResult(json_text, text, markdown)
 
 
+@_documented
 def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):
     """`mmvlab check`: the feasibility report (torquers, gimbal, table, modes, sensors, lab).
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     margin : float
         Required margin, 0 .. 99 %: a smaller one is a warning.
     band_hz : (float, float)
         The modes of interest, Hz.
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -901,6 +898,7 @@ def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None)
     return CheckResult(json_text, text, markdown)
 
 
+@_documented
 def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, count=8, triaxial=False, method="efi",
                   tam=(), sensor_mass=0.0, min_separation=0.0, keep_out=(), channels=0, keep_scene_sensors=False,
                   instrument="", iterate_loaded=False, strain_span=0.0, progress=None):
@@ -908,10 +906,8 @@ def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, co
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @scene
+    @segments
     modes : sequence of int
         Target modes, 1-based (empty: every vibration mode below `below_hz`).
     below_hz : float or None
@@ -942,9 +938,7 @@ def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, co
         Place again on the model carrying the sensors until the set carries itself.
     strain_span : float
         Strain gauges or films this long, m, instead of accelerometers (0: accelerometers).
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -990,18 +984,17 @@ class CorrelateResult(Result):
         return _columns(self.pairs, fields("correlation_pairs"))
 
 
+@_documented
 def correlate(scene, measured, *, segments=0, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,
               max_frequency_error=0.3, damping=None, tam="", progress=None):
     """`mmvlab correlate`: a measured UFF file against the scene's model.
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
+    @scene
     measured : str or os.PathLike
         The measured UFF file (datasets 15/2411 nodes, 55 modes, 58 functions, 164 units).
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @segments
     pairs : sequence of str or dict
         "NODE=POINT" strings or {node: point}: nodes paired by name.
     pair_distance : float
@@ -1016,9 +1009,7 @@ def correlate(scene, measured, *, segments=0, pairs=(), pair_distance=0.05, mode
         Every mode's damping ratio, 0 .. 1 (None: the scene's damping, else 0.01).
     tam : str
         "FILE[:METHOD]": a tam.mat of place_sensors' output for the test orthogonality.
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
@@ -1063,6 +1054,7 @@ class UpdateResult(Result):
         return _columns(self.pairs, fields("update_pairs"))
 
 
+@_documented
 def update(scene, params, *, measured=None, segments=0, frequency_sigma=0.01, mac_sigma=0.05, mac=True,
            regularization=0.0, max_iterations=30, pairs=(), pair_distance=0.05, modes=20, mac_threshold=0.7,
            max_frequency_error=0.3, progress=None):
@@ -1070,15 +1062,13 @@ def update(scene, params, *, measured=None, segments=0, frequency_sigma=0.01, ma
 
     Parameters
     ----------
-    scene : Scene
-        From `load_scene`.
+    @scene
     params : sequence of str or dict
         "KEY" or "KEY:LO:HI" strings, or {key: (lo, hi)} / {key: None}: the numbers of the
         scene file to fit, within bounds (the key's unit, SI).
     measured : str, os.PathLike or None
         An article's measured UFF file; None for HAM-SAS (the slides' measured features).
-    segments : int
-        Segments per flexible link for this study (0: the scene's own; as `--segments`).
+    @segments
     frequency_sigma : float
         A frequency error's stated uncertainty, relative, 1e-6 .. 1.
     mac_sigma : float
@@ -1091,9 +1081,7 @@ def update(scene, params, *, measured=None, segments=0, frequency_sigma=0.01, ma
         Levenberg-Marquardt iterations, 1 .. 1000.
     pairs, pair_distance, modes, mac_threshold, max_frequency_error
         As `correlate`'s.
-    progress : callable or None
-        Called with a list of (stage, done, total, unit) tuples, outermost first, as the
-        study advances (None: silent).
+    @progress
 
     Returns
     -------
