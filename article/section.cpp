@@ -15,11 +15,24 @@ double sectionArea(const Section& s) {
   return 0;
 }
 
+namespace {
+
+/// (b h^3 - (b - 2t)(h - 2t)^3) / 12, the tube's second moment about the axis along b,
+/// expanded in u = 2t and evaluated by Horner's rule: the two nearly equal terms of the
+/// closed form cancel to 0 for a wall far thinner than the section (1e-20 m in 2 cm: E*I
+/// = 0 and an internal error downstream); the expansion keeps the wall's first-order term
+/// u (3 b h^2 + h^3) exact and is b h^3 / 12 again when the wall fills the height (u = h).
+double tubeSecondMoment(double b, double h, double t) {
+  const double u = 2 * t;
+  return u * ((3 * b * h * h + h * h * h) - u * ((3 * b * h + 3 * h * h) - u * ((b + 3 * h) - u))) / 12.0;
+}
+
+}  // namespace
+
 double sectionSecondMoment(const Section& s) {
   switch (s.shape) {
     case SectionShape::Rectangle: return s.b * std::pow(s.h, 3) / 12.0;
-    case SectionShape::RectangularTube:
-      return (s.b * std::pow(s.h, 3) - (s.b - 2 * s.t) * std::pow(s.h - 2 * s.t, 3)) / 12.0;
+    case SectionShape::RectangularTube: return tubeSecondMoment(s.b, s.h, s.t);
     case SectionShape::RoundRod: return M_PI * std::pow(s.radius, 4) / 4.0;
     case SectionShape::Explicit: return s.explicit_second_moment;
   }
@@ -29,8 +42,7 @@ double sectionSecondMoment(const Section& s) {
 double sectionSecondMomentOut(const Section& s) {
   switch (s.shape) {
     case SectionShape::Rectangle: return s.h * std::pow(s.b, 3) / 12.0;
-    case SectionShape::RectangularTube:
-      return (s.h * std::pow(s.b, 3) - (s.h - 2 * s.t) * std::pow(s.b - 2 * s.t, 3)) / 12.0;
+    case SectionShape::RectangularTube: return tubeSecondMoment(s.h, s.b, s.t);
     case SectionShape::RoundRod: return M_PI * std::pow(s.radius, 4) / 4.0;
     case SectionShape::Explicit: return s.explicit_second_moment_out;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -78,6 +79,11 @@ class Newton {
   std::optional<Eigen::VectorXd> step(const Residual& res);
   /// The first step length 1, 1/2, ... that reduces the merit sufficiently; false if none.
   bool lineSearch(const Eigen::VectorXd& dx, Residual& res);
+  /// No step can reduce `res` further because it is round-off: each DOF's residual within
+  /// what rounding its coordinate makes of its own stiffness (64 eps K_ii max(1, |q_i|):
+  /// a servo of 1e10 N*m/rad turns the last bit of a 0.5 rad angle into 1e-6 N*m), the
+  /// closures within their tolerance. Checked only where Newton stalls.
+  bool atRoundOff(const Residual& res) const;
 
   const Model& model_;
   SimTK::State s_;
@@ -87,6 +93,7 @@ class Newton {
   const double size_;
   double tol_ = 0, tol_closure_ = 0;
   Eigen::VectorXd q_, lambda_;
+  Eigen::VectorXd k_diag_;  ///< the last step's stiffness diagonal over the DOFs (atRoundOff)
   EquilibriumResult r_;
 };
 
@@ -142,10 +149,12 @@ std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
     const TreeOperator op(model_, s_, dofs_);
     const TreeFactor f = op.factor(0.0);
     const Eigen::VectorXd diag = op.diagonalK();
+    k_diag_ = diag;
     if (f.invertible() && diag.minCoeff() > k_min && f.pivots().cwiseQuotient(diag).minCoeff() >= 1e-12)
       return f.solve(res.force);
   }
   const Eigen::MatrixXd K = calcStiffness(model_, s_, dofs_);
+  k_diag_ = K.diagonal();
   // Singular relative to the problem's loads, not to K's own largest entry: a 1x1 K of
   // 1e-17 N*m/rad is singular next to a 100 N*m load although it is its own largest
   // pivot, while hinges of 4e13 and 2.6 N*m/rad in one chain (a link of E = 1e20 Pa
@@ -177,6 +186,17 @@ std::optional<Eigen::VectorXd> Newton::step(const Residual& res) {
   const double pivot = lu.matrixLU().diagonal().head(n_).cwiseAbs().minCoeff();
   if (!(pivot >= 1e-12) || !(lu.rcond() >= 1e-15)) return std::nullopt;
   return Eigen::VectorXd(lu.solve(r.asDiagonal() * rhs));
+}
+
+bool Newton::atRoundOff(const Residual& res) const {
+  if (k_diag_.size() != n_) return false;
+  if (m_ > 0 && !(res.closure.cwiseAbs().maxCoeff() <= tol_closure_)) return false;
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (int i = 0; i < n_; ++i) {
+    const double floor = 64 * eps * std::abs(k_diag_[i]) * std::max(1.0, std::abs(q_[dofs_[i]]));
+    if (!(std::abs(res.force[i]) <= std::max(tol_, floor))) return false;
+  }
+  return true;
 }
 
 bool Newton::lineSearch(const Eigen::VectorXd& dx, Residual& res) {
@@ -211,13 +231,14 @@ EquilibriumResult Newton::solve(Eigen::VectorXd q, Eigen::VectorXd lambda) {
       return finish(false, os.str(), res);
     }
     if (!lineSearch(*dx, res)) {
+      if (atRoundOff(res)) return finish(true, "", res);  // very stiff joints: nothing left but rounding
       std::ostringstream os;
       os << "line search failed at iteration " << r_.iterations << " (residual " << res.force.cwiseAbs().maxCoeff()
          << " N*m)";
       return finish(false, os.str(), res);
     }
   }
-  if (res.converged) return finish(true, "", res);
+  if (res.converged || atRoundOff(res)) return finish(true, "", res);
   std::ostringstream os;
   os << "did not converge in " << options_.max_iterations << " Newton iterations (residual "
      << (n_ ? res.force.cwiseAbs().maxCoeff() : 0.0) << " N*m, tolerance " << tol_ << " N*m";

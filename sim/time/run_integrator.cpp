@@ -1,5 +1,6 @@
 #include "sim/time/run_integrator.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "sim/core/errors.hpp"
@@ -77,9 +78,19 @@ RunIntegrator::RunIntegrator(const SimTK::MultibodySystem& sys, const std::strin
   // interpolation copies the whole state (cache included) at every sample.
   integ_->setReturnEveryInternalStep(true);
   integ_->setAllowInterpolation(false);
-  integ_->initialize(initial);
-  work_ = integ_->getState();
-  system_.realize(work_, SimTK::Stage::Acceleration);
+  try {
+    integ_->initialize(initial);
+    work_ = integ_->getState();
+    system_.realize(work_, SimTK::Stage::Acceleration);
+  } catch (const std::exception& e) {
+    // Simbody's own words (e.g. a mass matrix singular to working precision: bodies whose
+    // inertias differ by 20 decades, a 1e10 m table beside 0.5 kg pendulums): a numerical
+    // failure of this model, exit 1, not an internal error.
+    std::string why = e.what();
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    throw NumericalError("the " + name_ + " integrator could not start: the model's equations cannot be solved at t = " +
+                         std::to_string(initial.getTime()) + " s (" + why + ")");
+  }
   t1_ = work_.getTime();
   y1_ = work_.getY();
   yd1_ = work_.getYDot();

@@ -30,6 +30,29 @@ TEST(Section, TubeTendsToSolidWhenWallFillsIt) {
   EXPECT_NEAR(sectionSecondMoment(tube), sectionSecondMoment(bar), 1e-18);
 }
 
+// The tube's second moment two ways: the closed form (b h^3 - (b-2t)(h-2t)^3) / 12 where
+// it has digits to spare (walls from a tenth of the section to its middle: within 1e-13),
+// and, for a wall far thinner than the section, its first-order term 2t (3 b h^2 + h^3)
+// / 12 (the closed form cancelled to exactly 0 at t = 1e-20 m: E*I = 0, exit 70 in
+// modes, check and frf; issue 68).
+TEST(Section, TubeSecondMomentHoldsFromAFilmToASolidWall) {
+  const double b = 0.0762, h = 0.0254;
+  for (double t : {0.00127, 0.0034, 0.006, 0.0127}) {
+    const Section tube{"t", SectionShape::RectangularTube, b, h, t};
+    const double closed = (b * std::pow(h, 3) - (b - 2 * t) * std::pow(h - 2 * t, 3)) / 12;
+    const double out = (h * std::pow(b, 3) - (h - 2 * t) * std::pow(b - 2 * t, 3)) / 12;
+    EXPECT_NEAR(sectionSecondMoment(tube), closed, 1e-13 * closed) << t;
+    EXPECT_NEAR(sectionSecondMomentOut(tube), out, 1e-13 * out) << t;
+  }
+  for (double t : {1e-9, 1e-15, 1e-20}) {
+    const Section film{"f", SectionShape::RectangularTube, b, h, t};
+    const double first = 2 * t * (3 * b * h * h + h * h * h) / 12, first_out = 2 * t * (3 * h * b * b + b * b * b) / 12;
+    EXPECT_NEAR(sectionSecondMoment(film), first, 1e-6 * first) << t;
+    EXPECT_NEAR(sectionSecondMomentOut(film), first_out, 1e-6 * first_out) << t;
+    EXPECT_GT(sectionSecondMoment(film), 0) << t;
+  }
+}
+
 // Out of the plane the section bends about its other axis: b and h swap roles.
 TEST(Section, OutOfPlaneMomentSwapsTheSides) {
   Section tube{"t", SectionShape::RectangularTube, 0.0762, 0.0254, 0.0034};

@@ -1,5 +1,8 @@
 // The bounds on counts a user controls (docs/reliability.md, "Bounds"): each at the
 // bound and one past it, the refusal before anything is allocated or drawn.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <cstdint>
 
 #include "sim/modes/config_sweep.hpp"
@@ -86,6 +89,53 @@ TEST_F(Cli, SweepConfigRefusesAGridAxisPastItsBoundBeforeMakingIt) {
 // the frame buffers' page faults were a third of its whole process): the frame is the
 // same, byte for byte, with the re-execution, without it (MMVLAB_NO_HUGE_PAGES), and when
 // the user's own GLIBC_TUNABLES is extended, and a frame within the budget stays there.
+// A rectangular tube's wall of 1e-20 m, a number the reader accepts, made E*I exactly 0
+// (the second moment's closed form cancelled) and modes, check and frf exit 70 ("internal
+// error: discretizeLink ..."; issue 68). The section now has its (tiny) stiffness: the
+// verbs compute or fail with a named error, never an internal one.
+TEST_F(Cli, AFilmThinTubeWallIsNeverAnInternalError) {
+  for (const char* verb : {"modes", "check", "frf"}) {
+    const Result r = run(std::string(verb) + " --segments 2 --set sections.link1_tube.t=1e-20");
+    EXPECT_NE(r.code, 70) << verb << "\n" << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << verb << "\n" << r.err;
+    EXPECT_TRUE(r.code == 0 || r.code == 1 || r.code == 65) << verb << ": exit " << r.code << "\n" << r.err;
+  }
+}
+
+// Very stiff joints hold (issue 68): a servo of 1e8 N*m/rad and more "failed" its
+// equilibrium at a residual of 8e-9 N*m, the round-off of its own stiffness, and the
+// message blamed buckling. At every stiffness the servo now holds, and its sag is the
+// torque it carries over its stiffness, computed two ways (the equilibrium's angle
+// against the commanded one, and torque / k).
+TEST_F(Cli, AVeryStiffServoHoldsItsEquilibrium) {
+  for (const char* k : {"1e6", "1e8", "1e9", "1e10"}) {
+    const Result r = run(std::string("modes --segments 4 --modes 1 --json --set joints.joint2.hold=servo --set "
+                                     "joints.joint2.servo_stiffness=") + k);
+    ASSERT_EQ(r.code, 0) << k << "\n" << r.err;
+    EXPECT_EQ(r.err.find("buckl"), std::string::npos) << k << "\n" << r.err;
+    const auto e = nlohmann::json::parse(r.out).at("equilibrium");
+    EXPECT_TRUE(e.at("converged").get<bool>()) << k;
+    const auto& j = e.at("joints").at(1);
+    ASSERT_EQ(j.at("name"), "joint2");
+    const double sag_deg = j.at("commanded_angle_deg").get<double>() - j.at("equilibrium_angle_deg").get<double>();
+    const double expected_deg = j.at("torque_n_m").get<double>() / std::stod(k) * 180 / M_PI;
+    EXPECT_NEAR(std::abs(sag_deg), std::abs(expected_deg), 1e-4 * std::abs(expected_deg) + 1e-12) << k;
+  }
+}
+
+// HAM-SAS's optical table of 1e10 m, a number the reader accepts, made Simbody's
+// integrator fail to start ("Matrix is singular") and simulate and trade exit 70 (issue
+// 68): a numerical failure of the model, exit 1, named.
+TEST_F(Cli, AnIsolatorTheIntegratorCannotStartIsANumericalFailure) {
+  const std::string scene = std::string(MMVLAB_SOURCE_DIR) + "/scenes/hamsas.yaml";
+  for (const std::string args : {"simulate " + scene + " --duration 0.01", "trade " + scene + " --duration 0.01 --integrators rk_merson --accuracies 1e-3"}) {
+    const Result r = run(args + " --set hamsas.ot_size_x=1e10");
+    EXPECT_NE(r.code, 70) << args << "\n" << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << args << "\n" << r.err;
+    if (r.code == 1) EXPECT_NE(r.err.find("could not start"), std::string::npos) << args << "\n" << r.err;
+  }
+}
+
 TEST_F(Cli, RenderOnHugePagesDrawsTheSameFrame) {
   const fs::path a = dir_ / "huge.png", b = dir_ / "small.png", c = dir_ / "user.png";
   ASSERT_EQ(run("render --size 640x360 --out " + a.string()).code, 0);
