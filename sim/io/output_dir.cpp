@@ -189,6 +189,20 @@ std::string notOwn(const fs::path& dir, const std::string& name, const Record& r
   return t.string() + " exists and was not written by mmvlab here (or was changed since)";
 }
 
+/// Throws OutputError ("...: nothing was <done>") unless the record is a regular file if
+/// it exists and each of `names` is absent or listed in it as it is now.
+void requireOwn(const fs::path& dir, const std::vector<std::string>& names, const Record& record, const char* done) {
+  std::error_code ec;
+  const fs::file_status rs = fs::symlink_status(dir / kOutputsRecord, ec);
+  if (fs::exists(rs) && !fs::is_regular_file(rs))
+    throw OutputError((dir / kOutputsRecord).string() + " exists and is not a regular file: nothing was " + done);
+  for (const auto& n : names) {
+    const std::string why = notOwn(dir, n, record);
+    if (!why.empty())
+      throw OutputError(why + ": nothing was " + done + " (mmvlab replaces only files it wrote; move it or use another --out)");
+  }
+}
+
 std::string recordLine(const std::string& name, std::uintmax_t size, std::uint64_t hash) {
   return std::to_string(size) + " " + strf("%016llx", static_cast<unsigned long long>(hash)) + " " + name + "\n";
 }
@@ -200,14 +214,7 @@ void checkOwnOutputs(const std::string& dir, const std::vector<std::string>& nam
   const fs::file_status ds = fs::status(dir, ec);
   if (!fs::exists(ds)) return;
   if (!fs::is_directory(ds)) throw OutputError(dir + ": exists and is not a directory: nothing was computed");
-  const fs::file_status rs = fs::symlink_status(fs::path(dir) / kOutputsRecord, ec);
-  if (fs::exists(rs) && !fs::is_regular_file(rs))
-    throw OutputError((fs::path(dir) / kOutputsRecord).string() + " exists and is not a regular file: nothing was computed");
-  const auto record = readRecord(dir);
-  for (const auto& n : names) {
-    const std::string why = notOwn(dir, n, record);
-    if (!why.empty()) throw OutputError(why + ": nothing was computed (mmvlab replaces only files it wrote; move it or use another --out)");
-  }
+  requireOwn(dir, names, readRecord(dir), "computed");
 }
 
 void removeOnSignal(const std::string& path) { remember(path, false); }
@@ -292,14 +299,8 @@ void OutputDir::stageRecord() {
   // that a SIGKILL between two renames leaves every file listed as it then is), and every
   // file placed now; it is placed first.
   const Record record = readRecord(target_);
+  requireOwn(target_, names_, record, "written");
   std::error_code ec;
-  const fs::file_status rs = fs::symlink_status(target_ / kOutputsRecord, ec);
-  if (fs::exists(rs) && !fs::is_regular_file(rs))
-    throw OutputError((target_ / kOutputsRecord).string() + " exists and is not a regular file: nothing was written");
-  for (const auto& n : names_) {
-    const std::string why = notOwn(target_, n, record);
-    if (!why.empty()) throw OutputError(why + ": nothing was written (mmvlab replaces only files it wrote)");
-  }
   std::string text = std::string(kRecordMagic) + "\n";
   for (const auto& [name, e] : record) {
     std::uintmax_t size = 0;
