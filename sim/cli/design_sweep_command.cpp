@@ -76,8 +76,7 @@ int runSweepMergeCommand(const SweepMergeArgs& args) {
     out.replaceOnlyOwnFiles();  // --force replaces an earlier merge's files, never a user's
     const std::string csv_target = (std::filesystem::path(args.out) / "sweep.csv").string();
     const app::DesignSweepStudy s = app::mergeDesignSweepStudy(args.shards, csv_target);
-    out.write("sweep.csv", s.result.table);
-    out.write("sweep.json", s.json.dump(2) + "\n");
+    app::stageDesignSweepOutputs(s, out);  // sweep.csv, sweep.json: as a local sweep stages them
     writeDesignSweepPlots(s.result.table, out);
     std::vector<std::string> figures = out.targets();
     const std::string csv = figures.front();
