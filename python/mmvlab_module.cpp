@@ -12,6 +12,8 @@
 
 #include <chrono>
 #include <optional>
+#include <stdexcept>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,8 @@
 #include "sim/io/report.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/core/text.hpp"
+#include "declared_options.hpp"
+#include "sim/app/verbs.hpp"
 #include "study_runner.hpp"
 
 namespace py = pybind11;
@@ -55,36 +59,6 @@ PyScene loadScene(const std::optional<std::string>& path, const std::vector<std:
   r.front = Front::Python;
   mmv::app::LoadedScene l = mmv::app::loadScene(r);
   return PyScene{std::move(l.scene), std::move(l.warnings), std::move(l.request)};
-}
-
-py::tuple modes(const PyScene& scene, int segments, int count, const std::vector<std::string>& points,
-                const std::vector<std::string>& strains, bool error_estimate, double target_error, double time_budget,
-                py::object progress) {
-  const PyScene prepared = withSegments(scene, segments);
-  const mmv::Scene& sc = prepared.scene;
-  mmv::app::ModesRequest r;
-  r.modes = count;
-  r.points = points;
-  r.strains = strains;
-  r.error_estimate = error_estimate;
-  r.target_error = target_error;
-  r.time_budget = time_budget;
-  r.segments_given = segments != 0;
-  r.front = Front::Python;
-  const mmv::app::ModesStudy s = released(progress, [&] { return mmv::app::runModesStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.csv, prepared.warnings);
-}
-
-py::tuple check(const PyScene& scene, int segments, double margin, double band_min, double band_max, py::object progress) {
-  const PyScene prepared = withSegments(scene, segments);
-  const mmv::Scene& sc = prepared.scene;
-  mmv::app::CheckRequest r;
-  r.margin_pct = margin;
-  r.band_min_hz = band_min;
-  r.band_max_hz = band_max;
-  r.front = Front::Python;
-  const mmv::app::CheckStudy s = released(progress, [&] { return mmv::app::runCheckStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.markdown, prepared.warnings);
 }
 
 py::tuple correlate(const PyScene& scene, int segments, const std::string& measured, const std::vector<std::string>& pairs,
@@ -328,45 +302,45 @@ py::tuple trade(const PyScene& scene, int segments, const std::vector<std::strin
   return py::make_tuple(s.json.dump(), s.text, s.csv, prepared.warnings);
 }
 
-py::tuple sweepConfig(const PyScene& scene, int segments, const std::vector<std::string>& grids, int count,
-                      int component_modes, const std::string& bc, const std::string& tip_mass, const std::string& method,
-                      py::object progress) {
+/// A declared verb's study (sim/app/verbs.hpp): its keyword arguments read by the same
+/// field list as the command line's options (python/declared_options.hpp), the study run
+/// without the GIL, the JSON, the text, one more text output and the warnings returned.
+template <class Request, class Run, class Third>
+py::tuple declaredStudy(const char* verb, const PyScene& scene, int segments, const py::dict& options, py::object progress,
+                        Run run, Third third) {
   const PyScene prepared = withSegments(scene, segments);
-  const mmv::Scene& sc = prepared.scene;
-  mmv::app::ConfigSweepRequest r;
-  r.grids = grids;
-  r.modes = count;
-  r.component_modes = component_modes;
-  r.bc = bc;
-  r.tip_mass = tip_mass;
-  r.method = method;
+  Request r;
+  mmv::python::readOptions(options, verb, r);
   r.front = Front::Python;
-  const mmv::app::ConfigSweepStudy s = released(progress, [&] { return mmv::app::runConfigSweepStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.csv, prepared.warnings);
+  if constexpr (std::is_same_v<Request, mmv::app::ModesRequest>) r.segments_given = segments != 0;
+  const auto s = released(progress, [&] { return run(prepared.scene, r); });
+  return py::make_tuple(s.json.dump(), s.text, third(s), prepared.warnings);
 }
 
-py::tuple converge(const PyScene& scene, int max_segments, int modes, py::object progress) {
-  mmv::app::ConvergeRequest r;
-  r.max_segments = max_segments;
-  r.modes = modes;
-  r.front = Front::Python;
-  const mmv::app::ConvergeStudy s = released(progress, [&] { return mmv::app::runConvergeStudy(scene.scene, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.csv);
+py::tuple modes(const PyScene& scene, int segments, const py::dict& options, py::object progress) {
+  return declaredStudy<mmv::app::ModesRequest>("modes", scene, segments, options, progress, &mmv::app::runModesStudy,
+                                               [](const mmv::app::ModesStudy& s) { return s.csv; });
 }
 
-py::tuple compare(const PyScene& scene, int segments, const std::string& bc, const std::string& tip_mass,
-                  int component_modes, int modes, const std::vector<std::string>& topologies, py::object progress) {
-  const PyScene prepared = withSegments(scene, segments);
-  const mmv::Scene& sc = prepared.scene;
-  mmv::app::CompareRequest r;
-  r.bc = bc;
-  r.tip_mass = tip_mass;
-  r.component_modes = component_modes;
-  r.modes = modes;
-  r.topologies = topologies;
-  r.front = Front::Python;
-  const mmv::app::CompareStudy s = released(progress, [&] { return mmv::app::runCompareStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.markdown, prepared.warnings);
+py::tuple converge(const PyScene& scene, const py::dict& options, py::object progress) {
+  return declaredStudy<mmv::app::ConvergeRequest>("converge", scene, 0, options, progress, &mmv::app::runConvergeStudy,
+                                                  [](const mmv::app::ConvergeStudy& s) { return s.csv; });
+}
+
+py::tuple compare(const PyScene& scene, int segments, const py::dict& options, py::object progress) {
+  return declaredStudy<mmv::app::CompareRequest>("compare", scene, segments, options, progress, &mmv::app::runCompareStudy,
+                                                 [](const mmv::app::CompareStudy& s) { return s.markdown; });
+}
+
+py::tuple sweepConfig(const PyScene& scene, int segments, const py::dict& options, py::object progress) {
+  return declaredStudy<mmv::app::ConfigSweepRequest>("sweep_config", scene, segments, options, progress,
+                                                     &mmv::app::runConfigSweepStudy,
+                                                     [](const mmv::app::ConfigSweepStudy& s) { return s.csv; });
+}
+
+py::tuple check(const PyScene& scene, int segments, const py::dict& options, py::object progress) {
+  return declaredStudy<mmv::app::CheckRequest>("check", scene, segments, options, progress, &mmv::app::runCheckStudy,
+                                               [](const mmv::app::CheckStudy& s) { return s.markdown; });
 }
 
 std::string sceneKind(const PyScene& s) { return std::holds_alternative<mmv::HamsasScene>(s.scene) ? "hamsas" : "article"; }
@@ -396,7 +370,7 @@ PYBIND11_MODULE(_mmvlab, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const mmv::OptionError& e) {  // found by an analysis: the option as Python spells it
-      PyErr_SetString(usage, (mmv::app::optionName(Front::Python, e.option()) + e.rest()).c_str());
+      PyErr_SetString(usage, (mmv::app::declaredOptionName(Front::Python, e.option()) + e.rest()).c_str());
     } catch (const mmv::UsageError& e) {
       PyErr_SetString(usage, e.what());
     } catch (const mmv::SceneFileError& e) {
@@ -445,9 +419,7 @@ PYBIND11_MODULE(_mmvlab, m) {
   m.attr("__version__") = mmv::mmvlabVersion();
   m.def("load_scene", &loadScene, py::arg("path"), py::arg("sets"), py::arg("segments"), py::arg("no_gravity"),
         py::arg("strict"));
-  m.def("modes", &modes, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("points"), py::arg("strains"),
-        py::arg("error_estimate"),
-        py::arg("target_error"), py::arg("time_budget"), py::arg("progress"));
+  m.def("modes", &modes, py::arg("scene"), py::arg("segments"), py::arg("options"), py::arg("progress"));
   m.def("linear", &linear, py::arg("scene"), py::arg("segments"), py::arg("inputs"), py::arg("outputs"), py::arg("f_min"),
         py::arg("f_max"), py::arg("points"), py::arg("rom_modes"), py::arg("band"), py::arg("residualize"), py::arg("damping"),
         py::arg("rom_target"), py::arg("target_error"), py::arg("time_budget"), py::arg("rom"), py::arg("vary"),
@@ -457,15 +429,26 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("verify_target"), py::arg("target_error"), py::arg("points"), py::arg("time_budget"), py::arg("progress"));
   m.def("sweep", &sweep, py::arg("spec"), py::arg("out"), py::arg("jobs"), py::arg("shard"), py::arg("restart"),
         py::arg("progress"));
-  m.def("converge", &converge, py::arg("scene"), py::arg("max_segments"), py::arg("modes"), py::arg("progress"));
-  m.def("compare", &compare, py::arg("scene"), py::arg("segments"), py::arg("bc"), py::arg("tip_mass"),
-        py::arg("component_modes"), py::arg("modes"), py::arg("topologies"), py::arg("progress"));
-  m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("margin"), py::arg("band_min_hz"),
-        py::arg("band_max_hz"), py::arg("progress"));
+  m.def("converge", &converge, py::arg("scene"), py::arg("options"), py::arg("progress"));
+  m.def("compare", &compare, py::arg("scene"), py::arg("segments"), py::arg("options"), py::arg("progress"));
+  m.def("check", &check, py::arg("scene"), py::arg("segments"), py::arg("options"), py::arg("progress"));
+  // The declared verbs' option lists (sim/app/verbs.hpp), for __init__.py's signatures and
+  // docstrings and the test that holds them to the command line's --help.
+  m.def("declared_verbs", [] {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& v : mmv::app::declaredVerbs()) out.emplace_back(v.name, v.summary);
+    return out;
+  });
+  m.def("options", [](const std::string& verb) {
+    try {
+      return mmv::python::describeForPython(mmv::app::declaredVerb(verb).options());
+    } catch (const std::out_of_range&) {
+      throw mmv::UsageError("options: no declared verb '" + mmv::printable(verb) + "'");
+    }
+  }, py::arg("verb"));
   defineFieldLists(m);  // python/field_lists.cpp
   defineUpdate(m);      // python/update_binding.cpp
-  m.def("sweep_config", &sweepConfig, py::arg("scene"), py::arg("segments"), py::arg("grids"), py::arg("modes"),
-        py::arg("component_modes"), py::arg("bc"), py::arg("tip_mass"), py::arg("method"), py::arg("progress"));
+  m.def("sweep_config", &sweepConfig, py::arg("scene"), py::arg("segments"), py::arg("options"), py::arg("progress"));
   m.def("trade", &trade, py::arg("scene"), py::arg("segments"), py::arg("integrators"), py::arg("accuracies"),
         py::arg("segment_ladder"), py::arg("modes_ladder"), py::arg("modes_accuracies"), py::arg("points"),
         py::arg("duration"), py::arg("target_error"), py::arg("all"), py::arg("run_budget"), py::arg("time_budget"),

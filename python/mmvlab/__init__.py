@@ -19,8 +19,10 @@ See docs/python.md.
 """
 
 import csv as _csv
+import inspect as _inspect
 import io as _io
 import json as _json
+import textwrap as _textwrap
 import warnings as _warnings
 
 import numpy as _np
@@ -321,44 +323,71 @@ def mode_fields():
     return _mmvlab.mode_fields()
 
 
-@_documented
-def modes(scene, *, segments=0, modes=12, points=(), strains=(), error_estimate=True, target_error=0.0, time_budget=0.0,
-          progress=None):
-    """`mmvlab modes`: the static equilibrium with the torquers holding and the system modes about it.
+# The verbs whose options are declared once in the library (sim/app/verbs.hpp): each
+# function's signature, defaults and docstring are made from `_mmvlab.options(verb)`,
+# the list the command line's options and --help are made from too, and its keyword
+# arguments are read by that list (an unknown one is a TypeError, a value out of its
+# range a UsageError naming it, as the study checks it once for both fronts).
+_DECLARED_TYPES = {"bool": "bool", "int": "int", "float": "float", "str": "str", "list[str]": "str or sequence of str",
+                   "list[int]": "sequence of int", "list[float]": "sequence of float", "band": "(float, float)"}
 
-    Parameters
-    ----------
-    @scene
-    @segments
-    modes : int
-        Modes reported (0: all).
-    points : sequence of str
-        Points or stations whose mode shapes are reported (`link1.tip`, `link1@0.75`,
-        `link2@1.2m`), as `--points`.
-    strains : str or sequence of str
-        "A:B" spans (stations) whose modal bending strain each mode reports (`--strain`).
-    error_estimate : bool
-        Estimate each frequency's discretization error (False: `--no-error-estimate`).
-    target_error : float
-        Relative frequency error (0 < E < 1; 0: off): the fewest segments holding every
-        mode shown within it (`--target-error`).
-    time_budget : float
-        Wall seconds `target_error` may take choosing the segments (0: no limit).
-    @progress
 
-    Returns
-    -------
-    ModesResult
-        `frequencies_hz` (Hz), `modal_masses_kg`, `shapes` (m or rad per unit modal
-        coordinate), `.json` (modes --json), `.text`, `table()`.
-    """
-    if isinstance(strains, str):
-        strains = [strains]
-    json_text, text, csv, warns = _mmvlab.modes(scene, int(segments), int(modes), list(points), [str(s) for s in strains],
-                                                bool(error_estimate),
-                                                float(target_error), float(time_budget), progress)
-    _warn(warns)
-    return ModesResult(json_text, text, csv)
+def _python_default(option):
+    d = option["default"]
+    return tuple(d) if isinstance(d, list) else d
+
+
+def _wrapped(text, indent):
+    return _textwrap.fill(text, 88, initial_indent=indent, subsequent_indent=indent, break_on_hyphens=False,
+                          break_long_words=False)
+
+
+def _declared(verb, result, returns, *, segments=True):
+    """The function of a declared verb: `result(json, text, third)` of what the native
+    study returns, its docstring from the declaration and `returns`."""
+    options = _mmvlab.options(verb)
+    summary = dict(_mmvlab.declared_verbs())[verb]
+    P = _inspect.Parameter
+    params = [P("scene", P.POSITIONAL_OR_KEYWORD)]
+    params += [P(o["key"], P.POSITIONAL_OR_KEYWORD) for o in options if o["required"]]
+    if segments:
+        params.append(P("segments", P.KEYWORD_ONLY, default=0))
+    params += [P(o["key"], P.KEYWORD_ONLY, default=_python_default(o)) for o in options if not o["required"]]
+    params.append(P("progress", P.KEYWORD_ONLY, default=None))
+    signature = _inspect.Signature(params)
+    native = getattr(_mmvlab, verb.replace("-", "_"))
+    name = verb.replace("-", "_")
+
+    def study(*args, **kwargs):
+        given = signature.bind(*args, **kwargs).arguments  # what the caller gave, by name
+        scene = given.pop("scene")
+        progress = given.pop("progress", None)
+        if segments:
+            json_text, text, third, warns = native(scene, int(given.pop("segments", 0)), given, progress)
+        else:
+            json_text, text, third, warns = native(scene, given, progress)
+        _warn(warns)
+        return result(json_text, text, third)
+
+    lines = [f"`mmvlab {verb}`: {summary}.", "", "Parameters", "----------", "@scene"]
+    shown = [o for o in options if o["required"]] + ([None] if segments else []) + [o for o in options if not o["required"]]
+    for o in shown:
+        if o is None:
+            lines.append("@segments")
+            continue
+        lines.append(f"{o['key']} : {_DECLARED_TYPES[o['type']]}")
+        lines += _wrapped(f"{o['help']} (`{o['flag']}`)", "    ").split("\n")
+    lines += ["@progress", "", "Returns", "-------", result.__name__] + _wrapped(returns, "    ").split("\n")
+    study.__name__ = study.__qualname__ = name
+    study.__module__ = __name__
+    study.__signature__ = signature
+    study.__doc__ = "\n".join(("    " + line if line and i > 0 else line) for i, line in enumerate(lines))
+    return _documented(study)
+
+
+modes = _declared("modes", ModesResult,
+                  "`frequencies_hz` (Hz), `modal_masses_kg`, `shapes` (m or rad per unit modal coordinate), `.json` "
+                  "(modes --json), `.text`, `table()`.")
 
 
 class FrfResult(Result):
@@ -619,41 +648,7 @@ class ConfigSweepResult(Result):
         self.points = self.json["points"]
 
 
-@_documented
-def sweep_config(scene, grids, *, segments=0, modes=6, component_modes=4, bc="clamped-free", tip_mass="torquer",
-                 method="assumed", progress=None):
-    """`mmvlab sweep-config`: system modes over a grid of joint angles, tracked by shape.
-
-    Parameters
-    ----------
-    @scene
-    grids : str or sequence of str
-        One or two "JOINT:FROM_DEG:TO_DEG:STEP_DEG" (degrees).
-    @segments
-    modes : int
-        Modes tracked, 1 .. 100.
-    component_modes : int
-        Modes per link in the synthesis, 1 .. 200.
-    bc : str
-        Component boundary condition (assumed modes).
-    tip_mass : str
-        Component tip mass: torquer, outboard, none.
-    method : str
-        Synthesis: assumed or craig-bampton.
-    @progress
-
-    Returns
-    -------
-    ConfigSweepResult
-        `points`, `table[column]`, `columns`, `csv`.
-    """
-    if isinstance(grids, str):
-        grids = [grids]
-    json_text, text, csv, warns = _mmvlab.sweep_config(scene, int(segments), [str(g) for g in grids], int(modes),
-                                                       int(component_modes), str(bc), str(tip_mass), str(method),
-                                                       progress)
-    _warn(warns)
-    return ConfigSweepResult(json_text, text, csv)
+sweep_config = _declared("sweep-config", ConfigSweepResult, "`points`, `table[column]`, `columns`, `csv`.")
 
 
 class TradeResult(Result):
@@ -816,86 +811,11 @@ class CompareResult(Result):
         return _columns(records, [f for f in fields("compare_synthesis") if f["csv"]])
 
 
-@_documented
-def converge(scene, *, max_segments=64, modes=6, progress=None):
-    """`mmvlab converge`: each mode's frequency at 1, 2, 4, ... segments per link.
-
-    Parameters
-    ----------
-    @scene
-    max_segments : int
-        The finest mesh, 1 .. 1024 (a power of two is reached).
-    modes : int
-        Modes tabulated, 1 .. 1000.
-    @progress
-
-    Returns
-    -------
-    ConvergeResult
-        `segments`, `frequencies_hz[mesh, mode]` (Hz), `richardson_hz`, `.csv`.
-    """
-    json_text, text, csv = _mmvlab.converge(scene, int(max_segments), int(modes), progress)
-    return ConvergeResult(json_text, text, csv)
-
-
-@_documented
-def compare(scene, *, segments=0, bc="clamped-free", tip_mass="torquer", component_modes=4, modes=10, topologies=(),
-            progress=None):
-    """`mmvlab compare`: component modes of each link alone against the system modes.
-
-    Parameters
-    ----------
-    @scene
-    @segments
-    bc : str
-        Component boundary condition: clamped-free, pinned-free, free-free,
-        clamped-pinned, pinned-pinned.
-    tip_mass : str
-        torquer, outboard, none, or "MASS_KG[,INERTIA_KG_M2]".
-    component_modes : int
-        Modes per link in the synthesis, 1 .. 200.
-    modes : int
-        System modes compared, 1 .. 500.
-    topologies : sequence of str
-        "open", "closed" or both (empty: the scene's).
-    @progress
-
-    Returns
-    -------
-    CompareResult
-        `.json` (compare --json), `.markdown`, `table()`, `synthesis_table()`.
-    """
-    json_text, text, markdown, warns = _mmvlab.compare(scene, int(segments), str(bc), str(tip_mass), int(component_modes),
-                                                       int(modes), [str(t) for t in topologies], progress)
-    _warn(warns)
-    return CompareResult(json_text, text, markdown)
-
-
-@_documented
-def check(scene, *, segments=0, margin=20.0, band_hz=(0.1, 50.0), progress=None):
-    """`mmvlab check`: the feasibility report (torquers, gimbal, table, modes, sensors, lab).
-
-    Parameters
-    ----------
-    @scene
-    @segments
-    margin : float
-        Required margin, 0 .. 99 %: a smaller one is a warning.
-    band_hz : (float, float)
-        The modes of interest, Hz.
-    @progress
-
-    Returns
-    -------
-    CheckResult
-        `.json` (check.json: demand, capacity, margin and verdict per line), `.markdown`, `table()`.
-    """
-    if len(band_hz) != 2:
-        raise UsageError(f"band_hz: expected (f_min_hz, f_max_hz) (got {band_hz!r})")
-    json_text, text, markdown, warns = _mmvlab.check(scene, int(segments), float(margin), float(band_hz[0]),
-                                                     float(band_hz[1]), progress)
-    _warn(warns)
-    return CheckResult(json_text, text, markdown)
+converge = _declared("converge", ConvergeResult,
+                     "`segments`, `frequencies_hz[mesh, mode]` (Hz), `richardson_hz`, `.csv`.", segments=False)
+compare = _declared("compare", CompareResult, "`.json` (compare --json), `.markdown`, `table()`, `synthesis_table()`.")
+check = _declared("check", CheckResult,
+                  "`.json` (check.json: demand, capacity, margin and verdict per line), `.markdown`, `table()`.")
 
 
 @_documented

@@ -12,7 +12,7 @@ namespace {
 
 /// JOINT:FROM:TO:STEP, angles in degrees, checked against the scene's joints.
 GridAxis parseGrid(const std::string& text, const ArticleScene& scene, Front front) {
-  const std::string option = optionName(front, "--grid");
+  const std::string option = declaredName<ConfigSweepParams>("grids", front);
   std::vector<std::string> parts;
   std::stringstream ss(text);
   for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
@@ -43,20 +43,17 @@ GridAxis parseGrid(const std::string& text, const ArticleScene& scene, Front fro
 }  // namespace
 
 ConfigSweepStudy runConfigSweepStudy(const Scene& scene, const ConfigSweepRequest& r) {
+  checkOptions<ConfigSweepParams>(r, r.front);
   const ArticleScene& article = articleOf(scene, "sweep-config");
-  const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
+  const auto opt = [&](const char* key) { return declaredName<ConfigSweepParams>(key, r.front); };
   ConfigSweepOptions o;
-  if (r.grids.empty() || r.grids.size() > 2) throw UsageError(opt("--grid") + ": give one or two grids");
+  if (r.grids.empty() || r.grids.size() > 2) throw UsageError(opt("grids") + ": give one or two grids");
   for (const auto& g : r.grids) o.axes.push_back(parseGrid(g, article, r.front));
   if (o.axes.size() == 2 && o.axes[0].joint == o.axes[1].joint)
-    throw UsageError(opt("--grid") + ": the two grids name the same joint");
-  checkRange(r.front, "--modes", r.modes, 1, 100);
-  checkRange(r.front, "--component-modes", r.component_modes, 1, 200);
+    throw UsageError(opt("grids") + ": the two grids name the same joint");
   o.modes = r.modes;
   parseComponentOptions(r.bc, r.tip_mass, r.front, o.synthesis.component);
-  if (r.method == "assumed") o.synthesis.method = CmsMethod::AssumedModes;
-  else if (r.method == "craig-bampton") o.synthesis.method = CmsMethod::CraigBampton;
-  else throw UsageError(opt("--method") + ": unknown method '" + r.method + "' (known: assumed, craig-bampton)");
+  o.synthesis.method = r.method == "craig-bampton" ? CmsMethod::CraigBampton : CmsMethod::AssumedModes;  // declared choices
   o.synthesis.modes_per_link = r.component_modes;
   ConfigSweepStudy s{runConfigSweep(article, o), {}, {}, {}};
   s.json = configSweepJson(s.result);

@@ -18,22 +18,19 @@ namespace mmv::app {
 namespace {
 
 void checkRequest(const ModesRequest& r, bool article) {
-  const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
-  if (r.modes < 0) throw UsageError(strf("%s: expected 0 (all) or more modes (got %d)", opt("--modes").c_str(), r.modes));
-  if (!(r.target_error >= 0) || !(r.time_budget >= 0))
-    throw UsageError(opt("--target-error") + " and " + opt("--time-budget") + " are positive numbers");
+  checkOptions<ModesParams>(r, r.front);
+  const auto opt = [&](const char* key) { return declaredName<ModesParams>(key, r.front); };
   if (!article && (r.target_error > 0 || r.time_budget > 0))
-    throw UsageError(opt("--target-error") + " applies to the article's scenes (HAM-SAS has no segments)");
+    throw UsageError(opt("target_error") + " applies to the article's scenes (HAM-SAS has no segments)");
   if (r.target_error > 0) {
-    if (!(r.target_error < 1))
-      throw UsageError(strf("%s: a relative frequency error in (0, 1) (got %g)", opt("--target-error").c_str(), r.target_error));
-    if (r.segments_given) throw UsageError(opt("--target-error") + " chooses the segments per link: drop " + opt("--segments"));
+    if (r.segments_given) throw UsageError(opt("target_error") + " chooses the segments per link: drop " + optionName(r.front, "--segments"));
     if (r.modes == 0)
-      throw UsageError(opt("--target-error") + " holds the modes shown to it: give " + opt("--modes") + " N (N >= 1), not 0");
+      throw UsageError(opt("target_error") + " holds the modes shown to it: give " + opt("modes") + " N (N >= 1), not 0");
     if (!r.error_estimate)
-      throw UsageError(opt("--target-error") + " needs the error estimate: drop " + opt("--no-error-estimate"));
+      throw UsageError(opt("target_error") + " needs the error estimate: " +
+                       (r.front == Front::Cli ? "drop " + opt("error_estimate") : opt("error_estimate") + "=False is not allowed"));
   } else if (r.time_budget > 0) {
-    throw UsageError(opt("--time-budget") + " applies to " + opt("--target-error") + " only");
+    throw UsageError(opt("time_budget") + " applies to " + opt("target_error") + " only");
   }
 }
 
@@ -46,9 +43,9 @@ ModesStudy articleModes(ArticleScene scene, const ModesRequest& r) {
   ModesOptions opt;
   opt.max_modes = r.modes;
   opt.with_shapes = true;  // the JSON on stdout and in --out is one object: shapes in both
-  opt.points = checkedPoints(r.points, scene.article, optionName(r.front, "--points"));
+  opt.points = checkedPoints(r.points, scene.article, declaredName<ModesParams>("points", r.front));
   for (const std::string& text : r.strains) {
-    const std::string what = optionName(r.front, "--strain") + " " + text;
+    const std::string what = declaredName<ModesParams>("strains", r.front) + " " + text;
     const auto p = split(text, ':');
     const std::optional<bool> out = p.size() == 3 ? strainBendsOutOfPlane(p[2]) : std::optional<bool>(false);
     if (p.size() < 2 || p.size() > 3 || !out)
@@ -83,8 +80,8 @@ ModesStudy runModesStudy(const Scene& scene, const ModesRequest& r) {
     s = articleModes(*article, r);
   } else {
     const auto& h = std::get<HamsasScene>(scene);
-    if (!r.points.empty()) throw UsageError(optionName(r.front, "--points") + " applies to the article's scenes");
-    if (!r.strains.empty()) throw UsageError(optionName(r.front, "--strain") + " applies to the article's scenes");
+    if (!r.points.empty()) throw UsageError(declaredName<ModesParams>("points", r.front) + " applies to the article's scenes");
+    if (!r.strains.empty()) throw UsageError(declaredName<ModesParams>("strains", r.front) + " applies to the article's scenes");
     const HamsasModes m = analyseHamsas(h.isolator);
     s.json = hamsasModesJson(h, m, r.modes);
     s.text = hamsasModesText(h, m, r.modes);

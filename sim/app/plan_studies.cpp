@@ -16,15 +16,12 @@
 namespace mmv::app {
 
 CheckStudy runCheckStudy(const Scene& scene, const CheckRequest& r) {
-  checkRange(r.front, "--margin", r.margin_pct, 0, 99);
-  if (!(r.band_min_hz >= 0) || !(r.band_max_hz > r.band_min_hz) || !std::isfinite(r.band_max_hz))
-    throw UsageError(strf("%s: expected 0 <= F_MIN_HZ < F_MAX_HZ (got %g:%g)", optionName(r.front, "--band").c_str(),
-                          r.band_min_hz, r.band_max_hz));
+  checkOptions<CheckParams>(r, r.front);
   const ArticleScene& article = articleOf(scene, "check");
   CheckOptions opt;
-  opt.required_margin_pct = r.margin_pct;
-  opt.band_min_hz = r.band_min_hz;
-  opt.band_max_hz = r.band_max_hz;
+  opt.required_margin_pct = r.margin;
+  opt.band_min_hz = r.band.min_hz;
+  opt.band_max_hz = r.band.max_hz;
   CheckStudy s{runCheck(article, opt), {}, {}, {}};
   s.json = checkJson(s.report);
   s.text = checkText(s.report);

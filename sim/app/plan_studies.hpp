@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/app/options.hpp"
 #include "sim/app/study.hpp"
 #include "sim/hamsas/hamsas_modes.hpp"
 #include "sim/io/mat_file.hpp"
@@ -17,9 +18,19 @@
 
 namespace mmv::app {
 
-struct CheckRequest {
-  double margin_pct = 20;                      ///< a margin below it is a warning; 0 .. 99.
-  double band_min_hz = 0.1, band_max_hz = 50;  ///< the modes of interest; 0 <= min < max.
+/// `check`'s options, declared once (sim/app/options.hpp).
+struct CheckParams {
+  double margin = 20;     ///< %: a margin below it is a warning.
+  Band band{0.1, 50};     ///< Hz: the modes of interest.
+
+  template <class S, class V>
+  static void fields(S& s, V&& v) {
+    v(s.margin, Option("margin", "Required margin: a smaller one is a warning").unit("%").range(0, 99));
+    v(s.band, Option("band_hz", "The modes of interest, F_MIN_HZ:F_MAX_HZ (report: 0.1-50 Hz)").unit("Hz").flag("--band"));
+  }
+};
+
+struct CheckRequest : CheckParams {
   Front front = Front::Cli;
 };
 

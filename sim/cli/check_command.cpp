@@ -11,9 +11,7 @@ namespace mmv::cli {
 int runCheckCommand(const CheckArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
-    app::CheckRequest r;
-    r.margin_pct = args.margin;
-    std::tie(r.band_min_hz, r.band_max_hz) = parseBand(args.band);
+    const auto r = declaredRequest<app::CheckRequest>(args);
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const app::CheckStudy s = app::runCheckStudy(scene, r);

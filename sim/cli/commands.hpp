@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/cli/huge_pages.hpp"
+#include "sim/app/component_studies.hpp"
+#include "sim/app/config_sweep_study.hpp"
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
@@ -56,48 +58,35 @@ struct SceneArgs {
   std::set<std::string> given;    ///< the options given on the command line ("--duration"), filled by main
 };
 
-struct ModesArgs : SceneArgs {
-  bool json = false;
-  int modes = 12;  ///< modes to report; 0 = all.
-  std::vector<std::string> points;  ///< named points or stations whose shapes are tabulated.
-  std::vector<std::string> strains;  ///< A:B spans whose modal strain is tabulated (--strain)
-  bool no_error_estimate = false;   ///< skip the coarser solutions (estimateDiscretization)
-  double target_error = 0;          ///< > 0: choose the segments for this relative frequency error (segmentsForTarget)
-  double time_budget = 0;           ///< s; > 0: --target-error within it
-  std::string out;                  ///< modes.txt, modes.json, modes.csv here.
-  bool force = false;
+/// What every verb that writes a result takes besides its declared options: --json,
+/// --out DIR and --force.
+struct OutputArgs {
+  bool json = false;   ///< print JSON instead of text
+  std::string out;     ///< also write the verb's files here
+  bool force = false;  ///< replace files of the same names in --out
 };
 
-struct ConvergeArgs : SceneArgs {
-  bool json = false;
-  int max_segments = 64;
-  int modes = 6;
-  std::string out;  ///< converge.txt, converge.json, converge.csv, convergence.png here.
-  bool force = false;
+/// A verb's command line: the scene's options, the output's and the verb's own, declared
+/// once in sim/app (sim/app/options.hpp) and added by sim/cli/declared_options.hpp.
+template <class Options>
+struct DeclaredArgs : SceneArgs, OutputArgs {
+  Options options;
 };
 
-struct CompareArgs : SceneArgs {
-  bool json = false;
-  std::string bc = "clamped-free";
-  std::string tip_mass = "torquer";
-  int component_modes = 4;
-  int modes = 10;
-  std::vector<std::string> topologies;
-  std::string out;
-  bool force = false;
-};
+/// The study's request of a declared verb: its options as parsed (the request derives
+/// from them), for the study to check.
+template <class Request, class Options>
+Request declaredRequest(const DeclaredArgs<Options>& a) {
+  Request r;
+  static_cast<Options&>(r) = a.options;
+  return r;
+}
 
-struct ConfigSweepArgs : SceneArgs {
-  bool json = false;
-  std::vector<std::string> grids;  ///< JOINT:FROM:TO:STEP (deg), one or two.
-  int modes = 6;
-  int component_modes = 4;
-  std::string bc = "clamped-free";
-  std::string tip_mass = "torquer";
-  std::string method = "assumed";
-  std::string out;
-  bool force = false;
-};
+using ModesArgs = DeclaredArgs<app::ModesParams>;
+using ConvergeArgs = DeclaredArgs<app::ConvergeParams>;
+using CompareArgs = DeclaredArgs<app::CompareParams>;
+using ConfigSweepArgs = DeclaredArgs<app::ConfigSweepParams>;
+using CheckArgs = DeclaredArgs<app::CheckParams>;
 
 struct LinearArgs : SceneArgs {
   std::vector<std::string> inputs, outputs;  ///< see docs/outputs.md; empty: defaults.
@@ -190,14 +179,6 @@ struct ReportArgs : SceneArgs {
   int modes = 12;         ///< rows of the mode table
   int sensors = 8;        ///< the sensor plan's count (place-sensors --count)
   std::string band = "0.1:50";  ///< Hz: check's band; the sensor plan's target modes are those in it
-};
-
-struct CheckArgs : SceneArgs {
-  bool json = false;
-  double margin = 20;      ///< %: a margin below it is a warning.
-  std::string band = "0.1:50";  ///< Hz: the modes of interest.
-  std::string out;         ///< check.md and check.json here.
-  bool force = false;
 };
 
 struct CorrelateArgs : SceneArgs {

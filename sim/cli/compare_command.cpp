@@ -30,12 +30,7 @@ void macPng(const std::string& path, const SynthesisResult& s, const std::string
 int runCompareCommand(const CompareArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
-    app::CompareRequest r;
-    r.bc = args.bc;
-    r.tip_mass = args.tip_mass;
-    r.component_modes = args.component_modes;
-    r.modes = args.modes;
-    r.topologies = args.topologies;
+    const auto r = declaredRequest<app::CompareRequest>(args);
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);  // fail early, before the work
     const app::CompareStudy s = app::runCompareStudy(scene, r);

@@ -115,13 +115,7 @@ void plots(OutputDir& out, const ConfigSweepResult& r, const std::string& scene_
 int runConfigSweepCommand(const ConfigSweepArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
-    app::ConfigSweepRequest r;
-    r.grids = args.grids;
-    r.modes = args.modes;
-    r.component_modes = args.component_modes;
-    r.bc = args.bc;
-    r.tip_mass = args.tip_mass;
-    r.method = args.method;
+    const auto r = declaredRequest<app::ConfigSweepRequest>(args);
     std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
     if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
     const app::ConfigSweepStudy s = app::runConfigSweepStudy(scene, r);

@@ -6,7 +6,9 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "sim/app/verbs.hpp"
 #include "sim/cli/commands.hpp"
+#include "sim/cli/declared_options.hpp"
 #include "sim/cli/progress.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/cli/figures.hpp"
@@ -58,79 +60,23 @@ void addSceneOptions(CLI::App* cmd, mmv::cli::SceneArgs& a) {
                 "Refuse a scene with an implausible value (a likely unit slip, warned on stderr otherwise): exit 65");
 }
 
-/// `mmvlab modes` and its options.
-CLI::App* addModesCommand(CLI::App& app, ModesArgs& modes) {
-  CLI::App* m = app.add_subcommand("modes", "Static equilibrium with the torquers holding, then the system modes");
-  addSceneOptions(m, modes);
-  m->add_flag("--json", modes.json, "Print JSON (docs/outputs.md) instead of tables");
-  m->add_option("--modes", modes.modes, "Number of modes to report (0: all)")->capture_default_str()->check(positive(true));
-  m->add_option("--points", modes.points,
-                "Comma-separated points or stations whose mode shapes are tabulated, e.g. link1@0.5,link3a@0.762m,link2.tip")
-      ->delimiter(',');
-  m->add_option("--strain", modes.strains,
-                "A:B[:in|out], two stations of one link (repeatable): each mode's mean surface strain over the span (a film's or gauge's "
-                "reading per unit modal coordinate), in the plane or out of it (spatial model), e.g. link3a@0.1m:link3a@0.5m");
-  m->add_flag("--no-error-estimate", modes.no_error_estimate,
-              "Skip each mode's discretization error estimate (the scene solved again with segments / 2 and / 4)");
-  m->add_option("--target-error", modes.target_error,
-                "Relative frequency error each of the --modes modes must meet, e.g. 1e-3: the fewest segments per link "
-                "(1, 2, 4, ... 256) whose Richardson estimate meets it are chosen")
-      ->check(CLI::Range(1e-12, 0.5));
-  m->add_option("--time-budget", modes.time_budget, "Wall seconds --target-error may take choosing the segments")
-      ->check(positive());
-  m->add_option("--out", modes.out, "Also write modes.txt, modes.json, modes.csv (one row per mode) and modes.vtp (the article and its mode shapes for ParaView) here");
-  m->add_flag("--force", modes.force, "Replace files of the same names in --out");
-  return m;
+/// --json, --out and --force; `out_help` names the files --out receives.
+void addOutputOptions(CLI::App* cmd, OutputArgs& a, const std::string& out_help, const char* json_help = "Print JSON instead of tables") {
+  cmd->add_flag("--json", a.json, json_help);
+  cmd->add_option("--out", a.out, out_help);
+  cmd->add_flag("--force", a.force, "Replace files of the same names in --out");
 }
 
-/// `mmvlab converge` and its options.
-CLI::App* addConvergeCommand(CLI::App& app, ConvergeArgs& conv) {
-  CLI::App* c = app.add_subcommand("converge", "Frequencies against segments per link (1, 2, 4, ...), Richardson error, time");
-  addSceneOptions(c, conv);
-  c->add_flag("--json", conv.json, "Print JSON instead of tables");
-  c->add_option("--max-segments", conv.max_segments, "Finest segment count, 1 .. 1024 (a power of two is reached)")
-      ->capture_default_str();
-  c->add_option("--modes", conv.modes, "Number of modes to tabulate, 1 .. 1000")->capture_default_str();
-  c->add_option("--out", conv.out, "Also write converge.txt, converge.json, converge.csv and convergence.png here");
-  c->add_flag("--force", conv.force, "Replace files of the same names in --out");
-  return c;
-}
-
-/// `mmvlab compare` and its options.
-CLI::App* addCompareCommand(CLI::App& app, CompareArgs& cmp) {
-  CLI::App* cp = app.add_subcommand(
-      "compare", "Component modes (report Table 2) against system modes (Table 3), synthesis errors and MAC");
-  addSceneOptions(cp, cmp);
-  cp->add_flag("--json", cmp.json, "Print JSON instead of tables");
-  cp->add_option("--bc", cmp.bc, "Component boundary condition: clamped-free, pinned-free, free-free, clamped-pinned, pinned-pinned")
-      ->capture_default_str();
-  cp->add_option("--tip-mass", cmp.tip_mass, "Component tip mass: torquer (the report's TREETOPS choice), outboard, none, or MASS_KG[,INERTIA_KG_M2]")
-      ->capture_default_str();
-  cp->add_option("--component-modes", cmp.component_modes, "Modes per link in the synthesis, 1 .. 200")->capture_default_str();
-  cp->add_option("--modes", cmp.modes, "System modes compared, 1 .. 500")->capture_default_str();
-  cp->add_option("--topology", cmp.topologies, "open, closed, or open,closed (side by side)")->delimiter(',');
-  cp->add_option("--out", cmp.out, "Also write compare.md, CSV, JSON and MAC heat maps (PNG) into this directory");
-  cp->add_flag("--force", cmp.force, "Replace files of the same names in --out");
-  return cp;
-}
-
-/// `mmvlab sweep-config` and its options.
-CLI::App* addConfigSweepCommand(CLI::App& app, ConfigSweepArgs& sw) {
-  CLI::App* sp = app.add_subcommand(
-      "sweep-config", "System modes and synthesis error over a grid of joint angles, modes tracked by shape");
-  addSceneOptions(sp, sw);
-  sp->add_option("--grid", sw.grids, "JOINT:FROM_DEG:TO_DEG:STEP_DEG; give it once (a line) or twice (a 2-D grid)")
-      ->required()
-      ->allow_extra_args(false);  // one value per --grid: a scene path after it is the scene
-  sp->add_option("--modes", sw.modes, "Modes tracked, 1 .. 100")->capture_default_str();
-  sp->add_option("--method", sw.method, "Synthesis: assumed or craig-bampton")->capture_default_str();
-  sp->add_option("--bc", sw.bc, "Component boundary condition (assumed modes)")->capture_default_str();
-  sp->add_option("--tip-mass", sw.tip_mass, "Component tip mass: torquer, outboard, none")->capture_default_str();
-  sp->add_option("--component-modes", sw.component_modes, "Modes per link in the synthesis, 1 .. 200")->capture_default_str();
-  sp->add_flag("--json", sw.json, "Print JSON instead of tables");
-  sp->add_option("--out", sw.out, "Also write sweep.csv, sweep.json and PNG plots into this directory");
-  sp->add_flag("--force", sw.force, "Replace files of the same names in --out");
-  return sp;
+/// A declared verb's subcommand (sim/app/verbs.hpp): its summary, the scene's options, its
+/// own (sim/cli/declared_options.hpp) and the output's.
+template <class Options>
+CLI::App* addDeclaredCommand(CLI::App& app, const std::string& name, DeclaredArgs<Options>& a) {
+  const mmv::app::VerbDeclaration& verb = mmv::app::declaredVerb(name);
+  CLI::App* cmd = app.add_subcommand(name, verb.summary);
+  addSceneOptions(cmd, a);
+  addDeclaredOptions(cmd, a.options);
+  addOutputOptions(cmd, a, "Also write " + verb.outputs + " here", "Print JSON (docs/outputs.md) instead of tables");
+  return cmd;
 }
 
 /// `mmvlab frf` and `mmvlab rom` (one set of options).
@@ -296,18 +242,6 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& r) {
   return c;
 }
 
-/// `mmvlab check` and its options.
-CLI::App* addCheckCommand(CLI::App& app, CheckArgs& ck) {
-  CLI::App* c = app.add_subcommand("check", "Feasibility: torquers, gimbal, table, modes, sensors, lab; demand, capacity, margin, verdict");
-  addSceneOptions(c, ck);
-  c->add_flag("--json", ck.json, "Print JSON instead of the table");
-  c->add_option("--margin", ck.margin, "Required margin, 0 .. 99 %: a smaller one is a warning")->capture_default_str();
-  c->add_option("--band", ck.band, "The modes of interest, F_MIN_HZ:F_MAX_HZ (report: 0.1-50 Hz)")->capture_default_str();
-  c->add_option("--out", ck.out, "Also write check.md (Markdown), check.json and check.csv here");
-  c->add_flag("--force", ck.force, "Replace files of the same names in --out");
-  return c;
-}
-
 /// `mmvlab correlate` and its options.
 CLI::App* addCorrelateCommand(CLI::App& app, CorrelateArgs& co) {
   CLI::App* c = app.add_subcommand(
@@ -426,13 +360,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   ModesArgs modes;
-  CLI::App* m = addModesCommand(app, modes);
+  CLI::App* m = addDeclaredCommand(app, "modes", modes);
   ConvergeArgs conv;
-  CLI::App* c = addConvergeCommand(app, conv);
+  CLI::App* c = addDeclaredCommand(app, "converge", conv);
   CompareArgs cmp;
-  CLI::App* cp = addCompareCommand(app, cmp);
+  CLI::App* cp = addDeclaredCommand(app, "compare", cmp);
   ConfigSweepArgs sw;
-  CLI::App* sp = addConfigSweepCommand(app, sw);
+  CLI::App* sp = addDeclaredCommand(app, "sweep-config", sw);
   LinearArgs lin;
   const auto [fr, ro] = addLinearCommands(app, lin);
   SimulateArgs sim;
@@ -445,7 +379,7 @@ int main(int argc, char** argv) {
   CLI::App* rn = addRenderCommand(app, rd);
 
   CheckArgs ck;
-  CLI::App* ch = addCheckCommand(app, ck);
+  CLI::App* ch = addDeclaredCommand(app, "check", ck);
   CorrelateArgs co;
   CLI::App* cr = addCorrelateCommand(app, co);
   UpdateArgs up;

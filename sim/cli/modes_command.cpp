@@ -48,13 +48,7 @@ void convergencePlot(OutputDir& out, const ConvergenceStudy& c) {
 int runModesCommand(const ModesArgs& args) {
   return guarded([&]() -> int {
     const Scene scene = loadScene(args);
-    app::ModesRequest r;
-    r.modes = args.modes;
-    r.points = args.points;
-    r.strains = args.strains;
-    r.error_estimate = !args.no_error_estimate;
-    r.target_error = args.target_error;
-    r.time_budget = args.time_budget;
+    auto r = declaredRequest<app::ModesRequest>(args);
     r.segments_given = args.segments.has_value();
     std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
     if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
@@ -74,9 +68,7 @@ int runModesCommand(const ModesArgs& args) {
 int runConvergeCommand(const ConvergeArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
-    app::ConvergeRequest r;
-    r.max_segments = args.max_segments;
-    r.modes = args.modes;
+    const auto r = declaredRequest<app::ConvergeRequest>(args);
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const app::ConvergeStudy s = app::runConvergeStudy(scene, r);

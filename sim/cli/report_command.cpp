@@ -186,7 +186,8 @@ Parts runParts(const ReportArgs& a, const Scene& loaded) {
   {
     const ProgressStage stage("report: check");
     app::CheckRequest r;
-    std::tie(r.band_min_hz, r.band_max_hz) = parseBand(a.band);
+    const auto [lo, hi] = parseBand(a.band);
+    r.band = {lo, hi};
     p.check = app::runCheckStudy(loaded, r);
   }
   {
