@@ -6,6 +6,7 @@
 // only converted here; their ranges are the study's to check, once.
 #include <pybind11/pybind11.h>
 
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -27,6 +28,17 @@ void readOption(py::handle value, const app::Option& o, std::vector<std::string>
 void readOption(py::handle value, const app::Option& o, std::vector<int>& out);
 void readOption(py::handle value, const app::Option& o, std::vector<double>& out);
 void readOption(py::handle value, const app::Option& o, app::Band& out);
+/// None: absent (the scene's setting); else the value.
+template <class T>
+void readOption(py::handle value, const app::Option& o, std::optional<T>& out) {
+  if (value.is_none()) {
+    out.reset();
+    return;
+  }
+  T v{};
+  readOption(value, o, v);
+  out = v;
+}
 
 /// `options` with each keyword of `kwargs` read into its declared field (the others keep
 /// their defaults); a keyword no field declares is a TypeError naming the closest ones.

@@ -221,23 +221,11 @@ py::array_t<double> table(const mmv::SimulationRecord& rec) {
   return a;
 }
 
-py::dict simulate(const PyScene& scene, int segments, const std::string& integrator, std::optional<double> accuracy,
-                  std::optional<double> absolute_tolerance, std::optional<double> duration, std::optional<double> sample_rate,
-                  bool verify, std::optional<double> verify_target, std::optional<double> target_error,
-                  const std::vector<std::string>& points, std::optional<double> time_budget, py::object progress) {
+py::dict simulate(const PyScene& scene, int segments, const py::dict& options, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   const mmv::Scene& sc = prepared.scene;
   mmv::app::SimulateRequest r;
-  r.integrator = integrator;
-  r.accuracy = accuracy;
-  r.absolute_tolerance = absolute_tolerance;
-  r.duration = duration;
-  r.sample_rate = sample_rate;
-  r.verify = verify;
-  r.verify_target = verify_target;
-  r.target_error = target_error;
-  r.points = points;
-  r.time_budget = time_budget;
+  mmv::python::readOptions(options, "simulate", r);
   r.front = Front::Python;
   const mmv::app::SimulateStudy s = released(progress, [&] { return mmv::app::runSimulateStudy(sc, r); });
   py::dict d;
@@ -424,9 +412,7 @@ PYBIND11_MODULE(_mmvlab, m) {
         py::arg("f_max"), py::arg("points"), py::arg("rom_modes"), py::arg("band"), py::arg("residualize"), py::arg("damping"),
         py::arg("rom_target"), py::arg("target_error"), py::arg("time_budget"), py::arg("rom"), py::arg("vary"),
         py::arg("progress"));
-  m.def("simulate", &simulate, py::arg("scene"), py::arg("segments"), py::arg("integrator"), py::arg("accuracy"),
-        py::arg("absolute_tolerance"), py::arg("duration"), py::arg("sample_rate"), py::arg("verify"),
-        py::arg("verify_target"), py::arg("target_error"), py::arg("points"), py::arg("time_budget"), py::arg("progress"));
+  m.def("simulate", &simulate, py::arg("scene"), py::arg("segments"), py::arg("options"), py::arg("progress"));
   m.def("sweep", &sweep, py::arg("spec"), py::arg("out"), py::arg("jobs"), py::arg("shard"), py::arg("restart"),
         py::arg("progress"));
   m.def("converge", &converge, py::arg("scene"), py::arg("options"), py::arg("progress"));

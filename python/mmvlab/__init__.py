@@ -329,7 +329,8 @@ def mode_fields():
 # arguments are read by that list (an unknown one is a TypeError, a value out of its
 # range a UsageError naming it, as the study checks it once for both fronts).
 _DECLARED_TYPES = {"bool": "bool", "int": "int", "float": "float", "str": "str", "list[str]": "str or sequence of str",
-                   "list[int]": "sequence of int", "list[float]": "sequence of float", "band": "(float, float)"}
+                   "list[int]": "sequence of int", "list[float]": "sequence of float", "band": "(float, float)",
+                   "float?": "float or None", "int?": "int or None", "str?": "str or None"}
 
 
 def _python_default(option):
@@ -342,9 +343,10 @@ def _wrapped(text, indent):
                           break_long_words=False)
 
 
-def _declared(verb, result, returns, *, segments=True):
+def _declared(verb, result, returns, *, segments=True, build=None):
     """The function of a declared verb: `result(json, text, third)` of what the native
-    study returns, its docstring from the declaration and `returns`."""
+    study returns (or `build(native_output)`), its docstring from the declaration and
+    `returns`."""
     options = _mmvlab.options(verb)
     summary = dict(_mmvlab.declared_verbs())[verb]
     P = _inspect.Parameter
@@ -363,9 +365,12 @@ def _declared(verb, result, returns, *, segments=True):
         scene = given.pop("scene")
         progress = given.pop("progress", None)
         if segments:
-            json_text, text, third, warns = native(scene, int(given.pop("segments", 0)), given, progress)
+            out = native(scene, int(given.pop("segments", 0)), given, progress)
         else:
-            json_text, text, third, warns = native(scene, given, progress)
+            out = native(scene, given, progress)
+        if build:
+            return build(out)
+        json_text, text, third, warns = out
         _warn(warns)
         return result(json_text, text, third)
 
@@ -558,59 +563,16 @@ class SimulateResult(Result):
         return _columns(self.json.get("sensors", []), fields("simulate_sensors"))
 
 
-def _optional(x):
-    return None if x is None else float(x)
-
-
-@_documented
-def simulate(scene, *, segments=0, integrator=None, accuracy=None, absolute_tolerance=None, duration=None,
-             sample_rate=None, verify=False, verify_target=None, target_error=None, points=(), time_budget=None,
-             progress=None):
-    """`mmvlab simulate`: the scene's time run (slews, table programs, free motion).
-
-    A None option keeps the scene's setting; a given one is checked (0 s is not "the scene's").
-
-    Parameters
-    ----------
-    @scene
-    @segments
-    integrator : str or None
-        rk_merson, rk3, cpodes, cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, ...
-    accuracy : float or None
-        The integrator's relative accuracy, in (0, 1).
-    absolute_tolerance : float or None
-        Its absolute tolerance (state units).
-    duration : float or None
-        Seconds of run time.
-    sample_rate : float or None
-        History rows per second.
-    verify : bool
-        Estimate the run's error by a run 10x tighter (`--verify`).
-    verify_target : float or None
-        The error (m) `verify` judges against.
-    target_error : float or None
-        Tip error (m): the cheapest integrator, tolerance, segments and modes that
-        meet it, chosen, run and verified.
-    points : sequence of str
-        Tips or stations the error is scored at (default: every tip).
-    time_budget : float or None
-        Wall seconds the `target_error` search may take.
-    @progress
-
-    Returns
-    -------
-    SimulateResult
-        `history[column]` (numpy, units in the column names, e.g. `time_s`), `states`,
-        `.json` (summary.json).
-    """
-    d = _mmvlab.simulate(scene, int(segments), "" if integrator is None else str(integrator), _optional(accuracy),
-                         _optional(absolute_tolerance), _optional(duration), _optional(sample_rate), bool(verify),
-                         _optional(verify_target), _optional(target_error), [str(p) for p in points],
-                         _optional(time_budget), progress)
+def _simulate_result(d):
     _warn(d["warnings"])
     result = SimulateResult(d)
     _warn(result.json.get("warnings", []), RunWarning)
     return result
+
+
+simulate = _declared("simulate", SimulateResult,
+                     "`history[column]` (numpy, units in the column names, e.g. `time_s`), `states`, `.json` "
+                     "(summary.json).", build=_simulate_result)
 
 
 def _csv_table(text, number=None):

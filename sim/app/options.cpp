@@ -18,18 +18,19 @@ std::string Option::cliFlag() const {
 
 bool Option::allows(double v) const {
   if (hasOff() && v == off_) return true;
-  return std::isfinite(v) && (open_low_ ? v > lo_ : v >= lo_) && v <= hi_;
+  return std::isfinite(v) && (open_low_ ? v > lo_ : v >= lo_) && (open_high_ ? v < hi_ : v <= hi_);
 }
 
 std::string Option::rangeText() const {
   if (!hasRange()) return "";
   std::string r;
-  if (std::isfinite(lo_) && std::isfinite(hi_) && !open_low_)
+  const std::string high = (open_high_ ? "below " : "at most ") + shortest(hi_);
+  if (std::isfinite(lo_) && std::isfinite(hi_) && !open_low_ && !open_high_)
     r = shortest(lo_) + " .. " + shortest(hi_);
   else if (std::isfinite(lo_))
-    r = (open_low_ ? "above " : "at least ") + shortest(lo_) + (std::isfinite(hi_) ? ", at most " + shortest(hi_) : "");
+    r = (open_low_ ? "above " : "at least ") + shortest(lo_) + (std::isfinite(hi_) ? ", " + high : "");
   else
-    r = "at most " + shortest(hi_);
+    r = high;
   return hasOff() ? shortest(off_) + " (" + off_meaning_ + ") or " + r : r;
 }
 
@@ -42,7 +43,9 @@ std::string Option::helpText(const std::string& default_text) const {
     parts.push_back("one of " + list);
   }
   if (hasRange()) parts.push_back(rangeText());
-  if (!default_text.empty())
+  if (default_text.empty() && !absent_.empty())
+    parts.push_back("default " + absent_);
+  else if (!default_text.empty())
     parts.push_back("default " + default_text + (hasOff() && default_text == shortest(off_) ? " (" + off_meaning_ + ")" : ""));
   std::string bracket;
   for (const auto& p : parts) bracket += (bracket.empty() ? "" : "; ") + p;
@@ -63,6 +66,7 @@ std::string defaultText(const nlohmann::json& value, const std::string& type) {
   if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
   if (value.is_number_integer()) return std::to_string(value.get<long long>());
   if (value.is_number()) return shortest(value.get<double>());
+  if (value.is_null()) return "";  // absent: Option::helpText says what that means
   if (value.is_string()) return value.get<std::string>().empty() ? "" : value.get<std::string>();
   if (value.is_array()) {
     std::string list;
@@ -84,7 +88,8 @@ void checkNumber(Front front, const Option& o, double v, const std::string& show
                    "a finite number " +
                    (std::isfinite(o.lo()) ? (o.openLow() ? "above " : "of at least ") + shortest(o.lo()) : std::string()) +
                    (std::isfinite(o.lo()) && std::isfinite(o.hi()) ? " and " : "") +
-                   (std::isfinite(o.hi()) ? "at most " + shortest(o.hi()) : std::string()) + " (got " + shown + ")");
+                   (std::isfinite(o.hi()) ? (o.openHigh() ? "below " : "at most ") + shortest(o.hi()) : std::string()) +
+                   " (got " + shown + ")");
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -46,13 +47,18 @@ struct Band {
 /// Option("modes", "Modes to report (0: all)").atLeast(0).
 class Option {
  public:
-  Option(const char* key, const char* help) : key_(key), help_(help) {}
+  Option(std::string key, std::string help) : key_(std::move(key)), help_(std::move(help)) {}
 
   /// Numbers (and each number of a list): lo <= value <= hi.
   Option& range(double lo, double hi) { lo_ = lo, hi_ = hi; return *this; }
   Option& atLeast(double lo) { return range(lo, std::numeric_limits<double>::infinity()); }
   /// lo < value <= hi.
   Option& above(double lo, double hi = std::numeric_limits<double>::infinity()) { open_low_ = true; return range(lo, hi); }
+  /// value < hi: the bound itself is out (an accuracy in (0, 1)).
+  Option& below(double hi) { open_high_ = true, hi_ = hi; return *this; }
+  /// What an absent value means, for a field that may be absent (std::optional): "the
+  /// scene's".
+  Option& whenAbsent(const char* meaning) { absent_ = meaning; return *this; }
   /// A value outside the range that means "not asked" (0 for a target that is off).
   Option& off(double value, const char* meaning = "off") { off_ = value, off_meaning_ = meaning; return *this; }
   Option& unit(const char* u) { unit_ = u; return *this; }
@@ -75,6 +81,8 @@ class Option {
   double lo() const { return lo_; }
   double hi() const { return hi_; }
   bool openLow() const { return open_low_; }
+  bool openHigh() const { return open_high_; }
+  const std::string& absentMeaning() const { return absent_; }
   bool hasRange() const { return std::isfinite(lo_) || std::isfinite(hi_); }
   bool hasOff() const { return !std::isnan(off_); }
   double offValue() const { return off_; }
@@ -97,10 +105,10 @@ class Option {
   std::string helpText(const std::string& default_text) const;
 
  private:
-  std::string key_, help_, unit_, choices_, flag_, off_meaning_, negated_help_;
+  std::string key_, help_, unit_, choices_, flag_, off_meaning_, negated_help_, absent_;
   double lo_ = -std::numeric_limits<double>::infinity(), hi_ = std::numeric_limits<double>::infinity();
   double off_ = std::numeric_limits<double>::quiet_NaN();
-  bool open_low_ = false, negated_ = false, comma_ = false, required_ = false;
+  bool open_low_ = false, open_high_ = false, negated_ = false, comma_ = false, required_ = false;
 };
 
 /// The field types a declaration may hold, as both adapters name them.
@@ -113,6 +121,10 @@ template <> struct OptionType<std::vector<std::string>> { static constexpr const
 template <> struct OptionType<std::vector<int>> { static constexpr const char* name = "list[int]"; };
 template <> struct OptionType<std::vector<double>> { static constexpr const char* name = "list[float]"; };
 template <> struct OptionType<Band> { static constexpr const char* name = "band"; };
+/// A field that may be absent (the scene's setting holds): "float?" and so on.
+template <> struct OptionType<std::optional<double>> { static constexpr const char* name = "float?"; };
+template <> struct OptionType<std::optional<int>> { static constexpr const char* name = "int?"; };
+template <> struct OptionType<std::optional<std::string>> { static constexpr const char* name = "str?"; };
 
 /// A field's value as JSON (a Band as [min, max]).
 nlohmann::json optionValueJson(bool v);
@@ -123,6 +135,11 @@ nlohmann::json optionValueJson(const std::vector<std::string>& v);
 nlohmann::json optionValueJson(const std::vector<int>& v);
 nlohmann::json optionValueJson(const std::vector<double>& v);
 nlohmann::json optionValueJson(const Band& v);
+/// null when absent.
+template <class T>
+nlohmann::json optionValueJson(const std::optional<T>& v) {
+  return v ? optionValueJson(*v) : nlohmann::json();
+}
 /// The default as the help text shows it ("12", "0.1:50", "efi", "none").
 std::string defaultText(const nlohmann::json& value, const std::string& type);
 
@@ -158,6 +175,11 @@ void checkOption(Front front, const Option& o, const std::vector<std::string>& v
 void checkOption(Front front, const Option& o, const std::vector<int>& v);
 void checkOption(Front front, const Option& o, const std::vector<double>& v);
 void checkOption(Front front, const Option& o, const Band& v);
+/// An absent value is not checked: the scene's setting holds.
+template <class T>
+void checkOption(Front front, const Option& o, const std::optional<T>& v) {
+  if (v) checkOption(front, o, *v);
+}
 
 /// Every declared value of `options` checked once against its declaration; the study
 /// calls it first and checks only what crosses fields or needs the scene after it.

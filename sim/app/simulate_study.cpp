@@ -15,45 +15,34 @@ namespace mmv::app {
 namespace {
 
 void checkRequest(const SimulateRequest& r) {
-  const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
-  if (!r.integrator.empty() && !findIntegrator(r.integrator))
-    throw UsageError(opt("--integrator") + ": unknown integrator '" + r.integrator + "'" + integratorSuggestion(r.integrator) +
+  checkOptions<SimulateParams>(r, r.front);
+  const auto opt = [&](const char* key) { return declaredName<SimulateParams>(key, r.front); };
+  if (r.integrator && !findIntegrator(*r.integrator))
+    throw UsageError(opt("integrator") + ": unknown integrator '" + *r.integrator + "'" + integratorSuggestion(*r.integrator) +
                      " (known: " + integratorNames() + ")");
-  if (r.accuracy && !(*r.accuracy > 0 && *r.accuracy < 1))
-    throw UsageError(strf("%s: a relative accuracy must be in (0, 1) (got %g)", opt("--accuracy").c_str(), *r.accuracy));
-  for (const auto& [flag, v] : {std::pair<const char*, std::optional<double>>{"--absolute-tolerance", r.absolute_tolerance},
-                                {"--duration", r.duration},
-                                {"--sample-rate", r.sample_rate},
-                                {"--verify-target", r.verify_target},
-                                {"--target-error", r.target_error},
-                                {"--time-budget", r.time_budget}})
-    if (v) checkRange(r.front, flag, *v, 0, kUnbounded, /*open_low=*/true);
-  if (r.absolute_tolerance && !(*r.absolute_tolerance < 1))
-    throw UsageError(strf("%s: an absolute tolerance must be below 1 (got %g)", opt("--absolute-tolerance").c_str(),
-                          *r.absolute_tolerance));
   if (r.target_error) {
-    if (r.accuracy) throw UsageError(opt("--target-error") + " chooses the accuracy: drop " + opt("--accuracy"));
+    if (r.accuracy) throw UsageError(opt("target_error") + " chooses the accuracy: drop " + opt("accuracy"));
     if (r.verify || r.verify_target)
-      throw UsageError(opt("--target-error") + " verifies its run itself: drop " + opt("--verify") + " and " +
-                       opt("--verify-target"));
+      throw UsageError(opt("target_error") + " verifies its run itself: drop " + opt("verify") + " and " +
+                       opt("verify_target"));
   } else if (!r.points.empty() || r.time_budget) {
-    throw UsageError(opt(r.points.empty() ? "--time-budget" : "--points") + " applies to " + opt("--target-error") + " only");
+    throw UsageError(opt(r.points.empty() ? "time_budget" : "points") + " applies to " + opt("target_error") + " only");
   }
 }
 
 void applyOverrides(const SimulateRequest& r, SimulationSpec& spec) {
-  if (!r.integrator.empty()) spec.integrator = r.integrator;
+  if (r.integrator) spec.integrator = *r.integrator;
   if (r.accuracy) spec.accuracy = *r.accuracy;
   if (r.absolute_tolerance) spec.absolute_tolerance = *r.absolute_tolerance;
   if (r.duration) spec.duration = *r.duration;
   if (r.sample_rate) spec.sample_rate_hz = *r.sample_rate;
   if (spec.duration * spec.sample_rate_hz > limits::kMaxSamples)
     throw UsageError(strf("%s %g s at %s %g Hz is %.3g samples, above the limit of %.0f",
-                          optionName(r.front, "--duration").c_str(), spec.duration,
-                          optionName(r.front, "--sample-rate").c_str(), spec.sample_rate_hz,
+                          declaredName<SimulateParams>("duration", r.front).c_str(), spec.duration,
+                          declaredName<SimulateParams>("sample_rate", r.front).c_str(), spec.sample_rate_hz,
                           spec.duration * spec.sample_rate_hz, limits::kMaxSamples));
   if (spec.absolute_tolerance > 0 && !spec.integrator.empty() && !isSundialsIntegrator(spec.integrator))
-    throw UsageError(optionName(r.front, "--absolute-tolerance") +
+    throw UsageError(declaredName<SimulateParams>("absolute_tolerance", r.front) +
                      " applies to the SUNDIALS integrators only (got integrator " + spec.integrator + ")");
 }
 
@@ -94,7 +83,7 @@ SimulationResult runOrTarget(const SimulateRequest& r, SceneT& scene, const Trad
   o.target_m = *r.target_error;
   o.points = r.points;
   o.time_budget_s = r.time_budget.value_or(0);
-  if (!r.integrator.empty()) o.integrators = {r.integrator};
+  if (r.integrator) o.integrators = {*r.integrator};
   const std::string what = "target error: pilot, then whole runs";
   const ProgressStage ps(what);
   s.target = runToTarget(problem, o, [&](const std::string& stage, double f) {

@@ -6,6 +6,7 @@
 #include "sim/app/config_sweep_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
+#include "sim/app/simulate_study.hpp"
 
 namespace mmv::app {
 
@@ -22,6 +23,8 @@ const std::vector<VerbDeclaration>& declaredVerbs() {
       declareVerb<ConfigSweepParams>("sweep-config",
                                      "System modes and synthesis error over a grid of joint angles, modes tracked by shape",
                                      "sweep.csv, sweep.json and PNG plots"),
+      declareVerb<SimulateParams>("simulate", "Time run: slews, table programs, free motion; torques, energy, history",
+                                  "history.csv, summary.json, run.json, scene.yaml, states.csv and the run's figures"),
       declareVerb<CheckParams>("check", "Feasibility: torquers, gimbal, table, modes, sensors, lab; demand, capacity, margin, verdict",
                                "check.md (Markdown), check.json and check.csv"),
   };

@@ -18,6 +18,7 @@
 #include "sim/app/linear_study.hpp"
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
+#include "sim/app/simulate_study.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/modes/components.hpp"
@@ -87,6 +88,7 @@ using ConvergeArgs = DeclaredArgs<app::ConvergeParams>;
 using CompareArgs = DeclaredArgs<app::CompareParams>;
 using ConfigSweepArgs = DeclaredArgs<app::ConfigSweepParams>;
 using CheckArgs = DeclaredArgs<app::CheckParams>;
+using SimulateArgs = DeclaredArgs<app::SimulateParams>;
 
 struct LinearArgs : SceneArgs {
   std::vector<std::string> inputs, outputs;  ///< see docs/outputs.md; empty: defaults.
@@ -104,20 +106,6 @@ struct LinearArgs : SceneArgs {
   double rom_target = 0.01;  ///< peak-normalized error the modes-needed count is for (0: not computed).
   double target_error = 0;   ///< > 0: segments and kept modes chosen for it (frf/rom --target-error)
   double time_budget = 0;    ///< s; > 0: --target-error's choice of segments within it
-  std::string out;
-  bool force = false;
-};
-
-struct SimulateArgs : SceneArgs {
-  bool json = false;
-  std::string integrator;  ///< empty: the scene's.
-  double accuracy = 0, duration = 0, sample_rate = 0;  ///< 0: the scene's.
-  double absolute_tolerance = 0;                       ///< SUNDIALS only; 0: the scene's.
-  bool verify = false;        ///< a companion run at tolerance / 10 (sim/time/verify.hpp)
-  double verify_target = 0;   ///< m; > 0 implies verify; 0: 1 % of the scored motion
-  double target_error = 0;    ///< m; > 0: choose the cheapest run that meets it (sim/time/target.hpp)
-  std::vector<std::string> points;  ///< the points --target-error is held on; empty: the scene's, else every tip
-  double time_budget = 0;     ///< s; > 0: --target-error within it
   std::string out;
   bool force = false;
 };

@@ -62,4 +62,14 @@ void CliOptionAdder::operator()(app::Band& v, const app::Option& o) const {
   finish(cmd->get_option(flag), o);
 }
 
+/// An optional field: given, it holds the value; absent, the scene's setting holds.
+template <class T>
+void addOptional(CLI::App* cmd, std::optional<T>& v, const app::Option& o) {
+  finish(cmd->add_option_function<T>(o.cliFlag(), [&v](const T& x) { v = x; }, help(v, o)), o);
+}
+
+void CliOptionAdder::operator()(std::optional<double>& v, const app::Option& o) const { addOptional(cmd, v, o); }
+void CliOptionAdder::operator()(std::optional<int>& v, const app::Option& o) const { addOptional(cmd, v, o); }
+void CliOptionAdder::operator()(std::optional<std::string>& v, const app::Option& o) const { addOptional(cmd, v, o); }
+
 }  // namespace mmv::cli

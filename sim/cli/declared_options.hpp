@@ -4,6 +4,7 @@
 /// range and default the declaration gives (the same text Python's docstring shows). The
 /// values are only parsed here: the study checks their ranges, once.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct CliOptionAdder {
   void operator()(std::vector<int>& v, const app::Option& o) const;
   void operator()(std::vector<double>& v, const app::Option& o) const;
   void operator()(app::Band& v, const app::Option& o) const;
+  void operator()(std::optional<double>& v, const app::Option& o) const;
+  void operator()(std::optional<int>& v, const app::Option& o) const;
+  void operator()(std::optional<std::string>& v, const app::Option& o) const;
 };
 
 /// Every declared option of `options` on `cmd`, in declaration order; `options` holds

@@ -20,15 +20,6 @@ namespace {
 
 using namespace mmv::cli;
 
-/// --integrator's help: every name in the one table.
-std::string integratorHelp() {
-  std::string simbody, sundials;
-  for (const auto& i : mmv::integratorTable())
-    (i.family == mmv::IntegratorInfo::Family::Simbody ? simbody : sundials) += (std::string(i.name) + ", ");
-  return simbody.substr(0, simbody.size() - 2) + " (Simbody's); " + sundials.substr(0, sundials.size() - 2) +
-         " (SUNDIALS) (default: the scene's)";
-}
-
 /// A finite number above 0 (or at least 0), named in the message without CLI11's
 /// 309-digit upper bound.
 CLI::Validator positive(bool zero_allowed = false) {
@@ -115,37 +106,6 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
   CLI::App* ro = app.add_subcommand("rom", "Reduced-order state-space model for control design, as .mat (Octave/MATLAB ss)");
   addLinear(ro);
   return {fr, ro};
-}
-
-/// `mmvlab simulate` and its options.
-CLI::App* addSimulateCommand(CLI::App& app, SimulateArgs& sim) {
-  CLI::App* si = app.add_subcommand("simulate", "Time run: slews, table programs, free motion; torques, energy, history");
-  addSceneOptions(si, sim);
-  si->add_flag("--json", sim.json, "Print the summary as JSON");
-  // Every value below is checked by the study (app::runSimulateStudy), once.
-  si->add_option("--integrator", sim.integrator, integratorHelp());
-  si->add_option("--accuracy", sim.accuracy, "Integrator relative accuracy in (0, 1) (default: the scene's)");
-  si->add_option("--absolute-tolerance", sim.absolute_tolerance,
-                 "SUNDIALS integrators: absolute tolerance (m, rad, m/s, rad/s; default: the scene's, else the accuracy)");
-  si->add_option("--duration", sim.duration, "Seconds (default: the scene's)");
-  si->add_option("--sample-rate", sim.sample_rate, "Output rows per second (default: the scene's)");
-  si->add_flag("--verify", sim.verify,
-              "Run the same run again at a 10x tighter tolerance and report the difference on the scored points as the "
-              "run's estimated error (doubles the cost at least)");
-  si->add_option("--verify-target", sim.verify_target,
-                 "Error the verification is held to, m (default 1 % of the scored points' largest motion); implies --verify");
-  si->add_option("--target-error", sim.target_error,
-                 "Error to meet on the scored points, m: the cheapest integrator, tolerance and segments that meet it are "
-                 "chosen on a pilot window, run and verified (docs/accuracy.md)");
-  si->add_option("--points", sim.points,
-                 "Comma-separated link tips or stations --target-error is held on, e.g. link3a.tip (default: the scene's "
-                 "score_points, else every tip)")
-      ->delimiter(',');
-  si->add_option("--time-budget", sim.time_budget,
-                 "Wall seconds --target-error may take in all (pilot, run, verification); past it the target is refused");
-  si->add_option("--out", sim.out, "Write history.csv and summary.json here");
-  si->add_flag("--force", sim.force, "Replace files of the same names in --out");
-  return si;
 }
 
 /// `mmvlab trade` and its options.
@@ -370,7 +330,7 @@ int main(int argc, char** argv) {
   LinearArgs lin;
   const auto [fr, ro] = addLinearCommands(app, lin);
   SimulateArgs sim;
-  CLI::App* si = addSimulateCommand(app, sim);
+  CLI::App* si = addDeclaredCommand(app, "simulate", sim);
   TradeArgs tr;
   CLI::App* tp = addTradeCommand(app, tr);
   PlaceSensorsArgs ps;
@@ -415,7 +375,6 @@ int main(int argc, char** argv) {
     if (sp->parsed()) return runConfigSweepCommand(sw);
     lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
     lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
-    sim.given = givenOptions(si);
     tr.given = givenOptions(tp);
     rd.given = givenOptions(rn);
     if (si->parsed()) return runSimulateCommand(sim);

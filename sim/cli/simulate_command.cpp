@@ -38,23 +38,6 @@ nlohmann::ordered_json runRecord(const SimulateArgs& args, const std::string& so
   return j;
 }
 
-/// The options given on the command line (the others: the scene's settings).
-app::SimulateRequest simulateRequest(const SimulateArgs& args) {
-  app::SimulateRequest r;
-  const auto given = [&](const char* flag, double v) { return args.given.count(flag) ? std::optional<double>(v) : std::nullopt; };
-  r.integrator = args.integrator;
-  r.accuracy = given("--accuracy", args.accuracy);
-  r.absolute_tolerance = given("--absolute-tolerance", args.absolute_tolerance);
-  r.duration = given("--duration", args.duration);
-  r.sample_rate = given("--sample-rate", args.sample_rate);
-  r.verify = args.verify;
-  r.verify_target = given("--verify-target", args.verify_target);
-  r.target_error = given("--target-error", args.target_error);
-  r.points = args.points;
-  r.time_budget = given("--time-budget", args.time_budget);
-  return r;
-}
-
 }  // namespace
 
 int runSimulateCommand(const SimulateArgs& args) {
@@ -71,7 +54,7 @@ int runSimulateCommand(const SimulateArgs& args) {
       if (what != bar_what) bar.reset(), bar = std::make_unique<Progress>(what), bar_what = what;
       bar->report(done, total, detail);
     };
-    const app::SimulateStudy s = app::runSimulateStudy(loaded, simulateRequest(args), hooks);
+    const app::SimulateStudy s = app::runSimulateStudy(loaded, declaredRequest<app::SimulateRequest>(args), hooks);
     bar.reset();  // the progress line ends before the run's report is written
     if (out) {
       const SimulationResult& r = s.result;

@@ -60,4 +60,13 @@ std::string integratorSuggestion(const std::string& name) {
   return didYouMean(name, names);
 }
 
+std::string integratorListing() {
+  std::string simbody, sundials;
+  for (const auto& i : integratorTable()) {
+    std::string& list = i.family == IntegratorInfo::Family::Simbody ? simbody : sundials;
+    list += (list.empty() ? "" : ", ") + std::string(i.name);
+  }
+  return simbody + " (Simbody's); " + sundials + " (SUNDIALS)";
+}
+
 }  // namespace mmv

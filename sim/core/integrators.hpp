@@ -40,6 +40,9 @@ const IntegratorInfo& integratorInfo(const std::string& name);
 bool isSundialsIntegrator(const std::string& name);
 /// "rk_merson, rk_feldberg, ..." (every name), for messages.
 std::string integratorNames();
+/// Every integrator by family, as --integrator's help lists them: "rk_merson, ... (Simbody's);
+/// cvode_bdf, ... (SUNDIALS)".
+std::string integratorListing();
 /// For an unknown name: " (did you mean 'x'?)" when one name is close, else "".
 std::string integratorSuggestion(const std::string& name);
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct DemoParams {
   std::vector<std::string> points;
   std::vector<std::string> spans;
   Band band{1, 10};
+  std::optional<double> duration;  // absent: the scene's
 
   template <class S, class V>
   static void fields(S& s, V&& v) {
@@ -40,6 +42,7 @@ struct DemoParams {
     v(s.points, Option("points", "Points shown").commaSeparated());
     v(s.spans, Option("spans", "Spans shown").flag("--span"));
     v(s.band, Option("band_hz", "Band of interest").unit("Hz").flag("--band"));
+    v(s.duration, Option("duration", "Seconds run").unit("s").above(0).below(100).whenAbsent("the scene's"));
   }
 };
 
@@ -69,6 +72,8 @@ TEST(DeclaredOptions, TheCommandLineIsMadeFromTheDeclaration) {
   EXPECT_EQ(p.spans, (std::vector<std::string>{"x:y", "z:w"}));
   EXPECT_EQ(p.band, (Band{2, 20}));
   EXPECT_EQ(p.spacing, 0.25);
+  EXPECT_FALSE(p.duration.has_value());  // not given: absent, whatever a number's default
+  EXPECT_EQ(parsed({"--duration", "0"}).duration, 0.0);  // given, even 0: for the study to refuse
   const DemoParams d = parsed({});  // nothing given: the declaration's defaults
   EXPECT_EQ(d.count, 3);
   EXPECT_TRUE(d.estimate);
@@ -84,7 +89,7 @@ TEST(DeclaredOptions, HelpShowsWhatTheDescriptionSays) {
   mmv::cli::addDeclaredOptions(&app, p);
   const std::string help = app.help();
   const std::vector<OptionDescription> described = kDemo.options();
-  ASSERT_EQ(described.size(), 9u);
+  ASSERT_EQ(described.size(), 10u);
   for (const auto& d : described) {
     if (d.type == "bool") continue;  // a flag: its own sentence, no default
     EXPECT_NE(help.find(d.help_text), std::string::npos) << d.option.key() << ": " << d.help_text << "\n" << help;
@@ -97,6 +102,9 @@ TEST(DeclaredOptions, HelpShowsWhatTheDescriptionSays) {
   EXPECT_EQ(described[5].help_text, "How [one of fast, slow; default fast]");
   EXPECT_EQ(described[8].help_text, "Band of interest [Hz; default 1:10]");
   EXPECT_EQ(described[8].default_value, nlohmann::json::array({1.0, 10.0}));
+  EXPECT_EQ(described[9].help_text, "Seconds run [s; above 0, below 100; default the scene's]");
+  EXPECT_TRUE(described[9].default_value.is_null());
+  EXPECT_EQ(described[9].type, "float?");
   EXPECT_EQ(described[6].option.cliFlag(), "--points");
   EXPECT_EQ(described[7].option.cliFlag(), "--span");
 }
@@ -147,6 +155,14 @@ TEST(DeclaredOptions, EveryRangeHoldsAtItsBoundAndRefusesOnePast) {
   EXPECT_EQ(refusal(p), "--band: expected 0 <= F_MIN_HZ < F_MAX_HZ (got 5:5)");
   EXPECT_EQ(refusal(p, Front::Python), "band_hz: expected 0 <= F_MIN_HZ < F_MAX_HZ (got 5:5)");
   p.band = {0, 5};
+  EXPECT_EQ(refusal(p), "");
+  p.duration = 0;  // given as 0: refused, not read as absent
+  EXPECT_EQ(refusal(p), "--duration: must be a finite number above 0 and below 100 (got 0)");
+  p.duration = std::nextafter(100.0, 0.0);
+  EXPECT_EQ(refusal(p), "");
+  p.duration = 100;  // below 100: the bound itself is out
+  EXPECT_NE(refusal(p), "");
+  p.duration.reset();
   EXPECT_EQ(refusal(p), "");
   EXPECT_EQ(declaredName<DemoParams>("spans", Front::Cli), "--span");
   EXPECT_EQ(declaredName<DemoParams>("spans", Front::Python), "spans");
