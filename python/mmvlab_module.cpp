@@ -266,29 +266,6 @@ py::tuple sweep(const std::string& spec, const std::string& out, int jobs, std::
   return py::make_tuple(s.json.dump(), s.text, s.result.table);
 }
 
-py::tuple trade(const PyScene& scene, int segments, const std::vector<std::string>& integrators,
-                const std::vector<double>& accuracies, const std::vector<int>& segment_ladder,
-                const std::vector<int>& modes_ladder, const std::vector<double>& modes_accuracies,
-                const std::vector<std::string>& points, std::optional<double> duration, std::optional<double> target_error,
-                bool all, std::optional<double> run_budget, std::optional<double> time_budget, py::object progress) {
-  const PyScene prepared = withSegments(scene, segments);
-  const mmv::Scene& sc = prepared.scene;
-  mmv::app::TradeRequest r;
-  r.integrators = integrators;
-  r.accuracies = accuracies;
-  r.segments = segment_ladder;
-  r.modes = modes_ladder;
-  r.modes_accuracies = modes_accuracies;
-  r.points = points;
-  r.duration = duration;
-  r.target_error = target_error;
-  r.all = all;
-  r.run_budget = run_budget;
-  r.time_budget = time_budget;
-  r.front = Front::Python;
-  const mmv::app::TradeStudyResult s = released(progress, [&] { return mmv::app::runTradeStudy(sc, r); });
-  return py::make_tuple(s.json.dump(), s.text, s.csv, prepared.warnings);
-}
 
 /// A declared verb's study (sim/app/verbs.hpp): its keyword arguments read by the same
 /// field list as the command line's options (python/declared_options.hpp), the study run
@@ -324,6 +301,12 @@ py::tuple sweepConfig(const PyScene& scene, int segments, const py::dict& option
   return declaredStudy<mmv::app::ConfigSweepRequest>("sweep_config", scene, segments, options, progress,
                                                      &mmv::app::runConfigSweepStudy,
                                                      [](const mmv::app::ConfigSweepStudy& s) { return s.csv; });
+}
+
+py::tuple trade(const PyScene& scene, int segments, const py::dict& options, py::object progress) {
+  return declaredStudy<mmv::app::TradeRequest>("trade", scene, segments, options, progress,
+                                               [](const mmv::Scene& sc, const mmv::app::TradeRequest& r) { return mmv::app::runTradeStudy(sc, r); },
+                                               [](const mmv::app::TradeStudyResult& s) { return s.csv; });
 }
 
 py::tuple check(const PyScene& scene, int segments, const py::dict& options, py::object progress) {
@@ -435,10 +418,7 @@ PYBIND11_MODULE(_mmvlab, m) {
   defineFieldLists(m);  // python/field_lists.cpp
   defineUpdate(m);      // python/update_binding.cpp
   m.def("sweep_config", &sweepConfig, py::arg("scene"), py::arg("segments"), py::arg("options"), py::arg("progress"));
-  m.def("trade", &trade, py::arg("scene"), py::arg("segments"), py::arg("integrators"), py::arg("accuracies"),
-        py::arg("segment_ladder"), py::arg("modes_ladder"), py::arg("modes_accuracies"), py::arg("points"),
-        py::arg("duration"), py::arg("target_error"), py::arg("all"), py::arg("run_budget"), py::arg("time_budget"),
-        py::arg("progress"));
+  m.def("trade", &trade, py::arg("scene"), py::arg("segments"), py::arg("options"), py::arg("progress"));
   m.def("correlate", &correlate, py::arg("scene"), py::arg("segments"), py::arg("measured"), py::arg("pairs"),
         py::arg("pair_distance"), py::arg("modes"), py::arg("mac_threshold"), py::arg("max_frequency_error"),
         py::arg("damping"), py::arg("tam"), py::arg("progress"));

@@ -628,55 +628,7 @@ class TradeResult(Result):
         self.cheapest = self.json.get("cheapest_within_target")
 
 
-@_documented
-def trade(scene, *, segments=0, integrators=(), accuracies=(), segment_ladder=(), modes_ladder=(), modes_accuracies=(),
-          points=(), duration=None, target_error=None, all=False, run_budget=None, time_budget=None, progress=None):
-    """`mmvlab trade`: integrators, accuracies, meshes and modal links: error against cost.
-
-    Empty lists and None keep the command's defaults.
-
-    Parameters
-    ----------
-    @scene
-    @segments
-    integrators : sequence of str
-        Integrator names (default: rk_merson, rk3, cpodes, cvode_bdf, cvode_adams, arkode_erk, arkode_dirk).
-    accuracies : sequence of float
-        Relative accuracies tried (default 1e-3 .. 1e-7).
-    segment_ladder : sequence of int
-        Segments per link tried (default 2, 4, 8).
-    modes_ladder : sequence of int
-        Modes per link of the modal runs tried.
-    modes_accuracies : sequence of float
-        The modal runs' accuracies (CVODE BDF; default 1e-5, 1e-6, 1e-7).
-    points : sequence of str
-        Tips or stations the error is scored at (default: every tip).
-    duration : float or None
-        Seconds of run time (None: the scene's).
-    target_error : float or None
-        The error target, m (None: 1 % of the scored motion).
-    all : bool
-        Run every combination, also those that cannot be the cheapest within the target.
-    run_budget : float or None
-        Wall seconds a run may take; a run over it is cut and listed.
-    time_budget : float or None
-        Wall seconds for the whole trade.
-    @progress
-
-    Returns
-    -------
-    TradeResult
-        `runs`, `table[column]`, `target_error_m` (m), `cheapest`.
-    """
-    def opt(x):
-        return None if x is None else float(x)
-    json_text, text, csv, warns = _mmvlab.trade(scene, int(segments), [str(i) for i in integrators],
-                                                [float(a) for a in accuracies], [int(n) for n in segment_ladder],
-                                                [int(k) for k in modes_ladder], [float(a) for a in modes_accuracies],
-                                                [str(p) for p in points], opt(duration), opt(target_error), bool(all),
-                                                opt(run_budget), opt(time_budget), progress)
-    _warn(warns)
-    return TradeResult(json_text, text, csv)
+trade = _declared("trade", TradeResult, "`runs` (dicts), `cheapest`, `table[column]`, `columns`, `csv`.")
 
 
 class SweepResult(Result):

@@ -116,7 +116,7 @@ class TradeResult(Result):
     table: Any
     target_error_m: Any
 
-def trade(scene: Scene, *, segments: int = ..., integrators: Sequence[str] = ..., accuracies: Sequence[float] = ..., segment_ladder: Sequence[int] = ..., modes_ladder: Sequence[int] = ..., modes_accuracies: Sequence[float] = ..., points: Sequence[str] = ..., duration: Optional[float] = ..., target_error: Optional[float] = ..., all: bool = ..., run_budget: Optional[float] = ..., time_budget: Optional[float] = ..., progress: Optional[Progress] = ...) -> TradeResult: ...
+def trade(scene: Scene, *, segments: int = ..., integrators: Union[str, Sequence[str]] = ..., accuracies: Sequence[float] = ..., segment_ladder: Sequence[int] = ..., modes_ladder: Sequence[int] = ..., modes_accuracies: Sequence[float] = ..., points: Union[str, Sequence[str]] = ..., duration: Optional[float] = ..., target_error: Optional[float] = ..., all: bool = ..., run_budget: Optional[float] = ..., time_budget: Optional[float] = ..., progress: Optional[Progress] = ...) -> TradeResult: ...
 class SweepResult(Result):
     columns: List[str]
     csv: str

@@ -12,22 +12,11 @@ namespace mmv::app {
 namespace {
 
 TradeOptions checkedOptions(const TradeRequest& r) {
-  const auto opt = [&](const char* flag) { return optionName(r.front, flag); };
-  for (const auto& [flag, list] : {std::pair<const char*, const std::vector<double>*>{"--accuracies", &r.accuracies},
-                                   {"--modes-accuracies", &r.modes_accuracies}})
-    for (double a : *list)
-      if (!(a > 0 && a < 1)) throw UsageError(strf("%s: a relative accuracy must be in (0, 1) (got %g)", opt(flag).c_str(), a));
+  checkOptions<TradeParams>(r, r.front);
   for (const auto& name : r.integrators)
     if (!findIntegrator(name))
-      throw UsageError(opt("--integrators") + ": unknown integrator '" + name + "'" + integratorSuggestion(name) +
-                       " (known: " + integratorNames() + ")");
-  for (int n : r.segments) checkRange(r.front, "--segment-ladder", n, 1, limits::kMaxSegments);
-  for (int k : r.modes) checkRange(r.front, "--modes-ladder", k, 0, limits::kMaxSegments);
-  for (const auto& [flag, v] : {std::pair<const char*, std::optional<double>>{"--duration", r.duration},
-                                {"--target-error", r.target_error},
-                                {"--run-budget", r.run_budget},
-                                {"--time-budget", r.time_budget}})
-    if (v) checkRange(r.front, flag, *v, 0, kUnbounded, /*open_low=*/true);
+      throw UsageError(declaredName<TradeParams>("integrators", r.front) + ": unknown integrator '" + name + "'" +
+                       integratorSuggestion(name) + " (known: " + integratorNames() + ")");
   TradeOptions o;
   if (!r.integrators.empty()) o.integrators = r.integrators;
   if (!r.accuracies.empty()) o.accuracies = r.accuracies;

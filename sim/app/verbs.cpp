@@ -7,6 +7,7 @@
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
 #include "sim/app/simulate_study.hpp"
+#include "sim/app/trade_study.hpp"
 
 namespace mmv::app {
 
@@ -25,6 +26,8 @@ const std::vector<VerbDeclaration>& declaredVerbs() {
                                      "sweep.csv, sweep.json and PNG plots"),
       declareVerb<SimulateParams>("simulate", "Time run: slews, table programs, free motion; torques, energy, history",
                                   "history.csv, summary.json, run.json, scene.yaml, states.csv and the run's figures"),
+      declareVerb<TradeParams>("trade", "Speed-accuracy trade of a time run: integrators x tolerances, segments",
+                               "trade.csv, trade.json and trade.png"),
       declareVerb<CheckParams>("check", "Feasibility: torquers, gimbal, table, modes, sensors, lab; demand, capacity, margin, verdict",
                                "check.md (Markdown), check.json and check.csv"),
   };

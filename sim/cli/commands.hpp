@@ -19,6 +19,7 @@
 #include "sim/app/modes_study.hpp"
 #include "sim/app/plan_studies.hpp"
 #include "sim/app/simulate_study.hpp"
+#include "sim/app/trade_study.hpp"
 #include "sim/app/study.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/modes/components.hpp"
@@ -89,6 +90,7 @@ using CompareArgs = DeclaredArgs<app::CompareParams>;
 using ConfigSweepArgs = DeclaredArgs<app::ConfigSweepParams>;
 using CheckArgs = DeclaredArgs<app::CheckParams>;
 using SimulateArgs = DeclaredArgs<app::SimulateParams>;
+using TradeArgs = DeclaredArgs<app::TradeParams>;
 
 struct LinearArgs : SceneArgs {
   std::vector<std::string> inputs, outputs;  ///< see docs/outputs.md; empty: defaults.
@@ -106,23 +108,6 @@ struct LinearArgs : SceneArgs {
   double rom_target = 0.01;  ///< peak-normalized error the modes-needed count is for (0: not computed).
   double target_error = 0;   ///< > 0: segments and kept modes chosen for it (frf/rom --target-error)
   double time_budget = 0;    ///< s; > 0: --target-error's choice of segments within it
-  std::string out;
-  bool force = false;
-};
-
-struct TradeArgs : SceneArgs {
-  bool json = false;
-  std::vector<std::string> integrators;
-  std::vector<double> accuracies;
-  std::vector<int> segments_ladder;
-  std::vector<int> modes_ladder;  ///< 0 alone: no modal runs
-  std::vector<double> modes_accuracies;
-  std::vector<std::string> points;
-  double duration = 0;
-  double target_error = 0;  ///< m; 0: defaultTradeTarget (1 % of the scored motion)
-  bool all = false;         ///< run every run: no skipping of dominated ones
-  double run_budget = 0;    ///< s; > 0: a run over it is cut
-  double time_budget = 0;   ///< s; > 0: no run starts past it
   std::string out;
   bool force = false;
 };

@@ -108,36 +108,6 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
   return {fr, ro};
 }
 
-/// `mmvlab trade` and its options.
-CLI::App* addTradeCommand(CLI::App& app, TradeArgs& tr) {
-  CLI::App* tp = app.add_subcommand("trade", "Speed-accuracy trade of a time run: integrators x tolerances, segments");
-  addSceneOptions(tp, tr);
-  tp->add_flag("--json", tr.json, "Print JSON instead of tables");
-  tp->add_option("--integrators", tr.integrators, "Comma-separated (default rk_merson,rk3,cpodes,cvode_bdf,cvode_adams,arkode_erk,arkode_dirk)")
-      ->delimiter(',');
-  tp->add_option("--accuracies", tr.accuracies, "Comma-separated (default 1e-3,...,1e-7)")->delimiter(',');
-  tp->add_option("--segment-ladder", tr.segments_ladder, "Comma-separated segments per link (default 2,4,8)")->delimiter(',');
-  tp->add_option("--modes-ladder", tr.modes_ladder,
-                 "Comma-separated modes per link for runs with the links in modal coordinates (default 1,2,3,4; 0: none)")
-      ->delimiter(',');
-  tp->add_option("--modes-accuracies", tr.modes_accuracies, "Comma-separated accuracies of the modal runs (CVODE BDF; default 1e-5,1e-6,1e-7)")
-      ->delimiter(',');
-  tp->add_option("--duration", tr.duration, "Seconds (default: the scene's)");
-  tp->add_option("--points", tr.points, "Comma-separated link tips or stations the error is scored at, e.g. link3a.tip,link1@0.5 (default: every tip)")
-      ->delimiter(',');
-  tp->add_option("--target-error", tr.target_error,
-                 "Error to meet, m (the cheapest run within it is named; default 1 % of the scored points' largest "
-                 "motion in the reference run)");
-  tp->add_option("--run-budget", tr.run_budget, "Wall seconds a run may take; a run over it is cut and listed (the reference runs excepted)");
-  tp->add_option("--time-budget", tr.time_budget, "Wall seconds for the whole trade: past it the run under way is cut and the rest are listed as not run");
-  tp->add_flag("--all", tr.all,
-               "Run every run; by default a tolerance is skipped when a looser one of its integrator already cost more than "
-               "the cheapest run within the target");
-  tp->add_option("--out", tr.out, "Write trade.csv, trade.json and trade.png here");
-  tp->add_flag("--force", tr.force, "Replace files of the same names in --out");
-  return tp;
-}
-
 /// `mmvlab place-sensors` and its options.
 CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
   CLI::App* p = app.add_subcommand("place-sensors",
@@ -332,7 +302,7 @@ int main(int argc, char** argv) {
   SimulateArgs sim;
   CLI::App* si = addDeclaredCommand(app, "simulate", sim);
   TradeArgs tr;
-  CLI::App* tp = addTradeCommand(app, tr);
+  CLI::App* tp = addDeclaredCommand(app, "trade", tr);
   PlaceSensorsArgs ps;
   CLI::App* pl = addPlaceSensorsCommand(app, ps);
   RenderArgs rd;
@@ -375,7 +345,6 @@ int main(int argc, char** argv) {
     if (sp->parsed()) return runConfigSweepCommand(sw);
     lin.damping_given = fr->count("--damping") + ro->count("--damping") > 0;
     lin.range_given = fr->count("--from") + fr->count("--to") + ro->count("--from") + ro->count("--to") > 0;
-    tr.given = givenOptions(tp);
     rd.given = givenOptions(rn);
     if (si->parsed()) return runSimulateCommand(sim);
     if (tp->parsed()) return runTradeCommand(tr);

@@ -85,21 +85,7 @@ void writeTradePlot(const std::string& path, const TradeStudy& s) {
 int runTradeCommand(const TradeArgs& args) {
   return guarded([&] {
     const Scene scene = loadScene(args);
-    app::TradeRequest r;
-    r.integrators = args.integrators;
-    r.accuracies = args.accuracies;
-    r.segments = args.segments_ladder;
-    r.modes = args.modes_ladder;
-    r.modes_accuracies = args.modes_accuracies;
-    r.points = args.points;
-    const auto given = [&](const char* flag, double v) {
-      return args.given.count(flag) ? std::optional<double>(v) : std::nullopt;
-    };
-    r.duration = given("--duration", args.duration);
-    r.target_error = given("--target-error", args.target_error);
-    r.all = args.all;
-    r.run_budget = given("--run-budget", args.run_budget);
-    r.time_budget = given("--time-budget", args.time_budget);
+    const auto r = declaredRequest<app::TradeRequest>(args);
     std::optional<OutputDir> out;  // lives until stdout has the result: a failure there puts --out back
     if (!args.out.empty()) out.emplace(args.out, args.force);  // a bad --out refused before the work
     const app::TradeStudyResult s = [&] {
