@@ -204,6 +204,16 @@ struct BaseSpec {
 };
 
 
+/// The factors of safety a stress is judged with (docs/strength.md): margin =
+/// allowable / (factor * stress) - 1. The defaults are NASA-STD-5001B's for metallic
+/// flight hardware tested as protoflight (yield 1.25, ultimate 1.4; docs/sources.md
+/// section 7); the scene's `strength:` states the lab's own.
+struct StrengthFactors {
+  double yield_factor = 1.25;
+  double ultimate_factor = 1.4;
+  bool given = false;  ///< the scene stated them (else the defaults above).
+};
+
 struct ArticleSpec {
   ArticleModel model = ArticleModel::Planar;
   /// Spatial model only, for checks (not a scene key): the out-of-plane and torsion
@@ -216,6 +226,7 @@ struct ArticleSpec {
   std::vector<ClosureSpec> closures;
   std::vector<LoadSpec> loads;
   BaseSpec base;
+  StrengthFactors strength;
 
   const Material* findMaterial(const std::string& name) const;
   const Section* findSection(const std::string& name) const;

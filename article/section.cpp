@@ -63,6 +63,39 @@ double sectionTorsionConstant(const Section& s) {
   return 0;
 }
 
+double sectionFibreDistance(const Section& s) {
+  switch (s.shape) {
+    case SectionShape::Rectangle:
+    case SectionShape::RectangularTube: return s.h / 2;
+    case SectionShape::RoundRod: return s.radius;
+    case SectionShape::Explicit: return s.explicit_fibre_distance;
+  }
+  return 0;
+}
+
+double sectionFibreDistanceOut(const Section& s) {
+  switch (s.shape) {
+    case SectionShape::Rectangle:
+    case SectionShape::RectangularTube: return s.b / 2;
+    case SectionShape::RoundRod: return s.radius;
+    case SectionShape::Explicit: return s.explicit_fibre_distance_out;
+  }
+  return 0;
+}
+
+double sectionTorsionShearPerTorque(const Section& s) {
+  switch (s.shape) {
+    case SectionShape::Rectangle: {
+      const double a = std::max(s.b, s.h) / 2, c = std::min(s.b, s.h) / 2, r = c / a;
+      return 3.0 / (8 * a * c * c) * (1 + r * (0.6095 + r * (0.8865 + r * (-1.8023 + r * 0.9100))));
+    }
+    case SectionShape::RectangularTube: return 1.0 / (2 * (s.b - s.t) * (s.h - s.t) * s.t);
+    case SectionShape::RoundRod: return 2.0 / (M_PI * std::pow(s.radius, 3));
+    case SectionShape::Explicit: return 0;
+  }
+  return 0;
+}
+
 double sectionGyrationSquared(const Section& s) { return sectionSecondMoment(s) / sectionArea(s); }
 
 const char* sectionShapeName(SectionShape shape) {

@@ -20,6 +20,10 @@ struct Material {
   /// G in Pa (torsion, spatial model only): given, or E / (2 (1 + nu)) from a given
   /// Poisson's ratio; 0 when the scene gives neither.
   double shear_modulus = 0;
+  /// Allowables (docs/strength.md), Pa; 0 when the scene gives none (a stress is then
+  /// stated with "no allowable: margin not judged").
+  double yield_strength = 0;     ///< the yield or proportional-limit stress.
+  double ultimate_strength = 0;  ///< the ultimate (failure) stress, >= yield_strength.
 };
 
 enum class SectionShape { Rectangle, RectangularTube, RoundRod, Explicit };
@@ -36,6 +40,8 @@ struct Section {
   double explicit_second_moment = 0;  ///< I in m^4 about the out-of-plane axis (explicit).
   double explicit_second_moment_out = 0;  ///< I_out in m^4 (explicit; 0: not given).
   double explicit_torsion_constant = 0;   ///< J in m^4 (explicit; 0: not given).
+  double explicit_fibre_distance = 0;      ///< c in m, in the plane (explicit; 0: not given).
+  double explicit_fibre_distance_out = 0;  ///< c_out in m, out of it (explicit; 0: not given).
 };
 
 /// Cross-section area A in m^2. A = b h, 2 t (b + h) - 4 t^2, or pi R^2.
@@ -56,6 +62,21 @@ double sectionSecondMomentOut(const Section& s);
 ///  - round rod: J = pi R^4 / 2 (exact);
 ///  - explicit: the given value (0 when not given).
 double sectionTorsionConstant(const Section& s);
+/// Distance in m from the neutral axis to the extreme fibre for bending in the plane of
+/// motion: h / 2 (rectangle, tube), R (rod), or the explicit value (0 when not given).
+double sectionFibreDistance(const Section& s);
+/// The same for bending out of the plane: b / 2, R, or the explicit value.
+double sectionFibreDistanceOut(const Section& s);
+/// The largest torsional shear stress per unit torque, Pa per N*m, at the surface:
+///  - round rod: R / J = 2 / (pi R^3) (exact);
+///  - rectangular tube: Bredt's 1 / (2 A_m t), A_m = (b - t)(h - t) the area inside the
+///    wall's midline (uniform over a thin wall);
+///  - solid rectangle, sides 2a >= 2c: 3 / (8 a c^2) (1 + 0.6095 r + 0.8865 r^2 -
+///    1.8023 r^3 + 0.9100 r^4), r = c / a, at the middle of the long sides (Roark's
+///    Formulas for Stress and Strain, torsion of a solid rectangle; 0.601 / a^3 for a
+///    square, the series' 1 / (0.208 s^3));
+///  - explicit: 0 (not known: the torsional shear is not recovered).
+double sectionTorsionShearPerTorque(const Section& s);
 /// Squared radius of gyration of the section about the bending axis, I/A, in m^2.
 double sectionGyrationSquared(const Section& s);
 

@@ -20,6 +20,11 @@ std::string segmentsChoiceText(const SegmentsChoice& c);
 nlohmann::ordered_json segmentsChoiceJson(const SegmentsChoice& c);
 nlohmann::ordered_json discretizationJson(const DiscretizationEstimate& d);
 
+/// The static stress block (docs/strength.md): every link's peak stress at the
+/// equilibrium, where, its allowable with the factor and the margin of safety.
+std::string staticStressText(const std::vector<LinkStaticStress>& links, const StrengthFactors& f);
+nlohmann::ordered_json staticStressJson(const std::vector<LinkStaticStress>& links, const StrengthFactors& f);
+
 /// The spatial model's planarity section of `modes` (sim/modes/planarity.hpp).
 std::string planarityText(const PlanarityReport& p);
 nlohmann::ordered_json planarityJson(const PlanarityReport& p);

@@ -31,6 +31,22 @@ json modeJson(const ModesReport& r, const ModeInfo& m) {
     }
     mj["at_points"] = at;
   }
+  if (!m.stress_per_mm.empty()) {
+    json st = json::array();
+    for (const auto& l : m.stress_per_mm) {
+      json lj = {{"link", l.link}, {"recovered", l.recovered}};
+      if (l.recovered) {
+        lj["x_m"] = l.x_m;
+        lj["face"] = l.face;
+        lj["equivalent_pa_per_mm"] = l.equivalent_pa_per_mm;
+        lj["moment_n_m_per_mm"] = l.moment_nm_per_mm;
+      } else {
+        lj["why_not"] = l.why_not;
+      }
+      st.push_back(lj);
+    }
+    mj["stress_per_mm_of_peak"] = st;
+  }
   if (!m.strains.empty()) {
     json st = json::array();
     for (const auto& g : m.strains) st.push_back({{"span", g.span}, {"strain_per_modal_unit", g.strain}});
@@ -40,6 +56,44 @@ json modeJson(const ModesReport& r, const ModeInfo& m) {
 }
 
 }  // namespace
+
+json staticStressJson(const std::vector<LinkStaticStress>& links, const StrengthFactors& f) {
+  json out = json::array();
+  for (const auto& l : links) {
+    const LinkStressPeak& p = l.peak;
+    json lj = {{"link", p.link}, {"material", l.material}, {"recovered", p.recovered}};
+    if (!p.recovered) {
+      lj["why_not"] = p.why_not;
+      out.push_back(lj);
+      continue;
+    }
+    lj["x_m"] = p.loads.x;
+    lj["face"] = p.stress.face;
+    lj["axial_n"] = p.loads.axial;
+    lj["moment_n_m"] = p.loads.moment;
+    lj["moment_out_n_m"] = p.loads.moment_out;
+    lj["torsion_n_m"] = p.loads.torsion;
+    lj["tension_pa"] = p.stress.tension;
+    lj["compression_pa"] = p.stress.compression;
+    lj["shear_pa"] = p.stress.shear;
+    lj["equivalent_pa"] = p.stress.equivalent;
+    lj["strain"] = p.stress.strain;
+    const StrengthJudgement& j = l.judgement;
+    lj["judged"] = j.judged;
+    if (j.judged) {
+      lj["criterion"] = j.criterion;
+      lj["allowable_pa"] = j.allowable;
+      lj["factor"] = j.factor;
+      lj["margin_of_safety"] = j.margin;
+      lj["verdict"] = j.pass ? "ok" : "FAIL";
+    } else {
+      lj["note"] = j.note;
+    }
+    out.push_back(lj);
+  }
+  return {{"factors", {{"yield", f.yield_factor}, {"ultimate", f.ultimate_factor}, {"stated_by_scene", f.given}}},
+          {"links", out}};
+}
 
 json modesToJson(const ModesReport& r) {
   json j;
@@ -83,7 +137,8 @@ json modesToJson(const ModesReport& r) {
                       {"force_scale_n_m", r.force_scale_nm},
                       {"joints", joints},
                       {"closures", closures},
-                      {"points", points}};
+                      {"points", points},
+                      {"static_stress", staticStressJson(r.static_stress, r.strength)}};
   json modes = json::array();
   for (const auto& m : r.modes) modes.push_back(modeJson(r, m));
   j["damping"] = r.damped ? json{{"model", r.damping_model}, {"basis_modes", r.damping_basis_modes}, {"exact", r.damping_exact}}
@@ -107,7 +162,17 @@ json discretizationJson(const DiscretizationEstimate& d) {
   if (!d.available) return {{"available", false}, {"reason", d.reason}};
   json modes = json::array();
   for (const auto& m : d.modes) modes.push_back(fieldsJson(convergenceModeFields(), m, [](const auto&) { return true; }));
-  return {{"available", true}, {"segment_divisors", d.divisors}, {"wall_time_s", d.seconds}, {"modes", modes}};
+  json stresses = json::array();
+  for (const auto& s : d.stresses) {
+    const ConvergenceMode& m = s.ladder;
+    json sj = {{"link", s.link}, {"equivalent_stress_pa", m.frequency_hz}};
+    if (m.has_estimate) sj["richardson_pa"] = m.extrapolated_hz, sj["estimated_relative_error"] = m.estimated_relative_error;
+    if (m.has_observed_order) sj["observed_order"] = m.observed_order;
+    sj["check"] = m.check.empty() ? "unchecked" : m.check;
+    stresses.push_back(sj);
+  }
+  return {{"available", true}, {"segment_divisors", d.divisors}, {"wall_time_s", d.seconds}, {"modes", modes},
+          {"static_stress", stresses}};
 }
 
 json segmentsChoiceJson(const SegmentsChoice& c) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdarg>
 #include <cmath>
 #include <cstdio>
@@ -68,6 +69,52 @@ std::string modesTable(const ModesReport& r) {
 
 }  // namespace
 
+std::string staticStressText(const std::vector<LinkStaticStress>& links, const StrengthFactors& f) {
+  std::ostringstream os;
+  os << strf("\nStatic stress at the equilibrium (peak per link; margin of safety MS = allowable / (factor * stress) - 1,\n"
+             "factors yield %.3g and ultimate %.3g%s; docs/strength.md)\n",
+             f.yield_factor, f.ultimate_factor, f.given ? ", the scene's" : ", NASA-STD-5001B's protoflight defaults");
+  Table t({"link", "x_m", "face", "axial_N", "moment_N*m", "stress_MPa", "allowable_MPa", "factor", "MS", "verdict"});
+  std::vector<std::string> notes;
+  for (const auto& l : links) {
+    const LinkStressPeak& p = l.peak;
+    if (!p.recovered) {
+      t.add({p.link, "-", "-", "-", "-", "-", "-", "-", "-", "-"});
+      notes.push_back(p.link + ": " + p.why_not);
+      continue;
+    }
+    const StrengthJudgement& j = l.judgement;
+    t.add({p.link, strf("%.4f", p.loads.x), p.stress.face, strf("%.4g", p.loads.axial), strf("%.4g", p.loads.moment),
+           strf("%.4g", 1e-6 * p.stress.equivalent),
+           j.judged ? strf("%.4g (%s)", 1e-6 * j.allowable, j.criterion.c_str()) : std::string("-"),
+           j.judged ? strf("%.3g", j.factor) : std::string("-"), j.judged ? strf("%.3f", j.margin) : std::string("-"),
+           j.judged ? (j.pass ? "ok" : "FAIL") : "not judged"});
+    if (!j.judged) notes.push_back(p.link + ": " + j.note);
+  }
+  os << t.text();
+  for (const auto& n : notes) os << "  " << n << "\n";
+  return os.str();
+}
+
+/// Each mode's peak bending stress per mm of its peak translation, a column per link.
+static std::string modalStressText(const ModesReport& r) {
+  if (std::none_of(r.modes.begin(), r.modes.end(), [](const ModeInfo& m) { return !m.stress_per_mm.empty(); })) return "";
+  std::ostringstream os;
+  os << "\nModal bending stress per mm of each mode's peak translation (MPa/mm, the link's peak: what a test level\n"
+        "moving the mode's peak point 1 mm puts in each link; docs/strength.md)\n";
+  std::vector<std::string> head{"mode"};
+  for (const auto& l : r.static_stress) head.push_back(l.peak.link);
+  Table t(head);
+  for (const auto& m : r.modes) {
+    if (m.stress_per_mm.empty()) continue;
+    std::vector<std::string> row{std::to_string(m.number.number())};
+    for (const auto& l : m.stress_per_mm) row.push_back(l.recovered ? strf("%.4g", 1e-6 * l.equivalent_pa_per_mm) : "-");
+    t.add(row);
+  }
+  os << t.text();
+  return os.str();
+}
+
 std::string formatModesText(const ModesReport& r) {
   std::ostringstream os;
   const double g = std::hypot(r.gravity[0], r.gravity[1]);
@@ -101,6 +148,7 @@ std::string formatModesText(const ModesReport& r) {
       os << strf("  %-12s %10.4f %10.4f %12.4f %12.4f%s\n", p.name.c_str(), p.x, p.y, 1e3 * p.dx, 1e3 * p.dy,
                  r.spatial ? strf(" %12.4f", 1e3 * p.dz).c_str() : "");
 
+  os << staticStressText(r.static_stress, r.strength);
   os << modesTable(r);
   if (static_cast<int>(r.modes.size()) < r.model.num_dofs)
     os << "  (" << r.modes.size() << " of " << r.model.num_dofs << " modes shown; --modes 0 shows all)\n";
@@ -120,6 +168,7 @@ std::string formatModesText(const ModesReport& r) {
       }
     os << t.text();
   }
+  os << modalStressText(r);
   if (!r.modes.empty() && !r.modes.front().strains.empty()) {
     os << "\nModal strain over the spans asked for (mean surface strain, -c (theta_B - theta_A) / span, per unit modal\n"
           "coordinate of the mass-normalised shape: kg^-1/2)\n";
@@ -152,7 +201,19 @@ std::string discretizationText(const DiscretizationEstimate& d) {
            m.has_estimate ? strf("%.3g", 100 * m.estimated_relative_error) : "-",
            m.has_observed_order ? strf("%.2f", m.observed_order) : "-", m.check.empty() ? "unchecked" : m.check});
   }
-  return os.str() + t.text();
+  os << t.text();
+  if (!d.stresses.empty()) {
+    os << "Discretization error of each link's peak static stress, on the same meshes\n";
+    Table st({"link", "stress_MPa", "richardson_MPa", "est_err_%", "order", "check"});
+    for (const auto& s : d.stresses) {
+      const ConvergenceMode& m = s.ladder;
+      st.add({s.link, strf("%.6g", 1e-6 * m.frequency_hz.back()), m.has_estimate ? strf("%.6g", 1e-6 * m.extrapolated_hz) : "-",
+              m.has_estimate ? strf("%.3g", 100 * m.estimated_relative_error) : "-",
+              m.has_observed_order ? strf("%.2f", m.observed_order) : "-", m.check.empty() ? "unchecked" : m.check});
+    }
+    os << st.text();
+  }
+  return os.str();
 }
 
 std::string segmentsChoiceText(const SegmentsChoice& c) {

@@ -64,6 +64,30 @@ std::vector<int> pairModes(const std::vector<ModeInfo>& fine, const std::vector<
   return match;
 }
 
+/// Each link's peak static stress over the runs (coarsest first), where every run
+/// recovered it: assessLadder's Richardson value and order, or "mesh-independent" where
+/// the meshes agree to 1e-9 (a link carrying axial load only).
+std::vector<StressConvergence> stressConvergence(const ModesReport& finest, const std::vector<std::vector<double>>& runs) {
+  std::vector<StressConvergence> out;
+  for (std::size_t l = 0; l < finest.static_stress.size(); ++l) {
+    std::vector<double> ladder;
+    for (const auto& r : runs) ladder.push_back(l < r.size() ? r[l] : NAN);
+    if (!std::all_of(ladder.begin(), ladder.end(), [](double v) { return std::isfinite(v) && v > 0; })) continue;
+    StressConvergence sc{finest.static_stress[l].peak.link, assessLadder(ModeNumber::atIndex(static_cast<int>(l)), ladder)};
+    double spread = 0;
+    for (double v : ladder) spread = std::max(spread, std::abs(v - ladder.back()));
+    if (spread <= 1e-9 * ladder.back()) {
+      sc.ladder.has_estimate = true;
+      sc.ladder.has_observed_order = false;
+      sc.ladder.extrapolated_hz = ladder.back();
+      sc.ladder.estimated_relative_error = 0;  // below 1e-9: round-off, which no machine repeats
+      sc.ladder.check = "mesh-independent";
+    }
+    out.push_back(std::move(sc));
+  }
+  return out;
+}
+
 }  // namespace
 
 DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const ModesReport& finest) {
@@ -90,6 +114,12 @@ DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const M
   // sit further down the list there.
   std::vector<std::vector<double>> runs;
   std::vector<bool> unpaired(finest_hz.size(), false);  ///< the coarse mesh has enough modes, none of this one's family
+  std::vector<std::vector<double>> stress_runs;  ///< per run, each link's peak static stress (NaN: not recovered)
+  auto peakStresses = [](const ModesReport& r) {
+    std::vector<double> out;
+    for (const auto& l : r.static_stress) out.push_back(l.peak.recovered ? l.peak.stress.equivalent : NAN);
+    return out;
+  };
   for (int d : e.divisors) {
     ArticleScene coarse = scene;
     for (auto& l : coarse.article.links)
@@ -105,7 +135,10 @@ DiscretizationEstimate estimateDiscretization(const ArticleScene& scene, const M
       else if (i < c.modes.size()) unpaired[i] = true;
     }
     runs.push_back(std::move(f));
+    stress_runs.push_back(peakStresses(c));
   }
+  stress_runs.push_back(peakStresses(finest));
+  e.stresses = stressConvergence(finest, stress_runs);
   double scale = 0;
   for (double f : finest_hz) scale = std::max(scale, std::abs(f));
   for (std::size_t i = 0; i < finest_hz.size(); ++i) {

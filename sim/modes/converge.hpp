@@ -58,11 +58,22 @@ ConvergenceMode assessLadder(ModeNumber number, const std::vector<double>& frequ
 /// link's segments halved and, when they divide by 4, quartered; each mode matched by
 /// index. Not available (`reason` says why) without flexible links or when a link's
 /// segments are odd.
+/// One link's static peak stress over the same meshes (docs/strength.md): the ladder's
+/// values in Pa in `ladder.frequency_hz` (assessLadder's arithmetic is the frequencies'),
+/// its Richardson value, observed order and estimate; check "mesh-independent" where the
+/// meshes agree to 1e-9 (a link carrying axial load only; its estimate is then 0).
+struct StressConvergence {
+  std::string link;
+  ConvergenceMode ladder;
+};
+
 struct DiscretizationEstimate {
   bool available = false;
   std::string reason;
   std::vector<int> divisors;  ///< the coarser runs, e.g. {4, 2}: segments / 4 and / 2
   std::vector<ConvergenceMode> modes;  ///< one per finest frequency; check "rigid" for a zero-frequency mode
+  /// Each link whose static stress every run recovered, in scene order.
+  std::vector<StressConvergence> stresses;
   double seconds = 0;
 };
 struct ModesReport;  // sim/modes/system_modes.hpp (which holds a DiscretizationEstimate)

@@ -361,6 +361,40 @@ std::vector<Eigen::RowVectorXd> strainRows(const ArticleScene& scene, const Mode
   return rows;
 }
 
+/// What the equilibrium holds: torques, closure forces, points and the links' stress.
+void describeEquilibrium(const ArticleScene& scene, const Model& model, const EquilibriumResult& eq, const SimTK::State& eqs,
+                         ModesReport& rep) {
+  rep.joints = jointReports(scene, model, eq);
+  rep.closures = closureReports(model, eqs, eq);
+  rep.points = pointReports(model, eqs, eq);
+  rep.strength = scene.article.strength;
+  rep.static_stress = staticLinkStress(model, scene.article, eqs, eq.q, closureForces(model, eq.closure_multipliers));
+}
+
+/// Each link's peak bending stress in mode `phi` (over `dofs`) per mm of its peak
+/// translation, 1 / sqrt(modal mass) m per unit modal coordinate (describeShape).
+std::vector<ModalLinkStress> modalStressPerMm(const Model& model, const ArticleSpec& article, const Eigen::VectorXd& q,
+                                              const std::vector<int>& dofs, const Eigen::VectorXd& phi, const ModeInfo& m) {
+  Eigen::VectorXd dq = Eigen::VectorXd::Zero(model.getNumCoordinates());
+  for (std::size_t i = 0; i < dofs.size(); ++i) dq[dofs[i]] = phi[static_cast<Eigen::Index>(i)];
+  const double peak_mm = 1e3 / std::sqrt(m.modal_mass_kg);
+  std::vector<ModalLinkStress> out;
+  for (const LinkStressPeak& p : modalLinkStress(model, article, q, dq)) {
+    ModalLinkStress r;
+    r.link = p.link;
+    r.recovered = p.recovered;
+    r.why_not = p.why_not;
+    if (p.recovered) {
+      r.x_m = p.loads.x;
+      r.face = p.stress.face;
+      r.equivalent_pa_per_mm = p.stress.equivalent / peak_mm;
+      r.moment_nm_per_mm = std::abs(p.loads.moment) / peak_mm;
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
 }  // namespace
 
 ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
@@ -384,11 +418,9 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
   rep.equilibrium_iterations = s.equilibrium.iterations;
   rep.equilibrium_residual_nm = s.equilibrium.residual;
   rep.force_scale_nm = s.equilibrium.force_scale;
-  rep.joints = jointReports(scene, model, s.equilibrium);
   SimTK::State eqs = s.equilibrium.state;  // a copied State must be realized again before use
   model.getSystem().realize(eqs, SimTK::Stage::Position);
-  rep.closures = closureReports(model, eqs, s.equilibrium);
-  rep.points = pointReports(model, eqs, s.equilibrium);
+  describeEquilibrium(scene, model, s.equilibrium, eqs, rep);
   const ModeKinematics kin = modeKinematics(model, eqs, dofs);
   std::vector<PointRef> at_points;
   std::vector<Eigen::MatrixXd> point_rows;
@@ -437,6 +469,7 @@ ModesReport runModes(const ArticleScene& scene, const ModesOptions& options) {
       m.at_points.push_back({at_points[p].name(), u[0], u[1], u.size() > 2 ? u[2] : 0.0, 0.0, false});
     }
     for (std::size_t g = 0; g < strain_rows.size(); ++g) m.strains.push_back({options.strains[g].name, strain_rows[g].dot(phi)});
+    if (!m.rigid_body && m.modal_mass_kg > 0) m.stress_per_mm = modalStressPerMm(model, scene.article, s.equilibrium.q, dofs, phi, m);
     rep.modes.push_back(std::move(m));
   }
   rep.spatial = model.isSpatial();

@@ -31,6 +31,7 @@
 #include "sim/statics/linearize.hpp"
 #include "sim/modes/converge.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/statics/link_stress.hpp"
 #include "sim/statics/statics.hpp"
 
 namespace mmv {
@@ -65,6 +66,16 @@ struct ModalStrain {
   double strain = 0;
 };
 
+/// A link's peak stress in a mode, per mm of the mode's peak translation.
+struct ModalLinkStress {
+  std::string link;
+  bool recovered = false;  ///< else why_not (a rigid link, no fibre distance).
+  std::string why_not;
+  double x_m = 0;          ///< where on the link (m from its root).
+  std::string face;
+  double equivalent_pa_per_mm = 0, moment_nm_per_mm = 0;
+};
+
 struct ModeInfo {
   ModeNumber number;
   double omega2 = 0;  ///< rad^2/s^2.
@@ -90,6 +101,10 @@ struct ModeInfo {
   /// The shape at the points and stations of ModesOptions::points, in that order.
   std::vector<PointMotion> at_points;
   std::vector<ModalStrain> strains;  ///< ModesOptions::strains'
+  /// Each link's peak bending stress in this mode per mm of its peak translation (at
+  /// peak_point): the stress a test level of that amplitude puts in the link (Pa/mm,
+  /// scene link order; docs/strength.md).
+  std::vector<ModalLinkStress> stress_per_mm;
 };
 
 struct JointReport {
@@ -132,6 +147,10 @@ struct ModesReport {
   std::vector<ClosureReport> closures;
   std::vector<PointReport> points;
   std::vector<ModeInfo> modes;
+  /// The static stress at the equilibrium, per link in scene order (docs/strength.md),
+  /// judged with `strength`.
+  std::vector<LinkStaticStress> static_stress;
+  StrengthFactors strength;
   /// The scene's damping (ModesOptions::damping): its description, and the real modes
   /// the damped eigenproblem was solved over (all of them: exact).
   bool damped = false;

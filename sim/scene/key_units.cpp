@@ -18,6 +18,8 @@ std::string sceneKeyUnit(const std::string& key) {
       {"ramp_s", "s"},                        {"length", "m"},              {"radius", "m"},
       {"area", "m^2"},                        {"mass", "kg"},               {"b", "m"},
       {"h", "m"},                             {"t", "m"},
+      {"fibre_distance_out", "m"},            {"fibre_distance", "m"},      {"yield_strength", "Pa"},
+      {"ultimate_strength", "Pa"},
   };
   for (const auto& [name, unit] : kUnits) {
     const std::string n(name);

@@ -39,7 +39,7 @@ class SceneParser {
   ArticleScene parse(const YAML::Node& root, const std::string& source) {
     auto top = r_.mapping(root, "", {"name", "gravity", "materials", "sections", "base", "joints",
                                      "links", "closures", "loads", "damping", "simulation", "sensors", "views", "lab",
-                                     "shaker", "model", "instruments"});
+                                     "shaker", "model", "instruments", "strength"});
     ArticleScene scene;
     scene.source = source;
     scene.name = top.count("name") ? r_.text(top.at("name"), "name") : std::string("unnamed");
@@ -53,6 +53,7 @@ class SceneParser {
     ArticleSpec& a = scene.article;
     readMaterials(r_.require(top, root, "", "materials"), a);
     readSections(r_.require(top, root, "", "sections"), a);
+    if (top.count("strength")) a.strength = readStrengthFactors(r_, top.at("strength"));
     if (top.count("base")) readBase(top.at("base"), a.base);
     readJoints(r_.require(top, root, "", "joints"), a);
     readLinks(r_.require(top, root, "", "links"), a);

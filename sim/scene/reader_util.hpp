@@ -208,6 +208,8 @@ DampingSpec readDamping(const YamlReader& r, const YAML::Node& n);
 /// sections.NAME and materials.NAME (sim/scene/read_section.cpp).
 Section readSection(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
 Material readMaterial(const YamlReader& r, const std::string& name, const YAML::Node& n, const std::string& path);
+/// `strength: {yield_factor, ultimate_factor}` (each >= 1; article/article_spec.hpp).
+StrengthFactors readStrengthFactors(const YamlReader& r, const YAML::Node& n);
 facility::LabSpec readLab(const YamlReader& r, const YAML::Node& n);
 /// shaker: {at: STATION | auto, direction: [x, y, z] | auto, force_limit_n, stroke_m,
 /// armature_mass_kg, crest_factor}; after the links and the model are read.

@@ -20,6 +20,9 @@ TEST(SceneKeyUnits, KeysTakeTheUnitOfTheirLastName) {
   EXPECT_EQ(sceneKeyUnit("length"), "m");
   // A name is matched whole: "strength" is not a length, "segments" has no unit.
   EXPECT_EQ(sceneKeyUnit("materials.m.strength"), "");
+  EXPECT_EQ(sceneKeyUnit("materials.m.yield_strength"), "Pa");
+  EXPECT_EQ(sceneKeyUnit("materials.m.ultimate_strength"), "Pa");
+  EXPECT_EQ(sceneKeyUnit("sections.s.fibre_distance_out"), "m");
   EXPECT_EQ(sceneKeyUnit("links.link1.segments"), "");
   EXPECT_EQ(sceneKeyUnit("materials.m.poisson_ratio"), "");
   EXPECT_EQ(sceneKeyLabel("links_link3_length"), "links_link3_length (m)");

@@ -202,6 +202,16 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.yaml:21:12: links[0].model: unknown model 'flat' (known: planar, spatial)"},
         BadCase{"poisson ratio out of range", "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, poisson_ratio: 0.7}",
                 "s.yaml:4:65: materials.steel.poisson_ratio must be in (-1, 0.5) for an isotropic solid (got 0.7)"},
+        BadCase{"yield above ultimate", "youngs_modulus: 2.0e11}",
+                "youngs_modulus: 2.0e11, yield_strength: 300e6, ultimate_strength: 250e6}",
+                "s.yaml:4:66: materials.steel.yield_strength 300e6 Pa exceeds its ultimate_strength 250e6 Pa: a material "
+                "yields before it fails"},
+        // The factors' stated bound (docs/strength.md): 1 is accepted (StrengthKeys), below it refused.
+        BadCase{"factor of safety below one", "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nstrength: {yield_factor: 0.99}",
+                "s.yaml:3:26: strength.yield_factor must be >= 1 (a factor of safety below 1 accepts a stress above the "
+                "allowable; got 0.99)"},
+        BadCase{"fibre distance on a shape that has its own", "h: 0.01}", "h: 0.01, fibre_distance: 0.005}",
+                "s.yaml:6:61: sections.bar.fibre_distance does not apply to shape 'rectangle'"},
         BadCase{"shear modulus and poisson ratio", "youngs_modulus: 2.0e11}",
                 "youngs_modulus: 2.0e11, shear_modulus: 8e10, poisson_ratio: 0.3}",
                 "s.yaml:4:86: materials.steel: give shear_modulus or poisson_ratio, not both"},
@@ -239,6 +249,28 @@ INSTANTIATE_TEST_SUITE_P(
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
       return name;
     });
+
+// Allowables, factors of safety (1 is the bound: accepted) and an explicit section's fibre
+// distances are read as written; without `strength:` the defaults stand, marked so.
+TEST(SceneYaml, StrengthKeys) {
+  const ArticleScene plain = parseArticle(kGood, "s.yaml");
+  EXPECT_FALSE(plain.article.strength.given);
+  EXPECT_EQ(plain.article.strength.yield_factor, 1.25);
+  EXPECT_EQ(plain.article.strength.ultimate_factor, 1.4);
+  EXPECT_EQ(plain.article.materials[0].ultimate_strength, 0.0);
+  std::string text = replaceLine(kGood, "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, yield_strength: 250e6, ultimate_strength: 400e6}");
+  text = replaceLine(text, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nstrength: {yield_factor: 1, ultimate_factor: 1.5}");
+  text = replaceLine(text, "bar: {shape: rectangle, b: 0.02, h: 0.01}",
+                     "bar: {shape: explicit, area: 1e-4, second_moment: 1e-9, fibre_distance: 0.006}");
+  const ArticleScene s = parseArticle(text, "s.yaml");
+  EXPECT_TRUE(s.article.strength.given);
+  EXPECT_EQ(s.article.strength.yield_factor, 1.0);
+  EXPECT_EQ(s.article.strength.ultimate_factor, 1.5);
+  EXPECT_EQ(s.article.materials[0].yield_strength, 250e6);
+  EXPECT_EQ(s.article.materials[0].ultimate_strength, 400e6);
+  EXPECT_EQ(sectionFibreDistance(s.article.sections[0]), 0.006);
+  EXPECT_EQ(sectionFibreDistanceOut(s.article.sections[0]), 0.0);
+}
 
 TEST(SceneYaml, SpatialModelReadsShearModulusAndBranchesOutOfThePlane) {
   const ArticleScene s = parseArticle(
