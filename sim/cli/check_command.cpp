@@ -22,7 +22,8 @@ int runCheckCommand(const CheckArgs& args) {
       out->commit();  // reported as written when the command succeeds
     }
     args.json ? emitResult(s.json) : emitResult(s.text);
-    return kOk;
+    // A FAIL is the answer, not an error: the report is out; the code tells a script.
+    return s.report.overall == Verdict::Fail && !args.report_only ? kCheckFailed : kOk;
   });
 }
 

@@ -42,6 +42,7 @@ namespace mmv::cli {
 enum ExitCode : int {
   kOk = 0,
   kNumericalFailure = 1,  ///< the analysis could not produce trustworthy numbers.
+  kCheckFailed = 3,       ///< check: a requirement FAILs (the report is written in full; --report-only: 0).
   kUsage = 64,            ///< bad command line.
   kDataError = 65,        ///< bad scene content.
   kNoInput = 66,          ///< the scene file is missing or unreadable.
@@ -88,7 +89,10 @@ using ModesArgs = DeclaredArgs<app::ModesParams>;
 using ConvergeArgs = DeclaredArgs<app::ConvergeParams>;
 using CompareArgs = DeclaredArgs<app::CompareParams>;
 using ConfigSweepArgs = DeclaredArgs<app::ConfigSweepParams>;
-using CheckArgs = DeclaredArgs<app::CheckParams>;
+/// check's command line: its declared options and the command line's own exit rule.
+struct CheckArgs : DeclaredArgs<app::CheckParams> {
+  bool report_only = false;  ///< exit 0 even when a requirement FAILs.
+};
 using SimulateArgs = DeclaredArgs<app::SimulateParams>;
 using TradeArgs = DeclaredArgs<app::TradeParams>;
 

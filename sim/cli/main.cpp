@@ -310,6 +310,8 @@ int main(int argc, char** argv) {
 
   CheckArgs ck;
   CLI::App* ch = addDeclaredCommand(app, "check", ck);
+  ch->add_flag("--report-only", ck.report_only,
+               "Exit 0 even when a requirement FAILs (without it a FAIL exits 3, after the whole report is written)");
   CorrelateArgs co;
   CLI::App* cr = addCorrelateCommand(app, co);
   UpdateArgs up;

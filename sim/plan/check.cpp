@@ -112,7 +112,9 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, con
   for (const auto& l : scene.article.links)
     if (!l.rigid) rep.segments = std::max(rep.segments, l.segments);
   std::optional<ProgressStage> stage(std::in_place, "torquer lines");
-  plan::addTorqueLines(in, rep.lines);
+  std::vector<plan::HeldStress> solved;
+  plan::addTorqueLines(in, rep.lines, solved);
+  plan::addStrengthLines(in, solved, rep.lines);
   stage.emplace("table and mode lines");
   plan::addTableAndModeLines(in, rep.lines);
   stage.emplace("planarity lines");
@@ -124,7 +126,7 @@ CheckReport runCheck(const ArticleScene& scene, const CheckOptions& options, con
   stage.reset();
   plan::addLabLines(in, rep.lines);
   plan::addPlausibilityLines(in, rep.lines);
-  const std::vector<std::string> order{"torquers", "gimbal", "table", "modes", "planarity", "sensors", "shaker", "lab",
+  const std::vector<std::string> order{"torquers", "gimbal", "strength", "table", "modes", "planarity", "sensors", "shaker", "lab",
                                         "plausibility"};
   std::stable_sort(rep.lines.begin(), rep.lines.end(), [&](const CheckLine& a, const CheckLine& b) {
     return std::find(order.begin(), order.end(), a.group) < std::find(order.begin(), order.end(), b.group);

@@ -25,9 +25,22 @@ struct CheckInputs {
 /// The scene with every link rigid (one body per link; joints, masses and programs kept).
 ArticleScene rigidCopy(const ArticleScene& scene);
 
+/// A configuration the holding-torque search solved with the flexible links (its angles,
+/// why it was chosen) and its links' static stress there.
+struct HeldStress {
+  std::string where;
+  std::vector<LinkStaticStress> links;
+};
+
 /// Holding torques of locked joints and gimbal axes, worst over their ranges; the
-/// peaks of the rigid-link run (slews); gimbal angles against their ranges.
-void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// peaks of the rigid-link run (slews); gimbal angles against their ranges. `solved`
+/// gets each worst configuration's static stress.
+void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out, std::vector<HeldStress>& solved);
+/// Each flexible link's static stress against its allowable with the scene's factor,
+/// worst over the scene's configuration and those the torque search solved (a link's
+/// root moment is its joint's holding torque: the worst torque is where a root-bent link
+/// is worst); judged by the factor of safety alone (MS >= 0), not by --margin.
+void addStrengthLines(const CheckInputs& in, const std::vector<HeldStress>& solved, std::vector<CheckLine>& out);
 /// Each sensor's peak signal against its range, with its signal-to-resolution ratio.
 void addSensorLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Payload, stroke, bandwidth (table scenes); modal content in the band.

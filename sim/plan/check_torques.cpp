@@ -9,6 +9,7 @@
 #include "sim/model/article_builder.hpp"
 #include "sim/plan/check_parts.hpp"
 #include "sim/scene/programs.hpp"
+#include "sim/statics/closures.hpp"
 #include "sim/statics/statics.hpp"
 
 namespace mmv::plan {
@@ -53,17 +54,25 @@ ArticleScene withAngles(const ArticleScene& scene, const std::vector<HeldAngle>&
   return s;
 }
 
-/// Torque every held rotation applies (N*m, ccw +) at the scene's equilibrium with its own links.
-std::map<std::string, double> heldTorques(const ArticleScene& scene) {
+/// The torque every held rotation applies (N*m, ccw +) at the scene's equilibrium with
+/// its own links, and the links' static stress there (sim/statics/link_stress.hpp).
+struct HeldEquilibrium {
+  std::map<std::string, double> torques;
+  std::vector<LinkStaticStress> stress;
+};
+HeldEquilibrium heldEquilibrium(const ArticleScene& scene) {
   const auto model = buildArticleModel(scene);
   const EquilibriumResult eq = solveEquilibrium(*model);
   if (!eq.converged) throw NumericalError("check: no static equilibrium at " + scene.name + ": " + eq.failure);
-  std::map<std::string, double> out;
+  HeldEquilibrium out;
   for (int i = 0; i < model->getNumCoordinates(); ++i) {
     const Coordinate& c = model->getCoordinates()[i];
     if (c.kind == CoordinateKind::Joint && c.motion == CoordinateMotion::Rotation && c.held)
-      out[c.name] = -eq.generalized_force[i];
+      out.torques[c.name] = -eq.generalized_force[i];
   }
+  SimTK::State s = eq.state;  // a copied State must be realized again before use
+  model->getSystem().realize(s, SimTK::Stage::Position);
+  out.stress = staticLinkStress(*model, scene.article, s, eq.q, closureForces(*model, eq.closure_multipliers));
   return out;
 }
 
@@ -148,7 +157,7 @@ std::string perKilogram(const ArticleSpec& a, const std::string& joint, double t
   return strf("; needs %.3g N*m per kg of its %.4g kg torquer", torque / j->torquer->mass, j->torquer->mass);
 }
 
-void addHoldingLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+void addHoldingLines(const CheckInputs& in, std::vector<CheckLine>& out, std::vector<HeldStress>& solved) {
   const ArticleScene& scene = in.scene;
   const auto rigid_model = buildArticleModel(in.rigid);
   const std::vector<HeldAngle> held = heldAngles(*rigid_model, scene.article);
@@ -158,7 +167,7 @@ void addHoldingLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     if (fixed_by.empty() && j.hold != JointHold::Locked) fixed_by = j.name + " is not locked: its angle follows from equilibrium";
   const double margin = in.options.required_margin_pct;
   if (!fixed_by.empty()) {
-    const auto t = heldTorques(scene);
+    const auto t = heldEquilibrium(scene).torques;
     for (const auto& h : held) {
       const double tau = std::abs(t.at(h.name));
       const double cap = scene.article.torqueCapacity(h.name);
@@ -174,7 +183,9 @@ void addHoldingLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   const auto worst = search.worst(points);
   for (std::size_t k = 0; k < held.size(); ++k) {
     const double rigid = roundOff(std::abs(search.torques(worst[k])[k]));
-    const double tau = roundOff(std::abs(heldTorques(withAngles(scene, held, worst[k])).at(held[k].name)));
+    HeldEquilibrium at = heldEquilibrium(withAngles(scene, held, worst[k]));
+    const double tau = roundOff(std::abs(at.torques.at(held[k].name)));
+    solved.push_back({anglesText(held, worst[k]) + " (" + held[k].name + "'s worst holding torque)", std::move(at.stress)});
     const double cap = scene.article.torqueCapacity(held[k].name);
     out.push_back(makeLine(held[k].name.rfind("gimbal.", 0) == 0 ? "gimbal" : "torquers", "torque." + held[k].name + ".hold",
                            held[k].name + strf(" holding torque, worst over +-%.0f deg", held[k].range * kRadToDeg), tau, cap,
@@ -240,8 +251,8 @@ void addGimbalRangeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
 
 }  // namespace
 
-void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out) {
-  addHoldingLines(in, out);
+void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out, std::vector<HeldStress>& solved) {
+  addHoldingLines(in, out, solved);
   addSlewLines(in, out);
   addGimbalRangeLines(in, out);
 }

@@ -98,7 +98,9 @@ TEST_F(Cli, AFilmThinTubeWallIsNeverAnInternalError) {
     const Result r = run(std::string(verb) + " --segments 2 --set sections.link1_tube.t=1e-20");
     EXPECT_NE(r.code, 70) << verb << "\n" << r.err;
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << verb << "\n" << r.err;
-    EXPECT_TRUE(r.code == 0 || r.code == 1 || r.code == 65) << verb << ": exit " << r.code << "\n" << r.err;
+    // check may FAIL such a wall (exit 3): an answer, not an error.
+    EXPECT_TRUE(r.code == 0 || r.code == 1 || r.code == 65 || (r.code == 3 && std::string(verb) == "check"))
+        << verb << ": exit " << r.code << "\n" << r.err;
   }
 }
 

@@ -55,7 +55,7 @@ TEST_F(Cli, CheckDefaultSceneNamesTheTorquersWorstCase) {
 
 TEST_F(Cli, CheckJsonAndMarkdownCarryTheOverridesAndVerdicts) {
   const Result r = run("check " + std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv.yaml --set joints.joint1.torque_capacity=100 --json --out " + (dir_ / "ck").string());
-  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(r.code, 3) << r.err;  // a FAIL exits 3, after the whole report (README's exit codes)
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["overall"], "FAIL");  // about 129 N*m needed at joint 1
   EXPECT_EQ(j["overrides"][0], "joints.joint1.torque_capacity=100");
@@ -72,6 +72,45 @@ TEST_F(Cli, CheckJsonAndMarkdownCarryTheOverridesAndVerdicts) {
   const std::string md = slurp(dir_ / "ck" / "check.md");
   EXPECT_NE(md.find("| torquers | joint1 holding torque"), std::string::npos) << md;
   EXPECT_NE(md.find("`--set joints.joint1.torque_capacity=100`"), std::string::npos);
+}
+
+// A stress above the allowable over its factor FAILs the check: exit 3 with the report
+// written in full (stdout and --out); --report-only exits 0 with the same report. The
+// line's demand at the scene's angles is what `modes` reports (a closed tree is checked
+// there only), and its margin rule is the factor, not --margin.
+TEST_F(Cli, CheckJudgesEachLinksStressAndAFailExitsThree) {
+  const std::string scene = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv.yaml";
+  const std::string weak = " --set materials.carbon_carbon.ultimate_strength=20e6";  // link 1 needs about 25 MPa x 1.4
+  const Result fail = run("check " + scene + weak + " --out " + (dir_ / "ck").string());
+  EXPECT_EQ(fail.code, 3) << fail.err;
+  EXPECT_NE(fail.out.find("overall: FAIL"), std::string::npos) << fail.out;
+  EXPECT_TRUE(fs::exists(dir_ / "ck" / "check.json"));
+  const Result report = run("check " + scene + weak + " --report-only");
+  EXPECT_EQ(report.code, 0) << report.err;
+  EXPECT_EQ(report.out.substr(0, report.out.rfind("(")), fail.out.substr(0, fail.out.rfind("(")));  // the wall time aside
+  const auto j = nlohmann::json::parse(run("check " + scene + weak + " --json --report-only").out);
+  bool judged = false;
+  for (const auto& l : j["lines"])
+    if (l["id"] == "stress.link1.hold") {
+      judged = true;
+      EXPECT_EQ(l["verdict"], "FAIL");
+      EXPECT_NEAR(l["capacity"].get<double>(), 20 / 1.4, 1e-9);
+    }
+  EXPECT_TRUE(judged);
+
+  const std::string closed = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-closed.yaml";
+  const auto c = nlohmann::json::parse(run("check " + closed + " --json --margin 90").out);
+  const auto m = nlohmann::json::parse(run("modes " + closed + " --json --no-error-estimate").out);
+  int lines = 0;
+  for (const auto& s : m["equilibrium"]["static_stress"]["links"]) {
+    for (const auto& l : c["lines"]) {
+      if (l["id"] != "stress." + s["link"].get<std::string>() + ".hold") continue;
+      ++lines;
+      EXPECT_NEAR(l["demand"].get<double>(), 1e-6 * s["equivalent_pa"].get<double>(), 1e-7 * l["demand"].get<double>());
+      EXPECT_EQ(l["verdict"], "pass");  // MS >= 0 passes, though --margin 90 asks more
+    }
+  }
+  EXPECT_EQ(lines, 4);
 }
 
 TEST_F(Cli, CheckRefusesABadBandAndAnIsolatorAndWritesNothing) {
