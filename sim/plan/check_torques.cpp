@@ -218,6 +218,39 @@ void addSlewLines(const CheckInputs& in, std::vector<CheckLine>& out) {
                            in.options.required_margin_pct));
 }
 
+/// Each slew against the run it is planned in: one that starts at or after the run's end
+/// is never seen, one that ends after it is seen in part (before, both were accepted
+/// silently). Advisory: the equipment can do it, the run does not show it.
+void addSlewTimingLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+  struct Axis {
+    std::string name, group;
+    const SlewSpec* slew;
+    double from, range;
+    bool continuous;
+  };
+  std::vector<Axis> axes;
+  for (const auto& j : in.scene.article.joints)
+    if (j.slew) axes.push_back({j.name, "torquers", &*j.slew, j.angle, j.range, j.continuous});
+  if (const auto& g = in.scene.article.base.gimbal) {
+    const std::pair<const char*, const GimbalAxisSpec*> gimbal[] = {{"gimbal.yaw", &g->yaw}, {"gimbal.pitch", &g->pitch}, {"gimbal.roll", &g->roll}};
+    for (const auto& [name, a] : gimbal)
+      if (a->slew) axes.push_back({name, "gimbal", &*a->slew, a->angle, a->range, a->continuous});
+  }
+  const double run = in.scene.simulation.duration;
+  for (const Axis& a : axes) {
+    const double start = a.slew->start_time, end = start + makeSlew(*a.slew, a.from, a.range, a.continuous).duration();
+    CheckLine l = makeLine(a.group, "slew." + a.name + ".timing", a.name + " slew ends within the run", end, run, "s",
+                           start >= run ? strf("it starts at %.4g s, at or after the run's end at %.4g s: the run never shows it; "
+                                               "move start_s or lengthen simulation.duration", start, run)
+                           : end > run ? strf("from %.4g s to %.4g s, past the run's end at %.4g s: the run shows only its start; "
+                                              "lengthen simulation.duration", start, end, run)
+                                       : strf("from %.4g s to %.4g s", start, end),
+                           0);
+    makeAdvisory(l);
+    out.push_back(l);
+  }
+}
+
 /// The largest |angle| an axis reaches (rad): its held angle or its slew's largest (an
 /// angle program's as the reader checked it, between the samples too).
 double axisReach(const GimbalAxisSpec& a) {
@@ -254,6 +287,7 @@ void addGimbalRangeLines(const CheckInputs& in, std::vector<CheckLine>& out) {
 void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out, std::vector<HeldStress>& solved) {
   addHoldingLines(in, out, solved);
   addSlewLines(in, out);
+  addSlewTimingLines(in, out);
   addGimbalRangeLines(in, out);
 }
 

@@ -113,6 +113,27 @@ TEST_F(Cli, CheckJudgesEachLinksStressAndAFailExitsThree) {
   EXPECT_EQ(lines, 4);
 }
 
+// A slew the run does not show, whole or in part, is flagged (before: accepted silently):
+// the slew scene's joint 1 moves from 0.5 to 3.07 s; its 6 s run shows it, 1.2 s a part,
+// 0.4 s nothing.
+TEST_F(Cli, CheckFlagsASlewThatTheRunDoesNotShow) {
+  const std::string scene = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml --segments 2 --json --report-only";
+  const auto line = [&](const std::string& set) {
+    const auto j = nlohmann::json::parse(run("check " + scene + set).out);
+    for (const auto& l : j["lines"])
+      if (l["id"] == "slew.joint1.timing") return l;
+    ADD_FAILURE() << "no slew.joint1.timing line" << set;
+    return nlohmann::json();
+  };
+  const auto whole = line(""), part = line(" --set simulation.duration=1.2"), none = line(" --set simulation.duration=0.4");
+  EXPECT_EQ(whole["verdict"], "pass");
+  EXPECT_EQ(part["verdict"], "advisory");
+  EXPECT_NE(part["note"].get<std::string>().find("past the run's end at 1.2 s"), std::string::npos) << part;
+  EXPECT_EQ(none["verdict"], "advisory");
+  EXPECT_NE(none["note"].get<std::string>().find("at or after the run's end"), std::string::npos) << none;
+  EXPECT_NEAR(whole["demand"].get<double>(), part["demand"].get<double>(), 1e-12);  // the slew's end: the run's length moves none of it
+}
+
 TEST_F(Cli, CheckRefusesABadBandAndAnIsolatorAndWritesNothing) {
   Result r = run("check --band 50:0.1 --out " + (dir_ / "ck").string());
   EXPECT_EQ(r.code, 64);
