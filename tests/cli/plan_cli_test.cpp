@@ -189,6 +189,33 @@ TEST_F(Cli, SweepKilledAtRandomMomentsResumesToTheSameFile) {
   EXPECT_TRUE(resumed_mid_way);
 }
 
+// A sweep sizes against strength: check's stress lines are columns (demand in MPa, margin).
+// Link 3's S-glass rods carry mainly their own weight, M ~ r^2 and sigma = M r / I ~ 1 / r:
+// thrice the radius, a third of the stress (to the 2 % their axial load and the small
+// torquer they share move it).
+TEST_F(Cli, SweepHasEachLinksStressToSizeAgainst) {
+  const fs::path spec = write("spec.yaml", std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\nsegments: 4\n"
+      "parameters:\n  - {key: sections.link3_rod.radius, values: [0.001, 0.003]}\noutputs: [check]\n");
+  ASSERT_EQ(run("sweep " + spec.string() + " --out " + (dir_ / "s").string()).code, 0);
+  std::istringstream csv(slurp(dir_ / "s" / "sweep.csv"));
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(csv, line);) {
+    std::vector<std::string> cells;
+    std::istringstream ls(line);
+    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+    rows.push_back(cells);
+  }
+  ASSERT_EQ(rows.size(), 3u);
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(rows[0].begin(), rows[0].end(), name);
+    EXPECT_NE(at, rows[0].end()) << name;
+    return static_cast<std::size_t>(at - rows[0].begin());
+  };
+  for (const char* link : {"link1", "link2", "link3a", "link3b"}) column(std::string("stress_") + link + "_hold_margin_pct");
+  const std::size_t s3 = column("stress_link3a_hold_demand");
+  EXPECT_NEAR(std::stod(rows[1][s3]) / std::stod(rows[2][s3]), 3.0, 0.06);
+}
+
 TEST_F(Cli, SweepFiguresAndTheParetoFrontComeFromTheCsvAlsoWhenMerged) {
   const fs::path spec = write("spec.yaml", std::string("scene: ") + MMVLAB_SOURCE_DIR + "/scenes/mmv.yaml\nsegments: 4\n"
       "set: [joints.joint1.torque_capacity=150, joints.joint2.torque_capacity=12, joints.joint3.torque_capacity=0.3]\n"
