@@ -250,28 +250,6 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
-// Allowables, factors of safety (1 is the bound: accepted) and an explicit section's fibre
-// distances are read as written; without `strength:` the defaults stand, marked so.
-TEST(SceneYaml, StrengthKeys) {
-  const ArticleScene plain = parseArticle(kGood, "s.yaml");
-  EXPECT_FALSE(plain.article.strength.given);
-  EXPECT_EQ(plain.article.strength.yield_factor, 1.25);
-  EXPECT_EQ(plain.article.strength.ultimate_factor, 1.4);
-  EXPECT_EQ(plain.article.materials[0].ultimate_strength, 0.0);
-  std::string text = replaceLine(kGood, "youngs_modulus: 2.0e11}", "youngs_modulus: 2.0e11, yield_strength: 250e6, ultimate_strength: 400e6}");
-  text = replaceLine(text, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nstrength: {yield_factor: 1, ultimate_factor: 1.5}");
-  text = replaceLine(text, "bar: {shape: rectangle, b: 0.02, h: 0.01}",
-                     "bar: {shape: explicit, area: 1e-4, second_moment: 1e-9, fibre_distance: 0.006}");
-  const ArticleScene s = parseArticle(text, "s.yaml");
-  EXPECT_TRUE(s.article.strength.given);
-  EXPECT_EQ(s.article.strength.yield_factor, 1.0);
-  EXPECT_EQ(s.article.strength.ultimate_factor, 1.5);
-  EXPECT_EQ(s.article.materials[0].yield_strength, 250e6);
-  EXPECT_EQ(s.article.materials[0].ultimate_strength, 400e6);
-  EXPECT_EQ(sectionFibreDistance(s.article.sections[0]), 0.006);
-  EXPECT_EQ(sectionFibreDistanceOut(s.article.sections[0]), 0.0);
-}
-
 TEST(SceneYaml, SpatialModelReadsShearModulusAndBranchesOutOfThePlane) {
   const ArticleScene s = parseArticle(
       replaceLine(replaceLine(replaceLine(kGood, "gravity: [0, -9.81, 0]", "gravity: [0, -9.81, 0]\nmodel: spatial"),
