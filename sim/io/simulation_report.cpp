@@ -30,6 +30,34 @@ std::vector<std::pair<std::string, double>> peakDisplacements(const SimulationRe
   return out;
 }
 
+/// Each link's peak stress over the run against its allowable (docs/strength.md); the
+/// cells are the records' values (linkRunStressFields).
+std::string runStressText(const std::vector<LinkRunStress>& links) {
+  if (links.empty()) return "";
+  Table t({"link", "peak_MPa", "t_s", "x_m", "face", "axial_N", "moment_N*m", "limit_MPa", "MS", "verdict", "first_exceeded_s"});
+  std::vector<std::string> notes;
+  const auto all = [](const auto&) { return true; };
+  for (const auto& l : links) {
+    const auto rec = fieldsJson(linkRunStressFields(), l, all);
+    if (!l.recovered) {
+      notes.push_back(l.link + ": " + l.why_not);
+      continue;
+    }
+    const auto num = [&](const char* key, const char* format, double scale = 1) {
+      return rec[key].is_number() ? strf(format, scale * rec[key].get<double>()) : std::string("-");
+    };
+    t.add({l.link, num("peak_stress_pa", "%.4g", 1e-6), num("at_s", "%.4g"), l.root_only ? "root" : num("x_m", "%.4f"),
+           rec["face"].get<std::string>(), num("axial_n", "%.4g"), num("moment_n_m", "%.4g"), num("limit_pa", "%.4g", 1e-6),
+           num("margin_of_safety", "%.3f"), rec["verdict"].get<std::string>(), num("first_exceeded_s", "%.4g")});
+    if (!l.judgement.judged) notes.push_back(l.link + ": " + l.judgement.note);
+    if (l.root_only) notes.push_back(l.link + ": a rigid link: its root's loads from the run's reactions; along it not recovered");
+  }
+  std::string out = "\nStress (peak per link over the run; limit = allowable / factor, MS = allowable / (factor * stress) - 1;\n"
+                    "docs/strength.md)\n" + t.text();
+  for (const auto& n : notes) out += "  " + n + "\n";
+  return out;
+}
+
 }  // namespace
 
 nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vector<std::string>& warnings) {
@@ -59,6 +87,11 @@ nlohmann::ordered_json simulationJson(const SimulationResult& r, const std::vect
   auto sensors = nlohmann::ordered_json::array();
   for (const auto& s : r.sensors) sensors.push_back(fieldsJson(sensorSummaryFields(), s, all));
   j["sensors"] = sensors;
+  if (!r.stresses.empty()) {
+    auto stress = nlohmann::ordered_json::array();
+    for (const auto& l : r.stresses) stress.push_back(fieldsJson(linkRunStressFields(), l, all));
+    j["stress"] = stress;
+  }
   j["energy"] = {{"initial_j", r.initial_energy_j},
                  {"final_j", r.final_energy_j},
                  {"motion_work_j", r.motion_work_j},
@@ -135,6 +168,7 @@ std::string simulationText(const std::string& scene_name, const std::string& sce
            rated ? (rec["exceeded"].get<bool>() ? "EXCEEDED" : "yes") : "-"});
   }
   if (!r.torques.empty()) os << "Torques the torquers must give\n" << t.text();
+  os << runStressText(r.stresses);
   Table d({"point", "peak_displacement_m"});
   for (const auto& [name, peak] : peakDisplacements(r.record)) d.add({name, strf("%.4g", peak)});
   if (!d.empty()) os << (r.torques.empty() ? "" : "\n") << "Largest displacement from the start\n" << d.text();
@@ -268,6 +302,44 @@ const std::vector<Field<JointTorqueSummary>>& jointTorqueFields() {
   return fields;
 }
 
+const std::vector<Field<LinkRunStress>>& linkRunStressFields() {
+  using json = nlohmann::ordered_json;
+  using Opt = std::optional<json>;
+  using L = LinkRunStress;
+  // clang-format off
+  static const std::vector<Field<L>> fields{
+      {"link", "", nullptr, "the link (a branch by its own name)", [](const L& l) -> Opt { return json(l.link); }},
+      {"material", "", nullptr, "its material", [](const L& l) -> Opt { return json(l.material); }},
+      {"recovered", "", nullptr, "its stress was recovered (false: why_not says why)", [](const L& l) -> Opt { return json(l.recovered); }},
+      {"why_not", "", nullptr, "why it was not", [](const L& l) -> Opt { return l.recovered ? Opt() : json(l.why_not); }},
+      {"where", "", nullptr, "\"along the link\" (root, hinges, tip) or \"root\" (a rigid link)",
+       [](const L& l) -> Opt { return json(l.root_only ? "root" : "along the link"); }},
+      {"peak_stress_pa", "Pa", nullptr, "the largest equivalent (von Mises) stress at a sample",
+       [](const L& l) -> Opt { return l.recovered ? json(l.peak_pa) : json(nullptr); }},
+      {"at_s", "s", nullptr, "when", [](const L& l) -> Opt { return l.recovered ? json(l.at_s) : json(nullptr); }},
+      {"x_m", "m", nullptr, "where, from the link's root", [](const L& l) -> Opt { return l.recovered ? json(l.loads.x) : json(nullptr); }},
+      {"face", "", nullptr, "the face where it peaks (+y, -y, +z, -z, a corner; axis: no bending)",
+       [](const L& l) -> Opt { return json(l.recovered ? l.face : std::string("-")); }},
+      {"axial_n", "N", nullptr, "the axial force there, tension +", [](const L& l) -> Opt { return l.recovered ? json(l.loads.axial) : json(nullptr); }},
+      {"moment_n_m", "N*m", nullptr, "the in-plane bending moment there", [](const L& l) -> Opt { return l.recovered ? json(l.loads.moment) : json(nullptr); }},
+      {"moment_out_n_m", "N*m", nullptr, "the out-of-plane bending moment there", [](const L& l) -> Opt { return l.recovered ? json(l.loads.moment_out) : json(nullptr); }},
+      {"torsion_n_m", "N*m", nullptr, "the torsion there", [](const L& l) -> Opt { return l.recovered ? json(l.loads.torsion) : json(nullptr); }},
+      {"criterion", "", nullptr, "the governing allowable: yield or ultimate (null: none given)",
+       [](const L& l) -> Opt { return l.judgement.judged ? json(l.judgement.criterion) : json(nullptr); }},
+      {"allowable_pa", "Pa", nullptr, "the material's governing allowable", [](const L& l) -> Opt { return l.judgement.judged ? json(l.judgement.allowable) : json(nullptr); }},
+      {"factor", "1", nullptr, "the scene's factor on it", [](const L& l) -> Opt { return l.judgement.judged ? json(l.judgement.factor) : json(nullptr); }},
+      {"limit_pa", "Pa", nullptr, "the smallest allowable / factor: the stress the run must stay under",
+       [](const L& l) -> Opt { return l.limit_pa > 0 ? json(l.limit_pa) : json(nullptr); }},
+      {"margin_of_safety", "1", nullptr, "MS = allowable / (factor * peak) - 1", [](const L& l) -> Opt { return l.judgement.judged ? json(l.judgement.margin) : json(nullptr); }},
+      {"verdict", "", nullptr, "ok, FAIL, or not judged (no allowable, nothing recovered)",
+       [](const L& l) -> Opt { return json(!l.judgement.judged ? "not judged" : l.judgement.pass ? "ok" : "FAIL"); }},
+      {"first_exceeded_s", "s", nullptr, "the first sample whose stress passed limit_pa (null: none)",
+       [](const L& l) -> Opt { return l.first_exceeded_s >= 0 ? json(l.first_exceeded_s) : json(nullptr); }},
+  };
+  // clang-format on
+  return fields;
+}
+
 const std::vector<Field<SensorSummary>>& sensorSummaryFields() {
   using json = nlohmann::ordered_json;
   using Opt = std::optional<json>;
@@ -317,6 +389,14 @@ std::vector<std::string> simulationWarnings(const SimulationResult& r, double ar
     if (t.exceeded)
       warnings.push_back(t.joint + " needs " + strf("%.4g", t.peak_torque_nm) + " N*m, above its torquer's capacity of " +
                          strf("%.4g", t.capacity_nm) + " N*m");
+  for (const auto& l : r.stresses)
+    if (l.first_exceeded_s >= 0)
+      warnings.push_back(strf("%s's stress passes its allowable over its factor (%.4g MPa) first at t = %.4g s and peaks at %.4g MPa "
+                              "at t = %.4g s (%s): margin of safety %.3f; the article would not survive this run "
+                              "(docs/strength.md)",
+                              l.link.c_str(), 1e-6 * l.limit_pa, l.first_exceeded_s, 1e-6 * l.peak_pa, l.at_s,
+                              l.root_only ? "at its root" : strf("x = %.4g m, %s face", l.loads.x, l.face.c_str()).c_str(),
+                              l.judgement.margin));
   if (r.shaker && r.shaker->stroke_exceeded)
     warnings.push_back(strf("the shaker's armature travels %.4g mm, beyond its +-%.4g mm stroke (shaker.stroke_m): lower the "
                             "program's force near the article's resonances, or move the shaker where the article moves less",

@@ -28,6 +28,9 @@ nlohmann::ordered_json targetJson(const TargetOutcome& t);
 /// JSON only: a run's CSV is its history.
 const std::vector<Field<JointTorqueSummary>>& jointTorqueFields();
 const std::vector<Field<SensorSummary>>& sensorSummaryFields();
+/// Each link's stress over the run (summary.json's stress, the text table, Python's
+/// SimulateResult.stress_table()).
+const std::vector<Field<LinkRunStress>>& linkRunStressFields();
 /// history.csv: one header row (names with units), one row per sample, %.10g.
 std::string simulationHistoryCsv(const SimulationRecord& rec);
 

@@ -41,6 +41,10 @@ void addTorqueLines(const CheckInputs& in, std::vector<CheckLine>& out, std::vec
 /// root moment is its joint's holding torque: the worst torque is where a root-bent link
 /// is worst); judged by the factor of safety alone (MS >= 0), not by --margin.
 void addStrengthLines(const CheckInputs& in, const std::vector<HeldStress>& solved, std::vector<CheckLine>& out);
+/// Each flexible link's root stress in the rigid-link run of the scene's programs (its
+/// reactions: the inertial and gravity moment a slew or a table program puts there),
+/// judged like the static lines; scenes whose programs move the article.
+void addRunStrengthLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Each sensor's peak signal against its range, with its signal-to-resolution ratio.
 void addSensorLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Payload, stroke, bandwidth (table scenes); modal content in the band.

@@ -1,6 +1,7 @@
 // Strength lines of `mmvlab check` (sim/plan/check.hpp): each flexible link's static
 // stress against its allowable over its factor of safety (docs/strength.md), worst over
-// the scene's configuration and the configurations the holding-torque search solved.
+// the scene's configuration and the configurations the holding-torque search solved,
+// and its root stress in the rigid-link run of the scene's programs.
 #include "sim/core/text.hpp"
 #include "sim/plan/check_parts.hpp"
 
@@ -8,31 +9,37 @@ namespace mmv::plan {
 
 namespace {
 
-/// One link's line: `worst` the largest stress over the configurations, at `where`.
-CheckLine strengthLine(const ArticleSpec& article, const LinkStaticStress& worst, const std::string& where, int configurations) {
-  const LinkStressPeak& p = worst.peak;
-  const std::string id = "stress." + p.link + ".hold";
-  const std::string requirement =
-      p.link + (configurations > 1 ? " static stress, worst over the held configurations" : " static stress at the scene's angles");
-  if (!p.recovered) {
-    CheckLine l = makeLine("strength", id, requirement, 0, 0, "MPa", p.why_not, 0);
+/// A link's stress line: `stress` (Pa, 0 with `why_not` when not recovered) judged
+/// against its material's allowable over the scene's factor, `at` where and when.
+CheckLine strengthLine(const ArticleSpec& article, const std::string& link, const std::string& id, const std::string& requirement,
+                       double stress, const std::string& why_not, const std::string& at) {
+  if (!why_not.empty()) {
+    CheckLine l = makeLine("strength", id, requirement, 0, 0, "MPa", why_not, 0);
     l.verdict = Verdict::NotChecked;
     return l;
   }
-  const Material& m = *article.findMaterial(article.findLink(p.link)->material);
-  const StrengthJudgement j = judgeStress(p.stress.equivalent, m, article.strength);
-  const std::string at = strf("at %s, x = %.4g m (%s face)", where.c_str(), p.loads.x, p.stress.face.c_str());
+  const Material& m = *article.findMaterial(article.findLink(link)->material);
+  const StrengthJudgement j = judgeStress(stress, m, article.strength);
   if (!j.judged) {
-    CheckLine l = makeLine("strength", id, requirement, 1e-6 * p.stress.equivalent, 0, "MPa", at + "; " + j.note, 0);
+    CheckLine l = makeLine("strength", id, requirement, 1e-6 * stress, 0, "MPa", at + "; " + j.note, 0);
     l.verdict = Verdict::NotChecked;
     return l;
   }
   // The factor of safety is this line's margin: it passes at MS >= 0, whatever --margin asks.
-  return makeLine("strength", id, requirement, 1e-6 * p.stress.equivalent, 1e-6 * j.allowable / j.factor, "MPa",
+  return makeLine("strength", id, requirement, 1e-6 * stress, 1e-6 * j.allowable / j.factor, "MPa",
                   at + strf("; capacity: %s strength %.4g MPa / factor %.3g; margin of safety MS = %.3f; its margin rule: "
                             "the factor (MS >= 0), not --margin",
                             j.criterion.c_str(), 1e-6 * j.allowable, j.factor, j.margin),
                   0);
+}
+
+/// The scene moves the article (a slew, a table program, a commanded torque), beyond
+/// sensing it.
+bool programsMove(const ArticleScene& s) {
+  bool moves = s.article.base.motion.has_value();
+  for (const auto& j : s.article.joints) moves = moves || j.slew || j.torque_input;
+  const auto& g = s.article.base.gimbal;
+  return moves || (g && (g->yaw.slew || g->pitch.slew || g->roll.slew));
 }
 
 }  // namespace
@@ -47,7 +54,28 @@ void addStrengthLines(const CheckInputs& in, const std::vector<HeldStress>& solv
       if (l >= h.links.size() || !h.links[l].peak.recovered || !worst.peak.recovered) continue;
       if (h.links[l].peak.stress.equivalent > worst.peak.stress.equivalent) worst = h.links[l], where = h.where;
     }
-    out.push_back(strengthLine(in.scene.article, worst, where, 1 + static_cast<int>(solved.size())));
+    const LinkStressPeak& p = worst.peak;
+    out.push_back(strengthLine(in.scene.article, p.link, "stress." + p.link + ".hold",
+                               p.link + (solved.empty() ? " static stress at the scene's angles"
+                                                        : " static stress, worst over the held configurations"),
+                               p.stress.equivalent, p.recovered ? "" : p.why_not,
+                               strf("at %s, x = %.4g m (%s face)", where.c_str(), p.loads.x, p.stress.face.c_str())));
+  }
+  addRunStrengthLines(in, out);
+}
+
+void addRunStrengthLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+  if (!in.rigid_run || !programsMove(in.scene)) return;
+  for (std::size_t l = 0; l < in.rigid_run->stresses.size(); ++l) {
+    if (in.scene.article.links[l].rigid) continue;  // the scene's own rigid link: as its hold line, none
+    const LinkRunStress& r = in.rigid_run->stresses[l];
+    out.push_back(strengthLine(
+        in.scene.article, r.link, "stress." + r.link + ".run", r.link + " root stress during the scene's run (slews, table motion)",
+        r.peak_pa, r.recovered ? "" : r.why_not,
+        strf("rigid links through %.3g s of the scene's programs (gravity + inertia), at t = %.4g s (%s face; axial %.4g N, "
+             "moment %.4g N*m); the flexible links' dynamic response is not in it: `mmvlab simulate` reports each link's "
+             "peak stress along it",
+             in.scene.simulation.duration, r.at_s, r.face.c_str(), r.loads.axial, r.loads.moment)));
   }
 }
 

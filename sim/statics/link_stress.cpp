@@ -140,6 +140,41 @@ void setStaticAxialForces(const Model& model, const LinkAxis& axis, const SimTK:
   }
 }
 
+void setReactionAxialForces(const Model& model, const LinkAxis& axis, const SimTK::State& s,
+                            const SimTK::Vector_<SimTK::SpatialVec>& reactions, std::vector<SectionLoads>& hinges) {
+  MMV_DEMAND(hinges.size() == hingeCount(axis));
+  const auto& matter = model.getMatter();
+  for (std::size_t k = 0; k < hinges.size(); ++k) {
+    const SimTK::MobilizedBodyIndex mobod = axis.right[k + 1];
+    const SimTK::Vec3 e = matter.getMobilizedBody(mobod).getBodyRotation(s).x();
+    hinges[k].axial = -SimTK::dot(reactions[mobod][1], e);
+  }
+}
+
+SectionLoads rootReactionLoads(const Model& model, const LinkAxis& axis, const std::vector<const LinkAxis*>& branches,
+                               const SimTK::State& s, const SimTK::Vector_<SimTK::SpatialVec>& reactions) {
+  const auto& matter = model.getMatter();
+  const SimTK::MobilizedBody& root = matter.getMobilizedBody(axis.right.front());
+  const SimTK::Vec3 p_root = root.getBodyOriginLocation(s);
+  // Each reaction acts at its mobilizer's M frame on the child: shifted to the root point.
+  const auto at_root = [&](const SimTK::MobilizedBody& b) {
+    const SimTK::Vec3 p_M = b.findStationLocationInGround(s, b.getOutboardFrame(s).p());
+    return SimTK::shiftForceFromTo(reactions[b.getMobilizedBodyIndex()], p_M, p_root);
+  };
+  SimTK::SpatialVec f = at_root(root);
+  for (const LinkAxis* other : branches) {
+    const SimTK::MobilizedBody& first = matter.getMobilizedBody(other->right.front());
+    if (first.getParentMobilizedBody().getMobilizedBodyIndex() == root.getMobilizedBodyIndex()) f -= at_root(first);
+  }
+  const SimTK::Rotation& R = root.getBodyRotation(s);
+  SectionLoads out;  // what the link applies to its support: the reaction's negative
+  out.axial = -SimTK::dot(f[1], R.x());
+  out.torsion = -SimTK::dot(f[0], R.x());
+  out.moment_out = -SimTK::dot(f[0], R.y());
+  out.moment = -SimTK::dot(f[0], R.z());
+  return out;
+}
+
 SectionLoads loadsAt(const std::vector<SectionLoads>& hinges, double x) {
   MMV_DEMAND(!hinges.empty());
   if (hinges.size() == 1) {

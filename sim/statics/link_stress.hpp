@@ -88,6 +88,21 @@ std::vector<SectionLoads> hingeMomentRates(const Model& model, const LinkAxis& a
 /// direction at the hinge (outwards).
 void setStaticAxialForces(const Model& model, const LinkAxis& axis, const SimTK::State& s,
                           const std::vector<PointForce>& closure_forces, std::vector<SectionLoads>& hinges);
+/// In motion: sets each hinge's axial force from the mobilizers' reaction forces of a state
+/// realized to Acceleration (`reactions`, SimbodyMatterSubsystem::calcMobilizerReactionForces:
+/// the parent's force on each child at its mobilizer, in Ground): N = -F . e, e the link's
+/// direction at the hinge (outwards). Weight, inertia (a slew's centrifugal pull) and the
+/// closures are in it; in a static equilibrium it is setStaticAxialForces' value.
+void setReactionAxialForces(const Model& model, const LinkAxis& axis, const SimTK::State& s,
+                            const SimTK::Vector_<SimTK::SpatialVec>& reactions, std::vector<SectionLoads>& hinges);
+/// In motion: the loads at a link's root section from the reactions (as above): the
+/// parent's force and moment on the link's first piece less those on the first pieces of
+/// `branches` (the other links on its joint) mounted on it there, in the piece's frame:
+/// x along the link (torsion, axial), z the in-plane normal (moment), y (moment out of
+/// the plane). What a rigid link carries at its root; exact for the discrete model,
+/// whatever the motion.
+SectionLoads rootReactionLoads(const Model& model, const LinkAxis& axis, const std::vector<const LinkAxis*>& branches,
+                               const SimTK::State& s, const SimTK::Vector_<SimTK::SpatialVec>& reactions);
 /// The loads at `x` (m from the root) from the hinges' (ascending x): linear between
 /// two, extrapolated linearly beyond the outer ones, constant with one hinge.
 SectionLoads loadsAt(const std::vector<SectionLoads>& hinges, double x);

@@ -51,6 +51,8 @@ class ArticleRecorder {
     addTipColumns(scene);
     addElasticColumns();
     addSensors(scene);
+    stress_.emplace(model_, scene.article);
+    for (const auto& c : stress_->columns()) r_.record.columns.push_back(c);
     r_.states.columns.push_back("time_s");
     for (const auto& c : model_.getCoordinates())
       r_.states.columns.push_back(c.name + (c.motion == CoordinateMotion::Rotation ? "_rad" : "_m"));
@@ -62,8 +64,9 @@ class ArticleRecorder {
   void appendPoints(const SimTK::State& st, std::vector<double>& row) const;
   std::vector<double> scoredRow(double t, const SimTK::State& st) const;
 
-  /// Peaks against capacities, sensor saturation counts.
+  /// Peaks against capacities, sensor saturation counts, the links' stress.
   void finish() {
+    if (stress_) r_.stresses = stress_->summary();
     for (auto& t : r_.torques) t.exceeded = t.capacity_nm > 0 && t.peak_torque_nm > t.capacity_nm;
     for (std::size_t i = 0; i < sensors_.size(); ++i) {
       r_.sensors[i].saturated_samples = sensors_[i].model.saturatedSamples();
@@ -94,6 +97,7 @@ class ArticleRecorder {
   std::vector<SimTK::QIndex> hinge_q_;  ///< every bending hinge's q: zero in `rigid_`
   std::optional<SimTK::State> rigid_;   ///< the sample's state with unbent links
   std::vector<LiveSensor> sensors_;
+  std::optional<RunStress> stress_;  ///< not in a companion (scored_only)
 };
 
 void ArticleRecorder::addTableColumns() {
@@ -323,6 +327,7 @@ std::vector<double> ArticleRecorder::sample(double t, const SimTK::State& st) {
   for (auto& live : sensors_) row.push_back(live.model.sample(sensorTruth(live, st)));
   std::vector<double> q{t};
   for (int i = 0; i < model_.getNumCoordinates(); ++i) q.push_back(st.getQ()[model_.getQIndex(i)]);
+  stress_->sample(t, st, Eigen::Map<const Eigen::VectorXd>(q.data() + 1, model_.getNumCoordinates()), row);
   r_.states.rows.push_back(std::move(q));
   if (!model_.getClosures().empty())
     r_.constraint_drift_m = std::max(r_.constraint_drift_m, calcClosureErrors(model_, st).cwiseAbs().maxCoeff());

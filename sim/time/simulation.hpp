@@ -37,6 +37,7 @@
 
 #include "sim/scene/scene.hpp"
 #include "sim/time/modal_links.hpp"
+#include "sim/time/run_stress.hpp"
 
 namespace mmv {
 
@@ -139,6 +140,9 @@ struct SimulationResult {
   std::optional<ShakerRunSummary> shaker;
   /// What the run integrated and why (article runs: sim/time/fidelity.hpp; HAM-SAS: its one model).
   std::string fidelity;
+  /// Article runs: each link's stress over the run (sim/time/run_stress.hpp; columns
+  /// `<link>_stress_pa`), scene order.
+  std::vector<LinkRunStress> stresses;
 };
 
 /// Runs the scene's time run with its `simulation:` settings. `progress`, if given,

@@ -113,6 +113,60 @@ TEST_F(Cli, CheckJudgesEachLinksStressAndAFailExitsThree) {
   EXPECT_EQ(lines, 4);
 }
 
+// A 20,000 deg/s^2 slew of joint 1 (before: a torque "EXCEEDED" and exit 0, no word of
+// stress) breaks every link: check's run lines FAIL on stress before any flexible run and
+// the command exits 3; simulate says when each link's allowable over its factor is first
+// passed. The shipped slew's own lines pass.
+TEST_F(Cli, AFastSlewFailsOnStressInCheckAndSimulate) {
+  const std::string scene = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml --segments 2";
+  const std::string fast = " --set joints.joint1.slew.max_acceleration_deg_s2=20000 --set joints.joint1.slew.max_rate_deg_s=1000";
+  const auto runLines = [&](const std::string& args, int code) {
+    const Result r = run("check " + scene + args + " --json");
+    EXPECT_EQ(r.code, code) << r.err;
+    std::map<std::string, nlohmann::json> lines;
+    const auto j = nlohmann::json::parse(r.out);  // kept: a loop over a temporary's member dangles
+    for (const auto& l : j["lines"])
+      if (l["id"].get<std::string>().rfind("stress.", 0) == 0) lines[l["id"].get<std::string>()] = l;
+    return lines;
+  };
+  const auto slow = runLines(" --report-only", 0), broken = runLines(fast, 3);
+  for (const char* link : {"link1", "link2", "link3a", "link3b"}) {
+    const std::string id = std::string("stress.") + link + ".run";
+    ASSERT_TRUE(slow.count(id) && broken.count(id)) << id;
+    EXPECT_EQ(slow.at(id)["verdict"], "pass") << id;
+    EXPECT_EQ(broken.at(id)["verdict"], "FAIL") << id;
+    EXPECT_GT(broken.at(id)["demand"].get<double>(), 5 * slow.at(id)["demand"].get<double>()) << id;
+  }
+  // The rigid run's root moment of link 1 is joint 1's torque (two ways of one number).
+  const Result check = run("check " + scene + fast + " --report-only");
+  const std::size_t torque = check.out.find("joint1 peak torque during the scene's run");
+  ASSERT_NE(torque, std::string::npos) << check.out;
+  const auto j = nlohmann::json::parse(run("check " + scene + fast + " --json --report-only").out);
+  double tau = 0;
+  for (const auto& l : j["lines"])
+    if (l["id"] == "torque.joint1.run") tau = l["demand"].get<double>();
+  const std::string note = broken.at("stress.link1.run")["note"].get<std::string>();
+  const std::size_t at = note.find("moment ");
+  ASSERT_NE(at, std::string::npos) << note;
+  EXPECT_NEAR(std::abs(std::stod(note.substr(at + 7))), tau, 1e-3 * tau) << note;
+
+  const Result sim = run("simulate " + scene + fast + " --json");
+  EXPECT_EQ(sim.code, 0) << sim.err;  // a run reports; check judges
+  const auto s = nlohmann::json::parse(sim.out);
+  int failed = 0;
+  for (const auto& l : s["stress"]) {
+    EXPECT_EQ(l["verdict"], "FAIL") << l;
+    EXPECT_TRUE(l["first_exceeded_s"].is_number()) << l;
+    EXPECT_LT(l["first_exceeded_s"].get<double>(), l["at_s"].get<double>() + 1e-12) << l;
+    EXPECT_GT(l["first_exceeded_s"].get<double>(), 0.5) << l;  // the slew starts at 0.5 s
+    ++failed;
+  }
+  EXPECT_EQ(failed, 4);
+  int warned = 0;
+  for (const auto& w : s["warnings"]) warned += w.get<std::string>().find("would not survive this run") != std::string::npos;
+  EXPECT_EQ(warned, 4);
+}
+
 // A slew the run does not show, whole or in part, is flagged (before: accepted silently):
 // the slew scene's joint 1 moves from 0.5 to 3.07 s; its 6 s run shows it, 1.2 s a part,
 // 0.4 s nothing.
