@@ -463,7 +463,8 @@ def frf(scene, *, segments=0, inputs=(), outputs=(), f_min_hz=None, f_max_hz=Non
         table_x, table_y, torque:JOINT, force:POINT:x|y|z, moment:POINT:rx|ry|rz, shaker
         (empty: the command's defaults).
     outputs : sequence of str
-        POINT:AXIS[:disp|vel|acc|acc_abs], strain:A:B[:in|out] (empty: the defaults).
+        POINT:AXIS[:disp|vel|acc|acc_abs], strain:A:B[:in|out], stress:STATION[:+y|-y|+z|-z]
+        (Pa; empty: the defaults).
     f_min_hz, f_max_hz : float or None
         The grid's lowest and highest frequency, Hz (None: 0.01 and 100).
     points : int

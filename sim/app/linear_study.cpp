@@ -70,12 +70,42 @@ OutputSpec strainOutput(const ArticleScene& scene, const std::string& text, cons
   return o;
 }
 
+/// stress:STATION[:face], a station of a flexible link and the face read (+y, the
+/// default, -y, +z, -z; sim/linear/state_space.hpp, OutputSpec::stress_face).
+OutputSpec stressOutput(const ArticleScene& scene, const std::string& text, const std::vector<std::string>& p,
+                        const std::string& what) {
+  const std::string face = p.size() == 3 ? p[2] : "+y";
+  if (p.size() < 2 || p.size() > 3 || (face != "+y" && face != "-y" && face != "+z" && face != "-z"))
+    throw UsageError(what + ": expected stress:STATION[:+y|-y|+z|-z], a station of a flexible link and the face read (+y, "
+                            "the default), e.g. stress:link3a@0.1m or stress:link1@0:-y");
+  std::string why;
+  const auto at = pointAlongLink(scene.article, p[1], why);
+  if (!at) throw UsageError(what + ": " + why);
+  const LinkSpec& l = *scene.article.findLink(at->first);
+  const Section& section = *scene.article.findSection(l.section);
+  if (l.rigid) throw UsageError(what + ": link '" + l.name + "' is rigid: it has no hinges whose springs carry a stress");
+  const bool out = face[1] == 'z';
+  if (out && !scene.article.bendsOutOfPlane(l))
+    throw UsageError(what + ": the " + face + " face reads bending out of the plane, which link '" + l.name +
+                     "' does not do (model: spatial, and the link not planar)");
+  if (!((out ? sectionFibreDistanceOut(section) : sectionFibreDistance(section)) > 0))
+    throw UsageError(what + ": link '" + l.name + "''s section '" + section.name + "' gives no fibre distance (an explicit " +
+                     "section: state fibre_distance" + (out ? "_out" : "") + ")");
+  OutputSpec o{text, OutputKind::Displacement, p[1], 5, false};
+  o.stress_face = face;
+  o.stress_link = l.name;
+  o.stress_x_m = at->second;
+  return o;
+}
+
 OutputSpec parseOutput(const std::string& text, const std::string& option, const ArticleScene& scene) {
   const auto p = split(text, ':');
   const std::string what = option + " " + text;
   if (p[0] == "strain") return strainOutput(scene, text, p, what);
+  if (p[0] == "stress") return stressOutput(scene, text, p, what);
   if (p.size() < 2 || p.size() > 3)
-    throw UsageError(what + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] or strain:STATION:STATION[:in|out]");
+    throw UsageError(what + ": expected POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs], strain:STATION:STATION[:in|out] or "
+                            "stress:STATION[:+y|-y|+z|-z]");
   OutputSpec o{text, OutputKind::Acceleration, p[0], axisOf(p[1], what, true, true), true};
   if (p.size() == 3) {
     if (p[2] == "disp") o = {text, OutputKind::Displacement, p[0], o.axis, false};

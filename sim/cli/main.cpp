@@ -78,8 +78,9 @@ std::pair<CLI::App*, CLI::App*> addLinearCommands(CLI::App& app, LinearArgs& lin
                     "shaker (the scene's, with its armature) (default: table_x, table_y)");
     cmd->add_option("--output", lin.outputs,
                     "POINT:x|y|z|rx|ry|rz[:disp|vel|acc|acc_abs] (z, rx, ry: spatial model; default: every link tip, absolute "
-                    "acceleration), or strain:STATION:STATION[:in|out], the mean bending strain over a span of one link (a "
-                    "gauge or piezo film; out: bending out of the plane, spatial model)");
+                    "acceleration), strain:STATION:STATION[:in|out], the mean bending strain over a span of one link (a "
+                    "gauge or piezo film; out: bending out of the plane, spatial model), or stress:STATION[:+y|-y|+z|-z], "
+                    "the bending stress at a station on a face (Pa; +y the default; z: spatial model)");
     cmd->add_option("--from", lin.f_min, "Lowest frequency, Hz")->capture_default_str();
     cmd->add_option("--to", lin.f_max, "Highest frequency, Hz")->capture_default_str();
     cmd->add_option("--points", lin.points, "Log-spaced frequencies, 2 .. 100000")->capture_default_str();

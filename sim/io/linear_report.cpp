@@ -163,12 +163,14 @@ void addFunctions(const LinearModel& lm, const ArticleScene& scene, const std::v
       fn.id1 = s.output_names[o] + " / " + s.input_names[i];
       fn.id2 = scene.name;
       fn.response_node = label[out.point];
-      fn.response_direction = out.isStrain() ? 0 : out.axis + 1;  // a strain is a scalar at its span's start
+      const bool scalar = out.isStrain() || out.isStress();
+      fn.response_direction = scalar ? 0 : out.axis + 1;  // a strain (a stress) is a scalar at its span's start (its station)
       // The table's acceleration is referred to the base node, which the file defines.
       fn.reference_node = in.kind == InputKind::BaseAcceleration ? label.at(kBaseNode) : label.at(in.target);
       fn.reference_direction = in.kind == InputKind::JointTorque ? 6 : in.axis >= 0 ? in.axis + 1 : shakerDirection(in);
-      fn.ordinate_type = out.isStrain() ? 3 : spec_out[static_cast<int>(out.kind)];  // 3: strain
-      fn.ordinate_length_exp = isRotationAxis(out.axis) ? 0 : 1;  // rad, m/m: no length
+      fn.ordinate_type = out.isStrain() ? 3 : out.isStress() ? 2 : spec_out[static_cast<int>(out.kind)];  // 3: strain, 2: stress
+      fn.ordinate_length_exp = out.isStress() ? -2 : isRotationAxis(out.axis) ? 0 : 1;  // Pa: force / length^2; rad, m/m: no length
+      if (out.isStress()) fn.ordinate_force_exp = 1;
       fn.ordinate_label = s.output_names[o];
       fn.ordinate_units = s.output_units[o];
       fn.denominator_type = spec_in[static_cast<int>(in.kind)];

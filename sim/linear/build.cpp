@@ -7,6 +7,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/core/progress.hpp"
 #include "sim/core/text.hpp"
+#include "sim/statics/link_stress.hpp"
 #include "sim/linear/state_space.hpp"
 #include "sim/model/stations.hpp"
 #include "sim/modes/damping.hpp"
@@ -120,6 +121,13 @@ void outputMatrices(const ArticleScene& scene, const Model& model, const SimTK::
       so.Cd.row(r) = strainRow(*a, *b, st, dofs, out.surface_m / out.span_m, out.out_of_plane) * Z;
       continue;
     }
+    if (out.isStress()) {  // the springs' moment at the station, on the face
+      const LinkSpec& l = *scene.article.findLink(out.stress_link);
+      const SectionStrength section =
+          sectionStrength(*scene.article.findMaterial(l.material), *scene.article.findSection(l.section));
+      so.Cd.row(r) = bendingStressRow(model, l, section, out.stress_x_m, out.stress_face, model.getQ(st), dofs) * Z;
+      continue;
+    }
     const Eigen::RowVectorXd P = pointRow(scene, model, st, dofs, out.point, out.axis, "output " + out.name) * Z;
     if (out.absolute && out.kind != OutputKind::Acceleration && base_input)
       throw SceneError(scene.source + ": output " + out.name +
@@ -148,7 +156,7 @@ void nameSignals(const Model& model, const LinearizedModel& lin, const std::vect
   const char* rotation_units[] = {"rad", "rad/s", "rad/s^2"};
   for (const auto& out : outputs) {
     ss.output_names.push_back(out.name);
-    ss.output_units.push_back(out.isStrain() ? "m/m" : (isRotationAxis(out.axis) ? rotation_units : out_units)[static_cast<int>(out.kind)]);
+    ss.output_units.push_back(out.isStrain() ? "m/m" : out.isStress() ? "Pa" : (isRotationAxis(out.axis) ? rotation_units : out_units)[static_cast<int>(out.kind)]);
   }
   const bool open = lin.G.rows() == 0;
   const int nz = static_cast<int>(lin.Z.cols());

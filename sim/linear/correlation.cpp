@@ -273,8 +273,9 @@ FrfMapping mapFrf(const MeasuredFrf& f, const std::vector<NodePairing>& nodes, b
     m.skipped = strf("function type %d is not a frequency response (4) or a transmissibility (5)", f.function_type);
     return m;
   }
-  if (f.ordinate_type == 3) {  // frf writes a strain gauge's or film's response so, direction 0 (a scalar)
-    m.skipped = "a strain (ordinate type 3): correlate pairs the motions of nodes, not strains";
+  if (f.ordinate_type == 3 || f.ordinate_type == 2) {  // frf writes a strain's (a stress's) response so, direction 0 (a scalar)
+    m.skipped = f.ordinate_type == 3 ? "a strain (ordinate type 3): correlate pairs the motions of nodes, not strains"
+                                     : "a stress (ordinate type 2): correlate pairs the motions of nodes, not stresses";
     return m;
   }
   const int rd = std::abs(f.response_direction), fd = std::abs(f.reference_direction);

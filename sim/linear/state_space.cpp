@@ -137,6 +137,25 @@ namespace {
 
 /// Largest |a - b| over the frequencies, relative to the peak of |a|, per pair;
 /// `full(k, w)` is a's response at omegas[k] = w.
+/// Each pair's round-off floor: 1e-9 of the largest peak among the pairs of its units
+/// (output unit over input unit; one group when the model names none).
+Eigen::MatrixXd unitFloors(const StateSpace& b, const Eigen::MatrixXd& peak) {
+  const auto unit = [&](const std::vector<std::string>& units, Eigen::Index k) {
+    return static_cast<std::size_t>(k) < units.size() ? units[static_cast<std::size_t>(k)] : std::string();
+  };
+  Eigen::MatrixXd floor(peak.rows(), peak.cols());
+  for (Eigen::Index o = 0; o < peak.rows(); ++o)
+    for (Eigen::Index i = 0; i < peak.cols(); ++i) {
+      double largest = 0;
+      for (Eigen::Index p = 0; p < peak.rows(); ++p)
+        for (Eigen::Index q = 0; q < peak.cols(); ++q)
+          if (unit(b.output_units, p) == unit(b.output_units, o) && unit(b.input_units, q) == unit(b.input_units, i))
+            largest = std::max(largest, peak(p, q));
+      floor(o, i) = std::max(1e-9 * largest, 1e-300);
+    }
+  return floor;
+}
+
 template <class FullAt>
 ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vector<double>& omegas) {
   const Eigen::Index no = b.C.rows(), ni = b.B.cols();
@@ -160,13 +179,14 @@ ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vecto
     peak = peak.cwiseMax(size[k]);
   }
   // A pair that is zero up to round-off (a pinned point's response) is measured against
-  // the model's largest response instead, so its noise is not reported as an error.
+  // the largest response of the pairs in its units instead, so its noise is not
+  // reported as an error (a stress in Pa beside a strain in m/m: each against its own).
   ModelError e;
-  const double floor = std::max(1e-9 * (peak.size() ? peak.maxCoeff() : 0.0), 1e-300);
+  const Eigen::MatrixXd floor = unitFloors(b, peak);
   e.relative = diff.cwiseQuotient(peak.cwiseMax(floor));
   // A pair whose full response never reaches the floor is zero (a pair that symmetry
   // decouples): both models give round-off there, which is no error of the reduction.
-  e.zero = (peak.array() < floor).cast<bool>().matrix();
+  e.zero = (peak.array() < floor.array()).cast<bool>().matrix();
   for (Eigen::Index o = 0; o < no; ++o)
     for (Eigen::Index i = 0; i < ni; ++i)
       if (e.zero(o, i)) e.relative(o, i) = 0;
@@ -178,7 +198,7 @@ ModelError compareWith(const FullAt& full, const StateSpace& b, const std::vecto
   for (std::size_t k = 0; k < omegas.size(); ++k)
     for (Eigen::Index o = 0; o < no; ++o)
       for (Eigen::Index i = 0; i < ni; ++i) {
-        const double r = e.zero(o, i) ? 0.0 : gap[k](o, i) / std::max(size[k](o, i), floor);
+        const double r = e.zero(o, i) ? 0.0 : gap[k](o, i) / std::max(size[k](o, i), floor(o, i));
         if (r > e.local(o, i)) e.local(o, i) = r, e.local_hz(o, i) = omegas[k] / (2 * M_PI);
       }
   if (e.local.size()) {

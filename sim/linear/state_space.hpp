@@ -82,6 +82,14 @@ struct OutputSpec {
   double span_m = 0;     ///< x_B - x_A along the link (nonzero).
   bool out_of_plane = false;
   bool isStrain() const { return !span_end.empty(); }
+  /// A bending stress at a station of a link (`stress:STATION[:face]`, Pa): the moment
+  /// its hinges' springs carry there (interpolated, sim/statics/link_stress.hpp
+  /// bendingStressRow) on `stress_face` (+y, the default, -y, +z, -z); `point` is the
+  /// station, `stress_link` and `stress_x_m` where it lies. Kind Displacement, axis 5.
+  std::string stress_face = {};
+  std::string stress_link = {};
+  double stress_x_m = 0;
+  bool isStress() const { return !stress_face.empty(); }
 };
 
 
@@ -244,8 +252,8 @@ struct ReducedModel {
 ReducedModel reduceModal(const StateSpace& full, const ReductionOptions& options);
 
 /// Largest |H_a(i w) - H_b(i w)| over the grid, per input-output pair, relative to the
-/// largest |H_a| of that pair (or to 1e-9 of the largest |H_a| of any pair, for a pair
-/// that is zero up to round-off); and the overall maximum. Also the local error: the
+/// largest |H_a| of that pair (or to 1e-9 of the largest |H_a| of any pair in the same
+/// units, for a pair that is zero up to round-off); and the overall maximum. Also the local error: the
 /// largest |H_a - H_b| / |H_a| at one frequency (|H_a| no smaller than that 1e-9 floor),
 /// with the frequency where it occurs: near an antiresonance or down a roll-off a model
 /// within 0.3 % of the peak can be off by 100 % of the response there.

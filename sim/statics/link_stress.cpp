@@ -235,6 +235,28 @@ LinkStressPeak peakStress(const LinkSpec& link, const SectionStrength& section, 
   return out;
 }
 
+double faceBendingStress(const SectionStrength& s, const SectionLoads& l, const std::string& face) {
+  MMV_DEMAND(face == "+y" || face == "-y" || face == "+z" || face == "-z");
+  if (face[1] == 'y') return (face[0] == '+' ? -1 : 1) * l.moment * s.fibre / s.second_moment;
+  return (face[0] == '+' ? 1 : -1) * l.moment_out * s.fibre_out / s.second_moment_out;
+}
+
+Eigen::RowVectorXd bendingStressRow(const Model& model, const LinkSpec& link, const SectionStrength& section, double x,
+                                    const std::string& face, const Eigen::VectorXd& q, const std::vector<int>& dofs) {
+  const LinkAxis* axis = model.findLinkAxis(link.name);
+  MMV_DEMAND(axis != nullptr && hingeCount(*axis) > 0);
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(static_cast<Eigen::Index>(dofs.size()));
+  Eigen::VectorXd dq = Eigen::VectorXd::Zero(q.size());
+  for (std::size_t j = 0; j < dofs.size(); ++j) {
+    const Coordinate& c = model.getCoordinates()[dofs[j]];
+    if (c.kind != CoordinateKind::Hinge || c.part != link.name) continue;  // moves no spring of this link
+    dq[dofs[j]] = 1;
+    row[static_cast<Eigen::Index>(j)] = faceBendingStress(section, loadsAt(hingeMomentRates(model, *axis, q, dq), x), face);
+    dq[dofs[j]] = 0;
+  }
+  return row;
+}
+
 StrengthJudgement judgeStress(double stress, const Material& m, const StrengthFactors& f) {
   StrengthJudgement out;
   if (!(m.yield_strength > 0) && !(m.ultimate_strength > 0)) {

@@ -119,6 +119,18 @@ struct LinkStressPeak {
 };
 LinkStressPeak peakStress(const LinkSpec& link, const SectionStrength& section, const std::vector<SectionLoads>& hinges);
 
+/// The normal bending stress on `face` ("+y", "-y", "+z", "-z") of a section carrying
+/// `l`: a positive in-plane moment compresses +y, a positive out-of-plane one stretches
+/// +z (the strain gauges' convention); no axial part.
+double faceBendingStress(const SectionStrength& s, const SectionLoads& l, const std::string& face);
+/// The linear map from the coordinates `dofs` (indices into Model::getCoordinates) about
+/// `q` to the bending stress on `face` of link `link` at `x` (m from its root): Pa per
+/// unit of each coordinate, the loads interpolated between its hinges as everywhere
+/// (loadsAt). The axial stress's change is of second order on a straight link and left
+/// out, as in a mode's stress. Only the link's own hinges enter.
+Eigen::RowVectorXd bendingStressRow(const Model& model, const LinkSpec& link, const SectionStrength& section, double x,
+                                    const std::string& face, const Eigen::VectorXd& q, const std::vector<int>& dofs);
+
 /// A stress judged against its material's allowables.
 struct StrengthJudgement {
   bool judged = false;    ///< an allowable exists; else `note` says so.

@@ -1,0 +1,69 @@
+// frf's and rom's stress outputs (`stress:STATION[:face]`, issue 64) from the command
+// line: the static stress of a cantilever under a tip moment (c M / I, in and out of the
+// plane), the unit, the UFF file's type, each malformed request refused by name, and a strain beside a
+// stress judged against its own units (before, a strain's 1e-3 beside a stress's 1e8
+// was taken for round-off: a "zero pair").
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+
+#include "support/cli.hpp"
+
+namespace mmv::cli_testing {
+namespace {
+
+using json = nlohmann::json;
+
+TEST_F(Cli, StressOutputsMeetTheBeamAndAreRefusedByName) {
+  // Link 1's tube (scenes/mmv.yaml): under a tip moment M the moment is M all along, and
+  // the +y face carries -M c / I (a positive moment compresses it): magnitude c / I per N*m.
+  const double b = 0.0762, h = 0.0254, t = 0.0034;
+  const double I = (b * h * h * h - (b - 2 * t) * std::pow(h - 2 * t, 3)) / 12;
+  const Result r = run("frf --no-gravity --segments 8 --input moment:link1.tip:rz --output stress:link1@1.0 --output "
+                       "stress:link1@0.3:-y --output strain:link1@0.5m:link1@1.5m --from 0.001 --to 0.002 --points 2 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json pairs = json::parse(r.out).at("pairs");
+  for (int k : {0, 1}) {
+    EXPECT_EQ(pairs.at(k).at("output_unit"), "Pa");
+    EXPECT_NEAR(pairs.at(k).at("peak_db").get<double>(), 20 * std::log10(0.5 * h / I), 1e-4) << pairs.at(k);
+  }
+  EXPECT_FALSE(pairs.at(2).value("zero_pair", false)) << pairs.at(2);  // a strain beside a stress: its own units' floor
+  for (const std::string& bad : {"stress:link1@0.5m:sideways", "stress:link1@0.5m:+z", "stress:link1@0.5m:+y:x", "stress",
+                                 "stress:link9@0.5m", "stress:link1@9m"}) {
+    const Result e = run("frf --segments 4 --output " + bad);
+    EXPECT_EQ(e.code, 64) << bad << ": " << e.err;
+    EXPECT_NE(e.err.find("--output " + bad + ": "), std::string::npos) << e.err;
+  }
+  const Result rigid = run("frf --segments 4 --set links.link2.segments=rigid --output stress:link2@0.1m");
+  EXPECT_EQ(rigid.code, 64);
+  EXPECT_NE(rigid.err.find("is rigid"), std::string::npos) << rigid.err;
+  // Out of the plane (the spatial model): a tip moment about world y, the +z face's
+  // stress c_out M / I_out with c_out half the width.
+  const fs::path bar = dir_ / "bar.yaml";
+  std::ofstream(bar) << "name: bar\nmodel: spatial\ngravity: [0, 0, 0]\nmaterials:\n  steel: {density: 7800, youngs_modulus: 2.0e11, poisson_ratio: 0.3}\n"
+                        "sections:\n  flat: {shape: rectangle, b: 0.02, h: 0.01}\njoints:\n  - {name: j1, parent: base, hold: locked}\n"
+                        "links:\n  - {name: beam, joint: j1, material: steel, section: flat, length: 1.0, segments: 8}\n";
+  const Result out = run("frf " + bar.string() + " --input moment:beam.tip:ry --output stress:beam@0.4m:+z --from 0.001 --to 0.002 "
+                         "--points 2 --json");
+  ASSERT_EQ(out.code, 0) << out.err;
+  const double I_out = 0.01 * 0.02 * 0.02 * 0.02 / 12;
+  EXPECT_NEAR(json::parse(out.out).at("pairs").at(0).at("peak_db").get<double>(), 20 * std::log10(0.01 / I_out), 1e-4);
+  // The UFF file writes it as a stress (ordinate type 2, Pa) at its station's node, a
+  // scalar, which correlate names and leaves out.
+  const fs::path uff = dir_ / "uff";
+  ASSERT_EQ(run("frf --segments 8 --output stress:link3a@0.1m --out " + uff.string()).code, 0);
+  const Result c = run("correlate --segments 8 --modes 8 --measured " + (uff / "frf.uff").string());
+  EXPECT_NE(c.out.find("not modelled: a stress (ordinate type 2)"), std::string::npos) << c.out << c.err;
+  // rom names it with its unit too.
+  const Result rom = run("rom --segments 4 --output stress:link3a@0.1m --out " + (dir_ / "rom").string());
+  ASSERT_EQ(rom.code, 0) << rom.err;
+  const std::string doc = slurp(dir_ / "rom" / "rom.json");
+  EXPECT_NE(doc.find("stress:link3a@0.1m"), std::string::npos) << doc.substr(0, 2000);
+  EXPECT_NE(doc.find("\"Pa\""), std::string::npos) << doc.substr(0, 2000);
+}
+
+}  // namespace
+}  // namespace mmv::cli_testing
