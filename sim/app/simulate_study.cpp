@@ -9,6 +9,7 @@
 #include "sim/hamsas/hamsas_simulation.hpp"
 #include "sim/io/simulation_report.hpp"
 #include "sim/model/motions.hpp"
+#include "sim/scene/programs.hpp"
 #include "sim/time/verify.hpp"
 
 namespace mmv::app {
@@ -142,6 +143,9 @@ SimulateStudy runSimulateStudy(const Scene& scene, const SimulateRequest& r, con
   ArticleScene a = std::get<ArticleScene>(scene);
   applyOverrides(r, a.simulation);
   std::vector<std::string> warnings = checkTableProgram(a);
+  for (const SlewTiming& t : slewTimings(a.article))  // before: accepted silently
+    if (const std::string outside = slewOutsideRun(t, a.simulation.duration); !outside.empty())
+      warnings.push_back(t.axis + "'s slew: " + outside);
   if (hooks.warn)
     for (const auto& w : warnings) hooks.warn(w);
   double size = 0;

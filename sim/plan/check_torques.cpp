@@ -222,30 +222,11 @@ void addSlewLines(const CheckInputs& in, std::vector<CheckLine>& out) {
 /// is never seen, one that ends after it is seen in part (before, both were accepted
 /// silently). Advisory: the equipment can do it, the run does not show it.
 void addSlewTimingLines(const CheckInputs& in, std::vector<CheckLine>& out) {
-  struct Axis {
-    std::string name, group;
-    const SlewSpec* slew;
-    double from, range;
-    bool continuous;
-  };
-  std::vector<Axis> axes;
-  for (const auto& j : in.scene.article.joints)
-    if (j.slew) axes.push_back({j.name, "torquers", &*j.slew, j.angle, j.range, j.continuous});
-  if (const auto& g = in.scene.article.base.gimbal) {
-    const std::pair<const char*, const GimbalAxisSpec*> gimbal[] = {{"gimbal.yaw", &g->yaw}, {"gimbal.pitch", &g->pitch}, {"gimbal.roll", &g->roll}};
-    for (const auto& [name, a] : gimbal)
-      if (a->slew) axes.push_back({name, "gimbal", &*a->slew, a->angle, a->range, a->continuous});
-  }
   const double run = in.scene.simulation.duration;
-  for (const Axis& a : axes) {
-    const double start = a.slew->start_time, end = start + makeSlew(*a.slew, a.from, a.range, a.continuous).duration();
-    CheckLine l = makeLine(a.group, "slew." + a.name + ".timing", a.name + " slew ends within the run", end, run, "s",
-                           start >= run ? strf("it starts at %.4g s, at or after the run's end at %.4g s: the run never shows it; "
-                                               "move start_s or lengthen simulation.duration", start, run)
-                           : end > run ? strf("from %.4g s to %.4g s, past the run's end at %.4g s: the run shows only its start; "
-                                              "lengthen simulation.duration", start, end, run)
-                                       : strf("from %.4g s to %.4g s", start, end),
-                           0);
+  for (const SlewTiming& t : slewTimings(in.scene.article)) {
+    const std::string outside = slewOutsideRun(t, run);
+    CheckLine l = makeLine(t.group, "slew." + t.axis + ".timing", t.axis + " slew ends within the run", t.end_s, run, "s",
+                           outside.empty() ? strf("from %.4g s to %.4g s", t.start_s, t.end_s) : outside, 0);
     makeAdvisory(l);
     out.push_back(l);
   }

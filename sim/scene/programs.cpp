@@ -1,6 +1,7 @@
 #include "sim/scene/programs.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,34 @@ facility::Slew makeSlew(const SlewSpec& spec, double from, double range, bool co
   const facility::SlewLimits limits{continuous ? INFINITY : range, spec.max_rate, spec.max_acceleration};
   return facility::makeSlew(spec.trapezoidal ? facility::SlewShape::Trapezoidal : facility::SlewShape::Cycloidal, from,
                             spec.to, spec.start_time, limits);
+}
+
+std::vector<SlewTiming> slewTimings(const ArticleSpec& article) {
+  std::vector<SlewTiming> out;
+  const auto add = [&](const std::string& axis, const char* group, const SlewSpec& slew, double from, double range, bool continuous) {
+    out.push_back({axis, group, slew.start_time, slew.start_time + makeSlew(slew, from, range, continuous).duration()});
+  };
+  for (const auto& j : article.joints)
+    if (j.slew) add(j.name, "torquers", *j.slew, j.angle, j.range, j.continuous);
+  if (const auto& g = article.base.gimbal) {
+    const std::pair<const char*, const GimbalAxisSpec*> gimbal[] = {{"gimbal.yaw", &g->yaw}, {"gimbal.pitch", &g->pitch}, {"gimbal.roll", &g->roll}};
+    for (const auto& [name, a] : gimbal)
+      if (a->slew) add(name, "gimbal", *a->slew, a->angle, a->range, a->continuous);
+  }
+  return out;
+}
+
+std::string slewOutsideRun(const SlewTiming& t, double duration) {
+  char buf[320];
+  if (t.start_s >= duration)
+    std::snprintf(buf, sizeof buf, "it starts at %.4g s, at or after the run's end at %.4g s: the run never shows it; move start_s "
+                                   "or lengthen simulation.duration", t.start_s, duration);
+  else if (t.end_s > duration)
+    std::snprintf(buf, sizeof buf, "from %.4g s to %.4g s, past the run's end at %.4g s: the run shows only its start; lengthen "
+                                   "simulation.duration", t.start_s, t.end_s, duration);
+  else
+    return "";
+  return buf;
 }
 
 }  // namespace mmv

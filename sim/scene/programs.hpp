@@ -4,6 +4,8 @@
 /// scene is read, so a program the facility refuses is an error at its key.
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "facility/slews.hpp"
 #include "facility/table_programs.hpp"
@@ -19,5 +21,16 @@ std::shared_ptr<const facility::TableProgram> makeTableProgram(const TableMotion
 /// std::invalid_argument when an angle lies outside the range, or a spin-up is asked
 /// of a joint with a finite range.
 facility::Slew makeSlew(const SlewSpec& spec, double from, double range, bool continuous);
+
+/// When each slew of the article runs (joints, then the gimbal's axes): the axis, its
+/// group ("torquers", "gimbal"), start and end (s; a spin-up's end is its ramp's).
+struct SlewTiming {
+  std::string axis, group;
+  double start_s = 0, end_s = 0;
+};
+std::vector<SlewTiming> slewTimings(const ArticleSpec& article);
+/// What a run of `duration` s shows of a slew: empty when the whole of it, else why not
+/// ("it starts at ... at or after the run's end ..." or "... past the run's end ...").
+std::string slewOutsideRun(const SlewTiming& t, double duration);
 
 }  // namespace mmv

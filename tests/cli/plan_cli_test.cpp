@@ -167,7 +167,8 @@ TEST_F(Cli, AFastSlewFailsOnStressInCheckAndSimulate) {
   EXPECT_EQ(warned, 4);
 }
 
-// A slew the run does not show, whole or in part, is flagged (before: accepted silently):
+// A slew the run does not show, whole or in part, is flagged by check and simulate
+// (before: accepted silently):
 // the slew scene's joint 1 moves from 0.5 to 3.07 s; its 6 s run shows it, 1.2 s a part,
 // 0.4 s nothing.
 TEST_F(Cli, CheckFlagsASlewThatTheRunDoesNotShow) {
@@ -186,6 +187,19 @@ TEST_F(Cli, CheckFlagsASlewThatTheRunDoesNotShow) {
   EXPECT_EQ(none["verdict"], "advisory");
   EXPECT_NE(none["note"].get<std::string>().find("at or after the run's end"), std::string::npos) << none;
   EXPECT_NEAR(whole["demand"].get<double>(), part["demand"].get<double>(), 1e-12);  // the slew's end: the run's length moves none of it
+  // simulate says the same of its run (--duration as the scene's key).
+  const auto warnings = [&](const std::string& duration) {
+    const Result r = run("simulate " + std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml --segments 2 --json --duration " + duration);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::string all;
+    const auto j = nlohmann::json::parse(r.out);  // kept: a loop over a temporary's member dangles
+    for (const auto& w : j["warnings"]) all += w.get<std::string>() + "\n";
+    return all;
+  };
+  const std::string shown = warnings("3.5"), in_part = warnings("1.2"), never = warnings("0.4");
+  EXPECT_EQ(shown.find("slew:"), std::string::npos) << shown;
+  EXPECT_NE(in_part.find("joint1's slew: from 0.5 s to 3.071 s, past the run's end at 1.2 s"), std::string::npos) << in_part;
+  EXPECT_NE(never.find("joint1's slew: it starts at 0.5 s, at or after the run's end at 0.4 s"), std::string::npos) << never;
 }
 
 TEST_F(Cli, CheckRefusesABadBandAndAnIsolatorAndWritesNothing) {
