@@ -83,7 +83,7 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
                        double spacing, int count, bool triaxial, const std::string& method, const std::vector<std::string>& tam,
                        double sensor_mass, double min_separation, const std::vector<std::string>& keep_out, int channels,
                        bool keep_scene_sensors, const std::string& instrument, bool iterate_loaded, double strain_span,
-                       py::object progress) {
+                       double max_deflection, py::object progress) {
   const PyScene prepared = withSegments(scene, segments);
   mmv::app::PlacementRequest r;
   r.modes = target_modes;
@@ -102,6 +102,7 @@ py::tuple placeSensors(const PyScene& scene, int segments, const std::vector<int
   r.instrument = instrument;
   r.iterate_loaded = iterate_loaded;
   r.strain_span_m = strain_span;
+  r.max_deflection_m = max_deflection;
   r.front = Front::Python;
   const mmv::app::PlacementStudyResult s = released(progress, [&] { return mmv::app::runPlacementStudy(prepared.scene, r); });
   return py::make_tuple(s.json.dump(), s.text, s.tam_csv, prepared.warnings);
@@ -425,5 +426,5 @@ PYBIND11_MODULE(_mmvlab, m) {
   m.def("place_sensors", &placeSensors, py::arg("scene"), py::arg("segments"), py::arg("modes"), py::arg("below_hz"),
         py::arg("spacing"), py::arg("count"), py::arg("triaxial"), py::arg("method"), py::arg("tam"), py::arg("sensor_mass"),
         py::arg("min_separation"), py::arg("keep_out"), py::arg("channels"), py::arg("keep_scene_sensors"), py::arg("instrument"),
-        py::arg("iterate_loaded"), py::arg("strain_span"), py::arg("progress"));
+        py::arg("iterate_loaded"), py::arg("strain_span"), py::arg("max_deflection"), py::arg("progress"));
 }

@@ -736,7 +736,7 @@ check = _declared("check", CheckResult,
 @_documented
 def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, count=8, triaxial=False, method="efi",
                   tam=(), sensor_mass=0.0, min_separation=0.0, keep_out=(), channels=0, keep_scene_sensors=False,
-                  instrument="", iterate_loaded=False, strain_span=0.0, progress=None):
+                  instrument="", iterate_loaded=False, strain_span=0.0, max_deflection=0.0, progress=None):
     """`mmvlab place-sensors`: sensor stations that tell the target modes apart.
 
     Parameters
@@ -773,6 +773,9 @@ def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, co
         Place again on the model carrying the sensors until the set carries itself.
     strain_span : float
         Strain gauges or films this long, m, instead of accelerometers (0: accelerometers).
+    max_deflection : float
+        The table's dwell levels hold every tip's motion relative to the table within
+        this, m, 1e-6 .. 100 (0: no deflection limit; the links' allowables always hold).
     @progress
 
     Returns
@@ -790,7 +793,8 @@ def place_sensors(scene, *, segments=0, modes=(), below_hz=None, spacing=0.1, co
                                                             float(sensor_mass), float(min_separation),
                                                             [str(k) for k in keep_out], int(channels),
                                                             bool(keep_scene_sensors), str(instrument),
-                                                            bool(iterate_loaded), float(strain_span), progress)
+                                                            bool(iterate_loaded), float(strain_span),
+                                                            float(max_deflection), progress)
     _warn(warns)
     return PlacementResult(json_text, text, tam_csv)
 

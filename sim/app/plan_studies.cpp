@@ -97,7 +97,7 @@ namespace {
 /// The article's test geometry (channels, nodes, the ParaView set) and, on a scene with
 /// a shaker, its attachment and levels on the chosen sensors; on the base table, the
 /// table's own levels.
-void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
+void addTestGeometry(const ArticleScene& article, double max_deflection_m, PlacementStudyResult& s) {
   s.channels_csv = placementChannelsCsv(s.study);
   s.sensors_vtp = placementVtp(s.study);
   if (s.study.strain) {  // strain readings: no motion at nodes, no accelerometer levels
@@ -118,7 +118,7 @@ void addTestGeometry(const ArticleScene& article, PlacementStudyResult& s) {
     s.exciter_ranking_csv = exciterRankingCsv(*s.exciter);
   }
   if (article.article.base.type == BaseType::Table && !s.study.target_modes.empty()) {
-    s.table_levels = runTableLevels(article, s.study);
+    s.table_levels = runTableLevels(article, s.study, max_deflection_m);
     s.json["table_levels"] = tableLevelsJson(*s.table_levels);
     s.text += tableLevelsText(*s.table_levels);
   }
@@ -242,6 +242,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   }
   checkRange(r.front, "--sensor-mass", r.sensor_mass_kg, 0, 100);
   checkRange(r.front, "--min-separation", r.min_separation_m, 0, 100);
+  if (r.max_deflection_m != 0) checkRange(r.front, "--max-deflection", r.max_deflection_m, 1e-6, 100);
   o.min_separation_m = r.min_separation_m;
   if (r.channels != 0) {
     checkRange(r.front, "--channels", r.channels, 1, 300000);
@@ -277,7 +278,7 @@ PlacementStudyResult runPlacementStudy(const Scene& scene, const PlacementReques
   s.text = placementText(s.study);
   if (!s.study.tams.empty()) s.tam_csv = tamCsv(s.study), s.tam_mat = tamMat(s.study);
   if (const auto* article = std::get_if<ArticleScene>(&scene)) {
-    addTestGeometry(*article, s);
+    addTestGeometry(*article, r.max_deflection_m, s);
   } else {  // the isolator's channels and nodes (its ParaView set is modes.vtp's boxes)
     s.channels_csv = placementChannelsCsv(s.study);
     uff::File geometry = placementGeometry(s.study, std::get<HamsasScene>(scene).name);

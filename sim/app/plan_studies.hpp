@@ -67,6 +67,9 @@ struct PlacementRequest {
   /// independence, uniaxial, massless; no shaker or table levels (they are planned on
   /// accelerometers) and no test_geometry.uff (its records hold motions).
   double strain_span_m = 0;
+  /// > 0 (m, 1e-6 .. 100): the table's dwell levels hold every tip's motion relative to
+  /// the table within it (sim/linear/table_levels.hpp); 0: no deflection limit.
+  double max_deflection_m = 0;
   Front front = Front::Cli;
 };
 

@@ -133,6 +133,7 @@ struct PlaceSensorsArgs : SceneArgs {
   std::string instrument;        ///< --instrument NAME (the scene's instruments:)
   bool iterate_loaded = false;   ///< --iterate-loaded
   double strain_span = 0;        ///< --strain-span M; 0: accelerometers
+  double max_deflection = 0;     ///< --max-deflection M; 0: none
   std::string out;
   bool force = false;
 };

@@ -142,6 +142,9 @@ CLI::App* addPlaceSensorsCommand(CLI::App& app, PlaceSensorsArgs& ps) {
                 "The accelerometer placed, from the scene's instruments: (default: accelerometer, the report's): its mass loads "
                 "the model, its range and resolution set the shaker's levels, a triaxial one (axes: 3) places blocks");
   p->add_flag("--iterate-loaded", ps.iterate_loaded, "Place again on the model carrying the sensors' masses until the set carries itself");
+  p->add_option("--max-deflection", ps.max_deflection,
+                "The table's dwell levels hold every link tip's motion relative to the table within this, m, 1e-6 .. 100 "
+                "(besides the sensors' range and the links' allowables; default: no deflection limit)");
   p->add_option("--strain-span", ps.strain_span, "Place strain gauges or films this long, m, not accelerometers (EfI; spatial: each span's in- and out-of-plane faces)");
   p->add_option("--tam", ps.tam,
                 "Test-analysis models on the chosen sensors, with self- and cross-orthogonality against NASA-STD-5002's "

@@ -163,6 +163,7 @@ int runPlaceSensorsCommand(const PlaceSensorsArgs& args) {
     r.instrument = args.instrument;
     r.iterate_loaded = args.iterate_loaded;
     r.strain_span_m = args.strain_span;
+    r.max_deflection_m = args.max_deflection;
     std::unique_ptr<OutputDir> out;
     if (!args.out.empty()) out = std::make_unique<OutputDir>(args.out, args.force);
     const app::PlacementStudyResult study = app::runPlacementStudy(loaded, r);

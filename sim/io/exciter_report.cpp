@@ -137,7 +137,17 @@ const std::vector<Field<TableLevels::Mode>>& tableLevelFields() {
       {"axis", "", "%s", "the table's axis of the dwell (x in the plane, z across it): the one that shows the mode best", [](const T& m) -> Opt { return json(m.axis); }},
       {"table_acc", "m/s^2", "%.6g", "the table's acceleration amplitude: stroke x omega^2, lowered to a sensor's range", [](const T& m) -> Opt { return json(m.table_acc); }},
       {"table_amplitude_m", "m", "%.6g", "its displacement amplitude", [](const T& m) -> Opt { return json(m.table_amplitude_m); }},
-      {"limit", "", "%s", "what set it: stroke or range", [](const T& m) -> Opt { return json(m.limit); }},
+      {"limit", "", "%s", "what set it: stroke, range, stress (a link's allowable over its factor) or deflection (--max-deflection)", [](const T& m) -> Opt { return json(m.limit); }},
+      {"stress_link", "", "%s", "the link nearest its strength limit in the dwell (null: no link with an allowable)",
+       [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.stress_link); }},
+      {"static_stress_pa", "Pa", "%.6g", "its static peak stress", [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.static_stress_pa); }},
+      {"stress_amplitude_pa", "Pa", "%.6g", "its bending stress amplitude in the dwell (peak over root, hinges, tip)",
+       [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.stress_amplitude_pa); }},
+      {"stress_limit_pa", "Pa", "%.6g", "its allowable over its factor: static + amplitude stays within it",
+       [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.stress_limit_pa); }},
+      {"tip", "", "%s", "the tip that moves most relative to the table", [](const T& m) -> Opt { return json(m.tip); }},
+      {"tip_amplitude_m", "m", "%.6g", "its motion's amplitude relative to the table (held to --max-deflection when given)",
+       [](const T& m) -> Opt { return json(m.tip_amplitude_m); }},
       {"acc", "m/s^2", "%.6g", "the absolute acceleration amplitude at the sensor that sees the mode most", [](const T& m) -> Opt { return json(m.acc); }},
       {"best_channel", "", "%s", "that sensor direction (station axis)", [](const T& m) -> Opt { return json(m.best_channel); }},
       {"snr_db", "dB", "%.6g", "20 log10(acc / the accelerometer's resolution)", [](const T& m) -> Opt { return json(m.snr_db); }},
@@ -156,6 +166,7 @@ json tableLevelsJson(const TableLevels& t) {
   j["table"] = {{"stroke_m", t.table.stroke}, {"bandwidth_hz", t.table.bandwidth_hz}};
   j["sensor"] = {{"resolution_m_per_s2", t.resolution}, {"range_m_per_s2", t.range}};
   j["criteria"] = {{"seen_snr_db", kSeenSnrDb}};
+  j["max_deflection_m"] = t.max_deflection_m > 0 ? json(t.max_deflection_m) : json(nullptr);
   j["modes"] = json::array();
   for (const auto& m : t.modes) j["modes"].push_back(fieldsJson(tableLevelFields(), m, every));
   if (const auto& r = t.random; r.program)
@@ -169,16 +180,28 @@ std::string tableLevelsText(const TableLevels& t) {
   std::ostringstream os;
   int seen = 0;
   for (const auto& m : t.modes) seen += m.seen;
-  os << strf("\nBase table (+-%.4g m stroke, %.4g Hz bandwidth), a sine dwell per target mode at the stroke: %d of %zu "
-             "target modes seen at >= %.0f dB\n",
-             t.table.stroke, t.table.bandwidth_hz, seen, t.modes.size(), kSeenSnrDb);
-  Table tab({"mode", "f_Hz", "axis", "table_m/s2", "table_mm", "limit", "acc_m/s2", "best sensor", "SNR_dB", "seen_by", "random_dB"});
+  os << strf("\nBase table (+-%.4g m stroke, %.4g Hz bandwidth), a sine dwell per target mode at the stroke, lowered to the "
+             "sensors' range, the links' allowables over their factors%s: %d of %zu target modes seen at >= %.0f dB\n",
+             t.table.stroke, t.table.bandwidth_hz,
+             t.max_deflection_m > 0 ? strf(" and the tips' %.4g mm (--max-deflection)", 1e3 * t.max_deflection_m).c_str() : "", seen,
+             t.modes.size(), kSeenSnrDb);
+  Table tab({"mode", "f_Hz", "axis", "table_m/s2", "table_mm", "limit", "tip_mm", "stress (static + dwell) / limit", "acc_m/s2",
+             "best sensor", "SNR_dB", "seen_by", "random_dB"});
   for (const auto& m : t.modes)
     tab.add({std::to_string(m.mode.number()), strf("%.4f", m.frequency_hz), m.axis, strf("%.3g", m.table_acc),
-             strf("%.3g", 1e3 * m.table_amplitude_m), m.limit, strf("%.3g", m.acc), m.best_channel,
+             strf("%.3g", 1e3 * m.table_amplitude_m), m.limit, strf("%.3g", 1e3 * m.tip_amplitude_m),
+             m.stress_link.empty() ? std::string("-")
+                                   : strf("%s %.3g + %.3g of %.3g MPa", m.stress_link.c_str(), 1e-6 * m.static_stress_pa,
+                                          1e-6 * m.stress_amplitude_pa, 1e-6 * m.stress_limit_pa),
+             strf("%.3g", m.acc), m.best_channel,
              strf("%.1f%s", m.snr_db, !m.within_bandwidth ? " ABOVE BANDWIDTH" : m.seen ? "" : " LOW"),
              std::to_string(m.channels_seen), std::isfinite(m.random_snr_db) ? strf("%.1f", m.random_snr_db) : "-"});
   os << tab.text();
+  for (const auto& m : t.modes)  // the linear model's small deflections, against the motion planned
+    if (m.tip_link_m > 0 && m.tip_amplitude_m > kLargeDeflection * m.tip_link_m)
+      os << strf("  mode %d's dwell moves %s %.3g mm, %.0f %% of its link's length: beyond small deflections, where the linear "
+                 "model does not hold; state the article's limit (--max-deflection)\n",
+                 m.mode.number(), m.tip.c_str(), 1e3 * m.tip_amplitude_m, 100 * m.tip_amplitude_m / m.tip_link_m);
   if (const auto& r = t.random; r.program)
     os << strf("  random along x, %.3g-%.3g Hz, %.3g mm RMS (crest factor %.0f; set by the %s): largest sensor RMS %.3g "
                "m/s^2 (%s)\n",

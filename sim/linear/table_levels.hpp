@@ -8,7 +8,12 @@
 /// linear model of `frf` (the scene's damping, else 1 % modal), its signal-to-noise
 /// ratio against the accelerometer's resolution at the sensor that sees the mode most,
 /// and whether the frequency is within the table's servo bandwidth (10 Hz: above it the
-/// loop attenuates the motion, and the mode is not counted as seen). Also a random
+/// loop attenuates the motion, and the mode is not counted as seen). Each dwell is also
+/// held to the article's strength (docs/strength.md): every flexible link's bending
+/// stress amplitude in it (its hinges' moments at the root, the hinges and the tip, the
+/// linear model's) added to its static peak stays within its allowable over its factor,
+/// and, when the user states one (`--max-deflection`), every tip's motion relative to
+/// the table within that limit. Also a random
 /// program of the table over its band at the stroke (TableLevels::Random) and each
 /// target's signal-to-noise in it.
 
@@ -31,7 +36,15 @@ struct TableLevels {
     std::string axis;              ///< the table's axis of the dwell: x or z
     double table_acc = 0;          ///< m/s^2, the table's acceleration amplitude
     double table_amplitude_m = 0;  ///< its displacement amplitude
-    std::string limit;             ///< stroke or range: what set it
+    std::string limit;             ///< stroke, range, stress (a link's allowable) or deflection: what set it
+    /// The link whose static plus dynamic stress is nearest its limit at the dwell, and its
+    /// static peak, the dwell's stress amplitude and its limit (allowable / factor), Pa;
+    /// empty: no link with an allowable and a recoverable stress.
+    std::string stress_link;
+    double static_stress_pa = 0, stress_amplitude_pa = 0, stress_limit_pa = 0;
+    std::string tip;         ///< the tip that moves most relative to the table
+    double tip_amplitude_m = 0;
+    double tip_link_m = 0;   ///< its link's length
     double acc = 0;                ///< m/s^2, the amplitude at the best sensor
     std::string best_channel;      ///< "station axis"
     double snr_db = 0;             ///< 20 log10(acc / resolution)
@@ -44,6 +57,7 @@ struct TableLevels {
     double random_snr_db = 0;
   };
   std::vector<Mode> modes;
+  double max_deflection_m = 0;  ///< the tips' limit the user stated (0: none)
   /// A band-limited random program of the table along x (a flat displacement spectrum,
   /// as `base.motion: {type: random}`), over [f_min, f_max]: from half the lowest target
   /// (at least 0.1 Hz) to the table's bandwidth. Its RMS displacement is the stroke over
@@ -61,12 +75,16 @@ struct TableLevels {
   } random;
 };
 
+/// A tip motion beyond this share of its link's length is no small deflection: the
+/// linear model's dwell is flagged (a beam's linear theory holds to a few per cent).
+inline constexpr double kLargeDeflection = 0.05;
+
 /// A random program's peak over its RMS (Gaussian, clipped at 3 sigma), as the shaker's
 /// assumed crest factor.
 inline constexpr double kTableCrestFactor = 3;
 
 /// The table's dwell levels for `study`'s targets on its chosen sensors. MMV_DEMAND: the
 /// scene's base is the table.
-TableLevels runTableLevels(const ArticleScene& scene, const PlacementStudy& study);
+TableLevels runTableLevels(const ArticleScene& scene, const PlacementStudy& study, double max_deflection_m = 0);
 
 }  // namespace mmv

@@ -65,5 +65,24 @@ TEST_F(Cli, StressOutputsMeetTheBeamAndAreRefusedByName) {
   EXPECT_NE(doc.find("\"Pa\""), std::string::npos) << doc.substr(0, 2000);
 }
 
+// place-sensors --max-deflection holds to its stated range: 1e-6 .. 100 m, at each bound
+// and one past it (exit 64 naming the option), and shows in the table's levels.
+TEST_F(Cli, MaxDeflectionIsHeldToItsRange) {
+  const std::string scene = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-table.yaml --segments 4 --modes 1-2 --json";
+  for (const char* ok : {"1e-6", "100"}) {
+    const Result r = run("place-sensors " + scene + " --max-deflection " + ok);
+    EXPECT_EQ(r.code, 0) << ok << ": " << r.err;
+    EXPECT_NEAR(json::parse(r.out).at("table_levels").at("max_deflection_m").get<double>(), std::stod(ok), 1e-18) << ok;
+  }
+  for (const char* bad : {"9.9e-7", "100.1", "-1"}) {
+    const Result r = run("place-sensors " + scene + " --max-deflection " + bad);
+    EXPECT_EQ(r.code, 64) << bad;
+    EXPECT_NE(r.err.find("--max-deflection"), std::string::npos) << r.err;
+  }
+  const json levels = json::parse(run("place-sensors " + scene + " --max-deflection 0.01").out).at("table_levels").at("modes");
+  EXPECT_EQ(levels.at(0).at("limit"), "deflection");
+  EXPECT_NEAR(levels.at(0).at("tip_amplitude_m").get<double>(), 0.01, 1e-12);
+}
+
 }  // namespace
 }  // namespace mmv::cli_testing
