@@ -111,7 +111,7 @@ void addTestGeometry(const ArticleScene& article, double max_deflection_m, Place
   uff::stampNow(geometry);
   s.geometry_uff = uff::write(geometry);
   if (article.shaker) {
-    s.exciter = runExciter(article, s.study);
+    s.exciter = runExciter(article, s.study, max_deflection_m);
     s.json["exciter"] = exciterJson(*s.exciter);
     s.text += exciterText(*s.exciter);
     s.exciter_csv = exciterCsv(*s.exciter);

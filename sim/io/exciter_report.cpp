@@ -22,6 +22,25 @@ std::vector<RankedExciter> ranked(const ExciterStudy& e, std::size_t n) {
 std::string vec(const std::array<double, 3>& v) { return strf("[%.4g %.4g %.4g]", v[0], v[1], v[2]); }
 }  // namespace
 
+namespace {
+
+/// A level's stress cell: the link nearest its limit, its static and dwell stress and
+/// the limit, MPa ("-": no link with an allowable).
+std::string levelStressCell(const LevelStrength& s) {
+  if (s.link.empty()) return "-";
+  return strf("%s %.3g + %.3g of %.3g MPa", s.link.c_str(), 1e-6 * s.static_pa, 1e-6 * s.amplitude_pa, 1e-6 * s.limit_pa);
+}
+
+/// A dwell whose tip motion is no small deflection: said, with what to do.
+std::string largeDeflectionNote(ModeNumber mode, const LevelStrength& s) {
+  if (!(s.tip_link_m > 0 && s.tip_amplitude_m > kLargeDeflection * s.tip_link_m)) return "";
+  return strf("  mode %d's dwell moves %s %.3g mm, %.0f %% of its link's length: beyond small deflections, where the linear "
+              "model does not hold; state the article's limit (--max-deflection)\n",
+              mode.number(), s.tip.c_str(), 1e3 * s.tip_amplitude_m, 100 * s.tip_amplitude_m / s.tip_link_m);
+}
+
+}  // namespace
+
 const std::vector<Field<M>>& exciterModeFields() {
   // clang-format off
   static const std::vector<Field<M>> fields{
@@ -33,7 +52,16 @@ const std::vector<Field<M>>& exciterModeFields() {
       {"mac", "1", "%.6f", "the MAC of the pairing (the unloaded mass matrix)", [](const M& m) -> Opt { return json(m.mac); }},
       {"zeta", "1", "%.6g", "the loaded mode's damping ratio (the diagonal of the modal damping)", [](const M& m) -> Opt { return json(m.zeta); }},
       {"sine_force_n", "N", "%.6g", "the sine dwell's force amplitude: the shaker's limit, lowered to the stroke or a sensor's range", [](const M& m) -> Opt { return json(m.sine_force_n); }},
-      {"sine_limit", "", "%s", "what set it: force, stroke or range", [](const M& m) -> Opt { return json(m.sine_limit); }},
+      {"sine_limit", "", "%s", "what set it: force, stroke, range, stress (a link's allowable over its factor) or deflection (--max-deflection)", [](const M& m) -> Opt { return json(m.sine_limit); }},
+      {"stress_link", "", "%s", "the link nearest its strength limit in the dwell (null: no link with an allowable)",
+       [](const M& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.link); }},
+      {"static_stress_pa", "Pa", "%.6g", "its static peak stress", [](const M& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.static_pa); }},
+      {"stress_amplitude_pa", "Pa", "%.6g", "its bending stress amplitude in the dwell (peak over root, hinges, tip)",
+       [](const M& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.amplitude_pa); }},
+      {"stress_limit_pa", "Pa", "%.6g", "its allowable over its factor: static + amplitude stays within it",
+       [](const M& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.limit_pa); }},
+      {"tip", "", "%s", "the link tip that moves most", [](const M& m) -> Opt { return json(m.strength.tip); }},
+      {"tip_amplitude_m", "m", "%.6g", "its motion's amplitude (held to --max-deflection when given)", [](const M& m) -> Opt { return json(m.strength.tip_amplitude_m); }},
       {"sine_acc", "m/s^2", "%.6g", "the acceleration amplitude at the sensor that sees the mode most", [](const M& m) -> Opt { return json(m.sine_acc); }},
       {"best_channel", "", "%s", "that sensor direction (station axis)", [](const M& m) -> Opt { return json(m.best_channel); }},
       {"sine_snr_db", "dB", "%.6g", "20 log10(sine_acc / the accelerometer's resolution)", [](const M& m) -> Opt { return json(m.sine_snr_db); }},
@@ -98,13 +126,16 @@ std::string exciterText(const ExciterStudy& e) {
              e.hardware.force_limit, e.hardware.stroke, e.hardware.armature_mass, e.at.c_str(), vec(e.direction).c_str(),
              e.chosen ? " (the best-ranked attachment)" : "", seen, e.modes.size(), kSeenSnrDb);
   os << "  damping: " << e.damping << strf("; sensors: resolution %.4g m/s^2, range +-%.4g m/s^2\n", e.resolution, e.range);
-  Table t({"mode", "f_Hz", "loaded_Hz", "shift_%", "force_N", "limit", "acc_m/s2", "best sensor", "SNR_dB", "seen_by", "stroke_mm", "random_dB"});
+  Table t({"mode", "f_Hz", "loaded_Hz", "shift_%", "force_N", "limit", "tip_mm", "stress (static + dwell) / limit", "acc_m/s2",
+           "best sensor", "SNR_dB", "seen_by", "stroke_mm", "random_dB"});
   for (const auto& m : e.modes)
     t.add({std::to_string(m.mode.number()), strf("%.4f", m.frequency_hz), strf("%.4f", m.loaded_hz),
            strf("%+.2f", 100 * (m.loaded_hz / m.frequency_hz - 1)), strf("%.3g", m.sine_force_n), m.sine_limit,
+           strf("%.3g", 1e3 * m.strength.tip_amplitude_m), levelStressCell(m.strength),
            strf("%.3g", m.sine_acc), m.best_channel, strf("%.1f%s", m.sine_snr_db, m.seen ? "" : " LOW"),
            std::to_string(m.channels_seen), strf("%.3g", 1e3 * m.sine_stroke_m), strf("%.1f", m.random_snr_db)});
   os << t.text();
+  for (const auto& m : e.modes) os << largeDeflectionNote(m.mode, m.strength);
   for (const auto& m : e.modes)
     if (std::abs(m.loaded_hz / m.frequency_hz - 1) > kArmatureShiftLimit)
       os << strf("  the armature moves mode %d by %+.2f %%: the test would see another article (a lighter armature, or an "
@@ -139,15 +170,15 @@ const std::vector<Field<TableLevels::Mode>>& tableLevelFields() {
       {"table_amplitude_m", "m", "%.6g", "its displacement amplitude", [](const T& m) -> Opt { return json(m.table_amplitude_m); }},
       {"limit", "", "%s", "what set it: stroke, range, stress (a link's allowable over its factor) or deflection (--max-deflection)", [](const T& m) -> Opt { return json(m.limit); }},
       {"stress_link", "", "%s", "the link nearest its strength limit in the dwell (null: no link with an allowable)",
-       [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.stress_link); }},
-      {"static_stress_pa", "Pa", "%.6g", "its static peak stress", [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.static_stress_pa); }},
+       [](const T& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.link); }},
+      {"static_stress_pa", "Pa", "%.6g", "its static peak stress", [](const T& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.static_pa); }},
       {"stress_amplitude_pa", "Pa", "%.6g", "its bending stress amplitude in the dwell (peak over root, hinges, tip)",
-       [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.stress_amplitude_pa); }},
+       [](const T& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.amplitude_pa); }},
       {"stress_limit_pa", "Pa", "%.6g", "its allowable over its factor: static + amplitude stays within it",
-       [](const T& m) -> Opt { return m.stress_link.empty() ? json(nullptr) : json(m.stress_limit_pa); }},
-      {"tip", "", "%s", "the tip that moves most relative to the table", [](const T& m) -> Opt { return json(m.tip); }},
+       [](const T& m) -> Opt { return m.strength.link.empty() ? json(nullptr) : json(m.strength.limit_pa); }},
+      {"tip", "", "%s", "the tip that moves most relative to the table", [](const T& m) -> Opt { return json(m.strength.tip); }},
       {"tip_amplitude_m", "m", "%.6g", "its motion's amplitude relative to the table (held to --max-deflection when given)",
-       [](const T& m) -> Opt { return json(m.tip_amplitude_m); }},
+       [](const T& m) -> Opt { return json(m.strength.tip_amplitude_m); }},
       {"acc", "m/s^2", "%.6g", "the absolute acceleration amplitude at the sensor that sees the mode most", [](const T& m) -> Opt { return json(m.acc); }},
       {"best_channel", "", "%s", "that sensor direction (station axis)", [](const T& m) -> Opt { return json(m.best_channel); }},
       {"snr_db", "dB", "%.6g", "20 log10(acc / the accelerometer's resolution)", [](const T& m) -> Opt { return json(m.snr_db); }},
@@ -189,19 +220,13 @@ std::string tableLevelsText(const TableLevels& t) {
              "best sensor", "SNR_dB", "seen_by", "random_dB"});
   for (const auto& m : t.modes)
     tab.add({std::to_string(m.mode.number()), strf("%.4f", m.frequency_hz), m.axis, strf("%.3g", m.table_acc),
-             strf("%.3g", 1e3 * m.table_amplitude_m), m.limit, strf("%.3g", 1e3 * m.tip_amplitude_m),
-             m.stress_link.empty() ? std::string("-")
-                                   : strf("%s %.3g + %.3g of %.3g MPa", m.stress_link.c_str(), 1e-6 * m.static_stress_pa,
-                                          1e-6 * m.stress_amplitude_pa, 1e-6 * m.stress_limit_pa),
+             strf("%.3g", 1e3 * m.table_amplitude_m), m.limit, strf("%.3g", 1e3 * m.strength.tip_amplitude_m),
+             levelStressCell(m.strength),
              strf("%.3g", m.acc), m.best_channel,
              strf("%.1f%s", m.snr_db, !m.within_bandwidth ? " ABOVE BANDWIDTH" : m.seen ? "" : " LOW"),
              std::to_string(m.channels_seen), std::isfinite(m.random_snr_db) ? strf("%.1f", m.random_snr_db) : "-"});
   os << tab.text();
-  for (const auto& m : t.modes)  // the linear model's small deflections, against the motion planned
-    if (m.tip_link_m > 0 && m.tip_amplitude_m > kLargeDeflection * m.tip_link_m)
-      os << strf("  mode %d's dwell moves %s %.3g mm, %.0f %% of its link's length: beyond small deflections, where the linear "
-                 "model does not hold; state the article's limit (--max-deflection)\n",
-                 m.mode.number(), m.tip.c_str(), 1e3 * m.tip_amplitude_m, 100 * m.tip_amplitude_m / m.tip_link_m);
+  for (const auto& m : t.modes) os << largeDeflectionNote(m.mode, m.strength);
   if (const auto& r = t.random; r.program)
     os << strf("  random along x, %.3g-%.3g Hz, %.3g mm RMS (crest factor %.0f; set by the %s): largest sensor RMS %.3g "
                "m/s^2 (%s)\n",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 #include "facility/sensors.hpp"
@@ -24,6 +25,8 @@ struct Loaded {
   LinearModel lm;
   ModalSolution modes;
   std::vector<double> zeta;
+  int axes = 2;
+  std::optional<StrengthOutputs> strength;  ///< its rows after the channels' and the driving point's
 };
 
 /// The article with the armature on it (buildLinearModel: the stinger is stiff along its
@@ -38,9 +41,11 @@ Loaded loadedModel(const ArticleScene& scene, const ExciterStudy& e, const std::
   for (const auto& c : channels)
     for (int a = 0; a < axes; ++a) outputs.push_back({c.name + " " + axisName(a), OutputKind::Acceleration, c.station, a, true});
   for (int a = 0; a < axes; ++a) outputs.push_back({"driving point " + std::string(axisName(a)), OutputKind::Displacement, e.at, a, false});
+  StrengthOutputs strength(scene, axes, outputs);
   DampingSpec damping;  // frf's default: 1 % in every mode, unless the scene says otherwise
   if (scene.damping) damping = *scene.damping;
-  Loaded l{buildLinearModel(scene, {shaker}, outputs, damping), {}, {}};
+  Loaded l{buildLinearModel(scene, {shaker}, outputs, damping), {}, {}, axes, strength};
+  l.strength->setStaticStress(scene, l.lm);
   l.modes = dampedModes(l.lm, l.zeta);
   return l;
 }
@@ -50,13 +55,14 @@ Loaded loadedModel(const ArticleScene& scene, const ExciterStudy& e, const std::
 struct Unit {
   std::vector<std::complex<double>> acc;
   std::complex<double> stroke;
+  Eigen::MatrixXcd H;  ///< every output per N (the strength rows too)
 };
 
 Unit unitResponse(const Loaded& l, const ExciterStudy& e, const std::vector<SensorChannel>& channels, double f_hz) {
-  const Eigen::MatrixXcd H = l.lm.second_order.response(2 * M_PI * f_hz);
-  const int axes = static_cast<int>(H.rows() / static_cast<Eigen::Index>(channels.size() + 1));
-  const Eigen::VectorXcd h = H.col(0);  // per N of the shaker's force
   Unit u;
+  u.H = l.lm.second_order.response(2 * M_PI * f_hz);
+  const int axes = l.axes;
+  const Eigen::VectorXcd h = u.H.col(0);  // per N of the shaker's force
   for (std::size_t c = 0; c < channels.size(); ++c) {
     std::complex<double> v = 0;
     for (int a = 0; a < axes; ++a) v += h[static_cast<Eigen::Index>(c) * axes + a] * channels[c].world[static_cast<std::size_t>(a)];
@@ -68,7 +74,7 @@ Unit unitResponse(const Loaded& l, const ExciterStudy& e, const std::vector<Sens
 }
 
 /// Sine dwell at each target's loaded frequency.
-void sineLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChannel>& channels) {
+void sineLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChannel>& channels, double max_deflection_m) {
   for (auto& m : e.modes) {
     const Unit u = unitResponse(l, e, channels, m.loaded_hz);
     std::size_t best = 0;
@@ -79,6 +85,7 @@ void sineLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChanne
     m.sine_limit = "force";
     if (x1 * m.sine_force_n > e.hardware.stroke) m.sine_force_n = e.hardware.stroke / x1, m.sine_limit = "stroke";
     if (a1 * m.sine_force_n > e.range) m.sine_force_n = e.range / a1, m.sine_limit = "range";
+    m.strength = l.strength->hold(u.H, 0, max_deflection_m, m.sine_force_n, m.sine_limit);
     m.sine_acc = a1 * m.sine_force_n;
     m.sine_stroke_m = x1 * m.sine_force_n;
     m.best_channel = channels.empty() ? "" : channels[best].name;
@@ -101,7 +108,7 @@ void randomLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChan
   const std::vector<double> f = resolveResonances(logFrequencies(lo, hi, 800), fn, zeta, 8);
   r.grid_points = static_cast<int>(f.size());
   const double rms_force = e.hardware.force_limit / e.hardware.crest_factor, G = rms_force * rms_force / (hi - lo);
-  std::vector<double> acc2(channels.size(), 0.0);
+  std::vector<double> acc2(channels.size(), 0.0), stress2(l.strength->stressRows(), 0.0);  // per unit spectrum for the stresses
   double stroke2 = 0;
   Unit prev = unitResponse(l, e, channels, f[0]);
   for (std::size_t i = 1; i < f.size(); ++i) {  // trapezoids
@@ -109,6 +116,10 @@ void randomLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChan
     const double df = 0.5 * (f[i] - f[i - 1]) * G;
     for (std::size_t c = 0; c < channels.size(); ++c) acc2[c] += df * (std::norm(prev.acc[c]) + std::norm(next.acc[c]));
     stroke2 += df * (std::norm(prev.stroke) + std::norm(next.stroke));
+    for (std::size_t k = 0; k < stress2.size(); ++k) {
+      const Eigen::Index row = static_cast<Eigen::Index>(l.strength->stressRow(k));
+      stress2[k] += 0.5 * (f[i] - f[i - 1]) * (std::norm(prev.H(row, 0)) + std::norm(next.H(row, 0)));
+    }
     prev = next;
   }
   std::size_t worst = 0;
@@ -119,6 +130,9 @@ void randomLevels(ExciterStudy& e, const Loaded& l, const std::vector<SensorChan
   const double crest = e.hardware.crest_factor;
   if (crest * std::sqrt(stroke2) > e.hardware.stroke) scale = e.hardware.stroke / (crest * std::sqrt(stroke2)), r.limit = "stroke";
   if (!acc2.empty() && crest * std::sqrt(acc2[worst]) * scale > e.range) scale = e.range / (crest * std::sqrt(acc2[worst])), r.limit = "range";
+  double spectrum = G * scale * scale;  // N^2/Hz: the crest factor times each link's RMS stress within its room
+  if (const std::string link = l.strength->capRandom(stress2, crest, spectrum); !link.empty())
+    scale = std::sqrt(spectrum / G), r.limit = "stress (" + link + ")";
   r.rms_force_n = rms_force * scale;
   r.rms_acc = acc2.empty() ? 0.0 : std::sqrt(acc2[worst]) * scale;
   r.rms_channel = acc2.empty() ? "" : channels[worst].name;
@@ -172,7 +186,7 @@ std::vector<ExciterCandidate> rankExciterCandidates(const PlacementStudy& study,
   return out;
 }
 
-ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) {
+ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study, double max_deflection_m) {
   MMV_DEMAND(scene.shaker.has_value() && !study.target_modes.empty());
   const ShakerSceneSpec& spec = *scene.shaker;
   ExciterStudy e;
@@ -215,7 +229,7 @@ ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study) 
                             m.loaded_mode.number(), m.loaded_hz, m.mode.number(), m.zeta));
     e.modes.push_back(m);
   }
-  sineLevels(e, l, channels);
+  sineLevels(e, l, channels, max_deflection_m);
   randomLevels(e, l, channels);
   return e;
 }

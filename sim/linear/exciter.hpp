@@ -39,6 +39,7 @@
 
 #include "sim/core/mode_number.hpp"
 #include "sim/linear/state_space.hpp"
+#include "sim/linear/strength_levels.hpp"
 #include "sim/modes/place_sensors.hpp"
 
 namespace mmv {
@@ -78,12 +79,13 @@ struct ExciterStudy {
     double zeta = 0;                   ///< the loaded mode's damping ratio (diagonal of the modal damping)
     // Sine dwell at loaded_hz.
     double sine_force_n = 0;
-    std::string sine_limit;            ///< force, stroke or range: what set the force
+    std::string sine_limit;            ///< force, stroke, range, stress or deflection: what set the force
     double sine_acc = 0;               ///< m/s^2 amplitude at the best sensor
     std::string best_channel;          ///< "station axis"
     double sine_snr_db = 0;
     double sine_stroke_m = 0;          ///< the driving point's amplitude at that force
     int channels_seen = 0;             ///< sensors at or above kSeenSnrDb
+    LevelStrength strength;            ///< the links' stress and the tips' motion in the dwell
     // Random.
     double random_snr_db = 0;          ///< the best sensor's response spectrum over the noise's, at loaded_hz
     bool seen = false;                 ///< sine_snr_db >= kSeenSnrDb
@@ -92,7 +94,7 @@ struct ExciterStudy {
   struct Random {
     double f_min_hz = 0, f_max_hz = 0;
     double rms_force_n = 0;            ///< used: force_limit / crest_factor, lowered to fit
-    std::string limit;                 ///< force, stroke or range
+    std::string limit;                 ///< force, stroke, range or "stress (LINK)"
     double rms_acc = 0;                ///< the largest sensor RMS, m/s^2
     std::string rms_channel;
     double stroke_rms_m = 0;           ///< the driving point's RMS displacement
@@ -115,7 +117,9 @@ ModalSolution dampedModes(const LinearModel& lm, std::vector<double>& zeta);
 /// The shaker of `scene` (MMV_DEMAND: it has one) against `study`'s targets and chosen
 /// sensors. Throws SceneError when a target mode is undamped (below kLeastDampingRatio),
 /// NumericalError when the model cannot respond (a singular model).
-ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study);
+/// Every level is also held to the links' strength and, with `max_deflection_m` > 0,
+/// every tip's motion within it (sim/linear/strength_levels.hpp).
+ExciterStudy runExciter(const ArticleScene& scene, const PlacementStudy& study, double max_deflection_m = 0);
 
 /// The ranking of every candidate direction of `study` for a shaker of armature mass
 /// `armature_kg` (best first; ties by the candidates' order).

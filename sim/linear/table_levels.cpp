@@ -9,8 +9,7 @@
 #include "sim/core/text.hpp"
 #include "sim/linear/exciter.hpp"
 #include "sim/linear/state_space.hpp"
-#include "sim/statics/link_stress.hpp"
-#include "sim/statics/closures.hpp"
+#include "sim/linear/strength_levels.hpp"
 
 namespace mmv {
 
@@ -26,55 +25,6 @@ std::vector<double> channelGains(const LinearModel& lm, const std::vector<Sensor
     out.push_back(std::abs(v));
   }
   return out;
-}
-
-/// What holds a dwell to the article's strength and a deflection limit: a stress output
-/// at each flexible link's root, hinges and tip (+y, and +z where it bends out of the
-/// plane), each tip's motion relative to the table, and the links' static stress.
-struct StrengthOutputs {
-  struct Link {
-    std::string name;
-    std::size_t first = 0, count = 0;  ///< its stress outputs
-    double static_pa = 0, limit_pa = 0;
-  };
-  std::vector<Link> links;
-  std::size_t first_tip = 0;
-  std::vector<std::string> tips;
-  std::vector<double> tip_link_m;  ///< each tip's link length
-};
-
-StrengthOutputs addStrengthOutputs(const ArticleScene& scene, int axes, std::vector<OutputSpec>& outputs) {
-  StrengthOutputs s;
-  for (const LinkSpec& l : scene.article.links) {
-    const Material& m = *scene.article.findMaterial(l.material);
-    const StrengthFactors& f = scene.article.strength;
-    double limit = 0;
-    for (const auto& [allowable, factor] : {std::pair{m.yield_strength, f.yield_factor}, std::pair{m.ultimate_strength, f.ultimate_factor}})
-      if (allowable > 0 && (limit == 0 || allowable / factor < limit)) limit = allowable / factor;
-    const Section& sec = *scene.article.findSection(l.section);
-    const bool out = scene.article.bendsOutOfPlane(l);
-    if (l.rigid || !(limit > 0) || !(sectionFibreDistance(sec) > 0) || (out && !(sectionFibreDistanceOut(sec) > 0))) continue;
-    StrengthOutputs::Link k{l.name, outputs.size(), 0, 0, limit};
-    std::vector<double> xs{0.0};
-    for (int h = 1; h <= l.segments; ++h) xs.push_back((h - 0.5) * l.length / l.segments);  // article/flexible_link.hpp
-    xs.push_back(l.length);
-    for (double x : xs)
-      for (const char* face : {"+y", "+z"}) {
-        if (face[1] == 'z' && !out) continue;
-        OutputSpec o{strf("stress %s@%g %s", l.name.c_str(), x, face), OutputKind::Displacement, l.name + ".root", 5, false};
-        o.stress_face = face, o.stress_link = l.name, o.stress_x_m = x;
-        outputs.push_back(o);
-      }
-    k.count = outputs.size() - k.first;
-    s.links.push_back(k);
-  }
-  s.first_tip = outputs.size();
-  for (const LinkSpec& l : scene.article.links) {
-    s.tips.push_back(l.name + ".tip");
-    s.tip_link_m.push_back(l.length);
-    for (int a = 0; a < axes; ++a) outputs.push_back({l.name + ".tip " + std::to_string(a), OutputKind::Displacement, l.name + ".tip", a, false});
-  }
-  return s;
 }
 
 /// The random program (TableLevels::Random): the channels' mean squares under a flat
@@ -97,14 +47,12 @@ void randomLevels(const LinearModel& lm, const std::vector<SensorChannel>& chann
   r.grid_points = static_cast<int>(f.size());
   // Per unit displacement spectrum (G = 1 m^2/Hz): the table's acceleration spectrum is (2 pi f)^4.
   // Each channel's and then each stress output's spectrum per unit G, integrated.
-  std::size_t stress_rows = 0;
-  for (const auto& k : strength.links) stress_rows += k.count;
+  const std::size_t stress_rows = strength.stressRows();
   std::vector<double> ms(channels.size() + stress_rows, 0.0);
   const auto psd = [&](double fi) {
     std::vector<double> g = channelGains(lm, channels, axes, fi);
     const Eigen::MatrixXcd H = stress_rows ? lm.second_order.response(2 * M_PI * fi) : Eigen::MatrixXcd();
-    for (const auto& k : strength.links)
-      for (std::size_t r = k.first; r < k.first + k.count; ++r) g.push_back(std::abs(H(static_cast<Eigen::Index>(r), 0)));
+    for (std::size_t k = 0; k < stress_rows; ++k) g.push_back(std::abs(H(static_cast<Eigen::Index>(strength.stressRow(k)), 0)));
     for (double& x : g) x = x * x * std::pow(2 * M_PI * fi, 4);
     return g;
   };
@@ -125,15 +73,8 @@ void randomLevels(const LinearModel& lm, const std::vector<SensorChannel>& chann
     r.rms_m = std::sqrt(G * band), r.limit = "range";
   }
   // The crest factor times each link's RMS stress over its static stress within its limit.
-  std::size_t row = 0;
-  for (const auto& k : strength.links)
-    for (std::size_t n = 0; n < k.count; ++n, ++row) {
-      const double room = std::max(k.limit_pa - k.static_pa, 0.0);
-      if (kTableCrestFactor * std::sqrt(stress_ms[row] * G) > room) {
-        G = std::pow(room / kTableCrestFactor, 2) / stress_ms[row];
-        r.rms_m = std::sqrt(G * band), r.limit = "stress (" + k.name + ")";
-      }
-    }
+  if (const std::string link = strength.capRandom(stress_ms, kTableCrestFactor, G); !link.empty())
+    r.rms_m = std::sqrt(G * band), r.limit = "stress (" + link + ")";
   r.rms_acc = std::sqrt(ms[worst] * G), r.rms_channel = channels[worst].name;
   r.noise_psd = t.resolution * t.resolution / (6 * sample_rate_hz);
   for (auto& m : t.modes) {
@@ -143,49 +84,6 @@ void randomLevels(const LinearModel& lm, const std::vector<SensorChannel>& chann
     s.resize(channels.size());  // the sensors' spectra, not the stresses'
     m.random_snr_db = 10 * std::log10(std::max(*std::max_element(s.begin(), s.end()) * G, 1e-24 * r.noise_psd) / r.noise_psd);
   }
-}
-
-/// The links' static peak stress at the linear model's equilibrium.
-void setStaticStress(const ArticleScene& scene, const LinearModel& lm, StrengthOutputs& s) {
-  const Model& model = *lm.solved.model;
-  SimTK::State st = lm.solved.equilibrium.state;
-  model.getSystem().realize(st, SimTK::Stage::Position);
-  const std::vector<LinkStaticStress> links =
-      staticLinkStress(model, scene.article, st, lm.solved.equilibrium.q, closureForces(model, lm.solved.equilibrium.closure_multipliers));
-  for (auto& k : s.links)
-    for (std::size_t i = 0; i < scene.article.links.size(); ++i)
-      if (scene.article.links[i].name == k.name && links[i].peak.recovered) k.static_pa = links[i].peak.stress.equivalent;
-}
-
-/// Lowers `m`'s dwell (per unit table acceleration: the response H's column `input`) to
-/// what the links' strength and the deflection limit allow, and fills its stress and tip.
-void holdToStrength(const Eigen::MatrixXcd& H, Eigen::Index input, const StrengthOutputs& s, int axes, double max_deflection_m,
-                    TableLevels::Mode& m) {
-  double worst_use = -1;
-  for (const auto& k : s.links) {
-    double per_acc = 0;  // the link's largest stress amplitude per m/s^2 of the table
-    for (std::size_t r = k.first; r < k.first + k.count; ++r) per_acc = std::max(per_acc, std::abs(H(static_cast<Eigen::Index>(r), input)));
-    const double room = std::max(k.limit_pa - k.static_pa, 0.0);
-    if (per_acc * m.table_acc > room) m.table_acc = per_acc > 0 ? room / per_acc : 0.0, m.limit = "stress";
-    const double use = (k.static_pa + per_acc * m.table_acc) / k.limit_pa;
-    if (use > worst_use) worst_use = use, m.stress_link = k.name, m.static_stress_pa = k.static_pa, m.stress_limit_pa = k.limit_pa,
-                         m.stress_amplitude_pa = per_acc;
-  }
-  m.stress_amplitude_pa *= m.table_acc;
-  double tip_per_acc = 0;
-  for (std::size_t t = 0; t < s.tips.size(); ++t) {
-    double sq = 0;
-    for (int a = 0; a < axes; ++a) sq += std::norm(H(static_cast<Eigen::Index>(s.first_tip + t * axes + a), input));
-    if (std::sqrt(sq) > tip_per_acc) tip_per_acc = std::sqrt(sq), m.tip = s.tips[t], m.tip_link_m = s.tip_link_m[t];
-  }
-  if (max_deflection_m > 0 && tip_per_acc * m.table_acc > max_deflection_m)
-    m.table_acc = max_deflection_m / tip_per_acc, m.limit = "deflection", m.stress_amplitude_pa = 0;
-  if (m.limit == "deflection")  // the stress at the lowered level
-    for (const auto& k : s.links)
-      if (k.name == m.stress_link)
-        for (std::size_t r = k.first; r < k.first + k.count; ++r)
-          m.stress_amplitude_pa = std::max(m.stress_amplitude_pa, std::abs(H(static_cast<Eigen::Index>(r), input)) * m.table_acc);
-  m.tip_amplitude_m = tip_per_acc * m.table_acc;
 }
 
 }  // namespace
@@ -206,11 +104,11 @@ TableLevels runTableLevels(const ArticleScene& scene, const PlacementStudy& stud
   std::vector<OutputSpec> outputs;
   for (const auto& c : channels)
     for (int a = 0; a < axes; ++a) outputs.push_back({c.name + " " + std::to_string(a), OutputKind::Acceleration, c.station, a, true});
-  StrengthOutputs strength = addStrengthOutputs(scene, axes, outputs);  // after the channels' rows
+  StrengthOutputs strength(scene, axes, outputs);  // after the channels' rows
   DampingSpec damping;  // frf's default: 1 % in every mode, unless the scene says otherwise
   if (scene.damping) damping = *scene.damping;
   const LinearModel lm = buildLinearModel(scene, inputs, outputs, damping);
-  setStaticStress(scene, lm, strength);
+  strength.setStaticStress(scene, lm);
   for (std::size_t j = 0; j < study.target_modes.size(); ++j) {
     TableLevels::Mode m;
     m.mode = study.target_modes[j];
@@ -232,7 +130,7 @@ TableLevels runTableLevels(const ArticleScene& scene, const PlacementStudy& stud
       level.table_acc = t.table.stroke * w * w;
       level.limit = "stroke";
       if (!a1.empty() && a1[best] * level.table_acc > t.range) level.table_acc = t.range / a1[best], level.limit = "range";
-      holdToStrength(H, static_cast<Eigen::Index>(i), strength, axes, max_deflection_m, level);
+      level.strength = strength.hold(H, static_cast<Eigen::Index>(i), max_deflection_m, level.table_acc, level.limit);
       const double table_acc = level.table_acc;
       const double peak = a1.empty() ? 0.0 : a1[best] * table_acc;
       const double snr = 20 * std::log10(std::max(peak, 1e-12 * t.resolution) / t.resolution);  // -240 dB: nothing

@@ -22,6 +22,7 @@
 
 #include "facility/table_programs.hpp"
 #include "sim/core/mode_number.hpp"
+#include "sim/linear/strength_levels.hpp"
 #include "sim/modes/place_sensors.hpp"
 #include "sim/scene/scene.hpp"
 
@@ -37,14 +38,7 @@ struct TableLevels {
     double table_acc = 0;          ///< m/s^2, the table's acceleration amplitude
     double table_amplitude_m = 0;  ///< its displacement amplitude
     std::string limit;             ///< stroke, range, stress (a link's allowable) or deflection: what set it
-    /// The link whose static plus dynamic stress is nearest its limit at the dwell, and its
-    /// static peak, the dwell's stress amplitude and its limit (allowable / factor), Pa;
-    /// empty: no link with an allowable and a recoverable stress.
-    std::string stress_link;
-    double static_stress_pa = 0, stress_amplitude_pa = 0, stress_limit_pa = 0;
-    std::string tip;         ///< the tip that moves most relative to the table
-    double tip_amplitude_m = 0;
-    double tip_link_m = 0;   ///< its link's length
+    LevelStrength strength;  ///< the links' stress and the tips' motion in the dwell
     double acc = 0;                ///< m/s^2, the amplitude at the best sensor
     std::string best_channel;      ///< "station axis"
     double snr_db = 0;             ///< 20 log10(acc / resolution)
@@ -74,10 +68,6 @@ struct TableLevels {
     double noise_psd = 0;     ///< (m/s^2)^2/Hz: resolution^2 / (6 x the scene's sample rate)
   } random;
 };
-
-/// A tip motion beyond this share of its link's length is no small deflection: the
-/// linear model's dwell is flagged (a beam's linear theory holds to a few per cent).
-inline constexpr double kLargeDeflection = 0.05;
 
 /// A random program's peak over its RMS (Gaussian, clipped at 3 sigma), as the shaker's
 /// assumed crest factor.

@@ -225,7 +225,8 @@ TEST_F(Cli, TheScenesShakerIsPlannedOnTheChosenSensors) {
   }
   std::string csv = slurp(out / "exciter.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "mode,frequency_hz,loaded_mode,loaded_hz,shift,mac,zeta,sine_force_n,sine_limit,sine_acc,best_channel,sine_snr_db,"
+            "mode,frequency_hz,loaded_mode,loaded_hz,shift,mac,zeta,sine_force_n,sine_limit,stress_link,static_stress_pa,stress_amplitude_pa,"
+            "stress_limit_pa,tip,tip_amplitude_m,sine_acc,best_channel,sine_snr_db,"
             "channels_seen,sine_stroke_m,random_snr_db,seen");
   EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), 1 + targets.size());
   csv = slurp(out / "exciter_ranking.csv");
