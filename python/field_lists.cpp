@@ -58,6 +58,7 @@ const std::map<std::string, std::function<py::list()>>& namedLists() {
       {"placement_candidates", [] { return describe(mmv::placementFields()); }},
       {"simulate_sensors", [] { return describe(mmv::sensorSummaryFields()); }},
       {"simulate_torques", [] { return describe(mmv::jointTorqueFields()); }},
+      {"simulate_stress", [] { return describe(mmv::linkRunStressFields()); }},
       {"sweep_config_tracks", [] { return describe(mmv::trackFields()); }},
       {"tam_modes", [] { return describe(mmv::tamModeFields()); }},
       {"trade_runs", [] { return describe(mmv::tradeRunFields()); }},

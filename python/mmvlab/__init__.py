@@ -563,6 +563,13 @@ class SimulateResult(Result):
         unit, saturated_samples, samples."""
         return _columns(self.json.get("sensors", []), fields("simulate_sensors"))
 
+    def stress_table(self):
+        """summary.json's stress as columns (`fields("simulate_stress")`): each link's
+        peak stress over the run (peak_stress_pa, at_s, x_m, face, the loads there), its
+        limit (allowable / factor), margin_of_safety, verdict and first_exceeded_s (NaN:
+        never); an isolator's run has none (docs/strength.md)."""
+        return _columns(self.json.get("stress", []), fields("simulate_stress"))
+
 
 def _simulate_result(d):
     _warn(d["warnings"])

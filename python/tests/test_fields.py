@@ -103,6 +103,11 @@ def test_simulate_s_tables_are_its_summary_and_text():
         if column in r.history:
             assert np.max(np.abs(r.history[column])) <= peak * (1 + 1e-9) + 1e-12
     assert all(s <= n for s, n in zip(sensors["saturated_samples"], sensors["samples"]))
+    # Each link's peak stress two ways: the table, and the history's own largest value of its column.
+    stress = r.stress_table()
+    assert stress["link"] == [l["link"] for l in r.json["stress"]] and len(stress["link"]) == 4
+    for link, peak in zip(stress["link"], stress["peak_stress_pa"]):
+        assert np.max(r.history[f"{link}_stress_pa"]) == pytest.approx(peak, rel=1e-9)
 
 
 def test_place_sensors_tam_table_is_tam_csv(tmp_path):

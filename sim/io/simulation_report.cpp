@@ -316,7 +316,7 @@ const std::vector<Field<LinkRunStress>>& linkRunStressFields() {
        [](const L& l) -> Opt { return json(l.root_only ? "root" : "along the link"); }},
       {"peak_stress_pa", "Pa", nullptr, "the largest equivalent (von Mises) stress at a sample",
        [](const L& l) -> Opt { return l.recovered ? json(l.peak_pa) : json(nullptr); }},
-      {"at_s", "s", nullptr, "when", [](const L& l) -> Opt { return l.recovered ? json(l.at_s) : json(nullptr); }},
+      {"at_s", "s", nullptr, "the time of that sample", [](const L& l) -> Opt { return l.recovered ? json(l.at_s) : json(nullptr); }},
       {"x_m", "m", nullptr, "where, from the link's root", [](const L& l) -> Opt { return l.recovered ? json(l.loads.x) : json(nullptr); }},
       {"face", "", nullptr, "the face where it peaks (+y, -y, +z, -z, a corner; axis: no bending)",
        [](const L& l) -> Opt { return json(l.recovered ? l.face : std::string("-")); }},
