@@ -18,7 +18,7 @@ namespace mmv::plan {
 namespace {
 
 constexpr double kMinRatioDb = 20;
-constexpr double kEdge = 0.98;  ///< a peak within 2 % of the range is at its edge.  ///< below: fewer than 10 counts of resolution in the peak.
+constexpr double kEdgePct = 2;  ///< a peak within 2 % of the range is at its edge, whatever --margin asks.
 
 /// Display scale and unit: angles in deg, rates in deg/s, accelerations in m/s^2.
 std::pair<double, std::string> displayUnit(const std::string& type) {
@@ -28,9 +28,10 @@ std::pair<double, std::string> displayUnit(const std::string& type) {
   return {1.0, "m/s^2"};
 }
 
-/// A sensor's line: peak (measured unit) against its range, its ratio to the resolution.
+/// A sensor's line: peak (measured unit) against its range, its ratio to the resolution;
+/// a peak within `margin_pct` (--margin, at least 2 %) of the range warns.
 CheckLine sensorLine(const ArticleScene& scene, const SensorSceneSpec& s, const std::string& id, const std::string& during, double peak,
-                     int saturated, const std::string& how) {
+                     int saturated, const std::string& how, double margin_pct) {
   const facility::SensorSpec spec = instrumentOf(scene, s).spec;  // its instrument's range and resolution
   const auto [scale, unit] = displayUnit(s.type);
   const std::string what = s.instrument.empty() || s.instrument == s.type ? s.type : s.type + " " + s.instrument;
@@ -42,9 +43,10 @@ CheckLine sensorLine(const ArticleScene& scene, const SensorSceneSpec& s, const 
   if (saturated > 0 || peak > spec.range) {
     l.verdict = Verdict::Fail;
     l.note += saturated > 0 ? strf("; saturated in %d samples", saturated) : std::string("; would saturate");
-  } else if (peak >= kEdge * spec.range) {
+  } else if (peak >= (1 - std::max(margin_pct, kEdgePct) / 100) * spec.range) {
     l.verdict = Verdict::Warn;
-    l.note += "; at the edge of its range: a larger motion saturates it";
+    l.note += strf("; within %.3g %% of its range (its margin rule: --margin, at least %.0f %%): a larger motion saturates it",
+                   std::max(margin_pct, kEdgePct), kEdgePct);
   } else if (peak <= 0) {
     l.verdict = Verdict::Info;
   } else {
@@ -61,7 +63,7 @@ void addRunLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const auto summary = std::find_if(r.sensors.begin(), r.sensors.end(), [&](const SensorSummary& x) { return x.name == s.name; });
     if (summary == r.sensors.end()) continue;
     if (s.type == "strain") {  // rigid links do not bend
-      CheckLine l = sensorLine(in.scene, s, "run", "during the scene's run", 0, 0, "rigid links do not bend: `mmvlab simulate` gives its reading");
+      CheckLine l = sensorLine(in.scene, s, "run", "during the scene's run", 0, 0, "rigid links do not bend: `mmvlab simulate` gives its reading", 0);
       l.verdict = Verdict::NotChecked;
       l.note = "rigid links do not bend: `mmvlab simulate` gives its reading";
       out.push_back(l);
@@ -71,7 +73,8 @@ void addRunLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     double peak = 0;
     for (const auto& row : r.record.rows) peak = std::max(peak, std::abs(row[col]));
     out.push_back(sensorLine(in.scene, s, "run", "during the scene's run", peak, summary->saturated_samples,
-                             strf("rigid links, %.3g s as recorded (band limits, noise, quantization)", in.scene.simulation.duration)));
+                             strf("rigid links, %.3g s as recorded (band limits, noise, quantization)", in.scene.simulation.duration),
+                             in.options.required_margin_pct));
   }
 }
 
@@ -149,7 +152,7 @@ void addTableSensorLines(const CheckInputs& in, std::vector<CheckLine>& out) {
   if (accels.empty() || !motion || scene.article.base.type != BaseType::Table) return;
   if (motion->type == TableMotion::Type::Profile) {
     for (const auto* s : accels) {
-      CheckLine l = sensorLine(scene, *s, "table", "under the table's profile", 0, 0, "a CSV profile: run `mmvlab simulate`");
+      CheckLine l = sensorLine(scene, *s, "table", "under the table's profile", 0, 0, "a CSV profile: run `mmvlab simulate`", 0);
       l.verdict = Verdict::NotChecked;
       out.push_back(l);
     }
@@ -181,7 +184,8 @@ void addTableSensorLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     };
     const ProgramPeak p = programPeak(*motion, h);
     if (motion->type == TableMotion::Type::Random) {
-      out.push_back(sensorLine(scene, *accels[k], "table", "under the table's program", p.value, 0, "flexible linear model, " + p.how));
+      out.push_back(sensorLine(scene, *accels[k], "table", "under the table's program", p.value, 0, "flexible linear model, " + p.how,
+                               in.options.required_margin_pct));
       continue;
     }
     // A sine or sweep: the linear model's response over the scene's run, from rest, what
@@ -192,18 +196,42 @@ void addTableSensorLines(const CheckInputs& in, std::vector<CheckLine>& out) {
     const double g_along = -(~model.getGravity() * rows.axis);
     facility::Sensor live(instrumentOf(scene, *accels[k]).spec, scene.simulation.sample_rate_hz);
     const double peak = runPeak(rows, run, g_along, live);
+    // Gravity's static reading is in the demand unless the sensor's high-pass removes it
+    // (its filters start at rest under the first value): the note says which.
+    const double low_cut = instrumentOf(scene, *accels[k]).spec.low_cut_hz;
+    const std::string gravity = low_cut > 0 ? strf("gravity's %.3g m/s^2 along the axis not in it: its %.3g Hz high-pass removes the "
+                                                   "static reading", g_along, low_cut)
+                                            : strf("gravity's %.3g m/s^2 along the axis included", g_along);
     out.push_back(sensorLine(scene, *accels[k], "table", "under the table's program", peak, live.saturatedSamples(),
                              strf("flexible linear model over the scene's %.3g s run from rest, sampled as simulate samples "
-                                  "(gravity's %.3g m/s^2 along the axis included); the %s would read %.3g m/s^2",
-                                  scene.simulation.duration, g_along, p.how.c_str(), p.value)));
+                                  "(%s); the %s would read %.3g m/s^2",
+                                  scene.simulation.duration, gravity.c_str(), p.how.c_str(), p.value),
+                             in.options.required_margin_pct));
   }
 }
 
 }  // namespace
 
 void addSensorLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+  const std::size_t first = out.size();
   if (in.rigid_run) addRunLines(in, out);
   addTableSensorLines(in, out);
+  // One verdict per sensor: where the rigid run and the flexible linear model both
+  // estimate its peak, the larger is judged and the other stated (before, a rigid line's
+  // low signal warned the check while the flexible line of the same sensor read 42 dB).
+  for (const auto& s : in.scene.sensors) {
+    CheckLine *run = nullptr, *table = nullptr;
+    for (std::size_t i = first; i < out.size(); ++i) {
+      if (out[i].id == "sensor." + s.name + ".run") run = &out[i];
+      if (out[i].id == "sensor." + s.name + ".table") table = &out[i];
+    }
+    if (!run || !table || run->verdict == Verdict::NotChecked || table->verdict == Verdict::NotChecked) continue;
+    CheckLine& judged = table->demand >= run->demand ? *table : *run;
+    CheckLine& other = &judged == table ? *run : *table;
+    other.verdict = Verdict::Info;
+    other.note += strf("; not judged: the %s estimate's %.4g %s is the larger and is judged (%s)",
+                       &judged == table ? "flexible linear model's" : "rigid run's", judged.demand, judged.unit.c_str(), judged.id.c_str());
+  }
 }
 
 }  // namespace mmv::plan

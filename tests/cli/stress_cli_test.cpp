@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 
 #include "support/cli.hpp"
 
@@ -82,6 +83,35 @@ TEST_F(Cli, MaxDeflectionIsHeldToItsRange) {
   const json levels = json::parse(run("place-sensors " + scene + " --max-deflection 0.01").out).at("table_levels").at("modes");
   EXPECT_EQ(levels.at(0).at("limit"), "deflection");
   EXPECT_NEAR(levels.at(0).at("tip_amplitude_m").get<double>(), 0.01, 1e-12);
+}
+
+// check's sensor lines mean what they say (issue 64): they honour --margin (before, a
+// fixed 2 %: enc_elbow passed at 11.1 % under --margin 20), one sensor's rigid and
+// flexible estimates give one verdict (the larger judged, the other stated), and the
+// gravity note agrees with the demand it qualifies (a high-pass removes the static reading).
+TEST_F(Cli, CheckSensorLinesHonourTheMarginAndJudgeOnce) {
+  const std::string scene = std::string(MMVLAB_SOURCE_DIR) + "/scenes/mmv-slew.yaml --segments 2 --json --report-only";
+  const auto lines = [&](const std::string& margin) {
+    const Result r = run("check " + scene + " --margin " + margin);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::map<std::string, json> out;
+    const json j = json::parse(r.out);
+    for (const auto& l : j["lines"]) out[l["id"].get<std::string>()] = l;
+    return out;
+  };
+  const auto at30 = lines("30"), at40 = lines("40");
+  const json enc2 = at30.at("sensor.enc2.run");  // 30 deg of its 45: a 33 % margin
+  EXPECT_EQ(enc2["verdict"], "pass") << enc2;
+  EXPECT_EQ(at40.at("sensor.enc2.run")["verdict"], "warn") << at40.at("sensor.enc2.run");
+  EXPECT_NE(at40.at("sensor.enc2.run")["note"].get<std::string>().find("within 40 % of its range"), std::string::npos);
+  // acc_link3a_tip: the rigid run and the flexible model both estimate it; the larger is judged.
+  const json rigid = at30.at("sensor.acc_link3a_tip.run"), flexible = at30.at("sensor.acc_link3a_tip.table");
+  ASSERT_GT(flexible["demand"].get<double>(), rigid["demand"].get<double>());
+  EXPECT_EQ(rigid["verdict"], "info");
+  EXPECT_NE(rigid["note"].get<std::string>().find("not judged"), std::string::npos) << rigid;
+  EXPECT_NE(flexible["verdict"], "info");
+  EXPECT_NE(flexible["note"].get<std::string>().find("not in it: its 0.1 Hz high-pass removes the static reading"), std::string::npos)
+      << flexible;
 }
 
 }  // namespace
