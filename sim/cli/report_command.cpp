@@ -222,6 +222,8 @@ std::vector<html::Section> studySections(const ReportArgs& a, const Scene& loade
   std::vector<html::Section> out;
   out.push_back({"check", "Feasibility: " + p.check.json.at("overall").get<std::string>(), html::table(checkTable(p.check.json)),
                  checkAccuracy(p.check.json), {commandFor(a, "check", "--band " + a.band + " --out check")}});
+  out.push_back({"strength", "Strength: stresses against allowables", html::table(strengthTable(p.modes.json, p.check.json)),
+                 strengthAccuracy(p.modes.json), {commandFor(a, "modes", "--json"), commandFor(a, "check", "--json")}});
   const int sheet = std::min<int>(6, static_cast<int>(solved.modes.omega2.size()));
   out.push_back({"modes", "System modes about the held equilibrium",
                  html::table(modeTable(p.modes.json)) + (sheet > 0 ? modesSheet(scene, solved, sheet, em) : ""),

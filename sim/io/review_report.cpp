@@ -117,6 +117,58 @@ std::vector<std::string> checkAccuracy(const ReviewJson& check) {
   return out;
 }
 
+html::Table strengthTable(const ReviewJson& modes, const ReviewJson& check) {
+  std::map<std::string, const ReviewJson*> lines;  // check's lines by id
+  for (const auto& l : check.at("lines")) lines[l.at("id").get<std::string>()] = &l;
+  const auto line = [&](const std::string& id) -> std::string {
+    const auto it = lines.find(id);
+    if (it == lines.end()) return "-";
+    const ReviewJson& l = *it->second;
+    return reportNumber(l.at("demand")) + " MPa (" + reportText(l.at("verdict")) + ")";
+  };
+  html::Table t;
+  t.header = {"link", "material", "static peak (MPa)", "where", "allowable / factor (MPa)", "margin of safety", "verdict",
+              "check: worst held", "check: the scene's run"};
+  for (const auto& l : modes.at("equilibrium").at("static_stress").at("links")) {
+    const std::string link = l.at("link").get<std::string>();
+    const bool recovered = l.value("recovered", false), judged = recovered && l.value("judged", false);
+    const std::string verdict = !recovered ? "n/a" : judged ? reportText(l.at("verdict")) : "not judged";
+    t.rows.push_back({link, reportText(l.at("material")), recovered ? reportNumber(l.at("equivalent_pa"), 1e-6) : "-",
+                      recovered ? strf("x = %s m, %s face", reportNumber(l.at("x_m")).c_str(), reportText(l.at("face")).c_str())
+                                : reportText(l.value("why_not", ReviewJson())),
+                      judged ? strf("%s / %s (%s)", reportNumber(l.at("allowable_pa"), 1e-6).c_str(), reportNumber(l.at("factor")).c_str(),
+                                    reportText(l.at("criterion")).c_str())
+                             : (recovered ? reportText(l.value("note", ReviewJson())) : std::string("-")),
+                      judged ? reportNumber(l.at("margin_of_safety")) : "-", verdict, line("stress." + link + ".hold"),
+                      line("stress." + link + ".run")});
+    bool fail = verdict == "FAIL";
+    for (const char* kind : {".hold", ".run"})
+      if (const auto it = lines.find("stress." + link + kind); it != lines.end()) fail = fail || it->second->at("verdict") == "FAIL";
+    t.row_classes.push_back(fail ? "fail" : judged ? "pass" : "na");
+  }
+  return t;
+}
+
+std::vector<std::string> strengthAccuracy(const ReviewJson& modes) {
+  std::vector<std::string> out;
+  const ReviewJson& de = modes.at("discretization_error");
+  std::string worst;
+  double largest = -1;
+  if (de.value("available", false) && de.contains("static_stress"))
+    for (const auto& s : de.at("static_stress")) {
+      const ReviewJson error = s.value("estimated_relative_error", ReviewJson()), order = s.value("observed_order", ReviewJson());
+      if (error.is_number() && error.get<double>() > largest)
+        largest = error.get<double>(), worst = reportText(s.at("link")) + (order.is_number() ? ", observed order " + reportNumber(order) : "");
+    }
+  out.push_back(largest >= 0 ? "Static stress: each link's peak from its hinges' moments, interpolated to the root and tip (mesh-independent "
+                               "stations); its largest estimated discretization error " + reportPercent(largest) + " (" + worst + ")."
+                             : "Static stress: no discretization estimate (the model is too coarse for coarser runs).");
+  out.push_back("Margins: MS = allowable / (factor x stress) - 1, the governing allowable and the scene's factors of safety; "
+                "check's run line is the rigid-link run of the scene's programs at each link's root, without the flexible "
+                "response (`mmvlab simulate` records each link's stress through the flexible run).");
+  return out;
+}
+
 std::vector<std::string> modesAccuracy(const ReviewJson& modes) {
   std::vector<std::string> out;
   const ReviewJson& de = modes.at("discretization_error");

@@ -23,6 +23,13 @@ html::Table sensorTable(const nlohmann::ordered_json& placement);
 /// Each input-output pair: peak, its half-power damping, level at 10 Hz, reduced-model error.
 html::Table frfTable(const nlohmann::ordered_json& frf);
 
+/// The article's strength (docs/strength.md): per link its static peak stress at the
+/// held equilibrium (where, the allowable over its factor, the margin of safety, the
+/// verdict; `modes --json`'s equilibrium.static_stress) and check's worst held and run
+/// stress lines for it (demand and verdict). A row's class is its worst verdict.
+html::Table strengthTable(const nlohmann::ordered_json& modes, const nlohmann::ordered_json& check);
+std::vector<std::string> strengthAccuracy(const nlohmann::ordered_json& modes);
+
 /// "How accurate" lines for each part, from the same documents.
 std::vector<std::string> checkAccuracy(const nlohmann::ordered_json& check);
 std::vector<std::string> modesAccuracy(const nlohmann::ordered_json& modes);

@@ -68,8 +68,18 @@ TEST_F(Cli, ReportHoldsWhatEachCommandPrintsOnItsOwn) {
   }
   EXPECT_EQ(images, 22u);
   for (const char* remote : {"http:", "https:", "src=\"//", "href=\"//", "url("}) EXPECT_EQ(html.find(remote), std::string::npos) << remote;
-  for (const char* id : {"article", "check", "modes", "sensors", "frf", "scene"})
+  for (const char* id : {"article", "check", "strength", "modes", "sensors", "frf", "scene"})
     EXPECT_NE(html.find("<section id=\"" + std::string(id) + "\">"), std::string::npos) << id;
+  // The strength section: each link's static peak as modes prints it, and check's run line.
+  const std::string strength = html.substr(html.find("<section id=\"strength\">"), html.find("<section id=\"modes\">") - html.find("<section id=\"strength\">"));
+  const Json modes_doc = Json::parse(modes.out);
+  for (const auto& l : modes_doc.at("equilibrium").at("static_stress").at("links")) {
+    char mpa[32];
+    std::snprintf(mpa, sizeof mpa, "%.4g", 1e-6 * l.at("equivalent_pa").get<double>());
+    EXPECT_NE(strength.find("<td>" + l.at("link").get<std::string>() + "</td>"), std::string::npos) << l;
+    EXPECT_NE(strength.find(mpa), std::string::npos) << mpa << " " << strength.substr(0, 3000);
+  }
+  EXPECT_NE(strength.find("MPa (pass)"), std::string::npos);  // check's lines beside it
   // The scene's own text, escaped, and the commands that reproduce each part.
   EXPECT_NE(html.find("name: MMV article slewed on the table"), std::string::npos);
   EXPECT_NE(html.find("mmvlab place-sensors " + scene + " --segments 4 --below-hz 50 --count 8 --out sensors"), std::string::npos);

@@ -239,7 +239,7 @@ def main():
     isolator = "check" not in doc  # a HAM-SAS page: no check part
     verbs = ("modes", "place-sensors", "frf") if isolator else ("check", "modes", "place-sensors", "frf")
     ref = {v: json.load(open(os.path.join(ref_dir, v + ".json"))) for v in verbs}
-    sections = 5 if isolator else 6
+    sections = 5 if isolator else 7  # the article: renders, check, strength, modes, sensors, frf, scene
     text = open(page, encoding="utf-8").read()
     p = check_static(text, doc["figures"])
     (check_isolator_tables if isolator else check_tables)(p, ref)
