@@ -92,6 +92,18 @@ LevelStrength StrengthOutputs::hold(const Eigen::MatrixXcd& H, Eigen::Index inpu
   return out;
 }
 
+std::vector<StrengthOutputs::LinkPeak> StrengthOutputs::runPeaks(const Eigen::MatrixXd& run) const {
+  std::vector<LinkPeak> out;
+  for (const auto& k : links_) {
+    LinkPeak p{k.name, k.static_pa, 0, k.limit_pa, 0};
+    for (Eigen::Index s = 0; s < run.rows(); ++s)
+      for (std::size_t r = k.first; r < k.first + k.count; ++r)
+        if (std::abs(run(s, static_cast<Eigen::Index>(r))) > p.dynamic_pa) p.dynamic_pa = std::abs(run(s, static_cast<Eigen::Index>(r))), p.sample = s;
+    out.push_back(p);
+  }
+  return out;
+}
+
 std::string StrengthOutputs::capRandom(const std::vector<double>& mean_squares, double crest, double& G) const {
   std::string bound;
   for (const auto& k : links_)

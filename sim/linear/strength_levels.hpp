@@ -51,6 +51,15 @@ class StrengthOutputs {
   /// `mean_squares`, per unit spectrum) stays within its link's room; the link that bound
   /// (empty: none).
   std::string capRandom(const std::vector<double>& mean_squares, double crest, double& G) const;
+  /// Each link's largest stress over a time response of the model (`run`: samples x
+  /// outputs, about the equilibrium): its static peak, the response's largest bending
+  /// amplitude, its limit, and the sample where it peaks.
+  struct LinkPeak {
+    std::string link;
+    double static_pa = 0, dynamic_pa = 0, limit_pa = 0;
+    Eigen::Index sample = 0;
+  };
+  std::vector<LinkPeak> runPeaks(const Eigen::MatrixXd& run) const;
 
  private:
   struct Link {

@@ -45,6 +45,10 @@ void addStrengthLines(const CheckInputs& in, const std::vector<HeldStress>& solv
 /// reactions: the inertial and gravity moment a slew or a table program puts there),
 /// judged like the static lines; scenes whose programs move the article.
 void addRunStrengthLines(const CheckInputs& in, std::vector<CheckLine>& out);
+/// On the table with a program: each link's static stress plus its largest bending
+/// amplitude in the flexible linear model's response to the program over the scene's
+/// run (the resonances the rigid run cannot see), judged like the static lines.
+void addTableStrengthLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Each sensor's peak signal against its range, with its signal-to-resolution ratio.
 void addSensorLines(const CheckInputs& in, std::vector<CheckLine>& out);
 /// Payload, stroke, bandwidth (table scenes); modal content in the band.

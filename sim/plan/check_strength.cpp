@@ -2,8 +2,14 @@
 // stress against its allowable over its factor of safety (docs/strength.md), worst over
 // the scene's configuration and the configurations the holding-torque search solved,
 // and its root stress in the rigid-link run of the scene's programs.
+#include <algorithm>
+#include <cmath>
+
 #include "sim/core/text.hpp"
+#include "sim/linear/strength_levels.hpp"
+#include "sim/linear/time_response.hpp"
 #include "sim/plan/check_parts.hpp"
+#include "sim/scene/programs.hpp"
 
 namespace mmv::plan {
 
@@ -62,6 +68,34 @@ void addStrengthLines(const CheckInputs& in, const std::vector<HeldStress>& solv
                                strf("at %s, x = %.4g m (%s face)", where.c_str(), p.loads.x, p.stress.face.c_str())));
   }
   addRunStrengthLines(in, out);
+  addTableStrengthLines(in, out);
+}
+
+void addTableStrengthLines(const CheckInputs& in, std::vector<CheckLine>& out) {
+  const ArticleScene& scene = in.scene;
+  const auto& motion = scene.article.base.motion;
+  if (!motion || scene.article.base.type != BaseType::Table) return;
+  std::vector<OutputSpec> outputs;
+  const int axes = scene.article.model == ArticleModel::Spatial ? 3 : 2;
+  StrengthOutputs strength(scene, axes, outputs);
+  if (strength.stressRows() == 0) return;  // no link with an allowable and a recoverable stress: the hold lines say why
+  DampingSpec damping;  // frf's default: 1 % in every mode, unless the scene says otherwise
+  if (scene.damping) damping = *scene.damping;
+  const LinearModel lm = buildLinearModel(scene, {{"table_x", InputKind::BaseAcceleration, "", 0}}, outputs, damping);
+  strength.setStaticStress(scene, lm);
+  // The program over the scene's run from rest, at simulate's sample times (as the sensor lines).
+  const auto program = makeTableProgram(*motion);
+  const int steps = std::max(1, static_cast<int>(std::ceil(scene.simulation.duration * scene.simulation.sample_rate_hz)));
+  const double dt = scene.simulation.duration / steps;
+  const Eigen::MatrixXd run = timeResponse(lm.full, [&](double t) { return Eigen::VectorXd::Constant(1, program->acceleration(t)); }, dt, steps);
+  for (const auto& p : strength.runPeaks(run))
+    out.push_back(strengthLine(scene.article, p.link, "stress." + p.link + ".table",
+                               p.link + " stress under the table's program (flexible linear model)", p.static_pa + p.dynamic_pa, "",
+                               strf("static peak %.4g MPa + the program's largest bending amplitude %.4g MPa at t = %.4g s (the flexible "
+                                    "linear model over the scene's %.3g s run from rest, at simulate's samples, the resonances "
+                                    "in it; the two peaks added: conservative where they fall apart)",
+                                    1e-6 * p.static_pa, 1e-6 * p.dynamic_pa, static_cast<double>(p.sample) * dt,
+                                    scene.simulation.duration)));
 }
 
 void addRunStrengthLines(const CheckInputs& in, std::vector<CheckLine>& out) {
