@@ -10,18 +10,6 @@
 
 namespace mmv {
 
-namespace {
-
-/// The smallest allowable over its factor (Pa; 0: the material gives none).
-double strengthLimit(const Material& m, const StrengthFactors& f) {
-  double limit = 0;
-  for (const auto& [allowable, factor] : {std::pair{m.yield_strength, f.yield_factor}, std::pair{m.ultimate_strength, f.ultimate_factor}})
-    if (allowable > 0 && (limit == 0 || allowable / factor < limit)) limit = allowable / factor;
-  return limit;
-}
-
-}  // namespace
-
 StrengthOutputs::StrengthOutputs(const ArticleScene& scene, int axes, std::vector<OutputSpec>& outputs) : axes_(axes) {
   first_stress_ = outputs.size();
   for (const LinkSpec& l : scene.article.links) {

@@ -257,6 +257,13 @@ Eigen::RowVectorXd bendingStressRow(const Model& model, const LinkSpec& link, co
   return row;
 }
 
+double strengthLimit(const Material& m, const StrengthFactors& f) {
+  double limit = 0;
+  for (const auto& [allowable, factor] : {std::pair{m.yield_strength, f.yield_factor}, std::pair{m.ultimate_strength, f.ultimate_factor}})
+    if (allowable > 0 && (limit == 0 || allowable / factor < limit)) limit = allowable / factor;
+  return limit;
+}
+
 StrengthJudgement judgeStress(double stress, const Material& m, const StrengthFactors& f) {
   StrengthJudgement out;
   if (!(m.yield_strength > 0) && !(m.ultimate_strength > 0)) {

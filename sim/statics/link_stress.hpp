@@ -142,6 +142,9 @@ struct StrengthJudgement {
   std::string note;
 };
 StrengthJudgement judgeStress(double stress, const Material& m, const StrengthFactors& f);
+/// The stress a material may carry: its smallest allowable over its factor (Pa; 0: it
+/// gives none). A stress above it has a negative margin (judgeStress).
+double strengthLimit(const Material& m, const StrengthFactors& f);
 
 /// The static stress of every link of a solved equilibrium (closure forces from its
 /// multipliers), root to tip per link, links in scene order.

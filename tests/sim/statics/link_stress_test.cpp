@@ -230,8 +230,14 @@ TEST(LinkStress, MarginOfSafetyTakesTheGoverningAllowable) {
   const StrengthJudgement over = judgeStress(200e6, m, f);
   EXPECT_LT(over.margin, 0);
   EXPECT_FALSE(over.pass);
+  // The limit the levels and runs are held to is where the margin is zero (two ways).
+  const double limit = strengthLimit(m, f);
+  EXPECT_NEAR(limit, 260e6 / 1.4, 1e-6);
+  EXPECT_NEAR(judgeStress(limit, m, f).margin, 0.0, 1e-12);
+  EXPECT_FALSE(judgeStress(limit * (1 + 1e-9), m, f).pass);
   Material none;
   none.name = "unknown";
+  EXPECT_EQ(strengthLimit(none, f), 0.0);
   const StrengthJudgement n = judgeStress(100e6, none, f);
   EXPECT_FALSE(n.judged);
   EXPECT_NE(n.note.find("no allowable"), std::string::npos);
