@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 
+#include "article/flexible_link.hpp"
 #include "sim/core/text.hpp"
 #include "sim/statics/closures.hpp"
 #include "sim/statics/link_stress.hpp"
@@ -18,8 +19,12 @@ StrengthOutputs::StrengthOutputs(const ArticleScene& scene, int axes, std::vecto
     const bool out = scene.article.bendsOutOfPlane(l);
     if (l.rigid || !(limit > 0) || !(sectionFibreDistance(sec) > 0) || (out && !(sectionFibreDistanceOut(sec) > 0))) continue;
     Link k{l.name, outputs.size(), 0, 0, limit};
+    // The root, the hinges where the model puts them (the builder's own discretization), the tip.
+    const Material& mat = *scene.article.findMaterial(l.material);
     std::vector<double> xs{0.0};
-    for (int h = 1; h <= l.segments; ++h) xs.push_back((h - 0.5) * l.length / l.segments);  // article/flexible_link.hpp
+    for (double x : discretizeLink(l.length, mat.density * sectionArea(sec), mat.youngs_modulus * sectionSecondMoment(sec), l.segments,
+                                   l.rigid).hinge_x)
+      xs.push_back(x);
     xs.push_back(l.length);
     for (double x : xs)
       for (const char* face : {"+y", "+z"}) {
